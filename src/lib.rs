@@ -1,0 +1,13 @@
+//! Lucent: a native answer-set programming system for a robot that reasons, plans, learns and
+//! explains itself.
+//!
+//! Modules are listed in pipeline order; each uses only the modules above it in this list
+//! (`base` at the bottom of the dependency order, `cli` at the top). See ARCHITECTURE.md.
+
+pub mod base;
+pub mod syntax;
+pub mod ground;
+pub mod solve;
+#[cfg(feature = "sim")]
+pub mod sim;
+pub mod cli;
