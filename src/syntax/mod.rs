@@ -2,3 +2,5 @@
 //!
 //! Invariant: parsing never fails; it returns the tree and every diagnostic, recovering at the
 //! next rule. The syntax layer knows nothing about grounding.
+
+pub mod ast;
