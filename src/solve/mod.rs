@@ -6,6 +6,8 @@
 //! `unfounded`-set propagation for non-tight programs; `search` drives it for enumeration,
 //! optimization, consequences and CR-Prolog semantics and produces a `SolveResult`.
 
+pub mod brute;
+pub mod check;
 pub mod config;
 pub mod result;
 
