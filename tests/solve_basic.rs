@@ -1,14 +1,24 @@
 //! Hand-checked programs for the solver; each test states why its answer sets are what they are.
 
-use lucent::ground::program::{Body, ExternalValue, GroundProgram, HeadKind, Minimize, Output, Rule};
+use lucent::ground::program::{
+    Body, ExternalValue, GroundProgram, HeadKind, Minimize, Output, Rule,
+};
 use lucent::solve::{Config, EnumMode, OptMode, Outcome, Solver};
 
 fn rule(head: &[u32], body: &[i32]) -> Rule {
-    Rule { head_kind: HeadKind::Disjunction, head: head.to_vec(), body: Body::Normal(body.to_vec()) }
+    Rule {
+        head_kind: HeadKind::Disjunction,
+        head: head.to_vec(),
+        body: Body::Normal(body.to_vec()),
+    }
 }
 
 fn choice(head: &[u32], body: &[i32]) -> Rule {
-    Rule { head_kind: HeadKind::Choice, head: head.to_vec(), body: Body::Normal(body.to_vec()) }
+    Rule {
+        head_kind: HeadKind::Choice,
+        head: head.to_vec(),
+        body: Body::Normal(body.to_vec()),
+    }
 }
 
 /// A program over atoms named a, b, c, ... (atom i is the i-th letter), all shown.
@@ -17,7 +27,10 @@ fn program(n: u32, rules: Vec<Rule>) -> GroundProgram {
     p.num_atoms = n;
     p.rules = rules;
     for a in 1..=n {
-        p.outputs.push(Output { symbol: name(a), condition: vec![a as i32] });
+        p.outputs.push(Output {
+            symbol: name(a),
+            condition: vec![a as i32],
+        });
     }
     p
 }
@@ -44,8 +57,10 @@ fn answer_sets(p: &GroundProgram, config: Config) -> Vec<Vec<String>> {
 }
 
 fn sets(x: &[&[&str]]) -> Vec<Vec<String>> {
-    let mut v: Vec<Vec<String>> =
-        x.iter().map(|s| s.iter().map(|t| t.to_string()).collect()).collect();
+    let mut v: Vec<Vec<String>> = x
+        .iter()
+        .map(|s| s.iter().map(|t| t.to_string()).collect())
+        .collect();
     v.sort();
     v
 }
@@ -54,7 +69,10 @@ fn sets(x: &[&[&str]]) -> Vec<Vec<String>> {
 fn even_negative_cycle_has_two_answer_sets() {
     // a :- not b. b :- not a.  Answer sets {a} and {b}.
     let p = program(2, vec![rule(&[1], &[-2]), rule(&[2], &[-1])]);
-    assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&["a"], &["b"]]));
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&["a"], &["b"]])
+    );
 }
 
 #[test]
@@ -69,29 +87,49 @@ fn odd_negative_loop_is_unsatisfiable() {
 #[test]
 fn positive_loop_is_unfounded() {
     // a :- b. b :- a. {c}.  The loop {a,b} has no external support: answer sets {} and {c}.
-    let p = program(3, vec![rule(&[1], &[2]), rule(&[2], &[1]), choice(&[3], &[])]);
+    let p = program(
+        3,
+        vec![rule(&[1], &[2]), rule(&[2], &[1]), choice(&[3], &[])],
+    );
     assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&[], &["c"]]));
 }
 
 #[test]
 fn loop_with_external_support() {
     // a :- b. b :- a. a :- c. {c}.  With c, both a and b follow: {} and {a,b,c}.
-    let p = program(3, vec![rule(&[1], &[2]), rule(&[2], &[1]), rule(&[1], &[3]), choice(&[3], &[])]);
-    assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&[], &["a", "b", "c"]]));
+    let p = program(
+        3,
+        vec![
+            rule(&[1], &[2]),
+            rule(&[2], &[1]),
+            rule(&[1], &[3]),
+            choice(&[3], &[]),
+        ],
+    );
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&[], &["a", "b", "c"]])
+    );
 }
 
 #[test]
 fn disjunction_is_minimal() {
     // a | b.  Minimal models {a} and {b}; {a,b} is not minimal.
     let p = program(2, vec![rule(&[1, 2], &[])]);
-    assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&["a"], &["b"]]));
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&["a"], &["b"]])
+    );
 }
 
 #[test]
 fn head_cycle_disjunction_needs_minimality_check() {
     // a | b. a :- b. b :- a.  Not head-cycle-free; the only answer set is {a,b}
     // (the reduct is the program itself, whose only model is {a,b}).
-    let p = program(2, vec![rule(&[1, 2], &[]), rule(&[1], &[2]), rule(&[2], &[1])]);
+    let p = program(
+        2,
+        vec![rule(&[1, 2], &[]), rule(&[1], &[2]), rule(&[2], &[1])],
+    );
     assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&["a", "b"]]));
 }
 
@@ -99,8 +137,14 @@ fn head_cycle_disjunction_needs_minimality_check() {
 fn non_hcf_with_unminimal_candidate() {
     // a | b | c. a :- b. b :- a. : candidates {a,b} and {c}; both minimal models of the
     // reduct (the program itself), so both are answer sets.
-    let p = program(3, vec![rule(&[1, 2, 3], &[]), rule(&[1], &[2]), rule(&[2], &[1])]);
-    assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&["a", "b"], &["c"]]));
+    let p = program(
+        3,
+        vec![rule(&[1, 2, 3], &[]), rule(&[1], &[2]), rule(&[2], &[1])],
+    );
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&["a", "b"], &["c"]])
+    );
 }
 
 #[test]
@@ -110,13 +154,21 @@ fn cardinality_body() {
     rules.push(Rule {
         head_kind: HeadKind::Disjunction,
         head: vec![4],
-        body: Body::Weight { lower: 2, lits: vec![(1, 1), (2, 1), (3, 1)] },
+        body: Body::Weight {
+            lower: 2,
+            lits: vec![(1, 1), (2, 1), (3, 1)],
+        },
     });
     rules.push(rule(&[], &[-4]));
     let p = program(4, rules);
     assert_eq!(
         answer_sets(&p, Config::all_models()),
-        sets(&[&["a", "b", "d"], &["a", "c", "d"], &["b", "c", "d"], &["a", "b", "c", "d"]])
+        sets(&[
+            &["a", "b", "d"],
+            &["a", "c", "d"],
+            &["b", "c", "d"],
+            &["a", "b", "c", "d"]
+        ])
     );
 }
 
@@ -124,7 +176,10 @@ fn cardinality_body() {
 fn minimize_finds_optimum() {
     // {a; b}. :- not a, not b. #minimize {2: a; 1: b}.  Optimum {b} with cost 1.
     let mut p = program(2, vec![choice(&[1, 2], &[]), rule(&[], &[-1, -2])]);
-    p.minimize.push(Minimize { priority: 0, lits: vec![(1, 2), (2, 1)] });
+    p.minimize.push(Minimize {
+        priority: 0,
+        lits: vec![(1, 2), (2, 1)],
+    });
     let r = Solver::new(&p, Config::all_models()).solve();
     assert_eq!(r.outcome, Outcome::Optimum);
     assert_eq!(r.models.last().unwrap().symbols, vec!["b".to_string()]);
@@ -137,37 +192,73 @@ fn lexicographic_priorities_and_opt_n() {
     // #minimize {1@2: a}. #minimize {1@1: b; 1@1: c}.  Priority 2 forces a false; then one
     // of b, c must hold with cost 1 at priority 1: optimal models {b} and {c}, costs [0, 1].
     let mut p = program(3, vec![choice(&[1, 2, 3], &[]), rule(&[], &[-1, -2, -3])]);
-    p.minimize.push(Minimize { priority: 2, lits: vec![(1, 1)] });
-    p.minimize.push(Minimize { priority: 1, lits: vec![(2, 1), (3, 1)] });
-    let cfg = Config { models: 0, opt_mode: OptMode::OptN, ..Config::default() };
+    p.minimize.push(Minimize {
+        priority: 2,
+        lits: vec![(1, 1)],
+    });
+    p.minimize.push(Minimize {
+        priority: 1,
+        lits: vec![(2, 1), (3, 1)],
+    });
+    let cfg = Config {
+        models: 0,
+        opt_mode: OptMode::OptN,
+        ..Config::default()
+    };
     let r = Solver::new(&p, cfg).solve();
     assert_eq!(r.outcome, Outcome::Optimum);
-    let mut opt: Vec<Vec<String>> =
-        r.models.iter().filter(|m| m.optimal).map(|m| m.symbols.clone()).collect();
+    let mut opt: Vec<Vec<String>> = r
+        .models
+        .iter()
+        .filter(|m| m.optimal)
+        .map(|m| m.symbols.clone())
+        .collect();
     opt.sort();
     assert_eq!(opt, sets(&[&["b"], &["c"]]));
-    assert!(r.models.iter().filter(|m| m.optimal).all(|m| m.costs == vec![0, 1]));
+    assert!(r
+        .models
+        .iter()
+        .filter(|m| m.optimal)
+        .all(|m| m.costs == vec![0, 1]));
 }
 
 #[test]
 fn opt_mode_enum_with_bound() {
     // {a; b}. #minimize {1: a; 1: b}.  With bound 1: the models {}, {a}, {b}.
     let mut p = program(2, vec![choice(&[1, 2], &[])]);
-    p.minimize.push(Minimize { priority: 0, lits: vec![(1, 1), (2, 1)] });
-    let cfg = Config { models: 0, opt_mode: OptMode::Enum(vec![1]), ..Config::default() };
+    p.minimize.push(Minimize {
+        priority: 0,
+        lits: vec![(1, 1), (2, 1)],
+    });
+    let cfg = Config {
+        models: 0,
+        opt_mode: OptMode::Enum(vec![1]),
+        ..Config::default()
+    };
     assert_eq!(answer_sets(&p, cfg), sets(&[&[], &["a"], &["b"]]));
 }
 
 #[test]
 fn brave_and_cautious() {
     // {a; b}. c. :- a, b.  Answer sets {c}, {a,c}, {b,c}: brave {a,b,c}, cautious {c}.
-    let p = program(3, vec![choice(&[1, 2], &[]), rule(&[3], &[]), rule(&[], &[1, 2])]);
-    let brave = Config { models: 0, enum_mode: EnumMode::Brave, ..Config::default() };
+    let p = program(
+        3,
+        vec![choice(&[1, 2], &[]), rule(&[3], &[]), rule(&[], &[1, 2])],
+    );
+    let brave = Config {
+        models: 0,
+        enum_mode: EnumMode::Brave,
+        ..Config::default()
+    };
     let r = Solver::new(&p, brave).solve();
     let mut last = r.models.last().unwrap().symbols.clone();
     last.sort();
     assert_eq!(last, vec!["a", "b", "c"]);
-    let cautious = Config { models: 0, enum_mode: EnumMode::Cautious, ..Config::default() };
+    let cautious = Config {
+        models: 0,
+        enum_mode: EnumMode::Cautious,
+        ..Config::default()
+    };
     let r = Solver::new(&p, cautious).solve();
     assert_eq!(r.models.last().unwrap().symbols, vec!["c"]);
 }
@@ -177,7 +268,11 @@ fn projection_removes_duplicates() {
     // {a; b}. with only a shown and --project: answer sets project to {} and {a} once each.
     let mut p = program(2, vec![choice(&[1, 2], &[])]);
     p.outputs.truncate(1);
-    let cfg = Config { models: 0, project: true, ..Config::default() };
+    let cfg = Config {
+        models: 0,
+        project: true,
+        ..Config::default()
+    };
     assert_eq!(answer_sets(&p, cfg), sets(&[&[], &["a"]]));
     // Without --project, four answer sets, two of each projection.
     assert_eq!(answer_sets(&p, Config::all_models()).len(), 4);
@@ -189,7 +284,10 @@ fn assumptions_and_externals() {
     let mut p = program(3, vec![rule(&[1], &[3]), rule(&[2], &[-3])]);
     p.outputs[2].symbol = "e".into();
     p.externals.push((3, ExternalValue::Free));
-    assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&["a", "e"], &["b"]]));
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&["a", "e"], &["b"]])
+    );
     let mut s = Solver::new(&p, Config::all_models());
     let r = s.solve_with(&[-3]);
     assert_eq!(r.models.len(), 1);
@@ -212,7 +310,11 @@ fn incremental_constraint_keeps_solver() {
 fn incremental_rules_for_existing_atoms() {
     // a :- not b.  then add b.  Answer sets {a}, then {b}.
     let p = program(2, vec![rule(&[1], &[-2])]);
-    let cfg = Config { models: 0, incremental: true, ..Config::default() };
+    let cfg = Config {
+        models: 0,
+        incremental: true,
+        ..Config::default()
+    };
     let mut s = Solver::new(&p, cfg);
     assert_eq!(s.solve().models[0].symbols, vec!["a"]);
     s.add_rules(&[rule(&[2], &[])]).unwrap();

@@ -218,7 +218,11 @@ impl Engine {
             inconsistent: false,
             conflict: Vec::new(),
             unfounded: None,
-            restarts: Restarts::Glucose { fast: 0.0, slow: 0.0, since: 0 },
+            restarts: Restarts::Glucose {
+                fast: 0.0,
+                slow: 0.0,
+                since: 0,
+            },
             max_learnts: 4000.0,
             rng: 0x9E37_79B9_7F4A_7C15,
             random_permille: 0,
@@ -378,11 +382,18 @@ impl Engine {
     fn alloc_clause(&mut self, lits: &[Lit], learnt: bool, lbd: u32) -> ClauseRef {
         let cref = self.arena.len() as u32;
         self.arena.push(lits.len() as u32);
-        self.arena.push(if learnt { FLAG_LEARNT } else { 0 } | (lbd.min(1 << 20) << 2));
+        self.arena
+            .push(if learnt { FLAG_LEARNT } else { 0 } | (lbd.min(1 << 20) << 2));
         self.arena.push(0f32.to_bits());
         self.arena.extend(lits.iter().map(|l| l.code() as u32));
-        self.watches[(lits[0]).code()].push(Watch { cref, other: lits[1] });
-        self.watches[(lits[1]).code()].push(Watch { cref, other: lits[0] });
+        self.watches[(lits[0]).code()].push(Watch {
+            cref,
+            other: lits[1],
+        });
+        self.watches[(lits[1]).code()].push(Watch {
+            cref,
+            other: lits[0],
+        });
         if learnt {
             self.learnts.push(cref);
         }
@@ -391,8 +402,14 @@ impl Engine {
 
     fn attach(&mut self, lits: &[Lit], learnt: bool, lbd: u32) -> Reason {
         if lits.len() == 2 {
-            self.watches[lits[0].code()].push(Watch { cref: u32::MAX, other: lits[1] });
-            self.watches[lits[1].code()].push(Watch { cref: u32::MAX, other: lits[0] });
+            self.watches[lits[0].code()].push(Watch {
+                cref: u32::MAX,
+                other: lits[1],
+            });
+            self.watches[lits[1].code()].push(Watch {
+                cref: u32::MAX,
+                other: lits[0],
+            });
             Reason::Binary(lits[1])
         } else {
             Reason::Long(self.alloc_clause(lits, learnt, lbd))
@@ -446,12 +463,11 @@ impl Engine {
         // Order: true literals first, then unassigned, then false by decreasing level.
         lits.sort_by_key(|&l| {
             let v = self.val(l);
-            let key = match v {
+            match v {
                 1 => 0u64,
                 0 => 1,
                 _ => 2 + (u32::MAX - self.level[l.var().index()]) as u64,
-            };
-            key
+            }
         });
         if lits.is_empty() {
             self.conflict.clear();
@@ -520,7 +536,11 @@ impl Engine {
         for v in vars {
             self.weight_watch[v].push(id);
         }
-        self.weights.push(WeightConstraint { head, lits: norm, bound });
+        self.weights.push(WeightConstraint {
+            head,
+            lits: norm,
+            bound,
+        });
         self.num_clauses += 1;
         if self.propagate_weight(id as usize) || self.propagate().is_some() {
             self.inconsistent = true;
@@ -538,9 +558,7 @@ impl Engine {
             if self.propagate_units() {
                 return Some(());
             }
-            if self.unfounded.is_none() {
-                return None;
-            }
+            self.unfounded.as_ref()?;
             let mut uf = self.unfounded.take().expect("checked above");
             let nogoods = uf.check(self);
             self.unfounded = Some(uf);
@@ -678,10 +696,20 @@ impl Engine {
         let hv = self.val(head);
         let max = sum_true + sum_undef;
         let false_lits = |e: &Engine| -> Vec<Lit> {
-            e.weights[id].lits.iter().map(|&(l, _)| l).filter(|&l| e.val(l) == -1).collect()
+            e.weights[id]
+                .lits
+                .iter()
+                .map(|&(l, _)| l)
+                .filter(|&l| e.val(l) == -1)
+                .collect()
         };
         let true_lits_neg = |e: &Engine| -> Vec<Lit> {
-            e.weights[id].lits.iter().map(|&(l, _)| !l).filter(|&l| e.val(l) == -1).collect()
+            e.weights[id]
+                .lits
+                .iter()
+                .map(|&(l, _)| !l)
+                .filter(|&l| e.val(l) == -1)
+                .collect()
         };
         if sum_true >= bound {
             match hv {
@@ -779,9 +807,12 @@ impl Engine {
                     }
                 }
             }
-            Reason::Stored => {
-                out.extend(self.stored[v.index()].iter().copied().filter(|l| l.var() != v))
-            }
+            Reason::Stored => out.extend(
+                self.stored[v.index()]
+                    .iter()
+                    .copied()
+                    .filter(|l| l.var() != v),
+            ),
         }
     }
 
@@ -977,7 +1008,11 @@ impl Engine {
                 break;
             }
             let r = l + 1;
-            let c = if r < n && self.heap_less(self.heap[r], self.heap[l]) { r } else { l };
+            let c = if r < n && self.heap_less(self.heap[r], self.heap[l]) {
+                r
+            } else {
+                l
+            };
             if !self.heap_less(self.heap[c], v) {
                 break;
             }
@@ -1019,12 +1054,12 @@ impl Engine {
         {
             let k = (self.next_random() % self.heap.len() as u64) as usize;
             let v = self.heap[k];
-            if self.val(v.pos()) == 0 {
+            if self.val(v.positive()) == 0 {
                 return Some(Lit::new(v, self.phase[v.index()]));
             }
         }
         while let Some(v) = self.heap_pop() {
-            if self.val(v.pos()) == 0 && self.decidable[v.index()] {
+            if self.val(v.positive()) == 0 && self.decidable[v.index()] {
                 return Some(Lit::new(v, self.phase[v.index()]));
             }
         }
@@ -1042,10 +1077,19 @@ impl Engine {
         let mut cands: Vec<(u32, f32, ClauseRef)> = self
             .learnts
             .iter()
-            .map(|&c| (self.clause_flags(c) >> 2, f32::from_bits(self.arena[c as usize + 2]), c))
+            .map(|&c| {
+                (
+                    self.clause_flags(c) >> 2,
+                    f32::from_bits(self.arena[c as usize + 2]),
+                    c,
+                )
+            })
             .collect();
         // Worst first: high LBD, then low activity.
-        cands.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.partial_cmp(&b.1).unwrap_or(std::cmp::Ordering::Equal)));
+        cands.sort_by(|a, b| {
+            b.0.cmp(&a.0)
+                .then(a.1.partial_cmp(&b.1).unwrap_or(std::cmp::Ordering::Equal))
+        });
         let target = cands.len() / 2;
         let mut removed = 0;
         let mut keep = Vec::with_capacity(cands.len());
@@ -1194,8 +1238,12 @@ impl Engine {
                 self.conflicts += 1;
                 // The conflict may lie entirely below the current level (clauses added during
                 // search); move down to its highest level first.
-                let max_level =
-                    self.conflict.iter().map(|l| self.level[l.var().index()]).max().unwrap_or(0);
+                let max_level = self
+                    .conflict
+                    .iter()
+                    .map(|l| self.level[l.var().index()])
+                    .max()
+                    .unwrap_or(0);
                 if max_level == 0 {
                     self.inconsistent = true;
                     self.backtrack(0);
@@ -1278,12 +1326,12 @@ mod tests {
         let v = lits(&mut e, 6);
         let p = |i: usize, j: usize| v[i * 2 + j];
         for i in 0..3 {
-            e.add_clause(&[p(i, 0).pos(), p(i, 1).pos()]);
+            e.add_clause(&[p(i, 0).positive(), p(i, 1).positive()]);
         }
         for j in 0..2 {
             for a in 0..3 {
                 for b in a + 1..3 {
-                    e.add_clause(&[p(a, j).neg(), p(b, j).neg()]);
+                    e.add_clause(&[p(a, j).negative(), p(b, j).negative()]);
                 }
             }
         }
@@ -1297,10 +1345,14 @@ mod tests {
         let mut e = Engine::new();
         let v = lits(&mut e, 4);
         let (h, a, b, c) = (v[0], v[1], v[2], v[3]);
-        e.add_weight(h.pos(), &[(a.pos(), 2), (b.pos(), 1), (c.pos(), 1)], 3);
-        e.add_clause(&[h.pos()]);
-        assert_eq!(e.search(&[a.neg()]), SearchResult::Unsat);
-        assert_eq!(e.search(&[a.pos(), c.neg()]), SearchResult::Sat);
-        assert_eq!(e.value(b.pos()), Some(true));
+        e.add_weight(
+            h.positive(),
+            &[(a.positive(), 2), (b.positive(), 1), (c.positive(), 1)],
+            3,
+        );
+        e.add_clause(&[h.positive()]);
+        assert_eq!(e.search(&[a.negative()]), SearchResult::Unsat);
+        assert_eq!(e.search(&[a.positive(), c.negative()]), SearchResult::Sat);
+        assert_eq!(e.value(b.positive()), Some(true));
     }
 }

@@ -13,7 +13,10 @@ pub struct Var(u32);
 impl Var {
     /// The variable with the given index.
     pub fn new(index: usize) -> Var {
-        assert!(index < (u32::MAX >> 1) as usize, "too many solver variables");
+        assert!(
+            index < (u32::MAX >> 1) as usize,
+            "too many solver variables"
+        );
         Var(index as u32)
     }
 
@@ -23,12 +26,12 @@ impl Var {
     }
 
     /// The positive literal of this variable.
-    pub fn pos(self) -> Lit {
+    pub fn positive(self) -> Lit {
         Lit(self.0 << 1)
     }
 
     /// The negative literal of this variable.
-    pub fn neg(self) -> Lit {
+    pub fn negative(self) -> Lit {
         Lit(self.0 << 1 | 1)
     }
 }
@@ -47,9 +50,9 @@ impl Lit {
     /// The literal of `var` that is true when the variable has the value `value`.
     pub fn new(var: Var, value: bool) -> Lit {
         if value {
-            var.pos()
+            var.positive()
         } else {
-            var.neg()
+            var.negative()
         }
     }
 
@@ -96,12 +99,12 @@ mod tests {
     #[test]
     fn literal_encoding() {
         let v = Var::new(5);
-        assert_eq!(v.pos().code(), 10);
-        assert_eq!(v.neg().code(), 11);
-        assert_eq!(!v.pos(), v.neg());
-        assert_eq!(v.neg().var(), v);
-        assert!(v.neg().is_neg());
-        assert_eq!(format!("{:?}", v.neg()), "-6");
-        assert_eq!(Lit::new(v, false), v.neg());
+        assert_eq!(v.positive().code(), 10);
+        assert_eq!(v.negative().code(), 11);
+        assert_eq!(!v.positive(), v.negative());
+        assert_eq!(v.negative().var(), v);
+        assert!(v.negative().is_neg());
+        assert_eq!(format!("{:?}", v.negative()), "-6");
+        assert_eq!(Lit::new(v, false), v.negative());
     }
 }

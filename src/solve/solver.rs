@@ -99,8 +99,16 @@ impl Solver {
         engine.random_permille = config.random_freq_permille.min(1000);
         engine.default_phase = !config.default_phase_false;
         engine.restarts = match config.restarts {
-            RestartPolicy::Luby(u) => Restarts::Luby { unit: u.max(1), index: 0, left: u.max(1) as u64 },
-            RestartPolicy::Glucose => Restarts::Glucose { fast: 0.0, slow: 0.0, since: 0 },
+            RestartPolicy::Luby(u) => Restarts::Luby {
+                unit: u.max(1),
+                index: 0,
+                left: u.max(1) as u64,
+            },
+            RestartPolicy::Glucose => Restarts::Glucose {
+                fast: 0.0,
+                slow: 0.0,
+                since: 0,
+            },
             RestartPolicy::Never => Restarts::Never,
         };
         let mut prog = prog.clone();
@@ -113,12 +121,26 @@ impl Solver {
         } else {
             tr = Translation::build(&prog, &mut engine);
         }
-        let cr_lits = prog.cr_rules.iter().map(|c| tr.atom_lit[c.appl as usize]).collect();
+        let cr_lits = prog
+            .cr_rules
+            .iter()
+            .map(|c| tr.atom_lit[c.appl as usize])
+            .collect();
         let mut is_cr = vec![false; prog.num_atoms as usize + 1];
         for c in &prog.cr_rules {
             is_cr[c.appl as usize] = true;
         }
-        Solver { prog, config, engine, tr, cr_lits, is_cr, step_guard, minimality_checks: 0, best: None }
+        Solver {
+            prog,
+            config,
+            engine,
+            tr,
+            cr_lits,
+            is_cr,
+            step_guard,
+            minimality_checks: 0,
+            best: None,
+        }
     }
 
     /// Incremental build: like `Translation::build`, but completion clauses are guarded.
@@ -134,12 +156,13 @@ impl Solver {
         let mut extra = Vec::new();
         for a in 1..=prog.num_atoms {
             if !prog.externals.iter().any(|&(x, _)| x == a) {
-                open.externals.push((a, crate::ground::program::ExternalValue::Free));
+                open.externals
+                    .push((a, crate::ground::program::ExternalValue::Free));
                 extra.push(a);
             }
         }
         let mut tr = Translation::build(&open, engine);
-        let g = engine.new_var().pos();
+        let g = engine.new_var().positive();
         engine.set_decidable(g.var(), false);
         for &a in &extra {
             tr.free[a as usize] = false;
@@ -177,7 +200,11 @@ impl Solver {
         let new_n = max_atom(&grown);
         if self.step_guard.is_none() {
             for r in rules {
-                if let Some(&h) = r.head.iter().find(|&&h| h <= old_n && !self.tr.free[h as usize]) {
+                if let Some(&h) = r
+                    .head
+                    .iter()
+                    .find(|&&h| h <= old_n && !self.tr.free[h as usize])
+                {
                     return Err(SolveError::AtomAlreadyDefined(h));
                 }
             }
@@ -185,7 +212,7 @@ impl Solver {
         self.engine.backtrack(0);
         for _ in old_n..new_n {
             let v = self.engine.new_var();
-            self.tr.atom_lit.push(v.pos());
+            self.tr.atom_lit.push(v.positive());
             self.tr.supports.push(Vec::new());
             self.tr.free.push(false);
             self.is_cr.push(false);
@@ -207,7 +234,7 @@ impl Solver {
                 // Retire the old step's completion and re-add every completion clause under a
                 // fresh guard.
                 self.engine.add_clause(&[!old]);
-                let g = self.engine.new_var().pos();
+                let g = self.engine.new_var().positive();
                 self.engine.set_decidable(g.var(), false);
                 for a in 1..=new_n as usize {
                     if !self.tr.free[a] {
@@ -267,7 +294,11 @@ impl Solver {
         sink: &mut dyn FnMut(&Model) -> bool,
     ) -> SolveResult {
         let start = Instant::now();
-        let (d0, c0, r0) = (self.engine.decisions, self.engine.conflicts, self.engine.num_restarts);
+        let (d0, c0, r0) = (
+            self.engine.decisions,
+            self.engine.conflicts,
+            self.engine.num_restarts,
+        );
         self.engine.deadline = self.config.deadline;
         self.engine.interrupt = self.config.interrupt.clone();
         let mut assume: Vec<Lit> = self.tr.assumptions.clone();
@@ -293,7 +324,7 @@ impl Solver {
             self.run_main(&mut call, &assume, call_guard);
         } else {
             match self.config.cr_mode {
-                CrMode::Cardinality => self.run_cr_cardinality(&mut call, &mut assume, call_guard),
+                CrMode::Cardinality => self.run_cr_cardinality(&mut call, &assume, call_guard),
                 CrMode::Subset => self.run_cr_subset(&mut call, &assume, call_guard),
             }
         }
@@ -310,7 +341,11 @@ impl Solver {
             Outcome::Unknown
         };
         let stop = if call.stopped {
-            Some(if self.engine.interrupted { StopReason::Interrupted } else { StopReason::TimeLimit })
+            Some(if self.engine.interrupted {
+                StopReason::Interrupted
+            } else {
+                StopReason::TimeLimit
+            })
         } else {
             None
         };
@@ -343,7 +378,7 @@ impl Solver {
         self.engine.backtrack(0);
         let g = self.engine.new_var();
         self.engine.set_decidable(g, false);
-        g.pos()
+        g.positive()
     }
 
     fn retire(&mut self, guard: Lit) {
@@ -395,9 +430,21 @@ impl Solver {
         }
         let mut sub = Engine::new();
         let vars: Vec<Option<Lit>> = (0..=self.prog.num_atoms as usize)
-            .map(|a| if in_m[a] { Some(sub.new_var().pos()) } else { None })
+            .map(|a| {
+                if in_m[a] {
+                    Some(sub.new_var().positive())
+                } else {
+                    None
+                }
+            })
             .collect();
-        let holds = |l: i32| if l > 0 { in_m[l as usize] } else { !in_m[(-l) as usize] };
+        let holds = |l: i32| {
+            if l > 0 {
+                in_m[l as usize]
+            } else {
+                !in_m[(-l) as usize]
+            }
+        };
         for r in &self.prog.rules {
             let heads: Vec<Lit> = r.head.iter().filter_map(|&h| vars[h as usize]).collect();
             if r.head.is_empty() {
@@ -430,7 +477,7 @@ impl Solver {
                             var_lits.push((v, w));
                         }
                     }
-                    let b = sub.new_var().pos();
+                    let b = sub.new_var().positive();
                     sub.add_weight(b, &var_lits, lower - fixed);
                     clause_body.push(!b);
                 }
@@ -514,7 +561,12 @@ impl Solver {
     fn report(&mut self, call: &mut Call<'_>, optimal: bool, dedup: bool) -> bool {
         let mut m = self.model(call.phase_count + 1, optimal);
         if dedup {
-            let key: Vec<u32> = m.atoms.iter().copied().filter(|&a| !self.is_cr[a as usize]).collect();
+            let key: Vec<u32> = m
+                .atoms
+                .iter()
+                .copied()
+                .filter(|&a| !self.is_cr[a as usize])
+                .collect();
             if !call.seen.insert(key) {
                 return true;
             }
@@ -540,7 +592,13 @@ impl Solver {
     fn projection(&self) -> Option<Vec<Lit>> {
         if self.config.project {
             if !self.prog.projections.is_empty() {
-                return Some(self.prog.projections.iter().map(|&a| self.tr.atom_lit[a as usize]).collect());
+                return Some(
+                    self.prog
+                        .projections
+                        .iter()
+                        .map(|&a| self.tr.atom_lit[a as usize])
+                        .collect(),
+                );
             }
             return Some(self.tr.output_lits.clone());
         }
@@ -591,15 +649,18 @@ impl Solver {
         if inclusive {
             bound[k - 1] += 1;
         }
-        let levels: Vec<Vec<(Lit, i64)>> = self.tr.minimize[..k].iter().map(|(_, l)| l.clone()).collect();
+        let levels: Vec<Vec<(Lit, i64)>> = self.tr.minimize[..k]
+            .iter()
+            .map(|(_, l)| l.clone())
+            .collect();
         let mut at_most = Vec::new();
         let mut below = Vec::new();
         for (i, lits) in levels.iter().enumerate() {
             let neg: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (l, -w)).collect();
             // sum <= c  <=>  -sum >= -c.
-            let a = self.engine.new_var().pos();
+            let a = self.engine.new_var().positive();
             self.engine.add_weight(a, &neg, -bound[i]);
-            let b = self.engine.new_var().pos();
+            let b = self.engine.new_var().positive();
             self.engine.add_weight(b, &neg, -(bound[i] - 1));
             at_most.push(a);
             below.push(b);
@@ -623,7 +684,8 @@ impl Solver {
         match self.config.enum_mode {
             EnumMode::Brave | EnumMode::Cautious => self.run_consequences(call, assume, guard),
             EnumMode::Auto => {
-                let optimize = !self.tr.minimize.is_empty() && self.config.opt_mode != OptMode::Ignore;
+                let optimize =
+                    !self.tr.minimize.is_empty() && self.config.opt_mode != OptMode::Ignore;
                 match self.config.opt_mode.clone() {
                     OptMode::Opt if optimize => {
                         self.run_optimize(call, assume, dedup, true);
@@ -640,6 +702,7 @@ impl Solver {
                                 a2.push(g);
                                 call.optimum = false;
                                 call.phase_count = 0;
+                                call.seen.clear();
                                 let ok = self.run_enumerate(call, &a2, g, dedup, true);
                                 call.optimum = ok;
                                 self.retire(g);
@@ -663,7 +726,14 @@ impl Solver {
     }
 
     /// Enumerates answer sets; returns true when the space was exhausted.
-    fn run_enumerate(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit, dedup: bool, optimal: bool) -> bool {
+    fn run_enumerate(
+        &mut self,
+        call: &mut Call<'_>,
+        assume: &[Lit],
+        guard: Lit,
+        dedup: bool,
+        optimal: bool,
+    ) -> bool {
         let projection = self.projection();
         loop {
             match self.next(assume) {
@@ -688,7 +758,13 @@ impl Solver {
 
     /// Branch and bound; returns true when the optimum was proven. Reports improving models
     /// when `report` is set, otherwise remembers the best one in `call.seen`-independent state.
-    fn run_optimize(&mut self, call: &mut Call<'_>, assume: &[Lit], dedup: bool, report: bool) -> bool {
+    fn run_optimize(
+        &mut self,
+        call: &mut Call<'_>,
+        assume: &[Lit],
+        dedup: bool,
+        report: bool,
+    ) -> bool {
         let mut bound_guard: Option<Lit> = None;
         let mut found = false;
         loop {
@@ -760,7 +836,15 @@ impl Solver {
                         .collect();
                     let cur = match current.take() {
                         None => truth,
-                        Some(c) => (0..n).map(|i| if brave { c[i] || truth[i] } else { c[i] && truth[i] }).collect(),
+                        Some(c) => (0..n)
+                            .map(|i| {
+                                if brave {
+                                    c[i] || truth[i]
+                                } else {
+                                    c[i] && truth[i]
+                                }
+                            })
+                            .collect(),
                     };
                     let mut m = self.model(call.count + 1, false);
                     m.symbols.clear();
@@ -776,11 +860,10 @@ impl Solver {
                         break;
                     }
                     let mut c = vec![!guard];
-                    for i in 0..n {
-                        let l = self.tr.output_lits[i];
-                        if brave && !cur[i] {
+                    for (&l, &now) in self.tr.output_lits.iter().zip(&cur) {
+                        if brave && !now {
                             c.push(l);
-                        } else if !brave && cur[i] {
+                        } else if !brave && now {
                             c.push(!l);
                         }
                     }
@@ -793,12 +876,12 @@ impl Solver {
 
     /// Default CR semantics: find the minimal number of applied CR rules, then solve among the
     /// answer sets applying exactly that many.
-    fn run_cr_cardinality(&mut self, call: &mut Call<'_>, assume: &mut Vec<Lit>, guard: Lit) {
+    fn run_cr_cardinality(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
         let cr: Vec<(Lit, i64)> = self.cr_lits.iter().map(|&l| (l, 1)).collect();
         let mut best: Option<i64> = None;
         let mut bound_guard: Option<Lit> = None;
         loop {
-            let mut a = assume.clone();
+            let mut a = assume.to_vec();
             if let Some(g) = bound_guard {
                 a.push(g);
             }
@@ -812,7 +895,10 @@ impl Solver {
                     return;
                 }
                 Next::Model => {
-                    let k = cr.iter().filter(|&&(l, _)| self.engine.value(l) == Some(true)).count() as i64;
+                    let k = cr
+                        .iter()
+                        .filter(|&&(l, _)| self.engine.value(l) == Some(true))
+                        .count() as i64;
                     best = Some(k);
                     if let Some(g) = bound_guard {
                         self.retire(g);
@@ -824,7 +910,7 @@ impl Solver {
                     let g = self.new_guard();
                     let neg: Vec<(Lit, i64)> = cr.iter().map(|&(l, _)| (l, -1)).collect();
                     // guard -> count <= k - 1.
-                    let b = self.engine.new_var().pos();
+                    let b = self.engine.new_var().positive();
                     self.engine.add_weight(b, &neg, -(k - 1));
                     self.engine.add_clause(&[!g, b]);
                     bound_guard = Some(g);
@@ -841,37 +927,43 @@ impl Solver {
         // guard -> count <= k, for the rest of this call.
         self.engine.backtrack(0);
         let neg: Vec<(Lit, i64)> = cr.iter().map(|&(l, _)| (l, -1)).collect();
-        let b = self.engine.new_var().pos();
+        let b = self.engine.new_var().positive();
         self.engine.add_weight(b, &neg, -k);
         self.engine.add_clause(&[!guard, b]);
         self.run_main(call, assume, guard);
     }
 
-    /// `--cr=subset`: for each set-inclusion-minimal set of applied CR rules, the answer sets
-    /// applying exactly that set.
+    /// `--cr=subset`: first every set-inclusion-minimal set of applied CR rules, then the
+    /// preference filter of CR-Prolog (drop sets containing two rules ordered by the transitive
+    /// closure of `prefer`, then sets dominated by a remaining one: `Y` dominates `X` when a rule
+    /// of `Y` is preferred to a rule of `X`), then the answer sets applying exactly one of the
+    /// kept sets.
     fn run_cr_subset(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
+        let k = self.cr_lits.len();
+        let mut minimal: Vec<Vec<bool>> = Vec::new();
+        let phase = self.new_guard();
+        let mut a0 = assume.to_vec();
+        a0.push(phase);
         loop {
-            if call.done {
-                return;
-            }
-            match self.next(assume) {
-                Next::Exhausted => {
-                    call.exhausted = true;
-                    return;
-                }
+            match self.next(&a0) {
+                Next::Exhausted => break,
                 Next::Stopped => {
                     call.stopped = true;
+                    self.retire(phase);
                     return;
                 }
                 Next::Model => {}
             }
-            let mut applied: Vec<bool> =
-                self.cr_lits.iter().map(|&l| self.engine.value(l) == Some(true)).collect();
+            let mut applied: Vec<bool> = self
+                .cr_lits
+                .iter()
+                .map(|&l| self.engine.value(l) == Some(true))
+                .collect();
             // Shrink the applied set until no answer set applies a strict subset.
             loop {
                 let g = self.new_guard();
                 let mut c = vec![!g];
-                let mut a = assume.to_vec();
+                let mut a = a0.clone();
                 a.push(g);
                 for (i, &l) in self.cr_lits.iter().enumerate() {
                     if applied[i] {
@@ -882,40 +974,93 @@ impl Solver {
                 }
                 self.engine.add_clause(&c);
                 let r = self.next(&a);
+                if let Next::Model = r {
+                    applied = self
+                        .cr_lits
+                        .iter()
+                        .map(|&l| self.engine.value(l) == Some(true))
+                        .collect();
+                }
+                self.retire(g);
                 match r {
-                    Next::Model => {
-                        applied = self.cr_lits.iter().map(|&l| self.engine.value(l) == Some(true)).collect();
-                        self.retire(g);
-                    }
-                    Next::Exhausted => {
-                        self.retire(g);
-                        break;
-                    }
+                    Next::Model => {}
+                    Next::Exhausted => break,
                     Next::Stopped => {
-                        self.retire(g);
                         call.stopped = true;
+                        self.retire(phase);
                         return;
                     }
                 }
             }
-            // The answer sets applying exactly `applied`.
-            let g = self.new_guard();
-            let mut a = assume.to_vec();
-            a.push(g);
-            for (i, &l) in self.cr_lits.iter().enumerate() {
-                a.push(if applied[i] { l } else { !l });
-            }
-            self.run_main(call, &a, g);
-            self.retire(g);
-            call.exhausted = false;
-            if call.stopped || call.done {
-                return;
-            }
-            // No later answer set may apply a superset of this minimal set.
-            let mut c = vec![!guard];
-            c.extend(self.cr_lits.iter().enumerate().filter(|(i, _)| applied[*i]).map(|(_, &l)| !l));
+            // No later set may contain this minimal one.
+            let mut c = vec![!phase];
+            c.extend(
+                self.cr_lits
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| applied[*i])
+                    .map(|(_, &l)| !l),
+            );
             self.engine.add_clause(&c);
+            minimal.push(applied);
         }
+        self.retire(phase);
+        let pref = self.preference_closure();
+        let candidates: Vec<&Vec<bool>> = minimal
+            .iter()
+            .filter(|x| !(0..k).any(|i| x[i] && (0..k).any(|j| x[j] && pref[i * k + j])))
+            .collect();
+        let kept: Vec<&Vec<bool>> = candidates
+            .iter()
+            .copied()
+            .filter(|x| {
+                !candidates
+                    .iter()
+                    .any(|y| (0..k).any(|b| y[b] && (0..k).any(|w| x[w] && pref[b * k + w])))
+            })
+            .collect();
+        if kept.is_empty() {
+            call.exhausted = true;
+            return;
+        }
+        // guard -> the applied set is one of the kept sets.
+        let mut big = vec![!guard];
+        for x in kept {
+            let conj: Vec<Lit> = self
+                .cr_lits
+                .iter()
+                .enumerate()
+                .map(|(i, &l)| if x[i] { l } else { !l })
+                .collect();
+            let c = self.tr.conjunction(&mut self.engine, &conj);
+            big.push(c);
+        }
+        self.engine.add_clause(&big);
+        self.run_main(call, assume, guard);
+    }
+
+    /// `pref[i * k + j]`: CR rule `i` is preferred to CR rule `j` (transitive closure).
+    fn preference_closure(&self) -> Vec<bool> {
+        let k = self.cr_lits.len();
+        let index = |a: u32| self.prog.cr_rules.iter().position(|c| c.appl == a);
+        let mut reach = vec![false; k * k];
+        for p in &self.prog.prefers {
+            if let (Some(i), Some(j)) = (index(p.better), index(p.worse)) {
+                reach[i * k + j] = true;
+            }
+        }
+        for m in 0..k {
+            for i in 0..k {
+                if reach[i * k + m] {
+                    for j in 0..k {
+                        if reach[m * k + j] {
+                            reach[i * k + j] = true;
+                        }
+                    }
+                }
+            }
+        }
+        reach
     }
 }
 
@@ -940,9 +1085,9 @@ pub fn supports(p: &GroundProgram, atoms: &[u32]) -> Vec<Option<usize>> {
             let mut changed = false;
             for (ri, r) in p.rules.iter().enumerate() {
                 let body_ok = match &r.body {
-                    Body::Normal(ls) => {
-                        ls.iter().all(|&l| holds(l) && (l < 0 || derived[l as usize]))
-                    }
+                    Body::Normal(ls) => ls
+                        .iter()
+                        .all(|&l| holds(l) && (l < 0 || derived[l as usize])),
                     Body::Weight { lower, lits } => {
                         let s: i64 = lits
                             .iter()

@@ -111,7 +111,7 @@ impl Translation {
         if let Some(&b) = self.conj.get(&key) {
             return b;
         }
-        let b = e.new_var().pos();
+        let b = e.new_var().positive();
         let mut big = vec![b];
         for &c in &key {
             let l = Lit::from_code(c);
@@ -130,14 +130,17 @@ impl Translation {
                 self.conjunction(e, &lits)
             }
             Body::Weight { lower, lits } => {
-                let mut key: Vec<(u32, i64)> =
-                    lits.iter().map(|&(l, w)| (self.lit(l).code() as u32, w)).collect();
+                let mut key: Vec<(u32, i64)> = lits
+                    .iter()
+                    .map(|&(l, w)| (self.lit(l).code() as u32, w))
+                    .collect();
                 key.sort_unstable();
                 if let Some(&b) = self.weights.get(&(*lower, key.clone())) {
                     return b;
                 }
-                let b = e.new_var().pos();
-                let wl: Vec<(Lit, i64)> = key.iter().map(|&(c, w)| (Lit::from_code(c), w)).collect();
+                let b = e.new_var().positive();
+                let wl: Vec<(Lit, i64)> =
+                    key.iter().map(|&(c, w)| (Lit::from_code(c), w)).collect();
                 e.add_weight(b, &wl, *lower);
                 self.weights.insert((*lower, key), b);
                 b
@@ -150,11 +153,11 @@ impl Translation {
         let n = max_atom(p) as usize;
         let mut t = Translation::default();
         let truth = e.new_var();
-        e.add_clause(&[truth.pos()]);
-        t.atom_lit.push(truth.pos());
+        e.add_clause(&[truth.positive()]);
+        t.atom_lit.push(truth.positive());
         for _ in 0..n {
             let v = e.new_var();
-            t.atom_lit.push(v.pos());
+            t.atom_lit.push(v.positive());
         }
         t.supports = vec![Vec::new(); n + 1];
         t.free = vec![false; n + 1];
@@ -223,7 +226,9 @@ impl Translation {
                     for &h in &head {
                         let mut conj = vec![b];
                         conj.extend(
-                            head.iter().filter(|&&o| o != h).map(|&o| !self.atom_lit[o as usize]),
+                            head.iter()
+                                .filter(|&&o| o != h)
+                                .map(|&o| !self.atom_lit[o as usize]),
                         );
                         let s = self.conjunction(e, &conj);
                         self.supports[h as usize].push((s, index));
@@ -251,9 +256,11 @@ impl Translation {
         for r in &p.rules {
             let pos: Vec<u32> = match &r.body {
                 Body::Normal(ls) => ls.iter().filter(|&&l| l > 0).map(|&l| l as u32).collect(),
-                Body::Weight { lits, .. } => {
-                    lits.iter().filter(|&&(l, w)| l > 0 && w > 0).map(|&(l, _)| l as u32).collect()
-                }
+                Body::Weight { lits, .. } => lits
+                    .iter()
+                    .filter(|&&(l, w)| l > 0 && w > 0)
+                    .map(|&(l, _)| l as u32)
+                    .collect(),
             };
             for &h in &r.head {
                 edges[h as usize].extend_from_slice(&pos);
@@ -322,10 +329,17 @@ impl Translation {
                                 wl.push((!self.lit(l), (-(w as i128)) as u64, None));
                             }
                         }
-                        SupportBody::Weight { bound: bound.max(0) as u64, lits: wl }
+                        SupportBody::Weight {
+                            bound: bound.max(0) as u64,
+                            lits: wl,
+                        }
                     }
                 };
-                sups.push(Support { head: local[a], lit, body });
+                sups.push(Support {
+                    head: local[a],
+                    lit,
+                    body,
+                });
             }
         }
         e.unfounded = Some(Unfounded::new(atom_lits, sups));

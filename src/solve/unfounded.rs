@@ -66,8 +66,15 @@ pub struct Unfounded {
 
 impl Unfounded {
     /// Builds the propagator; `supports` must refer to atoms `0..atom_lit.len()`.
-    pub fn new(atom_lit: Vec<Lit>, supports: Vec<Support>) -> Unfounded {
+    pub fn new(atom_lit: Vec<Lit>, mut supports: Vec<Support>) -> Unfounded {
         let n = atom_lit.len();
+        // Counting requires each positive cyclic atom once per body.
+        for s in supports.iter_mut() {
+            if let SupportBody::Normal(pos) = &mut s.body {
+                pos.sort_unstable();
+                pos.dedup();
+            }
+        }
         let mut supports_of = vec![Vec::new(); n];
         let mut occurs = vec![Vec::new(); n];
         for (i, s) in supports.iter().enumerate() {
@@ -92,12 +99,22 @@ impl Unfounded {
             o.dedup();
         }
         let count = vec![0; supports.len()];
-        Unfounded { atom_lit, supports_of, occurs, supports, founded: vec![false; n], count }
+        Unfounded {
+            atom_lit,
+            supports_of,
+            occurs,
+            supports,
+            founded: vec![false; n],
+            count,
+        }
     }
 
     fn weight_founded(&self, e: &Engine, s: &Support) -> bool {
         match &s.body {
             SupportBody::Weight { bound, lits } => {
+                if *bound == 0 {
+                    return true;
+                }
                 let mut sum = 0u64;
                 for &(l, w, a) in lits {
                     if e.value(l) == Some(false) {
@@ -134,7 +151,9 @@ impl Unfounded {
         for i in 0..self.supports.len() {
             let s = &self.supports[i];
             let h = s.head as usize;
-            if self.founded[h] || e.value(s.lit) == Some(false) || e.value(self.atom_lit[h]) == Some(false)
+            if self.founded[h]
+                || e.value(s.lit) == Some(false)
+                || e.value(self.atom_lit[h]) == Some(false)
             {
                 continue;
             }
