@@ -8,6 +8,7 @@
 
 pub mod input;
 pub mod options;
+pub mod report;
 
 use std::io::{Read, Write};
 

@@ -10,7 +10,7 @@
 //!   unexpected X[, expecting ...]`); the parser then skips to the `.` that ends the statement
 //!   and goes on.
 //! - Every loop consumes a token per iteration or stops; the statement loop asserts progress.
-//! - Nesting (parentheses, unary operators, right-associative chains, aggregates) is capped at
+//! - Nesting (parentheses, unary operators, operator chains, aggregates) is capped at
 //!   [`MAX_DEPTH`] levels, so hostile input cannot overflow the stack.
 //! - Embedded scripts (`#script`, `@f(...)`) are parsed and kept, and reported once per file
 //!   with a single "unsupported" error.
@@ -922,6 +922,7 @@ impl<'a> Parser<'a> {
     fn sort_expr(&mut self, min_level: u8) -> PResult<SortExpr> {
         self.enter()?;
         let mut lhs = self.sort_primary()?;
+        let mut folds = 0;
         loop {
             let level = match self.tok.kind {
                 T::Plus | T::Minus => 0,
@@ -941,7 +942,10 @@ impl<'a> Parser<'a> {
                 _ => SortExprKind::Intersection(l, r),
             };
             lhs = SortExpr { span, kind };
+            self.enter()?;
+            folds += 1;
         }
+        self.depth -= folds;
         self.leave();
         Ok(lhs)
     }
@@ -1540,6 +1544,7 @@ impl<'a> Parser<'a> {
     fn binary(&mut self, min_level: u8) -> PResult<Term> {
         self.enter()?;
         let mut lhs = self.unary()?;
+        let mut folds = 0;
         loop {
             let (level, op) = match self.tok.kind {
                 T::Dots => (0, None),
@@ -1577,7 +1582,12 @@ impl<'a> Parser<'a> {
                 },
             };
             lhs = Term { span, kind };
+            // A left-associative chain nests the tree one level per operator, and every later
+            // stage (printer, span walk, drop) recurses over it, so it counts as nesting.
+            self.enter()?;
+            folds += 1;
         }
+        self.depth -= folds;
         self.leave();
         Ok(lhs)
     }
@@ -1668,11 +1678,9 @@ impl<'a> Parser<'a> {
                 TermKind::ScriptCall { name, args }
             }
             T::Bar => {
-                self.enter()?;
                 self.bump();
                 let arg = self.term()?;
                 self.expect(T::Bar, &["|"])?;
-                self.leave();
                 TermKind::Unary {
                     op: UnaryOp::Abs,
                     arg: Box::new(arg),
@@ -1689,11 +1697,9 @@ impl<'a> Parser<'a> {
 
     /// `( alternatives )` of a function: pools `f(1,2;3)`; `f()` is one empty list.
     fn arguments(&mut self) -> PResult<Vec<Vec<Term>>> {
-        self.enter()?;
         self.bump();
         let mut alts = Vec::new();
         if self.eat(T::RParen) {
-            self.leave();
             return Ok(vec![Vec::new()]);
         }
         loop {
@@ -1711,16 +1717,13 @@ impl<'a> Parser<'a> {
             self.expect(T::RParen, &[")", ";"])?;
             break;
         }
-        self.leave();
         Ok(alts)
     }
 
     /// A parenthesized term: `(t)`, a tuple `()`, `(a,)`, `(a,b)`, or a pool `(a;b)`.
     fn parenthesized(&mut self) -> PResult<TermKind> {
-        self.enter()?;
         self.bump();
         if self.eat(T::RParen) {
-            self.leave();
             return Ok(TermKind::Function {
                 name: String::new(),
                 args: vec![Vec::new()],
@@ -1746,7 +1749,6 @@ impl<'a> Parser<'a> {
             self.expect(T::RParen, &[")", ";"])?;
             break;
         }
-        self.leave();
         if alts.len() == 1 {
             let (_, mut terms, trailing) = alts.pop().expect("one alternative");
             if terms.len() == 1 && !trailing {
