@@ -13,3 +13,10 @@ pub mod result;
 
 pub use config::{Config, CrMode, EnumMode, OptMode, RestartPolicy};
 pub use result::{Model, Outcome, SolveResult, Stats, StopReason};
+pub mod engine;
+pub mod lit;
+pub mod solver;
+pub mod translate;
+pub mod unfounded;
+
+pub use solver::{SolveError, Solver};
