@@ -99,3 +99,47 @@ fn brave_consequences_from_a_result() {
     write_text(&mut out, &r, Quiet::default()).unwrap();
     insta::assert_snapshot!(String::from_utf8(out).unwrap());
 }
+
+#[test]
+fn context_from_program_and_config() {
+    use lucent::ground::program::{CrRule, GroundProgram, Minimize, Output};
+    use lucent::solve::{Config, OptMode};
+    let mut p = GroundProgram::new();
+    let a = p.new_atom();
+    p.outputs = vec![
+        Output {
+            symbol: "a".into(),
+            condition: vec![a as i32],
+        },
+        Output {
+            symbol: "a".into(),
+            condition: vec![],
+        },
+        Output {
+            symbol: "b".into(),
+            condition: vec![],
+        },
+    ];
+    p.minimize.push(Minimize {
+        priority: 0,
+        lits: vec![(a as i32, 1)],
+    });
+    p.cr_rules.push(CrRule {
+        appl: a,
+        label: "r".into(),
+    });
+    let c = Context::for_program(&p, &Config::default(), vec!["x.lp".into()]);
+    assert!(c.has_minimize && c.optimizing && c.has_cr);
+    assert_eq!(c.shown_total, 2);
+    let config = Config {
+        opt_mode: OptMode::Enum(vec![]),
+        ..Config::default()
+    };
+    let c = Context::for_program(&p, &config, vec![]);
+    assert!(c.has_minimize && !c.optimizing);
+    let config = Config {
+        opt_mode: OptMode::Ignore,
+        ..Config::default()
+    };
+    assert!(!Context::for_program(&p, &config, vec![]).has_minimize);
+}

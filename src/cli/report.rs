@@ -21,7 +21,8 @@
 
 use std::io::{self, Write};
 
-use crate::solve::{EnumMode, Model, Outcome, SolveResult, StopReason};
+use crate::ground::program::GroundProgram;
+use crate::solve::{Config, EnumMode, Model, OptMode, Outcome, SolveResult, StopReason};
 
 /// Exit code bit: a model was found.
 pub const EXIT_SAT: i32 = 10;
@@ -145,6 +146,24 @@ pub struct Context {
     pub has_cr: bool,
     /// Number of distinct shown symbols of the program (for brave consequence counts).
     pub shown_total: usize,
+}
+
+impl Context {
+    /// The context of solving `program` with `config`, read from `inputs`.
+    pub fn for_program(program: &GroundProgram, config: &Config, inputs: Vec<String>) -> Context {
+        let has_minimize = !program.minimize.is_empty() && config.opt_mode != OptMode::Ignore;
+        let mut symbols: Vec<&str> = program.outputs.iter().map(|o| o.symbol.as_str()).collect();
+        symbols.sort_unstable();
+        symbols.dedup();
+        Context {
+            inputs,
+            has_minimize,
+            optimizing: has_minimize && matches!(config.opt_mode, OptMode::Opt | OptMode::OptN),
+            enum_mode: config.enum_mode,
+            has_cr: !program.cr_rules.is_empty(),
+            shown_total: symbols.len(),
+        }
+    }
 }
 
 impl Report {
