@@ -83,21 +83,13 @@ pub fn add_bytes(
         );
         return (file, Some(diag));
     }
-    match String::from_utf8(bytes) {
-        Ok(text) => (sources.add(name, text), None),
-        Err(err) => {
-            let bad = err.utf8_error().valid_up_to() as u32;
-            let text = String::from_utf8_lossy(err.as_bytes()).into_owned();
-            // The lossy text has U+FFFD (3 bytes) where invalid bytes were; positions before
-            // the first bad byte are unchanged, so the span below is exact.
-            let file = sources.add(name, text);
-            let diag = Diagnostic::error(
-                Span::new(file, bad, bad + 1),
-                "invalid UTF-8 in input; invalid bytes were read as U+FFFD",
-            );
-            (file, Some(diag))
-        }
-    }
+    // Decoding is the syntax layer's rule (lossy, one error at the first invalid byte); the
+    // file gets its id first so the diagnostic can point into it.
+    let placeholder = sources.len() as u32;
+    let (text, diag) = crate::syntax::decode_source(crate::base::FileId(placeholder), &bytes);
+    let file = sources.add(name, text);
+    debug_assert_eq!(file.0, placeholder);
+    (file, diag)
 }
 
 #[cfg(test)]
@@ -124,7 +116,7 @@ mod tests {
         let mut sources = SourceMap::new();
         let (file, diag) = add_bytes(&mut sources, "-", b"a.\nb\xff.".to_vec());
         let diag = diag.expect("a diagnostic");
-        assert_eq!(sources.location(diag.span), "-:2:2-3");
+        assert_eq!(sources.location(diag.span), "-:2:2-5");
         assert_eq!(sources.get(file).text, "a.\nb\u{fffd}.");
     }
 

@@ -13,6 +13,7 @@ pub mod report;
 use std::io::{Read, Write};
 
 use crate::base::{Diagnostics, SourceMap};
+use crate::syntax::ast::{Dialect, Program};
 use options::{Options, UsageError};
 
 /// Exit code: a model was found.
@@ -113,20 +114,75 @@ fn flush_diagnostics(io: &mut Io, diags: &Diagnostics, sources: &SourceMap) -> s
     write!(io.err, "{}", diags.render(sources))
 }
 
-fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
+/// The dialect of an input: as the options say, or SPARC for `.sp` files, or detected from the
+/// text.
+fn dialect_of(options: &Options, name: &str, text: &str) -> Dialect {
+    match options.dialect {
+        options::DialectChoice::Clingo => Dialect::Clingo,
+        options::DialectChoice::Sparc => Dialect::Sparc,
+        options::DialectChoice::Auto if name.ends_with(".sp") => Dialect::Sparc,
+        options::DialectChoice::Auto => crate::syntax::detect_dialect(text),
+    }
+}
+
+/// The parsed inputs of a run.
+pub struct Parsed {
+    /// Every input file's text, for diagnostics.
+    pub sources: SourceMap,
+    /// One syntax tree per input, in command-line order.
+    pub programs: Vec<Program>,
+    /// The inputs' names as given.
+    pub names: Vec<String>,
+}
+
+/// Reads and parses every input. On errors, prints the diagnostics and returns the exit code.
+fn read_and_parse(
+    options: &Options,
+    io: &mut Io,
+    diags: &mut Diagnostics,
+) -> std::io::Result<Result<Parsed, i32>> {
     let mut sources = SourceMap::new();
-    let mut diags = diagnostics_for(options);
     let (loaded, load_diags) = input::load(&options.files, io.stdin, &mut sources);
     diags.extend(load_diags);
-    if diags.has_errors() {
-        flush_diagnostics(io, &diags, &sources)?;
-        return Ok(EXIT_INPUT);
+    let mut programs = Vec::new();
+    for input in &loaded {
+        let text = &sources.get(input.file).text;
+        let dialect = dialect_of(options, &input.name, text);
+        let parse = crate::syntax::parse(input.file, text, dialect);
+        diags.extend(parse.diagnostics);
+        programs.push(parse.program);
     }
-    let _ = loaded;
-    flush_diagnostics(io, &diags, &sources)?;
+    if diags.has_errors() {
+        flush_diagnostics(io, diags, &sources)?;
+        writeln!(io.err, "*** ERROR: (lucent): parsing failed")?;
+        return Ok(Err(EXIT_INPUT));
+    }
+    let names = loaded.into_iter().map(|i| i.name).collect();
+    Ok(Ok(Parsed {
+        sources,
+        programs,
+        names,
+    }))
+}
+
+fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
+    let mut diags = diagnostics_for(options);
+    if options.mode == options::Mode::Clasp {
+        writeln!(
+            io.err,
+            "*** ERROR: (lucent): --mode=clasp needs the solver, which this build does not have yet"
+        )?;
+        return Ok(EXIT_UNAVAILABLE);
+    }
+    let parsed = match read_and_parse(options, io, &mut diags)? {
+        Ok(p) => p,
+        Err(code) => return Ok(code),
+    };
+    flush_diagnostics(io, &diags, &parsed.sources)?;
     writeln!(
         io.err,
-        "*** ERROR: (lucent): this build cannot ground or solve yet; nothing was solved"
+        "*** ERROR: (lucent): this build cannot ground or solve yet; {} input(s) parsed, nothing was solved",
+        parsed.programs.len()
     )?;
     Ok(EXIT_UNAVAILABLE)
 }
@@ -163,6 +219,18 @@ mod tests {
         let (code, out, _) = run_str("--version", "");
         assert_eq!(code, 0);
         assert!(out.starts_with("lucent version "));
+    }
+
+    #[test]
+    fn syntax_error_exits_65_with_gringo_location() {
+        let (code, out, err) = run_str("", "p(1)\nq(2).");
+        assert_eq!(code, EXIT_INPUT);
+        assert!(out.is_empty());
+        assert!(
+            err.starts_with("-:2:1-2: error: syntax error, unexpected <IDENTIFIER>"),
+            "{err}"
+        );
+        assert!(err.contains("parsing failed"));
     }
 
     #[test]

@@ -149,7 +149,17 @@ struct Parser<'a> {
     script_reported: bool,
     /// The current SPARC section, if any.
     section: Option<Section>,
+    /// What gringo lists as expected after the last body element (its LALR states differ by
+    /// the kind of element), used when the closing `.` is missing.
+    body_end: &'static [&'static str],
 }
+
+/// Expected after a body aggregate.
+const AFTER_AGGREGATE: &[&str] = &["\",\"", ".", ";"];
+/// Expected after a comparison or a Boolean constant.
+const AFTER_BUILTIN: &[&str] = &[":", "\",\"", ".", ";"];
+/// Expected after a condition ending in a comparison.
+const AFTER_CONDITION: &[&str] = &[".", ";"];
 
 /// Aggregate function of a token, if it is `#count`, `#sum`, `#sum+`, `#min` or `#max`.
 fn aggregate_function(kind: T, word: &str) -> Option<AggregateFunction> {
@@ -302,6 +312,7 @@ impl<'a> Parser<'a> {
             depth: 0,
             script_reported: false,
             section: None,
+            body_end: &[],
         }
     }
 
@@ -600,13 +611,20 @@ impl<'a> Parser<'a> {
                     kind: RuleKind::ConsistencyRestoring { label },
                 }))
             }
-            _ => Err(self.unexpected(&[])),
+            _ => {
+                let expecting: &[&str] = match head {
+                    Head::Choice(_) | Head::Aggregate(_) => &[".", ":-"],
+                    _ => &[],
+                };
+                Err(self.unexpected(expecting))
+            }
         }
     }
 
     /// Expects the `.` that ends a body, with gringo's wording when it is missing.
     fn end_of_body(&mut self) -> PResult<()> {
-        self.expect(T::Dot, &["\",\"", ".", ";"])?;
+        let expecting = self.body_end;
+        self.expect(T::Dot, expecting)?;
         Ok(())
     }
 
@@ -694,6 +712,7 @@ impl<'a> Parser<'a> {
             return Ok(StatementKind::Show(Show::Nothing));
         }
         let term = self.term()?;
+        self.body_end = &[];
         let body = if self.eat(T::Colon) {
             self.body()?
         } else {
@@ -731,6 +750,7 @@ impl<'a> Parser<'a> {
 
     /// `[: body] .`
     fn directive_body(&mut self) -> PResult<Vec<BodyLiteral>> {
+        self.body_end = &[];
         let body = if self.eat(T::Colon) {
             self.body()?
         } else {
@@ -747,7 +767,7 @@ impl<'a> Parser<'a> {
         let name = self.word(name).to_string();
         self.expect(T::Eq, &["="])?;
         let value = self.term()?;
-        self.expect(T::Dot, &["."])?;
+        self.expect(T::Dot, &[])?;
         let mut kind = ConstKind::Default;
         let mut annotated = false;
         if self.at(T::LBrack) {
@@ -1226,7 +1246,9 @@ impl<'a> Parser<'a> {
             let term = self.term()?;
             return Ok(Some(Guard { op, term }));
         }
-        if self.starts_term(self.tok) && !self.at(T::Bar) {
+        // A `|` after `}` can only open an absolute value: no aggregate or choice is followed
+        // by a disjunction separator.
+        if self.starts_term(self.tok) {
             let term = self.term()?;
             return Ok(Some(Guard {
                 op: CmpOp::Le,
@@ -1291,6 +1313,7 @@ impl<'a> Parser<'a> {
 
     /// Body literals separated by `,` or `;`, up to (not including) the closing `.`.
     fn body(&mut self) -> PResult<Vec<BodyLiteral>> {
+        self.body_end = &[];
         let mut body = Vec::new();
         if self.at(T::Dot) {
             return Ok(body);
@@ -1311,6 +1334,7 @@ impl<'a> Parser<'a> {
         if self.at(T::LBrace) || self.at_aggregate() {
             let aggregate = self.body_aggregate(start, None)?;
             out.push(BodyLiteral::Aggregate { sign, aggregate });
+            self.body_end = AFTER_AGGREGATE;
             return Ok(());
         }
         let mut lits = Vec::new();
@@ -1325,6 +1349,7 @@ impl<'a> Parser<'a> {
                 };
                 let aggregate = self.body_aggregate(start, Some(guard))?;
                 out.push(BodyLiteral::Aggregate { sign, aggregate });
+                self.body_end = AFTER_AGGREGATE;
                 return Ok(());
             }
             if let Some(op) = cmp_op(self.tok.kind) {
@@ -1336,6 +1361,7 @@ impl<'a> Parser<'a> {
                     let guard = Guard { op, term };
                     let aggregate = self.body_aggregate(start, Some(guard))?;
                     out.push(BodyLiteral::Aggregate { sign, aggregate });
+                    self.body_end = AFTER_AGGREGATE;
                     return Ok(());
                 }
             }
@@ -1345,6 +1371,10 @@ impl<'a> Parser<'a> {
             self.bump();
             let condition = self.condition()?;
             let literal = lits.pop().expect("one literal");
+            self.body_end = match condition.last() {
+                Some(l) if !matches!(l.atom, Atom::Symbolic(_)) => AFTER_CONDITION,
+                _ => &[],
+            };
             out.push(BodyLiteral::Conditional(ConditionalLiteral {
                 span: self.span_from(start),
                 literal,
@@ -1353,6 +1383,10 @@ impl<'a> Parser<'a> {
             }));
             return Ok(());
         }
+        self.body_end = match lits.last() {
+            Some(l) if !matches!(l.atom, Atom::Symbolic(_)) => AFTER_BUILTIN,
+            _ => &[],
+        };
         out.extend(lits.into_iter().map(BodyLiteral::Literal));
         Ok(())
     }
