@@ -10,14 +10,15 @@
 //! (propagate false atoms and facts, number atoms, build outputs). [`text`] prints the result as
 //! `gringo --text` does; [`reference`] is the naive grounder the tests compare against.
 
-pub mod instantiate;
 pub mod program;
-pub mod reference;
-pub mod rewrite;
-pub mod simplify;
+pub mod aspif;
 pub mod symbol;
 pub mod term;
+pub mod rewrite;
+pub mod instantiate;
+pub mod simplify;
 pub mod text;
+pub mod reference;
 
 use crate::base::{Diagnostic, Diagnostics, SourceMap, Span};
 use crate::syntax::ast;

@@ -1,3 +1,13 @@
 //! Solving: conflict-driven stable-model search over ground programs (issue 4).
 //!
-//! Not built yet: the command line reports that solving is unavailable and exits non-zero.
+//! Pipeline inside this module: `translate` turns a `GroundProgram` into clauses and native
+//! weight constraints over solver variables (Clark completion with body variables);
+//! `engine` is a CDCL core (two watched literals, first-UIP learning, VSIDS, restarts) with
+//! `unfounded`-set propagation for non-tight programs; `search` drives it for enumeration,
+//! optimization, consequences and CR-Prolog semantics and produces a `SolveResult`.
+
+pub mod config;
+pub mod result;
+
+pub use config::{Config, CrMode, EnumMode, OptMode, RestartPolicy};
+pub use result::{Model, Outcome, SolveResult, Stats, StopReason};

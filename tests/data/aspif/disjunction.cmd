@@ -1,0 +1,1 @@
+gringo --output=intermediate disjunction.lp > disjunction.aspif

@@ -1,0 +1,1 @@
+gringo --output=intermediate features.lp > features.aspif

@@ -1,0 +1,1 @@
+gringo --output=intermediate show_and_negation.lp > show_and_negation.aspif

@@ -1,0 +1,1 @@
+gringo --output=intermediate unicode_strings.lp > unicode_strings.aspif

@@ -1,0 +1,1 @@
+gringo --output=intermediate weights.lp > weights.aspif
