@@ -32,7 +32,14 @@ fn lucent(args: &[&str], stdin: &str) -> (i32, String, String) {
 fn help_lists_options_and_exits_0() {
     let (code, out, _) = lucent(&["--help"], "");
     assert_eq!(code, 0);
-    for option in ["--models", "--const", "--outf", "--opt-mode", "--time-limit", "--mode"] {
+    for option in [
+        "--models",
+        "--const",
+        "--outf",
+        "--opt-mode",
+        "--time-limit",
+        "--mode",
+    ] {
         assert!(out.contains(option), "--help lacks {option}");
     }
 }

@@ -19,7 +19,7 @@
 use hashbrown::HashMap;
 use hashbrown::HashTable;
 use smallvec::SmallVec;
-use std::hash::{BuildHasher, Hash, Hasher};
+use std::hash::BuildHasher;
 
 use crate::base::{Diagnostic, Diagnostics, SourceMap, Span, WarningKind};
 use crate::syntax::ast::{AggregateFunction, CmpOp, Sign};
@@ -149,6 +149,11 @@ pub struct Grounder<'a> {
     edge_nodes: HashMap<SymId, i32>,
     /// Rules emitted since the last deadline check.
     since_check: u32,
+    /// Grounding a component naively: derived atoms are not marked as facts, since a later
+    /// round may withdraw the rule that derived them.
+    naive: bool,
+    /// Computing a naive component's domain: aggregates over its predicates are assumed true.
+    optimistic: bool,
 }
 
 /// Per-statement join state.
@@ -208,6 +213,8 @@ impl<'a> Grounder<'a> {
             edges: Vec::new(),
             edge_nodes: HashMap::new(),
             since_check: 0,
+            naive: false,
+            optimistic: false,
         }
     }
 
@@ -301,9 +308,7 @@ impl<'a> Grounder<'a> {
 
     /// Adds a ground rule unless an equal one exists; returns its index if added.
     fn add_rule(&mut self, rule: Rule, origin: impl FnOnce() -> Origin) -> bool {
-        let mut h = self.hasher.build_hasher();
-        rule.hash(&mut h);
-        let hash = h.finish();
+        let hash = self.hasher.hash_one(&rule);
         let rules = &self.rules;
         if self
             .rule_set
@@ -323,11 +328,7 @@ impl<'a> Grounder<'a> {
             hasher,
             ..
         } = self;
-        rule_set.insert_unique(hash, idx, |&i| {
-            let mut h = hasher.build_hasher();
-            rules[i as usize].hash(&mut h);
-            h.finish()
-        });
+        rule_set.insert_unique(hash, idx, |&i| hasher.hash_one(&rules[i as usize]));
         self.check_size();
         self.since_check += 1;
         if self.since_check >= 4096 {
@@ -487,7 +488,7 @@ impl<'a> Grounder<'a> {
                         if fact {
                             return;
                         }
-                        if !(complete && !in_domain) {
+                        if !complete || in_domain {
                             let a = self.atom_of(sym, atom.pred);
                             ctx.body.push(-(a as Lit));
                         }
@@ -551,6 +552,18 @@ impl<'a> Grounder<'a> {
                     }
                 }
             }
+            NLit::Agg(agg)
+                if self.optimistic && agg.binder.is_none() && self.reads_incomplete(agg) =>
+            {
+                // Computing the domain of a component with recursive aggregates: assume the
+                // aggregate can hold, so no atom is missed; the final round evaluates it.
+                self.join(ctx, lits, i + 1, ranges, k);
+            }
+            NLit::Agg(agg) if agg.elems.len() == 1 && agg.elems[0].lit.is_some() => {
+                self.conditional(ctx, agg, &mut |g, ctx| g.join(ctx, lits, i + 1, ranges, k));
+                ctx.binding.undo(mark);
+                ctx.body.truncate(blen);
+            }
             NLit::Agg(agg) => {
                 self.aggregate(ctx, agg, &mut |g, ctx| g.join(ctx, lits, i + 1, ranges, k));
                 ctx.binding.undo(mark);
@@ -606,6 +619,110 @@ impl<'a> Grounder<'a> {
             self.atoms[a as usize - 1].fact = true;
         }
         a as Lit
+    }
+
+    /// True when an element condition of `agg` reads a predicate still being grounded.
+    fn reads_incomplete(&self, agg: &NAgg) -> bool {
+        let mut preds = Vec::new();
+        for e in &agg.elems {
+            e.cond.iter().for_each(|l| lit_preds(l, &mut preds));
+            if let Some(l) = &e.lit {
+                lit_preds(l, &mut preds);
+            }
+        }
+        preds.iter().any(|&p| !self.domains[p as usize].complete)
+    }
+
+    /// The default negation of a literal: `not a` for `a`, and for `not a` an atom standing
+    /// for `not not a` (never collapsed to `a`, which would add a positive dependency).
+    fn negate_lit(&mut self, l: Lit) -> Lit {
+        if l > 0 {
+            -l
+        } else {
+            -(self.not_aux((-l) as AtomId) as Lit)
+        }
+    }
+
+    /// `not (c1, ..., cn)` as one literal.
+    fn not_conj(&mut self, c: &[Lit]) -> Lit {
+        if c.len() == 1 && c[0] > 0 {
+            return -c[0];
+        }
+        let a = self.aux();
+        self.add_rule(
+            Rule {
+                head_kind: HeadKind::Disjunction,
+                head: vec![a],
+                body: Body::Normal(c.to_vec()),
+            },
+            Origin::default,
+        );
+        -(a as Lit)
+    }
+
+    /// A conditional body literal `l : c`: for each instance of `c`, `l` must hold. An
+    /// instance with a certain condition contributes `l` itself (positively, as gringo keeps
+    /// it); otherwise an auxiliary atom `x :- l.  x :- not c.` stands for `c -> l`.
+    fn conditional(&mut self, ctx: &mut Ctx, agg: &NAgg, k: &mut dyn FnMut(&mut Self, &mut Ctx)) {
+        let e = &agg.elems[0];
+        let l = e.lit.as_deref().expect("conditional literal");
+        let blen = ctx.body.len();
+        let mut found: Vec<(Vec<Lit>, Option<Vec<Lit>>)> = Vec::new();
+        self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
+            let cond = ctx.body[blen..].to_vec();
+            let b2 = ctx.body.len();
+            let mut sol: Option<Vec<Lit>> = None;
+            g.join(ctx, std::slice::from_ref(l), 0, &[], &mut |_, ctx| {
+                if sol.as_ref().map_or(true, |s| !s.is_empty()) {
+                    sol = Some(ctx.body[b2..].to_vec());
+                }
+            });
+            ctx.body.truncate(b2);
+            found.push((cond, sol));
+        });
+        ctx.body.truncate(blen);
+        let mut lits = Vec::new();
+        for (cond, sol) in found {
+            match (cond.is_empty(), sol) {
+                (_, Some(s)) if s.is_empty() => {}
+                (true, None) => return,
+                (true, Some(s)) => lits.extend(s),
+                (false, None) => lits.push(self.not_conj(&cond)),
+                (false, Some(s)) => {
+                    // x :- l.  x :- not c.  and, for a condition atom c, x | c :- not not l
+                    // (gringo's encoding: c -> l keeps c in the reduct when c depends on x).
+                    let nc = self.not_conj(&cond);
+                    let x = self.aux();
+                    for body in [s.clone(), vec![nc]] {
+                        self.add_rule(
+                            Rule {
+                                head_kind: HeadKind::Disjunction,
+                                head: vec![x],
+                                body: Body::Normal(body),
+                            },
+                            Origin::default,
+                        );
+                    }
+                    if cond.len() == 1 && cond[0] > 0 {
+                        let t = self.disjunction_lit(&[s]);
+                        let nt = self.negate_lit(t);
+                        let nnt = self.negate_lit(nt);
+                        self.add_rule(
+                            Rule {
+                                head_kind: HeadKind::Disjunction,
+                                head: vec![x, cond[0] as AtomId],
+                                body: Body::Normal(vec![nnt]),
+                            },
+                            Origin::default,
+                        );
+                    }
+                    lits.push(x as Lit);
+                }
+            }
+        }
+        ctx.body.extend(lits);
+        k(self, ctx);
+        ctx.body.truncate(blen);
     }
 
     /// Grounds the elements of an aggregate and continues with each way it can hold.
@@ -719,7 +836,8 @@ impl<'a> Grounder<'a> {
                         false
                     } else {
                         let a = self.disjunction_lit(&[lits]);
-                        ctx.body.push(-a);
+                        let n = self.negate_lit(a);
+                        ctx.body.push(n);
                         true
                     }
                 }
@@ -880,6 +998,8 @@ impl<'a> Grounder<'a> {
         let mut bound = k;
         let mut lits: Vec<(Lit, Weight)> = Vec::new();
         let mut max_extra: i64 = 0;
+        // Weights of the same literal add up (gringo does the same: `-1:a; 1:a` weighs 0).
+        let mut merged: Vec<(Lit, i64)> = Vec::new();
         for (w, c) in elems {
             let w = self.syms.num(*w).unwrap_or(0) as i64;
             if c.is_empty() {
@@ -887,13 +1007,20 @@ impl<'a> Grounder<'a> {
                 continue;
             }
             let l = self.disjunction_lit(c);
-            if w >= 0 {
+            match merged.iter_mut().find(|(x, _)| *x == l) {
+                Some(e) => e.1 += w,
+                None => merged.push((l, w)),
+            }
+        }
+        for (l, w) in merged {
+            if w > 0 {
                 lits.push((l, w));
                 max_extra += w;
-            } else {
+            } else if w < 0 {
                 // w*l == w + (-w)*(not l)
                 bound -= w;
-                lits.push((-l, -w));
+                let nl = self.negate_lit(l);
+                lits.push((nl, -w));
                 max_extra += -w;
             }
         }
@@ -1277,7 +1404,7 @@ impl<'a> Grounder<'a> {
         for &a in &head {
             self.derive(a);
         }
-        if head.len() == 1 && ctx.body.is_empty() {
+        if head.len() == 1 && ctx.body.is_empty() && !self.naive {
             self.atoms[head[0] as usize - 1].fact = true;
         }
         let o = origin(self);
@@ -1376,7 +1503,9 @@ impl<'a> Grounder<'a> {
                     .any(|l| matches!(l, NLit::Pred { sign: Sign::Positive, atom } if in_comp(atom.pred)))
             });
             if naive {
+                self.naive = true;
                 self.ground_naive(&stmts, comp);
+                self.naive = false;
             } else if recursive {
                 self.ground_seminaive(&stmts, comp, &in_comp);
             } else {
@@ -1396,7 +1525,11 @@ impl<'a> Grounder<'a> {
         }
     }
 
+    /// Grounds a component with recursive aggregates: first its domain, by rounds in which
+    /// such aggregates are assumed true (each round's rules are discarded), until no atom is
+    /// added; then one final round with the aggregates evaluated over the complete domain.
     fn ground_naive(&mut self, stmts: &[&NStmt], comp: &[PredId]) {
+        self.optimistic = true;
         loop {
             let rules_start = self.rules.len();
             let cr_start = self.cr_rules.len();
@@ -1404,7 +1537,6 @@ impl<'a> Grounder<'a> {
                 .iter()
                 .map(|&p| self.domains[p as usize].atoms.len())
                 .sum();
-            let facts_before = self.atoms.iter().filter(|a| a.fact).count();
             for s in stmts {
                 self.ground_stmt(s, &[]);
             }
@@ -1412,27 +1544,28 @@ impl<'a> Grounder<'a> {
                 .iter()
                 .map(|&p| self.domains[p as usize].atoms.len())
                 .sum();
-            let facts_after = self.atoms.iter().filter(|a| a.fact).count();
-            if self.stopped.is_some() || (size_after == size_before && facts_after == facts_before)
-            {
-                return;
-            }
-            // Another round will see more atoms: forget this round's rules (their aggregates
-            // may have missed elements). Nothing outside the component refers to them yet.
             self.forget_rules_from(rules_start);
             for (a, _) in self.cr_rules.drain(cr_start..) {
                 self.cr_appl.retain(|_, v| *v != a);
             }
+            if self.stopped.is_some() || size_after == size_before {
+                break;
+            }
+        }
+        self.optimistic = false;
+        for s in stmts {
+            self.ground_stmt(s, &[]);
         }
     }
 
     fn forget_rules_from(&mut self, start: usize) {
         while self.rules.len() > start {
             let r = self.rules.pop().expect("len > start");
-            let mut h = self.hasher.build_hasher();
-            r.hash(&mut h);
             let idx = self.rules.len() as u32;
-            if let Ok(e) = self.rule_set.find_entry(h.finish(), |&i| i == idx) {
+            if let Ok(e) = self
+                .rule_set
+                .find_entry(self.hasher.hash_one(&r), |&i| i == idx)
+            {
                 e.remove();
             }
             if self.provenance {
@@ -1562,6 +1695,9 @@ fn positive_atoms<'x>(l: &'x NLit, out: &mut Vec<&'x NAtom>) {
         NLit::Agg(a) => {
             for e in &a.elems {
                 e.cond.iter().for_each(|c| positive_atoms(c, out));
+                if let Some(l) = &e.lit {
+                    positive_atoms(l, out);
+                }
             }
         }
         _ => {}
@@ -1587,7 +1723,7 @@ fn negate(g: &mut Grounder<'_>, t: Truth) -> Truth {
         Truth::False => Truth::True,
         Truth::Lits(l) => {
             let a = g.disjunction_lit(&[l]);
-            Truth::Lits(vec![-a])
+            Truth::Lits(vec![g.negate_lit(a)])
         }
     }
 }
@@ -1610,6 +1746,9 @@ fn lit_preds(l: &NLit, out: &mut Vec<PredId>) {
         NLit::Agg(a) => {
             for e in &a.elems {
                 e.cond.iter().for_each(|c| lit_preds(c, out));
+                if let Some(l) = &e.lit {
+                    lit_preds(l, out);
+                }
             }
         }
         _ => {}
@@ -1619,11 +1758,9 @@ fn lit_preds(l: &NLit, out: &mut Vec<PredId>) {
 /// True when an aggregate of `l` reads a predicate of the current component.
 fn nested_reads(l: &NLit, in_comp: &dyn Fn(PredId) -> bool) -> bool {
     match l {
-        NLit::Agg(a) => {
+        NLit::Agg(_) => {
             let mut r = Vec::new();
-            for e in &a.elems {
-                e.cond.iter().for_each(|c| lit_preds(c, &mut r));
-            }
+            lit_preds(l, &mut r);
             r.into_iter().any(in_comp)
         }
         _ => false,

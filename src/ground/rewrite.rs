@@ -110,6 +110,9 @@ pub struct NElem {
     pub terms: Vec<NTerm>,
     /// The condition, in evaluation order.
     pub cond: Vec<NLit>,
+    /// For a conditional body literal `l : cond` (an aggregate with this single element and no
+    /// guards): the literal `l`.
+    pub lit: Option<Box<NLit>>,
 }
 
 /// A head element `[not] atom : cond`.
@@ -732,6 +735,11 @@ impl<'a> Rewriter<'a> {
         t
     }
 
+    /// The term with the shape of a compiled atom.
+    fn atom_term(&mut self, a: &NAtom) -> NTerm {
+        self.fold_fun(a.name, a.neg, a.args.clone())
+    }
+
     fn atom(
         &mut self,
         a: &ast::SymbolicAtom,
@@ -833,22 +841,35 @@ impl<'a> Rewriter<'a> {
                 terms.push(self.term(t, vars, &mut cond)?);
             }
             self.condition(&e.condition, vars, &mut cond)?;
-            elems.push(NElem { terms, cond });
+            elems.push(NElem {
+                terms,
+                cond,
+                lit: None,
+            });
         }
         for c in &a.set_syntax {
             // `{ l : c }` counts the distinct atoms l (with their conditions).
             let mut cond = Vec::new();
-            let ast::Atom::Symbolic(sa) = &c.literal.atom else {
+            if !matches!(c.literal.atom, ast::Atom::Symbolic(_)) {
                 self.unsupported(c.span, "non-atomic element in a set aggregate");
                 return None;
-            };
-            let t = self.term(&atom_as_term(sa), vars, &mut cond)?;
+            }
             let mut lits = vec![c.literal.clone()];
             lits.extend(c.condition.iter().cloned());
             self.condition(&lits, vars, &mut cond)?;
+            // The tuple is the atom itself, with the variables (and interval variables) of
+            // its compiled form.
+            let t = cond
+                .iter()
+                .find_map(|l| match l {
+                    NLit::Pred { atom, .. } => Some(self.atom_term(atom)),
+                    _ => None,
+                })
+                .expect("the element literal was compiled");
             elems.push(NElem {
                 terms: vec![t],
                 cond,
+                lit: None,
             });
         }
         Some(NLit::Agg(Box::new(NAgg {
@@ -875,23 +896,24 @@ impl<'a> Rewriter<'a> {
                     self.body_aggregate(*sign, aggregate, vars, &mut extra)?
                 }
                 ast::BodyLiteral::Conditional(c) => {
-                    // l : c  ==  #count { locals : c, ~l } <= 0
+                    // l : c holds when every instance of c has l; kept as a guard-less
+                    // aggregate with one element that the instantiator treats specially.
                     let mut cond = Vec::new();
                     self.condition(&c.condition, vars, &mut cond)?;
-                    let mut neg = c.literal.clone();
-                    neg.sign = negate_sign(neg.sign);
-                    self.condition(&[neg], vars, &mut cond)?;
-                    let mut vs = Vec::new();
-                    for l in &cond {
-                        lit_vars(l, &mut vs);
-                    }
-                    let terms = vs.into_iter().map(NTerm::Var).collect();
+                    let mut lit = Vec::new();
+                    self.condition(std::slice::from_ref(&c.literal), vars, &mut lit)?;
+                    let l = lit.pop().expect("one literal compiled");
+                    cond.extend(lit);
                     NLit::Agg(Box::new(NAgg {
                         sign: Sign::Positive,
                         func: AggregateFunction::Count,
-                        guards: vec![(CmpOp::Le, NTerm::Sym(self.syms.int(0)))],
+                        guards: Vec::new(),
                         binder: None,
-                        elems: vec![NElem { terms, cond }],
+                        elems: vec![NElem {
+                            terms: Vec::new(),
+                            cond,
+                            lit: Some(Box::new(l)),
+                        }],
                         span: c.span,
                     }))
                 }
@@ -1257,6 +1279,7 @@ impl<'a> Rewriter<'a> {
                 }
             },
         };
+        let head_ast = head;
         let head = match head {
             ast::Head::None => NHead::None,
             ast::Head::Disjunction(elems) => {
@@ -1278,6 +1301,35 @@ impl<'a> Rewriter<'a> {
                         }
                         _ => {}
                     }
+                }
+                // h | not a :- B.  ==  h :- B, not not a.   (and `not not a` moves as `not a`)
+                if elems
+                    .iter()
+                    .any(|e| e.literal.sign != Sign::Positive && e.condition.is_empty())
+                {
+                    let mut keep = Vec::new();
+                    let mut nbody = body.to_vec();
+                    for e in elems {
+                        if e.literal.sign != Sign::Positive && e.condition.is_empty() {
+                            let mut l = e.literal.clone();
+                            l.sign = negate_sign(l.sign);
+                            nbody.push(ast::BodyLiteral::Literal(l));
+                        } else {
+                            keep.push(e.clone());
+                        }
+                    }
+                    let head = if keep.is_empty() {
+                        ast::Head::None
+                    } else {
+                        ast::Head::Disjunction(keep)
+                    };
+                    let kind = match &kind {
+                        NKind::Cr(_) => {
+                            return self.unsupported(span, "default negation in CR rule heads")
+                        }
+                        _ => ast::RuleKind::Normal,
+                    };
+                    return self.rule_instance(index, span, &head, &nbody, &kind);
                 }
                 let mut es = Vec::new();
                 for e in elems {
@@ -1378,6 +1430,24 @@ impl<'a> Rewriter<'a> {
         };
         if self.body(body, &mut vars, &mut out).is_none() {
             return;
+        }
+        // A choice whose bounds are undefined (say `X+1` with X=a) is dropped with them: the
+        // bounds are evaluated in its body as `t = t`.
+        let guards: Vec<&ast::Guard> = match head_ast {
+            ast::Head::Choice(c) => c.lower.iter().chain(c.upper.iter()).collect(),
+            ast::Head::Aggregate(h) => h.lower.iter().chain(h.upper.iter()).collect(),
+            _ => Vec::new(),
+        };
+        for g in guards {
+            if let Some(t) = self.term(&g.term, &mut vars, &mut extra) {
+                if !matches!(t, NTerm::Sym(_)) {
+                    out.push(NLit::Cmp {
+                        op: CmpOp::Eq,
+                        lhs: t.clone(),
+                        rhs: t,
+                    });
+                }
+            }
         }
         out.append(&mut extra);
         self.finish(index, span, head, out, kind, vars);
@@ -1536,6 +1606,9 @@ pub fn lit_vars(l: &NLit, out: &mut Vec<u32>) {
             for e in &a.elems {
                 e.terms.iter().for_each(|t| t.vars(out));
                 e.cond.iter().for_each(|c| lit_vars(c, out));
+                if let Some(l) = &e.lit {
+                    lit_vars(l, out);
+                }
             }
         }
     }
@@ -1569,12 +1642,9 @@ fn readiness(l: &mut NLit, bound: &[bool], global: &[bool], newly: &mut Vec<u32>
             let (lb, rb) = (lhs.bound_by(bound), rhs.bound_by(bound));
             if lb && rb {
                 Some(1)
-            } else if *op == CmpOp::Eq && rb && lhs.binds(bound, newly) {
-                Some(2)
-            } else if *op == CmpOp::Eq && lb && {
-                newly.clear();
-                rhs.binds(bound, newly)
-            } {
+            } else if *op == CmpOp::Eq
+                && ((rb && lhs.binds(bound, newly)) || (lb && rhs.binds(bound, newly)))
+            {
                 Some(2)
             } else {
                 None
@@ -1593,6 +1663,9 @@ fn readiness(l: &mut NLit, bound: &[bool], global: &[bool], newly: &mut Vec<u32>
                 let mut vs = Vec::new();
                 e.terms.iter().for_each(|t| t.vars(&mut vs));
                 e.cond.iter().for_each(|c| lit_vars(c, &mut vs));
+                if let Some(l) = &e.lit {
+                    lit_vars(l, &mut vs);
+                }
                 if vs.iter().any(|&v| global[v as usize] && !bound[v as usize]) {
                     return None;
                 }
@@ -1629,9 +1702,9 @@ pub fn plan(
     let mut newly = Vec::new();
     while !lits.is_empty() {
         let mut best: Option<(u32, usize)> = None;
-        for i in 0..lits.len() {
-            if let Some(score) = readiness(&mut lits[i], bound, global, &mut newly) {
-                if best.is_none_or(|(s, _)| score < s) {
+        for (i, lit) in lits.iter_mut().enumerate() {
+            if let Some(score) = readiness(lit, bound, global, &mut newly) {
+                if best.map_or(true, |(s, _)| score < s) {
                     best = Some((score, i));
                 }
             }
@@ -1664,6 +1737,9 @@ pub fn plan(
                 e.cond = plan(cond, &mut b, global, unsafe_vars);
                 let mut vs = Vec::new();
                 e.terms.iter().for_each(|t| t.vars(&mut vs));
+                if let Some(l) = &e.lit {
+                    lit_vars(l, &mut vs);
+                }
                 for v in vs {
                     if !b[v as usize] && !unsafe_vars.contains(&v) {
                         unsafe_vars.push(v);

@@ -12,7 +12,7 @@
 //! - Integers are 32-bit, as in clingo.
 
 use std::cmp::Ordering;
-use std::hash::{BuildHasher, Hash, Hasher};
+use std::hash::{BuildHasher, Hash};
 
 use hashbrown::HashTable;
 
@@ -111,9 +111,7 @@ impl Symbols {
     }
 
     fn hash_key(&self, kind: &KeyRef<'_>) -> u64 {
-        let mut h = self.hasher.build_hasher();
-        kind.hash(&mut h);
-        h.finish()
+        self.hasher.hash_one(kind)
     }
 
     fn key_of(&self, id: SymId) -> KeyRef<'_> {
@@ -157,9 +155,7 @@ impl Symbols {
             ..
         } = self;
         table.insert_unique(hash, id, |&other| {
-            let mut h = hasher.build_hasher();
-            key_from(data, args, other).hash(&mut h);
-            h.finish()
+            hasher.hash_one(key_from(data, args, other))
         });
         id
     }

@@ -303,6 +303,20 @@ impl NTerm {
                         Err(_) => false,
                     };
                 }
+                // -X against a function symbol: X is the symbol with the sign flipped.
+                if let NTerm::Unary {
+                    op: UnaryOp::Minus,
+                    arg,
+                    ..
+                } = self
+                {
+                    if syms.num(sym).is_none() {
+                        return match syms.flip_sign(sym) {
+                            Some(t) => arg.matches(syms, t, b),
+                            None => false,
+                        };
+                    }
+                }
                 let Some(n) = syms.num(sym) else {
                     return false;
                 };
