@@ -160,9 +160,11 @@ impl Diagnostic {
         }
         for note in &self.notes {
             match note.span {
-                Some(span) => {
-                    out.push_str(&format!("{}: note: {}\n", sources.location(span), note.message))
-                }
+                Some(span) => out.push_str(&format!(
+                    "{}: note: {}\n",
+                    sources.location(span),
+                    note.message
+                )),
                 None => out.push_str(&format!("note: {}\n", note.message)),
             }
         }
