@@ -79,7 +79,7 @@ impl GenerateConfig {
             preset,
             seed,
             count: None,
-            settle_seconds: 2.0,
+            settle_seconds: 6.0,
         }
     }
 }
@@ -264,39 +264,44 @@ pub fn generate(config: &GenerateConfig) -> Result<Scene, SimError> {
     let names = name_drafts(&drafts);
     let n = drafts.len();
     // Supports: flat objects (the H1 scene's ball, pitcher and duck never support anything).
-    let mut supports: Vec<usize> = (0..n)
+    let mut flat: Vec<usize> = (0..n)
         .filter(|&i| drafts[i].kind.surface() == super::Surface::Flat)
         .collect();
-    rng.shuffle(&mut supports);
+    rng.shuffle(&mut flat);
     let mut stacked = rng.range_usize(3, 5).min(n - 1);
     let mut heights = tower_heights(stacked, &mut rng);
     // Each tower needs height - 1 supports; shrink the plan if the scene lacks them.
-    while heights.iter().map(|h| h - 1).sum::<usize>() > supports.len() {
+    while heights.iter().map(|h| h - 1).sum::<usize>() > flat.len().saturating_sub(1) {
         stacked -= 1;
         heights = tower_heights(stacked.max(2), &mut rng);
     }
     let mut used = vec![false; n];
     let mut towers: Vec<Vec<usize>> = Vec::new();
-    let mut next_support = supports.into_iter();
     for h in &heights {
-        let mut tower: Vec<usize> = (0..h - 1)
-            .map(|_| next_support.next().expect("checked above"))
-            .collect();
+        // The top first: preferably an object that cannot support (so irregular objects get
+        // stacked), then supports at least as large as it, widest at the bottom, as in the
+        // paper's stacked scenes. Physics still decides whether the tower stands.
+        let mut candidates: Vec<usize> = (0..n).filter(|&i| !used[i]).collect();
+        rng.shuffle(&mut candidates);
+        candidates.sort_by_key(|&i| drafts[i].kind.surface() == super::Surface::Flat);
+        let free_flat = |used: &[bool]| flat.iter().filter(|&&i| !used[i]).count();
+        let top = candidates
+            .into_iter()
+            .find(|&i| {
+                let others = free_flat(&used) - usize::from(flat.contains(&i));
+                others >= h - 1
+            })
+            .expect("the plan leaves enough supports for every tower");
+        used[top] = true;
+        let mut pool: Vec<usize> = flat.iter().copied().filter(|&i| !used[i]).collect();
+        pool.sort_by_key(|&i| std::cmp::Reverse(drafts[i].size >= drafts[top].size));
+        let mut tower: Vec<usize> = pool.into_iter().take(h - 1).collect();
         for &i in &tower {
             used[i] = true;
         }
         tower.sort_by(|&a, &b| drafts[b].size.cmp(&drafts[a].size));
-        towers.push(tower);
-    }
-    // Tops: any unused object, preferring non-supports so that irregular objects get stacked.
-    let mut rest: Vec<usize> = (0..n).filter(|&i| !used[i]).collect();
-    rng.shuffle(&mut rest);
-    for tower in &mut towers {
-        let top = rest
-            .pop()
-            .expect("a tower top is always left, since stacked < count");
-        used[top] = true;
         tower.push(top);
+        towers.push(tower);
     }
     let mut scene = Scene::custom(config.seed);
     scene.preset = config.preset.name().to_string();

@@ -89,6 +89,15 @@ impl ObjectKind {
         }
     }
 
+    /// Angular damping of the body. Rapier has no rolling resistance, so round objects get
+    /// more damping, as felt balls and fruit on a table stop rolling within a second or two.
+    pub fn rolling_damping(self) -> f32 {
+        match self {
+            ObjectKind::Ball | ObjectKind::Orange | ObjectKind::Apple => 12.0,
+            _ => 1.5,
+        }
+    }
+
     /// The parry shape of an object of this kind and size, upright, origin inside the object.
     pub fn shape(self, size: Size) -> SharedShape {
         let s = size.width();

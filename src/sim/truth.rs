@@ -137,7 +137,7 @@ impl Default for TruthConfig {
             interval_tolerance: 0.005,
             footprint_overlap: 0.005,
             move_threshold: 0.01,
-            turn_threshold: 0.15,
+            turn_threshold: 0.35,
             stability_seconds: 2.0,
             occlusion_grid: 20,
             occlusion_min: 0.02,
