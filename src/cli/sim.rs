@@ -425,24 +425,37 @@ fn run_command(args: &Args) -> Result<String, Fail> {
 
 /// Runs `lucent sim ARGS` (the arguments after `sim`) and returns the exit code.
 pub fn run(args: &[String]) -> i32 {
+    run_with(
+        args,
+        &mut std::io::stdout().lock(),
+        &mut std::io::stderr().lock(),
+    )
+}
+
+/// Runs `lucent sim ARGS`, writing output and messages to the given streams.
+pub fn run_with(
+    args: &[String],
+    out: &mut dyn std::io::Write,
+    err: &mut dyn std::io::Write,
+) -> i32 {
     if args.is_empty() || args.iter().any(|a| a == "--help" || a == "-h") || args[0] == "help" {
-        print!("{}", help());
+        let _ = write!(out, "{}", help());
         return if args.is_empty() { EXIT_USAGE } else { EXIT_OK };
     }
     let parsed = match parse(args) {
         Ok(p) => p,
         Err(message) => {
-            eprintln!("lucent sim: {message}\n(try `lucent sim --help`)");
+            let _ = writeln!(err, "lucent sim: {message}\n(try `lucent sim --help`)");
             return EXIT_USAGE;
         }
     };
     match run_command(&parsed) {
         Ok(text) => {
-            print!("{text}");
+            let _ = write!(out, "{text}");
             EXIT_OK
         }
         Err(Fail(message, code)) => {
-            eprintln!("lucent sim: error: {message}");
+            let _ = writeln!(err, "lucent sim: error: {message}");
             code
         }
     }
