@@ -89,9 +89,9 @@ impl Default for Camera {
     /// along +z and down at the middle of the table.
     fn default() -> Self {
         Camera {
-            eye: [0.0, 0.5, -0.75],
-            target: [0.0, 0.02, 0.05],
-            fov_y_degrees: 50.0,
+            eye: [0.0, 0.5, -0.7],
+            target: [0.0, 0.0, 0.06],
+            fov_y_degrees: 44.0,
         }
     }
 }
