@@ -18,9 +18,13 @@ const EXIT_USAGE: i32 = 128;
 
 /// One option: its spelling, whether it takes a value, the subcommands it applies to, its help.
 struct OptionSpec {
+    /// The spelling, e.g. `--seed`.
     name: &'static str,
+    /// The value's placeholder in `--help`, or `None` for a flag.
     value: Option<&'static str>,
+    /// The subcommands that accept it.
     commands: &'static [&'static str],
+    /// One line of help.
     help: &'static str,
 }
 
@@ -112,6 +116,7 @@ const OPTIONS: &[OptionSpec] = &[
     },
 ];
 
+/// The subcommands: name, positional arguments, help.
 const COMMANDS: &[(&str, &str, &str)] = &[
     ("generate", "", "generate and settle a scene from a seed"),
     (
@@ -163,8 +168,11 @@ fn help() -> String {
 
 /// Parsed arguments of one subcommand.
 struct Args {
+    /// The subcommand.
     command: String,
+    /// Its positional arguments.
     positional: Vec<String>,
+    /// Options in command-line order, with their values; the last occurrence wins.
     options: Vec<(&'static str, Option<String>)>,
 }
 
@@ -252,7 +260,12 @@ fn parse(args: &[String]) -> Result<Args, String> {
 }
 
 /// A command failure: the message and the exit code.
-struct Fail(String, i32);
+struct Fail(
+    /// The message.
+    String,
+    /// The exit code.
+    i32,
+);
 
 fn usage(message: String) -> Fail {
     Fail(message, EXIT_USAGE)

@@ -86,9 +86,13 @@ impl GenerateConfig {
 
 /// An object chosen before placement.
 struct Draft {
+    /// What it is.
     kind: ObjectKind,
+    /// Its colour.
     colour: Colour,
+    /// Its size class.
     size: Size,
+    /// A fixed name (the H1 scene's constants); otherwise named from colour and kind.
     name: Option<String>,
 }
 
@@ -253,7 +257,7 @@ pub fn generate(config: &GenerateConfig) -> Result<Scene, SimError> {
     let mut rng = SplitMix64::new(config.seed);
     let (lo, hi) = config.preset.count_range();
     let count = match config.count {
-        Some(n) if (5..=9).contains(&n) => n,
+        Some(n) if (5..=9).contains(&n) && !(config.preset == Preset::H1 && n > 8) => n,
         Some(n) => return Err(SimError::BadCount(n)),
         None => rng.range_usize(lo, hi),
     };
@@ -272,7 +276,7 @@ pub fn generate(config: &GenerateConfig) -> Result<Scene, SimError> {
     let mut heights = tower_heights(stacked, &mut rng);
     // Each tower needs height - 1 supports; shrink the plan if the scene lacks them.
     while heights.iter().map(|h| h - 1).sum::<usize>() > flat.len().saturating_sub(1) {
-        stacked -= 1;
+        stacked = stacked.saturating_sub(1);
         heights = tower_heights(stacked.max(2), &mut rng);
     }
     let mut used = vec![false; n];

@@ -55,7 +55,7 @@ pub enum SimError {
     #[error("unknown preset `{0}` (expected real, simulated or h1)")]
     UnknownPreset(String),
     /// An object count outside 5 to 9.
-    #[error("a scene has 5 to 9 objects, not {0}")]
+    #[error("a scene has 5 to 9 objects (the h1 preset at most 8), not {0}")]
     BadCount(usize),
     /// Text that is not `pickup(R,O)` or `putdown(R,O,L)`.
     #[error("malformed action `{0}` (expected pickup(R,O) or putdown(R,O,L))")]
