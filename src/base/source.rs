@@ -87,6 +87,10 @@ impl SourceMap {
     /// gringo's location format: `file:line:col-col`, or `file:line:col-line:col` across lines.
     pub fn location(&self, span: Span) -> String {
         let file = self.get(span.file);
+        if file.name.starts_with('<') && file.text.is_empty() {
+            // A pseudo file such as `<cmd>` (the command line) has no positions.
+            return file.name.clone();
+        }
         let (l1, c1) = file.line_col(span.start);
         let (l2, c2) = file.line_col(span.end.max(span.start));
         if l1 == l2 {

@@ -5,4 +5,5 @@
 //! aspif (`program` is the in-memory form, `aspif` reads and writes it), so our grounder can be
 //! checked by clasp and our solver can be fed by gringo.
 
+pub mod aspif;
 pub mod program;

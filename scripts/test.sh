@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The whole test suite, from a fresh machine: installs the reference tools the differential
+# tests compare against (clingo 5.4's gringo/clasp/clingo from Debian, clingo 5.8 from PyPI),
+# then checks formatting, lints, and runs every test (unit, integration, snapshot, property,
+# differential). Used by README.md and .ci/run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
+
+if ! command -v clingo >/dev/null || ! command -v gringo >/dev/null || ! command -v clasp >/dev/null; then
+  echo "== installing clingo 5.4 (gringo, clasp) from Debian"
+  as_root apt-get update -qq
+  as_root apt-get install -y -qq gringo clasp
+fi
+if ! python3 -c 'import clingo' 2>/dev/null; then
+  echo "== installing clingo 5.8 (Python module) from PyPI"
+  python3 -m pip install -q clingo
+fi
+
+echo "== cargo fmt --check"
+cargo fmt --all -- --check
+echo "== cargo clippy"
+cargo clippy --all-targets -- -D warnings
+echo "== cargo test"
+cargo test --all-targets
+cargo test --doc

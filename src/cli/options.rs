@@ -1,0 +1,656 @@
+//! The clingo-compatible option table and its parser.
+//!
+//! Invariants: one declarative table ([`OPTIONS`]) drives both parsing and `--help` (CaDiCaL's
+//! `options.hpp` habit), so an option cannot be accepted without being documented. Parsing is
+//! pure: it never reads files or prints; errors are [`UsageError`] values that the caller turns
+//! into clingo's `*** ERROR: (lucent): ...` lines and exit code 128.
+
+use crate::base::WarningKind;
+
+/// Whether an option takes a value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Arity {
+    /// A flag: `--stats`.
+    Flag,
+    /// A required value: `--models=N`, `--models N`, `-n N`, `-nN`.
+    Value,
+    /// An optional value, only as `--opt=value`: `--project`, `--project=show`.
+    OptionalValue,
+}
+
+/// One row of the option table.
+#[derive(Clone, Copy, Debug)]
+pub struct OptionSpec {
+    /// Long name without dashes.
+    pub long: &'static str,
+    /// Short alias.
+    pub short: Option<char>,
+    /// Value arity.
+    pub arity: Arity,
+    /// Placeholder for the value in `--help`.
+    pub value_name: &'static str,
+    /// One-line help.
+    pub help: &'static str,
+    /// Help section.
+    pub group: &'static str,
+}
+
+const fn opt(
+    long: &'static str,
+    short: Option<char>,
+    arity: Arity,
+    value_name: &'static str,
+    help: &'static str,
+    group: &'static str,
+) -> OptionSpec {
+    OptionSpec {
+        long,
+        short,
+        arity,
+        value_name,
+        help,
+        group,
+    }
+}
+
+use Arity::*;
+
+/// Every option Lucent accepts.
+pub const OPTIONS: &[OptionSpec] = &[
+    opt("help", Some('h'), Flag, "", "Print this help and exit", "Basic"),
+    opt("version", Some('v'), Flag, "", "Print version information and exit", "Basic"),
+    opt("mode", None, Value, "<mode>", "Run in {clingo|gringo|clasp} mode [clingo]", "Basic"),
+    opt("text", None, Flag, "", "Print the ground program in text form (implies --mode=gringo)", "Basic"),
+    opt("output", Some('o'), Value, "<fmt>", "Ground program format in gringo mode: {aspif|intermediate|text} [aspif]", "Basic"),
+    opt("dialect", None, Value, "<lang>", "Input language {auto|clingo|sparc} [auto: .sp files are SPARC]", "Basic"),
+    opt("models", Some('n'), Value, "<n>", "Compute at most <n> models (0 for all) [1]", "Solving"),
+    opt("const", Some('c'), Value, "<id>=<term>", "Replace term occurrences of <id> with <term>", "Grounding"),
+    opt("warn", Some('W'), Value, "<warn>", "Enable/disable warnings: none, all, [no-]{atom-undefined|file-included|operation-undefined|variable-unbounded|global-variable|other}", "Grounding"),
+    opt("message-limit", None, Value, "<n>", "Print at most <n> messages [20]", "Grounding"),
+    opt("provenance", None, Flag, "", "In --text output, show the rule and substitution each ground rule came from", "Grounding"),
+    opt("opt-mode", None, Value, "<mode>", "Optimization {opt|optN|enum|ignore}[,<bound>...] [opt]", "Solving"),
+    opt("enum-mode", Some('e'), Value, "<mode>", "Enumeration {auto|bt|record|brave|cautious} [auto]", "Solving"),
+    opt("project", None, OptionalValue, "<mode>", "Project models to shown/projected atoms {show|project|auto} [no]", "Solving"),
+    opt("cr", None, Value, "<mode>", "CR-rule semantics {card|subset}: cardinality-minimal applied CR rules, or subset-minimal with prefer/2 [card]", "Solving"),
+    opt("time-limit", None, Value, "<s>", "Stop after <s> seconds and answer UNKNOWN [0 = none]", "Solving"),
+    opt("parallel-mode", Some('t'), Value, "<n>", "Run a portfolio of <n> threads [1]", "Solving"),
+    opt("seed", None, Value, "<n>", "Seed of the solver's random choices [1]", "Solving"),
+    opt("check", None, Flag, "", "Verify every reported model with an independent stable-model check", "Solving"),
+    opt("outf", None, Value, "<n>", "Output format {0=text|2=json} [0]", "Output"),
+    opt("quiet", Some('q'), OptionalValue, "<levels>", "Print {0=all|1=last|2=no} models[,costs[,calls]] [-q: 1]", "Output"),
+    opt("stats", Some('s'), OptionalValue, "<n>", "Print statistics", "Output"),
+    opt("verbose", Some('V'), OptionalValue, "<n>", "Verbosity level [1]", "Output"),
+];
+
+/// Which pipeline the run drives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Mode {
+    /// Ground and solve.
+    #[default]
+    Clingo,
+    /// Ground only; print the ground program.
+    Gringo,
+    /// Solve a ground program given as aspif.
+    Clasp,
+}
+
+/// Ground program output format in gringo mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum GroundFormat {
+    /// aspif, as `gringo --output=intermediate`.
+    #[default]
+    Aspif,
+    /// Readable rules, as `gringo --text`.
+    Text,
+}
+
+/// Input dialect selection.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum DialectChoice {
+    /// SPARC for `.sp` files, clingo otherwise.
+    #[default]
+    Auto,
+    /// The clingo dialect.
+    Clingo,
+    /// SPARC.
+    Sparc,
+}
+
+/// `--opt-mode`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum OptMode {
+    /// Find and prove an optimum, printing improving models.
+    #[default]
+    Opt,
+    /// Find the optimum, then enumerate all optimal models.
+    OptN,
+    /// Enumerate models, optionally those within the bound.
+    Enum,
+    /// Ignore optimize statements.
+    Ignore,
+}
+
+/// `--enum-mode`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum EnumMode {
+    /// The solver's choice.
+    #[default]
+    Auto,
+    /// Backtracking enumeration.
+    Backtrack,
+    /// Enumeration by recording solution nogoods.
+    Record,
+    /// Brave consequences (union of all models).
+    Brave,
+    /// Cautious consequences (intersection of all models).
+    Cautious,
+}
+
+/// `--cr`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum CrMode {
+    /// Minimal number of applied CR rules (SPARC's semantics).
+    #[default]
+    Cardinality,
+    /// Subset-minimal applied CR rules, respecting `prefer/2` (crmodels2's semantics).
+    Subset,
+}
+
+/// `--outf`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum OutputFormat {
+    /// clasp's text output.
+    #[default]
+    Text,
+    /// clingo's JSON output.
+    Json,
+}
+
+/// Everything the command line said, parsed and validated.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Options {
+    /// Input files; `-` is standard input; empty means standard input.
+    pub files: Vec<String>,
+    /// The pipeline to run.
+    pub mode: Mode,
+    /// Ground program format in gringo mode.
+    pub ground_format: GroundFormat,
+    /// Input language.
+    pub dialect: DialectChoice,
+    /// Number of models to compute, 0 for all.
+    pub models: u64,
+    /// Whether `-n` was given explicitly (optimization changes the default to all).
+    pub models_given: bool,
+    /// `-c name=value` definitions, in order.
+    pub consts: Vec<(String, String)>,
+    /// Warning kinds switched off.
+    pub disabled_warnings: Vec<WarningKind>,
+    /// Maximum number of messages printed.
+    pub message_limit: usize,
+    /// Show provenance comments in text output.
+    pub provenance: bool,
+    /// Optimization mode.
+    pub opt_mode: OptMode,
+    /// Bounds given with `--opt-mode=...,b1,b2`.
+    pub opt_bounds: Vec<i64>,
+    /// Enumeration mode.
+    pub enum_mode: EnumMode,
+    /// Projection requested.
+    pub project: bool,
+    /// CR semantics.
+    pub cr: CrMode,
+    /// Time limit in seconds, if any.
+    pub time_limit: Option<f64>,
+    /// Number of portfolio threads.
+    pub threads: u32,
+    /// Random seed.
+    pub seed: u64,
+    /// Check every model independently.
+    pub check: bool,
+    /// Output format.
+    pub outf: OutputFormat,
+    /// Quiet levels: models, costs, calls (0 = print all, 1 = last, 2 = none).
+    pub quiet: [u8; 3],
+    /// Statistics level (0 = none).
+    pub stats: u8,
+    /// Verbosity.
+    pub verbose: u8,
+    /// `--help` was given.
+    pub help: bool,
+    /// `--version` was given.
+    pub version: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            files: Vec::new(),
+            mode: Mode::Clingo,
+            ground_format: GroundFormat::Aspif,
+            dialect: DialectChoice::Auto,
+            models: 1,
+            models_given: false,
+            consts: Vec::new(),
+            disabled_warnings: Vec::new(),
+            message_limit: 20,
+            provenance: false,
+            opt_mode: OptMode::Opt,
+            opt_bounds: Vec::new(),
+            enum_mode: EnumMode::Auto,
+            project: false,
+            cr: CrMode::Cardinality,
+            time_limit: None,
+            threads: 1,
+            seed: 1,
+            check: false,
+            outf: OutputFormat::Text,
+            quiet: [0, 0, 0],
+            stats: 0,
+            verbose: 1,
+            help: false,
+            version: false,
+        }
+    }
+}
+
+/// A command-line mistake: exit code 128.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum UsageError {
+    /// An option nobody knows.
+    #[error("'{0}': unknown option")]
+    Unknown(String),
+    /// An option that needs a value got none.
+    #[error("'{0}' requires a value!")]
+    MissingValue(String),
+    /// A flag was given a value.
+    #[error("'{0}' does not take a value")]
+    UnexpectedValue(String),
+    /// A value that does not fit the option.
+    #[error("'{value}' invalid value for: '{option}'")]
+    InvalidValue {
+        /// The option's long name.
+        option: String,
+        /// The value given.
+        value: String,
+    },
+}
+
+fn invalid(option: &str, value: &str) -> UsageError {
+    UsageError::InvalidValue {
+        option: option.to_string(),
+        value: value.to_string(),
+    }
+}
+
+fn find_long(name: &str) -> Option<&'static OptionSpec> {
+    if let Some(spec) = OPTIONS.iter().find(|o| o.long == name) {
+        return Some(spec);
+    }
+    // clingo accepts unambiguous prefixes of long options.
+    let mut candidates = OPTIONS.iter().filter(|o| o.long.starts_with(name));
+    match (candidates.next(), candidates.next()) {
+        (Some(spec), None) if !name.is_empty() => Some(spec),
+        _ => None,
+    }
+}
+
+fn find_short(c: char) -> Option<&'static OptionSpec> {
+    OPTIONS.iter().find(|o| o.short == Some(c))
+}
+
+/// Parses the arguments after the program name.
+pub fn parse_args(args: &[String]) -> Result<Options, UsageError> {
+    let mut options = Options::default();
+    let mut i = 0;
+    let mut only_files = false;
+    while i < args.len() {
+        let arg = &args[i];
+        i += 1;
+        if only_files || arg == "-" || !arg.starts_with('-') {
+            // clingo reads a leading integer argument as the number of models.
+            if !only_files && !arg.is_empty() && arg.bytes().all(|b| b.is_ascii_digit()) {
+                options.models = arg.parse().map_err(|_| invalid("models", arg))?;
+                options.models_given = true;
+            } else {
+                options.files.push(arg.clone());
+            }
+            continue;
+        }
+        if arg == "--" {
+            only_files = true;
+            continue;
+        }
+        let (spec, inline_value, shown) = if let Some(rest) = arg.strip_prefix("--") {
+            let (name, value) = match rest.split_once('=') {
+                Some((n, v)) => (n, Some(v.to_string())),
+                None => (rest, None),
+            };
+            let spec = find_long(name).ok_or_else(|| UsageError::Unknown(name.to_string()))?;
+            (spec, value, name.to_string())
+        } else {
+            let mut chars = arg[1..].chars();
+            let c = chars.next().unwrap_or('-');
+            let spec = find_short(c).ok_or_else(|| UsageError::Unknown(arg.clone()))?;
+            let rest: String = chars.collect();
+            let value = if rest.is_empty() {
+                None
+            } else {
+                Some(rest.trim_start_matches('=').to_string())
+            };
+            (spec, value, c.to_string())
+        };
+        let value = match spec.arity {
+            Flag => {
+                if inline_value.is_some() {
+                    return Err(UsageError::UnexpectedValue(shown));
+                }
+                None
+            }
+            OptionalValue => inline_value,
+            Value => match inline_value {
+                Some(v) => Some(v),
+                None => {
+                    if i < args.len() {
+                        i += 1;
+                        Some(args[i - 1].clone())
+                    } else {
+                        return Err(UsageError::MissingValue(shown));
+                    }
+                }
+            },
+        };
+        apply(&mut options, spec.long, value.as_deref())?;
+    }
+    Ok(options)
+}
+
+fn parse_num<T: std::str::FromStr>(option: &str, value: &str) -> Result<T, UsageError> {
+    value.trim().parse().map_err(|_| invalid(option, value))
+}
+
+fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageError> {
+    let v = value.unwrap_or("");
+    match long {
+        "help" => o.help = true,
+        "version" => o.version = true,
+        "mode" => {
+            o.mode = match v {
+                "clingo" => Mode::Clingo,
+                "gringo" => Mode::Gringo,
+                "clasp" => Mode::Clasp,
+                _ => return Err(invalid(long, v)),
+            }
+        }
+        "text" => {
+            o.mode = Mode::Gringo;
+            o.ground_format = GroundFormat::Text;
+        }
+        "output" => {
+            o.ground_format = match v {
+                "aspif" | "intermediate" => GroundFormat::Aspif,
+                "text" => GroundFormat::Text,
+                _ => return Err(invalid(long, v)),
+            }
+        }
+        "dialect" => {
+            o.dialect = match v {
+                "auto" => DialectChoice::Auto,
+                "clingo" | "asp" => DialectChoice::Clingo,
+                "sparc" => DialectChoice::Sparc,
+                _ => return Err(invalid(long, v)),
+            }
+        }
+        "models" => {
+            o.models = parse_num(long, v)?;
+            o.models_given = true;
+        }
+        "const" => {
+            let (name, val) = v.split_once('=').ok_or_else(|| invalid(long, v))?;
+            let name = name.trim();
+            let starts_lower = name
+                .trim_start_matches('_')
+                .starts_with(|c: char| c.is_ascii_lowercase());
+            if !starts_lower || val.trim().is_empty() {
+                return Err(invalid(long, v));
+            }
+            o.consts.push((name.to_string(), val.trim().to_string()));
+        }
+        "warn" => apply_warn(o, v)?,
+        "message-limit" => o.message_limit = parse_num(long, v)?,
+        "provenance" => o.provenance = true,
+        "opt-mode" => {
+            let mut parts = v.split(',');
+            o.opt_mode = match parts.next().unwrap_or("") {
+                "opt" => OptMode::Opt,
+                "optN" => OptMode::OptN,
+                "enum" => OptMode::Enum,
+                "ignore" => OptMode::Ignore,
+                _ => return Err(invalid(long, v)),
+            };
+            o.opt_bounds = parts
+                .map(|b| parse_num::<i64>(long, b))
+                .collect::<Result<_, _>>()?;
+        }
+        "enum-mode" => {
+            o.enum_mode = match v {
+                "auto" => EnumMode::Auto,
+                "bt" => EnumMode::Backtrack,
+                "record" => EnumMode::Record,
+                "brave" => EnumMode::Brave,
+                "cautious" => EnumMode::Cautious,
+                _ => return Err(invalid(long, v)),
+            }
+        }
+        "project" => {
+            o.project = match value {
+                None => true,
+                Some("no") | Some("0") => false,
+                Some(m)
+                    if ["show", "project", "auto"].contains(&m.split(',').next().unwrap_or("")) =>
+                {
+                    true
+                }
+                Some(m) => return Err(invalid(long, m)),
+            }
+        }
+        "cr" => {
+            o.cr = match v {
+                "card" | "cardinality" => CrMode::Cardinality,
+                "subset" => CrMode::Subset,
+                _ => return Err(invalid(long, v)),
+            }
+        }
+        "time-limit" => {
+            let secs: f64 = parse_num(long, v)?;
+            if !(secs >= 0.0 && secs.is_finite()) {
+                return Err(invalid(long, v));
+            }
+            o.time_limit = if secs == 0.0 { None } else { Some(secs) };
+        }
+        "parallel-mode" => {
+            let n = v.split(',').next().unwrap_or("");
+            let threads: u32 = parse_num(long, n)?;
+            if !(1..=64).contains(&threads) {
+                return Err(invalid(long, v));
+            }
+            o.threads = threads;
+        }
+        "seed" => o.seed = parse_num(long, v)?,
+        "check" => o.check = true,
+        "outf" => {
+            o.outf = match v {
+                "0" => OutputFormat::Text,
+                "2" => OutputFormat::Json,
+                _ => return Err(invalid(long, v)),
+            }
+        }
+        "quiet" => {
+            if value.is_none() {
+                o.quiet = [1, 1, 1];
+            } else {
+                let mut levels = [0u8; 3];
+                for (k, part) in v.split(',').enumerate() {
+                    if k >= 3 {
+                        return Err(invalid(long, v));
+                    }
+                    levels[k] = parse_num(long, part)?;
+                    if levels[k] > 2 {
+                        return Err(invalid(long, v));
+                    }
+                }
+                o.quiet = levels;
+            }
+        }
+        "stats" => {
+            o.stats = match value {
+                None => 1,
+                Some(n) => parse_num(long, n.split(',').next().unwrap_or(""))?,
+            }
+        }
+        "verbose" => {
+            o.verbose = match value {
+                None => 2,
+                Some(n) => parse_num(long, n)?,
+            }
+        }
+        _ => return Err(UsageError::Unknown(long.to_string())),
+    }
+    Ok(())
+}
+
+fn apply_warn(o: &mut Options, v: &str) -> Result<(), UsageError> {
+    match v {
+        "none" => o.disabled_warnings = WarningKind::ALL.to_vec(),
+        "all" => o.disabled_warnings.clear(),
+        _ => {
+            let (off, name) = match v.strip_prefix("no-") {
+                Some(name) => (true, name),
+                None => (false, v),
+            };
+            let kind = WarningKind::from_name(name).ok_or_else(|| invalid("warn", v))?;
+            o.disabled_warnings.retain(|k| *k != kind);
+            if off {
+                o.disabled_warnings.push(kind);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The `--help` text, generated from [`OPTIONS`].
+pub fn help_text() -> String {
+    let mut out = String::new();
+    out.push_str(&format!("lucent version {}\n", env!("CARGO_PKG_VERSION")));
+    out.push_str("usage: lucent [number] [options] [files]\n");
+    out.push_str("       lucent <verb> [options]   where <verb> is one of: demo, sim\n\n");
+    out.push_str(
+        "Grounds and solves answer-set programs (clingo dialect, CR-Prolog rules, SPARC\n",
+    );
+    out.push_str("sorted programs) with a native grounder and CDCL stable-model solver.\n");
+    out.push_str("Reads standard input when no file (or '-') is given.\n");
+    let mut groups: Vec<&str> = Vec::new();
+    for spec in OPTIONS {
+        if !groups.contains(&spec.group) {
+            groups.push(spec.group);
+        }
+    }
+    for group in groups {
+        out.push_str(&format!("\n{group} Options:\n\n"));
+        for spec in OPTIONS.iter().filter(|s| s.group == group) {
+            let mut left = format!("  --{}", spec.long);
+            match spec.arity {
+                Flag => {}
+                Value => left.push_str(&format!("={}", spec.value_name)),
+                OptionalValue => left.push_str(&format!("[={}]", spec.value_name)),
+            }
+            if let Some(c) = spec.short {
+                left.push_str(&format!(",-{c}"));
+            }
+            if left.len() < 28 {
+                out.push_str(&format!("{left:<28}: {}\n", spec.help));
+            } else {
+                out.push_str(&format!("{left}\n{:<28}: {}\n", "", spec.help));
+            }
+        }
+    }
+    out.push_str("\nExit codes: 10 model found, 20 no model, 30 search exhausted with a model\n");
+    out.push_str("(all models or optimum), 1 interrupted, 65 input error, 128 usage error.\n");
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(s: &str) -> Vec<String> {
+        s.split_whitespace().map(str::to_string).collect()
+    }
+
+    #[test]
+    fn clingo_style_arguments() {
+        let o = parse_args(&args(
+            "0 a.lp -c n=3 --outf=2 -q --opt-mode=enum,3,4 -Wno-atom-undefined b.lp",
+        ))
+        .unwrap();
+        assert_eq!(o.models, 0);
+        assert_eq!(o.files, vec!["a.lp", "b.lp"]);
+        assert_eq!(o.consts, vec![("n".to_string(), "3".to_string())]);
+        assert_eq!(o.outf, OutputFormat::Json);
+        assert_eq!(o.quiet, [1, 1, 1]);
+        assert_eq!(o.opt_mode, OptMode::Enum);
+        assert_eq!(o.opt_bounds, vec![3, 4]);
+        assert_eq!(o.disabled_warnings, vec![WarningKind::AtomUndefined]);
+    }
+
+    #[test]
+    fn separate_and_attached_values() {
+        let o = parse_args(&args("-n 5 -W none --mode clasp")).unwrap();
+        assert_eq!(o.models, 5);
+        assert_eq!(o.disabled_warnings.len(), WarningKind::ALL.len());
+        assert_eq!(o.mode, Mode::Clasp);
+        let o = parse_args(&args("-n3 --text --time-limit=2.5 --proj")).unwrap();
+        assert_eq!(o.models, 3);
+        assert_eq!(
+            (o.mode, o.ground_format),
+            (Mode::Gringo, GroundFormat::Text)
+        );
+        assert_eq!(o.time_limit, Some(2.5));
+        assert!(o.project);
+    }
+
+    #[test]
+    fn usage_errors() {
+        assert_eq!(
+            parse_args(&args("--foo")),
+            Err(UsageError::Unknown("foo".into()))
+        );
+        assert_eq!(
+            parse_args(&args("-n")),
+            Err(UsageError::MissingValue("n".into()))
+        );
+        assert!(matches!(
+            parse_args(&args("-n x")),
+            Err(UsageError::InvalidValue { .. })
+        ));
+        assert!(matches!(
+            parse_args(&args("--outf=7")),
+            Err(UsageError::InvalidValue { .. })
+        ));
+        assert!(matches!(
+            parse_args(&args("-c 3=4")),
+            Err(UsageError::InvalidValue { .. })
+        ));
+        assert_eq!(
+            parse_args(&args("--check=1")),
+            Err(UsageError::UnexpectedValue("check".into()))
+        );
+    }
+
+    #[test]
+    fn help_lists_every_option() {
+        let help = help_text();
+        for spec in OPTIONS {
+            assert!(help.contains(&format!("--{}", spec.long)), "{}", spec.long);
+        }
+    }
+}

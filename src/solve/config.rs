@@ -1,0 +1,128 @@
+//! Solver configuration: every knob the command line maps clingo/clasp options onto.
+//!
+//! Invariant: a `Config` is a plain value; the solver never reads the clock or the environment
+//! except through the deadline and the interrupt flag given here (STYLE.md: limits reach the
+//! solver as values, it answers with a stop reason).
+
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+use std::time::Instant;
+
+/// What to do with `#minimize` statements (clasp `--opt-mode`).
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub enum OptMode {
+    /// Find an optimum by branch and bound, reporting each improving model.
+    #[default]
+    Opt,
+    /// Find an optimum, then enumerate all optimal models.
+    OptN,
+    /// Enumerate models, optionally only those whose cost is lexicographically at most the
+    /// bound (highest priority first; missing components are unbounded).
+    Enum(Vec<i64>),
+    /// Ignore the optimization statements (`--opt-mode=ignore`).
+    Ignore,
+}
+
+/// How models are enumerated or summarised (clasp `--enum-mode`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum EnumMode {
+    /// Plain enumeration of answer sets.
+    #[default]
+    Auto,
+    /// Brave consequences: shown atoms true in some answer set.
+    Brave,
+    /// Cautious consequences: shown atoms true in every answer set.
+    Cautious,
+}
+
+/// Which answer sets count for programs with consistency-restoring rules.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum CrMode {
+    /// Minimal number of applied CR rules (SPARC's semantics).
+    #[default]
+    Cardinality,
+    /// Set-inclusion-minimal sets of applied CR rules (original CR-Prolog).
+    Subset,
+}
+
+/// Solver configuration.
+#[derive(Clone, Debug)]
+pub struct Config {
+    /// Number of models to compute; 0 means all (`-n`). With `#minimize` in `Opt` mode, 0 means
+    /// "until the optimum is proven" and N stops after N improving models, as in clasp; the
+    /// command line passes 0 there unless the user gave `-n`.
+    pub models: usize,
+    /// Optimization mode.
+    pub opt_mode: OptMode,
+    /// Enumeration mode.
+    pub enum_mode: EnumMode,
+    /// Semantics for CR rules.
+    pub cr_mode: CrMode,
+    /// Enumerate projected models only (`--project`): onto `#project` atoms if present, else
+    /// onto the shown atoms.
+    pub project: bool,
+    /// Stop with `UNKNOWN` once this instant has passed.
+    pub deadline: Option<Instant>,
+    /// Stop with `UNKNOWN` once this flag becomes true (e.g. set by a signal handler).
+    pub interrupt: Option<Arc<AtomicBool>>,
+    /// Seed of the pseudo-random generator used for tie breaking and random decisions.
+    pub seed: u64,
+    /// Probability, in 1/1000, of a random decision instead of the VSIDS choice.
+    pub random_freq_permille: u32,
+    /// VSIDS decay factor, in (0, 1).
+    pub var_decay: f64,
+    /// Initial phase of decision variables: false first when `true` (clasp's default for atoms).
+    pub default_phase_false: bool,
+    /// Restart policy.
+    pub restarts: RestartPolicy,
+    /// Keep the solver ready for `add_rules` that give new rules to existing atoms; costs one
+    /// assumption per step (see `Solver::add_rules`).
+    pub incremental: bool,
+    /// Check every model with an independent stable-model test before reporting it (debug aid).
+    pub check_models: bool,
+    /// Number of portfolio threads (`--parallel-mode=N`); 1 is sequential.
+    pub threads: usize,
+}
+
+/// When the search restarts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RestartPolicy {
+    /// Luby sequence times the given unit (in conflicts).
+    Luby(u32),
+    /// Glucose-style: restart when the recent average LBD exceeds the global average.
+    Glucose,
+    /// Never restart.
+    Never,
+}
+
+impl Default for Config {
+    fn default() -> Config {
+        Config {
+            models: 1,
+            opt_mode: OptMode::Opt,
+            enum_mode: EnumMode::Auto,
+            cr_mode: CrMode::Cardinality,
+            project: false,
+            deadline: None,
+            interrupt: None,
+            seed: 1,
+            random_freq_permille: 0,
+            var_decay: 0.95,
+            default_phase_false: true,
+            restarts: RestartPolicy::Glucose,
+            incremental: false,
+            check_models: false,
+            threads: 1,
+        }
+    }
+}
+
+impl Config {
+    /// A configuration computing all models (`-n 0`).
+    pub fn all_models() -> Config {
+        Config {
+            models: 0,
+            ..Config::default()
+        }
+    }
+}

@@ -1,0 +1,1358 @@
+//! The CDCL core: assignment, two-watched-literal unit propagation, native weight constraints,
+//! first-UIP conflict analysis with recursive clause minimisation, VSIDS with phase saving,
+//! Luby and glucose-style restarts, and learnt clause deletion by LBD and activity.
+//!
+//! Follows MiniSat/Glucose as restated by varisat and kissat: per-variable data in parallel
+//! vectors, long clauses in one `Vec<u32>` arena with a three-word header, binary clauses only in
+//! the watch lists. Weight constraints `b <-> sum(w_i * l_i) >= k` are propagated natively with
+//! explanations stored per variable (clasp's weight constraints, AIJ 2012 section 6). An optional
+//! `Unfounded` propagator (source-free greatest-unfounded-set check) runs at every propagation
+//! fixpoint and contributes loop nogoods as learnt clauses.
+//!
+//! Invariants:
+//! - The first two literals of every long clause are its watched literals; when a clause is the
+//!   reason of an assignment, the implied literal is at position 0.
+//! - `values[l.code()]` is 1 when `l` is true, -1 when false, 0 when unassigned, and
+//!   `values[(!l).code()] == -values[l.code()]`.
+//! - Assumptions occupy decision levels `1..=assumptions.len()` during `search`.
+
+use super::lit::{Lit, Var};
+use super::unfounded::Unfounded;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Instant;
+
+/// Offset of a long clause's header in the arena.
+pub type ClauseRef = u32;
+
+/// Words of a clause header: length, flags (learnt, deleted, lbd), activity bits.
+const HEADER: usize = 3;
+const FLAG_LEARNT: u32 = 1;
+const FLAG_DELETED: u32 = 2;
+
+/// Why a variable has its value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Reason {
+    /// A decision or an assumption, or a fact at level 0.
+    Decision,
+    /// Implied by a binary clause whose other literal is given.
+    Binary(Lit),
+    /// Implied by a long clause.
+    Long(ClauseRef),
+    /// Implied with the explanation stored in `Engine::stored[var]` (weight constraints).
+    Stored,
+}
+
+/// A watch list entry.
+#[derive(Clone, Copy, Debug)]
+struct Watch {
+    /// The clause, or `u32::MAX` for a binary clause.
+    cref: u32,
+    /// For a binary clause the other literal; for a long clause a blocker literal.
+    other: Lit,
+}
+
+/// A weight constraint `head <-> sum of weights of true lits >= bound`, weights positive.
+#[derive(Clone, Debug)]
+struct WeightConstraint {
+    /// The literal equivalent to the constraint.
+    head: Lit,
+    /// Literals with positive weights.
+    lits: Vec<(Lit, u64)>,
+    /// The lower bound.
+    bound: u64,
+}
+
+/// Answer of a search.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SearchResult {
+    /// A total assignment satisfying all constraints was found; it stays on the trail.
+    Sat,
+    /// No assignment extends the assumptions.
+    Unsat,
+    /// A limit was reached.
+    Unknown,
+}
+
+/// Restart schedule state.
+#[derive(Clone, Debug)]
+pub enum Restarts {
+    /// Luby sequence: unit and current index.
+    Luby {
+        /// Conflicts per Luby unit.
+        unit: u32,
+        /// Position in the sequence.
+        index: u32,
+        /// Conflicts left before the next restart.
+        left: u64,
+    },
+    /// Glucose: fast and slow exponential moving averages of learnt clause LBDs.
+    Glucose {
+        /// Fast moving average.
+        fast: f64,
+        /// Slow moving average.
+        slow: f64,
+        /// Conflicts since the last restart.
+        since: u64,
+    },
+    /// Never restart.
+    Never,
+}
+
+/// The CDCL engine.
+pub struct Engine {
+    /// Per literal code: 1 true, -1 false, 0 unassigned.
+    values: Vec<i8>,
+    /// Per variable: decision level of the assignment.
+    level: Vec<u32>,
+    /// Per variable: why it is assigned.
+    reason: Vec<Reason>,
+    /// Per variable: stored explanation (implied literal first, then false literals).
+    stored: Vec<Vec<Lit>>,
+    /// Per variable: saved phase (last value).
+    phase: Vec<bool>,
+    /// Per variable: VSIDS activity.
+    activity: Vec<f64>,
+    /// Per variable: position in `heap`, or `usize::MAX`.
+    heap_pos: Vec<usize>,
+    /// Per variable: whether it may be chosen as a decision.
+    decidable: Vec<bool>,
+    /// Per variable: scratch mark used by conflict analysis.
+    seen: Vec<u8>,
+    /// Per variable: weight constraints mentioning it.
+    weight_watch: Vec<Vec<u32>>,
+    /// Per literal code: watches of clauses in which that literal is watched.
+    watches: Vec<Vec<Watch>>,
+    /// The clause arena: headers followed by literal codes.
+    arena: Vec<u32>,
+    /// Words of deleted clauses still in the arena.
+    wasted: usize,
+    /// References of learnt long clauses.
+    learnts: Vec<ClauseRef>,
+    /// Weight constraints.
+    weights: Vec<WeightConstraint>,
+    /// Assigned literals in order.
+    trail: Vec<Lit>,
+    /// Trail length at the start of each decision level.
+    trail_lim: Vec<usize>,
+    /// Next trail position to propagate.
+    qhead: usize,
+    /// Binary heap of decision candidates ordered by activity.
+    heap: Vec<Var>,
+    /// Activity increment.
+    var_inc: f64,
+    /// Activity decay factor.
+    var_decay: f64,
+    /// Clause activity increment.
+    cla_inc: f64,
+    /// True once a conflict at level 0 was found.
+    inconsistent: bool,
+    /// Literals of the last conflict (all false).
+    conflict: Vec<Lit>,
+    /// Unfounded-set propagator for non-tight programs.
+    pub unfounded: Option<Unfounded>,
+    /// Restart state.
+    pub restarts: Restarts,
+    /// Maximum number of learnt clauses before a reduction.
+    max_learnts: f64,
+    /// Pseudo-random state.
+    rng: u64,
+    /// Random decision probability in 1/1000.
+    pub random_permille: u32,
+    /// Phase of a variable never assigned before.
+    pub default_phase: bool,
+    /// Deadline, checked every few hundred conflicts or decisions.
+    pub deadline: Option<Instant>,
+    /// Interrupt flag, checked like the deadline.
+    pub interrupt: Option<Arc<AtomicBool>>,
+    /// Statistics: decisions.
+    pub decisions: u64,
+    /// Statistics: conflicts.
+    pub conflicts: u64,
+    /// Statistics: restarts.
+    pub num_restarts: u64,
+    /// Statistics: propagated assignments.
+    pub propagations: u64,
+    /// Statistics: loop nogoods.
+    pub loop_nogoods: u64,
+    /// Problem clauses added.
+    pub num_clauses: u64,
+    /// Whether the last `search` stopped because the interrupt flag was raised.
+    pub interrupted: bool,
+    /// Scratch buffer for reason literals.
+    scratch: Vec<Lit>,
+}
+
+impl Default for Engine {
+    fn default() -> Engine {
+        Engine::new()
+    }
+}
+
+impl Engine {
+    /// An empty engine.
+    pub fn new() -> Engine {
+        Engine {
+            values: Vec::new(),
+            level: Vec::new(),
+            reason: Vec::new(),
+            stored: Vec::new(),
+            phase: Vec::new(),
+            activity: Vec::new(),
+            heap_pos: Vec::new(),
+            decidable: Vec::new(),
+            seen: Vec::new(),
+            weight_watch: Vec::new(),
+            watches: Vec::new(),
+            arena: Vec::new(),
+            wasted: 0,
+            learnts: Vec::new(),
+            weights: Vec::new(),
+            trail: Vec::new(),
+            trail_lim: Vec::new(),
+            qhead: 0,
+            heap: Vec::new(),
+            var_inc: 1.0,
+            var_decay: 0.95,
+            cla_inc: 1.0,
+            inconsistent: false,
+            conflict: Vec::new(),
+            unfounded: None,
+            restarts: Restarts::Glucose {
+                fast: 0.0,
+                slow: 0.0,
+                since: 0,
+            },
+            max_learnts: 4000.0,
+            rng: 0x9E37_79B9_7F4A_7C15,
+            random_permille: 0,
+            default_phase: false,
+            deadline: None,
+            interrupt: None,
+            decisions: 0,
+            conflicts: 0,
+            num_restarts: 0,
+            propagations: 0,
+            loop_nogoods: 0,
+            num_clauses: 0,
+            interrupted: false,
+            scratch: Vec::new(),
+        }
+    }
+
+    /// Sets the VSIDS decay and the random seed.
+    pub fn configure(&mut self, var_decay: f64, seed: u64) {
+        self.var_decay = var_decay.clamp(0.5, 0.999);
+        self.rng = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+    }
+
+    /// Number of variables.
+    pub fn num_vars(&self) -> usize {
+        self.level.len()
+    }
+
+    /// Number of learnt clauses kept.
+    pub fn num_learnts(&self) -> usize {
+        self.learnts.len()
+    }
+
+    /// Creates a new variable, decidable by default.
+    pub fn new_var(&mut self) -> Var {
+        let v = Var::new(self.level.len());
+        self.values.push(0);
+        self.values.push(0);
+        self.level.push(0);
+        self.reason.push(Reason::Decision);
+        self.stored.push(Vec::new());
+        self.phase.push(self.default_phase);
+        self.activity.push(0.0);
+        self.heap_pos.push(usize::MAX);
+        self.decidable.push(true);
+        self.seen.push(0);
+        self.weight_watch.push(Vec::new());
+        self.watches.push(Vec::new());
+        self.watches.push(Vec::new());
+        self.heap_insert(v);
+        v
+    }
+
+    /// Excludes a variable from decisions (its value is always implied).
+    pub fn set_decidable(&mut self, v: Var, decidable: bool) {
+        self.decidable[v.index()] = decidable;
+        if decidable {
+            self.heap_insert(v);
+        }
+    }
+
+    /// Bumps the initial activity of a variable so it is decided early.
+    pub fn bump_initial(&mut self, v: Var, amount: f64) {
+        self.activity[v.index()] += amount;
+        if self.heap_pos[v.index()] != usize::MAX {
+            self.heap_up(self.heap_pos[v.index()]);
+        }
+    }
+
+    /// Whether a conflict at level 0 was derived: no more models under any assumption.
+    pub fn is_inconsistent(&self) -> bool {
+        self.inconsistent
+    }
+
+    /// The value of a literal: `Some(true)`, `Some(false)` or `None`.
+    pub fn value(&self, l: Lit) -> Option<bool> {
+        match self.values[l.code()] {
+            1 => Some(true),
+            -1 => Some(false),
+            _ => None,
+        }
+    }
+
+    fn val(&self, l: Lit) -> i8 {
+        self.values[l.code()]
+    }
+
+    /// The current decision level.
+    pub fn decision_level(&self) -> u32 {
+        self.trail_lim.len() as u32
+    }
+
+    /// The decision level at which the variable of `l` was assigned.
+    pub fn level_of(&self, l: Lit) -> u32 {
+        self.level[l.var().index()]
+    }
+
+    /// The literals that were decided (not implied) on the current trail, in order.
+    pub fn decisions_on_trail(&self) -> Vec<Lit> {
+        self.trail_lim
+            .iter()
+            .filter_map(|&start| self.trail.get(start).copied())
+            .filter(|l| self.reason[l.var().index()] == Reason::Decision)
+            .collect()
+    }
+
+    fn assign(&mut self, l: Lit, reason: Reason) {
+        let v = l.var().index();
+        debug_assert_eq!(self.values[l.code()], 0);
+        self.values[l.code()] = 1;
+        self.values[(!l).code()] = -1;
+        self.level[v] = self.decision_level();
+        self.reason[v] = reason;
+        self.trail.push(l);
+    }
+
+    /// Undoes all assignments above `level`.
+    pub fn backtrack(&mut self, level: u32) {
+        if self.decision_level() <= level {
+            return;
+        }
+        let start = self.trail_lim[level as usize];
+        for i in (start..self.trail.len()).rev() {
+            let l = self.trail[i];
+            let v = l.var();
+            self.values[l.code()] = 0;
+            self.values[(!l).code()] = 0;
+            self.phase[v.index()] = !l.is_neg();
+            self.reason[v.index()] = Reason::Decision;
+            if self.heap_pos[v.index()] == usize::MAX && self.decidable[v.index()] {
+                self.heap_insert(v);
+            }
+        }
+        self.trail.truncate(start);
+        self.trail_lim.truncate(level as usize);
+        self.qhead = self.trail.len();
+    }
+
+    // ---------------------------------------------------------------- clauses
+
+    fn clause_len(&self, cref: ClauseRef) -> usize {
+        self.arena[cref as usize] as usize
+    }
+
+    fn clause_lit(&self, cref: ClauseRef, i: usize) -> Lit {
+        Lit::from_code(self.arena[cref as usize + HEADER + i])
+    }
+
+    fn clause_flags(&self, cref: ClauseRef) -> u32 {
+        self.arena[cref as usize + 1]
+    }
+
+    fn clause_deleted(&self, cref: ClauseRef) -> bool {
+        self.clause_flags(cref) & FLAG_DELETED != 0
+    }
+
+    fn alloc_clause(&mut self, lits: &[Lit], learnt: bool, lbd: u32) -> ClauseRef {
+        let cref = self.arena.len() as u32;
+        self.arena.push(lits.len() as u32);
+        self.arena
+            .push(if learnt { FLAG_LEARNT } else { 0 } | (lbd.min(1 << 20) << 2));
+        self.arena.push(0f32.to_bits());
+        self.arena.extend(lits.iter().map(|l| l.code() as u32));
+        self.watches[(lits[0]).code()].push(Watch {
+            cref,
+            other: lits[1],
+        });
+        self.watches[(lits[1]).code()].push(Watch {
+            cref,
+            other: lits[0],
+        });
+        if learnt {
+            self.learnts.push(cref);
+        }
+        cref
+    }
+
+    fn attach(&mut self, lits: &[Lit], learnt: bool, lbd: u32) -> Reason {
+        if lits.len() == 2 {
+            self.watches[lits[0].code()].push(Watch {
+                cref: u32::MAX,
+                other: lits[1],
+            });
+            self.watches[lits[1].code()].push(Watch {
+                cref: u32::MAX,
+                other: lits[0],
+            });
+            Reason::Binary(lits[1])
+        } else {
+            Reason::Long(self.alloc_clause(lits, learnt, lbd))
+        }
+    }
+
+    /// Adds a clause at decision level 0 (backtracking there first). Returns false when the
+    /// engine became inconsistent.
+    pub fn add_clause(&mut self, lits: &[Lit]) -> bool {
+        self.backtrack(0);
+        if self.inconsistent {
+            return false;
+        }
+        let mut c: Vec<Lit> = lits.to_vec();
+        c.sort();
+        c.dedup();
+        for w in c.windows(2) {
+            if w[0] == !w[1] {
+                return true;
+            }
+        }
+        if c.iter().any(|&l| self.val(l) == 1) {
+            return true;
+        }
+        c.retain(|&l| self.val(l) == 0);
+        self.num_clauses += 1;
+        match c.len() {
+            0 => {
+                self.inconsistent = true;
+                false
+            }
+            1 => {
+                self.assign(c[0], Reason::Decision);
+                if self.propagate().is_some() {
+                    self.inconsistent = true;
+                    return false;
+                }
+                true
+            }
+            _ => {
+                self.attach(&c, false, 0);
+                true
+            }
+        }
+    }
+
+    /// Adds a clause while a search is in progress (loop nogoods): watches are chosen so that
+    /// the clause is propagating or conflicting as appropriate. Returns true when the clause is
+    /// conflicting under the current assignment (the conflict is then in `self.conflict`).
+    fn add_clause_in_search(&mut self, lits: &mut [Lit], learnt: bool) -> bool {
+        // Order: true literals first, then unassigned, then false by decreasing level.
+        lits.sort_by_key(|&l| {
+            let v = self.val(l);
+            match v {
+                1 => 0u64,
+                0 => 1,
+                _ => 2 + (u32::MAX - self.level[l.var().index()]) as u64,
+            }
+        });
+        if lits.is_empty() {
+            self.conflict.clear();
+            return true;
+        }
+        if lits.len() == 1 {
+            // A unit clause: it holds at level 0; assign it there through a restart.
+            let l = lits[0];
+            if self.level_of(l) == 0 && self.val(l) == 1 {
+                return false;
+            }
+            if self.val(l) == -1 && self.level_of(l) == 0 {
+                self.conflict.clear();
+                self.conflict.push(l);
+                return true;
+            }
+            self.backtrack(0);
+            self.assign(l, Reason::Decision);
+            return false;
+        }
+        let reason = self.attach(lits, learnt, lits.len() as u32);
+        let (v0, v1) = (self.val(lits[0]), self.val(lits[1]));
+        if v0 == -1 {
+            self.conflict.clear();
+            self.conflict.extend_from_slice(lits);
+            return true;
+        }
+        if v0 == 0 && v1 == -1 {
+            let r = match reason {
+                Reason::Binary(_) => Reason::Binary(lits[1]),
+                other => other,
+            };
+            self.assign(lits[0], r);
+        }
+        false
+    }
+
+    /// Adds a native weight constraint `head <-> sum(w * l) >= bound` at level 0. Weights may be
+    /// negative; they are normalised by negating their literals.
+    pub fn add_weight(&mut self, head: Lit, lits: &[(Lit, i64)], bound: i64) -> bool {
+        self.backtrack(0);
+        let mut bound = bound as i128;
+        let mut norm: Vec<(Lit, u64)> = Vec::new();
+        for &(l, w) in lits {
+            if w > 0 {
+                norm.push((l, w as u64));
+            } else if w < 0 {
+                // w * l = w - w * (not l), so move -w to the other side.
+                bound -= w as i128;
+                norm.push((!l, (-(w as i128)) as u64));
+            }
+        }
+        if bound <= 0 {
+            return self.add_clause(&[head]);
+        }
+        let total: i128 = norm.iter().map(|&(_, w)| w as i128).sum();
+        if total < bound {
+            return self.add_clause(&[!head]);
+        }
+        let bound = bound as u64;
+        let id = self.weights.len() as u32;
+        let mut vars: Vec<usize> = norm.iter().map(|(l, _)| l.var().index()).collect();
+        vars.push(head.var().index());
+        vars.sort();
+        vars.dedup();
+        for v in vars {
+            self.weight_watch[v].push(id);
+        }
+        self.weights.push(WeightConstraint {
+            head,
+            lits: norm,
+            bound,
+        });
+        self.num_clauses += 1;
+        if self.propagate_weight(id as usize) || self.propagate().is_some() {
+            self.inconsistent = true;
+            return false;
+        }
+        true
+    }
+
+    // ---------------------------------------------------------------- propagation
+
+    /// Unit propagation to fixpoint, including weight constraints and unfounded sets. Returns
+    /// `Some(())` on conflict, with the falsified clause in `self.conflict`.
+    pub fn propagate(&mut self) -> Option<()> {
+        loop {
+            if self.propagate_units() {
+                return Some(());
+            }
+            self.unfounded.as_ref()?;
+            let mut uf = self.unfounded.take().expect("checked above");
+            let nogoods = uf.check(self);
+            self.unfounded = Some(uf);
+            if nogoods.is_empty() {
+                return None;
+            }
+            for mut ng in nogoods {
+                self.loop_nogoods += 1;
+                if self.add_clause_in_search(&mut ng, true) {
+                    return Some(());
+                }
+            }
+        }
+    }
+
+    /// Clause and weight propagation; returns true on conflict.
+    fn propagate_units(&mut self) -> bool {
+        while self.qhead < self.trail.len() {
+            let p = self.trail[self.qhead];
+            self.qhead += 1;
+            self.propagations += 1;
+            let false_lit = !p;
+            let mut ws = std::mem::take(&mut self.watches[false_lit.code()]);
+            let mut i = 0;
+            let mut j = 0;
+            let mut conflict = false;
+            while i < ws.len() {
+                let w = ws[i];
+                i += 1;
+                if w.cref == u32::MAX {
+                    ws[j] = w;
+                    j += 1;
+                    match self.val(w.other) {
+                        1 => {}
+                        0 => self.assign(w.other, Reason::Binary(false_lit)),
+                        _ => {
+                            self.conflict.clear();
+                            self.conflict.push(w.other);
+                            self.conflict.push(false_lit);
+                            conflict = true;
+                            break;
+                        }
+                    }
+                    continue;
+                }
+                let cref = w.cref;
+                if self.clause_deleted(cref) {
+                    continue;
+                }
+                if self.val(w.other) == 1 {
+                    ws[j] = w;
+                    j += 1;
+                    continue;
+                }
+                let base = cref as usize + HEADER;
+                // Make sure the false literal is at position 1.
+                if self.arena[base] == false_lit.code() as u32 {
+                    self.arena.swap(base, base + 1);
+                }
+                let first = Lit::from_code(self.arena[base]);
+                if first != w.other && self.val(first) == 1 {
+                    ws[j] = Watch { cref, other: first };
+                    j += 1;
+                    continue;
+                }
+                let len = self.clause_len(cref);
+                let mut found = false;
+                for k in 2..len {
+                    let l = Lit::from_code(self.arena[base + k]);
+                    if self.val(l) != -1 {
+                        self.arena.swap(base + 1, base + k);
+                        self.watches[l.code()].push(Watch { cref, other: first });
+                        found = true;
+                        break;
+                    }
+                }
+                if found {
+                    continue;
+                }
+                ws[j] = Watch { cref, other: first };
+                j += 1;
+                if self.val(first) == -1 {
+                    self.conflict.clear();
+                    for k in 0..len {
+                        self.conflict.push(Lit::from_code(self.arena[base + k]));
+                    }
+                    conflict = true;
+                    break;
+                }
+                self.assign(first, Reason::Long(cref));
+            }
+            while i < ws.len() {
+                ws[j] = ws[i];
+                j += 1;
+                i += 1;
+            }
+            ws.truncate(j);
+            // Watches added to this list during the loop (none: we never watch false_lit anew).
+            let added = std::mem::take(&mut self.watches[false_lit.code()]);
+            ws.extend(added);
+            self.watches[false_lit.code()] = ws;
+            if conflict {
+                return true;
+            }
+            let wl = std::mem::take(&mut self.weight_watch[p.var().index()]);
+            let mut wconflict = false;
+            for &id in &wl {
+                if self.propagate_weight(id as usize) {
+                    wconflict = true;
+                    break;
+                }
+            }
+            self.weight_watch[p.var().index()] = wl;
+            if wconflict {
+                return true;
+            }
+        }
+        false
+    }
+
+    /// Evaluates one weight constraint; returns true on conflict.
+    fn propagate_weight(&mut self, id: usize) -> bool {
+        let c = &self.weights[id];
+        let head = c.head;
+        let bound = c.bound;
+        let mut sum_true = 0u64;
+        let mut sum_undef = 0u64;
+        for &(l, w) in &c.lits {
+            match self.values[l.code()] {
+                1 => sum_true += w,
+                0 => sum_undef += w,
+                _ => {}
+            }
+        }
+        let hv = self.val(head);
+        let max = sum_true + sum_undef;
+        let false_lits = |e: &Engine| -> Vec<Lit> {
+            e.weights[id]
+                .lits
+                .iter()
+                .map(|&(l, _)| l)
+                .filter(|&l| e.val(l) == -1)
+                .collect()
+        };
+        let true_lits_neg = |e: &Engine| -> Vec<Lit> {
+            e.weights[id]
+                .lits
+                .iter()
+                .map(|&(l, _)| !l)
+                .filter(|&l| e.val(l) == -1)
+                .collect()
+        };
+        if sum_true >= bound {
+            match hv {
+                1 => {}
+                0 => {
+                    let mut r = vec![head];
+                    r.extend(true_lits_neg(self));
+                    self.assign_stored(head, r);
+                }
+                _ => {
+                    self.conflict.clear();
+                    self.conflict.push(head);
+                    let t = true_lits_neg(self);
+                    self.conflict.extend(t);
+                    return true;
+                }
+            }
+            return false;
+        }
+        if max < bound {
+            match hv {
+                -1 => {}
+                0 => {
+                    let mut r = vec![!head];
+                    r.extend(false_lits(self));
+                    self.assign_stored(!head, r);
+                }
+                _ => {
+                    self.conflict.clear();
+                    self.conflict.push(!head);
+                    let f = false_lits(self);
+                    self.conflict.extend(f);
+                    return true;
+                }
+            }
+            return false;
+        }
+        if hv == 1 {
+            // Every unassigned literal whose loss would drop the maximum below the bound must hold.
+            let need: Vec<Lit> = self.weights[id]
+                .lits
+                .iter()
+                .filter(|&&(l, w)| self.val(l) == 0 && max - w < bound)
+                .map(|&(l, _)| l)
+                .collect();
+            if !need.is_empty() {
+                let f = false_lits(self);
+                for l in need {
+                    if self.val(l) != 0 {
+                        continue;
+                    }
+                    let mut r = vec![l, !head];
+                    r.extend_from_slice(&f);
+                    self.assign_stored(l, r);
+                }
+            }
+        } else if hv == -1 {
+            // Every unassigned literal that would reach the bound must be false.
+            let deny: Vec<Lit> = self.weights[id]
+                .lits
+                .iter()
+                .filter(|&&(l, w)| self.val(l) == 0 && sum_true + w >= bound)
+                .map(|&(l, _)| l)
+                .collect();
+            if !deny.is_empty() {
+                let t = true_lits_neg(self);
+                for l in deny {
+                    if self.val(l) != 0 {
+                        continue;
+                    }
+                    let mut r = vec![!l, head];
+                    r.extend_from_slice(&t);
+                    self.assign_stored(!l, r);
+                }
+            }
+        }
+        false
+    }
+
+    fn assign_stored(&mut self, l: Lit, explanation: Vec<Lit>) {
+        self.stored[l.var().index()] = explanation;
+        self.assign(l, Reason::Stored);
+    }
+
+    /// Appends the false literals of the reason of `v` (excluding `v` itself) to `out`.
+    fn reason_lits(&self, v: Var, out: &mut Vec<Lit>) {
+        match self.reason[v.index()] {
+            Reason::Decision => {}
+            Reason::Binary(l) => out.push(l),
+            Reason::Long(cref) => {
+                for k in 0..self.clause_len(cref) {
+                    let l = self.clause_lit(cref, k);
+                    if l.var() != v {
+                        out.push(l);
+                    }
+                }
+            }
+            Reason::Stored => out.extend(
+                self.stored[v.index()]
+                    .iter()
+                    .copied()
+                    .filter(|l| l.var() != v),
+            ),
+        }
+    }
+
+    // ---------------------------------------------------------------- analysis
+
+    /// First-UIP analysis of `self.conflict`; returns the learnt clause (asserting literal
+    /// first, a literal of the backjump level second) and the backjump level.
+    fn analyze(&mut self) -> (Vec<Lit>, u32) {
+        let current = self.decision_level();
+        let mut learnt: Vec<Lit> = vec![Lit::from_code(0)];
+        let mut counter = 0usize;
+        let mut index = self.trail.len();
+        let mut clause = std::mem::take(&mut self.conflict);
+        let mut to_clear: Vec<Var> = Vec::new();
+        let mut p: Option<Lit> = None;
+        loop {
+            for &q in &clause {
+                if Some(q) == p.map(|x| !x) || Some(q) == p {
+                    continue;
+                }
+                let v = q.var();
+                if self.seen[v.index()] == 0 && self.level[v.index()] > 0 {
+                    self.seen[v.index()] = 1;
+                    to_clear.push(v);
+                    self.bump_var(v);
+                    if self.level[v.index()] >= current {
+                        counter += 1;
+                    } else {
+                        learnt.push(q);
+                    }
+                }
+            }
+            // Next literal of the current level on the trail.
+            loop {
+                index -= 1;
+                if self.seen[self.trail[index].var().index()] != 0 {
+                    break;
+                }
+            }
+            let pl = self.trail[index];
+            p = Some(pl);
+            counter -= 1;
+            if counter == 0 {
+                learnt[0] = !pl;
+                break;
+            }
+            clause.clear();
+            if let Reason::Long(cref) = self.reason[pl.var().index()] {
+                self.bump_clause(cref);
+            }
+            let mut buf = std::mem::take(&mut self.scratch);
+            buf.clear();
+            self.reason_lits(pl.var(), &mut buf);
+            clause.extend_from_slice(&buf);
+            self.scratch = buf;
+            // The implied literal itself is never in `clause`, and the filter above skips it.
+        }
+        self.conflict = clause;
+        // Recursive minimisation: drop literals implied by the others.
+        let mut abstract_levels = 0u64;
+        for &l in &learnt[1..] {
+            abstract_levels |= 1u64 << (self.level[l.var().index()] & 63);
+        }
+        let mut keep: Vec<Lit> = vec![learnt[0]];
+        for &l in &learnt[1..] {
+            if matches!(self.reason[l.var().index()], Reason::Decision)
+                || !self.redundant(l, abstract_levels, &mut to_clear)
+            {
+                keep.push(l);
+            }
+        }
+        for v in to_clear {
+            self.seen[v.index()] = 0;
+        }
+        // Put a literal of the highest remaining level second.
+        let mut bt = 0;
+        if keep.len() > 1 {
+            let mut best = 1;
+            for k in 2..keep.len() {
+                if self.level[keep[k].var().index()] > self.level[keep[best].var().index()] {
+                    best = k;
+                }
+            }
+            keep.swap(1, best);
+            bt = self.level[keep[1].var().index()];
+        }
+        (keep, bt)
+    }
+
+    /// Whether `l` (false, in the learnt clause) is implied by other literals of the clause.
+    fn redundant(&mut self, l: Lit, abstract_levels: u64, to_clear: &mut Vec<Var>) -> bool {
+        let mut stack = vec![l];
+        let top = to_clear.len();
+        let mut buf = Vec::new();
+        while let Some(q) = stack.pop() {
+            buf.clear();
+            self.reason_lits(q.var(), &mut buf);
+            for &r in &buf {
+                let v = r.var();
+                if self.seen[v.index()] != 0 || self.level[v.index()] == 0 {
+                    continue;
+                }
+                let decision = matches!(self.reason[v.index()], Reason::Decision);
+                if !decision && (abstract_levels >> (self.level[v.index()] & 63)) & 1 == 1 {
+                    self.seen[v.index()] = 1;
+                    to_clear.push(v);
+                    stack.push(r);
+                } else {
+                    for w in to_clear.drain(top..) {
+                        self.seen[w.index()] = 0;
+                    }
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    fn lbd(&mut self, lits: &[Lit]) -> u32 {
+        let mut levels: Vec<u32> = lits.iter().map(|l| self.level[l.var().index()]).collect();
+        levels.sort_unstable();
+        levels.dedup();
+        levels.len() as u32
+    }
+
+    // ---------------------------------------------------------------- heuristic
+
+    fn bump_var(&mut self, v: Var) {
+        let a = &mut self.activity[v.index()];
+        *a += self.var_inc;
+        if *a > 1e100 {
+            for x in self.activity.iter_mut() {
+                *x *= 1e-100;
+            }
+            self.var_inc *= 1e-100;
+        }
+        if self.heap_pos[v.index()] != usize::MAX {
+            self.heap_up(self.heap_pos[v.index()]);
+        }
+    }
+
+    fn bump_clause(&mut self, cref: ClauseRef) {
+        if self.clause_flags(cref) & FLAG_LEARNT == 0 {
+            return;
+        }
+        let i = cref as usize + 2;
+        let a = f32::from_bits(self.arena[i]) + self.cla_inc as f32;
+        self.arena[i] = a.to_bits();
+        if a > 1e20 {
+            for &c in &self.learnts {
+                let k = c as usize + 2;
+                self.arena[k] = (f32::from_bits(self.arena[k]) * 1e-20).to_bits();
+            }
+            self.cla_inc *= 1e-20;
+        }
+    }
+
+    fn heap_less(&self, a: Var, b: Var) -> bool {
+        self.activity[a.index()] > self.activity[b.index()]
+    }
+
+    fn heap_insert(&mut self, v: Var) {
+        if self.heap_pos[v.index()] != usize::MAX || !self.decidable[v.index()] {
+            return;
+        }
+        self.heap.push(v);
+        let i = self.heap.len() - 1;
+        self.heap_pos[v.index()] = i;
+        self.heap_up(i);
+    }
+
+    fn heap_up(&mut self, mut i: usize) {
+        let v = self.heap[i];
+        while i > 0 {
+            let parent = (i - 1) / 2;
+            if !self.heap_less(v, self.heap[parent]) {
+                break;
+            }
+            self.heap[i] = self.heap[parent];
+            self.heap_pos[self.heap[i].index()] = i;
+            i = parent;
+        }
+        self.heap[i] = v;
+        self.heap_pos[v.index()] = i;
+    }
+
+    fn heap_down(&mut self, mut i: usize) {
+        let v = self.heap[i];
+        let n = self.heap.len();
+        loop {
+            let l = 2 * i + 1;
+            if l >= n {
+                break;
+            }
+            let r = l + 1;
+            let c = if r < n && self.heap_less(self.heap[r], self.heap[l]) {
+                r
+            } else {
+                l
+            };
+            if !self.heap_less(self.heap[c], v) {
+                break;
+            }
+            self.heap[i] = self.heap[c];
+            self.heap_pos[self.heap[i].index()] = i;
+            i = c;
+        }
+        self.heap[i] = v;
+        self.heap_pos[v.index()] = i;
+    }
+
+    fn heap_pop(&mut self) -> Option<Var> {
+        if self.heap.is_empty() {
+            return None;
+        }
+        let top = self.heap[0];
+        let last = self.heap.pop().expect("non-empty heap");
+        self.heap_pos[top.index()] = usize::MAX;
+        if !self.heap.is_empty() {
+            self.heap[0] = last;
+            self.heap_pos[last.index()] = 0;
+            self.heap_down(0);
+        }
+        Some(top)
+    }
+
+    fn next_random(&mut self) -> u64 {
+        // xorshift64*.
+        self.rng ^= self.rng >> 12;
+        self.rng ^= self.rng << 25;
+        self.rng ^= self.rng >> 27;
+        self.rng.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+
+    fn pick_branch(&mut self) -> Option<Lit> {
+        if self.random_permille > 0
+            && !self.heap.is_empty()
+            && self.next_random() % 1000 < self.random_permille as u64
+        {
+            let k = (self.next_random() % self.heap.len() as u64) as usize;
+            let v = self.heap[k];
+            if self.val(v.positive()) == 0 {
+                return Some(Lit::new(v, self.phase[v.index()]));
+            }
+        }
+        while let Some(v) = self.heap_pop() {
+            if self.val(v.positive()) == 0 && self.decidable[v.index()] {
+                return Some(Lit::new(v, self.phase[v.index()]));
+            }
+        }
+        None
+    }
+
+    // ---------------------------------------------------------------- learnt clause database
+
+    fn locked(&self, cref: ClauseRef) -> bool {
+        let l = self.clause_lit(cref, 0);
+        self.val(l) == 1 && self.reason[l.var().index()] == Reason::Long(cref)
+    }
+
+    fn reduce_db(&mut self) {
+        let mut cands: Vec<(u32, f32, ClauseRef)> = self
+            .learnts
+            .iter()
+            .map(|&c| {
+                (
+                    self.clause_flags(c) >> 2,
+                    f32::from_bits(self.arena[c as usize + 2]),
+                    c,
+                )
+            })
+            .collect();
+        // Worst first: high LBD, then low activity.
+        cands.sort_by(|a, b| {
+            b.0.cmp(&a.0)
+                .then(a.1.partial_cmp(&b.1).unwrap_or(std::cmp::Ordering::Equal))
+        });
+        let target = cands.len() / 2;
+        let mut removed = 0;
+        let mut keep = Vec::with_capacity(cands.len());
+        for (lbd, _, c) in cands {
+            if removed < target && lbd > 2 && !self.locked(c) {
+                self.arena[c as usize + 1] |= FLAG_DELETED;
+                self.wasted += HEADER + self.clause_len(c);
+                removed += 1;
+            } else {
+                keep.push(c);
+            }
+        }
+        self.learnts = keep;
+        if self.wasted * 2 > self.arena.len() {
+            self.collect_garbage();
+        }
+    }
+
+    /// Copies live clauses into a fresh arena and rebuilds the watch lists.
+    fn collect_garbage(&mut self) {
+        let old = std::mem::take(&mut self.arena);
+        let mut map: hashbrown::HashMap<u32, u32> = hashbrown::HashMap::new();
+        let mut pos = 0usize;
+        while pos < old.len() {
+            let len = old[pos] as usize;
+            if old[pos + 1] & FLAG_DELETED == 0 {
+                map.insert(pos as u32, self.arena.len() as u32);
+                self.arena.extend_from_slice(&old[pos..pos + HEADER + len]);
+            }
+            pos += HEADER + len;
+        }
+        for ws in self.watches.iter_mut() {
+            ws.retain_mut(|w| {
+                if w.cref == u32::MAX {
+                    return true;
+                }
+                match map.get(&w.cref) {
+                    Some(&n) => {
+                        w.cref = n;
+                        true
+                    }
+                    None => false,
+                }
+            });
+        }
+        for r in self.reason.iter_mut() {
+            if let Reason::Long(c) = r {
+                if let Some(&n) = map.get(c) {
+                    *c = n;
+                } else {
+                    *r = Reason::Decision;
+                }
+            }
+        }
+        for c in self.learnts.iter_mut() {
+            *c = map[c];
+        }
+        self.wasted = 0;
+    }
+
+    // ---------------------------------------------------------------- search
+
+    fn luby(mut i: u32) -> u64 {
+        // The Luby sequence 1 1 2 1 1 2 4 ... at 0-based index i.
+        let mut size = 1u64;
+        let mut seq = 0u32;
+        while size < i as u64 + 1 {
+            seq += 1;
+            size = 2 * size + 1;
+        }
+        let mut x = i as u64;
+        while size - 1 != x {
+            size = (size - 1) >> 1;
+            seq -= 1;
+            x %= size;
+        }
+        let _ = &mut i;
+        1u64 << seq
+    }
+
+    fn should_restart(&mut self, lbd: Option<u32>) -> bool {
+        match &mut self.restarts {
+            Restarts::Never => false,
+            Restarts::Luby { unit, index, left } => {
+                if lbd.is_some() {
+                    *left = left.saturating_sub(1);
+                }
+                if *left == 0 {
+                    *index += 1;
+                    *left = Engine::luby(*index) * *unit as u64;
+                    return true;
+                }
+                false
+            }
+            Restarts::Glucose { fast, slow, since } => {
+                if let Some(l) = lbd {
+                    let l = l as f64;
+                    *fast += (l - *fast) / 32.0;
+                    *slow += (l - *slow) / 10000.0f64.min(self.conflicts as f64 + 1.0);
+                    *since += 1;
+                }
+                if *since >= 50 && *fast > 1.25 * *slow {
+                    *since = 0;
+                    return true;
+                }
+                false
+            }
+        }
+    }
+
+    fn limit_reached(&mut self) -> bool {
+        if let Some(flag) = &self.interrupt {
+            if flag.load(Ordering::Relaxed) {
+                self.interrupted = true;
+                return true;
+            }
+        }
+        if let Some(d) = self.deadline {
+            if Instant::now() >= d {
+                return true;
+            }
+        }
+        false
+    }
+
+    /// Searches for a total assignment extending `assumptions`. On `Sat` the assignment stays
+    /// on the trail until the next `backtrack`/`add_clause`.
+    pub fn search(&mut self, assumptions: &[Lit]) -> SearchResult {
+        self.interrupted = false;
+        if self.inconsistent {
+            return SearchResult::Unsat;
+        }
+        self.backtrack(0);
+        if self.propagate().is_some() {
+            self.inconsistent = true;
+            return SearchResult::Unsat;
+        }
+        let mut ticks: u64 = 0;
+        loop {
+            ticks += 1;
+            if ticks & 255 == 0 && self.limit_reached() {
+                self.backtrack(0);
+                return SearchResult::Unknown;
+            }
+            if self.propagate().is_some() {
+                self.conflicts += 1;
+                // The conflict may lie entirely below the current level (clauses added during
+                // search); move down to its highest level first.
+                let max_level = self
+                    .conflict
+                    .iter()
+                    .map(|l| self.level[l.var().index()])
+                    .max()
+                    .unwrap_or(0);
+                if max_level == 0 {
+                    self.inconsistent = true;
+                    self.backtrack(0);
+                    return SearchResult::Unsat;
+                }
+                if max_level < self.decision_level() {
+                    self.backtrack(max_level);
+                }
+                let (learnt, bt) = self.analyze();
+                let lbd = self.lbd(&learnt);
+                self.backtrack(bt);
+                if learnt.len() == 1 {
+                    self.assign(learnt[0], Reason::Decision);
+                } else {
+                    let r = self.attach(&learnt, true, lbd);
+                    let r = match r {
+                        Reason::Binary(_) => Reason::Binary(learnt[1]),
+                        other => other,
+                    };
+                    self.assign(learnt[0], r);
+                }
+                self.var_inc /= self.var_decay;
+                self.cla_inc /= 0.999;
+                if self.should_restart(Some(lbd)) {
+                    self.num_restarts += 1;
+                    self.backtrack(0);
+                }
+                continue;
+            }
+            if self.learnts.len() as f64 >= self.max_learnts + self.trail.len() as f64 {
+                self.reduce_db();
+                self.max_learnts *= 1.1;
+            }
+            let level = self.decision_level() as usize;
+            let next = if level < assumptions.len() {
+                let a = assumptions[level];
+                match self.val(a) {
+                    1 => {
+                        // Already true: open an empty level to keep levels aligned.
+                        self.trail_lim.push(self.trail.len());
+                        continue;
+                    }
+                    -1 => {
+                        self.backtrack(0);
+                        return SearchResult::Unsat;
+                    }
+                    _ => a,
+                }
+            } else {
+                match self.pick_branch() {
+                    Some(l) => l,
+                    None => return SearchResult::Sat,
+                }
+            };
+            self.decisions += 1;
+            self.trail_lim.push(self.trail.len());
+            self.assign(next, Reason::Decision);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lits(e: &mut Engine, n: usize) -> Vec<Var> {
+        (0..n).map(|_| e.new_var()).collect()
+    }
+
+    #[test]
+    fn luby_sequence() {
+        let got: Vec<u64> = (0..7).map(Engine::luby).collect();
+        assert_eq!(got, vec![1, 1, 2, 1, 1, 2, 4]);
+    }
+
+    #[test]
+    fn pigeonhole_three_in_two_is_unsat() {
+        // p(i, j): pigeon i in hole j; each pigeon somewhere, no two share a hole.
+        let mut e = Engine::new();
+        let v = lits(&mut e, 6);
+        let p = |i: usize, j: usize| v[i * 2 + j];
+        for i in 0..3 {
+            e.add_clause(&[p(i, 0).positive(), p(i, 1).positive()]);
+        }
+        for j in 0..2 {
+            for a in 0..3 {
+                for b in a + 1..3 {
+                    e.add_clause(&[p(a, j).negative(), p(b, j).negative()]);
+                }
+            }
+        }
+        assert_eq!(e.search(&[]), SearchResult::Unsat);
+    }
+
+    #[test]
+    fn weight_constraint_propagates() {
+        // h <-> 2a + 1b + 1c >= 3, h true, a false: then b and c must be true... 1+1 < 3, so
+        // the constraint is unsatisfiable with a false and h true.
+        let mut e = Engine::new();
+        let v = lits(&mut e, 4);
+        let (h, a, b, c) = (v[0], v[1], v[2], v[3]);
+        e.add_weight(
+            h.positive(),
+            &[(a.positive(), 2), (b.positive(), 1), (c.positive(), 1)],
+            3,
+        );
+        e.add_clause(&[h.positive()]);
+        assert_eq!(e.search(&[a.negative()]), SearchResult::Unsat);
+        assert_eq!(e.search(&[a.positive(), c.negative()]), SearchResult::Sat);
+        assert_eq!(e.value(b.positive()), Some(true));
+    }
+}

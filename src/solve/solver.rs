@@ -1,0 +1,1124 @@
+//! The solver's public face: enumeration, projection, brave and cautious consequences,
+//! lexicographic branch-and-bound optimization, CR-Prolog semantics, assumptions, limits and
+//! incremental rule addition, all driving one `Engine` so learnt clauses survive between calls.
+//!
+//! Invariants:
+//! - Constraints that hold for one call only (blocking clauses, cost bounds, CR bounds) carry a
+//!   guard literal that is assumed during the call and fixed false afterwards, so later calls
+//!   are unaffected while learnt clauses stay valid (they mention the guard when they used it).
+//! - Enumeration blocks each model by the negation of its decisions (sound because every
+//!   propagation is a consequence of the program), or by its projection with `--project` and
+//!   for CR programs (where answer sets are compared on their non-CR atoms).
+//! - For non-head-cycle-free programs every candidate is checked to be a minimal model of its
+//!   reduct (Gelfond-Lifschitz) with a fresh engine before it is reported; failed candidates are
+//!   blocked permanently.
+//! - Branch and bound follows clasp's "opt" strategy: after a model with costs `c`, require
+//!   `costs <lex c` (as `exists i: sum_j <= c_j for j < i and sum_i <= c_i - 1`); the last model
+//!   is optimal when the bound becomes unsatisfiable.
+
+use super::config::{Config, CrMode, EnumMode, OptMode, RestartPolicy};
+use super::engine::{Engine, Restarts, SearchResult};
+use super::lit::Lit;
+use super::result::{Model, Outcome, SolveResult, Stats, StopReason};
+use super::translate::{max_atom, Translation};
+use crate::ground::program::{Body, GroundProgram, HeadKind, Rule};
+use hashbrown::HashSet;
+use std::time::Instant;
+
+/// Errors of the incremental interface.
+#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+pub enum SolveError {
+    /// `add_rules` gave a rule to an atom that was already defined, without `Config::incremental`.
+    #[error("atom {0} already has a completion; create the solver with `incremental: true` to add rules for it")]
+    AtomAlreadyDefined(u32),
+}
+
+/// Result of looking for the next answer set.
+enum Next {
+    /// A total assignment that is an answer set is on the engine's trail.
+    Model,
+    /// No (further) answer set under the assumptions.
+    Exhausted,
+    /// A limit was hit.
+    Stopped,
+}
+
+/// A stable-model solver for one ground program.
+pub struct Solver {
+    /// The program, including rules added since construction.
+    prog: GroundProgram,
+    /// Configuration.
+    config: Config,
+    /// The CDCL engine.
+    engine: Engine,
+    /// Program-to-engine mapping.
+    tr: Translation,
+    /// Literals of the CR application atoms, parallel to `prog.cr_rules`.
+    cr_lits: Vec<Lit>,
+    /// Per atom: whether it is a CR application atom.
+    is_cr: Vec<bool>,
+    /// Guard of the incremental step: completion clauses of the current step contain its
+    /// negation; `None` without `Config::incremental`.
+    step_guard: Option<Lit>,
+    /// Minimality checks done for non-HCF programs.
+    minimality_checks: u64,
+    /// Costs of the best model of the last branch-and-bound run.
+    best: Option<Vec<i64>>,
+}
+
+/// Mutable state of one call.
+struct Call<'a> {
+    /// Models reported so far.
+    count: usize,
+    /// Models reported in the current phase (optN restarts numbering for the optimal models,
+    /// as clasp does); numbers models and is compared against `Config::models`.
+    phase_count: usize,
+    /// The caller's callback; returns false to stop.
+    sink: &'a mut dyn FnMut(&Model) -> bool,
+    /// Set while the model limit does not apply (optN's branch-and-bound phase).
+    unlimited: bool,
+    /// Set when the callback asked to stop or the model limit was reached.
+    done: bool,
+    /// Set when a limit stopped the engine.
+    stopped: bool,
+    /// Projections already reported (CR programs and `--project`), as sorted true atoms.
+    seen: HashSet<Vec<u32>>,
+    /// Set when the last model's costs were proven optimal.
+    optimum: bool,
+    /// Whether some model had costs.
+    has_costs: bool,
+    /// Set when everything was explored.
+    exhausted: bool,
+}
+
+impl Solver {
+    /// Translates `prog` and prepares a solver.
+    pub fn new(prog: &GroundProgram, config: Config) -> Solver {
+        let mut engine = Engine::new();
+        engine.configure(config.var_decay, config.seed);
+        engine.random_permille = config.random_freq_permille.min(1000);
+        engine.default_phase = !config.default_phase_false;
+        engine.restarts = match config.restarts {
+            RestartPolicy::Luby(u) => Restarts::Luby {
+                unit: u.max(1),
+                index: 0,
+                left: u.max(1) as u64,
+            },
+            RestartPolicy::Glucose => Restarts::Glucose {
+                fast: 0.0,
+                slow: 0.0,
+                since: 0,
+            },
+            RestartPolicy::Never => Restarts::Never,
+        };
+        let mut prog = prog.clone();
+        prog.num_atoms = max_atom(&prog);
+        let mut tr;
+        let mut step_guard = None;
+        if config.incremental {
+            tr = Translation::default();
+            tr = Self::build_guarded(&prog, &mut engine, &mut tr, &mut step_guard);
+        } else {
+            tr = Translation::build(&prog, &mut engine);
+        }
+        let cr_lits = prog
+            .cr_rules
+            .iter()
+            .map(|c| tr.atom_lit[c.appl as usize])
+            .collect();
+        let mut is_cr = vec![false; prog.num_atoms as usize + 1];
+        for c in &prog.cr_rules {
+            is_cr[c.appl as usize] = true;
+        }
+        Solver {
+            prog,
+            config,
+            engine,
+            tr,
+            cr_lits,
+            is_cr,
+            step_guard,
+            minimality_checks: 0,
+            best: None,
+        }
+    }
+
+    /// Incremental build: like `Translation::build`, but completion clauses are guarded.
+    fn build_guarded(
+        prog: &GroundProgram,
+        engine: &mut Engine,
+        _old: &mut Translation,
+        guard: &mut Option<Lit>,
+    ) -> Translation {
+        // Build without completion by translating a program whose atoms are all free, then add
+        // guarded completion clauses.
+        let mut open = prog.clone();
+        let mut extra = Vec::new();
+        for a in 1..=prog.num_atoms {
+            if !prog.externals.iter().any(|&(x, _)| x == a) {
+                open.externals
+                    .push((a, crate::ground::program::ExternalValue::Free));
+                extra.push(a);
+            }
+        }
+        let mut tr = Translation::build(&open, engine);
+        let g = engine.new_var().positive();
+        engine.set_decidable(g.var(), false);
+        for &a in &extra {
+            tr.free[a as usize] = false;
+        }
+        let mut out = tr;
+        for a in 1..=prog.num_atoms as usize {
+            if !out.free[a] {
+                let mut c = vec![!out.atom_lit[a], !g];
+                c.extend(out.supports[a].iter().map(|&(s, _)| s));
+                engine.add_clause(&c);
+            }
+        }
+        out.install_unfounded(prog, engine);
+        *guard = Some(g);
+        out
+    }
+
+    /// The ground program as extended so far.
+    pub fn program(&self) -> &GroundProgram {
+        &self.prog
+    }
+
+    /// The solver's configuration (mutable between calls, e.g. to change the model count).
+    pub fn config_mut(&mut self) -> &mut Config {
+        &mut self.config
+    }
+
+    /// Adds rules between calls, keeping learnt clauses. Heads may be new atoms (numbered above
+    /// the current `num_atoms`) or, with `Config::incremental`, existing atoms. Output
+    /// statements for new atoms can be added with `add_outputs`.
+    pub fn add_rules(&mut self, rules: &[Rule]) -> Result<(), SolveError> {
+        let old_n = self.prog.num_atoms;
+        let mut grown = self.prog.clone();
+        grown.rules.extend_from_slice(rules);
+        let new_n = max_atom(&grown);
+        if self.step_guard.is_none() {
+            for r in rules {
+                if let Some(&h) = r
+                    .head
+                    .iter()
+                    .find(|&&h| h <= old_n && !self.tr.free[h as usize])
+                {
+                    return Err(SolveError::AtomAlreadyDefined(h));
+                }
+            }
+        }
+        self.engine.backtrack(0);
+        for _ in old_n..new_n {
+            let v = self.engine.new_var();
+            self.tr.atom_lit.push(v.positive());
+            self.tr.supports.push(Vec::new());
+            self.tr.free.push(false);
+            self.is_cr.push(false);
+        }
+        let first = self.prog.rules.len();
+        self.prog = grown;
+        self.prog.num_atoms = new_n;
+        for (k, r) in rules.iter().enumerate() {
+            let r = r.clone();
+            self.tr.add_rule(&mut self.engine, first + k, &r);
+        }
+        match self.step_guard {
+            None => {
+                for a in old_n as usize + 1..=new_n as usize {
+                    self.tr.complete(&mut self.engine, a);
+                }
+            }
+            Some(old) => {
+                // Retire the old step's completion and re-add every completion clause under a
+                // fresh guard.
+                self.engine.add_clause(&[!old]);
+                let g = self.engine.new_var().positive();
+                self.engine.set_decidable(g.var(), false);
+                for a in 1..=new_n as usize {
+                    if !self.tr.free[a] {
+                        let mut c = vec![!self.tr.atom_lit[a], !g];
+                        c.extend(self.tr.supports[a].iter().map(|&(s, _)| s));
+                        self.engine.add_clause(&c);
+                    }
+                }
+                self.step_guard = Some(g);
+            }
+        }
+        let prog = self.prog.clone();
+        self.tr.install_unfounded(&prog, &mut self.engine);
+        Ok(())
+    }
+
+    /// Adds output statements (e.g. for atoms introduced by `add_rules`).
+    pub fn add_outputs(&mut self, outputs: &[crate::ground::program::Output]) {
+        self.engine.backtrack(0);
+        for o in outputs {
+            let lits: Vec<Lit> = o.condition.iter().map(|&l| self.lit_of(l)).collect();
+            let c = self.tr.conjunction(&mut self.engine, &lits);
+            self.tr.output_lits.push(c);
+            self.prog.outputs.push(o.clone());
+        }
+    }
+
+    fn lit_of(&self, l: i32) -> Lit {
+        assert!(
+            l != 0 && l.unsigned_abs() <= self.prog.num_atoms,
+            "literal {l} does not name an atom of the program"
+        );
+        self.tr.lit(l)
+    }
+
+    /// Solves with the configured options and collects the models.
+    pub fn solve(&mut self) -> SolveResult {
+        self.solve_with(&[])
+    }
+
+    /// Solves under extra assumptions (aspif literals: `a` true or `-a` false).
+    pub fn solve_with(&mut self, assumptions: &[i32]) -> SolveResult {
+        let mut models = Vec::new();
+        let mut r = self.for_each_model(assumptions, &mut |m: &Model| {
+            models.push(m.clone());
+            true
+        });
+        r.models = models;
+        r
+    }
+
+    /// Solves under extra assumptions, calling `sink` on every model as it is found (return
+    /// false to stop). The returned result has an empty model list.
+    pub fn for_each_model(
+        &mut self,
+        assumptions: &[i32],
+        sink: &mut dyn FnMut(&Model) -> bool,
+    ) -> SolveResult {
+        let start = Instant::now();
+        let (d0, c0, r0) = (
+            self.engine.decisions,
+            self.engine.conflicts,
+            self.engine.num_restarts,
+        );
+        self.engine.deadline = self.config.deadline;
+        self.engine.interrupt = self.config.interrupt.clone();
+        let mut assume: Vec<Lit> = self.tr.assumptions.clone();
+        if let Some(g) = self.step_guard {
+            assume.push(g);
+        }
+        assume.extend(assumptions.iter().map(|&l| self.lit_of(l)));
+        let call_guard = self.new_guard();
+        assume.push(call_guard);
+        let mut call = Call {
+            count: 0,
+            phase_count: 0,
+            unlimited: false,
+            sink,
+            done: false,
+            stopped: false,
+            seen: HashSet::new(),
+            optimum: false,
+            has_costs: false,
+            exhausted: false,
+        };
+        if self.cr_lits.is_empty() {
+            self.run_main(&mut call, &assume, call_guard);
+        } else {
+            match self.config.cr_mode {
+                CrMode::Cardinality => self.run_cr_cardinality(&mut call, &assume, call_guard),
+                CrMode::Subset => self.run_cr_subset(&mut call, &assume, call_guard),
+            }
+        }
+        self.retire(call_guard);
+        let outcome = if call.count > 0 {
+            if call.optimum && call.has_costs {
+                Outcome::Optimum
+            } else {
+                Outcome::Satisfiable
+            }
+        } else if call.exhausted {
+            Outcome::Unsatisfiable
+        } else {
+            Outcome::Unknown
+        };
+        let stop = if call.stopped {
+            Some(if self.engine.interrupted {
+                StopReason::Interrupted
+            } else {
+                StopReason::TimeLimit
+            })
+        } else {
+            None
+        };
+        SolveResult {
+            models: Vec::new(),
+            outcome,
+            exhausted: call.exhausted && !call.stopped,
+            optimum_proven: call.optimum,
+            stop,
+            stats: Stats {
+                choices: self.engine.decisions - d0,
+                conflicts: self.engine.conflicts - c0,
+                restarts: self.engine.num_restarts - r0,
+                propagations: self.engine.propagations,
+                loop_nogoods: self.engine.loop_nogoods,
+                learnt: self.engine.num_learnts() as u64,
+                vars: self.engine.num_vars() as u64,
+                clauses: self.engine.num_clauses,
+                time: start.elapsed(),
+            },
+        }
+    }
+
+    /// Number of minimality checks done for non-head-cycle-free programs.
+    pub fn minimality_checks(&self) -> u64 {
+        self.minimality_checks
+    }
+
+    fn new_guard(&mut self) -> Lit {
+        self.engine.backtrack(0);
+        let g = self.engine.new_var();
+        self.engine.set_decidable(g, false);
+        g.positive()
+    }
+
+    fn retire(&mut self, guard: Lit) {
+        self.engine.add_clause(&[!guard]);
+    }
+
+    // ------------------------------------------------------------------ search primitives
+
+    /// Finds the next answer set under `assume`.
+    fn next(&mut self, assume: &[Lit]) -> Next {
+        loop {
+            match self.engine.search(assume) {
+                SearchResult::Unsat => return Next::Exhausted,
+                SearchResult::Unknown => return Next::Stopped,
+                SearchResult::Sat => {
+                    if !self.tr.non_hcf || self.is_minimal() {
+                        return Next::Model;
+                    }
+                    // Not a minimal model of its reduct: exclude this atom assignment forever.
+                    let block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
+                        .map(|a| {
+                            let l = self.tr.atom_lit[a];
+                            if self.engine.value(l) == Some(true) {
+                                !l
+                            } else {
+                                l
+                            }
+                        })
+                        .collect();
+                    self.engine.add_clause(&block);
+                }
+            }
+        }
+    }
+
+    fn true_atoms(&self) -> Vec<u32> {
+        (1..=self.prog.num_atoms)
+            .filter(|&a| self.engine.value(self.tr.atom_lit[a as usize]) == Some(true))
+            .collect()
+    }
+
+    /// Whether the current total assignment's atoms form a minimal model of the reduct.
+    fn is_minimal(&mut self) -> bool {
+        self.minimality_checks += 1;
+        let model = self.true_atoms();
+        let mut in_m = vec![false; self.prog.num_atoms as usize + 1];
+        for &a in &model {
+            in_m[a as usize] = true;
+        }
+        let mut sub = Engine::new();
+        let vars: Vec<Option<Lit>> = (0..=self.prog.num_atoms as usize)
+            .map(|a| {
+                if in_m[a] {
+                    Some(sub.new_var().positive())
+                } else {
+                    None
+                }
+            })
+            .collect();
+        let holds = |l: i32| {
+            if l > 0 {
+                in_m[l as usize]
+            } else {
+                !in_m[(-l) as usize]
+            }
+        };
+        for r in &self.prog.rules {
+            let heads: Vec<Lit> = r.head.iter().filter_map(|&h| vars[h as usize]).collect();
+            if r.head.is_empty() {
+                continue;
+            }
+            // The reduct's body over the smaller model Y: positive literals vary, negative
+            // ones are fixed by M.
+            let mut clause_body: Vec<Lit> = Vec::new();
+            match &r.body {
+                Body::Normal(ls) => {
+                    if ls.iter().any(|&l| l < 0 && !holds(l)) {
+                        continue;
+                    }
+                    if ls.iter().any(|&l| l > 0 && !in_m[l as usize]) {
+                        continue;
+                    }
+                    for &l in ls.iter().filter(|&&l| l > 0) {
+                        clause_body.push(!vars[l as usize].expect("positive body atom is in M"));
+                    }
+                }
+                Body::Weight { lower, lits } => {
+                    let mut fixed = 0i64;
+                    let mut var_lits = Vec::new();
+                    for &(l, w) in lits {
+                        if l < 0 {
+                            if holds(l) {
+                                fixed += w;
+                            }
+                        } else if let Some(v) = vars[l as usize] {
+                            var_lits.push((v, w));
+                        }
+                    }
+                    let b = sub.new_var().positive();
+                    sub.add_weight(b, &var_lits, lower - fixed);
+                    clause_body.push(!b);
+                }
+            }
+            match r.head_kind {
+                HeadKind::Disjunction => {
+                    let mut c = clause_body.clone();
+                    c.extend_from_slice(&heads);
+                    sub.add_clause(&c);
+                }
+                HeadKind::Choice => {
+                    for &h in &heads {
+                        let mut c = clause_body.clone();
+                        c.push(h);
+                        sub.add_clause(&c);
+                    }
+                }
+            }
+        }
+        let strict: Vec<Lit> = vars.iter().flatten().map(|&l| !l).collect();
+        // Free externals keep their value in the reduct check.
+        for &(a, _) in &self.prog.externals {
+            if self.tr.free[a as usize] {
+                if let Some(v) = vars[a as usize] {
+                    sub.add_clause(&[v]);
+                }
+            }
+        }
+        if !sub.add_clause(&strict) {
+            return true;
+        }
+        sub.search(&[]) != SearchResult::Sat
+    }
+
+    fn costs(&self) -> Vec<i64> {
+        self.tr
+            .minimize
+            .iter()
+            .map(|(_, lits)| {
+                lits.iter()
+                    .filter(|&&(l, _)| self.engine.value(l) == Some(true))
+                    .map(|&(_, w)| w)
+                    .sum()
+            })
+            .collect()
+    }
+
+    /// Builds the model on the trail.
+    fn model(&self, number: usize, optimal: bool) -> Model {
+        let atoms = self.true_atoms();
+        let mut symbols = Vec::new();
+        let mut shown: HashSet<&str> = HashSet::new();
+        for (o, &l) in self.prog.outputs.iter().zip(&self.tr.output_lits) {
+            if self.engine.value(l) == Some(true) && shown.insert(o.symbol.as_str()) {
+                symbols.push(o.symbol.clone());
+            }
+        }
+        let mut cr_applied: Vec<String> = self
+            .prog
+            .cr_rules
+            .iter()
+            .zip(&self.cr_lits)
+            .filter(|(_, &l)| self.engine.value(l) == Some(true))
+            .map(|(c, _)| c.label.clone())
+            .collect();
+        cr_applied.sort();
+        let support = supports(&self.prog, &atoms);
+        Model {
+            number,
+            symbols,
+            atoms,
+            costs: self.costs(),
+            cr_applied,
+            support,
+            optimal,
+        }
+    }
+
+    /// Reports the model on the trail unless its projection was seen; returns false when the
+    /// call must stop.
+    fn report(&mut self, call: &mut Call<'_>, optimal: bool, dedup: bool) -> bool {
+        let mut m = self.model(call.phase_count + 1, optimal);
+        if dedup {
+            let key: Vec<u32> = m
+                .atoms
+                .iter()
+                .copied()
+                .filter(|&a| !self.is_cr[a as usize])
+                .collect();
+            if !call.seen.insert(key) {
+                return true;
+            }
+        }
+        call.count += 1;
+        call.phase_count += 1;
+        m.number = call.phase_count;
+        if !m.costs.is_empty() {
+            call.has_costs = true;
+        }
+        if !(call.sink)(&m) {
+            call.done = true;
+            return false;
+        }
+        if !call.unlimited && self.config.models > 0 && call.phase_count >= self.config.models {
+            call.done = true;
+            return false;
+        }
+        true
+    }
+
+    /// The literals to block on for projected enumeration, if any.
+    fn projection(&self) -> Option<Vec<Lit>> {
+        if self.config.project {
+            if !self.prog.projections.is_empty() {
+                return Some(
+                    self.prog
+                        .projections
+                        .iter()
+                        .map(|&a| self.tr.atom_lit[a as usize])
+                        .collect(),
+                );
+            }
+            return Some(self.tr.output_lits.clone());
+        }
+        if !self.cr_lits.is_empty() {
+            return Some(
+                (1..=self.prog.num_atoms as usize)
+                    .filter(|&a| !self.is_cr[a])
+                    .map(|a| self.tr.atom_lit[a])
+                    .collect(),
+            );
+        }
+        None
+    }
+
+    /// Adds the clause excluding the current model (under `guard`).
+    fn block(&mut self, guard: Lit, projection: &Option<Vec<Lit>>) {
+        let mut c = vec![!guard];
+        match projection {
+            Some(lits) => {
+                for &l in lits {
+                    match self.engine.value(l) {
+                        Some(true) => c.push(!l),
+                        Some(false) => c.push(l),
+                        None => {}
+                    }
+                }
+            }
+            None => {
+                for d in self.engine.decisions_on_trail() {
+                    if d != guard {
+                        c.push(!d);
+                    }
+                }
+            }
+        }
+        self.engine.add_clause(&c);
+    }
+
+    /// Adds `guard -> costs <lex bound` (or `<=lex` when `inclusive`), comparing the first
+    /// `bound.len()` levels.
+    fn add_cost_bound(&mut self, guard: Lit, bound: &[i64], inclusive: bool) {
+        let k = bound.len().min(self.tr.minimize.len());
+        if k == 0 {
+            return;
+        }
+        self.engine.backtrack(0);
+        let mut bound = bound[..k].to_vec();
+        if inclusive {
+            bound[k - 1] += 1;
+        }
+        let levels: Vec<Vec<(Lit, i64)>> = self.tr.minimize[..k]
+            .iter()
+            .map(|(_, l)| l.clone())
+            .collect();
+        let mut at_most = Vec::new();
+        let mut below = Vec::new();
+        for (i, lits) in levels.iter().enumerate() {
+            let neg: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (l, -w)).collect();
+            // sum <= c  <=>  -sum >= -c.
+            let a = self.engine.new_var().positive();
+            self.engine.add_weight(a, &neg, -bound[i]);
+            let b = self.engine.new_var().positive();
+            self.engine.add_weight(b, &neg, -(bound[i] - 1));
+            at_most.push(a);
+            below.push(b);
+        }
+        let mut big = vec![!guard];
+        for i in 0..k {
+            // g_i <-> a_0 and ... and a_{i-1} and b_i; a full equivalence keeps every auxiliary
+            // variable a function of the atoms, which decision-based blocking relies on.
+            let mut conj = at_most[..i].to_vec();
+            conj.push(below[i]);
+            let g = self.tr.conjunction(&mut self.engine, &conj);
+            big.push(g);
+        }
+        self.engine.add_clause(&big);
+    }
+
+    // ------------------------------------------------------------------ strategies
+
+    fn run_main(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
+        let dedup = !self.cr_lits.is_empty();
+        match self.config.enum_mode {
+            EnumMode::Brave | EnumMode::Cautious => self.run_consequences(call, assume, guard),
+            EnumMode::Auto => {
+                let optimize =
+                    !self.tr.minimize.is_empty() && self.config.opt_mode != OptMode::Ignore;
+                match self.config.opt_mode.clone() {
+                    OptMode::Opt if optimize => {
+                        self.run_optimize(call, assume, dedup, true);
+                    }
+                    OptMode::OptN if optimize => {
+                        call.unlimited = true;
+                        let proven = self.run_optimize(call, assume, dedup, true);
+                        call.unlimited = false;
+                        if proven && !call.done {
+                            if let Some(best) = self.best.clone() {
+                                let g = self.new_guard();
+                                self.add_cost_bound(g, &best, true);
+                                let mut a2 = assume.to_vec();
+                                a2.push(g);
+                                call.optimum = false;
+                                call.phase_count = 0;
+                                call.seen.clear();
+                                let ok = self.run_enumerate(call, &a2, g, dedup, true);
+                                call.optimum = ok;
+                                self.retire(g);
+                            }
+                        }
+                    }
+                    OptMode::Enum(bound) if optimize && !bound.is_empty() => {
+                        let g = self.new_guard();
+                        self.add_cost_bound(g, &bound, true);
+                        let mut a2 = assume.to_vec();
+                        a2.push(g);
+                        self.run_enumerate(call, &a2, g, dedup, false);
+                        self.retire(g);
+                    }
+                    _ => {
+                        self.run_enumerate(call, assume, guard, dedup, false);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Enumerates answer sets; returns true when the space was exhausted.
+    fn run_enumerate(
+        &mut self,
+        call: &mut Call<'_>,
+        assume: &[Lit],
+        guard: Lit,
+        dedup: bool,
+        optimal: bool,
+    ) -> bool {
+        let projection = self.projection();
+        loop {
+            match self.next(assume) {
+                Next::Exhausted => {
+                    call.exhausted = true;
+                    return true;
+                }
+                Next::Stopped => {
+                    call.stopped = true;
+                    return false;
+                }
+                Next::Model => {
+                    let go = self.report(call, optimal, dedup);
+                    self.block(guard, &projection);
+                    if !go {
+                        return false;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Branch and bound; returns true when the optimum was proven. Reports improving models
+    /// when `report` is set, otherwise remembers the best one in `call.seen`-independent state.
+    fn run_optimize(
+        &mut self,
+        call: &mut Call<'_>,
+        assume: &[Lit],
+        dedup: bool,
+        report: bool,
+    ) -> bool {
+        let mut bound_guard: Option<Lit> = None;
+        let mut found = false;
+        loop {
+            let mut a = assume.to_vec();
+            if let Some(g) = bound_guard {
+                a.push(g);
+            }
+            match self.next(&a) {
+                Next::Exhausted => {
+                    if let Some(g) = bound_guard {
+                        self.retire(g);
+                    }
+                    if found {
+                        call.optimum = true;
+                        call.exhausted = true;
+                    } else {
+                        call.exhausted = true;
+                    }
+                    return found;
+                }
+                Next::Stopped => {
+                    call.stopped = true;
+                    if let Some(g) = bound_guard {
+                        self.retire(g);
+                    }
+                    return false;
+                }
+                Next::Model => {
+                    found = true;
+                    let costs = self.costs();
+                    self.best = Some(costs.clone());
+                    if report && !self.report(call, false, dedup) {
+                        if let Some(g) = bound_guard {
+                            self.retire(g);
+                        }
+                        return false;
+                    }
+                    let g = self.new_guard();
+                    self.add_cost_bound(g, &costs, false);
+                    if let Some(old) = bound_guard {
+                        self.retire(old);
+                    }
+                    bound_guard = Some(g);
+                }
+            }
+        }
+    }
+
+    fn run_consequences(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
+        let brave = self.config.enum_mode == EnumMode::Brave;
+        let n = self.tr.output_lits.len();
+        let mut current: Option<Vec<bool>> = None;
+        loop {
+            match self.next(assume) {
+                Next::Exhausted => {
+                    call.exhausted = true;
+                    break;
+                }
+                Next::Stopped => {
+                    call.stopped = true;
+                    break;
+                }
+                Next::Model => {
+                    let truth: Vec<bool> = self
+                        .tr
+                        .output_lits
+                        .iter()
+                        .map(|&l| self.engine.value(l) == Some(true))
+                        .collect();
+                    let cur = match current.take() {
+                        None => truth,
+                        Some(c) => (0..n)
+                            .map(|i| {
+                                if brave {
+                                    c[i] || truth[i]
+                                } else {
+                                    c[i] && truth[i]
+                                }
+                            })
+                            .collect(),
+                    };
+                    let mut m = self.model(call.count + 1, false);
+                    m.symbols.clear();
+                    let mut shown: HashSet<&str> = HashSet::new();
+                    for (i, o) in self.prog.outputs.iter().enumerate() {
+                        if cur[i] && shown.insert(o.symbol.as_str()) {
+                            m.symbols.push(o.symbol.clone());
+                        }
+                    }
+                    call.count += 1;
+                    if !(call.sink)(&m) {
+                        call.done = true;
+                        break;
+                    }
+                    let mut c = vec![!guard];
+                    for (&l, &now) in self.tr.output_lits.iter().zip(&cur) {
+                        if brave && !now {
+                            c.push(l);
+                        } else if !brave && now {
+                            c.push(!l);
+                        }
+                    }
+                    current = Some(cur);
+                    self.engine.add_clause(&c);
+                }
+            }
+        }
+    }
+
+    /// Default CR semantics: find the minimal number of applied CR rules, then solve among the
+    /// answer sets applying exactly that many.
+    fn run_cr_cardinality(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
+        let cr: Vec<(Lit, i64)> = self.cr_lits.iter().map(|&l| (l, 1)).collect();
+        let mut best: Option<i64> = None;
+        let mut bound_guard: Option<Lit> = None;
+        loop {
+            let mut a = assume.to_vec();
+            if let Some(g) = bound_guard {
+                a.push(g);
+            }
+            match self.next(&a) {
+                Next::Exhausted => break,
+                Next::Stopped => {
+                    call.stopped = true;
+                    if let Some(g) = bound_guard {
+                        self.retire(g);
+                    }
+                    return;
+                }
+                Next::Model => {
+                    let k = cr
+                        .iter()
+                        .filter(|&&(l, _)| self.engine.value(l) == Some(true))
+                        .count() as i64;
+                    best = Some(k);
+                    if let Some(g) = bound_guard {
+                        self.retire(g);
+                    }
+                    if k == 0 {
+                        bound_guard = None;
+                        break;
+                    }
+                    let g = self.new_guard();
+                    let neg: Vec<(Lit, i64)> = cr.iter().map(|&(l, _)| (l, -1)).collect();
+                    // guard -> count <= k - 1.
+                    let b = self.engine.new_var().positive();
+                    self.engine.add_weight(b, &neg, -(k - 1));
+                    self.engine.add_clause(&[!g, b]);
+                    bound_guard = Some(g);
+                }
+            }
+        }
+        if let Some(g) = bound_guard {
+            self.retire(g);
+        }
+        let Some(k) = best else {
+            call.exhausted = true;
+            return;
+        };
+        // guard -> count <= k, for the rest of this call.
+        self.engine.backtrack(0);
+        let neg: Vec<(Lit, i64)> = cr.iter().map(|&(l, _)| (l, -1)).collect();
+        let b = self.engine.new_var().positive();
+        self.engine.add_weight(b, &neg, -k);
+        self.engine.add_clause(&[!guard, b]);
+        self.run_main(call, assume, guard);
+    }
+
+    /// `--cr=subset`: first every set-inclusion-minimal set of applied CR rules, then the
+    /// preference filter of CR-Prolog (drop sets containing two rules ordered by the transitive
+    /// closure of `prefer`, then sets dominated by a remaining one: `Y` dominates `X` when a rule
+    /// of `Y` is preferred to a rule of `X`), then the answer sets applying exactly one of the
+    /// kept sets.
+    fn run_cr_subset(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
+        let k = self.cr_lits.len();
+        let mut minimal: Vec<Vec<bool>> = Vec::new();
+        let phase = self.new_guard();
+        let mut a0 = assume.to_vec();
+        a0.push(phase);
+        loop {
+            match self.next(&a0) {
+                Next::Exhausted => break,
+                Next::Stopped => {
+                    call.stopped = true;
+                    self.retire(phase);
+                    return;
+                }
+                Next::Model => {}
+            }
+            let mut applied: Vec<bool> = self
+                .cr_lits
+                .iter()
+                .map(|&l| self.engine.value(l) == Some(true))
+                .collect();
+            // Shrink the applied set until no answer set applies a strict subset.
+            loop {
+                let g = self.new_guard();
+                let mut c = vec![!g];
+                let mut a = a0.clone();
+                a.push(g);
+                for (i, &l) in self.cr_lits.iter().enumerate() {
+                    if applied[i] {
+                        c.push(!l);
+                    } else {
+                        a.push(!l);
+                    }
+                }
+                self.engine.add_clause(&c);
+                let r = self.next(&a);
+                if let Next::Model = r {
+                    applied = self
+                        .cr_lits
+                        .iter()
+                        .map(|&l| self.engine.value(l) == Some(true))
+                        .collect();
+                }
+                self.retire(g);
+                match r {
+                    Next::Model => {}
+                    Next::Exhausted => break,
+                    Next::Stopped => {
+                        call.stopped = true;
+                        self.retire(phase);
+                        return;
+                    }
+                }
+            }
+            // No later set may contain this minimal one.
+            let mut c = vec![!phase];
+            c.extend(
+                self.cr_lits
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| applied[*i])
+                    .map(|(_, &l)| !l),
+            );
+            self.engine.add_clause(&c);
+            minimal.push(applied);
+        }
+        self.retire(phase);
+        let pref = self.preference_closure();
+        let candidates: Vec<&Vec<bool>> = minimal
+            .iter()
+            .filter(|x| !(0..k).any(|i| x[i] && (0..k).any(|j| x[j] && pref[i * k + j])))
+            .collect();
+        let kept: Vec<&Vec<bool>> = candidates
+            .iter()
+            .copied()
+            .filter(|x| {
+                !candidates
+                    .iter()
+                    .any(|y| (0..k).any(|b| y[b] && (0..k).any(|w| x[w] && pref[b * k + w])))
+            })
+            .collect();
+        if kept.is_empty() {
+            call.exhausted = true;
+            return;
+        }
+        // guard -> the applied set is one of the kept sets.
+        let mut big = vec![!guard];
+        for x in kept {
+            let conj: Vec<Lit> = self
+                .cr_lits
+                .iter()
+                .enumerate()
+                .map(|(i, &l)| if x[i] { l } else { !l })
+                .collect();
+            let c = self.tr.conjunction(&mut self.engine, &conj);
+            big.push(c);
+        }
+        self.engine.add_clause(&big);
+        self.run_main(call, assume, guard);
+    }
+
+    /// `pref[i * k + j]`: CR rule `i` is preferred to CR rule `j` (transitive closure).
+    fn preference_closure(&self) -> Vec<bool> {
+        let k = self.cr_lits.len();
+        let index = |a: u32| self.prog.cr_rules.iter().position(|c| c.appl == a);
+        let mut reach = vec![false; k * k];
+        for p in &self.prog.prefers {
+            if let (Some(i), Some(j)) = (index(p.better), index(p.worse)) {
+                reach[i * k + j] = true;
+            }
+        }
+        for m in 0..k {
+            for i in 0..k {
+                if reach[i * k + m] {
+                    for j in 0..k {
+                        if reach[m * k + j] {
+                            reach[i * k + j] = true;
+                        }
+                    }
+                }
+            }
+        }
+        reach
+    }
+}
+
+/// For every true atom of `atoms` (sorted), one rule index that derives it in a well-founded
+/// order: its body holds in the model, its positive body atoms were derived before, and for a
+/// disjunctive rule the other head atoms are false when possible.
+pub fn supports(p: &GroundProgram, atoms: &[u32]) -> Vec<Option<usize>> {
+    let n = p.num_atoms as usize;
+    let mut in_m = vec![false; n + 1];
+    for &a in atoms {
+        in_m[a as usize] = true;
+    }
+    let holds = |l: i32| -> bool {
+        let a = l.unsigned_abs() as usize;
+        a <= n && (in_m[a] == (l > 0))
+    };
+    let mut derived = vec![false; n + 1];
+    let mut support: Vec<Option<usize>> = vec![None; n + 1];
+    // Repeated passes; each pass derives at least one atom or stops.
+    for strict in [true, false] {
+        loop {
+            let mut changed = false;
+            for (ri, r) in p.rules.iter().enumerate() {
+                let body_ok = match &r.body {
+                    Body::Normal(ls) => ls
+                        .iter()
+                        .all(|&l| holds(l) && (l < 0 || derived[l as usize])),
+                    Body::Weight { lower, lits } => {
+                        let s: i64 = lits
+                            .iter()
+                            .filter(|&&(l, _)| holds(l) && (l < 0 || derived[l as usize]))
+                            .map(|&(_, w)| w)
+                            .sum();
+                        s >= *lower
+                    }
+                };
+                if !body_ok {
+                    continue;
+                }
+                for &h in &r.head {
+                    let hu = h as usize;
+                    if hu > n || !in_m[hu] || derived[hu] {
+                        continue;
+                    }
+                    let exclusive = r.head_kind == HeadKind::Choice
+                        || r.head.iter().all(|&o| o == h || !in_m[o as usize]);
+                    if strict && !exclusive {
+                        continue;
+                    }
+                    derived[hu] = true;
+                    support[hu] = Some(ri);
+                    changed = true;
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+    }
+    atoms.iter().map(|&a| support[a as usize]).collect()
+}

@@ -1,0 +1,627 @@
+//! The lexer: bytes of one source file to tokens with byte spans, on demand.
+//!
+//! Role: a hand-written, byte-based scanner for the clingo dialect and for SPARC. It never fails:
+//! a character that cannot start a token is reported as gringo reports it (`lexer error,
+//! unexpected X`) and skipped, so the parser sees the rest of the input.
+//!
+//! Invariants:
+//! - Every token's `start..end` lies inside the text and on UTF-8 character boundaries (the
+//!   lexer only cuts after ASCII bytes or after whole characters).
+//! - Each call of [`Lexer::next_token`] either returns [`TokenKind::Eof`] or advances the
+//!   position by at least one byte, so a loop over tokens always terminates.
+//! - Comments are `%` to the end of the line and `%* ... *%` blocks, which nest as in gringo.
+//!   SPARC files have only line comments (a SPARC line such as `%****` is a line comment).
+//! - The lexer keeps no state beyond its position, so the parser can save and restore it.
+
+use crate::base::{Diagnostic, FileId, Span};
+
+use super::ast::Dialect;
+
+/// The kinds of tokens.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TokenKind {
+    /// A lower-case identifier, possibly with leading underscores: `p`, `_q`.
+    Ident,
+    /// A variable: upper-case first letter after optional underscores: `X`, `_Y`.
+    Variable,
+    /// The anonymous variable `_`.
+    Anonymous,
+    /// A decimal, hexadecimal (`0x`), octal (`0o`) or binary (`0b`) integer.
+    Number,
+    /// A string literal with its quotes; escapes are checked by the lexer.
+    String,
+    /// A `#name` directive or SPARC sort name; `#sum+` is [`TokenKind::SumPlus`].
+    Hash,
+    /// `#sum+`
+    SumPlus,
+    /// The keyword `not`.
+    Not,
+    /// `.`
+    Dot,
+    /// `..`
+    Dots,
+    /// `,`
+    Comma,
+    /// `;`
+    Semi,
+    /// `:`
+    Colon,
+    /// `:-`
+    If,
+    /// `:~`
+    WeakIf,
+    /// `:+`
+    CrIf,
+    /// `|`
+    Bar,
+    /// `(`
+    LParen,
+    /// `)`
+    RParen,
+    /// `{`
+    LBrace,
+    /// `}`
+    RBrace,
+    /// `[`
+    LBrack,
+    /// `]`
+    RBrack,
+    /// `=` or `==`
+    Eq,
+    /// `!=` or `<>`
+    Ne,
+    /// `<`
+    Lt,
+    /// `<=`
+    Le,
+    /// `>`
+    Gt,
+    /// `>=`
+    Ge,
+    /// `+`
+    Plus,
+    /// `-`
+    Minus,
+    /// `*`
+    Star,
+    /// `**`
+    Pow,
+    /// `/`
+    Slash,
+    /// `\`
+    Backslash,
+    /// `&`
+    Amp,
+    /// `?`
+    Question,
+    /// `^`
+    Caret,
+    /// `~`
+    Tilde,
+    /// `@`
+    At,
+    /// End of input.
+    Eof,
+}
+
+/// A token: its kind and the byte range it covers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Token {
+    /// What the token is.
+    pub kind: TokenKind,
+    /// First byte.
+    pub start: u32,
+    /// One past the last byte.
+    pub end: u32,
+}
+
+/// The on-demand scanner over one file's text.
+#[derive(Clone, Debug)]
+pub struct Lexer<'a> {
+    /// The text as bytes.
+    bytes: &'a [u8],
+    /// The text, for slicing character boundaries.
+    text: &'a str,
+    /// The file spans point into.
+    file: FileId,
+    /// Whether block comments exist (clingo) or not (SPARC).
+    block_comments: bool,
+    /// Whether unknown `#name` directives are errors (clingo) or sort names (SPARC).
+    sparc: bool,
+    /// Current byte offset.
+    pos: usize,
+}
+
+/// Directive names the clingo dialect knows (without `#`).
+const DIRECTIVES: &[&str] = &[
+    "count",
+    "sum",
+    "min",
+    "max",
+    "minimize",
+    "maximize",
+    "minimise",
+    "maximise",
+    "show",
+    "defined",
+    "project",
+    "const",
+    "external",
+    "heuristic",
+    "edge",
+    "include",
+    "program",
+    "script",
+    "end",
+    "inf",
+    "sup",
+    "infimum",
+    "supremum",
+    "true",
+    "false",
+];
+
+/// True for bytes that may continue an identifier or variable.
+#[inline]
+fn is_ident_byte(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || b == b'_' || b == b'\''
+}
+
+impl<'a> Lexer<'a> {
+    /// A lexer at the start of `text`.
+    pub fn new(file: FileId, text: &'a str, dialect: Dialect) -> Lexer<'a> {
+        Lexer {
+            bytes: text.as_bytes(),
+            text,
+            file,
+            block_comments: dialect == Dialect::Clingo,
+            sparc: dialect == Dialect::Sparc,
+            pos: 0,
+        }
+    }
+
+    /// The current byte offset.
+    pub fn pos(&self) -> usize {
+        self.pos
+    }
+
+    /// Moves to byte offset `pos`, which must be a character boundary of the text.
+    pub fn set_pos(&mut self, pos: usize) {
+        debug_assert!(self.text.is_char_boundary(pos));
+        self.pos = pos;
+    }
+
+    /// A span in this lexer's file.
+    fn span(&self, start: usize, end: usize) -> Span {
+        Span::new(self.file, start as u32, end as u32)
+    }
+
+    /// Reports `lexer error, unexpected <what>` at `start..end`.
+    fn error(&self, diags: &mut Vec<Diagnostic>, start: usize, end: usize, what: &str) {
+        diags.push(Diagnostic::error(
+            self.span(start, end),
+            format!("lexer error, unexpected {what}"),
+        ));
+    }
+
+    /// Skips whitespace and comments; reports an unterminated block comment.
+    fn skip_trivia(&mut self, diags: &mut Vec<Diagnostic>) {
+        let bytes = self.bytes;
+        loop {
+            while self.pos < bytes.len() && bytes[self.pos].is_ascii_whitespace() {
+                self.pos += 1;
+            }
+            if self.pos >= bytes.len() || bytes[self.pos] != b'%' {
+                return;
+            }
+            if self.block_comments && bytes.get(self.pos + 1) == Some(&b'*') {
+                // A block comment `%* ... *%`; gringo nests them.
+                let mut depth = 1usize;
+                self.pos += 2;
+                while depth > 0 {
+                    if self.pos >= bytes.len() {
+                        self.error(diags, bytes.len(), bytes.len(), "<EOF>");
+                        return;
+                    }
+                    match bytes[self.pos] {
+                        b'%' if bytes.get(self.pos + 1) == Some(&b'*') => {
+                            depth += 1;
+                            self.pos += 2;
+                        }
+                        b'*' if bytes.get(self.pos + 1) == Some(&b'%') => {
+                            depth -= 1;
+                            self.pos += 2;
+                        }
+                        _ => self.pos += 1,
+                    }
+                }
+            } else {
+                match memchr_newline(&bytes[self.pos..]) {
+                    Some(i) => self.pos += i + 1,
+                    None => self.pos = bytes.len(),
+                }
+            }
+        }
+    }
+
+    /// The next token; reports and skips characters that start no token.
+    pub fn next_token(&mut self, diags: &mut Vec<Diagnostic>) -> Token {
+        loop {
+            self.skip_trivia(diags);
+            let start = self.pos;
+            if start >= self.bytes.len() {
+                return Token {
+                    kind: TokenKind::Eof,
+                    start: start as u32,
+                    end: start as u32,
+                };
+            }
+            if let Some(kind) = self.scan(diags) {
+                debug_assert!(self.pos > start, "the lexer made no progress");
+                return Token {
+                    kind,
+                    start: start as u32,
+                    end: self.pos as u32,
+                };
+            }
+            debug_assert!(self.pos > start, "the lexer made no progress");
+        }
+    }
+
+    /// Scans one token starting at `self.pos` (not whitespace, not EOF). Returns `None` after
+    /// reporting and skipping an unexpected character.
+    fn scan(&mut self, diags: &mut Vec<Diagnostic>) -> Option<TokenKind> {
+        use TokenKind as T;
+        let bytes = self.bytes;
+        let start = self.pos;
+        let b = bytes[start];
+        let next = bytes.get(start + 1).copied().unwrap_or(0);
+        let (kind, len) = match b {
+            b'a'..=b'z' => {
+                let end = self.ident_end(start + 1);
+                self.pos = end;
+                if &bytes[start..end] == b"not" {
+                    return Some(T::Not);
+                }
+                return Some(T::Ident);
+            }
+            b'A'..=b'Z' => {
+                self.pos = self.ident_end(start + 1);
+                return Some(T::Variable);
+            }
+            b'_' => {
+                let mut i = start;
+                while i < bytes.len() && bytes[i] == b'_' {
+                    i += 1;
+                }
+                return match bytes.get(i) {
+                    Some(b'a'..=b'z') => {
+                        self.pos = self.ident_end(i + 1);
+                        Some(T::Ident)
+                    }
+                    Some(b'A'..=b'Z') => {
+                        self.pos = self.ident_end(i + 1);
+                        Some(T::Variable)
+                    }
+                    _ if i == start + 1 => {
+                        self.pos = i;
+                        Some(T::Anonymous)
+                    }
+                    _ => {
+                        // `__` followed by no letter: gringo reads `_` tokens one by one.
+                        self.pos = start + 1;
+                        Some(T::Anonymous)
+                    }
+                };
+            }
+            b'0'..=b'9' => {
+                self.pos = self.number_end(start);
+                return Some(T::Number);
+            }
+            b'"' => return self.string(diags),
+            b'#' => return self.hash(diags),
+            b'.' => {
+                if next == b'.' {
+                    (T::Dots, 2)
+                } else {
+                    (T::Dot, 1)
+                }
+            }
+            b',' => (T::Comma, 1),
+            b';' => (T::Semi, 1),
+            b':' => match next {
+                b'-' => (T::If, 2),
+                b'~' => (T::WeakIf, 2),
+                b'+' => (T::CrIf, 2),
+                _ => (T::Colon, 1),
+            },
+            b'|' => (T::Bar, 1),
+            b'(' => (T::LParen, 1),
+            b')' => (T::RParen, 1),
+            b'{' => (T::LBrace, 1),
+            b'}' => (T::RBrace, 1),
+            b'[' => (T::LBrack, 1),
+            b']' => (T::RBrack, 1),
+            b'=' => {
+                if next == b'=' {
+                    (T::Eq, 2)
+                } else {
+                    (T::Eq, 1)
+                }
+            }
+            b'!' if next == b'=' => (T::Ne, 2),
+            b'<' => match next {
+                b'=' => (T::Le, 2),
+                b'>' => (T::Ne, 2),
+                _ => (T::Lt, 1),
+            },
+            b'>' => {
+                if next == b'=' {
+                    (T::Ge, 2)
+                } else {
+                    (T::Gt, 1)
+                }
+            }
+            b'+' => (T::Plus, 1),
+            b'-' => (T::Minus, 1),
+            b'*' => {
+                if next == b'*' {
+                    (T::Pow, 2)
+                } else {
+                    (T::Star, 1)
+                }
+            }
+            b'/' => (T::Slash, 1),
+            b'\\' => (T::Backslash, 1),
+            b'&' => (T::Amp, 1),
+            b'?' => (T::Question, 1),
+            b'^' => (T::Caret, 1),
+            b'~' => (T::Tilde, 1),
+            b'@' => (T::At, 1),
+            _ => {
+                // An unexpected character: skip it whole, so spans stay on char boundaries.
+                let ch = self.text[start..].chars().next().unwrap_or('\u{fffd}');
+                let end = start + ch.len_utf8();
+                let shown = if ch.is_control() {
+                    format!("\\x{:02x}", ch as u32)
+                } else {
+                    ch.to_string()
+                };
+                self.error(diags, start, end, &shown);
+                self.pos = end;
+                return None;
+            }
+        };
+        self.pos = start + len;
+        Some(kind)
+    }
+
+    /// The end of an identifier whose remaining characters start at `i`.
+    #[inline]
+    fn ident_end(&self, mut i: usize) -> usize {
+        let bytes = self.bytes;
+        while i < bytes.len() && is_ident_byte(bytes[i]) {
+            i += 1;
+        }
+        i
+    }
+
+    /// The end of a number starting at `start`.
+    fn number_end(&self, start: usize) -> usize {
+        let bytes = self.bytes;
+        if bytes[start] == b'0' {
+            let radix_digit: Option<fn(u8) -> bool> = match bytes.get(start + 1) {
+                Some(b'x') | Some(b'X') => Some(|c: u8| c.is_ascii_hexdigit()),
+                Some(b'o') | Some(b'O') => Some(|c: u8| (b'0'..=b'7').contains(&c)),
+                Some(b'b') | Some(b'B') => Some(|c: u8| c == b'0' || c == b'1'),
+                _ => None,
+            };
+            if let Some(is_digit) = radix_digit {
+                let mut i = start + 2;
+                while i < bytes.len() && is_digit(bytes[i]) {
+                    i += 1;
+                }
+                if i > start + 2 {
+                    return i;
+                }
+            }
+            return start + 1;
+        }
+        let mut i = start + 1;
+        while i < bytes.len() && bytes[i].is_ascii_digit() {
+            i += 1;
+        }
+        i
+    }
+
+    /// Scans a string literal. An unterminated string or a bad escape is a lexer error at the
+    /// opening quote (as gringo reports it); the quote is skipped and lexing resumes after it.
+    fn string(&mut self, diags: &mut Vec<Diagnostic>) -> Option<TokenKind> {
+        let bytes = self.bytes;
+        let start = self.pos;
+        let mut i = start + 1;
+        while i < bytes.len() {
+            match bytes[i] {
+                b'"' => {
+                    self.pos = i + 1;
+                    return Some(TokenKind::String);
+                }
+                b'\\' => match bytes.get(i + 1) {
+                    Some(b'"') | Some(b'\\') | Some(b'n') => i += 2,
+                    _ => break,
+                },
+                b'\n' => break,
+                _ => i += 1,
+            }
+        }
+        self.error(diags, start, start + 1, "\"");
+        self.pos = start + 1;
+        None
+    }
+
+    /// Scans `#name` (and `#sum+`). In the clingo dialect an unknown name is a lexer error and
+    /// is skipped; in SPARC it is a sort name.
+    fn hash(&mut self, diags: &mut Vec<Diagnostic>) -> Option<TokenKind> {
+        let bytes = self.bytes;
+        let start = self.pos;
+        let name_start = start + 1;
+        let mut i = name_start;
+        while i < bytes.len() && bytes[i] == b'_' {
+            i += 1;
+        }
+        if i < bytes.len() && bytes[i].is_ascii_alphabetic() {
+            i = self.ident_end(i + 1);
+        } else {
+            self.error(diags, start, start + 1, "#");
+            self.pos = start + 1;
+            return None;
+        }
+        let name = &self.text[name_start..i];
+        if name == "sum" && bytes.get(i) == Some(&b'+') {
+            self.pos = i + 1;
+            return Some(TokenKind::SumPlus);
+        }
+        self.pos = i;
+        if !self.sparc && !DIRECTIVES.contains(&name) {
+            self.error(diags, start, i, &self.text[start..i]);
+            return None;
+        }
+        Some(TokenKind::Hash)
+    }
+
+    /// Scans the body of a `#script (lang)` block: everything up to the next `#end`, which must
+    /// be followed by `.`. Returns the code and leaves the position after `#end.`; returns
+    /// `None` (position at the end of input) when no `#end.` follows.
+    pub fn script_body(&mut self) -> Option<(usize, usize)> {
+        let start = self.pos;
+        let hay = &self.bytes[start..];
+        let mut from = 0;
+        while let Some(i) = find(&hay[from..], b"#end") {
+            let at = from + i;
+            let mut j = start + at + 4;
+            let after = self.bytes.get(j).copied();
+            if after.is_some_and(is_ident_byte) {
+                from = at + 4;
+                continue;
+            }
+            while j < self.bytes.len() && self.bytes[j].is_ascii_whitespace() {
+                j += 1;
+            }
+            if self.bytes.get(j) == Some(&b'.') {
+                self.pos = j + 1;
+                return Some((start, start + at));
+            }
+            from = at + 4;
+        }
+        self.pos = self.bytes.len();
+        None
+    }
+}
+
+/// Position of the first newline in `hay`.
+#[inline]
+fn memchr_newline(hay: &[u8]) -> Option<usize> {
+    hay.iter().position(|&b| b == b'\n')
+}
+
+/// Position of the first occurrence of `needle` in `hay`.
+fn find(hay: &[u8], needle: &[u8]) -> Option<usize> {
+    hay.windows(needle.len()).position(|w| w == needle)
+}
+
+/// How gringo names a token in `unexpected ...` messages: quoted literals lose their quotes
+/// unless they contain a comma or a backslash, and value tokens have `<NAME>` names.
+pub fn describe(kind: TokenKind, text: &str) -> String {
+    use TokenKind as T;
+    match kind {
+        T::Ident => "<IDENTIFIER>".into(),
+        T::Variable => "<VARIABLE>".into(),
+        T::Anonymous => "<ANONYMOUS>".into(),
+        T::Number => "<NUMBER>".into(),
+        T::String => "<STRING>".into(),
+        T::Eof => "EOF".into(),
+        T::Comma => "\",\"".into(),
+        T::Backslash => "\"\\\\\"".into(),
+        _ => text.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kinds(text: &str) -> (Vec<TokenKind>, Vec<Diagnostic>) {
+        let mut lexer = Lexer::new(FileId(0), text, Dialect::Clingo);
+        let mut diags = Vec::new();
+        let mut out = Vec::new();
+        loop {
+            let t = lexer.next_token(&mut diags);
+            if t.kind == TokenKind::Eof {
+                return (out, diags);
+            }
+            out.push(t.kind);
+        }
+    }
+
+    #[test]
+    fn numbers_and_dots() {
+        use TokenKind as T;
+        let (k, d) = kinds("p(1..2). 0x1F.");
+        assert!(d.is_empty());
+        assert_eq!(
+            k,
+            vec![
+                T::Ident,
+                T::LParen,
+                T::Number,
+                T::Dots,
+                T::Number,
+                T::RParen,
+                T::Dot,
+                T::Number,
+                T::Dot
+            ]
+        );
+    }
+
+    #[test]
+    fn nested_block_comments() {
+        let (k, d) = kinds("a. %* x %* y *% z *% b.");
+        assert!(d.is_empty());
+        assert_eq!(k.len(), 4);
+        let (_, d) = kinds("%* open");
+        assert_eq!(d.len(), 1);
+        assert_eq!(d[0].message, "lexer error, unexpected <EOF>");
+    }
+
+    #[test]
+    fn unterminated_string_skips_quote() {
+        let (k, d) = kinds("p(\"abc).");
+        assert_eq!(d.len(), 1);
+        assert_eq!(d[0].span.start, 2);
+        assert_eq!(k.len(), 5);
+    }
+
+    #[test]
+    fn operators() {
+        use TokenKind as T;
+        let (k, _) = kinds(":- :~ :+ : <> != == <= ** #sum+ #count not");
+        assert_eq!(
+            k,
+            vec![
+                T::If,
+                T::WeakIf,
+                T::CrIf,
+                T::Colon,
+                T::Ne,
+                T::Ne,
+                T::Eq,
+                T::Le,
+                T::Pow,
+                T::SumPlus,
+                T::Hash,
+                T::Not
+            ]
+        );
+    }
+}

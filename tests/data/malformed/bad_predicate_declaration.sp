@@ -1,0 +1,6 @@
+sorts
+#s = {a}.
+predicates
+p(s).
+rules
+p(a).

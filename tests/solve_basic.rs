@@ -1,0 +1,337 @@
+//! Hand-checked programs for the solver; each test states why its answer sets are what they are.
+
+use lucent::ground::program::{
+    Body, ExternalValue, GroundProgram, HeadKind, Minimize, Output, Rule,
+};
+use lucent::solve::{Config, EnumMode, OptMode, Outcome, Solver};
+
+fn rule(head: &[u32], body: &[i32]) -> Rule {
+    Rule {
+        head_kind: HeadKind::Disjunction,
+        head: head.to_vec(),
+        body: Body::Normal(body.to_vec()),
+    }
+}
+
+fn choice(head: &[u32], body: &[i32]) -> Rule {
+    Rule {
+        head_kind: HeadKind::Choice,
+        head: head.to_vec(),
+        body: Body::Normal(body.to_vec()),
+    }
+}
+
+/// A program over atoms named a, b, c, ... (atom i is the i-th letter), all shown.
+fn program(n: u32, rules: Vec<Rule>) -> GroundProgram {
+    let mut p = GroundProgram::new();
+    p.num_atoms = n;
+    p.rules = rules;
+    for a in 1..=n {
+        p.outputs.push(Output {
+            symbol: name(a),
+            condition: vec![a as i32],
+        });
+    }
+    p
+}
+
+fn name(a: u32) -> String {
+    ((b'a' + (a - 1) as u8) as char).to_string()
+}
+
+/// All answer sets as sorted lists of shown symbols, sorted.
+fn answer_sets(p: &GroundProgram, config: Config) -> Vec<Vec<String>> {
+    let mut s = Solver::new(p, config);
+    let r = s.solve();
+    let mut v: Vec<Vec<String>> = r
+        .models
+        .iter()
+        .map(|m| {
+            let mut x = m.symbols.clone();
+            x.sort();
+            x
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+fn sets(x: &[&[&str]]) -> Vec<Vec<String>> {
+    let mut v: Vec<Vec<String>> = x
+        .iter()
+        .map(|s| s.iter().map(|t| t.to_string()).collect())
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn even_negative_cycle_has_two_answer_sets() {
+    // a :- not b. b :- not a.  Answer sets {a} and {b}.
+    let p = program(2, vec![rule(&[1], &[-2]), rule(&[2], &[-1])]);
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&["a"], &["b"]])
+    );
+}
+
+#[test]
+fn odd_negative_loop_is_unsatisfiable() {
+    // a :- not a.  No answer set: {} violates the rule, {a} is unsupported in the reduct.
+    let p = program(1, vec![rule(&[1], &[-1])]);
+    let r = Solver::new(&p, Config::all_models()).solve();
+    assert_eq!(r.outcome, Outcome::Unsatisfiable);
+    assert!(r.exhausted);
+}
+
+#[test]
+fn positive_loop_is_unfounded() {
+    // a :- b. b :- a. {c}.  The loop {a,b} has no external support: answer sets {} and {c}.
+    let p = program(
+        3,
+        vec![rule(&[1], &[2]), rule(&[2], &[1]), choice(&[3], &[])],
+    );
+    assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&[], &["c"]]));
+}
+
+#[test]
+fn loop_with_external_support() {
+    // a :- b. b :- a. a :- c. {c}.  With c, both a and b follow: {} and {a,b,c}.
+    let p = program(
+        3,
+        vec![
+            rule(&[1], &[2]),
+            rule(&[2], &[1]),
+            rule(&[1], &[3]),
+            choice(&[3], &[]),
+        ],
+    );
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&[], &["a", "b", "c"]])
+    );
+}
+
+#[test]
+fn disjunction_is_minimal() {
+    // a | b.  Minimal models {a} and {b}; {a,b} is not minimal.
+    let p = program(2, vec![rule(&[1, 2], &[])]);
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&["a"], &["b"]])
+    );
+}
+
+#[test]
+fn head_cycle_disjunction_needs_minimality_check() {
+    // a | b. a :- b. b :- a.  Not head-cycle-free; the only answer set is {a,b}
+    // (the reduct is the program itself, whose only model is {a,b}).
+    let p = program(
+        2,
+        vec![rule(&[1, 2], &[]), rule(&[1], &[2]), rule(&[2], &[1])],
+    );
+    assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&["a", "b"]]));
+}
+
+#[test]
+fn non_hcf_with_unminimal_candidate() {
+    // a | b | c. a :- b. b :- a. : candidates {a,b} and {c}; both minimal models of the
+    // reduct (the program itself), so both are answer sets.
+    let p = program(
+        3,
+        vec![rule(&[1, 2, 3], &[]), rule(&[1], &[2]), rule(&[2], &[1])],
+    );
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&["a", "b"], &["c"]])
+    );
+}
+
+#[test]
+fn cardinality_body() {
+    // {a; b; c}. d :- 2 {a; b; c}. :- not d.  Answer sets: the subsets of size >= 2, plus d.
+    let mut rules = vec![choice(&[1, 2, 3], &[])];
+    rules.push(Rule {
+        head_kind: HeadKind::Disjunction,
+        head: vec![4],
+        body: Body::Weight {
+            lower: 2,
+            lits: vec![(1, 1), (2, 1), (3, 1)],
+        },
+    });
+    rules.push(rule(&[], &[-4]));
+    let p = program(4, rules);
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[
+            &["a", "b", "d"],
+            &["a", "c", "d"],
+            &["b", "c", "d"],
+            &["a", "b", "c", "d"]
+        ])
+    );
+}
+
+#[test]
+fn minimize_finds_optimum() {
+    // {a; b}. :- not a, not b. #minimize {2: a; 1: b}.  Optimum {b} with cost 1.
+    let mut p = program(2, vec![choice(&[1, 2], &[]), rule(&[], &[-1, -2])]);
+    p.minimize.push(Minimize {
+        priority: 0,
+        lits: vec![(1, 2), (2, 1)],
+    });
+    let r = Solver::new(&p, Config::all_models()).solve();
+    assert_eq!(r.outcome, Outcome::Optimum);
+    assert_eq!(r.models.last().unwrap().symbols, vec!["b".to_string()]);
+    assert_eq!(r.models.last().unwrap().costs, vec![1]);
+}
+
+#[test]
+fn lexicographic_priorities_and_opt_n() {
+    // {a; b; c}. :- not a, not b, not c.
+    // #minimize {1@2: a}. #minimize {1@1: b; 1@1: c}.  Priority 2 forces a false; then one
+    // of b, c must hold with cost 1 at priority 1: optimal models {b} and {c}, costs [0, 1].
+    let mut p = program(3, vec![choice(&[1, 2, 3], &[]), rule(&[], &[-1, -2, -3])]);
+    p.minimize.push(Minimize {
+        priority: 2,
+        lits: vec![(1, 1)],
+    });
+    p.minimize.push(Minimize {
+        priority: 1,
+        lits: vec![(2, 1), (3, 1)],
+    });
+    let cfg = Config {
+        models: 0,
+        opt_mode: OptMode::OptN,
+        ..Config::default()
+    };
+    let r = Solver::new(&p, cfg).solve();
+    assert_eq!(r.outcome, Outcome::Optimum);
+    let mut opt: Vec<Vec<String>> = r
+        .models
+        .iter()
+        .filter(|m| m.optimal)
+        .map(|m| m.symbols.clone())
+        .collect();
+    opt.sort();
+    assert_eq!(opt, sets(&[&["b"], &["c"]]));
+    assert!(r
+        .models
+        .iter()
+        .filter(|m| m.optimal)
+        .all(|m| m.costs == vec![0, 1]));
+}
+
+#[test]
+fn opt_mode_enum_with_bound() {
+    // {a; b}. #minimize {1: a; 1: b}.  With bound 1: the models {}, {a}, {b}.
+    let mut p = program(2, vec![choice(&[1, 2], &[])]);
+    p.minimize.push(Minimize {
+        priority: 0,
+        lits: vec![(1, 1), (2, 1)],
+    });
+    let cfg = Config {
+        models: 0,
+        opt_mode: OptMode::Enum(vec![1]),
+        ..Config::default()
+    };
+    assert_eq!(answer_sets(&p, cfg), sets(&[&[], &["a"], &["b"]]));
+}
+
+#[test]
+fn brave_and_cautious() {
+    // {a; b}. c. :- a, b.  Answer sets {c}, {a,c}, {b,c}: brave {a,b,c}, cautious {c}.
+    let p = program(
+        3,
+        vec![choice(&[1, 2], &[]), rule(&[3], &[]), rule(&[], &[1, 2])],
+    );
+    let brave = Config {
+        models: 0,
+        enum_mode: EnumMode::Brave,
+        ..Config::default()
+    };
+    let r = Solver::new(&p, brave).solve();
+    let mut last = r.models.last().unwrap().symbols.clone();
+    last.sort();
+    assert_eq!(last, vec!["a", "b", "c"]);
+    let cautious = Config {
+        models: 0,
+        enum_mode: EnumMode::Cautious,
+        ..Config::default()
+    };
+    let r = Solver::new(&p, cautious).solve();
+    assert_eq!(r.models.last().unwrap().symbols, vec!["c"]);
+}
+
+#[test]
+fn projection_removes_duplicates() {
+    // {a; b}. with only a shown and --project: answer sets project to {} and {a} once each.
+    let mut p = program(2, vec![choice(&[1, 2], &[])]);
+    p.outputs.truncate(1);
+    let cfg = Config {
+        models: 0,
+        project: true,
+        ..Config::default()
+    };
+    assert_eq!(answer_sets(&p, cfg), sets(&[&[], &["a"]]));
+    // Without --project, four answer sets, two of each projection.
+    assert_eq!(answer_sets(&p, Config::all_models()).len(), 4);
+}
+
+#[test]
+fn assumptions_and_externals() {
+    // #external e. a :- e. b :- not e.  Free external: {b} and {a,e}; assuming -e: {b}.
+    let mut p = program(3, vec![rule(&[1], &[3]), rule(&[2], &[-3])]);
+    p.outputs[2].symbol = "e".into();
+    p.externals.push((3, ExternalValue::Free));
+    assert_eq!(
+        answer_sets(&p, Config::all_models()),
+        sets(&[&["a", "e"], &["b"]])
+    );
+    let mut s = Solver::new(&p, Config::all_models());
+    let r = s.solve_with(&[-3]);
+    assert_eq!(r.models.len(), 1);
+    assert_eq!(r.models[0].symbols, vec!["b"]);
+    // Assumptions hold for one call only.
+    assert_eq!(s.solve().models.len(), 2);
+}
+
+#[test]
+fn incremental_constraint_keeps_solver() {
+    // {a; b}. then add :- a. : models go from 4 to 2.
+    let p = program(2, vec![choice(&[1, 2], &[])]);
+    let mut s = Solver::new(&p, Config::all_models());
+    assert_eq!(s.solve().models.len(), 4);
+    s.add_rules(&[rule(&[], &[1])]).unwrap();
+    assert_eq!(s.solve().models.len(), 2);
+}
+
+#[test]
+fn incremental_rules_for_existing_atoms() {
+    // a :- not b.  then add b.  Answer sets {a}, then {b}.
+    let p = program(2, vec![rule(&[1], &[-2])]);
+    let cfg = Config {
+        models: 0,
+        incremental: true,
+        ..Config::default()
+    };
+    let mut s = Solver::new(&p, cfg);
+    assert_eq!(s.solve().models[0].symbols, vec!["a"]);
+    s.add_rules(&[rule(&[2], &[])]).unwrap();
+    let r = s.solve();
+    assert_eq!(r.models.len(), 1);
+    assert_eq!(r.models[0].symbols, vec!["b"]);
+    // Without the incremental flag, the same change is refused.
+    let mut s = Solver::new(&p, Config::all_models());
+    assert!(s.add_rules(&[rule(&[2], &[])]).is_err());
+}
+
+#[test]
+fn support_pointers_are_well_founded() {
+    // c. b :- c. a :- b.  Supports: a by rule 2, b by rule 1, c by rule 0.
+    let p = program(3, vec![rule(&[3], &[]), rule(&[2], &[3]), rule(&[1], &[2])]);
+    let r = Solver::new(&p, Config::default()).solve();
+    let m = &r.models[0];
+    assert_eq!(m.atoms, vec![1, 2, 3]);
+    assert_eq!(m.support, vec![Some(2), Some(1), Some(0)]);
+}
