@@ -6,6 +6,8 @@
 //! standard error in gringo's format, results to standard output. Library modules receive limits
 //! as values and never print.
 
+#[cfg(feature = "sim")]
+pub mod sim;
 pub mod input;
 pub mod options;
 pub mod report;
