@@ -8,6 +8,7 @@
 
 #[cfg(feature = "sim")]
 pub mod sim;
+pub mod include;
 pub mod input;
 pub mod options;
 pub mod report;
@@ -151,12 +152,18 @@ fn read_and_parse(
     let (loaded, load_diags) = input::load(&options.files, io.stdin, &mut sources);
     diags.extend(load_diags);
     let mut programs = Vec::new();
+    let mut includes = include::Includes::default();
+    for input in &loaded {
+        includes.mark_input(&input.name);
+    }
     for input in &loaded {
         let text = &sources.get(input.file).text;
         let dialect = dialect_of(options, &input.name, text);
         let parse = crate::syntax::parse(input.file, text, dialect);
         diags.extend(parse.diagnostics);
-        programs.push(parse.program);
+        let mut program = parse.program;
+        includes.resolve(&mut program, input.file, &mut sources, diags);
+        programs.push(program);
     }
     if diags.has_errors() {
         flush_diagnostics(io, diags, &sources)?;
