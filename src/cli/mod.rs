@@ -341,7 +341,7 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
         .filter(|d| {
             d.is_error()
                 || d.kind
-                    .is_none_or(|k| !options.disabled_warnings.contains(&k))
+                    .map_or(true, |k| !options.disabled_warnings.contains(&k))
         })
         .cloned()
         .collect();
