@@ -41,6 +41,7 @@ fn context() -> Context {
         enum_mode: EnumMode::Auto,
         has_cr: true,
         shown_total: 5,
+        facts: vec!["p".into()],
     }
 }
 
@@ -131,6 +132,7 @@ fn context_from_program_and_config() {
     let c = Context::for_program(&p, &Config::default(), vec!["x.lp".into()]);
     assert!(c.has_minimize && c.optimizing && c.has_cr);
     assert_eq!(c.shown_total, 2);
+    assert_eq!(c.facts, vec!["a".to_string(), "b".to_string()]);
     let config = Config {
         opt_mode: OptMode::Enum(vec![]),
         ..Config::default()
@@ -142,4 +144,30 @@ fn context_from_program_and_config() {
         ..Config::default()
     };
     assert!(!Context::for_program(&p, &config, vec![]).has_minimize);
+}
+
+#[test]
+fn cautious_counts_shown_facts_as_decided() {
+    // As clingo -n1 --enum-mode=cautious on `a :- not b. b :- not a. c.`: after the first model
+    // {b, c}, c (a fact) is decided and b is open: `Consequences: [1;2]`.
+    let mut result = cr_result();
+    result.models = vec![Model {
+        number: 1,
+        symbols: vec!["b".into(), "c".into()],
+        ..Model::default()
+    }];
+    result.exhausted = false;
+    result.outcome = Outcome::Satisfiable;
+    let context = Context {
+        enum_mode: EnumMode::Cautious,
+        shown_total: 3,
+        facts: vec!["c".into()],
+        ..Context::default()
+    };
+    let r = Report::new(&result, context);
+    let mut out = Vec::new();
+    write_text(&mut out, &r, Quiet::default()).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(text.contains("\nb c\nConsequences: [1;2]\n"), "{text}");
+    assert!(text.contains("\nConsequences : 1+\n"), "{text}");
 }
