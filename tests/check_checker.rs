@@ -256,6 +256,27 @@ fn externals() {
 }
 
 #[test]
+fn externals_with_rules_are_defined_by_their_rules() {
+    // #external a. [true]   a :- b.   {b}.   (a = 1, b = 2)  As clasp: the rule defines a, the
+    // external statement is ignored, so {} and {a, b} are the stable models and {a} is not.
+    for value in [
+        ExternalValue::Free,
+        ExternalValue::True,
+        ExternalValue::False,
+    ] {
+        let mut p = program(2, vec![rule(&[1], &[2]), choice(&[2], &[])]);
+        p.externals.push((1, value));
+        assert_eq!(check(&p, &[]), Ok(()), "{value:?}");
+        assert_eq!(check(&p, &[1, 2]), Ok(()), "{value:?}");
+        assert_eq!(
+            check(&p, &[1]),
+            Err(Violation::Unsupported { atoms: vec![1] }),
+            "{value:?}"
+        );
+    }
+}
+
+#[test]
 fn assumptions_and_unknown_atoms() {
     let mut p = program(2, vec![choice(&[1, 2], &[])]);
     p.assumptions = vec![1, -2];

@@ -38,7 +38,6 @@
 //!   (steps of an incremental program accumulate), theory statements excepted.
 //! - Only output symbols, comments, theory lines and labels allocate strings while reading.
 
-use std::fmt;
 use std::io::Write as _;
 
 use thiserror::Error;
@@ -311,28 +310,27 @@ fn write_step(out: &mut Vec<u8>, step: &AspifStep) {
         match *stmt {
             Stmt::Rule(i) => {
                 let rule = &p.rules[i as usize];
-                let kind = match rule.head_kind {
-                    HeadKind::Disjunction => 0,
-                    HeadKind::Choice => 1,
-                };
-                let _ = write!(out, "1 {kind} {}", rule.head.len());
-                for a in &rule.head {
-                    let _ = write!(out, " {a}");
-                }
+                out.extend_from_slice(match rule.head_kind {
+                    HeadKind::Disjunction => b"1 0",
+                    HeadKind::Choice => b"1 1",
+                });
+                write_lits(out, &rule.head);
                 match &rule.body {
                     Body::Normal(lits) => {
-                        let _ = write!(out, " 0");
+                        out.extend_from_slice(b" 0");
                         write_lits(out, lits);
                     }
                     Body::Weight { lower, lits } => {
-                        let _ = write!(out, " 1 {lower}");
+                        out.extend_from_slice(b" 1");
+                        push_int(out, *lower);
                         write_wlits(out, lits);
                     }
                 }
             }
             Stmt::Minimize(i) => {
                 let m = &p.minimize[i as usize];
-                let _ = write!(out, "2 {}", m.priority);
+                out.push(b'2');
+                push_int(out, m.priority);
                 write_wlits(out, &m.lits);
             }
             Stmt::Project { start, len } => {
@@ -420,18 +418,43 @@ fn write_step(out: &mut Vec<u8>, step: &AspifStep) {
     out.extend_from_slice(b"0\n");
 }
 
-fn write_lits<T: fmt::Display>(out: &mut Vec<u8>, lits: &[T]) {
-    let _ = write!(out, " {}", lits.len());
-    for l in lits {
-        let _ = write!(out, " {l}");
+/// Writes ` n x1 .. xn`.
+fn write_lits<T: Copy + Into<i64>>(out: &mut Vec<u8>, lits: &[T]) {
+    push_int(out, lits.len() as i64);
+    for &l in lits {
+        push_int(out, l.into());
     }
 }
 
+/// Writes ` n l1 w1 .. ln wn`.
 fn write_wlits(out: &mut Vec<u8>, lits: &[(Lit, Weight)]) {
-    let _ = write!(out, " {}", lits.len());
-    for (l, w) in lits {
-        let _ = write!(out, " {l} {w}");
+    push_int(out, lits.len() as i64);
+    for &(l, w) in lits {
+        push_int(out, l.into());
+        push_int(out, w);
     }
+}
+
+/// Writes a space and then `v` in decimal (the writer's hot path; `write!` is several times
+/// slower).
+fn push_int(out: &mut Vec<u8>, v: i64) {
+    let mut buf = [0u8; 21];
+    let mut i = buf.len();
+    let mut n = v.unsigned_abs();
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    if v < 0 {
+        i -= 1;
+        buf[i] = b'-';
+    }
+    out.push(b' ');
+    out.extend_from_slice(&buf[i..]);
 }
 
 /// A position in the input; all token reading goes through it.
@@ -500,15 +523,27 @@ impl<'a> Cursor<'a> {
             self.pos += 1;
         }
         let digits = self.pos;
-        let mut value: i128 = 0;
+        let mut magnitude: u64 = 0;
+        let mut overflow = false;
         while let Some(&b) = self.src.get(self.pos) {
             if !b.is_ascii_digit() {
                 break;
             }
-            // Saturate far above any field's range; the range check below reports it.
-            value = (value * 10 + i128::from(b - b'0')).min(i128::from(u64::MAX));
+            match magnitude
+                .checked_mul(10)
+                .and_then(|m| m.checked_add(u64::from(b - b'0')))
+            {
+                Some(m) => magnitude = m,
+                None => overflow = true,
+            }
             self.pos += 1;
         }
+        // An overflowing magnitude is beyond every field's range; the check below reports it.
+        let mut value = if overflow {
+            i128::from(u64::MAX) + 1
+        } else {
+            i128::from(magnitude)
+        };
         let ends_token = matches!(
             self.src.get(self.pos),
             None | Some(b' ' | b'\t' | b'\r' | b'\n')

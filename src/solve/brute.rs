@@ -22,7 +22,7 @@
 
 use crate::ground::program::{Atom, ExternalValue, GroundProgram, Lit, Weight};
 
-use super::check::check_assignment;
+use super::check::{check_assignment, external_values};
 use super::config::CrMode;
 
 /// The largest number of candidate atoms the brute-force solver accepts.
@@ -57,7 +57,7 @@ pub fn stable_models(program: &GroundProgram) -> Vec<Vec<Atom>> {
             can_be_true[h as usize] = true;
         }
     }
-    for &(a, v) in &program.externals {
+    for (a, v) in external_values(program) {
         if v != ExternalValue::Release {
             can_be_true[a as usize] = true;
         }

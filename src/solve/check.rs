@@ -20,7 +20,9 @@
 //!
 //! Externals (statement 5): `Free` ones are free choices (as `{a}.`); `True` and `False` ones are
 //! free choices that the candidate must also assign as given; `Release`d ones are ordinary atoms.
-//! The last external statement for an atom wins. Assumptions must hold in the candidate.
+//! The last external statement for an atom wins. As in clasp, an external statement on an atom
+//! that occurs in some rule head is ignored: the rules define the atom (`#external a. a :- b.`
+//! has the answer sets of `a :- b.`). Assumptions must hold in the candidate.
 //!
 //! Algorithm: (1) every rule is checked to be satisfied by X; (2) the least model L of the
 //! reduct, with each disjunctive head cut to its atoms in X, is computed with counters in linear
@@ -272,11 +274,20 @@ fn find_cycle(edges: &[(i32, i32)]) -> Option<i32> {
     None
 }
 
-/// The effective value of each external atom (the last statement for an atom wins), sorted.
-fn external_values(program: &GroundProgram) -> Vec<(Atom, ExternalValue)> {
+/// The effective value of each external atom without rules (the last statement for an atom
+/// wins), in order of first statement.
+pub fn external_values(program: &GroundProgram) -> Vec<(Atom, ExternalValue)> {
+    let mut defined = std::collections::HashSet::new();
+    for rule in &program.rules {
+        defined.extend(rule.head.iter().copied());
+    }
     let mut values: Vec<(Atom, ExternalValue)> = Vec::new();
     let mut seen = std::collections::HashMap::new();
-    for &(atom, value) in &program.externals {
+    for &(atom, value) in program
+        .externals
+        .iter()
+        .filter(|(a, _)| !defined.contains(a))
+    {
         match seen.get(&atom) {
             Some(&i) => values[i] = (atom, value),
             None => {

@@ -560,6 +560,11 @@ impl Solver {
     /// call must stop.
     fn report(&mut self, call: &mut Call<'_>, optimal: bool, dedup: bool) -> bool {
         let mut m = self.model(call.phase_count + 1, optimal);
+        if self.config.check_models {
+            if let Err(v) = super::check::check(&self.prog, &m.atoms) {
+                panic!("internal error: the solver found a model that is not stable: {v:?}");
+            }
+        }
         if dedup {
             let key: Vec<u32> = m
                 .atoms

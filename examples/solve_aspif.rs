@@ -1,0 +1,126 @@
+//! Reads an aspif program (a file, or standard input for `-` or no file) and prints its answer
+//! sets as clasp does, using Lucent's solver. A development tool for `scripts/bench_solve.sh`;
+//! the real command line is `lucent --mode=clasp`.
+//!
+//! Usage: `solve_aspif [-n N] [--opt-mode=opt|optN|enum[,B..]|ignore]
+//! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [-q] [FILE]`.
+
+use lucent::ground::aspif;
+use lucent::solve::{Config, CrMode, EnumMode, OptMode, Outcome, Solver};
+use std::io::Read;
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+fn main() -> ExitCode {
+    let start = Instant::now();
+    let mut config = Config::default();
+    let mut models: Option<usize> = None;
+    let mut file: Option<String> = None;
+    let mut quiet = false;
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut i = 0;
+    while i < args.len() {
+        let a = &args[i];
+        if a == "-n" {
+            i += 1;
+            models = args.get(i).and_then(|s| s.parse().ok());
+        } else if let Some(v) = a.strip_prefix("-n") {
+            models = v.parse().ok();
+        } else if let Some(v) = a.strip_prefix("--models=") {
+            models = v.parse().ok();
+        } else if let Some(v) = a.strip_prefix("--opt-mode=") {
+            let mut parts = v.split(',');
+            config.opt_mode = match parts.next() {
+                Some("optN") => OptMode::OptN,
+                Some("enum") => OptMode::Enum(parts.filter_map(|b| b.parse().ok()).collect()),
+                Some("ignore") => OptMode::Ignore,
+                _ => OptMode::Opt,
+            };
+        } else if let Some(v) = a.strip_prefix("--enum-mode=") {
+            config.enum_mode = match v {
+                "brave" => EnumMode::Brave,
+                "cautious" => EnumMode::Cautious,
+                _ => EnumMode::Auto,
+            };
+        } else if a == "--project" {
+            config.project = true;
+        } else if a == "--cr=subset" {
+            config.cr_mode = CrMode::Subset;
+        } else if let Some(v) = a.strip_prefix("--time-limit=") {
+            if let Ok(s) = v.parse::<u64>() {
+                config.deadline = Some(start + Duration::from_secs(s));
+            }
+        } else if a == "-q" {
+            quiet = true;
+        } else {
+            file = Some(a.clone());
+        }
+        i += 1;
+    }
+    let mut bytes = Vec::new();
+    let read = match file.as_deref() {
+        None | Some("-") => std::io::stdin().read_to_end(&mut bytes).map(|_| ()),
+        Some(path) => std::fs::read(path).map(|b| bytes = b),
+    };
+    if let Err(e) = read {
+        eprintln!("error: cannot read input: {e}");
+        return ExitCode::from(65);
+    }
+    let program = match aspif::read_program(&bytes) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(65);
+        }
+    };
+    let optimizing = !program.minimize.is_empty() && config.opt_mode != OptMode::Ignore;
+    config.models = models.unwrap_or(if optimizing || config.enum_mode != EnumMode::Auto {
+        0
+    } else {
+        1
+    });
+    let mut solver = Solver::new(&program, config);
+    let mut count = 0;
+    let mut last_costs: Vec<i64> = Vec::new();
+    let result = solver.for_each_model(&[], &mut |m| {
+        count += 1;
+        last_costs = m.costs.clone();
+        if !quiet {
+            println!("Answer: {}", m.number);
+            println!("{}", m.symbols.join(" "));
+            if !m.costs.is_empty() {
+                let c: Vec<String> = m.costs.iter().map(|c| c.to_string()).collect();
+                println!("Optimization: {}", c.join(" "));
+            }
+        }
+        true
+    });
+    println!(
+        "{}",
+        match result.outcome {
+            Outcome::Satisfiable => "SATISFIABLE",
+            Outcome::Unsatisfiable => "UNSATISFIABLE",
+            Outcome::Unknown => "UNKNOWN",
+            Outcome::Optimum => "OPTIMUM FOUND",
+        }
+    );
+    println!();
+    println!(
+        "Models       : {}{}",
+        count,
+        if result.exhausted { "" } else { "+" }
+    );
+    if !last_costs.is_empty() {
+        let c: Vec<String> = last_costs.iter().map(|c| c.to_string()).collect();
+        println!("Optimization : {}", c.join(" "));
+    }
+    println!("Choices      : {}", result.stats.choices);
+    println!("Conflicts    : {}", result.stats.conflicts);
+    println!("Time         : {:.3}s", start.elapsed().as_secs_f64());
+    ExitCode::from(match result.outcome {
+        Outcome::Unknown => 1,
+        Outcome::Unsatisfiable => 20,
+        _ if result.exhausted => 30,
+        _ => 10,
+    })
+}

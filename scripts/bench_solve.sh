@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Runs clasp and Lucent's solver side by side on the aspif that gringo makes from the benchmark
+# pairs in ../shared/data/bench (MANIFEST.tsv), and prints per-row times, the ratio
+# lucent/clasp, whether both agree (result and model count, or optimum), and the geometric mean
+# of the ratios over the rows both finished. A development script: it may read ../shared.
+#
+# Usage: scripts/bench_solve.sh [TIMEOUT_SECONDS] [FAMILY_REGEX]
+# Needs gringo and clasp (apt-get install -y gringo clasp).
+set -u
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+BENCH=${BENCH_DIR:-$ROOT/../shared/data/bench}
+LIMIT=${1:-60}
+FILTER=${2:-.}
+command -v gringo >/dev/null && command -v clasp >/dev/null || {
+    echo "install clingo: apt-get install -y gringo clasp" >&2
+    exit 1
+}
+cargo build --quiet --release --no-default-features --example solve_aspif --manifest-path "$ROOT/Cargo.toml" || exit 1
+OURS=${CARGO_TARGET_DIR:-$ROOT/target}/release/examples/solve_aspif
+TMP=${TMPDIR:-/tmp}/lucent-bench-solve
+mkdir -p "$TMP"
+
+now() { date +%s.%N; }
+# result word and model count from clasp-style output
+summary() { awk '/^(SATISFIABLE|UNSATISFIABLE|OPTIMUM FOUND|UNKNOWN)$/{r=$0} /^Models/{m=$3} /^Optimization *:/{o=""; for(i=3;i<=NF;i++) o=o" "$i} /^Optimization: /{last=""; for(i=2;i<=NF;i++) last=last" "$i} END{ if (o=="") o=last; printf "%s|%s|%s", r, m, o}'; }
+
+printf "%-20s %-34s %-4s %9s %9s %8s  %s\n" family instance mode clasp_s lucent_s ratio agree
+RATIOS=()
+# Empty fields would collapse with a whitespace separator, so re-separate with a unit separator.
+tail -n +2 "$BENCH/MANIFEST.tsv" | awk -F'\t' -v OFS=$'\x1f' '{print $1,$2,$3,($4==""?"-":$4),$5}' |
+while IFS=$'\x1f' read -r family enc inst args mode; do
+    [[ $family =~ $FILTER ]] || continue
+    [ "$args" = "-" ] && args=
+    key=$(echo "$enc $inst $args" | md5sum | cut -c1-12)
+    aspif="$TMP/$key.aspif"
+    if [ ! -s "$aspif" ]; then
+        # shellcheck disable=SC2086
+        timeout 300 gringo --output=intermediate "$BENCH/$enc" "$BENCH/$inst" $args >"$aspif" 2>/dev/null || { rm -f "$aspif"; echo "$family $inst: grounding failed"; continue; }
+    fi
+    case $mode in n1) nopt="-n1";; n0) nopt="-n0";; *) nopt="";; esac
+    t0=$(now); cout=$(timeout "$LIMIT" clasp $nopt -q "$aspif" 2>/dev/null); t1=$(now)
+    oout=$(timeout "$LIMIT" "$OURS" $nopt -q "$aspif" 2>/dev/null); t2=$(now)
+    ct=$(echo "$t1 - $t0" | bc); ot=$(echo "$t2 - $t1" | bc)
+    cs=$(echo "$cout" | summary); os=$(echo "$oout" | summary)
+    if [ -z "${cs%%|*}" ]; then cs="TIMEOUT||"; fi
+    if [ -z "${os%%|*}" ]; then os="TIMEOUT||"; fi
+    if [ "$mode" = opt ]; then
+        # The number of improving models depends on the search; compare result and optimum.
+        cs="${cs%%|*}|${cs##*|}"; os="${os%%|*}|${os##*|}"
+    fi
+    if [ "$cs" = "$os" ]; then agree=yes; else agree="NO clasp=[$cs] lucent=[$os]"; fi
+    ratio=$(echo "r=$ot/($ct+0.001); scale=2; r/1" | bc -l)
+    [[ $cs == TIMEOUT* || $os == TIMEOUT* ]] && ratio="-"
+    printf "%-20s %-34s %-4s %9.3f %9.3f %8s  %s\n" "$family" "$(basename "$inst")" "$mode" "$ct" "$ot" "$ratio" "$agree"
+    [ "$ratio" != "-" ] && echo "$ct $ot" >>"$TMP/ratios.$$"
+done
+if [ -s "$TMP/ratios."* ] 2>/dev/null || ls "$TMP"/ratios.* >/dev/null 2>&1; then
+    cat "$TMP"/ratios.* | awk '{ c=($1<0.01?0.01:$1); o=($2<0.01?0.01:$2); s+=log(o/c); n++ } END { if (n) printf "geometric mean of lucent/clasp time ratios over %d rows (times floored at 10 ms): %.2f\n", n, exp(s/n) }'
+    rm -f "$TMP"/ratios.*
+fi
