@@ -5,7 +5,10 @@ use std::collections::BTreeSet;
 use std::process::Command;
 
 fn expected_plans() -> BTreeSet<Vec<String>> {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/domains/tabletop/expected/plans.json");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/domains/tabletop/expected/plans.json"
+    );
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     json["models"]
@@ -32,7 +35,12 @@ fn tabletop_answer_sets_match_clingo() {
         .args(["-n0", "--outf=2", "--check", program])
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(30), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(30),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let got: BTreeSet<Vec<String>> = json["Call"][0]["Witnesses"]
         .as_array()
@@ -50,7 +58,10 @@ fn tabletop_answer_sets_match_clingo() {
         })
         .collect();
     // Each answer set is printed once (REFERENCE.md), so the count must match too.
-    assert_eq!(json["Call"][0]["Witnesses"].as_array().unwrap().len(), got.len());
+    assert_eq!(
+        json["Call"][0]["Witnesses"].as_array().unwrap().len(),
+        got.len()
+    );
     assert_eq!(got, expected_plans());
 }
 
