@@ -5,9 +5,9 @@
 //! (`base` at the bottom of the dependency order, `cli` at the top). See ARCHITECTURE.md.
 
 pub mod base;
-pub mod syntax;
+pub mod cli;
 pub mod ground;
-pub mod solve;
 #[cfg(feature = "sim")]
 pub mod sim;
-pub mod cli;
+pub mod solve;
+pub mod syntax;

@@ -21,7 +21,8 @@
 
 use std::io::{self, Write};
 
-use crate::solve::{EnumMode, Model, Outcome, SolveResult, StopReason};
+use crate::ground::program::GroundProgram;
+use crate::solve::{Config, EnumMode, Model, OptMode, Outcome, SolveResult, StopReason};
 
 /// Exit code bit: a model was found.
 pub const EXIT_SAT: i32 = 10;
@@ -145,6 +146,36 @@ pub struct Context {
     pub has_cr: bool,
     /// Number of distinct shown symbols of the program (for brave consequence counts).
     pub shown_total: usize,
+    /// Shown symbols that hold in every model (output statements without condition), sorted:
+    /// the cautious consequences known before the search.
+    pub facts: Vec<String>,
+}
+
+impl Context {
+    /// The context of solving `program` with `config`, read from `inputs`.
+    pub fn for_program(program: &GroundProgram, config: &Config, inputs: Vec<String>) -> Context {
+        let has_minimize = !program.minimize.is_empty() && config.opt_mode != OptMode::Ignore;
+        let mut symbols: Vec<&str> = program.outputs.iter().map(|o| o.symbol.as_str()).collect();
+        symbols.sort_unstable();
+        symbols.dedup();
+        let mut facts: Vec<String> = program
+            .outputs
+            .iter()
+            .filter(|o| o.condition.is_empty())
+            .map(|o| o.symbol.clone())
+            .collect();
+        facts.sort_unstable();
+        facts.dedup();
+        Context {
+            inputs,
+            has_minimize,
+            optimizing: has_minimize && matches!(config.opt_mode, OptMode::Opt | OptMode::OptN),
+            enum_mode: config.enum_mode,
+            has_cr: !program.cr_rules.is_empty(),
+            shown_total: symbols.len(),
+            facts,
+        }
+    }
 }
 
 impl Report {
@@ -153,8 +184,9 @@ impl Report {
     ///
     /// Consequence counts: the solver reports the current consequences as the model's symbols
     /// but not which of them are already decided, so for brave mode the open atoms are the
-    /// shown atoms not yet brave, and for cautious mode all current atoms count as open until
-    /// the search is exhausted (clingo may count facts as decided earlier).
+    /// shown atoms not yet brave, and for cautious mode the current atoms other than shown
+    /// facts count as open until the search is exhausted (clasp counts every atom fixed at the
+    /// top level as decided, which can be more).
     pub fn new(result: &SolveResult, context: Context) -> Report {
         let n = result.models.len();
         let models = result
@@ -220,10 +252,17 @@ fn consequences(model: &Model, context: &Context, final_: bool) -> Option<Conseq
             true_count: len,
             open: 0,
         }),
-        EnumMode::Cautious => Some(Consequences {
-            true_count: 0,
-            open: len,
-        }),
+        EnumMode::Cautious => {
+            let known = model
+                .symbols
+                .iter()
+                .filter(|s| context.facts.binary_search(s).is_ok())
+                .count();
+            Some(Consequences {
+                true_count: known,
+                open: len - known,
+            })
+        }
     }
 }
 

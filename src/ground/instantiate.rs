@@ -1,0 +1,1824 @@
+//! Instantiation: grounds rewritten statements bottom-up over the predicate dependency graph.
+//!
+//! Algorithm (Kaminski, Schaub, TPLP 2022, simplified): strongly connected components of the
+//! predicate dependency graph are grounded in topological order; inside a recursive component,
+//! semi-naive evaluation grounds each rule once per combination that uses at least one atom new
+//! in the last round. Components with an aggregate or conditional literal over one of their own
+//! predicates are instead grounded naively to a fixpoint, keeping only the last round's rules
+//! (aggregate instances must see every element). Joins use per-predicate indexes on the bound
+//! argument positions, built lazily and extended as atoms arrive.
+//!
+//! Invariants:
+//! - Internal atom ids are `1..=atoms.len()`; an atom is *in the domain* once some rule instance
+//!   can derive it; `fact` atoms are certainly true, and they never lose that status.
+//! - A positive body literal only matches atoms in the domain; a fact matched positively is
+//!   removed from the ground body; `not a` with `a` a fact kills the instance, and `not a` with
+//!   `a` of a complete predicate outside the domain is removed.
+//! - Ground rules use internal ids; `simplify` renumbers them for aspif.
+
+use hashbrown::HashMap;
+use hashbrown::HashTable;
+use smallvec::SmallVec;
+use std::hash::BuildHasher;
+
+use crate::base::{Diagnostic, Diagnostics, SourceMap, Span, WarningKind};
+use crate::syntax::ast::{AggregateFunction, CmpOp, Sign};
+
+use super::program::{Body, ExternalValue, HeadKind, HeuristicModifier, Lit, Origin, Rule, Weight};
+use super::rewrite::{Compiled, NAgg, NAtom, NHead, NKind, NLit, NStmt, PredId};
+use super::symbol::{SymData, SymId, Symbols};
+use super::term::{Binding, NTerm};
+
+/// Internal atom id, `1..`.
+pub type AtomId = u32;
+
+/// Why grounding stopped early.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StopReason {
+    /// The configured size limit was exceeded.
+    SizeLimit,
+    /// The deadline passed.
+    Deadline,
+}
+
+/// What is known about one atom.
+#[derive(Clone, Copy, Debug)]
+pub struct AtomInfo {
+    /// The atom as a symbol (`p(1)`); `None` for auxiliary atoms.
+    pub sym: Option<SymId>,
+    /// Its predicate (`u32::MAX` for auxiliary atoms).
+    pub pred: PredId,
+    /// Certainly true.
+    pub fact: bool,
+    /// Derivable by some ground rule (or external).
+    pub in_domain: bool,
+    /// Position in the predicate's domain list.
+    pub dom_pos: u32,
+}
+
+/// Index of a predicate's atoms on a set of bound argument positions.
+#[derive(Default)]
+struct Index {
+    /// Atoms `[0, upto)` of the domain list are indexed.
+    upto: usize,
+    /// Key: the values at the bound positions; value: domain positions, increasing.
+    map: HashMap<SmallVec<[SymId; 4]>, Vec<u32>>,
+}
+
+/// The atoms of one predicate.
+#[derive(Default)]
+struct Domain {
+    /// Atoms in derivation order.
+    atoms: Vec<AtomId>,
+    /// Indexes by bound-position mask.
+    indexes: HashMap<u64, Index>,
+    /// All rules that can derive the predicate have been grounded.
+    complete: bool,
+    /// Semi-naive: positions below `old` were seen by every rule in all combinations.
+    old: u32,
+    /// Semi-naive: positions in `[old, delta)` are new in this round.
+    delta: u32,
+}
+
+/// A position range in a domain list.
+type Range = (u32, u32);
+
+/// Grounding limits, as values.
+#[derive(Clone, Debug, Default)]
+pub struct Limits {
+    /// Maximum number of ground rules plus atoms.
+    pub max_size: Option<usize>,
+    /// Stop after this instant (checked every few thousand rules).
+    pub deadline: Option<std::time::Instant>,
+}
+
+/// A minimize element key: priority, weight, tuple.
+type MinKey = (i32, i32, Vec<SymId>);
+
+/// The grounder's state.
+pub struct Grounder<'a> {
+    /// Symbols.
+    pub syms: Symbols,
+    /// Atom table, index `id - 1`.
+    pub atoms: Vec<AtomInfo>,
+    /// Atom of each predicate-atom symbol.
+    atom_map: HashMap<SymId, AtomId>,
+    /// Domains, by predicate.
+    domains: Vec<Domain>,
+    /// Ground rules over internal ids.
+    pub rules: Vec<Rule>,
+    /// Origins parallel to `rules` (when provenance is on).
+    pub origins: Vec<Origin>,
+    /// Deduplication of `rules`.
+    rule_set: HashTable<u32>,
+    /// Hasher for `rule_set`.
+    hasher: hashbrown::DefaultHashBuilder,
+    /// Diagnostics.
+    pub diags: &'a mut Diagnostics,
+    /// Sources for snippets.
+    sources: Option<&'a SourceMap>,
+    /// Record origins.
+    pub provenance: bool,
+    /// Limits.
+    limits: Limits,
+    /// Set when grounding must stop.
+    pub stopped: Option<StopReason>,
+    /// Spans of undefined operations already reported.
+    reported: hashbrown::HashSet<Span>,
+    /// `not not a` auxiliaries, by atom.
+    notnot: HashMap<AtomId, AtomId>,
+    /// CR application atoms by (statement, ground global values).
+    cr_appl: HashMap<(u32, Vec<SymId>), AtomId>,
+    /// Ground CR rules: application atom and label.
+    pub cr_rules: Vec<(AtomId, String)>,
+    /// Minimize elements: key to alternative conditions.
+    pub minimize: HashMap<MinKey, Vec<Vec<Lit>>>,
+    /// Insertion order of minimize keys.
+    pub minimize_order: Vec<MinKey>,
+    /// `#show t : body` instances.
+    pub shows: Vec<(SymId, Vec<Lit>)>,
+    /// Projected atoms.
+    pub projections: Vec<AtomId>,
+    /// Externals.
+    pub externals: Vec<(AtomId, ExternalValue)>,
+    /// Heuristics with internal atom ids.
+    pub heuristics: Vec<super::program::Heuristic>,
+    /// Edges.
+    pub edges: Vec<super::program::Edge>,
+    /// Node numbers of `#edge` terms.
+    edge_nodes: HashMap<SymId, i32>,
+    /// Rules emitted since the last deadline check.
+    since_check: u32,
+    /// Grounding a component naively: derived atoms are not marked as facts, since a later
+    /// round may withdraw the rule that derived them.
+    naive: bool,
+    /// Computing a naive component's domain: aggregates over its predicates are assumed true.
+    optimistic: bool,
+}
+
+/// Per-statement join state.
+struct Ctx {
+    /// Variable values.
+    binding: Binding,
+    /// Ground body literals so far.
+    body: Vec<Lit>,
+}
+
+/// The value of an aggregate atom under a guard, over ground elements.
+enum Truth {
+    /// Certainly true.
+    True,
+    /// Certainly false.
+    False,
+    /// True exactly when all these literals are.
+    Lits(Vec<Lit>),
+}
+
+impl<'a> Grounder<'a> {
+    /// A grounder over `syms` (which holds the symbols of the compiled program).
+    pub fn new(
+        syms: Symbols,
+        num_preds: usize,
+        diags: &'a mut Diagnostics,
+        sources: Option<&'a SourceMap>,
+        provenance: bool,
+        limits: Limits,
+    ) -> Grounder<'a> {
+        let mut domains = Vec::with_capacity(num_preds);
+        domains.resize_with(num_preds, Domain::default);
+        Grounder {
+            syms,
+            atoms: Vec::new(),
+            atom_map: HashMap::new(),
+            domains,
+            rules: Vec::new(),
+            origins: Vec::new(),
+            rule_set: HashTable::new(),
+            hasher: hashbrown::DefaultHashBuilder::default(),
+            diags,
+            sources,
+            provenance,
+            limits,
+            stopped: None,
+            reported: hashbrown::HashSet::new(),
+            notnot: HashMap::new(),
+            cr_appl: HashMap::new(),
+            cr_rules: Vec::new(),
+            minimize: HashMap::new(),
+            minimize_order: Vec::new(),
+            shows: Vec::new(),
+            projections: Vec::new(),
+            externals: Vec::new(),
+            heuristics: Vec::new(),
+            edges: Vec::new(),
+            edge_nodes: HashMap::new(),
+            since_check: 0,
+            naive: false,
+            optimistic: false,
+        }
+    }
+
+    fn snippet(&self, span: Span) -> String {
+        match self.sources {
+            Some(s) if (span.file.0 as usize) < s.len() => s.get(span.file).slice(span).to_string(),
+            _ => String::new(),
+        }
+    }
+
+    fn undefined(&mut self, span: Span) {
+        if self.reported.insert(span) {
+            let d =
+                Diagnostic::warning(WarningKind::OperationUndefined, span, "operation undefined");
+            let s = self.snippet(span);
+            self.diags
+                .push(if s.is_empty() { d } else { d.with_snippet(s) });
+        }
+    }
+
+    fn eval(&mut self, t: &NTerm, b: &Binding) -> Option<SymId> {
+        match t.eval(&mut self.syms, b) {
+            Ok(v) => Some(v),
+            Err(span) => {
+                self.undefined(span);
+                None
+            }
+        }
+    }
+
+    /// A fresh auxiliary atom.
+    pub fn aux(&mut self) -> AtomId {
+        self.atoms.push(AtomInfo {
+            sym: None,
+            pred: u32::MAX,
+            fact: false,
+            in_domain: true,
+            dom_pos: 0,
+        });
+        self.atoms.len() as AtomId
+    }
+
+    /// The atom of a predicate-atom symbol, created outside the domain if new.
+    pub fn atom_of(&mut self, sym: SymId, pred: PredId) -> AtomId {
+        if let Some(&a) = self.atom_map.get(&sym) {
+            return a;
+        }
+        self.atoms.push(AtomInfo {
+            sym: Some(sym),
+            pred,
+            fact: false,
+            in_domain: false,
+            dom_pos: 0,
+        });
+        let id = self.atoms.len() as AtomId;
+        self.atom_map.insert(sym, id);
+        id
+    }
+
+    /// The atom of a symbol, if it exists.
+    pub fn find_atom(&self, sym: SymId) -> Option<AtomId> {
+        self.atom_map.get(&sym).copied()
+    }
+
+    fn info(&self, a: AtomId) -> &AtomInfo {
+        &self.atoms[a as usize - 1]
+    }
+
+    /// Puts an atom into its predicate's domain.
+    fn derive(&mut self, a: AtomId) {
+        let info = self.atoms[a as usize - 1];
+        if info.in_domain || info.pred == u32::MAX {
+            return;
+        }
+        let d = &mut self.domains[info.pred as usize];
+        let pos = d.atoms.len() as u32;
+        d.atoms.push(a);
+        let i = &mut self.atoms[a as usize - 1];
+        i.in_domain = true;
+        i.dom_pos = pos;
+        self.check_size();
+    }
+
+    fn check_size(&mut self) {
+        if let Some(max) = self.limits.max_size {
+            if self.rules.len() + self.atoms.len() > max {
+                self.stopped = Some(StopReason::SizeLimit);
+            }
+        }
+    }
+
+    /// Adds a ground rule unless an equal one exists; returns its index if added.
+    fn add_rule(&mut self, rule: Rule, origin: impl FnOnce() -> Origin) -> bool {
+        let hash = self.hasher.hash_one(&rule);
+        let rules = &self.rules;
+        if self
+            .rule_set
+            .find(hash, |&i| rules[i as usize] == rule)
+            .is_some()
+        {
+            return false;
+        }
+        let idx = self.rules.len() as u32;
+        self.rules.push(rule);
+        if self.provenance {
+            self.origins.push(origin());
+        }
+        let Grounder {
+            rule_set,
+            rules,
+            hasher,
+            ..
+        } = self;
+        rule_set.insert_unique(hash, idx, |&i| hasher.hash_one(&rules[i as usize]));
+        self.check_size();
+        self.since_check += 1;
+        if self.since_check >= 4096 {
+            self.since_check = 0;
+            if let Some(d) = self.limits.deadline {
+                if std::time::Instant::now() >= d {
+                    self.stopped = Some(StopReason::Deadline);
+                }
+            }
+        }
+        true
+    }
+
+    fn origin(&self, stmt: &NStmt, b: &Binding) -> Origin {
+        Origin {
+            rule: stmt.stmt,
+            bindings: (0..stmt.num_vars)
+                .filter_map(|v| {
+                    b.get(v)
+                        .filter(|_| {
+                            !self
+                                .syms
+                                .names
+                                .resolve(stmt.var_names[v as usize])
+                                .starts_with('#')
+                        })
+                        .map(|s| (stmt.var_names[v as usize].0, s.0))
+                })
+                .collect(),
+        }
+    }
+
+    fn lookup_range(&self, pred: PredId, range: Option<Range>) -> Range {
+        range.unwrap_or((0, self.domains[pred as usize].atoms.len() as u32))
+    }
+
+    /// Candidate domain positions in `range` for `atom` under the binding.
+    fn candidates(
+        &mut self,
+        atom: &NAtom,
+        b: &Binding,
+        range: Range,
+    ) -> Option<SmallVec<[u32; 16]>> {
+        let mut mask = 0u64;
+        let mut key: SmallVec<[SymId; 4]> = SmallVec::new();
+        for (i, t) in atom.args.iter().enumerate() {
+            if i < 64 && t.bound_by_binding(b) {
+                let v = match t.eval(&mut self.syms, b) {
+                    Ok(v) => v,
+                    Err(span) => {
+                        self.undefined(span);
+                        return None;
+                    }
+                };
+                mask |= 1 << i;
+                key.push(v);
+            }
+        }
+        let d = &mut self.domains[atom.pred as usize];
+        if mask == 0 {
+            return Some((range.0..range.1).collect());
+        }
+        let idx = d.indexes.entry(mask).or_default();
+        // Extend the index to the atoms derived since it was last used.
+        while idx.upto < d.atoms.len() {
+            let a = d.atoms[idx.upto];
+            let sym = self.atoms[a as usize - 1]
+                .sym
+                .expect("predicate atom has a symbol");
+            let args = self.syms.args(sym);
+            let k: SmallVec<[SymId; 4]> = (0..args.len())
+                .filter(|&i| i < 64 && mask & (1 << i) != 0)
+                .map(|i| args[i])
+                .collect();
+            idx.map.entry(k).or_default().push(idx.upto as u32);
+            idx.upto += 1;
+        }
+        let list = match idx.map.get(&key) {
+            Some(l) => l,
+            None => return Some(SmallVec::new()),
+        };
+        let start = list.partition_point(|&p| p < range.0);
+        Some(
+            list[start..]
+                .iter()
+                .copied()
+                .take_while(|&p| p < range.1)
+                .collect(),
+        )
+    }
+
+    /// Grounds `lits[i..]` and calls `k` for every solution.
+    fn join(
+        &mut self,
+        ctx: &mut Ctx,
+        lits: &[NLit],
+        i: usize,
+        ranges: &[Option<Range>],
+        k: &mut dyn FnMut(&mut Self, &mut Ctx),
+    ) {
+        if self.stopped.is_some() {
+            return;
+        }
+        let Some(lit) = lits.get(i) else {
+            k(self, ctx);
+            return;
+        };
+        let mark = ctx.binding.mark();
+        let blen = ctx.body.len();
+        match lit {
+            NLit::Bool(true) => self.join(ctx, lits, i + 1, ranges, k),
+            NLit::Bool(false) => {}
+            NLit::Pred {
+                sign: Sign::Positive,
+                atom,
+            } => {
+                let range = self.lookup_range(atom.pred, ranges.get(i).copied().flatten());
+                let Some(cands) = self.candidates(atom, &ctx.binding, range) else {
+                    return;
+                };
+                for pos in cands {
+                    let a = self.domains[atom.pred as usize].atoms[pos as usize];
+                    let sym = self.info(a).sym.expect("predicate atom has a symbol");
+                    let mut ok = true;
+                    for (j, t) in atom.args.iter().enumerate() {
+                        let s = self.syms.args(sym)[j];
+                        if !t.matches(&mut self.syms, s, &mut ctx.binding) {
+                            ok = false;
+                            break;
+                        }
+                    }
+                    if ok {
+                        if !self.info(a).fact {
+                            ctx.body.push(a as Lit);
+                        }
+                        self.join(ctx, lits, i + 1, ranges, k);
+                    }
+                    ctx.binding.undo(mark);
+                    ctx.body.truncate(blen);
+                    if self.stopped.is_some() {
+                        return;
+                    }
+                }
+            }
+            NLit::Pred { sign, atom } => {
+                let Some(sym) = self.atom_sym(atom, &ctx.binding) else {
+                    return;
+                };
+                let complete = self.domains[atom.pred as usize].complete;
+                let existing = self.find_atom(sym);
+                let (in_domain, fact) = existing.map_or((false, false), |a| {
+                    (self.info(a).in_domain, self.info(a).fact)
+                });
+                match sign {
+                    Sign::Not => {
+                        // not a: true when a cannot be derived, false when a is a fact.
+                        if fact {
+                            return;
+                        }
+                        if !complete || in_domain {
+                            let a = self.atom_of(sym, atom.pred);
+                            ctx.body.push(-(a as Lit));
+                        }
+                        self.join(ctx, lits, i + 1, ranges, k);
+                    }
+                    _ => {
+                        // not not a: false when a cannot be derived, true when a is a fact.
+                        if complete && !in_domain {
+                            return;
+                        }
+                        if !fact {
+                            let a = self.atom_of(sym, atom.pred);
+                            let d = self.not_aux(a);
+                            ctx.body.push(-(d as Lit));
+                        }
+                        self.join(ctx, lits, i + 1, ranges, k);
+                    }
+                }
+                ctx.body.truncate(blen);
+            }
+            NLit::Cmp { op, lhs, rhs } => {
+                let lb = lhs.bound_by_binding(&ctx.binding);
+                let rb = rhs.bound_by_binding(&ctx.binding);
+                if lb && rb {
+                    let (Some(l), Some(r)) =
+                        (self.eval(lhs, &ctx.binding), self.eval(rhs, &ctx.binding))
+                    else {
+                        return;
+                    };
+                    if cmp_holds(&self.syms, *op, l, r) {
+                        self.join(ctx, lits, i + 1, ranges, k);
+                    }
+                } else {
+                    // X = t binds the unbound side.
+                    let (pat, val) = if rb { (lhs, rhs) } else { (rhs, lhs) };
+                    let Some(v) = self.eval(val, &ctx.binding) else {
+                        return;
+                    };
+                    if pat.matches(&mut self.syms, v, &mut ctx.binding) {
+                        self.join(ctx, lits, i + 1, ranges, k);
+                    }
+                    ctx.binding.undo(mark);
+                }
+            }
+            NLit::Interval { pat, lo, hi } => {
+                let (Some(l), Some(h)) = (self.eval(lo, &ctx.binding), self.eval(hi, &ctx.binding))
+                else {
+                    return;
+                };
+                let (Some(l), Some(h)) = (self.syms.num(l), self.syms.num(h)) else {
+                    return;
+                };
+                for v in l..=h {
+                    let s = self.syms.int(v);
+                    if pat.matches(&mut self.syms, s, &mut ctx.binding) {
+                        self.join(ctx, lits, i + 1, ranges, k);
+                    }
+                    ctx.binding.undo(mark);
+                    if self.stopped.is_some() {
+                        return;
+                    }
+                }
+            }
+            NLit::Agg(agg)
+                if self.optimistic && agg.binder.is_none() && self.reads_incomplete(agg) =>
+            {
+                // Computing the domain of a component with recursive aggregates: assume the
+                // aggregate can hold, so no atom is missed; the final round evaluates it.
+                self.join(ctx, lits, i + 1, ranges, k);
+            }
+            NLit::Agg(agg) if agg.elems.len() == 1 && agg.elems[0].lit.is_some() => {
+                self.conditional(ctx, agg, &mut |g, ctx| g.join(ctx, lits, i + 1, ranges, k));
+                ctx.binding.undo(mark);
+                ctx.body.truncate(blen);
+            }
+            NLit::Agg(agg) => {
+                self.aggregate(ctx, agg, &mut |g, ctx| g.join(ctx, lits, i + 1, ranges, k));
+                ctx.binding.undo(mark);
+                ctx.body.truncate(blen);
+            }
+        }
+    }
+
+    fn atom_sym(&mut self, atom: &NAtom, b: &Binding) -> Option<SymId> {
+        let mut vals: SmallVec<[SymId; 8]> = SmallVec::new();
+        for t in &atom.args {
+            vals.push(self.eval(t, b)?);
+        }
+        Some(self.syms.fun(atom.name, atom.neg, &vals))
+    }
+
+    /// `d :- not a.`, so that `not d` stands for `not not a`.
+    fn not_aux(&mut self, a: AtomId) -> AtomId {
+        if let Some(&d) = self.notnot.get(&a) {
+            return d;
+        }
+        let d = self.aux();
+        self.notnot.insert(a, d);
+        self.add_rule(
+            Rule {
+                head_kind: HeadKind::Disjunction,
+                head: vec![d],
+                body: Body::Normal(vec![-(a as Lit)]),
+            },
+            Origin::default,
+        );
+        d
+    }
+
+    /// Defines an auxiliary atom true exactly when one of `alternatives` (conjunctions) holds;
+    /// a single one-literal alternative is returned as is.
+    fn disjunction_lit(&mut self, alternatives: &[Vec<Lit>]) -> Lit {
+        if alternatives.len() == 1 && alternatives[0].len() == 1 {
+            return alternatives[0][0];
+        }
+        let a = self.aux();
+        for alt in alternatives {
+            self.add_rule(
+                Rule {
+                    head_kind: HeadKind::Disjunction,
+                    head: vec![a],
+                    body: Body::Normal(alt.clone()),
+                },
+                Origin::default,
+            );
+        }
+        if alternatives.iter().any(|c| c.is_empty()) {
+            self.atoms[a as usize - 1].fact = true;
+        }
+        a as Lit
+    }
+
+    /// True when an element condition of `agg` reads a predicate still being grounded.
+    fn reads_incomplete(&self, agg: &NAgg) -> bool {
+        let mut preds = Vec::new();
+        for e in &agg.elems {
+            e.cond.iter().for_each(|l| lit_preds(l, &mut preds));
+            if let Some(l) = &e.lit {
+                lit_preds(l, &mut preds);
+            }
+        }
+        preds.iter().any(|&p| !self.domains[p as usize].complete)
+    }
+
+    /// The default negation of a literal: `not a` for `a`, and for `not a` an atom standing
+    /// for `not not a` (never collapsed to `a`, which would add a positive dependency).
+    fn negate_lit(&mut self, l: Lit) -> Lit {
+        if l > 0 {
+            -l
+        } else {
+            -(self.not_aux((-l) as AtomId) as Lit)
+        }
+    }
+
+    /// `not (c1, ..., cn)` as one literal.
+    fn not_conj(&mut self, c: &[Lit]) -> Lit {
+        if c.len() == 1 && c[0] > 0 {
+            return -c[0];
+        }
+        let a = self.aux();
+        self.add_rule(
+            Rule {
+                head_kind: HeadKind::Disjunction,
+                head: vec![a],
+                body: Body::Normal(c.to_vec()),
+            },
+            Origin::default,
+        );
+        -(a as Lit)
+    }
+
+    /// A conditional body literal `l : c`: for each instance of `c`, `l` must hold. An
+    /// instance with a certain condition contributes `l` itself (positively, as gringo keeps
+    /// it); otherwise an auxiliary atom `x :- l.  x :- not c.` stands for `c -> l`.
+    fn conditional(&mut self, ctx: &mut Ctx, agg: &NAgg, k: &mut dyn FnMut(&mut Self, &mut Ctx)) {
+        let e = &agg.elems[0];
+        let l = e.lit.as_deref().expect("conditional literal");
+        let blen = ctx.body.len();
+        let mut found: Vec<(Vec<Lit>, Option<Vec<Lit>>)> = Vec::new();
+        self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
+            let cond = ctx.body[blen..].to_vec();
+            let b2 = ctx.body.len();
+            let mut sol: Option<Vec<Lit>> = None;
+            g.join(ctx, std::slice::from_ref(l), 0, &[], &mut |_, ctx| {
+                if sol.as_ref().map_or(true, |s| !s.is_empty()) {
+                    sol = Some(ctx.body[b2..].to_vec());
+                }
+            });
+            ctx.body.truncate(b2);
+            found.push((cond, sol));
+        });
+        ctx.body.truncate(blen);
+        let mut lits = Vec::new();
+        for (cond, sol) in found {
+            match (cond.is_empty(), sol) {
+                (_, Some(s)) if s.is_empty() => {}
+                (true, None) => return,
+                (true, Some(s)) => lits.extend(s),
+                (false, None) => lits.push(self.not_conj(&cond)),
+                (false, Some(s)) => {
+                    // x :- l.  x :- not c.  and, for a condition atom c, x | c :- not not l
+                    // (gringo's encoding: c -> l keeps c in the reduct when c depends on x).
+                    let nc = self.not_conj(&cond);
+                    let x = self.aux();
+                    for body in [s.clone(), vec![nc]] {
+                        self.add_rule(
+                            Rule {
+                                head_kind: HeadKind::Disjunction,
+                                head: vec![x],
+                                body: Body::Normal(body),
+                            },
+                            Origin::default,
+                        );
+                    }
+                    if cond.len() == 1 && cond[0] > 0 {
+                        let t = self.disjunction_lit(&[s]);
+                        let nt = self.negate_lit(t);
+                        let nnt = self.negate_lit(nt);
+                        self.add_rule(
+                            Rule {
+                                head_kind: HeadKind::Disjunction,
+                                head: vec![x, cond[0] as AtomId],
+                                body: Body::Normal(vec![nnt]),
+                            },
+                            Origin::default,
+                        );
+                    }
+                    lits.push(x as Lit);
+                }
+            }
+        }
+        ctx.body.extend(lits);
+        k(self, ctx);
+        ctx.body.truncate(blen);
+    }
+
+    /// Grounds the elements of an aggregate and continues with each way it can hold.
+    fn aggregate(&mut self, ctx: &mut Ctx, agg: &NAgg, k: &mut dyn FnMut(&mut Self, &mut Ctx)) {
+        // Ground elements: tuple -> alternative conditions (an empty condition is certain).
+        let mut tuples: Vec<Vec<SymId>> = Vec::new();
+        let mut conds: Vec<Vec<Vec<Lit>>> = Vec::new();
+        let mut pos: HashMap<Vec<SymId>, usize> = HashMap::new();
+        for e in &agg.elems {
+            let blen = ctx.body.len();
+            let mut found: Vec<(Vec<SymId>, Vec<Lit>)> = Vec::new();
+            self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
+                let mut t = Vec::with_capacity(e.terms.len());
+                for term in &e.terms {
+                    match g.eval(term, &ctx.binding) {
+                        Some(v) => t.push(v),
+                        None => return,
+                    }
+                }
+                found.push((t, ctx.body[blen..].to_vec()));
+            });
+            ctx.body.truncate(blen);
+            for (t, c) in found {
+                let i = *pos.entry(t.clone()).or_insert_with(|| {
+                    tuples.push(t);
+                    conds.push(Vec::new());
+                    tuples.len() - 1
+                });
+                if !conds[i].contains(&c) {
+                    conds[i].push(c);
+                }
+            }
+        }
+        // Weights: integers for sums and counts, symbols for min/max.
+        let mut elems: Vec<(SymId, Vec<Vec<Lit>>)> = Vec::new();
+        for (t, c) in tuples.into_iter().zip(conds) {
+            let w = match agg.func {
+                AggregateFunction::Count => self.syms.int(1),
+                _ => match t.first() {
+                    Some(&w) => w,
+                    None => continue,
+                },
+            };
+            if matches!(
+                agg.func,
+                AggregateFunction::Sum | AggregateFunction::SumPlus
+            ) && self.syms.num(w).is_none()
+            {
+                continue;
+            }
+            if agg.func == AggregateFunction::SumPlus && self.syms.num(w).is_some_and(|n| n <= 0) {
+                continue;
+            }
+            let certain = c.iter().any(|x| x.is_empty());
+            elems.push((w, if certain { Vec::new() } else { c }));
+        }
+        // Guard values.
+        let mut guards: Vec<(CmpOp, SymId)> = Vec::new();
+        for (i, (op, t)) in agg.guards.iter().enumerate() {
+            if Some(i) == agg.binder {
+                continue;
+            }
+            let Some(v) = self.eval(t, &ctx.binding) else {
+                return;
+            };
+            guards.push((*op, v));
+        }
+        let candidates: Vec<Option<SymId>> = match agg.binder {
+            None => vec![None],
+            Some(_) => self
+                .possible_values(agg.func, &elems)
+                .into_iter()
+                .map(Some)
+                .collect(),
+        };
+        let mark = ctx.binding.mark();
+        let blen = ctx.body.len();
+        for cand in candidates {
+            let mut gs = guards.clone();
+            if let Some(v) = cand {
+                let NTerm::Var(var) = &agg.guards[agg.binder.expect("binder")].1 else {
+                    continue;
+                };
+                ctx.binding.bind(*var, v);
+                gs.push((CmpOp::Eq, v));
+            }
+            let mut lits: Vec<Lit> = Vec::new();
+            let mut truth = true;
+            for (op, v) in gs {
+                match self.guard_truth(agg.func, &elems, op, v) {
+                    Truth::True => {}
+                    Truth::False => {
+                        truth = false;
+                        break;
+                    }
+                    Truth::Lits(l) => lits.extend(l),
+                }
+            }
+            // Apply the default-negation sign.
+            let proceed = match agg.sign {
+                Sign::Positive => {
+                    if truth {
+                        ctx.body.extend(lits);
+                    }
+                    truth
+                }
+                Sign::Not => {
+                    if !truth {
+                        true
+                    } else if lits.is_empty() {
+                        false
+                    } else {
+                        let a = self.disjunction_lit(&[lits]);
+                        let n = self.negate_lit(a);
+                        ctx.body.push(n);
+                        true
+                    }
+                }
+                Sign::NotNot => {
+                    if !truth {
+                        false
+                    } else if lits.is_empty() {
+                        true
+                    } else {
+                        let a = self.disjunction_lit(&[lits]);
+                        let n = self.disjunction_lit(&[vec![-a], vec![-a]]);
+                        ctx.body.push(-n);
+                        true
+                    }
+                }
+            };
+            if proceed {
+                k(self, ctx);
+            }
+            ctx.binding.undo(mark);
+            ctx.body.truncate(blen);
+            if self.stopped.is_some() {
+                return;
+            }
+        }
+    }
+
+    /// The values an aggregate can take (for `X = #agg{...}`).
+    fn possible_values(
+        &mut self,
+        func: AggregateFunction,
+        elems: &[(SymId, Vec<Vec<Lit>>)],
+    ) -> Vec<SymId> {
+        match func {
+            AggregateFunction::Min | AggregateFunction::Max => {
+                let mut vals: Vec<SymId> = Vec::new();
+                let certain: Vec<SymId> = elems
+                    .iter()
+                    .filter(|e| e.1.is_empty())
+                    .map(|e| e.0)
+                    .collect();
+                let best_certain = certain.iter().copied().reduce(|a, b| {
+                    let o = self.syms.compare(a, b);
+                    if (func == AggregateFunction::Min) == o.is_le() {
+                        a
+                    } else {
+                        b
+                    }
+                });
+                for (w, _) in elems {
+                    if let Some(c) = best_certain {
+                        let o = self.syms.compare(*w, c);
+                        let better = if func == AggregateFunction::Min {
+                            o.is_le()
+                        } else {
+                            o.is_ge()
+                        };
+                        if !better {
+                            continue;
+                        }
+                    }
+                    if !vals.contains(w) {
+                        vals.push(*w);
+                    }
+                }
+                if best_certain.is_none() {
+                    vals.push(if func == AggregateFunction::Min {
+                        self.syms.sup()
+                    } else {
+                        self.syms.inf()
+                    });
+                }
+                vals
+            }
+            _ => {
+                // Sums reachable by subsets of the uncertain elements, plus the certain sum.
+                let mut base: i64 = 0;
+                let mut sums: hashbrown::HashSet<i64> = hashbrown::HashSet::new();
+                sums.insert(0);
+                for (w, c) in elems {
+                    let n = self.syms.num(*w).unwrap_or(0) as i64;
+                    if c.is_empty() {
+                        base += n;
+                    } else {
+                        let next: Vec<i64> = sums.iter().map(|s| s + n).collect();
+                        sums.extend(next);
+                        if sums.len() > 100_000 {
+                            self.stopped = Some(StopReason::SizeLimit);
+                            return Vec::new();
+                        }
+                    }
+                }
+                let mut v: Vec<i64> = sums.into_iter().map(|s| s + base).collect();
+                v.sort_unstable();
+                v.into_iter()
+                    .filter_map(|s| i32::try_from(s).ok())
+                    .map(|s| self.syms.int(s))
+                    .collect()
+            }
+        }
+    }
+
+    /// When `aggregate op v` holds, as literals.
+    fn guard_truth(
+        &mut self,
+        func: AggregateFunction,
+        elems: &[(SymId, Vec<Vec<Lit>>)],
+        op: CmpOp,
+        v: SymId,
+    ) -> Truth {
+        match func {
+            AggregateFunction::Min | AggregateFunction::Max => {
+                self.minmax_truth(func, elems, op, v)
+            }
+            _ => {
+                let Some(k) = self.syms.num(v) else {
+                    // An integer compared with a non-integer: fixed by the term order.
+                    let zero = self.syms.int(0);
+                    return if cmp_holds(&self.syms, op, zero, v) {
+                        Truth::True
+                    } else {
+                        Truth::False
+                    };
+                };
+                let k = k as i64;
+                match op {
+                    CmpOp::Ge => self.sum_ge(elems, k),
+                    CmpOp::Gt => self.sum_ge(elems, k + 1),
+                    CmpOp::Le => {
+                        let t = self.sum_ge(elems, k + 1);
+                        negate(self, t)
+                    }
+                    CmpOp::Lt => {
+                        let t = self.sum_ge(elems, k);
+                        negate(self, t)
+                    }
+                    CmpOp::Eq => {
+                        let a = self.sum_ge(elems, k);
+                        let b = self.sum_ge(elems, k + 1);
+                        let nb = negate(self, b);
+                        conj(a, nb)
+                    }
+                    CmpOp::Ne => {
+                        let a = self.sum_ge(elems, k);
+                        let b = self.sum_ge(elems, k + 1);
+                        let nb = negate(self, b);
+                        let eq = conj(a, nb);
+                        negate(self, eq)
+                    }
+                }
+            }
+        }
+    }
+
+    /// `sum >= k` over weighted elements: true, false, or an auxiliary atom defined by a weight
+    /// rule `aux :- k' { l = w, ... }` (negative weights turned into complements).
+    fn sum_ge(&mut self, elems: &[(SymId, Vec<Vec<Lit>>)], k: i64) -> Truth {
+        let mut bound = k;
+        let mut lits: Vec<(Lit, Weight)> = Vec::new();
+        let mut max_extra: i64 = 0;
+        // Weights of the same literal add up (gringo does the same: `-1:a; 1:a` weighs 0).
+        let mut merged: Vec<(Lit, i64)> = Vec::new();
+        for (w, c) in elems {
+            let w = self.syms.num(*w).unwrap_or(0) as i64;
+            if c.is_empty() {
+                bound -= w;
+                continue;
+            }
+            let l = self.disjunction_lit(c);
+            match merged.iter_mut().find(|(x, _)| *x == l) {
+                Some(e) => e.1 += w,
+                None => merged.push((l, w)),
+            }
+        }
+        for (l, w) in merged {
+            if w > 0 {
+                lits.push((l, w));
+                max_extra += w;
+            } else if w < 0 {
+                // w*l == w + (-w)*(not l)
+                bound -= w;
+                let nl = self.negate_lit(l);
+                lits.push((nl, -w));
+                max_extra += -w;
+            }
+        }
+        if bound <= 0 {
+            return Truth::True;
+        }
+        if bound > max_extra {
+            return Truth::False;
+        }
+        let a = self.aux();
+        let body = if lits.iter().all(|&(_, w)| w == 1) && bound as usize == lits.len() {
+            Body::Normal(lits.iter().map(|&(l, _)| l).collect())
+        } else {
+            Body::Weight { lower: bound, lits }
+        };
+        self.add_rule(
+            Rule {
+                head_kind: HeadKind::Disjunction,
+                head: vec![a],
+                body,
+            },
+            Origin::default,
+        );
+        Truth::Lits(vec![a as Lit])
+    }
+
+    /// `#min`/`#max` compared with `v`. With `m` the extremum (`#inf` for an empty `#max`,
+    /// `#sup` for an empty `#min`): `max >= v` iff some weight is `>= v` (or `v` is `#inf`),
+    /// `max <= v` iff not `max > v`; `#min` is the mirror image.
+    fn minmax_truth(
+        &mut self,
+        func: AggregateFunction,
+        elems: &[(SymId, Vec<Vec<Lit>>)],
+        op: CmpOp,
+        v: SymId,
+    ) -> Truth {
+        let is_max = func == AggregateFunction::Max;
+        match op {
+            CmpOp::Eq => {
+                let a = self.minmax_dir(is_max, elems, CmpOp::Ge, v);
+                let b = self.minmax_dir(is_max, elems, CmpOp::Le, v);
+                conj(a, b)
+            }
+            CmpOp::Ne => {
+                let a = self.minmax_dir(is_max, elems, CmpOp::Ge, v);
+                let b = self.minmax_dir(is_max, elems, CmpOp::Le, v);
+                let eq = conj(a, b);
+                negate(self, eq)
+            }
+            op => self.minmax_dir(is_max, elems, op, v),
+        }
+    }
+
+    fn minmax_dir(
+        &mut self,
+        is_max: bool,
+        elems: &[(SymId, Vec<Vec<Lit>>)],
+        op: CmpOp,
+        v: SymId,
+    ) -> Truth {
+        let toward = if is_max {
+            matches!(op, CmpOp::Ge | CmpOp::Gt)
+        } else {
+            matches!(op, CmpOp::Le | CmpOp::Lt)
+        };
+        if !toward {
+            let complement = super::rewrite::negate_cmp(op);
+            let t = self.minmax_dir(is_max, elems, complement, v);
+            return negate(self, t);
+        }
+        let empty = if is_max {
+            self.syms.inf()
+        } else {
+            self.syms.sup()
+        };
+        if cmp_holds(&self.syms, op, empty, v) {
+            return Truth::True;
+        }
+        let mut alts: Vec<Vec<Lit>> = Vec::new();
+        for (w, c) in elems {
+            if cmp_holds(&self.syms, op, *w, v) {
+                if c.is_empty() {
+                    return Truth::True;
+                }
+                alts.extend(c.iter().cloned());
+            }
+        }
+        if alts.is_empty() {
+            Truth::False
+        } else {
+            Truth::Lits(vec![self.disjunction_lit(&alts)])
+        }
+    }
+
+    /// Grounds one statement with the given ranges for its body literals.
+    fn ground_stmt(&mut self, stmt: &NStmt, ranges: &[Option<Range>]) {
+        let mut ctx = Ctx {
+            binding: Binding::new(stmt.num_vars as usize),
+            body: Vec::new(),
+        };
+        self.join(&mut ctx, &stmt.body, 0, ranges, &mut |g, ctx| {
+            g.emit(stmt, ctx)
+        });
+    }
+
+    /// Produces the ground statement for one solution of the body.
+    fn emit(&mut self, stmt: &NStmt, ctx: &mut Ctx) {
+        match &stmt.kind {
+            NKind::Rule | NKind::Cr(_) => self.emit_rule(stmt, ctx),
+            NKind::Minimize {
+                weight,
+                priority,
+                terms,
+                maximize,
+            } => {
+                let (Some(w), Some(p)) = (
+                    self.eval(weight, &ctx.binding),
+                    self.eval(priority, &ctx.binding),
+                ) else {
+                    return;
+                };
+                let mut ts = Vec::new();
+                for t in terms {
+                    let Some(v) = self.eval(t, &ctx.binding) else {
+                        return;
+                    };
+                    ts.push(v);
+                }
+                let (Some(wn), Some(pn)) = (self.syms.num(w), self.syms.num(p)) else {
+                    let span = stmt.span;
+                    self.undefined(span);
+                    return;
+                };
+                let wn = if *maximize { wn.wrapping_neg() } else { wn };
+                let key = (pn, wn, ts);
+                let body = ctx.body.clone();
+                match self.minimize.get_mut(&key) {
+                    Some(v) => {
+                        if !v.contains(&body) {
+                            v.push(body)
+                        }
+                    }
+                    None => {
+                        self.minimize_order.push(key.clone());
+                        self.minimize.insert(key, vec![body]);
+                    }
+                }
+            }
+            NKind::Show(t) => {
+                let Some(v) = self.eval(t, &ctx.binding) else {
+                    return;
+                };
+                self.shows.push((v, ctx.body.clone()));
+            }
+            NKind::Project(a) => {
+                let Some(s) = self.atom_sym(a, &ctx.binding) else {
+                    return;
+                };
+                if let Some(id) = self.find_atom(s) {
+                    if !self.projections.contains(&id) {
+                        self.projections.push(id);
+                    }
+                }
+            }
+            NKind::External(a, value) => {
+                let Some(s) = self.atom_sym(a, &ctx.binding) else {
+                    return;
+                };
+                let id = self.atom_of(s, a.pred);
+                if self.info(id).fact {
+                    return;
+                }
+                self.derive(id);
+                if !self.externals.iter().any(|(x, _)| *x == id) {
+                    self.externals.push((id, *value));
+                }
+            }
+            NKind::Heuristic {
+                atom,
+                weight,
+                priority,
+                modifier,
+            } => {
+                let Some(s) = self.atom_sym(atom, &ctx.binding) else {
+                    return;
+                };
+                let Some(id) = self.find_atom(s) else { return };
+                let (Some(w), Some(p), Some(m)) = (
+                    self.eval(weight, &ctx.binding),
+                    self.eval(priority, &ctx.binding),
+                    self.eval(modifier, &ctx.binding),
+                ) else {
+                    return;
+                };
+                let modifier = match self.syms.get(m) {
+                    SymData::Fun {
+                        name,
+                        len: 0,
+                        neg: false,
+                        ..
+                    } => match self.syms.names.resolve(name) {
+                        "level" => HeuristicModifier::Level,
+                        "sign" => HeuristicModifier::Sign,
+                        "factor" => HeuristicModifier::Factor,
+                        "init" => HeuristicModifier::Init,
+                        "true" => HeuristicModifier::True,
+                        "false" => HeuristicModifier::False,
+                        _ => return,
+                    },
+                    _ => return,
+                };
+                let (Some(w), Some(p)) = (self.syms.num(w), self.syms.num(p)) else {
+                    return;
+                };
+                self.heuristics.push(super::program::Heuristic {
+                    modifier,
+                    atom: id,
+                    bias: w,
+                    priority: p.max(0) as u32,
+                    condition: ctx.body.clone(),
+                });
+            }
+            NKind::Edge(u, v) => {
+                let (Some(u), Some(v)) = (self.eval(u, &ctx.binding), self.eval(v, &ctx.binding))
+                else {
+                    return;
+                };
+                let n = self.edge_nodes.len() as i32;
+                let from = *self.edge_nodes.entry(u).or_insert(n);
+                let n = self.edge_nodes.len() as i32;
+                let to = *self.edge_nodes.entry(v).or_insert(n);
+                self.edges.push(super::program::Edge {
+                    from,
+                    to,
+                    condition: ctx.body.clone(),
+                });
+            }
+        }
+    }
+
+    fn emit_rule(&mut self, stmt: &NStmt, ctx: &mut Ctx) {
+        let mut head: Vec<AtomId> = Vec::new();
+        let mut extra_choices: Vec<(AtomId, Vec<Lit>)> = Vec::new();
+        let is_choice = matches!(stmt.head, NHead::Choice(_));
+        match &stmt.head {
+            NHead::None => {}
+            NHead::Disj(es) | NHead::Choice(es) => {
+                for e in es {
+                    if e.cond.is_empty() {
+                        let Some(s) = self.atom_sym(&e.atom, &ctx.binding) else {
+                            return;
+                        };
+                        head.push(self.atom_of(s, e.atom.pred));
+                        continue;
+                    }
+                    let blen = ctx.body.len();
+                    let mut found: Vec<(SymId, Vec<Lit>)> = Vec::new();
+                    self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
+                        if let Some(s) = g.atom_sym(&e.atom, &ctx.binding) {
+                            found.push((s, ctx.body[blen..].to_vec()));
+                        }
+                    });
+                    ctx.body.truncate(blen);
+                    for (s, c) in found {
+                        let a = self.atom_of(s, e.atom.pred);
+                        if c.is_empty() {
+                            head.push(a);
+                        } else if is_choice {
+                            extra_choices.push((a, c));
+                        } else {
+                            let span = e.atom.span;
+                            if !self.reported.contains(&span) {
+                                self.reported.insert(span);
+                                let d = Diagnostic::error(
+                                    span,
+                                    "unsupported: a condition in a disjunctive head that facts do not decide",
+                                )
+                                .with_snippet(self.snippet(span));
+                                self.diags.push(d);
+                            }
+                            return;
+                        }
+                    }
+                }
+            }
+        }
+        head.dedup();
+        if let NKind::Cr(label) = &stmt.kind {
+            // r: h :+ b.  ==  {appl_r}.  h :- b, appl_r.
+            let key: Vec<SymId> = stmt
+                .globals
+                .iter()
+                .filter_map(|&v| ctx.binding.get(v))
+                .collect();
+            let appl = match self.cr_appl.get(&(stmt.stmt, key.clone())) {
+                Some(&a) => a,
+                None => {
+                    let text = match label {
+                        Some(t) => match self.eval(t, &ctx.binding) {
+                            Some(v) => self.syms.show(v),
+                            None => return,
+                        },
+                        None => {
+                            let mut s = format!("r{}", stmt.stmt);
+                            let named: Vec<String> = stmt
+                                .globals
+                                .iter()
+                                .filter(|&&v| {
+                                    !self
+                                        .syms
+                                        .names
+                                        .resolve(stmt.var_names[v as usize])
+                                        .starts_with('#')
+                                })
+                                .filter_map(|&v| ctx.binding.get(v))
+                                .map(|v| self.syms.show(v))
+                                .collect();
+                            if !named.is_empty() {
+                                s.push('(');
+                                s.push_str(&named.join(","));
+                                s.push(')');
+                            }
+                            s
+                        }
+                    };
+                    let a = self.aux();
+                    self.cr_appl.insert((stmt.stmt, key), a);
+                    self.cr_rules.push((a, text));
+                    let origin = self.origin(stmt, &ctx.binding);
+                    self.add_rule(
+                        Rule {
+                            head_kind: HeadKind::Choice,
+                            head: vec![a],
+                            body: Body::Normal(Vec::new()),
+                        },
+                        || origin,
+                    );
+                    a
+                }
+            };
+            ctx.body.push(appl as Lit);
+        }
+        let origin = |g: &Self| g.origin(stmt, &ctx.binding);
+        if is_choice {
+            for &(a, ref c) in &extra_choices {
+                self.derive(a);
+                let mut body = ctx.body.clone();
+                body.extend(c.iter().copied());
+                let o = origin(self);
+                self.add_rule(
+                    Rule {
+                        head_kind: HeadKind::Choice,
+                        head: vec![a],
+                        body: Body::Normal(body),
+                    },
+                    || o,
+                );
+            }
+            head.retain(|&a| !self.info(a).fact);
+            if head.is_empty() {
+                return;
+            }
+            for &a in &head {
+                self.derive(a);
+            }
+            let o = origin(self);
+            self.add_rule(
+                Rule {
+                    head_kind: HeadKind::Choice,
+                    head,
+                    body: Body::Normal(ctx.body.clone()),
+                },
+                || o,
+            );
+            return;
+        }
+        // A disjunction with a true atom is satisfied.
+        if head.iter().any(|&a| self.info(a).fact) {
+            return;
+        }
+        for &a in &head {
+            self.derive(a);
+        }
+        if head.len() == 1 && ctx.body.is_empty() && !self.naive {
+            self.atoms[head[0] as usize - 1].fact = true;
+        }
+        let o = origin(self);
+        self.add_rule(
+            Rule {
+                head_kind: HeadKind::Disjunction,
+                head,
+                body: Body::Normal(ctx.body.clone()),
+            },
+            || o,
+        );
+    }
+
+    /// Grounds the whole compiled program.
+    pub fn run(&mut self, prog: &Compiled) {
+        let n = prog.preds.len();
+        // Head predicates of each statement, and the predicates each statement reads.
+        let mut heads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
+        let mut reads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
+        for s in &prog.stmts {
+            let mut h = Vec::new();
+            match &s.head {
+                NHead::Disj(es) | NHead::Choice(es) => {
+                    for e in es {
+                        if !h.contains(&e.atom.pred) {
+                            h.push(e.atom.pred)
+                        }
+                    }
+                }
+                NHead::None => {}
+            }
+            if let NKind::External(a, _) = &s.kind {
+                h.push(a.pred);
+            }
+            let mut r = Vec::new();
+            for l in &s.body {
+                lit_preds(l, &mut r);
+            }
+            if let NHead::Disj(es) | NHead::Choice(es) = &s.head {
+                for e in es {
+                    for l in &e.cond {
+                        lit_preds(l, &mut r);
+                    }
+                }
+            }
+            heads.push(h);
+            reads.push(r);
+        }
+        self.warn_undefined(prog, &heads);
+        // Dependency graph: edges from a head predicate to what its rule reads, and between the
+        // head predicates of one rule.
+        let mut edges: Vec<Vec<u32>> = vec![Vec::new(); n];
+        for (h, r) in heads.iter().zip(&reads) {
+            for &p in h {
+                edges[p as usize].extend(r.iter().copied());
+                edges[p as usize].extend(h.iter().copied());
+            }
+        }
+        let comps = tarjan(&edges);
+        let mut comp_of = vec![0usize; n];
+        for (ci, c) in comps.iter().enumerate() {
+            for &p in c {
+                comp_of[p as usize] = ci;
+            }
+        }
+        let mut by_comp: Vec<Vec<usize>> = vec![Vec::new(); comps.len()];
+        let mut headless: Vec<usize> = Vec::new();
+        for (si, h) in heads.iter().enumerate() {
+            match h.first() {
+                Some(&p) => by_comp[comp_of[p as usize]].push(si),
+                None => headless.push(si),
+            }
+        }
+        // Tarjan yields components in reverse topological order of the "reads" edges, i.e.
+        // dependencies first.
+        for (ci, comp) in comps.iter().enumerate() {
+            if self.stopped.is_some() {
+                break;
+            }
+            let stmts: Vec<&NStmt> = by_comp[ci].iter().map(|&i| &prog.stmts[i]).collect();
+            let in_comp = |p: PredId| comp_of[p as usize] == ci;
+            let naive = stmts
+                .iter()
+                .any(|s| s.body.iter().any(|l| nested_reads(l, &in_comp)))
+                || stmts.iter().any(|s| match &s.head {
+                    NHead::Disj(es) | NHead::Choice(es) => es.iter().any(|e| {
+                        let mut r = Vec::new();
+                        e.cond.iter().for_each(|l| lit_preds(l, &mut r));
+                        r.into_iter().any(in_comp)
+                    }),
+                    NHead::None => false,
+                });
+            let recursive = stmts.iter().any(|s| {
+                s.body
+                    .iter()
+                    .any(|l| matches!(l, NLit::Pred { sign: Sign::Positive, atom } if in_comp(atom.pred)))
+            });
+            if naive {
+                self.naive = true;
+                self.ground_naive(&stmts, comp);
+                self.naive = false;
+            } else if recursive {
+                self.ground_seminaive(&stmts, comp, &in_comp);
+            } else {
+                for s in &stmts {
+                    self.ground_stmt(s, &[]);
+                }
+            }
+            for &p in comp {
+                self.domains[p as usize].complete = true;
+            }
+        }
+        for si in headless {
+            if self.stopped.is_some() {
+                break;
+            }
+            self.ground_stmt(&prog.stmts[si], &[]);
+        }
+    }
+
+    /// Grounds a component with recursive aggregates: first its domain, by rounds in which
+    /// such aggregates are assumed true (each round's rules are discarded), until no atom is
+    /// added; then one final round with the aggregates evaluated over the complete domain.
+    fn ground_naive(&mut self, stmts: &[&NStmt], comp: &[PredId]) {
+        self.optimistic = true;
+        loop {
+            let rules_start = self.rules.len();
+            let cr_start = self.cr_rules.len();
+            let size_before: usize = comp
+                .iter()
+                .map(|&p| self.domains[p as usize].atoms.len())
+                .sum();
+            for s in stmts {
+                self.ground_stmt(s, &[]);
+            }
+            let size_after: usize = comp
+                .iter()
+                .map(|&p| self.domains[p as usize].atoms.len())
+                .sum();
+            self.forget_rules_from(rules_start);
+            for (a, _) in self.cr_rules.drain(cr_start..) {
+                self.cr_appl.retain(|_, v| *v != a);
+            }
+            if self.stopped.is_some() || size_after == size_before {
+                break;
+            }
+        }
+        self.optimistic = false;
+        for s in stmts {
+            self.ground_stmt(s, &[]);
+        }
+    }
+
+    fn forget_rules_from(&mut self, start: usize) {
+        while self.rules.len() > start {
+            let r = self.rules.pop().expect("len > start");
+            let idx = self.rules.len() as u32;
+            if let Ok(e) = self
+                .rule_set
+                .find_entry(self.hasher.hash_one(&r), |&i| i == idx)
+            {
+                e.remove();
+            }
+            if self.provenance {
+                self.origins.pop();
+            }
+        }
+        // Their defining rules may be gone; fresh auxiliaries are made next round.
+        self.notnot.clear();
+    }
+
+    fn ground_seminaive(
+        &mut self,
+        stmts: &[&NStmt],
+        comp: &[PredId],
+        in_comp: &dyn Fn(PredId) -> bool,
+    ) {
+        // Round 0: everything over what is known.
+        for &p in comp {
+            let d = &mut self.domains[p as usize];
+            d.old = 0;
+            d.delta = d.atoms.len() as u32;
+        }
+        for s in stmts {
+            let ranges: Vec<Option<Range>> = s
+                .body
+                .iter()
+                .map(|l| match l {
+                    NLit::Pred {
+                        sign: Sign::Positive,
+                        atom,
+                    } if in_comp(atom.pred) => Some((0, self.domains[atom.pred as usize].delta)),
+                    _ => None,
+                })
+                .collect();
+            self.ground_stmt(s, &ranges);
+        }
+        loop {
+            let mut any = false;
+            for &p in comp {
+                let d = &mut self.domains[p as usize];
+                d.old = d.delta;
+                d.delta = d.atoms.len() as u32;
+                any |= d.delta > d.old;
+            }
+            if !any || self.stopped.is_some() {
+                return;
+            }
+            // For each recursive literal j: j over the delta, earlier ones over old atoms,
+            // later ones over old and delta.
+            for s in stmts {
+                let rec: Vec<usize> = s
+                    .body
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, l)| matches!(l, NLit::Pred { sign: Sign::Positive, atom } if in_comp(atom.pred)))
+                    .map(|(i, _)| i)
+                    .collect();
+                for jj in 0..rec.len() {
+                    let mut ranges: Vec<Option<Range>> = vec![None; s.body.len()];
+                    let mut empty = false;
+                    for (kk, &i) in rec.iter().enumerate() {
+                        let NLit::Pred { atom, .. } = &s.body[i] else {
+                            continue;
+                        };
+                        let d = &self.domains[atom.pred as usize];
+                        let r = match kk.cmp(&jj) {
+                            std::cmp::Ordering::Less => (0, d.old),
+                            std::cmp::Ordering::Equal => (d.old, d.delta),
+                            std::cmp::Ordering::Greater => (0, d.delta),
+                        };
+                        empty |= r.0 >= r.1;
+                        ranges[i] = Some(r);
+                    }
+                    if !empty {
+                        self.ground_stmt(s, &ranges);
+                    }
+                }
+            }
+        }
+    }
+
+    /// gringo's `atom does not occur in any rule head` for positive body atoms of predicates
+    /// that nothing defines.
+    fn warn_undefined(&mut self, prog: &Compiled, heads: &[Vec<PredId>]) {
+        let mut defined = vec![false; prog.preds.len()];
+        for h in heads {
+            for &p in h {
+                defined[p as usize] = true;
+            }
+        }
+        for &p in &prog.defined {
+            defined[p as usize] = true;
+        }
+        let mut seen: hashbrown::HashSet<Span> = hashbrown::HashSet::new();
+        for s in &prog.stmts {
+            let mut atoms: Vec<&NAtom> = Vec::new();
+            for l in &s.body {
+                positive_atoms(l, &mut atoms);
+            }
+            if let NHead::Disj(es) | NHead::Choice(es) = &s.head {
+                for e in es {
+                    e.cond.iter().for_each(|l| positive_atoms(l, &mut atoms));
+                }
+            }
+            for a in atoms {
+                if !defined[a.pred as usize] && seen.insert(a.span) {
+                    let d = Diagnostic::warning(
+                        WarningKind::AtomUndefined,
+                        a.span,
+                        "atom does not occur in any rule head",
+                    );
+                    let snip = self.snippet(a.span);
+                    self.diags.push(if snip.is_empty() {
+                        d
+                    } else {
+                        d.with_snippet(snip)
+                    });
+                }
+            }
+        }
+    }
+}
+
+fn positive_atoms<'x>(l: &'x NLit, out: &mut Vec<&'x NAtom>) {
+    match l {
+        NLit::Pred { atom, .. } => out.push(atom),
+        NLit::Agg(a) => {
+            for e in &a.elems {
+                e.cond.iter().for_each(|c| positive_atoms(c, out));
+                if let Some(l) = &e.lit {
+                    positive_atoms(l, out);
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// `t1 op t2` in clingo's term order.
+pub fn cmp_holds(syms: &Symbols, op: CmpOp, a: SymId, b: SymId) -> bool {
+    let o = syms.compare(a, b);
+    match op {
+        CmpOp::Eq => o.is_eq(),
+        CmpOp::Ne => o.is_ne(),
+        CmpOp::Lt => o.is_lt(),
+        CmpOp::Le => o.is_le(),
+        CmpOp::Gt => o.is_gt(),
+        CmpOp::Ge => o.is_ge(),
+    }
+}
+
+fn negate(g: &mut Grounder<'_>, t: Truth) -> Truth {
+    match t {
+        Truth::True => Truth::False,
+        Truth::False => Truth::True,
+        Truth::Lits(l) => {
+            let a = g.disjunction_lit(&[l]);
+            Truth::Lits(vec![g.negate_lit(a)])
+        }
+    }
+}
+
+fn conj(a: Truth, b: Truth) -> Truth {
+    match (a, b) {
+        (Truth::False, _) | (_, Truth::False) => Truth::False,
+        (Truth::True, x) | (x, Truth::True) => x,
+        (Truth::Lits(mut x), Truth::Lits(y)) => {
+            x.extend(y);
+            Truth::Lits(x)
+        }
+    }
+}
+
+/// Predicates a literal reads (including inside aggregates).
+fn lit_preds(l: &NLit, out: &mut Vec<PredId>) {
+    match l {
+        NLit::Pred { atom, .. } => out.push(atom.pred),
+        NLit::Agg(a) => {
+            for e in &a.elems {
+                e.cond.iter().for_each(|c| lit_preds(c, out));
+                if let Some(l) = &e.lit {
+                    lit_preds(l, out);
+                }
+            }
+        }
+        _ => {}
+    }
+}
+
+/// True when an aggregate of `l` reads a predicate of the current component.
+fn nested_reads(l: &NLit, in_comp: &dyn Fn(PredId) -> bool) -> bool {
+    match l {
+        NLit::Agg(_) => {
+            let mut r = Vec::new();
+            lit_preds(l, &mut r);
+            r.into_iter().any(in_comp)
+        }
+        _ => false,
+    }
+}
+
+/// Tarjan's strongly connected components (iterative); components come out with every
+/// component after those it has edges to.
+pub fn tarjan(edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
+    let n = edges.len();
+    let mut index = vec![u32::MAX; n];
+    let mut low = vec![0u32; n];
+    let mut on_stack = vec![false; n];
+    let mut stack: Vec<u32> = Vec::new();
+    let mut comps: Vec<Vec<u32>> = Vec::new();
+    let mut counter = 0u32;
+    for root in 0..n {
+        if index[root] != u32::MAX {
+            continue;
+        }
+        let mut call: Vec<(u32, usize)> = vec![(root as u32, 0)];
+        index[root] = counter;
+        low[root] = counter;
+        counter += 1;
+        stack.push(root as u32);
+        on_stack[root] = true;
+        while let Some(&mut (v, ref mut ei)) = call.last_mut() {
+            if let Some(&w) = edges[v as usize].get(*ei) {
+                *ei += 1;
+                if index[w as usize] == u32::MAX {
+                    index[w as usize] = counter;
+                    low[w as usize] = counter;
+                    counter += 1;
+                    stack.push(w);
+                    on_stack[w as usize] = true;
+                    call.push((w, 0));
+                } else if on_stack[w as usize] {
+                    low[v as usize] = low[v as usize].min(index[w as usize]);
+                }
+            } else {
+                call.pop();
+                if let Some(&(u, _)) = call.last() {
+                    low[u as usize] = low[u as usize].min(low[v as usize]);
+                }
+                if low[v as usize] == index[v as usize] {
+                    let mut c = Vec::new();
+                    loop {
+                        let w = stack.pop().expect("scc stack");
+                        on_stack[w as usize] = false;
+                        c.push(w);
+                        if w == v {
+                            break;
+                        }
+                    }
+                    comps.push(c);
+                }
+            }
+        }
+    }
+    comps
+}

@@ -1,0 +1,544 @@
+//! Final simplification and output: decides which atoms are certainly false (no surviving rule
+//! can derive them) by propagation, removes rules that need false atoms and literals that are
+//! known, numbers the surviving atoms for aspif in creation order, and builds outputs, minimize
+//! statements and the other directives.
+//!
+//! Rules implemented (each by a worklist step):
+//! - an atom that is not external and heads no live rule is false;
+//! - a rule with a positive body literal over a false atom, or `not a` with `a` a fact, is dead;
+//! - in kept rules, facts and `not a` with `a` false are removed from bodies.
+//!
+//! Invariant: the result's atoms are `1..=num_atoms`, every atom occurring anywhere is numbered,
+//! and `origins` stays parallel to `rules`.
+
+use super::instantiate::{AtomId, Grounder};
+use super::program::{Body, CrRule, GroundProgram, HeadKind, Lit, Minimize, Output, Prefer, Rule};
+use super::rewrite::Compiled;
+use super::symbol::SymId;
+
+/// Truth status of an atom after propagation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// Certainly true.
+    Fact,
+    /// Certainly false.
+    False,
+    /// Neither.
+    Unknown,
+}
+
+/// What [`finish`] produces besides the program.
+pub struct Finished {
+    /// The aspif program.
+    pub program: GroundProgram,
+    /// Printed name of each aspif atom (`names[a - 1]`), `None` for auxiliary atoms.
+    pub names: Vec<Option<String>>,
+    /// Every fact atom's symbol text (also those simplified away from bodies).
+    pub facts: Vec<String>,
+}
+
+/// Adds `:- a, -a.` for complementary atoms, then simplifies and numbers.
+pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
+    add_classical_constraints(g);
+    let n = g.atoms.len();
+    let mut status: Vec<Status> = g
+        .atoms
+        .iter()
+        .map(|a| {
+            if a.fact {
+                Status::Fact
+            } else {
+                Status::Unknown
+            }
+        })
+        .collect();
+    let mut head_count = vec![0u32; n + 1];
+    let mut pos_occ: Vec<Vec<u32>> = vec![Vec::new(); n + 1];
+    let mut neg_occ: Vec<Vec<u32>> = vec![Vec::new(); n + 1];
+    for (ri, r) in g.rules.iter().enumerate() {
+        for &h in &r.head {
+            head_count[h as usize] += 1;
+        }
+        if let Body::Normal(lits) = &r.body {
+            for &l in lits {
+                if l > 0 {
+                    pos_occ[l as usize].push(ri as u32);
+                } else {
+                    neg_occ[(-l) as usize].push(ri as u32);
+                }
+            }
+        }
+    }
+    let mut external = vec![false; n + 1];
+    for &(a, _) in &g.externals {
+        external[a as usize] = true;
+    }
+    let mut dead = vec![false; g.rules.len()];
+    let mut work: Vec<AtomId> = Vec::new();
+    for a in 1..=n {
+        if head_count[a] == 0 && !external[a] && status[a - 1] == Status::Unknown {
+            status[a - 1] = Status::False;
+            work.push(a as AtomId);
+        }
+    }
+    let kill = |ri: usize,
+                dead: &mut Vec<bool>,
+                head_count: &mut Vec<u32>,
+                status: &mut Vec<Status>,
+                work: &mut Vec<AtomId>,
+                rules: &[Rule]| {
+        if dead[ri] {
+            return;
+        }
+        dead[ri] = true;
+        for &h in &rules[ri].head {
+            head_count[h as usize] -= 1;
+            if head_count[h as usize] == 0
+                && !external[h as usize]
+                && status[h as usize - 1] == Status::Unknown
+            {
+                status[h as usize - 1] = Status::False;
+                work.push(h);
+            }
+        }
+    };
+    // Rules with `not a`, a a fact, are dead from the start.
+    for a in 1..=n {
+        if status[a - 1] == Status::Fact {
+            for &ri in &neg_occ[a] {
+                kill(
+                    ri as usize,
+                    &mut dead,
+                    &mut head_count,
+                    &mut status,
+                    &mut work,
+                    &g.rules,
+                );
+            }
+        }
+    }
+    while let Some(a) = work.pop() {
+        for &ri in &pos_occ[a as usize] {
+            kill(
+                ri as usize,
+                &mut dead,
+                &mut head_count,
+                &mut status,
+                &mut work,
+                &g.rules,
+            );
+        }
+    }
+    let truth = |l: Lit, status: &[Status]| -> Option<bool> {
+        let s = status[l.unsigned_abs() as usize - 1];
+        match (l > 0, s) {
+            (_, Status::Unknown) => None,
+            (true, Status::Fact) | (false, Status::False) => Some(true),
+            _ => Some(false),
+        }
+    };
+    // Simplify the surviving rules.
+    let mut rules: Vec<Rule> = Vec::new();
+    let mut origins = Vec::new();
+    let mut fact_rule_seen = vec![false; n + 1];
+    for (ri, r) in g.rules.iter().enumerate() {
+        if dead[ri] {
+            continue;
+        }
+        let body = match &r.body {
+            Body::Normal(lits) => {
+                let mut out = Vec::with_capacity(lits.len());
+                let mut ok = true;
+                for &l in lits {
+                    match truth(l, &status) {
+                        Some(true) => {}
+                        Some(false) => ok = false,
+                        None => out.push(l),
+                    }
+                }
+                if !ok {
+                    continue;
+                }
+                Body::Normal(out)
+            }
+            Body::Weight { lower, lits } => {
+                let mut lower = *lower;
+                let mut out = Vec::new();
+                for &(l, w) in lits {
+                    match truth(l, &status) {
+                        Some(true) => lower -= w,
+                        Some(false) => {}
+                        None => out.push((l, w)),
+                    }
+                }
+                if lower <= 0 {
+                    Body::Normal(Vec::new())
+                } else if out.iter().map(|&(_, w)| w).sum::<i64>() < lower {
+                    continue;
+                } else {
+                    Body::Weight { lower, lits: out }
+                }
+            }
+        };
+        let mut head = r.head.clone();
+        if r.head_kind == HeadKind::Disjunction {
+            if head.iter().any(|&h| status[h as usize - 1] == Status::Fact)
+                && !(head.len() == 1 && body == Body::Normal(Vec::new()))
+            {
+                continue;
+            }
+            head.retain(|&h| status[h as usize - 1] != Status::False || external[h as usize]);
+        } else {
+            head.retain(|&h| status[h as usize - 1] == Status::Unknown || external[h as usize]);
+            if head.is_empty() {
+                continue;
+            }
+        }
+        if r.head_kind == HeadKind::Disjunction
+            && head.len() == 1
+            && body == Body::Normal(Vec::new())
+        {
+            let h = head[0] as usize;
+            if fact_rule_seen[h] {
+                continue;
+            }
+            fact_rule_seen[h] = true;
+            status[h - 1] = Status::Fact;
+        }
+        rules.push(Rule {
+            head_kind: r.head_kind,
+            head,
+            body,
+        });
+        if g.provenance {
+            origins.push(g.origins[ri].clone());
+        }
+    }
+    // Minimize statements: one per priority, highest first.
+    let mut minimize: Vec<Minimize> = Vec::new();
+    let keys = std::mem::take(&mut g.minimize_order);
+    let mut elements: Vec<(i32, i32, Lit)> = Vec::new();
+    for key in keys {
+        let conds = g.minimize.get(&key).cloned().unwrap_or_default();
+        let mut alts: Vec<Vec<Lit>> = Vec::new();
+        let mut certain = false;
+        for c in conds {
+            let mut out = Vec::new();
+            let mut ok = true;
+            for l in c {
+                match truth(l, &status) {
+                    Some(true) => {}
+                    Some(false) => ok = false,
+                    None => out.push(l),
+                }
+            }
+            if ok {
+                certain |= out.is_empty();
+                alts.push(out);
+            }
+        }
+        if alts.is_empty() {
+            continue;
+        }
+        let lit = if certain {
+            None
+        } else if alts.len() == 1 && alts[0].len() == 1 {
+            Some(alts[0][0])
+        } else {
+            let a = new_aux(g, &mut status);
+            for alt in alts {
+                rules.push(Rule {
+                    head_kind: HeadKind::Disjunction,
+                    head: vec![a],
+                    body: Body::Normal(alt),
+                });
+                if g.provenance {
+                    origins.push(Default::default());
+                }
+            }
+            Some(a as Lit)
+        };
+        let lit = match lit {
+            Some(l) => l,
+            None => {
+                // A certain element: its weight is always counted; clasp needs a literal, so use
+                // a fact atom.
+                let a = new_aux(g, &mut status);
+                status[a as usize - 1] = Status::Fact;
+                rules.push(Rule {
+                    head_kind: HeadKind::Disjunction,
+                    head: vec![a],
+                    body: Body::Normal(Vec::new()),
+                });
+                if g.provenance {
+                    origins.push(Default::default());
+                }
+                a as Lit
+            }
+        };
+        elements.push((key.0, key.1, lit));
+    }
+    let mut prios: Vec<i32> = elements.iter().map(|e| e.0).collect();
+    prios.sort_unstable_by(|a, b| b.cmp(a));
+    prios.dedup();
+    for p in prios {
+        minimize.push(Minimize {
+            priority: p as i64,
+            lits: elements
+                .iter()
+                .filter(|e| e.0 == p)
+                .map(|e| (e.2, e.1 as i64))
+                .collect(),
+        });
+    }
+    // Number atoms: every atom that occurs, in creation order.
+    let n = g.atoms.len();
+    let mut used = vec![false; n + 1];
+    let use_lit = |l: Lit, used: &mut Vec<bool>| used[l.unsigned_abs() as usize] = true;
+    for r in &rules {
+        r.head.iter().for_each(|&h| used[h as usize] = true);
+        match &r.body {
+            Body::Normal(ls) => ls.iter().for_each(|&l| use_lit(l, &mut used)),
+            Body::Weight { lits, .. } => lits.iter().for_each(|&(l, _)| use_lit(l, &mut used)),
+        }
+    }
+    for m in &minimize {
+        m.lits.iter().for_each(|&(l, _)| use_lit(l, &mut used));
+    }
+    for &(a, _) in &g.externals {
+        used[a as usize] = true;
+    }
+    // Shown atoms.
+    let shown_pred = |_: &Grounder<'_>, pred: u32| -> bool {
+        if pred == u32::MAX {
+            return false;
+        }
+        let p = &prog.preds[pred as usize];
+        if !prog.show.restricted {
+            return true;
+        }
+        prog.show.signatures.contains(p)
+    };
+    for a in 1..=n {
+        let info = g.atoms[a - 1];
+        if info.sym.is_some()
+            && status[a - 1] != Status::False
+            && info.in_domain
+            && shown_pred(g, info.pred)
+        {
+            used[a] = true;
+        }
+    }
+    let mut number = vec![0u32; n + 1];
+    let mut names: Vec<Option<String>> = Vec::new();
+    let mut next = 0u32;
+    for a in 1..=n {
+        if used[a] {
+            next += 1;
+            number[a] = next;
+            names.push(g.atoms[a - 1].sym.map(|s| g.syms.show(s)));
+        }
+    }
+    let map_lit = |l: Lit| -> Lit {
+        let a = number[l.unsigned_abs() as usize] as Lit;
+        if l > 0 {
+            a
+        } else {
+            -a
+        }
+    };
+    let mut out = GroundProgram::new();
+    out.num_atoms = next;
+    out.rules = rules
+        .into_iter()
+        .map(|r| Rule {
+            head_kind: r.head_kind,
+            head: r.head.iter().map(|&h| number[h as usize]).collect(),
+            body: match r.body {
+                Body::Normal(ls) => Body::Normal(ls.into_iter().map(map_lit).collect()),
+                Body::Weight { lower, lits } => Body::Weight {
+                    lower,
+                    lits: lits.into_iter().map(|(l, w)| (map_lit(l), w)).collect(),
+                },
+            },
+        })
+        .collect();
+    out.origins = origins;
+    out.minimize = minimize
+        .into_iter()
+        .map(|m| Minimize {
+            priority: m.priority,
+            lits: m.lits.into_iter().map(|(l, w)| (map_lit(l), w)).collect(),
+        })
+        .collect();
+    // Outputs: shown atoms, facts with an empty condition.
+    let mut facts = Vec::new();
+    for a in 1..=n {
+        let info = g.atoms[a - 1];
+        let Some(sym) = info.sym else { continue };
+        if status[a - 1] == Status::Fact {
+            facts.push(g.syms.show(sym));
+        }
+        if info.in_domain && status[a - 1] != Status::False && shown_pred(g, info.pred) {
+            let condition = if status[a - 1] == Status::Fact {
+                Vec::new()
+            } else {
+                vec![number[a] as Lit]
+            };
+            out.outputs.push(Output {
+                symbol: g.syms.show(sym),
+                condition,
+            });
+        }
+    }
+    let shows = std::mem::take(&mut g.shows);
+    let mut seen: hashbrown::HashSet<(SymId, Vec<Lit>)> = hashbrown::HashSet::new();
+    for (sym, cond) in shows {
+        let mut c = Vec::new();
+        let mut ok = true;
+        for l in cond {
+            match truth(l, &status) {
+                Some(true) => {}
+                Some(false) => ok = false,
+                None => {
+                    if number[l.unsigned_abs() as usize] == 0 {
+                        ok = false;
+                    } else {
+                        c.push(map_lit(l))
+                    }
+                }
+            }
+        }
+        if ok && seen.insert((sym, c.clone())) {
+            out.outputs.push(Output {
+                symbol: g.syms.show(sym),
+                condition: c,
+            });
+        }
+    }
+    let cond_map = |cond: &[Lit], status: &[Status]| -> Option<Vec<Lit>> {
+        let mut c = Vec::new();
+        for &l in cond {
+            match truth(l, status) {
+                Some(true) => {}
+                Some(false) => return None,
+                None => {
+                    if number[l.unsigned_abs() as usize] == 0 {
+                        return None;
+                    }
+                    c.push(map_lit(l))
+                }
+            }
+        }
+        Some(c)
+    };
+    out.externals = g
+        .externals
+        .iter()
+        .map(|&(a, v)| (number[a as usize], v))
+        .collect();
+    out.projections = g
+        .projections
+        .iter()
+        .filter(|&&a| number[a as usize] != 0)
+        .map(|&a| number[a as usize])
+        .collect();
+    for h in &g.heuristics {
+        if number[h.atom as usize] == 0 {
+            continue;
+        }
+        if let Some(condition) = cond_map(&h.condition, &status) {
+            let mut h2 = h.clone();
+            h2.atom = number[h.atom as usize];
+            h2.condition = condition;
+            out.heuristics.push(h2);
+        }
+    }
+    for e in &g.edges {
+        if let Some(condition) = cond_map(&e.condition, &status) {
+            let mut e2 = e.clone();
+            e2.condition = condition;
+            out.edges.push(e2);
+        }
+    }
+    for (a, label) in &g.cr_rules {
+        if number[*a as usize] != 0 && status[*a as usize - 1] == Status::Unknown {
+            out.cr_rules.push(CrRule {
+                appl: number[*a as usize],
+                label: label.clone(),
+            });
+        }
+    }
+    // prefer(l1, l2) facts between labels of CR rules.
+    for a in 1..=n {
+        let info = g.atoms[a - 1];
+        let Some(sym) = info.sym else { continue };
+        if status[a - 1] != Status::Fact {
+            continue;
+        }
+        let args = g.syms.args(sym);
+        if args.len() != 2 || g.syms.show(sym).split('(').next() != Some("prefer") {
+            continue;
+        }
+        let (l1, l2) = (g.syms.show(args[0]), g.syms.show(args[1]));
+        for better in out.cr_rules.iter().filter(|c| c.label == l1) {
+            for worse in out.cr_rules.iter().filter(|c| c.label == l2) {
+                out.prefers.push(Prefer {
+                    better: better.appl,
+                    worse: worse.appl,
+                });
+            }
+        }
+    }
+    Finished {
+        program: out,
+        names,
+        facts,
+    }
+}
+
+fn new_aux(g: &mut Grounder<'_>, status: &mut Vec<Status>) -> AtomId {
+    let a = g.aux();
+    status.push(Status::Unknown);
+    a
+}
+
+/// `:- a, -a.` for every atom `-a` whose complement can be derived.
+fn add_classical_constraints(g: &mut Grounder<'_>) {
+    let n = g.atoms.len();
+    let mut extra = Vec::new();
+    for a in 1..=n {
+        let info = g.atoms[a - 1];
+        let Some(sym) = info.sym else { continue };
+        if !info.in_domain {
+            continue;
+        }
+        let super::symbol::SymData::Fun { neg: true, .. } = g.syms.get(sym) else {
+            continue;
+        };
+        let Some(pos) = g.syms.flip_sign(sym) else {
+            continue;
+        };
+        let Some(b) = g.find_atom(pos) else { continue };
+        if !g.atoms[b as usize - 1].in_domain {
+            continue;
+        }
+        let mut body = Vec::new();
+        for x in [b, a as AtomId] {
+            if !g.atoms[x as usize - 1].fact {
+                body.push(x as Lit);
+            }
+        }
+        extra.push(body);
+    }
+    for body in extra {
+        g.rules.push(Rule {
+            head_kind: HeadKind::Disjunction,
+            head: Vec::new(),
+            body: Body::Normal(body),
+        });
+        if g.provenance {
+            g.origins.push(Default::default());
+        }
+    }
+}

@@ -1,0 +1,389 @@
+//! Ground terms (symbols): a hash-consed table of flat nodes with `u32` ids, clingo's total
+//! order on them, and their printed form.
+//!
+//! Invariants:
+//! - Structurally equal symbols have the same [`SymId`] (hash-consing), so equality is id
+//!   equality and a symbol's arguments are ids of symbols created before it (children before
+//!   parents, as egg's `RecExpr`).
+//! - The order ([`Symbols::compare`]) is clingo's: `#inf` < integers < constants (positive
+//!   before classically negated, then by name) < strings < functions and tuples (by arity, then
+//!   positive before negated, then name, then arguments left to right) < `#sup`. Checked against
+//!   clingo 5.8.3's `Symbol.__lt__`.
+//! - Integers are 32-bit, as in clingo.
+
+use std::cmp::Ordering;
+use std::hash::{BuildHasher, Hash};
+
+use hashbrown::HashTable;
+
+use crate::base::intern::{Interner, Sym};
+
+/// A ground term, an index into [`Symbols`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct SymId(pub u32);
+
+/// One node of the symbol table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SymData {
+    /// `#inf`
+    Inf,
+    /// An integer.
+    Num(i32),
+    /// A string (its unescaped text, interned).
+    Str(Sym),
+    /// A function, constant (no arguments) or tuple (empty name), possibly classically negated.
+    Fun {
+        /// The name; the empty name for tuples.
+        name: Sym,
+        /// Classical negation `-f(...)`.
+        neg: bool,
+        /// Start of the arguments in the argument arena.
+        start: u32,
+        /// Number of arguments.
+        len: u32,
+    },
+    /// `#sup`
+    Sup,
+}
+
+/// The symbol table: interned names and hash-consed ground terms.
+#[derive(Debug, Clone)]
+pub struct Symbols {
+    /// Names of functions and texts of strings.
+    pub names: Interner,
+    /// Node of each symbol.
+    data: Vec<SymData>,
+    /// Argument arena: the arguments of `Fun` nodes, contiguous per node.
+    args: Vec<SymId>,
+    /// Hash-consing table over `data`.
+    table: HashTable<SymId>,
+    /// Hasher for the table.
+    hasher: hashbrown::DefaultHashBuilder,
+}
+
+impl Default for Symbols {
+    fn default() -> Self {
+        Symbols::new()
+    }
+}
+
+impl Symbols {
+    /// An empty table.
+    pub fn new() -> Symbols {
+        Symbols {
+            names: Interner::new(),
+            data: Vec::new(),
+            args: Vec::new(),
+            table: HashTable::new(),
+            hasher: hashbrown::DefaultHashBuilder::default(),
+        }
+    }
+
+    /// Number of distinct symbols.
+    pub fn len(&self) -> usize {
+        self.data.len()
+    }
+
+    /// True when no symbol exists.
+    pub fn is_empty(&self) -> bool {
+        self.data.is_empty()
+    }
+
+    /// The node of `id`.
+    pub fn get(&self, id: SymId) -> SymData {
+        self.data[id.0 as usize]
+    }
+
+    /// The arguments of a function symbol (empty for other symbols).
+    pub fn args(&self, id: SymId) -> &[SymId] {
+        match self.get(id) {
+            SymData::Fun { start, len, .. } => &self.args[start as usize..(start + len) as usize],
+            _ => &[],
+        }
+    }
+
+    /// The integer value of `id`, if it is an integer.
+    pub fn num(&self, id: SymId) -> Option<i32> {
+        match self.get(id) {
+            SymData::Num(n) => Some(n),
+            _ => None,
+        }
+    }
+
+    fn hash_key(&self, kind: &KeyRef<'_>) -> u64 {
+        self.hasher.hash_one(kind)
+    }
+
+    fn key_of(&self, id: SymId) -> KeyRef<'_> {
+        match self.get(id) {
+            SymData::Inf => KeyRef::Inf,
+            SymData::Sup => KeyRef::Sup,
+            SymData::Num(n) => KeyRef::Num(n),
+            SymData::Str(s) => KeyRef::Str(s),
+            SymData::Fun { name, neg, .. } => KeyRef::Fun(name, neg, self.args(id)),
+        }
+    }
+
+    fn intern_key(&mut self, key: KeyRef<'_>) -> SymId {
+        let hash = self.hash_key(&key);
+        if let Some(&id) = self.table.find(hash, |&id| self.key_of(id) == key) {
+            return id;
+        }
+        let id = SymId(self.data.len() as u32);
+        let data = match key {
+            KeyRef::Inf => SymData::Inf,
+            KeyRef::Sup => SymData::Sup,
+            KeyRef::Num(n) => SymData::Num(n),
+            KeyRef::Str(s) => SymData::Str(s),
+            KeyRef::Fun(name, neg, args) => {
+                let start = self.args.len() as u32;
+                self.args.extend_from_slice(args);
+                SymData::Fun {
+                    name,
+                    neg,
+                    start,
+                    len: args.len() as u32,
+                }
+            }
+        };
+        self.data.push(data);
+        let Symbols {
+            table,
+            data,
+            args,
+            hasher,
+            ..
+        } = self;
+        table.insert_unique(hash, id, |&other| {
+            hasher.hash_one(key_from(data, args, other))
+        });
+        id
+    }
+
+    /// The integer `n`.
+    pub fn int(&mut self, n: i32) -> SymId {
+        self.intern_key(KeyRef::Num(n))
+    }
+
+    /// `#inf`.
+    pub fn inf(&mut self) -> SymId {
+        self.intern_key(KeyRef::Inf)
+    }
+
+    /// `#sup`.
+    pub fn sup(&mut self) -> SymId {
+        self.intern_key(KeyRef::Sup)
+    }
+
+    /// The string with text `s`.
+    pub fn string(&mut self, s: &str) -> SymId {
+        let s = self.names.intern(s);
+        self.intern_key(KeyRef::Str(s))
+    }
+
+    /// The function `name(args)` (a constant when `args` is empty, a tuple when `name` is empty).
+    pub fn fun(&mut self, name: Sym, neg: bool, args: &[SymId]) -> SymId {
+        self.intern_key(KeyRef::Fun(name, neg, args))
+    }
+
+    /// Like [`Symbols::fun`] with a name given as text.
+    pub fn fun_str(&mut self, name: &str, neg: bool, args: &[SymId]) -> SymId {
+        let name = self.names.intern(name);
+        self.fun(name, neg, args)
+    }
+
+    /// The symbol with the classical sign flipped, for functions and constants (not tuples).
+    pub fn flip_sign(&mut self, id: SymId) -> Option<SymId> {
+        match self.get(id) {
+            SymData::Fun { name, neg, .. } if !self.names.resolve(name).is_empty() => {
+                let args: Vec<SymId> = self.args(id).to_vec();
+                Some(self.fun(name, !neg, &args))
+            }
+            _ => None,
+        }
+    }
+
+    /// Rank of a symbol's type in clingo's order.
+    fn rank(&self, id: SymId) -> u8 {
+        match self.get(id) {
+            SymData::Inf => 0,
+            SymData::Num(_) => 1,
+            SymData::Fun { len: 0, name, .. } if !self.names.resolve(name).is_empty() => 2,
+            SymData::Str(_) => 3,
+            SymData::Fun { .. } => 4,
+            SymData::Sup => 5,
+        }
+    }
+
+    /// clingo's total order on symbols.
+    pub fn compare(&self, a: SymId, b: SymId) -> Ordering {
+        if a == b {
+            return Ordering::Equal;
+        }
+        let (ra, rb) = (self.rank(a), self.rank(b));
+        if ra != rb {
+            return ra.cmp(&rb);
+        }
+        match (self.get(a), self.get(b)) {
+            (SymData::Num(x), SymData::Num(y)) => x.cmp(&y),
+            (SymData::Str(x), SymData::Str(y)) => self.names.resolve(x).cmp(self.names.resolve(y)),
+            (
+                SymData::Fun {
+                    name: na,
+                    neg: ga,
+                    len: la,
+                    ..
+                },
+                SymData::Fun {
+                    name: nb,
+                    neg: gb,
+                    len: lb,
+                    ..
+                },
+            ) => la
+                .cmp(&lb)
+                .then(ga.cmp(&gb))
+                .then_with(|| self.names.resolve(na).cmp(self.names.resolve(nb)))
+                .then_with(|| {
+                    for (&x, &y) in self.args(a).iter().zip(self.args(b)) {
+                        let o = self.compare(x, y);
+                        if o != Ordering::Equal {
+                            return o;
+                        }
+                    }
+                    Ordering::Equal
+                }),
+            _ => Ordering::Equal,
+        }
+    }
+
+    /// Appends the printed form of `id` (clingo's syntax) to `out`.
+    pub fn write(&self, id: SymId, out: &mut String) {
+        match self.get(id) {
+            SymData::Inf => out.push_str("#inf"),
+            SymData::Sup => out.push_str("#sup"),
+            SymData::Num(n) => out.push_str(&n.to_string()),
+            SymData::Str(s) => {
+                out.push('"');
+                for c in self.names.resolve(s).chars() {
+                    match c {
+                        '"' => out.push_str("\\\""),
+                        '\\' => out.push_str("\\\\"),
+                        '\n' => out.push_str("\\n"),
+                        c => out.push(c),
+                    }
+                }
+                out.push('"');
+            }
+            SymData::Fun { name, neg, len, .. } => {
+                if neg {
+                    out.push('-');
+                }
+                let name = self.names.resolve(name);
+                out.push_str(name);
+                if len > 0 || name.is_empty() {
+                    out.push('(');
+                    for (i, &arg) in self.args(id).iter().enumerate() {
+                        if i > 0 {
+                            out.push(',');
+                        }
+                        self.write(arg, out);
+                    }
+                    if name.is_empty() && len == 1 {
+                        out.push(',');
+                    }
+                    out.push(')');
+                }
+            }
+        }
+    }
+
+    /// The printed form of `id`.
+    pub fn show(&self, id: SymId) -> String {
+        let mut s = String::new();
+        self.write(id, &mut s);
+        s
+    }
+}
+
+/// A borrowed view of a node, for hashing and lookup before insertion.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+enum KeyRef<'a> {
+    Inf,
+    Sup,
+    Num(i32),
+    Str(Sym),
+    Fun(Sym, bool, &'a [SymId]),
+}
+
+fn key_from<'a>(data: &[SymData], args: &'a [SymId], id: SymId) -> KeyRef<'a> {
+    match data[id.0 as usize] {
+        SymData::Inf => KeyRef::Inf,
+        SymData::Sup => KeyRef::Sup,
+        SymData::Num(n) => KeyRef::Num(n),
+        SymData::Str(s) => KeyRef::Str(s),
+        SymData::Fun {
+            name,
+            neg,
+            start,
+            len,
+        } => KeyRef::Fun(name, neg, &args[start as usize..(start + len) as usize]),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hash_consing_shares_ids() {
+        let mut s = Symbols::new();
+        let a = s.fun_str("a", false, &[]);
+        let one = s.int(1);
+        let f1 = s.fun_str("f", false, &[a, one]);
+        let f2 = s.fun_str("f", false, &[a, one]);
+        assert_eq!(f1, f2);
+        assert_eq!(s.show(f1), "f(a,1)");
+        let t = s.fun_str("", false, &[a]);
+        assert_eq!(s.show(t), "(a,)");
+    }
+
+    #[test]
+    fn order_is_clingos() {
+        // clingo 5.8.3 sorts t/1 of
+        // t(1;a;"s";f(a);(1,2);g(a,b);f(b);#inf;#sup;-a;-1;(a,);h(1,2);f(-a);"b";z)
+        // as #inf, -1, 1, a, z, -a, "b", "s", (a,), f(a), f(b), f(-a), (1,2), g(a,b), h(1,2), #sup.
+        let mut s = Symbols::new();
+        let a = s.fun_str("a", false, &[]);
+        let b = s.fun_str("b", false, &[]);
+        let na = s.fun_str("a", true, &[]);
+        let one = s.int(1);
+        let two = s.int(2);
+        let expected = vec![
+            s.inf(),
+            s.int(-1),
+            one,
+            a,
+            s.fun_str("z", false, &[]),
+            na,
+            s.string("b"),
+            s.string("s"),
+            s.fun_str("", false, &[a]),
+            s.fun_str("f", false, &[a]),
+            s.fun_str("f", false, &[b]),
+            s.fun_str("f", false, &[na]),
+            s.fun_str("", false, &[one, two]),
+            s.fun_str("g", false, &[a, b]),
+            s.fun_str("h", false, &[one, two]),
+            s.sup(),
+        ];
+        let mut sorted = expected.clone();
+        sorted.reverse();
+        sorted.sort_by(|&x, &y| s.compare(x, y));
+        assert_eq!(sorted, expected);
+        // -f(a) sorts after g(a): sign before name.
+        let g = s.fun_str("g", false, &[a]);
+        let nf = s.fun_str("f", true, &[a]);
+        assert_eq!(s.compare(g, nf), Ordering::Less);
+    }
+}

@@ -1,0 +1,430 @@
+//! Non-ground terms after rewriting (no pools, intervals or `#const` names left), their
+//! evaluation under a variable binding with clingo's arithmetic, and matching against ground
+//! symbols.
+//!
+//! Invariants:
+//! - Variables are dense slots `0..num_vars` of their rule; a [`Binding`] holds one optional
+//!   symbol per slot and a trail, so matching can be undone in LIFO order.
+//! - Arithmetic is clingo's: 32-bit integers with wrap-around, `/` truncates toward zero, `\` is
+//!   the remainder with the dividend's sign, `**` with a negative exponent is 0 (undefined for a
+//!   base of 0), `~` is bitwise complement; an operation on a non-integer, or division by zero,
+//!   is *undefined*: evaluation returns the span of the offending term and the caller drops the
+//!   rule instance with an `operation undefined` warning (checked against clingo 5.8.3).
+//! - Matching inverts the linear forms `X+c`, `c+X`, `X-c`, `c-X`, `-X`, `c*X` and `X*c` on
+//!   integers, as gringo binds `X` in `p(X+1)`.
+
+use crate::base::Span;
+use crate::syntax::ast::{BinaryOp, UnaryOp};
+
+use super::symbol::{SymData, SymId, Symbols};
+use crate::base::intern::Sym;
+
+/// A rewritten, possibly non-ground term.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum NTerm {
+    /// A ground symbol.
+    Sym(SymId),
+    /// A variable slot.
+    Var(u32),
+    /// A function term with at least one variable or operation below it.
+    Fun {
+        /// Name (empty for tuples).
+        name: Sym,
+        /// Classical negation.
+        neg: bool,
+        /// Arguments.
+        args: Vec<NTerm>,
+    },
+    /// A unary operation.
+    Unary {
+        /// The operator.
+        op: UnaryOp,
+        /// The operand.
+        arg: Box<NTerm>,
+        /// Where it was written (for `operation undefined`).
+        span: Span,
+    },
+    /// A binary operation.
+    Binary {
+        /// The operator.
+        op: BinaryOp,
+        /// Left operand.
+        lhs: Box<NTerm>,
+        /// Right operand.
+        rhs: Box<NTerm>,
+        /// Where it was written.
+        span: Span,
+    },
+}
+
+/// A partial assignment of symbols to variable slots, with an undo trail.
+#[derive(Clone, Debug, Default)]
+pub struct Binding {
+    /// Value of each slot.
+    pub values: Vec<Option<SymId>>,
+    /// Slots bound since the start, in binding order.
+    trail: Vec<u32>,
+}
+
+impl Binding {
+    /// A binding with `n` unbound slots.
+    pub fn new(n: usize) -> Binding {
+        Binding {
+            values: vec![None; n],
+            trail: Vec::new(),
+        }
+    }
+
+    /// The value of slot `v`.
+    pub fn get(&self, v: u32) -> Option<SymId> {
+        self.values[v as usize]
+    }
+
+    /// Binds an unbound slot.
+    pub fn bind(&mut self, v: u32, s: SymId) {
+        debug_assert!(self.values[v as usize].is_none());
+        self.values[v as usize] = Some(s);
+        self.trail.push(v);
+    }
+
+    /// A mark to undo to.
+    pub fn mark(&self) -> usize {
+        self.trail.len()
+    }
+
+    /// Unbinds every slot bound after `mark`.
+    pub fn undo(&mut self, mark: usize) {
+        while self.trail.len() > mark {
+            let v = self.trail.pop().expect("trail longer than mark");
+            self.values[v as usize] = None;
+        }
+    }
+}
+
+/// Evaluation failed: the span of the undefined operation.
+pub type Undefined = Span;
+
+fn int_of(syms: &Symbols, s: SymId, span: Span) -> Result<i32, Undefined> {
+    syms.num(s).ok_or(span)
+}
+
+/// clingo's integer power: negative exponents give 0, except that `0 ** -n` is undefined.
+fn ipow(base: i32, exp: i32) -> Option<i32> {
+    if exp < 0 {
+        return if base == 0 { None } else { Some(0) };
+    }
+    let mut r: i32 = 1;
+    for _ in 0..exp {
+        r = r.wrapping_mul(base);
+        if r == 0 || (r == 1 && base == 1) {
+            break;
+        }
+    }
+    Some(r)
+}
+
+/// Applies a binary operator to integers as clingo does; `None` when undefined.
+pub fn binary_int(op: BinaryOp, a: i32, b: i32) -> Option<i32> {
+    Some(match op {
+        BinaryOp::Add => a.wrapping_add(b),
+        BinaryOp::Sub => a.wrapping_sub(b),
+        BinaryOp::Mul => a.wrapping_mul(b),
+        BinaryOp::Div => {
+            if b == 0 {
+                return None;
+            }
+            a.wrapping_div(b)
+        }
+        BinaryOp::Mod => {
+            if b == 0 {
+                return None;
+            }
+            a.wrapping_rem(b)
+        }
+        BinaryOp::Pow => return ipow(a, b),
+        BinaryOp::BitAnd => a & b,
+        BinaryOp::BitOr => a | b,
+        BinaryOp::BitXor => a ^ b,
+    })
+}
+
+impl NTerm {
+    /// True when no variable occurs in the term.
+    pub fn is_ground(&self) -> bool {
+        match self {
+            NTerm::Sym(_) => true,
+            NTerm::Var(_) => false,
+            NTerm::Fun { args, .. } => args.iter().all(NTerm::is_ground),
+            NTerm::Unary { arg, .. } => arg.is_ground(),
+            NTerm::Binary { lhs, rhs, .. } => lhs.is_ground() && rhs.is_ground(),
+        }
+    }
+
+    /// Adds the variable slots of the term to `out`.
+    pub fn vars(&self, out: &mut Vec<u32>) {
+        match self {
+            NTerm::Sym(_) => {}
+            NTerm::Var(v) => {
+                if !out.contains(v) {
+                    out.push(*v)
+                }
+            }
+            NTerm::Fun { args, .. } => args.iter().for_each(|a| a.vars(out)),
+            NTerm::Unary { arg, .. } => arg.vars(out),
+            NTerm::Binary { lhs, rhs, .. } => {
+                lhs.vars(out);
+                rhs.vars(out)
+            }
+        }
+    }
+
+    /// True when every variable of the term is in `bound`.
+    pub fn bound_by(&self, bound: &[bool]) -> bool {
+        match self {
+            NTerm::Sym(_) => true,
+            NTerm::Var(v) => bound[*v as usize],
+            NTerm::Fun { args, .. } => args.iter().all(|a| a.bound_by(bound)),
+            NTerm::Unary { arg, .. } => arg.bound_by(bound),
+            NTerm::Binary { lhs, rhs, .. } => lhs.bound_by(bound) && rhs.bound_by(bound),
+        }
+    }
+
+    /// When matching the term against a symbol with the variables in `bound` known: `None` if
+    /// it cannot be matched (an operation over an unknown variable that cannot be inverted),
+    /// otherwise adds the variables the match binds to `out`.
+    pub fn binds(&self, bound: &[bool], out: &mut Vec<u32>) -> bool {
+        match self {
+            NTerm::Sym(_) => true,
+            NTerm::Var(v) => {
+                if !bound[*v as usize] && !out.contains(v) {
+                    out.push(*v);
+                }
+                true
+            }
+            NTerm::Fun { args, .. } => args.iter().all(|a| a.binds(bound, out)),
+            _ if self.bound_by(bound) => true,
+            NTerm::Unary {
+                op: UnaryOp::Minus,
+                arg,
+                ..
+            } => arg.binds(bound, out),
+            NTerm::Binary {
+                op: BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul,
+                lhs,
+                rhs,
+                ..
+            } => {
+                if lhs.bound_by(bound) {
+                    rhs.binds(bound, out)
+                } else if rhs.bound_by(bound) {
+                    lhs.binds(bound, out)
+                } else {
+                    false
+                }
+            }
+            _ => false,
+        }
+    }
+
+    /// Evaluates a term whose variables are all bound.
+    pub fn eval(&self, syms: &mut Symbols, b: &Binding) -> Result<SymId, Undefined> {
+        match self {
+            NTerm::Sym(s) => Ok(*s),
+            NTerm::Var(v) => Ok(b.get(*v).expect("evaluated an unbound variable")),
+            NTerm::Fun { name, neg, args } => {
+                let mut vals = smallvec::SmallVec::<[SymId; 8]>::new();
+                for a in args {
+                    vals.push(a.eval(syms, b)?);
+                }
+                Ok(syms.fun(*name, *neg, &vals))
+            }
+            NTerm::Unary { op, arg, span } => {
+                let v = arg.eval(syms, b)?;
+                match op {
+                    UnaryOp::Minus => match syms.get(v) {
+                        SymData::Num(n) => Ok(syms.int(n.wrapping_neg())),
+                        _ => syms.flip_sign(v).ok_or(*span),
+                    },
+                    UnaryOp::BitNot => {
+                        let n = int_of(syms, v, *span)?;
+                        Ok(syms.int(!n))
+                    }
+                    UnaryOp::Abs => {
+                        let n = int_of(syms, v, *span)?;
+                        Ok(syms.int(n.wrapping_abs()))
+                    }
+                }
+            }
+            NTerm::Binary { op, lhs, rhs, span } => {
+                let l = lhs.eval(syms, b)?;
+                let r = rhs.eval(syms, b)?;
+                let l = int_of(syms, l, *span)?;
+                let r = int_of(syms, r, *span)?;
+                let v = binary_int(*op, l, r).ok_or(*span)?;
+                Ok(syms.int(v))
+            }
+        }
+    }
+
+    /// Matches the term against `sym`, binding unbound variables; on failure the binding may
+    /// hold partial bindings, which the caller undoes to its mark. An undefined operation is a
+    /// failed match.
+    pub fn matches(&self, syms: &mut Symbols, sym: SymId, b: &mut Binding) -> bool {
+        match self {
+            NTerm::Sym(s) => *s == sym,
+            NTerm::Var(v) => match b.get(*v) {
+                Some(s) => s == sym,
+                None => {
+                    b.bind(*v, sym);
+                    true
+                }
+            },
+            NTerm::Fun { name, neg, args } => match syms.get(sym) {
+                SymData::Fun {
+                    name: n2,
+                    neg: g2,
+                    len,
+                    ..
+                } if n2 == *name && g2 == *neg && len as usize == args.len() => {
+                    for (i, a) in args.iter().enumerate() {
+                        let s = syms.args(sym)[i];
+                        if !a.matches(syms, s, b) {
+                            return false;
+                        }
+                    }
+                    true
+                }
+                _ => false,
+            },
+            _ => {
+                if self.bound_by_binding(b) {
+                    return match self.eval(syms, b) {
+                        Ok(v) => v == sym,
+                        Err(_) => false,
+                    };
+                }
+                // -X against a function symbol: X is the symbol with the sign flipped.
+                if let NTerm::Unary {
+                    op: UnaryOp::Minus,
+                    arg,
+                    ..
+                } = self
+                {
+                    if syms.num(sym).is_none() {
+                        return match syms.flip_sign(sym) {
+                            Some(t) => arg.matches(syms, t, b),
+                            None => false,
+                        };
+                    }
+                }
+                let Some(n) = syms.num(sym) else {
+                    return false;
+                };
+                match self {
+                    NTerm::Unary {
+                        op: UnaryOp::Minus,
+                        arg,
+                        ..
+                    } => {
+                        let t = syms.int(n.wrapping_neg());
+                        arg.matches(syms, t, b)
+                    }
+                    NTerm::Binary { op, lhs, rhs, .. } => {
+                        let (known, unknown, known_left) = if lhs.bound_by_binding(b) {
+                            (lhs, rhs, true)
+                        } else {
+                            (rhs, lhs, false)
+                        };
+                        let Ok(k) = known.eval(syms, b) else {
+                            return false;
+                        };
+                        let Some(k) = syms.num(k) else {
+                            return false;
+                        };
+                        let (n, k) = (n as i64, k as i64);
+                        // Solve n = known op x (or x op known) for x.
+                        let x = match (op, known_left) {
+                            (BinaryOp::Add, _) => n - k,
+                            (BinaryOp::Sub, true) => k - n,
+                            (BinaryOp::Sub, false) => n + k,
+                            (BinaryOp::Mul, _) => {
+                                if k == 0 || n % k != 0 {
+                                    return false;
+                                }
+                                n / k
+                            }
+                            _ => return false,
+                        };
+                        let Ok(x) = i32::try_from(x) else {
+                            return false;
+                        };
+                        let t = syms.int(x);
+                        unknown.matches(syms, t, b)
+                    }
+                    _ => false,
+                }
+            }
+        }
+    }
+
+    /// True when every variable of the term is bound in `b`.
+    pub fn bound_by_binding(&self, b: &Binding) -> bool {
+        match self {
+            NTerm::Sym(_) => true,
+            NTerm::Var(v) => b.get(*v).is_some(),
+            NTerm::Fun { args, .. } => args.iter().all(|a| a.bound_by_binding(b)),
+            NTerm::Unary { arg, .. } => arg.bound_by_binding(b),
+            NTerm::Binary { lhs, rhs, .. } => lhs.bound_by_binding(b) && rhs.bound_by_binding(b),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arithmetic_as_clingo() {
+        // clingo 5.8.3: 7/2=3, -7/2=-3, 7/-2=-3, 7\2=1, -7\2=-1, 7\-2=1, 2**-1=0, 0**-1 undefined,
+        // ~5=-6, 2147483647+1=-2147483648.
+        assert_eq!(binary_int(BinaryOp::Div, -7, 2), Some(-3));
+        assert_eq!(binary_int(BinaryOp::Div, 7, -2), Some(-3));
+        assert_eq!(binary_int(BinaryOp::Mod, -7, 2), Some(-1));
+        assert_eq!(binary_int(BinaryOp::Mod, 7, -2), Some(1));
+        assert_eq!(binary_int(BinaryOp::Div, 1, 0), None);
+        assert_eq!(binary_int(BinaryOp::Pow, 2, -1), Some(0));
+        assert_eq!(binary_int(BinaryOp::Pow, 0, -1), None);
+        assert_eq!(binary_int(BinaryOp::Pow, 2, 3), Some(8));
+        assert_eq!(binary_int(BinaryOp::Pow, -1, 5), Some(-1));
+        assert_eq!(binary_int(BinaryOp::Add, i32::MAX, 1), Some(i32::MIN));
+        assert_eq!(binary_int(BinaryOp::BitXor, 5, 3), Some(6));
+    }
+
+    #[test]
+    fn linear_terms_invert() {
+        let mut syms = Symbols::new();
+        let one = syms.int(1);
+        let span = Span::default();
+        // X+1 matched against 3 binds X=2.
+        let t = NTerm::Binary {
+            op: BinaryOp::Add,
+            lhs: Box::new(NTerm::Var(0)),
+            rhs: Box::new(NTerm::Sym(one)),
+            span,
+        };
+        let mut b = Binding::new(1);
+        let three = syms.int(3);
+        assert!(t.matches(&mut syms, three, &mut b));
+        assert_eq!(b.get(0), Some(syms.int(2)));
+        // 2*X against 3 fails.
+        let two = syms.int(2);
+        let t = NTerm::Binary {
+            op: BinaryOp::Mul,
+            lhs: Box::new(NTerm::Sym(two)),
+            rhs: Box::new(NTerm::Var(0)),
+            span,
+        };
+        let mut b = Binding::new(1);
+        assert!(!t.matches(&mut syms, three, &mut b));
+    }
+}

@@ -1,0 +1,250 @@
+//! The physics world: a rapier `PhysicsWorld` built from a `Scene`, stepped, and written back.
+//!
+//! Invariants: bodies are referred to only by rapier's generational `RigidBodyHandle`s (kept per
+//! object and in a reverse map), never by raw arena indices; a held object has no body; the
+//! table and a floor below it are fixed colliders without a movable body. Stepping is
+//! deterministic for a given scene because bodies are inserted in scene order and rapier runs
+//! single-threaded here.
+
+use super::scene::{Scene, TABLE_HALF_EXTENTS};
+use super::ObjectId;
+use hashbrown::HashMap;
+use parry3d::bounding_volume::Aabb;
+use parry3d::math::{Pose, Vector};
+use parry3d::query::{Ray, RayCast};
+use rapier3d::prelude::{
+    ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
+};
+
+/// The physics time step in seconds (120 Hz keeps 5 cm objects well resolved).
+pub const TIME_STEP: f32 = 1.0 / 120.0;
+
+/// Largest motion, in metres per half second, of a settled object.
+pub const SETTLED_MOTION: f32 = 0.001;
+
+/// Solver iterations per step: more than rapier's default 4, because towers on a small base
+/// have mass ratios of 30 to 1, which sink into each other with fewer iterations.
+pub const SOLVER_ITERATIONS: usize = 8;
+
+/// Natural frequency in Hz of the soft contacts between bodies. rapier's default, 30 Hz, scales
+/// the contact stiffness with the lighter body's mass, so four large cubes on a small one sink a
+/// centimetre into it; 120 Hz keeps such penetration near a millimetre.
+pub const CONTACT_FREQUENCY: f32 = 120.0;
+
+/// Height of the floor below the table top, in metres.
+pub const FLOOR_DEPTH: f32 = 0.75;
+
+/// What a ray or a contact hit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Hit {
+    /// A movable object.
+    Object(ObjectId),
+    /// The table top.
+    Table,
+    /// The floor around the table.
+    Floor,
+}
+
+/// A rapier world mirroring one scene.
+pub struct World {
+    /// The rapier state: bodies, colliders, broad and narrow phase, solver.
+    physics: PhysicsWorld,
+    /// Per object of the scene, its body; `None` for the held object.
+    bodies: Vec<Option<RigidBodyHandle>>,
+    /// Per object of the scene, its collider; `None` for the held object.
+    colliders: Vec<Option<ColliderHandle>>,
+    /// Which object each collider belongs to (the table and floor are absent).
+    owner: HashMap<ColliderHandle, ObjectId>,
+    /// The table's fixed collider.
+    table: ColliderHandle,
+}
+
+impl World {
+    /// Builds the world for a scene: the table, the floor and one dynamic body per object that
+    /// is not held.
+    pub fn build(scene: &Scene) -> World {
+        let mut physics = PhysicsWorld::new();
+        physics.integration_parameters.dt = TIME_STEP;
+        physics.integration_parameters.num_solver_iterations = SOLVER_ITERATIONS;
+        physics
+            .integration_parameters
+            .contact_softness
+            .natural_frequency = CONTACT_FREQUENCY;
+        physics
+            .integration_parameters
+            .static_contact_softness
+            .natural_frequency = 2.0 * CONTACT_FREQUENCY;
+        let [hx, hy, hz] = TABLE_HALF_EXTENTS;
+        let table = physics.insert_collider(
+            ColliderBuilder::cuboid(hx, hy, hz)
+                .translation(Vector::new(0.0, -hy, 0.0))
+                .friction(0.8),
+            None,
+        );
+        physics.insert_collider(
+            ColliderBuilder::cuboid(4.0, 0.05, 4.0)
+                .translation(Vector::new(0.0, -FLOOR_DEPTH - 0.05, 0.0))
+                .friction(0.8),
+            None,
+        );
+        let held = scene.held();
+        let mut bodies = Vec::with_capacity(scene.objects.len());
+        let mut colliders = Vec::with_capacity(scene.objects.len());
+        let mut owner = HashMap::new();
+        for id in scene.ids() {
+            if Some(id) == held {
+                bodies.push(None);
+                colliders.push(None);
+                continue;
+            }
+            let object = scene.object(id);
+            let body = RigidBodyBuilder::dynamic()
+                .pose(object.pose())
+                .linear_damping(0.1)
+                .angular_damping(object.kind.rolling_damping())
+                .ccd_enabled(true)
+                .can_sleep(false);
+            let collider = ColliderBuilder::new(object.kind.shape(object.size))
+                .density(500.0)
+                .friction(0.7)
+                .restitution(0.0);
+            let (b, c) = physics.insert(body, collider);
+            bodies.push(Some(b));
+            colliders.push(Some(c));
+            owner.insert(c, id);
+        }
+        World {
+            physics,
+            bodies,
+            colliders,
+            owner,
+            table,
+        }
+    }
+
+    /// Advances the simulation by whole time steps covering `seconds`.
+    pub fn step_for(&mut self, seconds: f32) {
+        let steps = (seconds / TIME_STEP).ceil() as usize;
+        for _ in 0..steps {
+            self.physics.step();
+        }
+    }
+
+    /// Advances the simulation in half-second rounds until no object moved more than
+    /// `SETTLED_MOTION` during a round, or `max_seconds` have passed; returns the simulated time
+    /// spent. Bodies never sleep (a body put to sleep while balancing would look settled), so
+    /// this is a test of motion, not of rapier's sleep state.
+    pub fn settle(&mut self, max_seconds: f32) -> f32 {
+        let round = 0.5;
+        let mut spent = 0.0;
+        while spent < max_seconds {
+            let before: Vec<Option<Pose>> = (0..self.len())
+                .map(|i| self.pose(ObjectId(i as u32)))
+                .collect();
+            self.step_for(round);
+            spent += round;
+            let moved = before.iter().enumerate().any(|(i, start)| {
+                match (start, self.pose(ObjectId(i as u32))) {
+                    (Some(a), Some(b)) => {
+                        (a.translation - b.translation).length() > SETTLED_MOTION
+                            || a.rotation.angle_between(b.rotation) > 10.0 * SETTLED_MOTION
+                    }
+                    _ => false,
+                }
+            });
+            if !moved {
+                break;
+            }
+        }
+        spent
+    }
+
+    /// Copies body poses back into the scene.
+    pub fn write_back(&self, scene: &mut Scene) {
+        for id in scene.ids().collect::<Vec<_>>() {
+            if let Some(pose) = self.pose(id) {
+                scene.objects[id.index()].set_pose(&pose);
+            }
+        }
+    }
+
+    /// The current pose of an object, or `None` if it is held.
+    pub fn pose(&self, id: ObjectId) -> Option<Pose> {
+        self.bodies[id.index()].map(|b| *self.physics.bodies[b].position())
+    }
+
+    /// The world-space bounding box of an object, or `None` if it is held.
+    pub fn aabb(&self, id: ObjectId) -> Option<Aabb> {
+        self.colliders[id.index()].map(|c| self.physics.colliders[c].compute_aabb())
+    }
+
+    /// The shape and pose of an object, or `None` if it is held.
+    pub fn shape(&self, id: ObjectId) -> Option<(&dyn parry3d::shape::Shape, Pose)> {
+        self.colliders[id.index()].map(|c| {
+            let collider = &self.physics.colliders[c];
+            (collider.shape(), *collider.position())
+        })
+    }
+
+    /// The table's shape and pose.
+    pub fn table_shape(&self) -> (&dyn parry3d::shape::Shape, Pose) {
+        let collider = &self.physics.colliders[self.table];
+        (collider.shape(), *collider.position())
+    }
+
+    /// Classifies a collider.
+    fn classify(&self, collider: ColliderHandle) -> Hit {
+        match self.owner.get(&collider) {
+            Some(&id) => Hit::Object(id),
+            None if collider == self.table => Hit::Table,
+            None => Hit::Floor,
+        }
+    }
+
+    /// Casts a ray (unit direction) against everything; returns what it hits first, the distance
+    /// and the surface normal.
+    ///
+    /// The colliders are tested one by one (a bounding-box test first): with at most a dozen
+    /// colliders this is as fast as the broad phase, and it is valid right after `build` and
+    /// after every step, without a broad-phase update in between.
+    pub fn cast(&self, origin: Vector, dir: Vector, max: f32) -> Option<(Hit, f32, Vector)> {
+        let ray = Ray::new(origin, dir);
+        let mut best: Option<(ColliderHandle, f32, Vector)> = None;
+        for (handle, collider) in self.physics.colliders.iter() {
+            let limit = best.map_or(max, |b| b.1);
+            if collider
+                .compute_aabb()
+                .cast_local_ray(&ray, limit, true)
+                .is_none()
+            {
+                continue;
+            }
+            if let Some(hit) =
+                collider
+                    .shape()
+                    .cast_ray_and_get_normal(collider.position(), &ray, limit, true)
+            {
+                if best.map_or(true, |b| hit.time_of_impact < b.1) {
+                    best = Some((handle, hit.time_of_impact, hit.normal));
+                }
+            }
+        }
+        best.map(|(c, t, n)| (self.classify(c), t, n))
+    }
+
+    /// Casts a ray against one object only; returns the distance to it.
+    pub fn cast_at(&self, id: ObjectId, origin: Vector, dir: Vector, max: f32) -> Option<f32> {
+        let (shape, pose) = self.shape(id)?;
+        shape.cast_ray(&pose, &Ray::new(origin, dir), max, true)
+    }
+
+    /// The number of objects mirrored (held or not).
+    pub fn len(&self) -> usize {
+        self.bodies.len()
+    }
+
+    /// True if the scene had no objects.
+    pub fn is_empty(&self) -> bool {
+        self.bodies.is_empty()
+    }
+}
