@@ -36,6 +36,7 @@ fn report(file: &str, models: Vec<ReportModel>, outcome: Outcome, exhausted: boo
         has_cr: false,
         calls: 1,
         times: Times::default(),
+        stats: None,
     }
 }
 

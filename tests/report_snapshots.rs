@@ -171,3 +171,30 @@ fn cautious_counts_shown_facts_as_decided() {
     assert!(text.contains("\nb c\nConsequences: [1;2]\n"), "{text}");
     assert!(text.contains("\nConsequences : 1+\n"), "{text}");
 }
+
+#[test]
+fn statistics_when_asked_for() {
+    let mut r = report();
+    r.stats = Some(Stats {
+        choices: 3,
+        conflicts: 1,
+        restarts: 0,
+        vars: 9,
+        clauses: 12,
+        ..Stats::default()
+    });
+    let mut out = Vec::new();
+    write_text(&mut out, &r, Quiet::default()).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(
+        text.contains(
+            "CPU Time     : 0.012s\n\nChoices      : 3       \nConflicts    : 1       \n"
+        ),
+        "{text}"
+    );
+    let mut out = Vec::new();
+    write_json(&mut out, &r, Quiet::default()).unwrap();
+    let value: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(value["Stats"]["Core"]["Choices"], 3);
+    assert_eq!(value["Stats"]["Lucent"]["Constraints"], 12);
+}
