@@ -591,7 +591,7 @@ impl Engine {
             return self.add_clause(&[!head]);
         }
         let bound = bound as u64;
-        norm.sort_by(|a, b| b.1.cmp(&a.1));
+        norm.sort_by_key(|x| std::cmp::Reverse(x.1));
         if self.propagate().is_some() {
             self.inconsistent = true;
             return false;
