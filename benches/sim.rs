@@ -4,10 +4,9 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BatchSize, Criterion};
 use lucent::sim::{
-    execute, generate, perceive, render_camera, ActConfig, Action, ErrorModel, GenerateConfig,
-    Preset, Scene, TruthConfig,
+    execute, generate, generate_many, perceive, render_camera, ActConfig, Action, ErrorModel,
+    GenerateConfig, Preset, Scene, TruthConfig,
 };
-use rayon::prelude::*;
 
 fn nine(seed: u64) -> GenerateConfig {
     let mut config = GenerateConfig::new(Preset::Simulated, seed);
