@@ -84,12 +84,8 @@ fn benches(c: &mut Criterion) {
         })
     });
     group.bench_function("rayon_all_cores", |b| {
-        b.iter(|| {
-            (0..16u64)
-                .into_par_iter()
-                .map(|s| generate(&nine(s)).unwrap())
-                .collect::<Vec<_>>()
-        })
+        let configs: Vec<GenerateConfig> = (0..16u64).map(nine).collect();
+        b.iter(|| generate_many(&configs))
     });
     group.finish();
 }
