@@ -1,11 +1,13 @@
 //! Parser throughput (MB/s) on generated inputs: a large fact file (`p(1,2). p(2,3). ...`), a
 //! rule-heavy clingo program with aggregates, choices and CR rules, and a SPARC program with
-//! many sort definitions and rules. Run with `cargo bench --no-default-features --bench parse`.
+//! many sort definitions and rules; and the lexer alone on the fact file. Run with
+//! `cargo bench --no-default-features --bench parse`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 
 use lucent::base::FileId;
 use lucent::syntax::ast::Dialect;
+use lucent::syntax::lexer::{Lexer, TokenKind};
 use lucent::syntax::parse;
 
 /// `p(i,i+1).` facts, about `bytes` long.
@@ -68,6 +70,17 @@ fn sparc(n: usize) -> String {
     out
 }
 
+/// Lexes the whole text and returns the number of tokens.
+fn lex(text: &str) -> usize {
+    let mut lexer = Lexer::new(FileId(0), text, Dialect::Clingo);
+    let mut diags = Vec::new();
+    let mut count = 0;
+    while lexer.next_token(&mut diags).kind != TokenKind::Eof {
+        count += 1;
+    }
+    count
+}
+
 fn bench(c: &mut Criterion) {
     let inputs = [
         ("facts_16MB", facts(16 << 20), Dialect::Clingo),
@@ -76,6 +89,10 @@ fn bench(c: &mut Criterion) {
     ];
     let mut group = c.benchmark_group("parse");
     group.sample_size(10);
+    group.throughput(Throughput::Bytes(inputs[0].1.len() as u64));
+    group.bench_function("lex_facts_16MB", |b| {
+        b.iter(|| lex(black_box(&inputs[0].1)))
+    });
     for (name, text, dialect) in &inputs {
         let parsed = parse(FileId(0), text, *dialect);
         assert!(

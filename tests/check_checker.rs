@@ -287,6 +287,20 @@ fn assumptions_and_unknown_atoms() {
 }
 
 #[test]
+fn atoms_above_num_atoms_do_not_panic() {
+    // A program breaking its invariant (atom 5 with num_atoms = 1): atoms above num_atoms are
+    // false. a :- not x5.  x5 :- x4.  x5 | x3 :- a.  with a = 1: {a} violates the last rule.
+    let p = program(
+        1,
+        vec![rule(&[1], &[-5]), rule(&[5], &[4]), rule(&[5, 3], &[1])],
+    );
+    assert_eq!(check(&p, &[1]), Err(Violation::RuleViolated { rule: 2 }));
+    let mut p = program(1, vec![rule(&[1], &[-5])]);
+    p.externals.push((7, ExternalValue::True));
+    assert!(check(&p, &[1]).is_err());
+}
+
+#[test]
 fn edges_must_be_acyclic() {
     // {a; b}.  #edge (1,2) : a.  #edge (2,1) : b.  Both edges together form a cycle.
     let mut p = program(2, vec![choice(&[1, 2], &[])]);

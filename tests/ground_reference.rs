@@ -16,8 +16,12 @@ fn atom(pred: u8, vars: Vec<u8>) -> impl Strategy<Value = RAtom> {
     proptest::collection::vec(
         prop_oneof![
             (0..3i32).prop_map(RTerm::Const),
-            proptest::sample::select(if vars.is_empty() { vec![0u8] } else { vars.clone() })
-                .prop_map(RTerm::Var),
+            proptest::sample::select(if vars.is_empty() {
+                vec![0u8]
+            } else {
+                vars.clone()
+            })
+            .prop_map(RTerm::Var),
         ],
         arity,
     )

@@ -36,6 +36,7 @@ fn report(file: &str, models: Vec<ReportModel>, outcome: Outcome, exhausted: boo
         has_cr: false,
         calls: 1,
         times: Times::default(),
+        stats: None,
     }
 }
 
@@ -421,4 +422,23 @@ fn exit_codes() {
         exit_code(Outcome::Satisfiable, false, Some(StopReason::Interrupted)),
         11
     );
+}
+
+#[test]
+fn interrupted_before_any_model() {
+    // clingo --time-limit=1 php.lp   (13 pigeons, 12 holes: no answer within a second; exit 1)
+    let mut r = report("php.lp", vec![], Outcome::Unknown, false);
+    r.stop = Some(StopReason::TimeLimit);
+    let expected = "lucent version X\nReading from php.lp\nSolving...\nUNKNOWN\n\nTIME LIMIT   : 1\nModels       : 0+\n";
+    assert_eq!(
+        text(&r, Quiet::default()),
+        format!("{expected}{SUMMARY_TAIL}")
+    );
+    assert_eq!(r.exit_code(), 1);
+    // timeout -s INT 1 clingo --outf=2 php.lp
+    r.stop = Some(StopReason::Interrupted);
+    let j = json(&r, Quiet::default());
+    let expected = "  \"Result\": \"UNKNOWN\",\n  \"INTERRUPTED\": 1,\n  \"Models\": {\n    \"Number\": 0,\n    \"More\": \"yes\"\n  },\n";
+    assert!(j.contains(expected), "{j}");
+    assert!(text(&r, Quiet::default()).contains("\n\nINTERRUPTED  : 1\nModels       : 0+\n"));
 }

@@ -41,6 +41,7 @@ fn context() -> Context {
         enum_mode: EnumMode::Auto,
         has_cr: true,
         shown_total: 5,
+        facts: vec!["p".into()],
     }
 }
 
@@ -98,4 +99,102 @@ fn brave_consequences_from_a_result() {
     let mut out = Vec::new();
     write_text(&mut out, &r, Quiet::default()).unwrap();
     insta::assert_snapshot!(String::from_utf8(out).unwrap());
+}
+
+#[test]
+fn context_from_program_and_config() {
+    use lucent::ground::program::{CrRule, GroundProgram, Minimize, Output};
+    use lucent::solve::{Config, OptMode};
+    let mut p = GroundProgram::new();
+    let a = p.new_atom();
+    p.outputs = vec![
+        Output {
+            symbol: "a".into(),
+            condition: vec![a as i32],
+        },
+        Output {
+            symbol: "a".into(),
+            condition: vec![],
+        },
+        Output {
+            symbol: "b".into(),
+            condition: vec![],
+        },
+    ];
+    p.minimize.push(Minimize {
+        priority: 0,
+        lits: vec![(a as i32, 1)],
+    });
+    p.cr_rules.push(CrRule {
+        appl: a,
+        label: "r".into(),
+    });
+    let c = Context::for_program(&p, &Config::default(), vec!["x.lp".into()]);
+    assert!(c.has_minimize && c.optimizing && c.has_cr);
+    assert_eq!(c.shown_total, 2);
+    assert_eq!(c.facts, vec!["a".to_string(), "b".to_string()]);
+    let config = Config {
+        opt_mode: OptMode::Enum(vec![]),
+        ..Config::default()
+    };
+    let c = Context::for_program(&p, &config, vec![]);
+    assert!(c.has_minimize && !c.optimizing);
+    let config = Config {
+        opt_mode: OptMode::Ignore,
+        ..Config::default()
+    };
+    assert!(!Context::for_program(&p, &config, vec![]).has_minimize);
+}
+
+#[test]
+fn cautious_counts_shown_facts_as_decided() {
+    // As clingo -n1 --enum-mode=cautious on `a :- not b. b :- not a. c.`: after the first model
+    // {b, c}, c (a fact) is decided and b is open: `Consequences: [1;2]`.
+    let mut result = cr_result();
+    result.models = vec![Model {
+        number: 1,
+        symbols: vec!["b".into(), "c".into()],
+        ..Model::default()
+    }];
+    result.exhausted = false;
+    result.outcome = Outcome::Satisfiable;
+    let context = Context {
+        enum_mode: EnumMode::Cautious,
+        shown_total: 3,
+        facts: vec!["c".into()],
+        ..Context::default()
+    };
+    let r = Report::new(&result, context);
+    let mut out = Vec::new();
+    write_text(&mut out, &r, Quiet::default()).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(text.contains("\nb c\nConsequences: [1;2]\n"), "{text}");
+    assert!(text.contains("\nConsequences : 1+\n"), "{text}");
+}
+
+#[test]
+fn statistics_when_asked_for() {
+    let mut r = report();
+    r.stats = Some(Stats {
+        choices: 3,
+        conflicts: 1,
+        restarts: 0,
+        vars: 9,
+        clauses: 12,
+        ..Stats::default()
+    });
+    let mut out = Vec::new();
+    write_text(&mut out, &r, Quiet::default()).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(
+        text.contains(
+            "CPU Time     : 0.012s\n\nChoices      : 3       \nConflicts    : 1       \n"
+        ),
+        "{text}"
+    );
+    let mut out = Vec::new();
+    write_json(&mut out, &r, Quiet::default()).unwrap();
+    let value: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(value["Stats"]["Core"]["Choices"], 3);
+    assert_eq!(value["Stats"]["Lucent"]["Constraints"], 12);
 }

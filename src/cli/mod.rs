@@ -8,11 +8,17 @@
 
 #[cfg(feature = "sim")]
 pub mod sim;
+pub mod demo;
+pub mod include;
 pub mod input;
 pub mod options;
 pub mod report;
 
 use std::io::{Read, Write};
+use std::time::{Duration, Instant};
+
+use crate::ground::{self, GroundProgram};
+use crate::solve;
 
 use crate::base::{Diagnostics, SourceMap};
 use crate::syntax::ast::{Dialect, Program};
@@ -73,6 +79,28 @@ pub fn run(args: &[String], stdin: &mut dyn Read, out: &mut dyn Write, err: &mut
 }
 
 fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
+    match args.first().map(String::as_str) {
+        Some("demo") => return demo::run(&args[1..], io.out, io.err),
+        #[cfg(feature = "sim")]
+        Some("sim") => return Ok(sim::run_with(&args[1..], io.out, io.err)),
+        #[cfg(not(feature = "sim"))]
+        Some("sim") => {
+            writeln!(
+                io.err,
+                "*** ERROR: (lucent): this build has no simulator (built without the `sim` feature)"
+            )?;
+            return Ok(EXIT_UNAVAILABLE);
+        }
+        Some(verb @ ("plan" | "explain" | "learn" | "experiment")) => {
+            writeln!(
+                io.err,
+                "*** ERROR: (lucent): `lucent {verb}` is not part of this build yet; \
+                 `lucent demo` runs the planning task end to end"
+            )?;
+            return Ok(EXIT_UNAVAILABLE);
+        }
+        _ => {}
+    }
     let options = match options::parse_args(args) {
         Ok(o) => o,
         Err(e) => return usage_error(io, &e),
@@ -147,12 +175,18 @@ fn read_and_parse(
     let (loaded, load_diags) = input::load(&options.files, io.stdin, &mut sources);
     diags.extend(load_diags);
     let mut programs = Vec::new();
+    let mut includes = include::Includes::default();
+    for input in &loaded {
+        includes.mark_input(&input.name);
+    }
     for input in &loaded {
         let text = &sources.get(input.file).text;
         let dialect = dialect_of(options, &input.name, text);
         let parse = crate::syntax::parse(input.file, text, dialect);
         diags.extend(parse.diagnostics);
-        programs.push(parse.program);
+        let mut program = parse.program;
+        includes.resolve(&mut program, input.file, &mut sources, diags);
+        programs.push(program);
     }
     if diags.has_errors() {
         flush_diagnostics(io, diags, &sources)?;
@@ -167,26 +201,246 @@ fn read_and_parse(
     }))
 }
 
+/// Parses `-c name=value` values as terms (through the parser, as `#const name = value.`).
+fn const_terms(
+    options: &Options,
+    io: &mut Io,
+) -> std::io::Result<Result<Vec<(String, crate::syntax::ast::Term)>, i32>> {
+    let mut out = Vec::new();
+    for (name, value) in &options.consts {
+        let mut sources = SourceMap::new();
+        let text = format!("#const {name} = {value}.");
+        let file = sources.add("<cmd>", text.clone());
+        let parse = crate::syntax::parse(file, &text, Dialect::Clingo);
+        let term = parse.program.statements.iter().find_map(|s| match &s.kind {
+            crate::syntax::ast::StatementKind::Const(c) if !parse.has_errors() => {
+                Some(c.value.clone())
+            }
+            _ => None,
+        });
+        match term {
+            Some(t) => out.push((name.clone(), t)),
+            None => {
+                return usage_error(
+                    io,
+                    &UsageError::InvalidValue {
+                        option: "const".into(),
+                        value: format!("{name}={value}"),
+                    },
+                )
+                .map(Err)
+            }
+        }
+    }
+    Ok(Ok(out))
+}
+
+/// The solver configuration the options ask for.
+fn solve_config(
+    options: &Options,
+    program: &GroundProgram,
+    deadline: Option<Instant>,
+) -> solve::Config {
+    let opt_mode = match options.opt_mode {
+        options::OptMode::Opt => solve::OptMode::Opt,
+        options::OptMode::OptN => solve::OptMode::OptN,
+        options::OptMode::Enum => solve::OptMode::Enum(options.opt_bounds.clone()),
+        options::OptMode::Ignore => solve::OptMode::Ignore,
+    };
+    let optimizing = !program.minimize.is_empty()
+        && matches!(opt_mode, solve::OptMode::Opt | solve::OptMode::OptN);
+    // clingo: with optimization, and for consequences, the default is to search until the end.
+    let consequences = matches!(
+        options.enum_mode,
+        options::EnumMode::Brave | options::EnumMode::Cautious
+    );
+    let models = if !options.models_given && (optimizing || consequences) {
+        0
+    } else {
+        options.models as usize
+    };
+    solve::Config {
+        models,
+        opt_mode,
+        enum_mode: match options.enum_mode {
+            options::EnumMode::Brave => solve::EnumMode::Brave,
+            options::EnumMode::Cautious => solve::EnumMode::Cautious,
+            _ => solve::EnumMode::Auto,
+        },
+        cr_mode: match options.cr {
+            options::CrMode::Cardinality => solve::CrMode::Cardinality,
+            options::CrMode::Subset => solve::CrMode::Subset,
+        },
+        project: options.project,
+        deadline,
+        seed: options.seed,
+        check_models: options.check,
+        threads: options.threads as usize,
+        ..solve::Config::default()
+    }
+}
+
+/// Solves `program` and prints the result as clingo does; returns the exit code.
+fn solve_and_report(
+    options: &Options,
+    io: &mut Io,
+    program: &GroundProgram,
+    inputs: Vec<String>,
+    start: Instant,
+    deadline: Option<Instant>,
+) -> std::io::Result<i32> {
+    let config = solve_config(options, program, deadline);
+    let context = report::Context::for_program(program, &config, inputs);
+    let mut solver = solve::Solver::new(program, config);
+    let result = solver.solve();
+    let mut rep = report::Report::new(&result, context);
+    rep.times.total = start.elapsed().as_secs_f64();
+    rep.times.cpu = rep.times.total;
+    let quiet = report::Quiet::from_levels(options.quiet);
+    match options.outf {
+        options::OutputFormat::Text => report::write_text(io.out, &rep, quiet)?,
+        options::OutputFormat::Json => report::write_json(io.out, &rep, quiet)?,
+    }
+    if options.check {
+        for model in &result.models {
+            if let Err(why) = solve::check::check(program, &model.atoms) {
+                writeln!(
+                    io.err,
+                    "*** ERROR: (lucent): --check: model {} is not a stable model: {why}",
+                    model.number
+                )?;
+                return Ok(EXIT_UNAVAILABLE);
+            }
+        }
+    }
+    Ok(rep.exit_code())
+}
+
 fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
+    let start = Instant::now();
+    let deadline = options
+        .time_limit
+        .map(|secs| start + Duration::from_secs_f64(secs));
     let mut diags = diagnostics_for(options);
     if options.mode == options::Mode::Clasp {
-        writeln!(
-            io.err,
-            "*** ERROR: (lucent): --mode=clasp needs the solver, which this build does not have yet"
-        )?;
-        return Ok(EXIT_UNAVAILABLE);
+        return run_clasp_mode(options, io, start, deadline);
     }
+    let consts = match const_terms(options, io)? {
+        Ok(c) => c,
+        Err(code) => return Ok(code),
+    };
     let parsed = match read_and_parse(options, io, &mut diags)? {
         Ok(p) => p,
         Err(code) => return Ok(code),
     };
     flush_diagnostics(io, &diags, &parsed.sources)?;
-    writeln!(
-        io.err,
-        "*** ERROR: (lucent): this build cannot ground or solve yet; {} input(s) parsed, nothing was solved",
-        parsed.programs.len()
-    )?;
-    Ok(EXIT_UNAVAILABLE)
+    let config = ground::GroundConfig {
+        consts,
+        deadline,
+        provenance: options.provenance,
+        message_limit: Some(options.message_limit),
+        ..ground::GroundConfig::default()
+    };
+    // All inputs form one program, as gringo reads several files.
+    let mut program = Program {
+        dialect: parsed
+            .programs
+            .first()
+            .map(|p| p.dialect)
+            .unwrap_or_default(),
+        statements: Vec::new(),
+    };
+    for p in parsed.programs {
+        program.statements.extend(p.statements);
+    }
+    let mut grounding = ground::ground(&program, Some(&parsed.sources), &config);
+    for kind in &options.disabled_warnings {
+        grounding.diagnostics.disable(*kind);
+    }
+    let shown: Vec<_> = grounding
+        .diagnostics
+        .items()
+        .iter()
+        .filter(|d| {
+            d.is_error()
+                || d.kind
+                    .map_or(true, |k| !options.disabled_warnings.contains(&k))
+        })
+        .cloned()
+        .collect();
+    let mut filtered = diagnostics_for(options);
+    filtered.extend(shown);
+    flush_diagnostics(io, &filtered, &parsed.sources)?;
+    if grounding.diagnostics.has_errors() {
+        writeln!(
+            io.err,
+            "*** ERROR: (lucent): grounding stopped because of errors"
+        )?;
+        return Ok(EXIT_INPUT);
+    }
+    match options.mode {
+        options::Mode::Gringo => {
+            match options.ground_format {
+                options::GroundFormat::Aspif => write!(
+                    io.out,
+                    "{}",
+                    ground::aspif::write_program(&grounding.program)
+                )?,
+                options::GroundFormat::Text => {
+                    let sources = options.provenance.then_some(&parsed.sources);
+                    write!(io.out, "{}", ground::text::write_text(&grounding, sources))?
+                }
+            }
+            Ok(0)
+        }
+        _ => solve_and_report(
+            options,
+            io,
+            &grounding.program,
+            parsed.names,
+            start,
+            deadline,
+        ),
+    }
+}
+
+/// `--mode=clasp`: reads aspif (gringo's output) and solves it.
+fn run_clasp_mode(
+    options: &Options,
+    io: &mut Io,
+    start: Instant,
+    deadline: Option<Instant>,
+) -> std::io::Result<i32> {
+    let names = if options.files.is_empty() {
+        vec!["-".to_string()]
+    } else {
+        options.files.clone()
+    };
+    let mut bytes = Vec::new();
+    for name in &names {
+        let read = if name == "-" {
+            io.stdin.read_to_end(&mut bytes).map(|_| ())
+        } else {
+            std::fs::read(name).map(|b| bytes.extend(b))
+        };
+        if read.is_err() {
+            writeln!(
+                io.err,
+                "<cmd>: error: file could not be opened:\n  {name}\n"
+            )?;
+            return Ok(EXIT_INPUT);
+        }
+    }
+    let program = match ground::aspif::read_program(&bytes) {
+        Ok(p) => p,
+        Err(e) => {
+            let name = names.join(",");
+            writeln!(io.err, "{name}: error: malformed aspif input: {e}\n")?;
+            writeln!(io.err, "*** ERROR: (lucent): reading aspif failed")?;
+            return Ok(EXIT_INPUT);
+        }
+    };
+    solve_and_report(options, io, &program, names, start, deadline)
 }
 
 #[cfg(test)]

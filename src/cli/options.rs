@@ -74,6 +74,7 @@ pub const OPTIONS: &[OptionSpec] = &[
     opt("cr", None, Value, "<mode>", "CR-rule semantics {card|subset}: cardinality-minimal applied CR rules, or subset-minimal with prefer/2 [card]", "Solving"),
     opt("time-limit", None, Value, "<s>", "Stop after <s> seconds and answer UNKNOWN [0 = none]", "Solving"),
     opt("parallel-mode", Some('t'), Value, "<n>", "Run a portfolio of <n> threads [1]", "Solving"),
+    opt("heuristic", None, Value, "<h>", "Decision heuristic {berkmin|vmtf|vsids|domain|unit|none}: accepted for clasp compatibility; Lucent always uses VSIDS, which changes search order, never answers", "Solving"),
     opt("seed", None, Value, "<n>", "Seed of the solver's random choices [1]", "Solving"),
     opt("check", None, Flag, "", "Verify every reported model with an independent stable-model check", "Solving"),
     opt("outf", None, Value, "<n>", "Output format {0=text|2=json} [0]", "Output"),
@@ -475,6 +476,13 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
             }
             o.threads = threads;
         }
+        "heuristic" => {
+            let known = ["berkmin", "vmtf", "vsids", "domain", "unit", "none"];
+            let name = v.split(',').next().unwrap_or("").to_ascii_lowercase();
+            if !known.contains(&name.as_str()) {
+                return Err(invalid(long, v));
+            }
+        }
         "seed" => o.seed = parse_num(long, v)?,
         "check" => o.check = true,
         "outf" => {
@@ -542,7 +550,10 @@ pub fn help_text() -> String {
     let mut out = String::new();
     out.push_str(&format!("lucent version {}\n", env!("CARGO_PKG_VERSION")));
     out.push_str("usage: lucent [number] [options] [files]\n");
-    out.push_str("       lucent <verb> [options]   where <verb> is one of: demo, sim\n\n");
+    out.push_str("       lucent demo [--help]      the tabletop planning task, end to end\n");
+    out.push_str(
+        "       lucent sim <command>      the simulated tabletop world (lucent sim --help)\n\n",
+    );
     out.push_str(
         "Grounds and solves answer-set programs (clingo dialect, CR-Prolog rules, SPARC\n",
     );

@@ -11,6 +11,10 @@
 //! colon when none is applied), and the key `"Applied": [ .. ]` in JSON witnesses after
 //! `"Value"` (and `"Costs"`).
 //!
+//! With `--stats` (`Report::stats` set), the counters Lucent keeps follow the time lines in
+//! clasp's layout (a subset of clasp's lines) and a `"Stats"` object in JSON (`"Core"` with
+//! clingo's names, `"Lucent"` for the rest).
+//!
 //! Deliberate differences from clingo 5.4: the first line says `lucent version X`; JSON strings
 //! are escaped correctly (clingo 5.4 leaves backslashes in symbols unescaped).
 //!
@@ -21,7 +25,8 @@
 
 use std::io::{self, Write};
 
-use crate::solve::{EnumMode, Model, Outcome, SolveResult, StopReason};
+use crate::ground::program::GroundProgram;
+use crate::solve::{Config, EnumMode, Model, OptMode, Outcome, SolveResult, Stats, StopReason};
 
 /// Exit code bit: a model was found.
 pub const EXIT_SAT: i32 = 10;
@@ -128,6 +133,8 @@ pub struct Report {
     pub calls: u32,
     /// Times for the summary.
     pub times: Times,
+    /// Search statistics to print (`--stats`), if asked for.
+    pub stats: Option<Stats>,
 }
 
 /// What the command line knows beyond the solver's result.
@@ -145,6 +152,36 @@ pub struct Context {
     pub has_cr: bool,
     /// Number of distinct shown symbols of the program (for brave consequence counts).
     pub shown_total: usize,
+    /// Shown symbols that hold in every model (output statements without condition), sorted:
+    /// the cautious consequences known before the search.
+    pub facts: Vec<String>,
+}
+
+impl Context {
+    /// The context of solving `program` with `config`, read from `inputs`.
+    pub fn for_program(program: &GroundProgram, config: &Config, inputs: Vec<String>) -> Context {
+        let has_minimize = !program.minimize.is_empty() && config.opt_mode != OptMode::Ignore;
+        let mut symbols: Vec<&str> = program.outputs.iter().map(|o| o.symbol.as_str()).collect();
+        symbols.sort_unstable();
+        symbols.dedup();
+        let mut facts: Vec<String> = program
+            .outputs
+            .iter()
+            .filter(|o| o.condition.is_empty())
+            .map(|o| o.symbol.clone())
+            .collect();
+        facts.sort_unstable();
+        facts.dedup();
+        Context {
+            inputs,
+            has_minimize,
+            optimizing: has_minimize && matches!(config.opt_mode, OptMode::Opt | OptMode::OptN),
+            enum_mode: config.enum_mode,
+            has_cr: !program.cr_rules.is_empty(),
+            shown_total: symbols.len(),
+            facts,
+        }
+    }
 }
 
 impl Report {
@@ -153,8 +190,9 @@ impl Report {
     ///
     /// Consequence counts: the solver reports the current consequences as the model's symbols
     /// but not which of them are already decided, so for brave mode the open atoms are the
-    /// shown atoms not yet brave, and for cautious mode all current atoms count as open until
-    /// the search is exhausted (clingo may count facts as decided earlier).
+    /// shown atoms not yet brave, and for cautious mode the current atoms other than shown
+    /// facts count as open until the search is exhausted (clasp counts every atom fixed at the
+    /// top level as decided, which can be more).
     pub fn new(result: &SolveResult, context: Context) -> Report {
         let n = result.models.len();
         let models = result
@@ -195,6 +233,7 @@ impl Report {
                 unsat: 0.0,
                 cpu: secs,
             },
+            stats: None,
         }
     }
 
@@ -220,10 +259,17 @@ fn consequences(model: &Model, context: &Context, final_: bool) -> Option<Conseq
             true_count: len,
             open: 0,
         }),
-        EnumMode::Cautious => Some(Consequences {
-            true_count: 0,
-            open: len,
-        }),
+        EnumMode::Cautious => {
+            let known = model
+                .symbols
+                .iter()
+                .filter(|s| context.facts.binary_search(s).is_ok())
+                .count();
+            Some(Consequences {
+                true_count: known,
+                open: len - known,
+            })
+        }
     }
 }
 
@@ -387,7 +433,31 @@ pub fn write_text_summary(out: &mut dyn Write, report: &Report) -> io::Result<()
         "Time         : {:.3}s (Solving: {:.2}s 1st Model: {:.2}s Unsat: {:.2}s)",
         t.total, t.solve, t.first_model, t.unsat
     )?;
-    writeln!(out, "CPU Time     : {:.3}s", t.cpu)
+    writeln!(out, "CPU Time     : {:.3}s", t.cpu)?;
+    if let Some(stats) = &report.stats {
+        write_text_stats(out, stats)?;
+    }
+    Ok(())
+}
+
+/// The statistics Lucent keeps, in clasp's `--stats` layout (a subset of clasp's lines, plus
+/// `Propagations`, which clasp does not print).
+fn write_text_stats(out: &mut dyn Write, stats: &Stats) -> io::Result<()> {
+    writeln!(out)?;
+    let lines = [
+        ("Choices", stats.choices),
+        ("Conflicts", stats.conflicts),
+        ("Restarts", stats.restarts),
+        ("Propagations", stats.propagations),
+        ("Lemmas", stats.learnt),
+        ("  Loop", stats.loop_nogoods),
+    ];
+    for (name, value) in lines {
+        writeln!(out, "{name:<13}: {value:<8}")?;
+    }
+    writeln!(out)?;
+    writeln!(out, "{:<13}: {:<8}", "Variables", stats.vars)?;
+    writeln!(out, "{:<13}: {:<8}", "Constraints", stats.clauses)
 }
 
 fn optimum_text(report: &Report) -> &'static str {
@@ -528,8 +598,17 @@ pub fn write_json(out: &mut dyn Write, report: &Report, quiet: Quiet) -> io::Res
     s.push_str(&format!("  \"Calls\": {},\n", report.calls));
     let t = &report.times;
     s.push_str(&format!(
-        "  \"Time\": {{\n    \"Total\": {:.3},\n    \"Solve\": {:.3},\n    \"Model\": {:.3},\n    \"Unsat\": {:.3},\n    \"CPU\": {:.3}\n  }}\n}}\n",
+        "  \"Time\": {{\n    \"Total\": {:.3},\n    \"Solve\": {:.3},\n    \"Model\": {:.3},\n    \"Unsat\": {:.3},\n    \"CPU\": {:.3}\n  }}",
         t.total, t.solve, t.first_model, t.unsat, t.cpu
     ));
+    if let Some(st) = &report.stats {
+        // clingo's "Stats" object, with the counters Lucent keeps: "Core" as clingo names
+        // them, the rest under "Lucent".
+        s.push_str(&format!(
+            ",\n  \"Stats\": {{\n    \"Core\": {{\n      \"Choices\": {},\n      \"Conflicts\": {},\n      \"Restarts\": {}\n    }},\n    \"Lucent\": {{\n      \"Propagations\": {},\n      \"Lemmas\": {},\n      \"LoopNogoods\": {},\n      \"Variables\": {},\n      \"Constraints\": {}\n    }}\n  }}",
+            st.choices, st.conflicts, st.restarts, st.propagations, st.learnt, st.loop_nogoods, st.vars, st.clauses
+        ));
+    }
+    s.push_str("\n}\n");
     out.write_all(s.as_bytes())
 }

@@ -238,6 +238,10 @@ pub struct Rewriter<'a> {
     pred_map: HashMap<Pred, PredId>,
     /// Spans of unsupported constructs already reported.
     reported: Vec<Span>,
+    /// The statement being rewritten (index and span), for auxiliary rules.
+    current: (u32, Span),
+    /// Number of projection predicates made for anonymous variables under negation.
+    projections: u32,
 }
 
 /// Per-statement variable table.
@@ -556,6 +560,8 @@ impl<'a> Rewriter<'a> {
             out: Compiled::default(),
             pred_map: HashMap::new(),
             reported: Vec::new(),
+            current: (0, Span::default()),
+            projections: 0,
         }
     }
 
@@ -891,6 +897,12 @@ impl<'a> Rewriter<'a> {
         for b in body {
             let mut extra = Vec::new();
             let n = match b {
+                ast::BodyLiteral::Literal(l)
+                    if l.sign != Sign::Positive && has_anonymous_arg(l) =>
+                {
+                    let p = self.project(l);
+                    self.literal(&p, vars, &mut extra)?
+                }
                 ast::BodyLiteral::Literal(l) => self.literal(l, vars, &mut extra)?,
                 ast::BodyLiteral::Aggregate { sign, aggregate } => {
                     self.body_aggregate(*sign, aggregate, vars, &mut extra)?
@@ -922,6 +934,65 @@ impl<'a> Rewriter<'a> {
             out.push(n);
         }
         Some(())
+    }
+
+    /// `not p(X,_)` is `not #projN(X)` with `#projN(P) :- p(P,_).` (gringo projects anonymous
+    /// variables out of negated atoms the same way).
+    fn project(&mut self, l: &ast::Literal) -> ast::Literal {
+        let ast::Atom::Symbolic(a) = &l.atom else {
+            return l.clone();
+        };
+        self.projections += 1;
+        let name = format!("#proj{}", self.projections);
+        let args = a.args.first().cloned().unwrap_or_default();
+        let mut head_args = Vec::new();
+        let mut body_args = Vec::new();
+        let mut lit_args = Vec::new();
+        for (i, t) in args.iter().enumerate() {
+            if matches!(t.kind, TermKind::Anonymous) {
+                body_args.push(t.clone());
+            } else {
+                let v = ast::Term {
+                    span: t.span,
+                    kind: TermKind::Variable(format!("#P{i}")),
+                };
+                head_args.push(v.clone());
+                body_args.push(v);
+                lit_args.push(t.clone());
+            }
+        }
+        let mk = |name: &str, negated: bool, args: Vec<ast::Term>| ast::SymbolicAtom {
+            span: a.span,
+            negated,
+            name: name.to_string(),
+            args: vec![args],
+        };
+        let rule = ast::Rule {
+            head: ast::Head::Disjunction(vec![ast::ConditionalLiteral {
+                span: a.span,
+                literal: ast::Literal {
+                    span: a.span,
+                    sign: Sign::Positive,
+                    atom: ast::Atom::Symbolic(mk(&name, false, head_args)),
+                },
+                condition: Vec::new(),
+                has_colon: false,
+            }]),
+            body: vec![ast::BodyLiteral::Literal(ast::Literal {
+                span: l.span,
+                sign: Sign::Positive,
+                atom: ast::Atom::Symbolic(mk(&a.name, a.negated, body_args)),
+            })],
+            kind: ast::RuleKind::Normal,
+        };
+        let (index, span) = self.current;
+        self.rule(index, span, &rule);
+        self.current = (index, span);
+        ast::Literal {
+            span: l.span,
+            sign: l.sign,
+            atom: ast::Atom::Symbolic(mk(&name, false, lit_args)),
+        }
     }
 
     fn head_elem(
@@ -1009,6 +1080,7 @@ impl<'a> Rewriter<'a> {
 
     fn statement(&mut self, index: u32, st: &ast::Statement) {
         use ast::StatementKind as K;
+        self.current = (index, st.span);
         match &st.kind {
             K::Rule(r) => self.rule(index, st.span, r),
             K::WeakConstraint(w) => {
@@ -1584,6 +1656,18 @@ impl<'a> Rewriter<'a> {
             var_names,
             globals,
         });
+    }
+}
+
+/// True when an argument of the literal's atom is the anonymous variable.
+fn has_anonymous_arg(l: &ast::Literal) -> bool {
+    match &l.atom {
+        ast::Atom::Symbolic(a) => a
+            .args
+            .iter()
+            .flatten()
+            .any(|t| matches!(t.kind, TermKind::Anonymous)),
+        _ => false,
     }
 }
 

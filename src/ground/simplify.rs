@@ -53,18 +53,33 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         })
         .collect();
     let mut head_count = vec![0u32; n + 1];
-    let mut pos_occ: Vec<Vec<u32>> = vec![Vec::new(); n + 1];
-    let mut neg_occ: Vec<Vec<u32>> = vec![Vec::new(); n + 1];
+    // Occurrences in bodies: (rule, weight); weight 0 marks a normal body.
+    let mut pos_occ: Vec<Vec<(u32, i64)>> = vec![Vec::new(); n + 1];
+    let mut neg_occ: Vec<Vec<(u32, i64)>> = vec![Vec::new(); n + 1];
+    // For weight bodies: the weight still reachable minus the bound; below 0 the rule is dead.
+    let mut slack: Vec<i64> = vec![0; g.rules.len()];
     for (ri, r) in g.rules.iter().enumerate() {
         for &h in &r.head {
             head_count[h as usize] += 1;
         }
-        if let Body::Normal(lits) = &r.body {
-            for &l in lits {
-                if l > 0 {
-                    pos_occ[l as usize].push(ri as u32);
-                } else {
-                    neg_occ[(-l) as usize].push(ri as u32);
+        match &r.body {
+            Body::Normal(lits) => {
+                for &l in lits {
+                    if l > 0 {
+                        pos_occ[l as usize].push((ri as u32, 0));
+                    } else {
+                        neg_occ[(-l) as usize].push((ri as u32, 0));
+                    }
+                }
+            }
+            Body::Weight { lower, lits } => {
+                slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
+                for &(l, w) in lits {
+                    if l > 0 {
+                        pos_occ[l as usize].push((ri as u32, w.max(1)));
+                    } else {
+                        neg_occ[(-l) as usize].push((ri as u32, w.max(1)));
+                    }
                 }
             }
         }
@@ -105,7 +120,14 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     // Rules with `not a`, a a fact, are dead from the start.
     for a in 1..=n {
         if status[a - 1] == Status::Fact {
-            for &ri in &neg_occ[a] {
+            for &(ri, w) in &neg_occ[a] {
+                // A weight body loses the literal's weight; a normal body dies.
+                if w > 0 {
+                    slack[ri as usize] -= w;
+                    if slack[ri as usize] >= 0 {
+                        continue;
+                    }
+                }
                 kill(
                     ri as usize,
                     &mut dead,
@@ -118,7 +140,13 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         }
     }
     while let Some(a) = work.pop() {
-        for &ri in &pos_occ[a as usize] {
+        for &(ri, w) in &pos_occ[a as usize] {
+            if w > 0 {
+                slack[ri as usize] -= w;
+                if slack[ri as usize] >= 0 {
+                    continue;
+                }
+            }
             kill(
                 ri as usize,
                 &mut dead,
@@ -309,11 +337,15 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         used[a as usize] = true;
     }
     // Shown atoms.
-    let shown_pred = |_: &Grounder<'_>, pred: u32| -> bool {
+    let shown_pred = |g: &Grounder<'_>, pred: u32| -> bool {
         if pred == u32::MAX {
             return false;
         }
         let p = &prog.preds[pred as usize];
+        // Auxiliary predicates of the rewriting (`#proj...`) are never shown.
+        if g.syms.names.resolve(p.name).starts_with('#') {
+            return false;
+        }
         if !prog.show.restricted {
             return true;
         }

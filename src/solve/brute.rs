@@ -54,10 +54,18 @@ pub fn stable_models(program: &GroundProgram) -> Vec<Vec<Atom>> {
     let mut can_be_true = vec![false; n + 1];
     for rule in &program.rules {
         for &h in &rule.head {
+            assert!(
+                h as usize <= n,
+                "rule head atom {h} is above num_atoms = {n}"
+            );
             can_be_true[h as usize] = true;
         }
     }
     for (a, v) in external_values(program) {
+        assert!(
+            a as usize <= n,
+            "external atom {a} is above num_atoms = {n}"
+        );
         if v != ExternalValue::Release {
             can_be_true[a as usize] = true;
         }

@@ -98,12 +98,26 @@ pub fn check(program: &GroundProgram, true_atoms: &[Atom]) -> Result<(), Violati
 /// Like [`check`], with the candidate as a truth vector indexed by atom (index 0 unused, length
 /// `num_atoms + 1`).
 pub fn check_assignment(program: &GroundProgram, truth: &[bool]) -> Result<(), Violation> {
-    let n = program.num_atoms as usize;
     assert_eq!(
         truth.len(),
-        n + 1,
+        program.num_atoms as usize + 1,
         "the truth vector must have num_atoms + 1 entries"
     );
+    // A program that breaks its own invariant (an atom above `num_atoms`) is checked as if
+    // `num_atoms` were large enough, with the extra atoms false, rather than panicking.
+    let n = (program.num_atoms as usize).max(largest_atom(program));
+    let extended: Vec<bool>;
+    let truth = if truth.len() <= n {
+        extended = truth
+            .iter()
+            .copied()
+            .chain(std::iter::repeat(false))
+            .take(n + 1)
+            .collect();
+        &extended[..]
+    } else {
+        truth
+    };
     let holds = |l: Lit| {
         let a = l.unsigned_abs() as usize;
         let v = a <= n && truth[a];
@@ -233,6 +247,20 @@ pub fn check_assignment(program: &GroundProgram, truth: &[bool]) -> Result<(), V
         Some(smaller) => Err(Violation::NotMinimal { smaller }),
         None => Ok(()),
     }
+}
+
+/// The largest atom in the rules and external statements of `program`.
+fn largest_atom(program: &GroundProgram) -> usize {
+    let mut m = 0;
+    for rule in &program.rules {
+        m = rule.head.iter().fold(m, |m, &a| m.max(a));
+        m = match &rule.body {
+            Body::Normal(lits) => lits.iter().fold(m, |m, &l| m.max(l.unsigned_abs())),
+            Body::Weight { lits, .. } => lits.iter().fold(m, |m, &(l, _)| m.max(l.unsigned_abs())),
+        };
+    }
+    m = program.externals.iter().fold(m, |m, &(a, _)| m.max(a));
+    m as usize
 }
 
 /// A node on a cycle of the directed graph `edges`, if it has one (iterative depth-first

@@ -22,8 +22,10 @@ use crate::base::{Diagnostic, FileId, Span};
 use super::ast::*;
 use super::lexer::{describe, Lexer, Token, TokenKind as T};
 
-/// Deepest nesting of terms, aggregates and sort expressions the parser accepts.
-pub const MAX_DEPTH: u32 = 500;
+/// Deepest nesting of terms, aggregates and sort expressions the parser accepts. 256 levels
+/// keep the parser, the printer and the span walk well inside a 2 MiB thread stack (the size of
+/// test threads) even in unoptimized builds, where one level costs about 5 KiB of stack.
+pub const MAX_DEPTH: u32 = 256;
 
 /// The message of the single diagnostic reported for embedded scripts.
 pub const UNSUPPORTED_SCRIPT: &str =
@@ -241,21 +243,36 @@ fn section_rank(section: Option<Section>) -> u8 {
 }
 
 /// The symbolic atom a term denotes, if it has the shape of one: `p`, `p(...)`, `-p(...)`.
-pub(crate) fn term_to_atom(term: &Term) -> Option<SymbolicAtom> {
-    let (negated, inner) = match &term.kind {
+/// Takes the term by value so names and arguments move instead of being copied; a term of
+/// another shape is handed back.
+pub(crate) fn term_to_atom(term: Term) -> Result<SymbolicAtom, Term> {
+    let is_atom = |t: &Term| match &t.kind {
+        TermKind::Constant(_) => true,
+        TermKind::Function { name, .. } => !name.is_empty(),
+        _ => false,
+    };
+    let shaped = match &term.kind {
         TermKind::Unary {
             op: UnaryOp::Minus,
             arg,
-        } => (true, &**arg),
-        _ => (false, term),
+        } => is_atom(arg),
+        _ => is_atom(&term),
     };
-    let (name, args) = match &inner.kind {
-        TermKind::Constant(name) => (name.clone(), vec![Vec::new()]),
-        TermKind::Function { name, args, .. } if !name.is_empty() => (name.clone(), args.clone()),
-        _ => return None,
+    if !shaped {
+        return Err(term);
+    }
+    let span = term.span;
+    let (negated, inner) = match term.kind {
+        TermKind::Unary { arg, .. } => (true, *arg),
+        kind => (false, Term { span, kind }),
     };
-    Some(SymbolicAtom {
-        span: term.span,
+    let (name, args) = match inner.kind {
+        TermKind::Constant(name) => (name, vec![Vec::new()]),
+        TermKind::Function { name, args, .. } => (name, args),
+        _ => unreachable!("checked to be an atom's shape above"),
+    };
+    Ok(SymbolicAtom {
+        span,
         negated,
         name,
         args,
@@ -567,7 +584,7 @@ impl<'a> Parser<'a> {
             Some(Section::Predicates) => self.predicate_decl().map(Some),
             Some(Section::Display) => {
                 let start = self.tok.start;
-                let mut lits = Vec::new();
+                let mut lits = Vec::with_capacity(1);
                 self.literal(Ctx::Single, &mut lits)?;
                 self.expect(T::Dot, &["."])?;
                 let _ = start;
@@ -735,16 +752,16 @@ impl<'a> Parser<'a> {
             self.expect(T::Dot, &["."])?;
             return Ok(StatementKind::Project(Project::Signature(sig)));
         }
-        let atom = self.atom_of(&term)?;
+        let atom = self.atom_of(term)?;
         let body = self.directive_body()?;
         Ok(StatementKind::Project(Project::Atom { atom, body }))
     }
 
     /// The atom a parsed term denotes, or an error at the current token.
-    fn atom_of(&mut self, term: &Term) -> PResult<SymbolicAtom> {
+    fn atom_of(&mut self, term: Term) -> PResult<SymbolicAtom> {
         match term_to_atom(term) {
-            Some(atom) => Ok(atom),
-            None => Err(self.unexpected(&[])),
+            Ok(atom) => Ok(atom),
+            Err(_) => Err(self.unexpected(&[])),
         }
     }
 
@@ -799,7 +816,7 @@ impl<'a> Parser<'a> {
     fn external(&mut self) -> PResult<StatementKind> {
         self.bump();
         let term = self.term()?;
-        let atom = self.atom_of(&term)?;
+        let atom = self.atom_of(term)?;
         let body = self.directive_body()?;
         let value = if self.at(T::LBrack) {
             self.bump();
@@ -816,7 +833,7 @@ impl<'a> Parser<'a> {
     fn heuristic(&mut self) -> PResult<StatementKind> {
         self.bump();
         let term = self.term()?;
-        let atom = self.atom_of(&term)?;
+        let atom = self.atom_of(term)?;
         let body = self.directive_body()?;
         self.expect(T::LBrack, &["["])?;
         let weight = self.term()?;
@@ -1123,7 +1140,7 @@ impl<'a> Parser<'a> {
         if self.at_aggregate() {
             return Ok((Head::Aggregate(self.head_aggregate(start, None)?), None));
         }
-        let mut first = Vec::new();
+        let mut first = Vec::with_capacity(1);
         let mut first_term = None;
         if self.at(T::Not) || (self.at(T::Hash) && matches!(self.cur(), "#true" | "#false")) {
             self.literal(Ctx::Single, &mut first)?;
@@ -1162,13 +1179,14 @@ impl<'a> Parser<'a> {
                     ));
                 }
             }
-            let is_atom = !self.at_cmp();
-            self.literal_tail(start, Sign::Positive, term.clone(), Ctx::Single, &mut first)?;
-            if is_atom {
-                first_term = Some(term);
+            // Only `label : head :+ body` needs the term back (as the label), and only when a
+            // `:` follows an atom; copy it just then.
+            if !self.at_cmp() && self.at(T::Colon) {
+                first_term = Some(term.clone());
             }
+            self.literal_tail(start, Sign::Positive, term, Ctx::Single, &mut first)?;
         }
-        let mut elements = Vec::new();
+        let mut elements = Vec::with_capacity(1);
         let literal = first.remove(0);
         elements.push(self.head_element(start, literal)?);
         // gringo separates disjunction elements by `|`, `;` or `,` (a `,` after a condition
@@ -1176,7 +1194,7 @@ impl<'a> Parser<'a> {
         while self.at(T::Bar) || self.at(T::Semi) || self.at(T::Comma) {
             self.bump();
             let start = self.tok.start;
-            let mut lits = Vec::new();
+            let mut lits = Vec::with_capacity(1);
             self.literal(Ctx::Single, &mut lits)?;
             let literal = lits.remove(0);
             elements.push(self.head_element(start, literal)?);
@@ -1226,7 +1244,7 @@ impl<'a> Parser<'a> {
         if !self.at(T::RBrace) {
             loop {
                 let start = self.tok.start;
-                let mut lits = Vec::new();
+                let mut lits = Vec::with_capacity(1);
                 self.literal(Ctx::Single, &mut lits)?;
                 let literal = lits.remove(0);
                 elements.push(self.head_element(start, literal)?);
@@ -1278,7 +1296,7 @@ impl<'a> Parser<'a> {
                     }
                 }
                 self.expect(T::Colon, &[":"])?;
-                let mut lits = Vec::new();
+                let mut lits = Vec::with_capacity(1);
                 self.literal(Ctx::Single, &mut lits)?;
                 let literal = lits.remove(0);
                 let condition = if self.eat(T::Colon) {
@@ -1337,7 +1355,7 @@ impl<'a> Parser<'a> {
             self.body_end = AFTER_AGGREGATE;
             return Ok(());
         }
-        let mut lits = Vec::new();
+        let mut lits = Vec::with_capacity(1);
         if self.at(T::Hash) && (matches!(self.cur(), "#true" | "#false") || self.at_sort_name()) {
             self.atom_literal(start, sign, &mut lits)?;
         } else {
@@ -1516,7 +1534,7 @@ impl<'a> Parser<'a> {
         out: &mut Vec<Literal>,
     ) -> PResult<()> {
         let Some(op) = cmp_op(self.tok.kind) else {
-            let Some(atom) = term_to_atom(&term) else {
+            let Ok(atom) = term_to_atom(term) else {
                 return Err(self.unexpected(&[]));
             };
             out.push(Literal {
@@ -1529,30 +1547,27 @@ impl<'a> Parser<'a> {
         self.bump();
         let mut lhs = term;
         let mut op = op;
+        let mut lit_start = start;
         loop {
             let rhs = self.term()?;
-            let lit_start = if out.is_empty() {
-                start
-            } else {
-                lhs.span.start
-            };
+            let next_start = rhs.span.start;
+            let chained = ctx == Ctx::Chain && self.at_cmp();
+            // In a chain `a < b < c` the middle term is shared: the next part starts with a copy.
+            let next_lhs = chained.then(|| rhs.clone());
             out.push(Literal {
                 span: self.span_from(lit_start),
                 sign,
-                atom: Atom::Comparison {
-                    lhs,
-                    op,
-                    rhs: rhs.clone(),
-                },
+                atom: Atom::Comparison { lhs, op, rhs },
             });
-            if ctx == Ctx::Single {
+            let Some(next_lhs) = next_lhs else {
                 return Ok(());
-            }
+            };
             match cmp_op(self.tok.kind) {
                 Some(next) if sign == Sign::Positive => {
                     self.bump();
-                    lhs = rhs;
+                    lhs = next_lhs;
                     op = next;
+                    lit_start = next_start;
                 }
                 Some(_) => {
                     self.diags.push(Diagnostic::error(
@@ -1732,12 +1747,12 @@ impl<'a> Parser<'a> {
     /// `( alternatives )` of a function: pools `f(1,2;3)`; `f()` is one empty list.
     fn arguments(&mut self) -> PResult<Vec<Vec<Term>>> {
         self.bump();
-        let mut alts = Vec::new();
+        let mut alts = Vec::with_capacity(1);
         if self.eat(T::RParen) {
             return Ok(vec![Vec::new()]);
         }
         loop {
-            let mut terms = Vec::new();
+            let mut terms = Vec::with_capacity(2);
             loop {
                 terms.push(self.term()?);
                 if !self.eat(T::Comma) {
