@@ -4,10 +4,9 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BatchSize, Criterion};
 use lucent::sim::{
-    execute, generate, perceive, render_camera, ActConfig, Action, ErrorModel, GenerateConfig,
-    Preset, Scene, TruthConfig,
+    execute, generate, generate_many, perceive, render_camera, ActConfig, Action, ErrorModel,
+    GenerateConfig, Preset, Scene, TruthConfig,
 };
-use rayon::prelude::*;
 
 fn nine(seed: u64) -> GenerateConfig {
     let mut config = GenerateConfig::new(Preset::Simulated, seed);
@@ -85,12 +84,8 @@ fn benches(c: &mut Criterion) {
         })
     });
     group.bench_function("rayon_all_cores", |b| {
-        b.iter(|| {
-            (0..16u64)
-                .into_par_iter()
-                .map(|s| generate(&nine(s)).unwrap())
-                .collect::<Vec<_>>()
-        })
+        let configs: Vec<GenerateConfig> = (0..16u64).map(nine).collect();
+        b.iter(|| generate_many(&configs))
     });
     group.finish();
 }

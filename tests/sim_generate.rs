@@ -122,3 +122,17 @@ fn json_round_trip_keeps_the_scene() {
         measure(&scene, &TruthConfig::default()).relations
     );
 }
+
+#[test]
+fn parallel_generation_equals_sequential() {
+    let configs: Vec<GenerateConfig> = (0..6)
+        .map(|s| GenerateConfig::new(Preset::ALL[s as usize % 3], s))
+        .collect();
+    let parallel = lucent::sim::generate_many(&configs);
+    for (config, scene) in configs.iter().zip(parallel) {
+        assert_eq!(
+            scene.unwrap().to_json(),
+            generate(config).unwrap().to_json()
+        );
+    }
+}

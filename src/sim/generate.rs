@@ -380,3 +380,10 @@ pub fn generate(config: &GenerateConfig) -> Result<Scene, SimError> {
     world.write_back(&mut scene);
     Ok(scene)
 }
+
+/// Generates many scenes in parallel with rayon (coarse grain: one scene per task), in the order
+/// of the configurations; each result is the same as `generate` would give alone.
+pub fn generate_many(configs: &[GenerateConfig]) -> Vec<Result<Scene, SimError>> {
+    use rayon::prelude::*;
+    configs.par_iter().map(generate).collect()
+}

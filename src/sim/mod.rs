@@ -32,7 +32,7 @@ pub mod truth;
 pub mod world;
 
 pub use act::{execute, ActConfig, Action, ActionReport, Failure};
-pub use generate::{generate, GenerateConfig, Preset};
+pub use generate::{generate, generate_many, GenerateConfig, Preset};
 pub use object::{Colour, ObjectKind, Size, Surface};
 pub use perceive::{perceive, ErrorModel, FactStyle, Literal, Observation, Percept};
 pub use render::{render_camera, render_top, Image};

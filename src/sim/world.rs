@@ -57,6 +57,9 @@ pub struct World {
     owner: HashMap<ColliderHandle, ObjectId>,
     /// The table's fixed collider.
     table: ColliderHandle,
+    /// Every collider with its world bounding box, as of the last build or step; ray casts
+    /// test these boxes first.
+    boxes: Vec<(ColliderHandle, Aabb)>,
 }
 
 impl World {
@@ -113,13 +116,26 @@ impl World {
             colliders.push(Some(c));
             owner.insert(c, id);
         }
-        World {
+        let mut world = World {
             physics,
             bodies,
             colliders,
             owner,
             table,
-        }
+            boxes: Vec::new(),
+        };
+        world.refresh_boxes();
+        world
+    }
+
+    /// Recomputes the cached bounding boxes after the bodies moved.
+    fn refresh_boxes(&mut self) {
+        self.boxes = self
+            .physics
+            .colliders
+            .iter()
+            .map(|(handle, collider)| (handle, collider.compute_aabb()))
+            .collect();
     }
 
     /// Advances the simulation by whole time steps covering `seconds`.
@@ -128,6 +144,7 @@ impl World {
         for _ in 0..steps {
             self.physics.step();
         }
+        self.refresh_boxes();
     }
 
     /// Advances the simulation in half-second rounds until no object moved more than
@@ -204,21 +221,18 @@ impl World {
     /// Casts a ray (unit direction) against everything; returns what it hits first, the distance
     /// and the surface normal.
     ///
-    /// The colliders are tested one by one (a bounding-box test first): with at most a dozen
-    /// colliders this is as fast as the broad phase, and it is valid right after `build` and
-    /// after every step, without a broad-phase update in between.
+    /// The colliders are tested one by one (their cached bounding boxes first): with at most a
+    /// dozen colliders this is as fast as the broad phase, and it is valid right after `build`
+    /// and after every step, without a broad-phase update in between.
     pub fn cast(&self, origin: Vector, dir: Vector, max: f32) -> Option<(Hit, f32, Vector)> {
         let ray = Ray::new(origin, dir);
         let mut best: Option<(ColliderHandle, f32, Vector)> = None;
-        for (handle, collider) in self.physics.colliders.iter() {
+        for &(handle, aabb) in &self.boxes {
             let limit = best.map_or(max, |b| b.1);
-            if collider
-                .compute_aabb()
-                .cast_local_ray(&ray, limit, true)
-                .is_none()
-            {
+            if aabb.cast_local_ray(&ray, limit, true).is_none() {
                 continue;
             }
+            let collider = &self.physics.colliders[handle];
             if let Some(hit) =
                 collider
                     .shape()

@@ -591,6 +591,7 @@ impl Engine {
             return self.add_clause(&[!head]);
         }
         let bound = bound as u64;
+        norm.sort_by_key(|x| std::cmp::Reverse(x.1));
         if self.propagate().is_some() {
             self.inconsistent = true;
             return false;
@@ -802,22 +803,18 @@ impl Engine {
         }
     }
 
-    /// Evaluates one weight constraint; returns true on conflict.
+    /// Evaluates one weight constraint; returns true on conflict. Decisions use the counters
+    /// (which lag behind the values only for assignments not yet processed, and only in the
+    /// safe direction: fewer true and false literals), so every inference is sound; the
+    /// remaining ones happen when the lagging assignments are processed. Literals are sorted by
+    /// decreasing weight, so the scans stop at the first literal too light to matter.
     fn propagate_weight(&mut self, id: usize) -> bool {
         let c = &self.weights[id];
         let head = c.head;
         let bound = c.bound;
-        let mut sum_true = 0u64;
-        let mut sum_undef = 0u64;
-        for &(l, w) in &c.lits {
-            match self.values[l.code()] {
-                1 => sum_true += w,
-                0 => sum_undef += w,
-                _ => {}
-            }
-        }
+        let sum_true = c.sum_true;
+        let max = c.total - c.sum_false;
         let hv = self.val(head);
-        let max = sum_true + sum_undef;
         let false_lits = |e: &Engine| -> Vec<Lit> {
             e.weights[id]
                 .lits
@@ -871,11 +868,14 @@ impl Engine {
             return false;
         }
         if hv == 1 {
-            // Every unassigned literal whose loss would drop the maximum below the bound must hold.
+            // Every unassigned literal whose loss would drop the maximum below the bound must
+            // hold: weight > max - bound.
+            let slack = max - bound;
             let need: Vec<Lit> = self.weights[id]
                 .lits
                 .iter()
-                .filter(|&&(l, w)| self.val(l) == 0 && max - w < bound)
+                .take_while(|&&(_, w)| w > slack)
+                .filter(|&&(l, _)| self.val(l) == 0)
                 .map(|&(l, _)| l)
                 .collect();
             if !need.is_empty() {
@@ -890,11 +890,14 @@ impl Engine {
                 }
             }
         } else if hv == -1 {
-            // Every unassigned literal that would reach the bound must be false.
+            // Every unassigned literal that would reach the bound must be false:
+            // weight >= bound - sum_true.
+            let gap = bound - sum_true;
             let deny: Vec<Lit> = self.weights[id]
                 .lits
                 .iter()
-                .filter(|&&(l, w)| self.val(l) == 0 && sum_true + w >= bound)
+                .take_while(|&&(_, w)| w >= gap)
+                .filter(|&&(l, _)| self.val(l) == 0)
                 .map(|&(l, _)| l)
                 .collect();
             if !deny.is_empty() {

@@ -1,7 +1,7 @@
 //! The printer: syntax tree back to readable clingo or SPARC source.
 //!
 //! Role: one statement per line, canonical spacing, operators spelled in their first form
-//! (`=` for `==`, `!=` for `<>`), bare guards for `<=`.
+//! (`=` for `==`, `!=` for `<>`), bare `<=` guards only in the `1 { a } 2` forms.
 //!
 //! Invariant: for every tree `t` the parser produces, `parse(print(t))` has the same shape as
 //! `t` (spans aside). The printer needs no extra parentheses for that, because the parser keeps
@@ -267,14 +267,14 @@ fn head(out: &mut String, h: &Head) {
             }
         }
         Head::Choice(c) => {
-            lower(out, &c.lower);
+            lower(out, &c.lower, true);
             out.push('{');
             conditionals(out, &c.elements);
             out.push('}');
-            upper(out, &c.upper);
+            upper(out, &c.upper, true);
         }
         Head::Aggregate(a) => {
-            lower(out, &a.lower);
+            lower(out, &a.lower, false);
             out.push_str(function(a.function));
             out.push('{');
             for (i, e) in a.elements.iter().enumerate() {
@@ -288,7 +288,7 @@ fn head(out: &mut String, h: &Head) {
                 }
             }
             out.push_str(" }");
-            upper(out, &a.upper);
+            upper(out, &a.upper, false);
         }
     }
 }
@@ -313,11 +313,11 @@ fn function(f: AggregateFunction) -> &'static str {
     }
 }
 
-/// A left guard followed by a space.
-fn lower(out: &mut String, g: &Option<Guard>) {
+/// A left guard followed by a space; `<=` is left out when `bare` (the `1 { a } 2` forms).
+fn lower(out: &mut String, g: &Option<Guard>, bare: bool) {
     if let Some(g) = g {
         term(out, &g.term);
-        if g.op != CmpOp::Le {
+        if !(bare && g.op == CmpOp::Le) {
             out.push(' ');
             out.push_str(cmp(g.op));
         }
@@ -325,11 +325,11 @@ fn lower(out: &mut String, g: &Option<Guard>) {
     }
 }
 
-/// A right guard preceded by a space.
-fn upper(out: &mut String, g: &Option<Guard>) {
+/// A right guard preceded by a space; `<=` is left out when `bare`.
+fn upper(out: &mut String, g: &Option<Guard>, bare: bool) {
     if let Some(g) = g {
         out.push(' ');
-        if g.op != CmpOp::Le {
+        if !(bare && g.op == CmpOp::Le) {
             out.push_str(cmp(g.op));
             out.push(' ');
         }
@@ -364,8 +364,9 @@ fn body(out: &mut String, b: &[BodyLiteral]) {
             BodyLiteral::Conditional(c) => conditional(out, c),
             BodyLiteral::Aggregate { sign, aggregate: a } => {
                 sign_prefix(out, *sign);
-                lower(out, &a.lower);
-                if !a.set_syntax.is_empty() {
+                let bare = !a.set_syntax.is_empty();
+                lower(out, &a.lower, bare);
+                if bare {
                     out.push('{');
                     conditionals(out, &a.set_syntax);
                     out.push('}');
@@ -385,7 +386,7 @@ fn body(out: &mut String, b: &[BodyLiteral]) {
                     }
                     out.push_str(" }");
                 }
-                upper(out, &a.upper);
+                upper(out, &a.upper, bare);
             }
         }
     }
