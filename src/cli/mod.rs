@@ -8,6 +8,7 @@
 
 #[cfg(feature = "sim")]
 pub mod sim;
+pub mod demo;
 pub mod include;
 pub mod input;
 pub mod options;
@@ -78,6 +79,28 @@ pub fn run(args: &[String], stdin: &mut dyn Read, out: &mut dyn Write, err: &mut
 }
 
 fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
+    match args.first().map(String::as_str) {
+        Some("demo") => return demo::run(&args[1..], io.out, io.err),
+        #[cfg(feature = "sim")]
+        Some("sim") => return Ok(sim::run_with(&args[1..], io.out, io.err)),
+        #[cfg(not(feature = "sim"))]
+        Some("sim") => {
+            writeln!(
+                io.err,
+                "*** ERROR: (lucent): this build has no simulator (built without the `sim` feature)"
+            )?;
+            return Ok(EXIT_UNAVAILABLE);
+        }
+        Some(verb @ ("plan" | "explain" | "learn" | "experiment")) => {
+            writeln!(
+                io.err,
+                "*** ERROR: (lucent): `lucent {verb}` is not part of this build yet; \
+                 `lucent demo` runs the planning task end to end"
+            )?;
+            return Ok(EXIT_UNAVAILABLE);
+        }
+        _ => {}
+    }
     let options = match options::parse_args(args) {
         Ok(o) => o,
         Err(e) => return usage_error(io, &e),

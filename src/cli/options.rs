@@ -550,7 +550,10 @@ pub fn help_text() -> String {
     let mut out = String::new();
     out.push_str(&format!("lucent version {}\n", env!("CARGO_PKG_VERSION")));
     out.push_str("usage: lucent [number] [options] [files]\n");
-    out.push_str("       lucent <verb> [options]   where <verb> is one of: demo, sim\n\n");
+    out.push_str("       lucent demo [--help]      the tabletop planning task, end to end\n");
+    out.push_str(
+        "       lucent sim <command>      the simulated tabletop world (lucent sim --help)\n\n",
+    );
     out.push_str(
         "Grounds and solves answer-set programs (clingo dialect, CR-Prolog rules, SPARC\n",
     );

@@ -1454,6 +1454,14 @@ impl<'a> Grounder<'a> {
             reads.push(r);
         }
         self.warn_undefined(prog, &heads);
+        // SPARC sorts: facts of their hidden predicates.
+        for &(pred, v) in &prog.sort_facts {
+            let name = prog.preds[pred as usize].name;
+            let sym = self.syms.fun(name, false, &[v]);
+            let a = self.atom_of(sym, pred);
+            self.derive(a);
+            self.atoms[a as usize - 1].fact = true;
+        }
         // Dependency graph: edges from a head predicate to what its rule reads, and between the
         // head predicates of one rule.
         let mut edges: Vec<Vec<u32>> = vec![Vec::new(); n];
@@ -1671,7 +1679,7 @@ impl<'a> Grounder<'a> {
                 }
             }
             for a in atoms {
-                if !defined[a.pred as usize] && seen.insert(a.span) {
+                if !a.sort && !defined[a.pred as usize] && seen.insert(a.span) {
                     let d = Diagnostic::warning(
                         WarningKind::AtomUndefined,
                         a.span,

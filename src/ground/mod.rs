@@ -15,6 +15,7 @@ pub mod aspif;
 pub mod symbol;
 pub mod term;
 pub mod rewrite;
+pub mod sparc;
 pub mod instantiate;
 pub mod simplify;
 pub mod text;

@@ -50,6 +50,8 @@ pub struct NAtom {
     pub args: Vec<NTerm>,
     /// Where it was written.
     pub span: Span,
+    /// A SPARC sort atom `#s(t)`: a typing check, placed after the program's own literals.
+    pub sort: bool,
 }
 
 /// A body literal after rewriting.
@@ -220,6 +222,8 @@ pub struct Compiled {
     pub defined: Vec<PredId>,
     /// Spans of the source statements, by statement index.
     pub stmt_spans: Vec<Span>,
+    /// SPARC sort memberships, as facts of the sort predicates `#s/1`.
+    pub sort_facts: Vec<(PredId, SymId)>,
 }
 
 /// Rewriting context over the whole program.
@@ -238,6 +242,8 @@ pub struct Rewriter<'a> {
     pred_map: HashMap<Pred, PredId>,
     /// Spans of unsupported constructs already reported.
     reported: Vec<Span>,
+    /// Names (with `#`) of the SPARC sorts defined so far.
+    pub sorts: Vec<String>,
     /// The statement being rewritten (index and span), for auxiliary rules.
     current: (u32, Span),
     /// Number of projection predicates made for anonymous variables under negation.
@@ -560,6 +566,7 @@ impl<'a> Rewriter<'a> {
             out: Compiled::default(),
             pred_map: HashMap::new(),
             reported: Vec::new(),
+            sorts: Vec::new(),
             current: (0, Span::default()),
             projections: 0,
         }
@@ -764,6 +771,7 @@ impl<'a> Rewriter<'a> {
             neg: a.negated,
             args,
             span: a.span,
+            sort: false,
         })
     }
 
@@ -791,9 +799,26 @@ impl<'a> Rewriter<'a> {
                 }
             }
             ast::Atom::Boolean(b) => NLit::Bool(if l.sign == Sign::Not { !*b } else { *b }),
-            ast::Atom::Sort { .. } => {
-                self.unsupported(l.span, "sort atoms outside SPARC programs");
-                return None;
+            ast::Atom::Sort { sort, arg } => {
+                let name = format!("#{sort}");
+                if !self.sorts.contains(&name) {
+                    self.diags.push(
+                        Diagnostic::error(l.span, format!("undefined sort #{sort}"))
+                            .with_snippet(self.snippet(l.span)),
+                    );
+                    return None;
+                }
+                let t = self.term(arg, vars, extra)?;
+                let pred = self.pred(&name, 1, false);
+                let atom = NAtom {
+                    pred,
+                    name: self.syms.names.intern(&name),
+                    neg: false,
+                    args: vec![t],
+                    span: l.span,
+                    sort: true,
+                };
+                NLit::Pred { sign: l.sign, atom }
             }
         })
     }
@@ -1050,6 +1075,13 @@ impl<'a> Rewriter<'a> {
         for (k, v) in overrides {
             self.consts.entry(k).or_insert(v);
         }
+        let lowered;
+        let program = if program.dialect == ast::Dialect::Sparc {
+            lowered = super::sparc::lower(self, program);
+            &lowered
+        } else {
+            program
+        };
         let mut in_base = true;
         for (i, st) in program.statements.iter().enumerate() {
             self.out.stmt_spans.push(st.span);

@@ -52,9 +52,32 @@ struct Watch {
     other: Lit,
 }
 
+/// One occurrence of a variable in a weight constraint.
+#[derive(Clone, Copy, Debug)]
+struct WeightWatch {
+    /// The constraint.
+    id: u32,
+    /// The literal as it occurs.
+    lit: Lit,
+    /// Its weight (0 for the head).
+    weight: u64,
+}
+
 /// A weight constraint `head <-> sum of weights of true lits >= bound`, weights positive.
+///
+/// `sum_true` and `sum_false` count the literals processed by propagation (trail positions
+/// below `qhead`) and are undone on backtracking; they only decide whether a full evaluation
+/// is needed, which then reads the actual values.
 #[derive(Clone, Debug)]
 struct WeightConstraint {
+    /// Sum of weights of processed true literals.
+    sum_true: u64,
+    /// Sum of weights of processed false literals.
+    sum_false: u64,
+    /// Sum of all weights.
+    total: u64,
+    /// Largest weight.
+    max_weight: u64,
     /// The literal equivalent to the constraint.
     head: Lit,
     /// Literals with positive weights.
@@ -119,8 +142,8 @@ pub struct Engine {
     decidable: Vec<bool>,
     /// Per variable: scratch mark used by conflict analysis.
     seen: Vec<u8>,
-    /// Per variable: weight constraints mentioning it.
-    weight_watch: Vec<Vec<u32>>,
+    /// Per variable: occurrences in weight constraints (the head occurs with weight 0).
+    weight_watch: Vec<Vec<WeightWatch>>,
     /// Per literal code: watches of clauses in which that literal is watched.
     watches: Vec<Vec<Watch>>,
     /// The clause arena: headers followed by literal codes.
@@ -149,8 +172,17 @@ pub struct Engine {
     inconsistent: bool,
     /// Literals of the last conflict (all false).
     conflict: Vec<Lit>,
-    /// Unfounded-set propagator for non-tight programs.
-    pub unfounded: Option<Unfounded>,
+    /// Unfounded-set propagator for non-tight programs (install with `set_unfounded`).
+    unfounded: Option<Unfounded>,
+    /// Per variable: whether its value can affect foundedness (a support or weight-body
+    /// literal of a cyclic atom's support).
+    uf_relevant: Vec<bool>,
+    /// Trail length up to which the assignment is known to have no unfounded cyclic atom; the
+    /// check reruns only when a relevant variable was assigned after it (foundedness is lost
+    /// only when a support literal becomes false).
+    uf_clean_upto: usize,
+    /// Set when the propagator was (re)installed and the assignment was never checked.
+    uf_dirty: bool,
     /// Restart state.
     pub restarts: Restarts,
     /// Maximum number of learnt clauses before a reduction.
@@ -218,6 +250,9 @@ impl Engine {
             inconsistent: false,
             conflict: Vec::new(),
             unfounded: None,
+            uf_relevant: Vec::new(),
+            uf_clean_upto: 0,
+            uf_dirty: true,
             restarts: Restarts::Glucose {
                 fast: 0.0,
                 slow: 0.0,
@@ -270,6 +305,7 @@ impl Engine {
         self.decidable.push(true);
         self.seen.push(0);
         self.weight_watch.push(Vec::new());
+        self.uf_relevant.push(false);
         self.watches.push(Vec::new());
         self.watches.push(Vec::new());
         self.heap_insert(v);
@@ -290,6 +326,20 @@ impl Engine {
         if self.heap_pos[v.index()] != usize::MAX {
             self.heap_up(self.heap_pos[v.index()]);
         }
+    }
+
+    /// Installs (or removes) the unfounded-set propagator; the next propagation rechecks the
+    /// whole assignment.
+    pub fn set_unfounded(&mut self, uf: Option<Unfounded>) {
+        self.uf_relevant.iter_mut().for_each(|x| *x = false);
+        if let Some(u) = &uf {
+            for v in u.relevant_vars() {
+                self.uf_relevant[v.index()] = true;
+            }
+        }
+        self.unfounded = uf;
+        self.uf_clean_upto = 0;
+        self.uf_dirty = true;
     }
 
     /// Whether a conflict at level 0 was derived: no more models under any assumption.
@@ -348,6 +398,18 @@ impl Engine {
         for i in (start..self.trail.len()).rev() {
             let l = self.trail[i];
             let v = l.var();
+            if i < self.qhead {
+                // Undo the weight counters of processed assignments.
+                for k in 0..self.weight_watch[v.index()].len() {
+                    let w = self.weight_watch[v.index()][k];
+                    let c = &mut self.weights[w.id as usize];
+                    if w.lit == l {
+                        c.sum_true -= w.weight;
+                    } else {
+                        c.sum_false -= w.weight;
+                    }
+                }
+            }
             self.values[l.code()] = 0;
             self.values[(!l).code()] = 0;
             self.phase[v.index()] = !l.is_neg();
@@ -359,6 +421,7 @@ impl Engine {
         self.trail.truncate(start);
         self.trail_lim.truncate(level as usize);
         self.qhead = self.trail.len();
+        self.uf_clean_upto = self.uf_clean_upto.min(self.trail.len());
     }
 
     // ---------------------------------------------------------------- clauses
@@ -528,15 +591,37 @@ impl Engine {
             return self.add_clause(&[!head]);
         }
         let bound = bound as u64;
-        let id = self.weights.len() as u32;
-        let mut vars: Vec<usize> = norm.iter().map(|(l, _)| l.var().index()).collect();
-        vars.push(head.var().index());
-        vars.sort();
-        vars.dedup();
-        for v in vars {
-            self.weight_watch[v].push(id);
+        norm.sort_by_key(|x| std::cmp::Reverse(x.1));
+        if self.propagate().is_some() {
+            self.inconsistent = true;
+            return false;
         }
+        let id = self.weights.len() as u32;
+        let (mut sum_true, mut sum_false) = (0u64, 0u64);
+        for &(l, w) in &norm {
+            self.weight_watch[l.var().index()].push(WeightWatch {
+                id,
+                lit: l,
+                weight: w,
+            });
+            match self.val(l) {
+                1 => sum_true += w,
+                -1 => sum_false += w,
+                _ => {}
+            }
+        }
+        self.weight_watch[head.var().index()].push(WeightWatch {
+            id,
+            lit: head,
+            weight: 0,
+        });
+        let total = norm.iter().map(|&(_, w)| w).sum();
+        let max_weight = norm.iter().map(|&(_, w)| w).max().unwrap_or(0);
         self.weights.push(WeightConstraint {
+            sum_true,
+            sum_false,
+            total,
+            max_weight,
             head,
             lits: norm,
             bound,
@@ -559,10 +644,21 @@ impl Engine {
                 return Some(());
             }
             self.unfounded.as_ref()?;
+            let start = self.uf_clean_upto.min(self.trail.len());
+            if !self.uf_dirty
+                && !self.trail[start..]
+                    .iter()
+                    .any(|l| self.uf_relevant[l.var().index()])
+            {
+                self.uf_clean_upto = self.trail.len();
+                return None;
+            }
             let mut uf = self.unfounded.take().expect("checked above");
             let nogoods = uf.check(self);
             self.unfounded = Some(uf);
             if nogoods.is_empty() {
+                self.uf_clean_upto = self.trail.len();
+                self.uf_dirty = false;
                 return None;
             }
             for mut ng in nogoods {
@@ -575,11 +671,23 @@ impl Engine {
     }
 
     /// Clause and weight propagation; returns true on conflict.
+    #[inline(never)]
     fn propagate_units(&mut self) -> bool {
         while self.qhead < self.trail.len() {
             let p = self.trail[self.qhead];
             self.qhead += 1;
             self.propagations += 1;
+            // Count `p` in its weight constraints now: backtracking undoes every processed
+            // position, even when a clause conflict stops this iteration early.
+            for k in 0..self.weight_watch[p.var().index()].len() {
+                let w = self.weight_watch[p.var().index()][k];
+                let c = &mut self.weights[w.id as usize];
+                if w.lit == p {
+                    c.sum_true += w.weight;
+                } else {
+                    c.sum_false += w.weight;
+                }
+            }
             let false_lit = !p;
             let mut ws = std::mem::take(&mut self.watches[false_lit.code()]);
             let mut i = 0;
@@ -605,14 +713,15 @@ impl Engine {
                     continue;
                 }
                 let cref = w.cref;
-                if self.clause_deleted(cref) {
-                    continue;
-                }
                 if self.val(w.other) == 1 {
                     ws[j] = w;
                     j += 1;
                     continue;
                 }
+                debug_assert!(
+                    !self.clause_deleted(cref),
+                    "watches of deleted clauses are removed"
+                );
                 let base = cref as usize + HEADER;
                 // Make sure the false literal is at position 1.
                 if self.arena[base] == false_lit.code() as u32 {
@@ -665,8 +774,9 @@ impl Engine {
             }
             let wl = std::mem::take(&mut self.weight_watch[p.var().index()]);
             let mut wconflict = false;
-            for &id in &wl {
-                if self.propagate_weight(id as usize) {
+            for w in &wl {
+                if self.weight_may_propagate(w.id as usize) && self.propagate_weight(w.id as usize)
+                {
                     wconflict = true;
                     break;
                 }
@@ -679,22 +789,32 @@ impl Engine {
         false
     }
 
-    /// Evaluates one weight constraint; returns true on conflict.
+    /// Whether the counters allow a propagation or conflict of the constraint (cheap test).
+    fn weight_may_propagate(&self, id: usize) -> bool {
+        let c = &self.weights[id];
+        let max = c.total - c.sum_false;
+        if c.sum_true >= c.bound || max < c.bound {
+            return true;
+        }
+        match self.val(c.head) {
+            1 => max.saturating_sub(c.max_weight) < c.bound,
+            -1 => c.sum_true + c.max_weight >= c.bound,
+            _ => false,
+        }
+    }
+
+    /// Evaluates one weight constraint; returns true on conflict. Decisions use the counters
+    /// (which lag behind the values only for assignments not yet processed, and only in the
+    /// safe direction: fewer true and false literals), so every inference is sound; the
+    /// remaining ones happen when the lagging assignments are processed. Literals are sorted by
+    /// decreasing weight, so the scans stop at the first literal too light to matter.
     fn propagate_weight(&mut self, id: usize) -> bool {
         let c = &self.weights[id];
         let head = c.head;
         let bound = c.bound;
-        let mut sum_true = 0u64;
-        let mut sum_undef = 0u64;
-        for &(l, w) in &c.lits {
-            match self.values[l.code()] {
-                1 => sum_true += w,
-                0 => sum_undef += w,
-                _ => {}
-            }
-        }
+        let sum_true = c.sum_true;
+        let max = c.total - c.sum_false;
         let hv = self.val(head);
-        let max = sum_true + sum_undef;
         let false_lits = |e: &Engine| -> Vec<Lit> {
             e.weights[id]
                 .lits
@@ -748,11 +868,14 @@ impl Engine {
             return false;
         }
         if hv == 1 {
-            // Every unassigned literal whose loss would drop the maximum below the bound must hold.
+            // Every unassigned literal whose loss would drop the maximum below the bound must
+            // hold: weight > max - bound.
+            let slack = max - bound;
             let need: Vec<Lit> = self.weights[id]
                 .lits
                 .iter()
-                .filter(|&&(l, w)| self.val(l) == 0 && max - w < bound)
+                .take_while(|&&(_, w)| w > slack)
+                .filter(|&&(l, _)| self.val(l) == 0)
                 .map(|&(l, _)| l)
                 .collect();
             if !need.is_empty() {
@@ -767,11 +890,14 @@ impl Engine {
                 }
             }
         } else if hv == -1 {
-            // Every unassigned literal that would reach the bound must be false.
+            // Every unassigned literal that would reach the bound must be false:
+            // weight >= bound - sum_true.
+            let gap = bound - sum_true;
             let deny: Vec<Lit> = self.weights[id]
                 .lits
                 .iter()
-                .filter(|&&(l, w)| self.val(l) == 0 && sum_true + w >= bound)
+                .take_while(|&&(_, w)| w >= gap)
+                .filter(|&&(l, _)| self.val(l) == 0)
                 .map(|&(l, _)| l)
                 .collect();
             if !deny.is_empty() {
@@ -1105,6 +1231,12 @@ impl Engine {
         self.learnts = keep;
         if self.wasted * 2 > self.arena.len() {
             self.collect_garbage();
+        } else {
+            // Propagation never looks at deleted clauses: drop their watches now.
+            let arena = &self.arena;
+            for ws in self.watches.iter_mut() {
+                ws.retain(|w| w.cref == u32::MAX || arena[w.cref as usize + 1] & FLAG_DELETED == 0);
+            }
         }
     }
 

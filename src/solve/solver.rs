@@ -394,8 +394,20 @@ impl Solver {
                 SearchResult::Unsat => return Next::Exhausted,
                 SearchResult::Unknown => return Next::Stopped,
                 SearchResult::Sat => {
-                    if !self.tr.non_hcf || self.is_minimal() {
+                    if !self.tr.non_hcf {
                         return Next::Model;
+                    }
+                    match self.is_minimal() {
+                        Some(true) => return Next::Model,
+                        Some(false) => {}
+                        None => {
+                            self.engine.interrupted =
+                                self.engine.interrupted
+                                    || self.config.interrupt.as_ref().is_some_and(|f| {
+                                        f.load(std::sync::atomic::Ordering::Relaxed)
+                                    });
+                            return Next::Stopped;
+                        }
                     }
                     // Not a minimal model of its reduct: exclude this atom assignment forever.
                     let block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
@@ -420,8 +432,9 @@ impl Solver {
             .collect()
     }
 
-    /// Whether the current total assignment's atoms form a minimal model of the reduct.
-    fn is_minimal(&mut self) -> bool {
+    /// Whether the current total assignment's atoms form a minimal model of the reduct;
+    /// `None` when a limit stopped the check.
+    fn is_minimal(&mut self) -> Option<bool> {
         self.minimality_checks += 1;
         let model = self.true_atoms();
         let mut in_m = vec![false; self.prog.num_atoms as usize + 1];
@@ -429,6 +442,8 @@ impl Solver {
             in_m[a as usize] = true;
         }
         let mut sub = Engine::new();
+        sub.deadline = self.engine.deadline;
+        sub.interrupt = self.engine.interrupt.clone();
         let vars: Vec<Option<Lit>> = (0..=self.prog.num_atoms as usize)
             .map(|a| {
                 if in_m[a] {
@@ -507,9 +522,13 @@ impl Solver {
             }
         }
         if !sub.add_clause(&strict) {
-            return true;
+            return Some(true);
         }
-        sub.search(&[]) != SearchResult::Sat
+        match sub.search(&[]) {
+            SearchResult::Sat => Some(false),
+            SearchResult::Unsat => Some(true),
+            SearchResult::Unknown => None,
+        }
     }
 
     fn costs(&self) -> Vec<i64> {

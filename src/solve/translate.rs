@@ -294,7 +294,7 @@ impl Translation {
             }
         }
         if atom_lits.is_empty() {
-            e.unfounded = None;
+            e.set_unfounded(None);
             return;
         }
         let mut sups = Vec::new();
@@ -342,7 +342,7 @@ impl Translation {
                 });
             }
         }
-        e.unfounded = Some(Unfounded::new(atom_lits, sups));
+        e.set_unfounded(Some(Unfounded::new(atom_lits, sups)));
     }
 }
 

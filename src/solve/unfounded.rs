@@ -109,6 +109,21 @@ impl Unfounded {
         }
     }
 
+    /// Variables whose value can make a support fail: support literals and weight-body
+    /// literals.
+    pub fn relevant_vars(&self) -> Vec<super::lit::Var> {
+        let mut v = Vec::new();
+        for s in &self.supports {
+            v.push(s.lit.var());
+            if let SupportBody::Weight { lits, .. } = &s.body {
+                v.extend(lits.iter().map(|(l, _, _)| l.var()));
+            }
+        }
+        v.sort_unstable();
+        v.dedup();
+        v
+    }
+
     fn weight_founded(&self, e: &Engine, s: &Support) -> bool {
         match &s.body {
             SupportBody::Weight { bound, lits } => {
@@ -138,6 +153,7 @@ impl Unfounded {
 
     /// Computes loop nogoods for the greatest unfounded set under the current assignment; empty
     /// when every non-false cyclic atom is founded.
+    #[inline(never)]
     pub fn check(&mut self, e: &Engine) -> Vec<Vec<Lit>> {
         let n = self.atom_lit.len();
         self.founded.clear();

@@ -686,7 +686,7 @@ impl<'a> Parser<'a> {
                 let start = self.tok.start;
                 let (weight, priority, terms) = self.weight_tuple()?;
                 let condition = if self.eat(T::Colon) {
-                    self.condition()?
+                    self.condition(true)?
                 } else {
                     Vec::new()
                 };
@@ -1094,7 +1094,7 @@ impl<'a> Parser<'a> {
         }
         self.expect(T::RParen, &[")", "\",\""])?;
         let condition = if self.eat(T::Colon) {
-            self.condition()?
+            self.condition(true)?
         } else {
             Vec::new()
         };
@@ -1188,7 +1188,7 @@ impl<'a> Parser<'a> {
         }
         let mut elements = Vec::with_capacity(1);
         let literal = first.remove(0);
-        elements.push(self.head_element(start, literal)?);
+        elements.push(self.head_element(start, literal, true)?);
         // gringo separates disjunction elements by `|`, `;` or `,` (a `,` after a condition
         // continues the condition, which `condition` has consumed already).
         while self.at(T::Bar) || self.at(T::Semi) || self.at(T::Comma) {
@@ -1197,7 +1197,7 @@ impl<'a> Parser<'a> {
             let mut lits = Vec::with_capacity(1);
             self.literal(Ctx::Single, &mut lits)?;
             let literal = lits.remove(0);
-            elements.push(self.head_element(start, literal)?);
+            elements.push(self.head_element(start, literal, true)?);
         }
         Ok((Head::Disjunction(elements), first_term))
     }
@@ -1208,10 +1208,15 @@ impl<'a> Parser<'a> {
     }
 
     /// The optional `: condition` after a head literal.
-    fn head_element(&mut self, start: u32, literal: Literal) -> PResult<ConditionalLiteral> {
+    fn head_element(
+        &mut self,
+        start: u32,
+        literal: Literal,
+        in_disjunction: bool,
+    ) -> PResult<ConditionalLiteral> {
         let has_colon = self.eat(T::Colon);
         let condition = if has_colon {
-            self.condition()?
+            self.condition(!in_disjunction)?
         } else {
             Vec::new()
         };
@@ -1247,7 +1252,7 @@ impl<'a> Parser<'a> {
                 let mut lits = Vec::with_capacity(1);
                 self.literal(Ctx::Single, &mut lits)?;
                 let literal = lits.remove(0);
-                elements.push(self.head_element(start, literal)?);
+                elements.push(self.head_element(start, literal, false)?);
                 if !self.eat(T::Semi) {
                     break;
                 }
@@ -1300,7 +1305,7 @@ impl<'a> Parser<'a> {
                 self.literal(Ctx::Single, &mut lits)?;
                 let literal = lits.remove(0);
                 let condition = if self.eat(T::Colon) {
-                    self.condition()?
+                    self.condition(true)?
                 } else {
                     Vec::new()
                 };
@@ -1387,7 +1392,7 @@ impl<'a> Parser<'a> {
         }
         if lits.len() == 1 && self.at(T::Colon) {
             self.bump();
-            let condition = self.condition()?;
+            let condition = self.condition(true)?;
             let literal = lits.pop().expect("one literal");
             self.body_end = match condition.last() {
                 Some(l) if !matches!(l.atom, Atom::Symbolic(_)) => AFTER_CONDITION,
@@ -1447,7 +1452,7 @@ impl<'a> Parser<'a> {
                         }
                     }
                     let condition = if self.eat(T::Colon) {
-                        self.condition()?
+                        self.condition(true)?
                     } else {
                         Vec::new()
                     };
@@ -1477,9 +1482,11 @@ impl<'a> Parser<'a> {
     }
 
     /// A condition: literals separated by `,` (possibly none, before `;`, `|`, `}` or `.`).
-    fn condition(&mut self) -> PResult<Vec<Literal>> {
+    /// `bar_starts` says whether a `|` opens an absolute value here; in a head disjunction it
+    /// separates elements instead.
+    fn condition(&mut self, bar_starts: bool) -> PResult<Vec<Literal>> {
         let mut lits = Vec::new();
-        if !self.starts_literal() {
+        if !(self.starts_literal() || (bar_starts && self.at(T::Bar))) {
             return Ok(lits);
         }
         loop {

@@ -1,0 +1,121 @@
+//! SPARC programs: `tests/data/ground/sparc/robots.sp` grounds, and clasp on Lucent's ground
+//! program gives the optimal answer sets recorded (from clingo, command in the expected file)
+//! for its hand translation `robots.lp`; type errors are reported at the atom.
+//!
+//! Needs clasp; fails (never skips) without it.
+
+use std::collections::BTreeSet;
+use std::io::Write;
+use std::path::Path;
+use std::process::{Command, Stdio};
+
+use lucent::base::SourceMap;
+use lucent::ground::{aspif, ground, GroundConfig};
+use lucent::syntax::ast::Dialect;
+use lucent::syntax::parse;
+
+fn ground_sparc(text: &str) -> (lucent::ground::Grounding, SourceMap) {
+    let mut sources = SourceMap::new();
+    let id = sources.add("-", text);
+    let parsed = parse(id, text, Dialect::Sparc);
+    assert!(!parsed.has_errors(), "parse errors");
+    let g = ground(&parsed.program, Some(&sources), &GroundConfig::default());
+    (g, sources)
+}
+
+#[test]
+fn robots_optimal_answer_sets() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/ground/sparc");
+    let text = std::fs::read_to_string(dir.join("robots.sp")).expect("program");
+    let (g, sources) = ground_sparc(&text);
+    assert!(
+        !g.diagnostics.has_errors(),
+        "{}",
+        g.diagnostics.render(&sources)
+    );
+    assert!(!g.program.cr_rules.is_empty());
+    let ok = Command::new("sh")
+        .args(["-c", "command -v clasp"])
+        .output()
+        .map(|o| o.status.success())
+        .unwrap_or(false);
+    assert!(ok, "install clingo: apt-get install -y gringo clasp");
+    let mut child = Command::new("clasp")
+        .args(["-n0", "--opt-mode=optN", "--outf=2"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("clasp runs");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(aspif::write_program(&g.program).as_bytes())
+        .expect("aspif");
+    let out = child.wait_with_output().expect("clasp");
+    let js: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    let ws: Vec<&serde_json::Value> = js["Call"]
+        .as_array()
+        .expect("calls")
+        .iter()
+        .flat_map(|c| c["Witnesses"].as_array().expect("witnesses").iter())
+        .collect();
+    let cost = |w: &serde_json::Value| -> Vec<i64> {
+        w["Costs"]
+            .as_array()
+            .map(|a| a.iter().map(|c| c.as_i64().expect("cost")).collect())
+            .unwrap_or_default()
+    };
+    let best = ws.iter().map(|w| cost(w)).min().expect("a model");
+    let got: BTreeSet<Vec<String>> = ws
+        .iter()
+        .filter(|w| cost(w) == best)
+        .map(|w| {
+            let mut v: Vec<String> = w["Value"]
+                .as_array()
+                .expect("atoms")
+                .iter()
+                .map(|a| a.as_str().expect("atom").to_string())
+                .collect();
+            v.sort();
+            v
+        })
+        .collect();
+    let exp: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("robots.expected.json")).expect("expected"),
+    )
+    .expect("json");
+    let want: BTreeSet<Vec<String>> = exp["models"]
+        .as_array()
+        .expect("models")
+        .iter()
+        .map(|m| {
+            m.as_array()
+                .expect("model")
+                .iter()
+                .map(|a| a.as_str().expect("atom").to_string())
+                .collect()
+        })
+        .collect();
+    assert_eq!(got, want);
+}
+
+fn errors(text: &str) -> String {
+    let (g, sources) = ground_sparc(text);
+    assert!(g.diagnostics.has_errors());
+    g.diagnostics.render(&sources)
+}
+
+#[test]
+fn constant_outside_its_sort() {
+    insta::assert_snapshot!(errors(
+        "sorts\n#a = {x, y}.\npredicates\np(#a).\nrules\np(z).\n"
+    ));
+}
+
+#[test]
+fn undeclared_predicate_and_wrong_arity() {
+    insta::assert_snapshot!(errors(
+        "sorts\n#a = {x, y}.\npredicates\np(#a).\nrules\np(x, x).\nq(x) :- p(X).\n"
+    ));
+}
