@@ -186,11 +186,6 @@ fn read_and_parse(
         diags.extend(parse.diagnostics);
         let mut program = parse.program;
         includes.resolve(&mut program, input.file, &mut sources, diags);
-        if program.dialect == Dialect::Sparc {
-            let mut sparc_diags = Vec::new();
-            program = ground::sparc::to_clingo(&program, &mut sparc_diags);
-            diags.extend(sparc_diags);
-        }
         programs.push(program);
     }
     if diags.has_errors() {

@@ -19,7 +19,6 @@ pub mod instantiate;
 pub mod simplify;
 pub mod text;
 pub mod reference;
-pub mod sparc;
 
 use crate::base::{Diagnostic, Diagnostics, SourceMap, Span};
 use crate::syntax::ast;
