@@ -335,3 +335,23 @@ fn support_pointers_are_well_founded() {
     assert_eq!(m.atoms, vec![1, 2, 3]);
     assert_eq!(m.support, vec![Some(2), Some(1), Some(0)]);
 }
+
+#[test]
+fn portfolio_gives_the_same_answer_sets() {
+    // Same program as `loop_with_external_support`, solved by two racing threads.
+    let p = program(
+        3,
+        vec![
+            rule(&[1], &[2]),
+            rule(&[2], &[1]),
+            rule(&[1], &[3]),
+            choice(&[3], &[]),
+        ],
+    );
+    let cfg = Config {
+        models: 0,
+        threads: 2,
+        ..Config::default()
+    };
+    assert_eq!(answer_sets(&p, cfg), sets(&[&[], &["a", "b", "c"]]));
+}

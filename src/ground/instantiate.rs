@@ -83,6 +83,14 @@ struct Domain {
 /// A position range in a domain list.
 type Range = (u32, u32);
 
+/// Domain positions to try for a literal.
+enum Candidates {
+    /// Every position in `[lo, hi)`.
+    Range(u32, u32),
+    /// These positions.
+    List(SmallVec<[u32; 16]>),
+}
+
 /// Grounding limits, as values.
 #[derive(Clone, Debug, Default)]
 pub struct Limits {
@@ -366,12 +374,7 @@ impl<'a> Grounder<'a> {
     }
 
     /// Candidate domain positions in `range` for `atom` under the binding.
-    fn candidates(
-        &mut self,
-        atom: &NAtom,
-        b: &Binding,
-        range: Range,
-    ) -> Option<SmallVec<[u32; 16]>> {
+    fn candidates(&mut self, atom: &NAtom, b: &Binding, range: Range) -> Option<Candidates> {
         let mut mask = 0u64;
         let mut key: SmallVec<[SymId; 4]> = SmallVec::new();
         for (i, t) in atom.args.iter().enumerate() {
@@ -387,10 +390,22 @@ impl<'a> Grounder<'a> {
                 key.push(v);
             }
         }
-        let d = &mut self.domains[atom.pred as usize];
         if mask == 0 {
-            return Some((range.0..range.1).collect());
+            return Some(Candidates::Range(range.0, range.1));
         }
+        if key.len() == atom.args.len() {
+            // Every argument is known: look the atom up directly.
+            let sym = self.syms.fun(atom.name, atom.neg, &key);
+            let mut list = SmallVec::new();
+            if let Some(a) = self.find_atom(sym) {
+                let info = self.info(a);
+                if info.in_domain && info.dom_pos >= range.0 && info.dom_pos < range.1 {
+                    list.push(info.dom_pos);
+                }
+            }
+            return Some(Candidates::List(list));
+        }
+        let d = &mut self.domains[atom.pred as usize];
         let idx = d.indexes.entry(mask).or_default();
         // Extend the index to the atoms derived since it was last used.
         while idx.upto < d.atoms.len() {
@@ -408,16 +423,16 @@ impl<'a> Grounder<'a> {
         }
         let list = match idx.map.get(&key) {
             Some(l) => l,
-            None => return Some(SmallVec::new()),
+            None => return Some(Candidates::List(SmallVec::new())),
         };
         let start = list.partition_point(|&p| p < range.0);
-        Some(
+        Some(Candidates::List(
             list[start..]
                 .iter()
                 .copied()
                 .take_while(|&p| p < range.1)
                 .collect(),
-        )
+        ))
     }
 
     /// Grounds `lits[i..]` and calls `k` for every solution.
@@ -449,7 +464,16 @@ impl<'a> Grounder<'a> {
                 let Some(cands) = self.candidates(atom, &ctx.binding, range) else {
                     return;
                 };
-                for pos in cands {
+                let (list, lo, hi) = match cands {
+                    Candidates::Range(lo, hi) => (SmallVec::new(), lo, hi),
+                    Candidates::List(l) => {
+                        let n = l.len() as u32;
+                        (l, 0, n)
+                    }
+                };
+                let ranged = list.is_empty();
+                for j in lo..hi {
+                    let pos = if ranged { j } else { list[j as usize] };
                     let a = self.domains[atom.pred as usize].atoms[pos as usize];
                     let sym = self.info(a).sym.expect("predicate atom has a symbol");
                     let mut ok = true;
@@ -1714,6 +1738,12 @@ fn positive_atoms<'x>(l: &'x NLit, out: &mut Vec<&'x NAtom>) {
 
 /// `t1 op t2` in clingo's term order.
 pub fn cmp_holds(syms: &Symbols, op: CmpOp, a: SymId, b: SymId) -> bool {
+    // Symbols are hash-consed: equality is identity.
+    match op {
+        CmpOp::Eq => return a == b,
+        CmpOp::Ne => return a != b,
+        _ => {}
+    }
     let o = syms.compare(a, b);
     match op {
         CmpOp::Eq => o.is_eq(),

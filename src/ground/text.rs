@@ -35,7 +35,9 @@ pub fn write_text(g: &Grounding, sources: Option<&SourceMap>) -> String {
         if let (Some(src), Some(o)) = (sources, p.origins.get(i)) {
             if let Some(&span) = g.statement_spans.get(o.rule as usize) {
                 let loc = src.location(span);
-                let loc = loc.split('-').next().unwrap_or(&loc).to_string();
+                let loc = loc
+                    .rsplit_once('-')
+                    .map_or(loc.clone(), |(l, _)| l.to_string());
                 let b = g.bindings_text(o);
                 if b.is_empty() {
                     let _ = writeln!(out, "% from rule at {loc}");

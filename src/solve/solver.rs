@@ -271,7 +271,15 @@ impl Solver {
     }
 
     /// Solves with the configured options and collects the models.
+    ///
+    /// With `Config::threads >= 2` this runs a portfolio: that many fresh solvers with different
+    /// search settings (restarts, seeds, random decisions) race on copies of the program and
+    /// the first to finish answers; the other threads stop. This solver's own learnt clauses
+    /// are then neither used nor extended.
     pub fn solve(&mut self) -> SolveResult {
+        if self.config.threads >= 2 {
+            return portfolio(&self.prog, &self.config);
+        }
         self.solve_with(&[])
     }
 
@@ -1086,6 +1094,45 @@ impl Solver {
         }
         reach
     }
+}
+
+/// Races `config.threads` differently configured solvers; the first to finish wins.
+fn portfolio(prog: &GroundProgram, config: &Config) -> SolveResult {
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let winner: std::sync::Mutex<Option<SolveResult>> = std::sync::Mutex::new(None);
+    std::thread::scope(|scope| {
+        for t in 0..config.threads.max(2) {
+            let stop = stop.clone();
+            let winner = &winner;
+            scope.spawn(move || {
+                let mut c = config.clone();
+                c.threads = 1;
+                if t % 2 == 1 {
+                    c.restarts = RestartPolicy::Luby(100);
+                    c.random_freq_permille = 10;
+                }
+                c.seed = config.seed.wrapping_add(t as u64 * 7919);
+                let mut s = Solver::new(prog, c);
+                s.engine.portfolio_stop = Some(stop.clone());
+                let r = s.solve_with(&[]);
+                // A thread stopped by the portfolio flag has nothing to say.
+                let stopped_by_peer = r.stop.is_some()
+                    && stop.load(std::sync::atomic::Ordering::Relaxed)
+                    && !s.engine.interrupted;
+                let mut w = winner
+                    .lock()
+                    .expect("no thread panics while holding the lock");
+                if w.is_none() && !stopped_by_peer {
+                    *w = Some(r);
+                    stop.store(true, std::sync::atomic::Ordering::Relaxed);
+                }
+            });
+        }
+    });
+    winner
+        .into_inner()
+        .expect("no thread panicked while holding the lock")
+        .expect("the first thread to finish records its result")
 }
 
 /// For every true atom of `atoms` (sorted), one rule index that derives it in a well-founded
