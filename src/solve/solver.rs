@@ -402,6 +402,11 @@ impl Solver {
                 SearchResult::Unsat => return Next::Exhausted,
                 SearchResult::Unknown => return Next::Stopped,
                 SearchResult::Sat => {
+                    if let Some(cycle) = self.edge_cycle() {
+                        // Acyclicity (edge directives): forbid this cycle's edges together.
+                        self.engine.add_clause(&cycle);
+                        continue;
+                    }
                     if !self.tr.non_hcf {
                         return Next::Model;
                     }
@@ -432,6 +437,73 @@ impl Solver {
                 }
             }
         }
+    }
+
+    /// When the edges (aspif edge directives) whose conditions hold contain a cycle, the
+    /// clause excluding that cycle: the negations of the cycle's edge conditions.
+    fn edge_cycle(&mut self) -> Option<Vec<Lit>> {
+        if self.prog.edges.is_empty() {
+            return None;
+        }
+        let holds = |e: &Engine, l: Lit| e.value(l) == Some(true);
+        let mut active: Vec<(i32, i32, Vec<Lit>)> = Vec::new();
+        for ed in &self.prog.edges {
+            let lits: Vec<Lit> = ed.condition.iter().map(|&l| self.tr.lit(l)).collect();
+            if lits.iter().all(|&l| holds(&self.engine, l)) {
+                active.push((ed.from, ed.to, lits));
+            }
+        }
+        // Depth-first search for a back edge, remembering the edge used to reach each node.
+        let mut nodes: Vec<i32> = active.iter().flat_map(|e| [e.0, e.1]).collect();
+        nodes.sort_unstable();
+        nodes.dedup();
+        let idx = |n: i32| nodes.binary_search(&n).expect("node of an active edge");
+        let mut out: Vec<Vec<usize>> = vec![Vec::new(); nodes.len()];
+        for (k, e) in active.iter().enumerate() {
+            out[idx(e.0)].push(k);
+        }
+        let mut state = vec![0u8; nodes.len()];
+        let mut via: Vec<Option<usize>> = vec![None; nodes.len()];
+        for root in 0..nodes.len() {
+            if state[root] != 0 {
+                continue;
+            }
+            let mut stack: Vec<(usize, usize)> = vec![(root, 0)];
+            state[root] = 1;
+            while let Some(&mut (v, ref mut k)) = stack.last_mut() {
+                if *k < out[v].len() {
+                    let ek = out[v][*k];
+                    *k += 1;
+                    let w = idx(active[ek].1);
+                    if state[w] == 1 {
+                        // Cycle: w -> ... -> v -> w.
+                        let mut edges = vec![ek];
+                        let mut x = v;
+                        while x != w {
+                            let e = via[x].expect("nodes on the stack were reached by an edge");
+                            edges.push(e);
+                            x = idx(active[e].0);
+                        }
+                        let mut clause: Vec<Lit> = edges
+                            .iter()
+                            .flat_map(|&e| active[e].2.iter().map(|&l| !l))
+                            .collect();
+                        clause.sort();
+                        clause.dedup();
+                        return Some(clause);
+                    }
+                    if state[w] == 0 {
+                        state[w] = 1;
+                        via[w] = Some(ek);
+                        stack.push((w, 0));
+                    }
+                } else {
+                    state[v] = 2;
+                    stack.pop();
+                }
+            }
+        }
+        None
     }
 
     fn true_atoms(&self) -> Vec<u32> {
