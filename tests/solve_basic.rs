@@ -358,10 +358,11 @@ fn portfolio_gives_the_same_answer_sets() {
 
 #[test]
 fn cr_rules_are_applied_minimally() {
-    // p :- not q.  q :- not p.  :- p.  :- q.  is inconsistent; two CR rules can restore
-    // consistency: r1: q :+ .  and  r2: q :+ .  (same head) and r3: s :+ . which does not help.
-    // Any answer set needs q, with one of r1/r2 applied; the default semantics applies
-    // exactly one rule, and {q} is reported once whichever rule supports it.
+    // a :- not b.  b :- not a.  :- a.  :- b, not r1, not r2.  with CR rules
+    // r1: b :+ .  r2: b :+ .  r3: c :+ .  (application atoms 4, 5, 6; atom 3 is c).
+    // a is forbidden, so b holds and needs r1 or r2 applied; applying r3 as well is never
+    // minimal. The default semantics gives the answer sets {b, r1} and {b, r2}, which show the
+    // same atoms, so {b} is reported once with one of r1, r2 as its applied rule.
     let mut p = program(
         6,
         vec![rule(&[1], &[-2]), rule(&[2], &[-1]), rule(&[], &[1])],
