@@ -3,8 +3,10 @@
 //! Pipeline inside this module: `translate` turns a `GroundProgram` into clauses and native
 //! weight constraints over solver variables (Clark completion with body variables);
 //! `engine` is a CDCL core (two watched literals, first-UIP learning, VSIDS, restarts) with
-//! `unfounded`-set propagation for non-tight programs; `search` drives it for enumeration,
-//! optimization, consequences and CR-Prolog semantics and produces a `SolveResult`.
+//! `unfounded`-set propagation for non-tight programs; `solver` drives it for enumeration,
+//! optimization, consequences, CR-Prolog semantics, limits, incremental rules and the portfolio,
+//! and produces a `SolveResult`. `lit` holds the literal encoding, `config` and `result` the
+//! caller-facing types; `check` and `brute` are independent references for tests.
 
 pub mod brute;
 pub mod check;

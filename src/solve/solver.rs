@@ -12,6 +12,10 @@
 //! - For non-head-cycle-free programs every candidate is checked to be a minimal model of its
 //!   reduct (Gelfond-Lifschitz) with a fresh engine before it is reported; failed candidates are
 //!   blocked permanently.
+//! - Every auxiliary variable (bodies, shifted supports, cost-bound literals) is a function of
+//!   the atoms, so decision-based blocking never reports one answer set twice.
+//! - Edge directives are acyclicity constraints, checked on each total assignment: a cycle of
+//!   true edges adds the clause forbidding its edge conditions together.
 //! - Branch and bound follows clasp's "opt" strategy: after a model with costs `c`, require
 //!   `costs <lex c` (as `exists i: sum_j <= c_j for j < i and sum_i <= c_i - 1`); the last model
 //!   is optimal when the bound becomes unsatisfiable.
