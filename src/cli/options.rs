@@ -78,7 +78,7 @@ pub const OPTIONS: &[OptionSpec] = &[
     opt("seed", None, Value, "<n>", "Seed of the solver's random choices [1]", "Solving"),
     opt("check", None, Flag, "", "Verify every reported model with an independent stable-model check", "Solving"),
     opt("outf", None, Value, "<n>", "Output format {0=text|2=json} [0]", "Output"),
-    opt("quiet", Some('q'), OptionalValue, "<levels>", "Print {0=all|1=last|2=no} models[,costs[,calls]] [-q: 1]", "Output"),
+    opt("quiet", Some('q'), OptionalValue, "<levels>", "Print {0=all|1=last|2=no} models[,costs[,calls]] [-q: 2,2,2]", "Output"),
     opt("stats", Some('s'), OptionalValue, "<n>", "Print statistics", "Output"),
     opt("verbose", Some('V'), OptionalValue, "<n>", "Verbosity level [1]", "Output"),
 ];
@@ -493,18 +493,27 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
             }
         }
         "quiet" => {
+            // clasp: `-q` alone is `2,2,2`; a missing cost level copies the model level, and
+            // a missing call level is 2 (print no call results).
             if value.is_none() {
-                o.quiet = [1, 1, 1];
+                o.quiet = [2, 2, 2];
             } else {
+                let parts: Vec<&str> = v.split(',').collect();
+                if parts.len() > 3 {
+                    return Err(invalid(long, v));
+                }
                 let mut levels = [0u8; 3];
-                for (k, part) in v.split(',').enumerate() {
-                    if k >= 3 {
-                        return Err(invalid(long, v));
-                    }
+                for (k, part) in parts.iter().enumerate() {
                     levels[k] = parse_num(long, part)?;
                     if levels[k] > 2 {
                         return Err(invalid(long, v));
                     }
+                }
+                if parts.len() < 2 {
+                    levels[1] = levels[0];
+                }
+                if parts.len() < 3 {
+                    levels[2] = 2;
                 }
                 o.quiet = levels;
             }
@@ -607,7 +616,9 @@ mod tests {
         assert_eq!(o.files, vec!["a.lp", "b.lp"]);
         assert_eq!(o.consts, vec![("n".to_string(), "3".to_string())]);
         assert_eq!(o.outf, OutputFormat::Json);
-        assert_eq!(o.quiet, [1, 1, 1]);
+        assert_eq!(o.quiet, [2, 2, 2]);
+        let o = parse_args(&args("--quiet=1")).unwrap();
+        assert_eq!(o.quiet, [1, 1, 2]);
         assert_eq!(o.opt_mode, OptMode::Enum);
         assert_eq!(o.opt_bounds, vec![3, 4]);
         assert_eq!(o.disabled_warnings, vec![WarningKind::AtomUndefined]);
