@@ -3,7 +3,7 @@
 //! the real command line is `lucent --mode=clasp`.
 //!
 //! Usage: `solve_aspif [-n N] [--opt-mode=opt|optN|enum[,B..]|ignore]
-//! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [-q] [FILE]`.
+//! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [--parallel-mode=N] [-q] [FILE]`.
 
 use lucent::ground::aspif;
 use lucent::solve::{Config, CrMode, EnumMode, OptMode, Outcome, Solver};
@@ -50,6 +50,12 @@ fn main() -> ExitCode {
             if let Ok(s) = v.parse::<u64>() {
                 config.deadline = Some(start + Duration::from_secs(s));
             }
+        } else if let Some(v) = a.strip_prefix("--parallel-mode=") {
+            config.threads = v
+                .split(',')
+                .next()
+                .and_then(|n| n.parse().ok())
+                .unwrap_or(1);
         } else if a == "-q" {
             quiet = true;
         } else {
@@ -79,10 +85,11 @@ fn main() -> ExitCode {
     } else {
         1
     });
+    let threads = config.threads;
     let mut solver = Solver::new(&program, config);
     let mut count = 0;
     let mut last_costs: Vec<i64> = Vec::new();
-    let result = solver.for_each_model(&[], &mut |m| {
+    let mut print = |m: &lucent::solve::Model| {
         count += 1;
         last_costs = m.costs.clone();
         if !quiet {
@@ -94,7 +101,17 @@ fn main() -> ExitCode {
             }
         }
         true
-    });
+    };
+    let result = if threads >= 2 {
+        // The portfolio answers once, with the winner's models.
+        let r = solver.solve();
+        for m in &r.models {
+            print(m);
+        }
+        r
+    } else {
+        solver.for_each_model(&[], &mut print)
+    };
     println!(
         "{}",
         match result.outcome {

@@ -335,3 +335,55 @@ fn support_pointers_are_well_founded() {
     assert_eq!(m.atoms, vec![1, 2, 3]);
     assert_eq!(m.support, vec![Some(2), Some(1), Some(0)]);
 }
+
+#[test]
+fn portfolio_gives_the_same_answer_sets() {
+    // Same program as `loop_with_external_support`, solved by two racing threads.
+    let p = program(
+        3,
+        vec![
+            rule(&[1], &[2]),
+            rule(&[2], &[1]),
+            rule(&[1], &[3]),
+            choice(&[3], &[]),
+        ],
+    );
+    let cfg = Config {
+        models: 0,
+        threads: 2,
+        ..Config::default()
+    };
+    assert_eq!(answer_sets(&p, cfg), sets(&[&[], &["a", "b", "c"]]));
+}
+
+#[test]
+fn cr_rules_are_applied_minimally() {
+    // p :- not q.  q :- not p.  :- p.  :- q.  is inconsistent; two CR rules can restore
+    // consistency: r1: q :+ .  and  r2: q :+ .  (same head) and r3: s :+ . which does not help.
+    // Any answer set needs q, with one of r1/r2 applied; the default semantics applies
+    // exactly one rule, and {q} is reported once whichever rule supports it.
+    let mut p = program(
+        6,
+        vec![rule(&[1], &[-2]), rule(&[2], &[-1]), rule(&[], &[1])],
+    );
+    p.outputs.truncate(3);
+    // Atoms 4, 5, 6 are the application atoms of r1, r2, r3; atom 3 is s.
+    for appl in [4, 5, 6] {
+        p.rules.push(choice(&[appl], &[]));
+    }
+    p.rules.push(rule(&[2], &[4]));
+    p.rules.push(rule(&[2], &[5]));
+    p.rules.push(rule(&[3], &[6]));
+    p.rules.push(rule(&[], &[2, -4, -5]));
+    for (appl, label) in [(4, "r1"), (5, "r2"), (6, "r3")] {
+        p.cr_rules.push(lucent::ground::program::CrRule {
+            appl,
+            label: label.into(),
+        });
+    }
+    let r = Solver::new(&p, Config::all_models()).solve();
+    assert_eq!(r.models.len(), 1);
+    assert_eq!(r.models[0].symbols, vec!["b"]);
+    assert_eq!(r.models[0].cr_applied.len(), 1);
+    assert!(["r1", "r2"].contains(&r.models[0].cr_applied[0].as_str()));
+}

@@ -258,6 +258,57 @@ impl Gen {
     }
 }
 
+impl Gen {
+    fn sort_primary(&mut self, depth: u32) -> String {
+        match self.below(if depth == 0 { 4 } else { 7 }) {
+            0 => format!("{{{}}}", self.tuple(1)),
+            1 => format!(
+                "{}..{}",
+                self.pick(&["0", "1", "n", "-1"]),
+                self.pick(&["3", "n", "(n + 1)"])
+            ),
+            2 => format!("#{}", self.pick(&["s", "t", "step"])),
+            3 => format!(
+                "[{}][1..{}]",
+                self.pick(&["a", "b"]),
+                self.pick(&["2", "n"])
+            ),
+            4 => format!("({})", self.sort_expr(depth - 1)),
+            5 => "rec(#s(X), #t(Y)) : X != Y".to_string(),
+            _ => format!("rec(#s, {})", self.sort_primary(depth - 1)),
+        }
+    }
+
+    fn sort_expr(&mut self, depth: u32) -> String {
+        let n = 1 + self.below(3);
+        let mut out = self.sort_primary(depth);
+        for _ in 1..n {
+            let op = self.pick(&[" + ", " - ", " * "]);
+            let rhs = self.sort_primary(depth);
+            // A record with a condition can only end an expression.
+            if out.contains(" : ") {
+                break;
+            }
+            out = format!("{out}{op}{rhs}");
+        }
+        out
+    }
+
+    fn sparc_program(&mut self) -> String {
+        let mut out = String::from("#const n = 3.\nsorts\n#s = {a, b}.\n#t = 1..n.\n");
+        for i in 0..1 + self.below(4) {
+            out.push_str(&format!("#u{i} = {}.\n", self.sort_expr(2)));
+        }
+        out.push_str("predicates\np(#s, #t).\nq().\nrules\n");
+        for _ in 0..1 + self.below(4) {
+            let body = self.body();
+            out.push_str(&format!("{} :- {body}, #s(X).\n", self.atom()));
+        }
+        out.push_str("display\np.\n-q.\n#s(X).\n");
+        out
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(400))]
 
@@ -269,6 +320,15 @@ proptest! {
         prop_assert!(parsed.diagnostics.is_empty(), "{program}\n{:?}", parsed.diagnostics);
         check_round_trip(&program, Dialect::Clingo).map_err(TestCaseError::fail)?;
         check_parse_invariants(&program).map_err(TestCaseError::fail)?;
+    }
+
+    #[test]
+    fn generated_sparc_programs_parse_and_round_trip(seed in 1u64..) {
+        let mut g = Gen { state: seed };
+        let program = g.sparc_program();
+        let parsed = parse(FileId(0), &program, Dialect::Sparc);
+        prop_assert!(parsed.diagnostics.is_empty(), "{program}\n{:?}", parsed.diagnostics);
+        check_round_trip(&program, Dialect::Sparc).map_err(TestCaseError::fail)?;
     }
 
     #[test]

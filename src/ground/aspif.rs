@@ -388,7 +388,11 @@ fn write_step(out: &mut Vec<u8>, step: &AspifStep) {
                     !text.contains('\n'),
                     "an aspif comment must not contain a newline"
                 );
-                let _ = write!(out, "10 {text}");
+                if text.is_empty() {
+                    out.extend_from_slice(b"10");
+                } else {
+                    let _ = write!(out, "10 {text}");
+                }
             }
             Stmt::CrRule(i) => {
                 let cr = &p.cr_rules[i as usize];
@@ -1127,6 +1131,12 @@ mod tests {
             }
         );
         assert_eq!(write(&aspif), text);
+    }
+
+    #[test]
+    fn empty_comments_round_trip() {
+        let text = "asp 1 0 0\n10\n10 x y\n0\n";
+        assert_eq!(write(&read(text.as_bytes()).unwrap()), text);
     }
 
     #[test]

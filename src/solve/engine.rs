@@ -197,6 +197,8 @@ pub struct Engine {
     pub deadline: Option<Instant>,
     /// Interrupt flag, checked like the deadline.
     pub interrupt: Option<Arc<AtomicBool>>,
+    /// Portfolio flag: another thread finished first (not reported as an interrupt).
+    pub portfolio_stop: Option<Arc<AtomicBool>>,
     /// Statistics: decisions.
     pub decisions: u64,
     /// Statistics: conflicts.
@@ -264,6 +266,7 @@ impl Engine {
             default_phase: false,
             deadline: None,
             interrupt: None,
+            portfolio_stop: None,
             decisions: 0,
             conflicts: 0,
             num_restarts: 0,
@@ -1333,6 +1336,11 @@ impl Engine {
     }
 
     fn limit_reached(&mut self) -> bool {
+        if let Some(flag) = &self.portfolio_stop {
+            if flag.load(Ordering::Relaxed) {
+                return true;
+            }
+        }
         if let Some(flag) = &self.interrupt {
             if flag.load(Ordering::Relaxed) {
                 self.interrupted = true;

@@ -271,7 +271,15 @@ impl Solver {
     }
 
     /// Solves with the configured options and collects the models.
+    ///
+    /// With `Config::threads >= 2` this runs a portfolio: that many fresh solvers with different
+    /// search settings (restarts, seeds, random decisions) race on copies of the program and
+    /// the first to finish answers; the other threads stop. This solver's own learnt clauses
+    /// are then neither used nor extended.
     pub fn solve(&mut self) -> SolveResult {
+        if self.config.threads >= 2 {
+            return portfolio(&self.prog, &self.config);
+        }
         self.solve_with(&[])
     }
 
@@ -394,6 +402,11 @@ impl Solver {
                 SearchResult::Unsat => return Next::Exhausted,
                 SearchResult::Unknown => return Next::Stopped,
                 SearchResult::Sat => {
+                    if let Some(cycle) = self.edge_cycle() {
+                        // Acyclicity (edge directives): forbid this cycle's edges together.
+                        self.engine.add_clause(&cycle);
+                        continue;
+                    }
                     if !self.tr.non_hcf {
                         return Next::Model;
                     }
@@ -424,6 +437,73 @@ impl Solver {
                 }
             }
         }
+    }
+
+    /// When the edges (aspif edge directives) whose conditions hold contain a cycle, the
+    /// clause excluding that cycle: the negations of the cycle's edge conditions.
+    fn edge_cycle(&mut self) -> Option<Vec<Lit>> {
+        if self.prog.edges.is_empty() {
+            return None;
+        }
+        let holds = |e: &Engine, l: Lit| e.value(l) == Some(true);
+        let mut active: Vec<(i32, i32, Vec<Lit>)> = Vec::new();
+        for ed in &self.prog.edges {
+            let lits: Vec<Lit> = ed.condition.iter().map(|&l| self.tr.lit(l)).collect();
+            if lits.iter().all(|&l| holds(&self.engine, l)) {
+                active.push((ed.from, ed.to, lits));
+            }
+        }
+        // Depth-first search for a back edge, remembering the edge used to reach each node.
+        let mut nodes: Vec<i32> = active.iter().flat_map(|e| [e.0, e.1]).collect();
+        nodes.sort_unstable();
+        nodes.dedup();
+        let idx = |n: i32| nodes.binary_search(&n).expect("node of an active edge");
+        let mut out: Vec<Vec<usize>> = vec![Vec::new(); nodes.len()];
+        for (k, e) in active.iter().enumerate() {
+            out[idx(e.0)].push(k);
+        }
+        let mut state = vec![0u8; nodes.len()];
+        let mut via: Vec<Option<usize>> = vec![None; nodes.len()];
+        for root in 0..nodes.len() {
+            if state[root] != 0 {
+                continue;
+            }
+            let mut stack: Vec<(usize, usize)> = vec![(root, 0)];
+            state[root] = 1;
+            while let Some(&mut (v, ref mut k)) = stack.last_mut() {
+                if *k < out[v].len() {
+                    let ek = out[v][*k];
+                    *k += 1;
+                    let w = idx(active[ek].1);
+                    if state[w] == 1 {
+                        // Cycle: w -> ... -> v -> w.
+                        let mut edges = vec![ek];
+                        let mut x = v;
+                        while x != w {
+                            let e = via[x].expect("nodes on the stack were reached by an edge");
+                            edges.push(e);
+                            x = idx(active[e].0);
+                        }
+                        let mut clause: Vec<Lit> = edges
+                            .iter()
+                            .flat_map(|&e| active[e].2.iter().map(|&l| !l))
+                            .collect();
+                        clause.sort();
+                        clause.dedup();
+                        return Some(clause);
+                    }
+                    if state[w] == 0 {
+                        state[w] = 1;
+                        via[w] = Some(ek);
+                        stack.push((w, 0));
+                    }
+                } else {
+                    state[v] = 2;
+                    stack.pop();
+                }
+            }
+        }
+        None
     }
 
     fn true_atoms(&self) -> Vec<u32> {
@@ -1086,6 +1166,45 @@ impl Solver {
         }
         reach
     }
+}
+
+/// Races `config.threads` differently configured solvers; the first to finish wins.
+fn portfolio(prog: &GroundProgram, config: &Config) -> SolveResult {
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let winner: std::sync::Mutex<Option<SolveResult>> = std::sync::Mutex::new(None);
+    std::thread::scope(|scope| {
+        for t in 0..config.threads.max(2) {
+            let stop = stop.clone();
+            let winner = &winner;
+            scope.spawn(move || {
+                let mut c = config.clone();
+                c.threads = 1;
+                if t % 2 == 1 {
+                    c.restarts = RestartPolicy::Luby(100);
+                    c.random_freq_permille = 10;
+                }
+                c.seed = config.seed.wrapping_add(t as u64 * 7919);
+                let mut s = Solver::new(prog, c);
+                s.engine.portfolio_stop = Some(stop.clone());
+                let r = s.solve_with(&[]);
+                // A thread stopped by the portfolio flag has nothing to say.
+                let stopped_by_peer = r.stop.is_some()
+                    && stop.load(std::sync::atomic::Ordering::Relaxed)
+                    && !s.engine.interrupted;
+                let mut w = winner
+                    .lock()
+                    .expect("no thread panics while holding the lock");
+                if w.is_none() && !stopped_by_peer {
+                    *w = Some(r);
+                    stop.store(true, std::sync::atomic::Ordering::Relaxed);
+                }
+            });
+        }
+    });
+    winner
+        .into_inner()
+        .expect("no thread panicked while holding the lock")
+        .expect("the first thread to finish records its result")
 }
 
 /// For every true atom of `atoms` (sorted), one rule index that derives it in a well-founded

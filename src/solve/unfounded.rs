@@ -227,7 +227,7 @@ impl Unfounded {
                     SupportBody::Weight { bound, lits } => {
                         let outside: u64 = lits
                             .iter()
-                            .filter(|&&(_, _, at)| at.map_or(true, |x| !in_u[x as usize]))
+                            .filter(|&&(_, _, at)| at.is_none_or(|x| !in_u[x as usize]))
                             .map(|&(_, w, _)| w)
                             .sum();
                         if outside < *bound {
@@ -239,8 +239,7 @@ impl Unfounded {
                             // The body cannot reach its bound without U unless one of these
                             // currently false literals becomes true.
                             for &(l, _, at) in lits {
-                                if at.map_or(true, |x| !in_u[x as usize])
-                                    && e.value(l) == Some(false)
+                                if at.is_none_or(|x| !in_u[x as usize]) && e.value(l) == Some(false)
                                 {
                                     ext.push(l);
                                 }
