@@ -69,7 +69,12 @@ fn main() {
             config.consts.push((name.to_string(), def.value.clone()));
         }
     }
-    if failed {
+    let mut diags = lucent::base::Diagnostics::default();
+    let mut load = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let program =
+        lucent::ground::include::resolve_includes(&program, &mut sources, &mut diags, &mut load);
+    eprint!("{}", diags.render(&sources));
+    if failed || diags.has_errors() {
         std::process::exit(65);
     }
     let result = ground(&program, Some(&sources), &config);

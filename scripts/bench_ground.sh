@@ -45,5 +45,6 @@ tail -n +2 "$bench/MANIFEST.tsv" | cut -f1-4 | sort -u | while IFS=$'\t' read -r
     printf '%-60s %10d %10d %7.2f %9.3f %9.3f %7.2f\n' "$name" "$gr" "$lr" "$rr" "$gt" "$lt" "$tr"
   fi
 done | tee "$tmp/table"
-awk '$4 ~ /^[0-9.]+$/ && $4 > 0 && $7 > 0 { n++; r += log($4); t += log($7) }
+awk 'NR > 1 && $(NF-3) ~ /^[0-9.]+$/ && $(NF-3) > 0 && $NF ~ /^[0-9.]+$/ && $NF > 0 {
+       n++; r += log($(NF-3)); t += log($NF) }
      END { if (n) printf "geometric mean over %d rows: rules %.2fx, time %.2fx\n", n, exp(r/n), exp(t/n) }' "$tmp/table"

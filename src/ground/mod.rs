@@ -14,6 +14,7 @@ pub mod program;
 pub mod aspif;
 pub mod symbol;
 pub mod term;
+pub mod include;
 pub mod rewrite;
 pub mod sparc;
 pub mod instantiate;

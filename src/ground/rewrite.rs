@@ -1327,7 +1327,7 @@ impl<'a> Rewriter<'a> {
             K::Include(_) => {
                 self.diags.push(Diagnostic::error(
                     st.span,
-                    "#include must be resolved before grounding (ground::include::resolve)",
+                    "#include must be resolved before grounding (ground::include::resolve_includes)",
                 ));
             }
             K::Script(_) => self.unsupported(st.span, "#script is not supported by Lucent"),
