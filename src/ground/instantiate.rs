@@ -697,7 +697,7 @@ impl<'a> Grounder<'a> {
             let b2 = ctx.body.len();
             let mut sol: Option<Vec<Lit>> = None;
             g.join(ctx, std::slice::from_ref(l), 0, &[], &mut |_, ctx| {
-                if sol.as_ref().map_or(true, |s| !s.is_empty()) {
+                if sol.as_ref().is_none_or(|s| !s.is_empty()) {
                     sol = Some(ctx.body[b2..].to_vec());
                 }
             });

@@ -1820,7 +1820,7 @@ pub fn plan(
         let mut best: Option<(u32, usize)> = None;
         for (i, lit) in lits.iter_mut().enumerate() {
             if let Some(score) = readiness(lit, bound, global, &mut newly) {
-                if best.map_or(true, |(s, _)| score < s) {
+                if best.is_none_or(|(s, _)| score < s) {
                     best = Some((score, i));
                 }
             }
