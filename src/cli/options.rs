@@ -617,11 +617,11 @@ mod tests {
         assert_eq!(o.consts, vec![("n".to_string(), "3".to_string())]);
         assert_eq!(o.outf, OutputFormat::Json);
         assert_eq!(o.quiet, [2, 2, 2]);
-        let o = parse_args(&args("--quiet=1")).unwrap();
-        assert_eq!(o.quiet, [1, 1, 2]);
         assert_eq!(o.opt_mode, OptMode::Enum);
         assert_eq!(o.opt_bounds, vec![3, 4]);
         assert_eq!(o.disabled_warnings, vec![WarningKind::AtomUndefined]);
+        let o = parse_args(&args("--quiet=1")).unwrap();
+        assert_eq!(o.quiet, [1, 1, 2]);
     }
 
     #[test]
