@@ -364,7 +364,7 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
         .filter(|d| {
             d.is_error()
                 || d.kind
-                    .map_or(true, |k| !options.disabled_warnings.contains(&k))
+                    .is_none_or(|k| !options.disabled_warnings.contains(&k))
         })
         .cloned()
         .collect();

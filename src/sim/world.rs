@@ -238,7 +238,7 @@ impl World {
                     .shape()
                     .cast_ray_and_get_normal(collider.position(), &ray, limit, true)
             {
-                if best.map_or(true, |b| hit.time_of_impact < b.1) {
+                if best.is_none_or(|b| hit.time_of_impact < b.1) {
                     best = Some((handle, hit.time_of_impact, hit.normal));
                 }
             }
