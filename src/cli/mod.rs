@@ -9,7 +9,6 @@
 #[cfg(feature = "sim")]
 pub mod sim;
 pub mod demo;
-pub mod include;
 pub mod input;
 pub mod options;
 pub mod report;
@@ -175,17 +174,16 @@ fn read_and_parse(
     let (loaded, load_diags) = input::load(&options.files, io.stdin, &mut sources);
     diags.extend(load_diags);
     let mut programs = Vec::new();
-    let mut includes = include::Includes::default();
-    for input in &loaded {
-        includes.mark_input(&input.name);
-    }
     for input in &loaded {
         let text = &sources.get(input.file).text;
         let dialect = dialect_of(options, &input.name, text);
         let parse = crate::syntax::parse(input.file, text, dialect);
         diags.extend(parse.diagnostics);
-        let mut program = parse.program;
-        includes.resolve(&mut program, input.file, &mut sources, diags);
+        // Reading included files is I/O, so the command line supplies the loader.
+        let mut load =
+            |path: &std::path::Path| std::fs::read_to_string(path).map_err(|e| e.to_string());
+        let program =
+            ground::include::resolve_includes(&parse.program, &mut sources, diags, &mut load);
         programs.push(program);
     }
     if diags.has_errors() {
