@@ -20,9 +20,26 @@ export LUCENT=$lucent
 step "parser over every program in $shared/data"
 target/release/examples/parse_corpus "$shared/data" || status=1
 
-for solver in "$lucent" "scripts/split_pipeline.sh gringo-lucent" "scripts/split_pipeline.sh lucent-clasp"; do
+# Each suite run is compared with its list of known failures (scripts/known-failures/): a
+# failure not on the list fails CI; a listed case that passes is reported, so the list shrinks.
+for combo in lucent gringo-lucent lucent-clasp; do
+  case $combo in
+    lucent) solver=$lucent ;;
+    *) solver="scripts/split_pipeline.sh $combo" ;;
+  esac
   step "clingo test suite with: $solver"
-  python3 "$shared/tools/clingo_suite_check.py" --solver "$solver" --timeout 60 || status=1
+  out=$(python3 "$shared/tools/clingo_suite_check.py" --solver "$solver" --timeout 60)
+  echo "$out" | tail -1
+  known=scripts/known-failures/$combo.txt
+  failed=$(echo "$out" | sed -n 's/^FAIL \([^ ]* [^:]*\):.*/\1/p' | sort -u)
+  new=$(comm -23 <(echo "$failed" | sed '/^$/d') <(grep -v '^#' "$known" | sort -u))
+  fixed=$(comm -13 <(echo "$failed" | sed '/^$/d') <(grep -v '^#' "$known" | sort -u))
+  if [ -n "$new" ]; then
+    echo "NEW failures (not in $known):"; echo "$out" | grep -F -f <(echo "$new") | cut -c1-300
+    status=1
+  fi
+  [ -z "$fixed" ] || { echo "now passing (remove from $known):"; echo "$fixed"; }
+  echo "known failures still failing: $(comm -12 <(echo "$failed" | sed '/^$/d') <(grep -v '^#' "$known" | sort -u) | grep -c .)"
 done
 
 step "SPARC robot-assistant programs"
