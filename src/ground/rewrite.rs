@@ -379,9 +379,9 @@ pub fn unpool_literal(l: &ast::Literal) -> Vec<ast::Literal> {
                         span: l.span,
                         sign: l.sign,
                         atom: ast::Atom::Comparison {
-                            lhs: a.clone(),
+                            lhs: Box::new(a.clone()),
                             op: *op,
-                            rhs: b,
+                            rhs: Box::new(b),
                         },
                     });
                 }
@@ -1181,55 +1181,59 @@ impl<'a> Rewriter<'a> {
                     }
                 }
             }
-            K::Show(ast::Show::Nothing) => self.out.show.restricted = true,
-            K::Show(ast::Show::Signature(s)) => {
-                self.out.show.restricted = true;
-                let p = self.sig_pred(s);
-                let pred = self.out.preds[p as usize].clone();
-                self.out.show.signatures.push(pred);
-            }
-            K::Show(ast::Show::Term { term, body }) => {
-                for t in unpool_term(term) {
-                    for b in unpool_body(body) {
-                        let mut vars = Vars::default();
-                        let mut out = Vec::new();
-                        let mut extra = Vec::new();
-                        let Some(t) = self.term(&t, &mut vars, &mut extra) else {
-                            continue;
-                        };
-                        if self.body(&b, &mut vars, &mut out).is_none() {
-                            continue;
+            K::Show(show) => match &**show {
+                ast::Show::Nothing => self.out.show.restricted = true,
+                ast::Show::Signature(s) => {
+                    self.out.show.restricted = true;
+                    let p = self.sig_pred(s);
+                    let pred = self.out.preds[p as usize].clone();
+                    self.out.show.signatures.push(pred);
+                }
+                ast::Show::Term { term, body } => {
+                    for t in unpool_term(term) {
+                        for b in unpool_body(body) {
+                            let mut vars = Vars::default();
+                            let mut out = Vec::new();
+                            let mut extra = Vec::new();
+                            let Some(t) = self.term(&t, &mut vars, &mut extra) else {
+                                continue;
+                            };
+                            if self.body(&b, &mut vars, &mut out).is_none() {
+                                continue;
+                            }
+                            out.append(&mut extra);
+                            self.finish(index, st.span, NHead::None, out, NKind::Show(t), vars);
                         }
-                        out.append(&mut extra);
-                        self.finish(index, st.span, NHead::None, out, NKind::Show(t), vars);
                     }
                 }
-            }
+            },
             K::Defined(s) => {
                 let p = self.sig_pred(s);
                 self.out.defined.push(p);
             }
-            K::Project(ast::Project::Signature(s)) => {
-                let p = self.sig_pred(s);
-                self.out.project_sigs.push(p);
-            }
-            K::Project(ast::Project::Atom { atom, body }) => {
-                for a in unpool_atom(atom) {
-                    for b in unpool_body(body) {
-                        let mut vars = Vars::default();
-                        let mut out = Vec::new();
-                        let mut extra = Vec::new();
-                        let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
-                            continue;
-                        };
-                        if self.body(&b, &mut vars, &mut out).is_none() {
-                            continue;
+            K::Project(project) => match &**project {
+                ast::Project::Signature(s) => {
+                    let p = self.sig_pred(s);
+                    self.out.project_sigs.push(p);
+                }
+                ast::Project::Atom { atom, body } => {
+                    for a in unpool_atom(atom) {
+                        for b in unpool_body(body) {
+                            let mut vars = Vars::default();
+                            let mut out = Vec::new();
+                            let mut extra = Vec::new();
+                            let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
+                                continue;
+                            };
+                            if self.body(&b, &mut vars, &mut out).is_none() {
+                                continue;
+                            }
+                            out.append(&mut extra);
+                            self.finish(index, st.span, NHead::None, out, NKind::Project(a), vars);
                         }
-                        out.append(&mut extra);
-                        self.finish(index, st.span, NHead::None, out, NKind::Project(a), vars);
                     }
                 }
-            }
+            },
             K::External(e) => {
                 let value = match e.value.as_ref().map(|t| &t.kind) {
                     None => ExternalValue::False,
@@ -1465,7 +1469,7 @@ impl<'a> Rewriter<'a> {
                     let mut cbody = body.to_vec();
                     cbody.push(ast::BodyLiteral::Aggregate {
                         sign: Sign::Not,
-                        aggregate: agg,
+                        aggregate: Box::new(agg),
                     });
                     self.rule_instance(
                         index,
@@ -1519,7 +1523,7 @@ impl<'a> Rewriter<'a> {
                     let mut cbody = body.to_vec();
                     cbody.push(ast::BodyLiteral::Aggregate {
                         sign: Sign::Not,
-                        aggregate: agg,
+                        aggregate: Box::new(agg),
                     });
                     self.rule_instance(
                         index,

@@ -201,7 +201,7 @@ impl Typing {
                     sign: Sign::Positive,
                     atom: ast::Atom::Sort {
                         sort: sort.clone(),
-                        arg: t.clone(),
+                        arg: Box::new(t.clone()),
                     },
                 });
                 continue;
@@ -237,23 +237,34 @@ impl Typing {
         Some(out)
     }
 
+    /// Adds the sort atoms of disjunction or choice elements: to the element's condition when
+    /// it has one, otherwise to `extra` (the rule body).
+    fn head_elements(
+        &self,
+        rw: &mut Rewriter<'_>,
+        es: &mut [ast::ConditionalLiteral],
+        extra: &mut Vec<ast::Literal>,
+    ) -> Option<()> {
+        for e in es.iter_mut() {
+            let t = self.literals(rw, std::slice::from_ref(&e.literal))?;
+            let c = self.literals(rw, &e.condition)?;
+            if e.condition.is_empty() {
+                extra.extend(t);
+            } else {
+                e.condition.extend(t);
+                e.condition.extend(c);
+            }
+        }
+        Some(())
+    }
+
     fn rule(&self, rw: &mut Rewriter<'_>, r: &ast::Rule) -> Option<ast::Rule> {
         let mut r = r.clone();
         let mut extra: Vec<ast::Literal> = Vec::new();
         match &mut r.head {
             ast::Head::None => {}
-            ast::Head::Disjunction(es) | ast::Head::Choice(ast::Choice { elements: es, .. }) => {
-                for e in es.iter_mut() {
-                    let t = self.literals(rw, std::slice::from_ref(&e.literal))?;
-                    let c = self.literals(rw, &e.condition)?;
-                    if e.condition.is_empty() {
-                        extra.extend(t);
-                    } else {
-                        e.condition.extend(t);
-                        e.condition.extend(c);
-                    }
-                }
-            }
+            ast::Head::Disjunction(es) => self.head_elements(rw, es, &mut extra)?,
+            ast::Head::Choice(c) => self.head_elements(rw, &mut c.elements, &mut extra)?,
             ast::Head::Aggregate(h) => {
                 for e in h.elements.iter_mut() {
                     let t = self.literals(rw, std::slice::from_ref(&e.literal))?;
@@ -330,7 +341,7 @@ pub fn lower(rw: &mut Rewriter<'_>, program: &ast::Program) -> ast::Program {
                 typing.decls.insert(p.name.clone(), p.sorts.clone());
             }
             StatementKind::Section(_) => {}
-            StatementKind::Display(l) => displays.push((st.span, l.clone())),
+            StatementKind::Display(l) => displays.push((st.span, (**l).clone())),
             StatementKind::Rule(r) => {
                 if let Some(r) = typing.rule(rw, r) {
                     statements.push(ast::Statement {
@@ -358,11 +369,11 @@ pub fn lower(rw: &mut Rewriter<'_>, program: &ast::Program) -> ast::Program {
                 let arity = typing.decls.get(&a.name).map_or(0, |d| d.len()) as u32;
                 statements.push(ast::Statement {
                     span,
-                    kind: StatementKind::Show(ast::Show::Signature(ast::Signature {
+                    kind: StatementKind::Show(Box::new(ast::Show::Signature(ast::Signature {
                         negated: a.negated,
                         name: a.name.clone(),
                         arity,
-                    })),
+                    }))),
                 });
             }
             ast::Atom::Symbolic(a) => {
@@ -387,10 +398,10 @@ pub fn lower(rw: &mut Rewriter<'_>, program: &ast::Program) -> ast::Program {
                 };
                 statements.push(ast::Statement {
                     span,
-                    kind: StatementKind::Show(ast::Show::Term {
+                    kind: StatementKind::Show(Box::new(ast::Show::Term {
                         term,
                         body: vec![ast::BodyLiteral::Literal(l.clone())],
-                    }),
+                    })),
                 });
             }
             ast::Atom::Sort { sort, arg } => {
@@ -398,16 +409,16 @@ pub fn lower(rw: &mut Rewriter<'_>, program: &ast::Program) -> ast::Program {
                     span: l.span,
                     kind: TermKind::Function {
                         name: format!("#{sort}"),
-                        args: vec![vec![arg.clone()]],
+                        args: vec![vec![(**arg).clone()]],
                         trailing_comma: false,
                     },
                 };
                 statements.push(ast::Statement {
                     span,
-                    kind: StatementKind::Show(ast::Show::Term {
+                    kind: StatementKind::Show(Box::new(ast::Show::Term {
                         term,
                         body: vec![ast::BodyLiteral::Literal(l.clone())],
-                    }),
+                    })),
                 });
             }
             _ => {}

@@ -42,29 +42,30 @@ pub struct Statement {
     pub kind: StatementKind,
 }
 
-/// The kinds of statements.
+/// The kinds of statements. Payloads of the rarer, larger kinds are boxed so that a
+/// [`Statement`] stays small on the common path (facts and rules).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum StatementKind {
     /// A fact, rule, constraint, or CR rule.
     Rule(Rule),
     /// `:~ body. [weight@priority, terms]`
-    WeakConstraint(WeakConstraint),
+    WeakConstraint(Box<WeakConstraint>),
     /// `#minimize { ... }.` or `#maximize { ... }.`
     Optimize(Optimize),
     /// `#show.`, `#show p/n.`, `#show -p/n.`, `#show t : body.`
-    Show(Show),
+    Show(Box<Show>),
     /// `#defined p/n.`
     Defined(Signature),
     /// `#project p/n.` or `#project a : body.`
-    Project(Project),
+    Project(Box<Project>),
     /// `#const name = term. [default|override]`
-    Const(ConstDef),
+    Const(Box<ConstDef>),
     /// `#external atom : body. [value]`
-    External(External),
+    External(Box<External>),
     /// `#heuristic atom : body. [weight@priority, modifier]`
-    Heuristic(Heuristic),
+    Heuristic(Box<Heuristic>),
     /// `#edge (u, v) : body.`
-    Edge(Edge),
+    Edge(Box<Edge>),
     /// `#include "file".` or `#include <name>.`
     Include(Include),
     /// `#program name(params).`
@@ -75,11 +76,11 @@ pub enum StatementKind {
     /// A SPARC section header: `sorts`, `predicates`, `rules` or `display`.
     Section(Section),
     /// A SPARC sort definition `#name = sort_expression.`
-    SortDef(SortDef),
+    SortDef(Box<SortDef>),
     /// A SPARC predicate declaration `name(#sort, ...).`
     PredicateDecl(PredicateDecl),
     /// A SPARC display item, e.g. `occurs.`, `-holds(F, I).`, `#object(O).`
-    Display(Literal),
+    Display(Box<Literal>),
     /// A statement that did not parse; its diagnostics were reported.
     Error,
 }
@@ -117,7 +118,7 @@ pub enum RuleKind {
     /// may be the rule's variables).
     ConsistencyRestoring {
         /// The label, if written.
-        label: Option<Term>,
+        label: Option<Box<Term>>,
     },
 }
 
@@ -130,9 +131,9 @@ pub enum Head {
     /// unconditional literal is a disjunction of one element.
     Disjunction(Vec<ConditionalLiteral>),
     /// `lower { elements } upper`
-    Choice(Choice),
+    Choice(Box<Choice>),
     /// A head aggregate `lower #sum { terms : literal : condition ; ... } upper`.
-    Aggregate(HeadAggregate),
+    Aggregate(Box<HeadAggregate>),
 }
 
 /// `literal : condition` where the condition may be empty.
@@ -258,7 +259,7 @@ pub enum BodyLiteral {
         /// Default negation in front of the aggregate.
         sign: Sign,
         /// The aggregate.
-        aggregate: BodyAggregate,
+        aggregate: Box<BodyAggregate>,
     },
 }
 
@@ -293,12 +294,12 @@ pub enum Atom {
     /// `lhs op rhs` (gringo also allows chains `a < b < c`; they are stored as a conjunction of
     /// the parts by the parser, one literal each, sharing the middle term).
     Comparison {
-        /// Left operand.
-        lhs: Term,
+        /// Left operand (boxed: comparisons are rare next to predicate atoms).
+        lhs: Box<Term>,
         /// The relation.
         op: CmpOp,
         /// Right operand.
-        rhs: Term,
+        rhs: Box<Term>,
     },
     /// `#true` or `#false`.
     Boolean(bool),
@@ -306,8 +307,8 @@ pub enum Atom {
     Sort {
         /// The sort name without `#`.
         sort: String,
-        /// The argument.
-        arg: Term,
+        /// The argument (boxed, like the comparison operands).
+        arg: Box<Term>,
     },
 }
 
@@ -668,4 +669,35 @@ pub struct PredicateDecl {
     pub name: String,
     /// Argument sort names, without `#`.
     pub sorts: Vec<String>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::mem::size_of;
+
+    /// The common path (facts and simple rules) allocates these by the million; the rare,
+    /// large variant payloads are boxed to keep them small. Raise the bounds only with a
+    /// measurement showing the parser is not slowed.
+    #[test]
+    fn node_sizes_stay_small() {
+        let sizes = [
+            ("Statement", size_of::<Statement>()),
+            ("StatementKind", size_of::<StatementKind>()),
+            ("Rule", size_of::<Rule>()),
+            ("Head", size_of::<Head>()),
+            ("BodyLiteral", size_of::<BodyLiteral>()),
+            ("ConditionalLiteral", size_of::<ConditionalLiteral>()),
+            ("Literal", size_of::<Literal>()),
+            ("Atom", size_of::<Atom>()),
+            ("SymbolicAtom", size_of::<SymbolicAtom>()),
+            ("Term", size_of::<Term>()),
+        ];
+        for (name, size) in sizes {
+            println!("{name}: {size}");
+        }
+        assert!(size_of::<Statement>() <= 80, "{sizes:?}");
+        assert!(size_of::<Literal>() <= 80, "{sizes:?}");
+        assert!(size_of::<BodyLiteral>() <= 120, "{sizes:?}");
+    }
 }

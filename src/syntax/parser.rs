@@ -588,7 +588,7 @@ impl<'a> Parser<'a> {
                 self.literal(Ctx::Single, &mut lits)?;
                 self.expect(T::Dot, &["."])?;
                 let _ = start;
-                Ok(Some(StatementKind::Display(lits.remove(0))))
+                Ok(Some(StatementKind::Display(Box::new(lits.remove(0)))))
             }
             None if self.at_sort_name() => self.sort_def().map(Some),
             _ => Ok(None),
@@ -625,7 +625,9 @@ impl<'a> Parser<'a> {
                 Ok(StatementKind::Rule(Rule {
                     head,
                     body,
-                    kind: RuleKind::ConsistencyRestoring { label },
+                    kind: RuleKind::ConsistencyRestoring {
+                        label: label.map(Box::new),
+                    },
                 }))
             }
             _ => {
@@ -653,12 +655,12 @@ impl<'a> Parser<'a> {
         self.expect(T::LBrack, &["["])?;
         let (weight, priority, terms) = self.weight_tuple()?;
         self.expect(T::RBrack, &["]"])?;
-        Ok(StatementKind::WeakConstraint(WeakConstraint {
+        Ok(StatementKind::WeakConstraint(Box::new(WeakConstraint {
             body,
             weight,
             priority,
             terms,
-        }))
+        })))
     }
 
     /// `w[@p] {, t}`
@@ -726,7 +728,7 @@ impl<'a> Parser<'a> {
     fn show(&mut self) -> PResult<StatementKind> {
         self.bump();
         if self.eat(T::Dot) {
-            return Ok(StatementKind::Show(Show::Nothing));
+            return Ok(StatementKind::Show(Box::new(Show::Nothing)));
         }
         let term = self.term()?;
         self.body_end = &[];
@@ -738,10 +740,10 @@ impl<'a> Parser<'a> {
         self.end_of_body()?;
         if body.is_empty() {
             if let Some(sig) = term_to_signature(&term) {
-                return Ok(StatementKind::Show(Show::Signature(sig)));
+                return Ok(StatementKind::Show(Box::new(Show::Signature(sig))));
             }
         }
-        Ok(StatementKind::Show(Show::Term { term, body }))
+        Ok(StatementKind::Show(Box::new(Show::Term { term, body })))
     }
 
     /// `#project p/n.` or `#project atom : body.`
@@ -750,11 +752,14 @@ impl<'a> Parser<'a> {
         let term = self.term()?;
         if let Some(sig) = term_to_signature(&term) {
             self.expect(T::Dot, &["."])?;
-            return Ok(StatementKind::Project(Project::Signature(sig)));
+            return Ok(StatementKind::Project(Box::new(Project::Signature(sig))));
         }
         let atom = self.atom_of(term)?;
         let body = self.directive_body()?;
-        Ok(StatementKind::Project(Project::Atom { atom, body }))
+        Ok(StatementKind::Project(Box::new(Project::Atom {
+            atom,
+            body,
+        })))
     }
 
     /// The atom a parsed term denotes, or an error at the current token.
@@ -804,12 +809,12 @@ impl<'a> Parser<'a> {
             annotated = true;
             self.expect(T::RBrack, &["]"])?;
         }
-        Ok(StatementKind::Const(ConstDef {
+        Ok(StatementKind::Const(Box::new(ConstDef {
             name,
             value,
             kind,
             annotated,
-        }))
+        })))
     }
 
     /// `#external atom : body. [value]`
@@ -826,7 +831,11 @@ impl<'a> Parser<'a> {
         } else {
             None
         };
-        Ok(StatementKind::External(External { atom, body, value }))
+        Ok(StatementKind::External(Box::new(External {
+            atom,
+            body,
+            value,
+        })))
     }
 
     /// `#heuristic atom : body. [w@p, modifier]`
@@ -845,13 +854,13 @@ impl<'a> Parser<'a> {
         self.expect(T::Comma, &["\",\""])?;
         let modifier = self.term()?;
         self.expect(T::RBrack, &["]"])?;
-        Ok(StatementKind::Heuristic(Heuristic {
+        Ok(StatementKind::Heuristic(Box::new(Heuristic {
             atom,
             body,
             weight,
             priority,
             modifier,
-        }))
+        })))
     }
 
     /// `#edge (u, v) : body.`
@@ -863,7 +872,7 @@ impl<'a> Parser<'a> {
         let to = self.term()?;
         self.expect(T::RParen, &[")"])?;
         let body = self.directive_body()?;
-        Ok(StatementKind::Edge(Edge { from, to, body }))
+        Ok(StatementKind::Edge(Box::new(Edge { from, to, body })))
     }
 
     /// `#include "file".` or `#include <name>.`
@@ -952,7 +961,7 @@ impl<'a> Parser<'a> {
         self.expect(T::Eq, &["="])?;
         let expr = self.sort_expr(0)?;
         self.expect(T::Dot, &["."])?;
-        Ok(StatementKind::SortDef(SortDef { name, expr }))
+        Ok(StatementKind::SortDef(Box::new(SortDef { name, expr })))
     }
 
     /// A sort expression with operators of at least `min_level` (`+ -` are 0, `*` is 1).
@@ -1135,10 +1144,13 @@ impl<'a> Parser<'a> {
     fn head(&mut self) -> PResult<(Head, Option<Term>)> {
         let start = self.tok.start;
         if self.at(T::LBrace) {
-            return Ok((Head::Choice(self.choice(start, None)?), None));
+            return Ok((Head::Choice(Box::new(self.choice(start, None)?)), None));
         }
         if self.at_aggregate() {
-            return Ok((Head::Aggregate(self.head_aggregate(start, None)?), None));
+            return Ok((
+                Head::Aggregate(Box::new(self.head_aggregate(start, None)?)),
+                None,
+            ));
         }
         let mut first = Vec::with_capacity(1);
         let mut first_term = None;
@@ -1151,7 +1163,10 @@ impl<'a> Parser<'a> {
                     op: CmpOp::Le,
                     term,
                 };
-                return Ok((Head::Choice(self.choice(start, Some(guard))?), None));
+                return Ok((
+                    Head::Choice(Box::new(self.choice(start, Some(guard))?)),
+                    None,
+                ));
             }
             if self.at_aggregate() {
                 let guard = Guard {
@@ -1159,7 +1174,7 @@ impl<'a> Parser<'a> {
                     term,
                 };
                 return Ok((
-                    Head::Aggregate(self.head_aggregate(start, Some(guard))?),
+                    Head::Aggregate(Box::new(self.head_aggregate(start, Some(guard))?)),
                     None,
                 ));
             }
@@ -1171,10 +1186,13 @@ impl<'a> Parser<'a> {
                     self.bump();
                     let guard = Guard { op, term };
                     if self.at(T::LBrace) {
-                        return Ok((Head::Choice(self.choice(start, Some(guard))?), None));
+                        return Ok((
+                            Head::Choice(Box::new(self.choice(start, Some(guard))?)),
+                            None,
+                        ));
                     }
                     return Ok((
-                        Head::Aggregate(self.head_aggregate(start, Some(guard))?),
+                        Head::Aggregate(Box::new(self.head_aggregate(start, Some(guard))?)),
                         None,
                     ));
                 }
@@ -1356,7 +1374,10 @@ impl<'a> Parser<'a> {
         let sign = self.sign()?;
         if self.at(T::LBrace) || self.at_aggregate() {
             let aggregate = self.body_aggregate(start, None)?;
-            out.push(BodyLiteral::Aggregate { sign, aggregate });
+            out.push(BodyLiteral::Aggregate {
+                sign,
+                aggregate: Box::new(aggregate),
+            });
             self.body_end = AFTER_AGGREGATE;
             return Ok(());
         }
@@ -1371,7 +1392,10 @@ impl<'a> Parser<'a> {
                     term,
                 };
                 let aggregate = self.body_aggregate(start, Some(guard))?;
-                out.push(BodyLiteral::Aggregate { sign, aggregate });
+                out.push(BodyLiteral::Aggregate {
+                    sign,
+                    aggregate: Box::new(aggregate),
+                });
                 self.body_end = AFTER_AGGREGATE;
                 return Ok(());
             }
@@ -1383,7 +1407,10 @@ impl<'a> Parser<'a> {
                     self.bump();
                     let guard = Guard { op, term };
                     let aggregate = self.body_aggregate(start, Some(guard))?;
-                    out.push(BodyLiteral::Aggregate { sign, aggregate });
+                    out.push(BodyLiteral::Aggregate {
+                        sign,
+                        aggregate: Box::new(aggregate),
+                    });
                     self.body_end = AFTER_AGGREGATE;
                     return Ok(());
                 }
@@ -1520,7 +1547,10 @@ impl<'a> Parser<'a> {
                 self.expect(T::LParen, &["("])?;
                 let arg = self.term()?;
                 self.expect(T::RParen, &[")"])?;
-                Atom::Sort { sort, arg }
+                Atom::Sort {
+                    sort,
+                    arg: Box::new(arg),
+                }
             }
         };
         out.push(Literal {
@@ -1564,7 +1594,11 @@ impl<'a> Parser<'a> {
             out.push(Literal {
                 span: self.span_from(lit_start),
                 sign,
-                atom: Atom::Comparison { lhs, op, rhs },
+                atom: Atom::Comparison {
+                    lhs: Box::new(lhs),
+                    op,
+                    rhs: Box::new(rhs),
+                },
             });
             let Some(next_lhs) = next_lhs else {
                 return Ok(());

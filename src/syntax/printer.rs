@@ -79,7 +79,7 @@ pub fn statement(out: &mut String, kind: &StatementKind) {
             }
             out.push_str(" }.");
         }
-        StatementKind::Show(show) => match show {
+        StatementKind::Show(show) => match &**show {
             Show::Nothing => out.push_str("#show."),
             Show::Signature(sig) => {
                 out.push_str("#show ");
@@ -103,7 +103,7 @@ pub fn statement(out: &mut String, kind: &StatementKind) {
         }
         StatementKind::Project(p) => {
             out.push_str("#project ");
-            match p {
+            match &**p {
                 Project::Signature(sig) => signature(out, sig),
                 Project::Atom { atom, body: b } => {
                     symbolic(out, atom);

@@ -65,13 +65,17 @@ fn statement(kind: &mut StatementKind, f: &mut dyn FnMut(&mut Span)) {
                 literals(&mut e.condition, f);
             }
         }
-        StatementKind::Show(Show::Term { term: t, body: b }) => {
-            term(t, f);
-            body(b, f);
+        StatementKind::Show(show) => {
+            if let Show::Term { term: t, body: b } = &mut **show {
+                term(t, f);
+                body(b, f);
+            }
         }
-        StatementKind::Project(Project::Atom { atom, body: b }) => {
-            symbolic(atom, f);
-            body(b, f);
+        StatementKind::Project(project) => {
+            if let Project::Atom { atom, body: b } = &mut **project {
+                symbolic(atom, f);
+                body(b, f);
+            }
         }
         StatementKind::Const(c) => term(&mut c.value, f),
         StatementKind::External(e) => {
@@ -97,9 +101,7 @@ fn statement(kind: &mut StatementKind, f: &mut dyn FnMut(&mut Span)) {
         }
         StatementKind::SortDef(d) => sort_expr(&mut d.expr, f),
         StatementKind::Display(l) => literal(l, f),
-        StatementKind::Show(_)
-        | StatementKind::Defined(_)
-        | StatementKind::Project(Project::Signature(_))
+        StatementKind::Defined(_)
         | StatementKind::Include(_)
         | StatementKind::ProgramPart(_)
         | StatementKind::Script(_)
