@@ -854,10 +854,17 @@ impl Solver {
                     return false;
                 }
                 Next::Model => {
+                    // A model reached without a decision beyond the assumptions (one level
+                    // each) is the only one: the space is exhausted even if the model limit
+                    // stops the enumeration here, as clasp reports it.
+                    let unique = self.engine.decision_level() as usize <= assume.len();
                     let go = self.report(call, optimal, dedup);
                     self.block(guard, &projection);
                     if !go {
-                        return false;
+                        if unique {
+                            call.exhausted = true;
+                        }
+                        return unique;
                     }
                 }
             }
