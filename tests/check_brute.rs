@@ -2,27 +2,9 @@
 //! and against clasp's answers recorded for the aspif test files.
 
 use lucent::ground::aspif;
-use lucent::ground::program::{
-    Atom, Body, CrRule, GroundProgram, HeadKind, Lit, Minimize, Prefer, Rule,
-};
+use lucent::ground::program::{Atom, CrRule, GroundProgram, Lit, Minimize, Prefer, Rule};
 use lucent::solve::brute::{answer_sets, stable_models, BruteConfig, BruteModel};
 use lucent::solve::CrMode;
-
-fn rule(head: &[Atom], body: &[Lit]) -> Rule {
-    Rule {
-        head_kind: HeadKind::Disjunction,
-        head: head.to_vec(),
-        body: Body::Normal(body.to_vec()),
-    }
-}
-
-fn choice(head: &[Atom], body: &[Lit]) -> Rule {
-    Rule {
-        head_kind: HeadKind::Choice,
-        head: head.to_vec(),
-        body: Body::Normal(body.to_vec()),
-    }
-}
 
 fn program(num_atoms: u32, rules: Vec<Rule>) -> GroundProgram {
     GroundProgram {
@@ -41,16 +23,26 @@ fn stable_models_of_small_programs() {
     // a :- not b.  b :- not a.  c :- a.
     let p = program(
         3,
-        vec![rule(&[1], &[-2]), rule(&[2], &[-1]), rule(&[3], &[1])],
+        vec![
+            Rule::normal(&[1], &[-2]),
+            Rule::normal(&[2], &[-1]),
+            Rule::normal(&[3], &[1]),
+        ],
     );
     assert_eq!(stable_models(&p), vec![vec![1, 3], vec![2]]);
     // a :- not a.  No stable model.
-    assert!(stable_models(&program(1, vec![rule(&[1], &[-1])])).is_empty());
+    assert!(stable_models(&program(1, vec![Rule::normal(&[1], &[-1])])).is_empty());
     // a | b.  a :- b.  Only {a}.
-    let p = program(2, vec![rule(&[1, 2], &[]), rule(&[1], &[2])]);
+    let p = program(
+        2,
+        vec![Rule::normal(&[1, 2], &[]), Rule::normal(&[1], &[2])],
+    );
     assert_eq!(stable_models(&p), vec![vec![1]]);
     // {a; b; c}.  :- a, b.  Six subsets avoid {a, b}.
-    let p = program(3, vec![choice(&[1, 2, 3], &[]), rule(&[], &[1, 2])]);
+    let p = program(
+        3,
+        vec![Rule::choice(&[1, 2, 3], &[]), Rule::normal(&[], &[1, 2])],
+    );
     assert_eq!(stable_models(&p).len(), 6);
 }
 
@@ -61,14 +53,14 @@ fn cr_program() -> GroundProgram {
     let mut p = program(
         7,
         vec![
-            choice(&[5], &[]),
-            choice(&[6], &[]),
-            choice(&[7], &[]),
-            rule(&[1], &[5]),
-            rule(&[2], &[6]),
-            rule(&[3], &[7]),
-            rule(&[4], &[2, 3]),
-            rule(&[], &[-1, -4]),
+            Rule::choice(&[5], &[]),
+            Rule::choice(&[6], &[]),
+            Rule::choice(&[7], &[]),
+            Rule::normal(&[1], &[5]),
+            Rule::normal(&[2], &[6]),
+            Rule::normal(&[3], &[7]),
+            Rule::normal(&[4], &[2, 3]),
+            Rule::normal(&[], &[-1, -4]),
         ],
     );
     p.cr_rules = vec![
@@ -137,7 +129,11 @@ fn cr_not_needed_means_not_applied() {
     // r1: p :+.  with p also a fact: the program is consistent without CR rules.
     let mut p = program(
         2,
-        vec![choice(&[2], &[]), rule(&[1], &[2]), rule(&[1], &[])],
+        vec![
+            Rule::choice(&[2], &[]),
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[1], &[]),
+        ],
     );
     p.cr_rules = vec![CrRule {
         appl: 2,
@@ -166,11 +162,11 @@ fn cr_models_equal_up_to_application_are_merged() {
     let mut p = program(
         3,
         vec![
-            choice(&[2], &[]),
-            choice(&[3], &[]),
-            rule(&[1], &[2]),
-            rule(&[1], &[3]),
-            rule(&[], &[-1]),
+            Rule::choice(&[2], &[]),
+            Rule::choice(&[3], &[]),
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[1], &[3]),
+            Rule::normal(&[], &[-1]),
         ],
     );
     p.cr_rules = vec![
@@ -209,7 +205,11 @@ fn optimization_is_lexicographic_by_priority() {
     // {a}: (1, 0); {b, c}: (0, 2); {a, b, c}: (1, 2).  Priority 2 first: {b, c} is optimal.
     let mut p = program(
         3,
-        vec![choice(&[1, 2], &[]), rule(&[], &[-1, -2]), rule(&[3], &[2])],
+        vec![
+            Rule::choice(&[1, 2], &[]),
+            Rule::normal(&[], &[-1, -2]),
+            Rule::normal(&[3], &[2]),
+        ],
     );
     p.minimize.push(Minimize {
         priority: 2,

@@ -6,22 +6,6 @@ use lucent::ground::program::{
 };
 use lucent::solve::check::{check, Violation};
 
-fn rule(head: &[Atom], body: &[Lit]) -> Rule {
-    Rule {
-        head_kind: HeadKind::Disjunction,
-        head: head.to_vec(),
-        body: Body::Normal(body.to_vec()),
-    }
-}
-
-fn choice(head: &[Atom], body: &[Lit]) -> Rule {
-    Rule {
-        head_kind: HeadKind::Choice,
-        head: head.to_vec(),
-        body: Body::Normal(body.to_vec()),
-    }
-}
-
 fn weight(head: &[Atom], lower: Weight, lits: &[(Lit, Weight)]) -> Rule {
     Rule {
         head_kind: HeadKind::Disjunction,
@@ -44,7 +28,10 @@ fn program(num_atoms: u32, rules: Vec<Rule>) -> GroundProgram {
 #[test]
 fn even_negative_loop() {
     // a :- not b.  b :- not a.   (a = 1, b = 2)
-    let p = program(2, vec![rule(&[1], &[-2]), rule(&[2], &[-1])]);
+    let p = program(
+        2,
+        vec![Rule::normal(&[1], &[-2]), Rule::normal(&[2], &[-1])],
+    );
     // {a}: the reduct is {a.}; its least model is {a}.
     assert_eq!(check(&p, &[1]), Ok(()));
     assert_eq!(check(&p, &[2]), Ok(()));
@@ -60,7 +47,7 @@ fn even_negative_loop() {
 #[test]
 fn odd_loop_has_no_stable_model() {
     // a :- not a.  {} violates the rule; {a} has the empty reduct.
-    let p = program(1, vec![rule(&[1], &[-1])]);
+    let p = program(1, vec![Rule::normal(&[1], &[-1])]);
     assert_eq!(check(&p, &[]), Err(Violation::RuleViolated { rule: 0 }));
     assert_eq!(
         check(&p, &[1]),
@@ -71,7 +58,7 @@ fn odd_loop_has_no_stable_model() {
 #[test]
 fn positive_loop_is_unfounded() {
     // a :- b.  b :- a.  {a, b} is a model but the least model of the (same) reduct is {}.
-    let p = program(2, vec![rule(&[1], &[2]), rule(&[2], &[1])]);
+    let p = program(2, vec![Rule::normal(&[1], &[2]), Rule::normal(&[2], &[1])]);
     assert_eq!(check(&p, &[]), Ok(()));
     assert_eq!(
         check(&p, &[1, 2]),
@@ -80,7 +67,11 @@ fn positive_loop_is_unfounded() {
     // c. a :- b. b :- a, c.  still unfounded with a fact in the loop's body.
     let p = program(
         3,
-        vec![rule(&[3], &[]), rule(&[1], &[2]), rule(&[2], &[1, 3])],
+        vec![
+            Rule::normal(&[3], &[]),
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[1, 3]),
+        ],
     );
     assert_eq!(check(&p, &[3]), Ok(()));
     assert_eq!(
@@ -92,7 +83,7 @@ fn positive_loop_is_unfounded() {
 #[test]
 fn choice_rules() {
     // {a}.  b :- a.   (a = 1, b = 2)
-    let p = program(2, vec![choice(&[1], &[]), rule(&[2], &[1])]);
+    let p = program(2, vec![Rule::choice(&[1], &[]), Rule::normal(&[2], &[1])]);
     // The reduct of {a, b} is {a. b :- a.}: least model {a, b}.
     assert_eq!(check(&p, &[1, 2]), Ok(()));
     // The reduct of {} drops the choice (a is false): least model {}.
@@ -105,7 +96,7 @@ fn choice_rules() {
     // {a}: b :- a is violated.
     assert_eq!(check(&p, &[1]), Err(Violation::RuleViolated { rule: 1 }));
     // A choice with a false negative body literal supports nothing: {a} :- not b. b.
-    let p = program(2, vec![choice(&[1], &[-2]), rule(&[2], &[])]);
+    let p = program(2, vec![Rule::choice(&[1], &[-2]), Rule::normal(&[2], &[])]);
     assert_eq!(check(&p, &[2]), Ok(()));
     assert_eq!(
         check(&p, &[1, 2]),
@@ -119,7 +110,7 @@ fn weight_bodies() {
     let p = program(
         4,
         vec![
-            choice(&[1, 2], &[]),
+            Rule::choice(&[1, 2], &[]),
             weight(&[3], 2, &[(1, 1), (2, 1), (-4, 1)]),
         ],
     );
@@ -163,8 +154,8 @@ fn weight_bodies_do_not_support_themselves() {
         3,
         vec![
             weight(&[1], 3, &[(2, 2), (3, 2)]),
-            rule(&[2], &[]),
-            choice(&[3], &[2]),
+            Rule::normal(&[2], &[]),
+            Rule::choice(&[3], &[2]),
         ],
     );
     assert_eq!(check(&p, &[1, 2, 3]), Ok(()));
@@ -178,7 +169,7 @@ fn weight_bodies_do_not_support_themselves() {
 #[test]
 fn constraints() {
     // {a}.  :- a.
-    let p = program(1, vec![choice(&[1], &[]), rule(&[], &[1])]);
+    let p = program(1, vec![Rule::choice(&[1], &[]), Rule::normal(&[], &[1])]);
     assert_eq!(check(&p, &[]), Ok(()));
     assert_eq!(check(&p, &[1]), Err(Violation::RuleViolated { rule: 1 }));
 }
@@ -186,7 +177,7 @@ fn constraints() {
 #[test]
 fn disjunction_is_minimal() {
     // a | b.
-    let p = program(2, vec![rule(&[1, 2], &[])]);
+    let p = program(2, vec![Rule::normal(&[1, 2], &[])]);
     assert_eq!(check(&p, &[1]), Ok(()));
     assert_eq!(check(&p, &[2]), Ok(()));
     assert_eq!(check(&p, &[]), Err(Violation::RuleViolated { rule: 0 }));
@@ -196,7 +187,10 @@ fn disjunction_is_minimal() {
         other => panic!("{other:?}"),
     }
     // a | b.  a :- b.  The reduct's models inside {a, b} are {a} and {a, b}: only {a} is stable.
-    let p = program(2, vec![rule(&[1, 2], &[]), rule(&[1], &[2])]);
+    let p = program(
+        2,
+        vec![Rule::normal(&[1, 2], &[]), Rule::normal(&[1], &[2])],
+    );
     assert_eq!(check(&p, &[1]), Ok(()));
     assert_eq!(
         check(&p, &[1, 2]),
@@ -210,7 +204,11 @@ fn disjunction_with_head_cycle() {
     // (the program is not head-cycle-free, so shifting would wrongly reject it).
     let p = program(
         2,
-        vec![rule(&[1, 2], &[]), rule(&[1], &[2]), rule(&[2], &[1])],
+        vec![
+            Rule::normal(&[1, 2], &[]),
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[1]),
+        ],
     );
     assert_eq!(check(&p, &[1, 2]), Ok(()));
     assert_eq!(check(&p, &[1]), Err(Violation::RuleViolated { rule: 2 }));
@@ -219,7 +217,10 @@ fn disjunction_with_head_cycle() {
 #[test]
 fn disjunction_with_negation_in_the_body() {
     // a | b :- not c.  c :- not a, not b.   (a = 1, b = 2, c = 3)
-    let p = program(3, vec![rule(&[1, 2], &[-3]), rule(&[3], &[-1, -2])]);
+    let p = program(
+        3,
+        vec![Rule::normal(&[1, 2], &[-3]), Rule::normal(&[3], &[-1, -2])],
+    );
     // {c}: the first rule is removed by the reduct (c is true); c. remains.
     assert_eq!(check(&p, &[3]), Ok(()));
     assert_eq!(check(&p, &[1]), Ok(()));
@@ -264,7 +265,7 @@ fn externals_with_rules_are_defined_by_their_rules() {
         ExternalValue::True,
         ExternalValue::False,
     ] {
-        let mut p = program(2, vec![rule(&[1], &[2]), choice(&[2], &[])]);
+        let mut p = program(2, vec![Rule::normal(&[1], &[2]), Rule::choice(&[2], &[])]);
         p.externals.push((1, value));
         assert_eq!(check(&p, &[]), Ok(()), "{value:?}");
         assert_eq!(check(&p, &[1, 2]), Ok(()), "{value:?}");
@@ -278,7 +279,7 @@ fn externals_with_rules_are_defined_by_their_rules() {
 
 #[test]
 fn assumptions_and_unknown_atoms() {
-    let mut p = program(2, vec![choice(&[1, 2], &[])]);
+    let mut p = program(2, vec![Rule::choice(&[1, 2], &[])]);
     p.assumptions = vec![1, -2];
     assert_eq!(check(&p, &[1]), Ok(()));
     assert_eq!(check(&p, &[1, 2]), Err(Violation::Assumption(-2)));
@@ -292,10 +293,14 @@ fn atoms_above_num_atoms_do_not_panic() {
     // false. a :- not x5.  x5 :- x4.  x5 | x3 :- a.  with a = 1: {a} violates the last rule.
     let p = program(
         1,
-        vec![rule(&[1], &[-5]), rule(&[5], &[4]), rule(&[5, 3], &[1])],
+        vec![
+            Rule::normal(&[1], &[-5]),
+            Rule::normal(&[5], &[4]),
+            Rule::normal(&[5, 3], &[1]),
+        ],
     );
     assert_eq!(check(&p, &[1]), Err(Violation::RuleViolated { rule: 2 }));
-    let mut p = program(1, vec![rule(&[1], &[-5])]);
+    let mut p = program(1, vec![Rule::normal(&[1], &[-5])]);
     p.externals.push((7, ExternalValue::True));
     assert!(check(&p, &[1]).is_err());
 }
@@ -303,7 +308,7 @@ fn atoms_above_num_atoms_do_not_panic() {
 #[test]
 fn edges_must_be_acyclic() {
     // {a; b}.  #edge (1,2) : a.  #edge (2,1) : b.  Both edges together form a cycle.
-    let mut p = program(2, vec![choice(&[1, 2], &[])]);
+    let mut p = program(2, vec![Rule::choice(&[1, 2], &[])]);
     p.edges.push(Edge {
         from: 1,
         to: 2,

@@ -5,22 +5,6 @@ use lucent::ground::program::{
 };
 use lucent::solve::{Config, EnumMode, OptMode, Outcome, Solver};
 
-fn rule(head: &[u32], body: &[i32]) -> Rule {
-    Rule {
-        head_kind: HeadKind::Disjunction,
-        head: head.to_vec(),
-        body: Body::Normal(body.to_vec()),
-    }
-}
-
-fn choice(head: &[u32], body: &[i32]) -> Rule {
-    Rule {
-        head_kind: HeadKind::Choice,
-        head: head.to_vec(),
-        body: Body::Normal(body.to_vec()),
-    }
-}
-
 /// A program over atoms named a, b, c, ... (atom i is the i-th letter), all shown.
 fn program(n: u32, rules: Vec<Rule>) -> GroundProgram {
     let mut p = GroundProgram::new();
@@ -68,7 +52,10 @@ fn sets(x: &[&[&str]]) -> Vec<Vec<String>> {
 #[test]
 fn even_negative_cycle_has_two_answer_sets() {
     // a :- not b. b :- not a.  Answer sets {a} and {b}.
-    let p = program(2, vec![rule(&[1], &[-2]), rule(&[2], &[-1])]);
+    let p = program(
+        2,
+        vec![Rule::normal(&[1], &[-2]), Rule::normal(&[2], &[-1])],
+    );
     assert_eq!(
         answer_sets(&p, Config::all_models()),
         sets(&[&["a"], &["b"]])
@@ -78,7 +65,7 @@ fn even_negative_cycle_has_two_answer_sets() {
 #[test]
 fn odd_negative_loop_is_unsatisfiable() {
     // a :- not a.  No answer set: {} violates the rule, {a} is unsupported in the reduct.
-    let p = program(1, vec![rule(&[1], &[-1])]);
+    let p = program(1, vec![Rule::normal(&[1], &[-1])]);
     let r = Solver::new(&p, Config::all_models()).solve();
     assert_eq!(r.outcome, Outcome::Unsatisfiable);
     assert!(r.exhausted);
@@ -89,7 +76,11 @@ fn positive_loop_is_unfounded() {
     // a :- b. b :- a. {c}.  The loop {a,b} has no external support: answer sets {} and {c}.
     let p = program(
         3,
-        vec![rule(&[1], &[2]), rule(&[2], &[1]), choice(&[3], &[])],
+        vec![
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[1]),
+            Rule::choice(&[3], &[]),
+        ],
     );
     assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&[], &["c"]]));
 }
@@ -100,10 +91,10 @@ fn loop_with_external_support() {
     let p = program(
         3,
         vec![
-            rule(&[1], &[2]),
-            rule(&[2], &[1]),
-            rule(&[1], &[3]),
-            choice(&[3], &[]),
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[1]),
+            Rule::normal(&[1], &[3]),
+            Rule::choice(&[3], &[]),
         ],
     );
     assert_eq!(
@@ -115,7 +106,7 @@ fn loop_with_external_support() {
 #[test]
 fn disjunction_is_minimal() {
     // a | b.  Minimal models {a} and {b}; {a,b} is not minimal.
-    let p = program(2, vec![rule(&[1, 2], &[])]);
+    let p = program(2, vec![Rule::normal(&[1, 2], &[])]);
     assert_eq!(
         answer_sets(&p, Config::all_models()),
         sets(&[&["a"], &["b"]])
@@ -128,7 +119,11 @@ fn head_cycle_disjunction_needs_minimality_check() {
     // (the reduct is the program itself, whose only model is {a,b}).
     let p = program(
         2,
-        vec![rule(&[1, 2], &[]), rule(&[1], &[2]), rule(&[2], &[1])],
+        vec![
+            Rule::normal(&[1, 2], &[]),
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[1]),
+        ],
     );
     assert_eq!(answer_sets(&p, Config::all_models()), sets(&[&["a", "b"]]));
 }
@@ -139,7 +134,11 @@ fn non_hcf_with_unminimal_candidate() {
     // reduct (the program itself), so both are answer sets.
     let p = program(
         3,
-        vec![rule(&[1, 2, 3], &[]), rule(&[1], &[2]), rule(&[2], &[1])],
+        vec![
+            Rule::normal(&[1, 2, 3], &[]),
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[1]),
+        ],
     );
     assert_eq!(
         answer_sets(&p, Config::all_models()),
@@ -150,7 +149,7 @@ fn non_hcf_with_unminimal_candidate() {
 #[test]
 fn cardinality_body() {
     // {a; b; c}. d :- 2 {a; b; c}. :- not d.  Answer sets: the subsets of size >= 2, plus d.
-    let mut rules = vec![choice(&[1, 2, 3], &[])];
+    let mut rules = vec![Rule::choice(&[1, 2, 3], &[])];
     rules.push(Rule {
         head_kind: HeadKind::Disjunction,
         head: vec![4],
@@ -159,7 +158,7 @@ fn cardinality_body() {
             lits: vec![(1, 1), (2, 1), (3, 1)],
         },
     });
-    rules.push(rule(&[], &[-4]));
+    rules.push(Rule::normal(&[], &[-4]));
     let p = program(4, rules);
     assert_eq!(
         answer_sets(&p, Config::all_models()),
@@ -175,7 +174,10 @@ fn cardinality_body() {
 #[test]
 fn minimize_finds_optimum() {
     // {a; b}. :- not a, not b. #minimize {2: a; 1: b}.  Optimum {b} with cost 1.
-    let mut p = program(2, vec![choice(&[1, 2], &[]), rule(&[], &[-1, -2])]);
+    let mut p = program(
+        2,
+        vec![Rule::choice(&[1, 2], &[]), Rule::normal(&[], &[-1, -2])],
+    );
     p.minimize.push(Minimize {
         priority: 0,
         lits: vec![(1, 2), (2, 1)],
@@ -191,7 +193,13 @@ fn lexicographic_priorities_and_opt_n() {
     // {a; b; c}. :- not a, not b, not c.
     // #minimize {1@2: a}. #minimize {1@1: b; 1@1: c}.  Priority 2 forces a false; then one
     // of b, c must hold with cost 1 at priority 1: optimal models {b} and {c}, costs [0, 1].
-    let mut p = program(3, vec![choice(&[1, 2, 3], &[]), rule(&[], &[-1, -2, -3])]);
+    let mut p = program(
+        3,
+        vec![
+            Rule::choice(&[1, 2, 3], &[]),
+            Rule::normal(&[], &[-1, -2, -3]),
+        ],
+    );
     p.minimize.push(Minimize {
         priority: 2,
         lits: vec![(1, 1)],
@@ -225,7 +233,7 @@ fn lexicographic_priorities_and_opt_n() {
 #[test]
 fn opt_mode_enum_with_bound() {
     // {a; b}. #minimize {1: a; 1: b}.  With bound 1: the models {}, {a}, {b}.
-    let mut p = program(2, vec![choice(&[1, 2], &[])]);
+    let mut p = program(2, vec![Rule::choice(&[1, 2], &[])]);
     p.minimize.push(Minimize {
         priority: 0,
         lits: vec![(1, 1), (2, 1)],
@@ -243,7 +251,11 @@ fn brave_and_cautious() {
     // {a; b}. c. :- a, b.  Answer sets {c}, {a,c}, {b,c}: brave {a,b,c}, cautious {c}.
     let p = program(
         3,
-        vec![choice(&[1, 2], &[]), rule(&[3], &[]), rule(&[], &[1, 2])],
+        vec![
+            Rule::choice(&[1, 2], &[]),
+            Rule::normal(&[3], &[]),
+            Rule::normal(&[], &[1, 2]),
+        ],
     );
     let brave = Config {
         models: 0,
@@ -266,7 +278,7 @@ fn brave_and_cautious() {
 #[test]
 fn projection_removes_duplicates() {
     // {a; b}. with only a shown and --project: answer sets project to {} and {a} once each.
-    let mut p = program(2, vec![choice(&[1, 2], &[])]);
+    let mut p = program(2, vec![Rule::choice(&[1, 2], &[])]);
     p.outputs.truncate(1);
     let cfg = Config {
         models: 0,
@@ -281,7 +293,7 @@ fn projection_removes_duplicates() {
 #[test]
 fn assumptions_and_externals() {
     // #external e. a :- e. b :- not e.  Free external: {b} and {a,e}; assuming -e: {b}.
-    let mut p = program(3, vec![rule(&[1], &[3]), rule(&[2], &[-3])]);
+    let mut p = program(3, vec![Rule::normal(&[1], &[3]), Rule::normal(&[2], &[-3])]);
     p.outputs[2].symbol = "e".into();
     p.externals.push((3, ExternalValue::Free));
     assert_eq!(
@@ -299,17 +311,17 @@ fn assumptions_and_externals() {
 #[test]
 fn incremental_constraint_keeps_solver() {
     // {a; b}. then add :- a. : models go from 4 to 2.
-    let p = program(2, vec![choice(&[1, 2], &[])]);
+    let p = program(2, vec![Rule::choice(&[1, 2], &[])]);
     let mut s = Solver::new(&p, Config::all_models());
     assert_eq!(s.solve().models.len(), 4);
-    s.add_rules(&[rule(&[], &[1])]).unwrap();
+    s.add_rules(&[Rule::normal(&[], &[1])]).unwrap();
     assert_eq!(s.solve().models.len(), 2);
 }
 
 #[test]
 fn incremental_rules_for_existing_atoms() {
     // a :- not b.  then add b.  Answer sets {a}, then {b}.
-    let p = program(2, vec![rule(&[1], &[-2])]);
+    let p = program(2, vec![Rule::normal(&[1], &[-2])]);
     let cfg = Config {
         models: 0,
         incremental: true,
@@ -317,19 +329,26 @@ fn incremental_rules_for_existing_atoms() {
     };
     let mut s = Solver::new(&p, cfg);
     assert_eq!(s.solve().models[0].symbols, vec!["a"]);
-    s.add_rules(&[rule(&[2], &[])]).unwrap();
+    s.add_rules(&[Rule::normal(&[2], &[])]).unwrap();
     let r = s.solve();
     assert_eq!(r.models.len(), 1);
     assert_eq!(r.models[0].symbols, vec!["b"]);
     // Without the incremental flag, the same change is refused.
     let mut s = Solver::new(&p, Config::all_models());
-    assert!(s.add_rules(&[rule(&[2], &[])]).is_err());
+    assert!(s.add_rules(&[Rule::normal(&[2], &[])]).is_err());
 }
 
 #[test]
 fn support_pointers_are_well_founded() {
     // c. b :- c. a :- b.  Supports: a by rule 2, b by rule 1, c by rule 0.
-    let p = program(3, vec![rule(&[3], &[]), rule(&[2], &[3]), rule(&[1], &[2])]);
+    let p = program(
+        3,
+        vec![
+            Rule::normal(&[3], &[]),
+            Rule::normal(&[2], &[3]),
+            Rule::normal(&[1], &[2]),
+        ],
+    );
     let r = Solver::new(&p, Config::default()).solve();
     let m = &r.models[0];
     assert_eq!(m.atoms, vec![1, 2, 3]);
@@ -342,10 +361,10 @@ fn portfolio_gives_the_same_answer_sets() {
     let p = program(
         3,
         vec![
-            rule(&[1], &[2]),
-            rule(&[2], &[1]),
-            rule(&[1], &[3]),
-            choice(&[3], &[]),
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[1]),
+            Rule::normal(&[1], &[3]),
+            Rule::choice(&[3], &[]),
         ],
     );
     let cfg = Config {
@@ -365,17 +384,21 @@ fn cr_rules_are_applied_minimally() {
     // same atoms, so {b} is reported once with one of r1, r2 as its applied rule.
     let mut p = program(
         6,
-        vec![rule(&[1], &[-2]), rule(&[2], &[-1]), rule(&[], &[1])],
+        vec![
+            Rule::normal(&[1], &[-2]),
+            Rule::normal(&[2], &[-1]),
+            Rule::normal(&[], &[1]),
+        ],
     );
     p.outputs.truncate(3);
     // Atoms 4, 5, 6 are the application atoms of r1, r2, r3; atom 3 is s.
     for appl in [4, 5, 6] {
-        p.rules.push(choice(&[appl], &[]));
+        p.rules.push(Rule::choice(&[appl], &[]));
     }
-    p.rules.push(rule(&[2], &[4]));
-    p.rules.push(rule(&[2], &[5]));
-    p.rules.push(rule(&[3], &[6]));
-    p.rules.push(rule(&[], &[2, -4, -5]));
+    p.rules.push(Rule::normal(&[2], &[4]));
+    p.rules.push(Rule::normal(&[2], &[5]));
+    p.rules.push(Rule::normal(&[3], &[6]));
+    p.rules.push(Rule::normal(&[], &[2, -4, -5]));
     for (appl, label) in [(4, "r1"), (5, "r2"), (6, "r3")] {
         p.cr_rules.push(lucent::ground::program::CrRule {
             appl,

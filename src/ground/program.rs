@@ -53,6 +53,26 @@ pub struct Rule {
     pub body: Body,
 }
 
+impl Rule {
+    /// `head_1 | ... | head_n :- body.` (a constraint when `head` is empty).
+    pub fn normal(head: &[Atom], body: &[Lit]) -> Rule {
+        Rule {
+            head_kind: HeadKind::Disjunction,
+            head: head.to_vec(),
+            body: Body::Normal(body.to_vec()),
+        }
+    }
+
+    /// `{head_1; ...; head_n} :- body.`
+    pub fn choice(head: &[Atom], body: &[Lit]) -> Rule {
+        Rule {
+            head_kind: HeadKind::Choice,
+            head: head.to_vec(),
+            body: Body::Normal(body.to_vec()),
+        }
+    }
+}
+
 /// A minimize statement (aspif statement 2): minimize the sum of weights of true literals.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Minimize {

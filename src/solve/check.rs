@@ -481,20 +481,12 @@ mod tests {
     use super::*;
     use crate::ground::program::Rule;
 
-    fn rule(head: &[Atom], body: &[Lit]) -> Rule {
-        Rule {
-            head_kind: HeadKind::Disjunction,
-            head: head.to_vec(),
-            body: Body::Normal(body.to_vec()),
-        }
-    }
-
     #[test]
     fn positive_loop_is_unsupported() {
         // a :- b. b :- a.  The only stable model is {}; {a, b} is a model but unfounded.
         let p = GroundProgram {
             num_atoms: 2,
-            rules: vec![rule(&[1], &[2]), rule(&[2], &[1])],
+            rules: vec![Rule::normal(&[1], &[2]), Rule::normal(&[2], &[1])],
             ..Default::default()
         };
         assert_eq!(check(&p, &[]), Ok(()));
