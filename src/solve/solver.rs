@@ -117,6 +117,14 @@ impl Solver {
         };
         let mut prog = prog.clone();
         prog.num_atoms = max_atom(&prog);
+        // As clasp (and `check::external_values`): an external statement on an atom that has
+        // a rule in the same program is ignored; the rules define the atom.
+        let defined: std::collections::HashSet<u32> = prog
+            .rules
+            .iter()
+            .flat_map(|r| r.head.iter().copied())
+            .collect();
+        prog.externals.retain(|(a, _)| !defined.contains(a));
         let mut tr;
         let mut step_guard = None;
         if config.incremental {
