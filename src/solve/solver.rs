@@ -102,6 +102,7 @@ impl Solver {
         engine.configure(config.var_decay, config.seed);
         engine.random_permille = config.random_freq_permille.min(1000);
         engine.default_phase = !config.default_phase_false;
+        engine.init_moms = config.init_moms;
         engine.restarts = match config.restarts {
             RestartPolicy::Luby(u) => Restarts::Luby {
                 unit: u.max(1),
