@@ -102,6 +102,7 @@ impl Solver {
         engine.configure(config.var_decay, config.seed);
         engine.random_permille = config.random_freq_permille.min(1000);
         engine.default_phase = !config.default_phase_false;
+        engine.init_moms = config.init_moms;
         engine.restarts = match config.restarts {
             RestartPolicy::Luby(u) => Restarts::Luby {
                 unit: u.max(1),
@@ -187,6 +188,7 @@ impl Solver {
                 engine.add_clause(&c);
             }
         }
+        out.loop_guard = Some(g);
         out.install_unfounded(prog, engine);
         *guard = Some(g);
         out
@@ -259,6 +261,7 @@ impl Solver {
             }
         }
         let prog = self.prog.clone();
+        self.tr.loop_guard = self.step_guard;
         self.tr.install_unfounded(&prog, &mut self.engine);
         Ok(())
     }
