@@ -1593,9 +1593,20 @@ impl<'a> Grounder<'a> {
             });
         }
         body.extend_from_slice(cond);
+        // Repeated body literals are left out, as gringo does (clasp 3.3.5 mishandles some).
+        let dedup = |v: &mut Vec<Lit>| {
+            let mut seen = Vec::with_capacity(v.len());
+            v.retain(|l| {
+                let new = !seen.contains(l);
+                seen.push(*l);
+                new
+            });
+        };
+        dedup(&mut body);
         self.add_rule(Rule::normal(&[e], &body), Origin::default);
         let mut guard = vec![e as Lit];
         guard.extend_from_slice(cond);
+        dedup(&mut guard);
         for &(sign, a) in lits {
             let mut b = guard.clone();
             match sign {
@@ -1603,12 +1614,15 @@ impl<'a> Grounder<'a> {
                     self.derive(a);
                     self.add_rule(Rule::normal(&[a], &b), Origin::default);
                 }
-                Sign::Not => {
-                    b.push(a as Lit);
-                    self.add_rule(Rule::normal(&[], &b), Origin::default);
-                }
-                Sign::NotNot => {
-                    b.push(-(a as Lit));
+                Sign::Not | Sign::NotNot => {
+                    let l = if sign == Sign::Not {
+                        a as Lit
+                    } else {
+                        -(a as Lit)
+                    };
+                    if !b.contains(&l) {
+                        b.push(l);
+                    }
                     self.add_rule(Rule::normal(&[], &b), Origin::default);
                 }
             }
