@@ -59,12 +59,15 @@ pub struct AtomInfo {
 }
 
 /// Index of a predicate's atoms on a set of bound argument positions.
-#[derive(Default)]
 struct Index {
+    /// The bound positions (bit `i` for argument `i`).
+    mask: u64,
     /// Atoms `[0, upto)` of the domain list are indexed.
     upto: usize,
-    /// Key: the values at the bound positions; value: domain positions, increasing.
-    map: HashMap<SmallVec<[SymId; 4]>, Vec<u32>>,
+    /// Key: the values at the bound positions; value: its group in `groups`.
+    map: HashMap<SmallVec<[SymId; 4]>, u32>,
+    /// Domain positions of each key, increasing (append-only).
+    groups: Vec<Vec<u32>>,
 }
 
 /// The atoms of one predicate.
@@ -72,8 +75,8 @@ struct Index {
 struct Domain {
     /// Atoms in derivation order.
     atoms: Vec<AtomId>,
-    /// Indexes by bound-position mask.
-    indexes: HashMap<u64, Index>,
+    /// Indexes, one per bound-position mask (few per predicate, found by linear search).
+    indexes: Vec<Index>,
     /// All rules that can derive the predicate have been grounded.
     complete: bool,
     /// Semi-naive: positions below `old` were seen by every rule in all combinations.
@@ -89,8 +92,19 @@ type Range = (u32, u32);
 enum Candidates {
     /// Every position in `[lo, hi)`.
     Range(u32, u32),
-    /// These positions.
-    List(SmallVec<[u32; 16]>),
+    /// At most one position.
+    One(Option<u32>),
+    /// `groups[group][lo..hi]` of the predicate's index number `index`.
+    Group {
+        /// Index number in the domain.
+        index: u32,
+        /// Group in the index.
+        group: u32,
+        /// First entry.
+        lo: u32,
+        /// One past the last entry.
+        hi: u32,
+    },
 }
 
 /// Grounding limits, as values.
@@ -111,8 +125,8 @@ pub struct Grounder<'a> {
     pub syms: Symbols,
     /// Atom table, index `id - 1`.
     pub atoms: Vec<AtomInfo>,
-    /// Atom of each predicate-atom symbol.
-    atom_map: HashMap<SymId, AtomId>,
+    /// Atom of each predicate-atom symbol, by symbol id (0: none).
+    sym_atom: Vec<AtomId>,
     /// Domains, by predicate.
     domains: Vec<Domain>,
     /// Ground rules over internal ids.
@@ -121,6 +135,8 @@ pub struct Grounder<'a> {
     pub origins: Vec<Origin>,
     /// Deduplication of `rules`.
     rule_set: HashTable<u32>,
+    /// Hash of each rule in `rules` (so that growing `rule_set` does not rehash rules).
+    rule_hashes: Vec<u64>,
     /// Hasher for `rule_set`.
     hasher: hashbrown::DefaultHashBuilder,
     /// Diagnostics.
@@ -216,11 +232,12 @@ impl<'a> Grounder<'a> {
         Grounder {
             syms,
             atoms: Vec::new(),
-            atom_map: HashMap::new(),
+            sym_atom: Vec::new(),
             domains,
             rules: Vec::new(),
             origins: Vec::new(),
             rule_set: HashTable::new(),
+            rule_hashes: Vec::new(),
             hasher: hashbrown::DefaultHashBuilder::default(),
             diags,
             sources,
@@ -286,7 +303,7 @@ impl<'a> Grounder<'a> {
 
     /// The atom of a predicate-atom symbol, created outside the domain if new.
     pub fn atom_of(&mut self, sym: SymId, pred: PredId) -> AtomId {
-        if let Some(&a) = self.atom_map.get(&sym) {
+        if let Some(a) = self.find_atom(sym) {
             return a;
         }
         self.atoms.push(AtomInfo {
@@ -297,13 +314,20 @@ impl<'a> Grounder<'a> {
             dom_pos: 0,
         });
         let id = self.atoms.len() as AtomId;
-        self.atom_map.insert(sym, id);
+        let i = sym.0 as usize;
+        if i >= self.sym_atom.len() {
+            self.sym_atom.resize((i + 1).max(self.syms.len()), 0);
+        }
+        self.sym_atom[i] = id;
         id
     }
 
     /// The atom of a symbol, if it exists.
     pub fn find_atom(&self, sym: SymId) -> Option<AtomId> {
-        self.atom_map.get(&sym).copied()
+        match self.sym_atom.get(sym.0 as usize) {
+            Some(&a) if a != 0 => Some(a),
+            _ => None,
+        }
     }
 
     fn info(&self, a: AtomId) -> &AtomInfo {
@@ -346,16 +370,13 @@ impl<'a> Grounder<'a> {
         }
         let idx = self.rules.len() as u32;
         self.rules.push(rule);
+        self.rule_hashes.push(hash);
         if self.provenance {
             self.origins.push(origin());
         }
-        let Grounder {
-            rule_set,
-            rules,
-            hasher,
-            ..
-        } = self;
-        rule_set.insert_unique(hash, idx, |&i| hasher.hash_one(&rules[i as usize]));
+        let hashes = &self.rule_hashes;
+        self.rule_set
+            .insert_unique(hash, idx, |&i| hashes[i as usize]);
         self.check_size();
         self.since_check += 1;
         if self.since_check >= 4096 {
@@ -413,19 +434,59 @@ impl<'a> Grounder<'a> {
             return Some(Candidates::Range(range.0, range.1));
         }
         if key.len() == atom.args.len() {
-            // Every argument is known: look the atom up directly.
-            let sym = self.syms.fun(atom.name, atom.neg, &key);
-            let mut list = SmallVec::new();
-            if let Some(a) = self.find_atom(sym) {
-                let info = self.info(a);
-                if info.in_domain && info.dom_pos >= range.0 && info.dom_pos < range.1 {
-                    list.push(info.dom_pos);
-                }
-            }
-            return Some(Candidates::List(list));
+            // Every argument is known: look the atom up directly (an atom whose symbol was
+            // never created does not exist).
+            let found = self
+                .syms
+                .find_fun(atom.name, atom.neg, &key)
+                .and_then(|sym| self.find_atom(sym))
+                .map(|a| *self.info(a))
+                .filter(|info| info.in_domain && info.dom_pos >= range.0 && info.dom_pos < range.1)
+                .map(|info| info.dom_pos);
+            return Some(Candidates::One(found));
         }
+        let slot = self.index(atom.pred, mask);
         let d = &mut self.domains[atom.pred as usize];
-        let idx = d.indexes.entry(mask).or_default();
+        let idx = &mut d.indexes[slot];
+        let Some(&group) = idx.map.get(&key) else {
+            return Some(Candidates::One(None));
+        };
+        let list = &idx.groups[group as usize];
+        let lo = if range.0 == 0 {
+            0
+        } else {
+            list.partition_point(|&p| p < range.0)
+        };
+        let hi = if range.1 as usize >= d.atoms.len() {
+            list.len()
+        } else {
+            list.partition_point(|&p| p < range.1)
+        };
+        Some(Candidates::Group {
+            index: slot as u32,
+            group,
+            lo: lo as u32,
+            hi: hi as u32,
+        })
+    }
+
+    /// The number of the index of `pred` on the positions of `mask`, created if needed and
+    /// extended to every atom of the domain.
+    fn index(&mut self, pred: PredId, mask: u64) -> usize {
+        let d = &mut self.domains[pred as usize];
+        let slot = match d.indexes.iter().position(|x| x.mask == mask) {
+            Some(i) => i,
+            None => {
+                d.indexes.push(Index {
+                    mask,
+                    upto: 0,
+                    map: HashMap::new(),
+                    groups: Vec::new(),
+                });
+                d.indexes.len() - 1
+            }
+        };
+        let idx = &mut d.indexes[slot];
         // Extend the index to the atoms derived since it was last used.
         while idx.upto < d.atoms.len() {
             let a = d.atoms[idx.upto];
@@ -437,21 +498,15 @@ impl<'a> Grounder<'a> {
                 .filter(|&i| i < 64 && mask & (1 << i) != 0)
                 .map(|i| args[i])
                 .collect();
-            idx.map.entry(k).or_default().push(idx.upto as u32);
+            let groups = &mut idx.groups;
+            let g = *idx.map.entry(k).or_insert_with(|| {
+                groups.push(Vec::new());
+                groups.len() as u32 - 1
+            });
+            idx.groups[g as usize].push(idx.upto as u32);
             idx.upto += 1;
         }
-        let list = match idx.map.get(&key) {
-            Some(l) => l,
-            None => return Some(Candidates::List(SmallVec::new())),
-        };
-        let start = list.partition_point(|&p| p < range.0);
-        Some(Candidates::List(
-            list[start..]
-                .iter()
-                .copied()
-                .take_while(|&p| p < range.1)
-                .collect(),
-        ))
+        slot
     }
 
     /// Grounds `lits[i..]` and calls `k` for every solution.
@@ -483,17 +538,21 @@ impl<'a> Grounder<'a> {
                 let Some(cands) = self.candidates(atom, &ctx.binding, range) else {
                     return;
                 };
-                let (list, lo, hi) = match cands {
-                    Candidates::Range(lo, hi) => (SmallVec::new(), lo, hi),
-                    Candidates::List(l) => {
-                        let n = l.len() as u32;
-                        (l, 0, n)
-                    }
+                let (lo, hi) = match cands {
+                    Candidates::Range(lo, hi) => (lo, hi),
+                    Candidates::One(None) => return,
+                    Candidates::One(Some(p)) => (p, p + 1),
+                    Candidates::Group { lo, hi, .. } => (lo, hi),
                 };
-                let ranged = list.is_empty();
                 for j in lo..hi {
-                    let pos = if ranged { j } else { list[j as usize] };
-                    let a = self.domains[atom.pred as usize].atoms[pos as usize];
+                    let d = &self.domains[atom.pred as usize];
+                    let pos = match cands {
+                        Candidates::Group { index, group, .. } => {
+                            d.indexes[index as usize].groups[group as usize][j as usize]
+                        }
+                        _ => j,
+                    };
+                    let a = d.atoms[pos as usize];
                     let sym = self.info(a).sym.expect("predicate atom has a symbol");
                     let mut ok = true;
                     for (j, t) in atom.args.iter().enumerate() {
@@ -1178,9 +1237,150 @@ impl<'a> Grounder<'a> {
             binding: Binding::new(stmt.num_vars as usize),
             body: Vec::new(),
         };
-        self.join(&mut ctx, &stmt.body, 0, ranges, &mut |g, ctx| {
-            g.emit(stmt, ctx)
-        });
+        let order = self.join_order(stmt, ranges);
+        if order.iter().enumerate().all(|(i, &j)| i == j) {
+            self.join(&mut ctx, &stmt.body, 0, ranges, &mut |g, ctx| {
+                g.emit(stmt, ctx)
+            });
+            return;
+        }
+        let body: Vec<NLit> = order.iter().map(|&j| stmt.body[j].clone()).collect();
+        let ranges: Vec<Option<Range>> = order
+            .iter()
+            .map(|&j| ranges.get(j).copied().flatten())
+            .collect();
+        self.join(&mut ctx, &body, 0, &ranges, &mut |g, ctx| g.emit(stmt, ctx));
+    }
+
+    /// The order in which to join the body literals of `stmt`, given the ranges of its
+    /// semi-naive literals: greedily, the evaluable literal expected to yield the fewest
+    /// matches under the current domains (gringo orders bodies by such estimates too).
+    /// Tests and bound comparisons come first, then assignments, then positive atoms by
+    /// estimated matches: the domain's size in range divided by the number of distinct values
+    /// on the bound positions (read from the index on those positions).
+    ///
+    /// Evaluability follows the planner's rules (`rewrite::plan`); an aggregate keeps every
+    /// literal the planner put before it in front of it (so its global variables are bound as
+    /// planned), and the variable an aggregate binds is bound by it alone.
+    fn join_order(&mut self, stmt: &NStmt, ranges: &[Option<Range>]) -> Vec<usize> {
+        let lits = &stmt.body;
+        let n = lits.len();
+        if n <= 1 {
+            return (0..n).collect();
+        }
+        let mut bound = vec![false; stmt.num_vars as usize];
+        // Variables bound by aggregates (as planned).
+        let mut reserved = vec![false; stmt.num_vars as usize];
+        for l in lits {
+            if let NLit::Agg(a) = l {
+                if let Some(NTerm::Var(v)) = a.binder.map(|i| &a.guards[i].1) {
+                    reserved[*v as usize] = true;
+                }
+            }
+        }
+        let mut placed = vec![false; n];
+        let mut order = Vec::with_capacity(n);
+        let mut newly: Vec<u32> = Vec::new();
+        while order.len() < n {
+            let mut best: Option<(f64, usize)> = None;
+            for (i, l) in lits.iter().enumerate() {
+                if placed[i] {
+                    continue;
+                }
+                newly.clear();
+                let cost = match l {
+                    NLit::Bool(_) => Some(0.0),
+                    NLit::Pred { sign, atom } if *sign != Sign::Positive => {
+                        atom.args.iter().all(|t| t.bound_by(&bound)).then_some(0.0)
+                    }
+                    NLit::Pred { atom, .. } => {
+                        if atom.args.iter().all(|t| t.binds(&bound, &mut newly)) {
+                            let range =
+                                self.lookup_range(atom.pred, ranges.get(i).copied().flatten());
+                            let size = range.1.saturating_sub(range.0) as f64;
+                            let mut mask = 0u64;
+                            for (k, t) in atom.args.iter().enumerate() {
+                                if k < 64 && t.bound_by(&bound) {
+                                    mask |= 1 << k;
+                                }
+                            }
+                            Some(if newly.is_empty() {
+                                size.min(0.5)
+                            } else if mask == 0 {
+                                size
+                            } else {
+                                let slot = self.index(atom.pred, mask);
+                                let keys = self.domains[atom.pred as usize].indexes[slot].map.len();
+                                size / keys.max(1) as f64
+                            })
+                        } else {
+                            None
+                        }
+                    }
+                    NLit::Cmp { op, lhs, rhs } => {
+                        let (lb, rb) = (lhs.bound_by(&bound), rhs.bound_by(&bound));
+                        if lb && rb {
+                            Some(0.0)
+                        } else if *op == CmpOp::Eq
+                            && ((rb && lhs.binds(&bound, &mut newly))
+                                || (lb && rhs.binds(&bound, &mut newly)))
+                        {
+                            Some(1.0)
+                        } else {
+                            None
+                        }
+                    }
+                    NLit::Interval { pat, lo, hi } => {
+                        if lo.bound_by(&bound)
+                            && hi.bound_by(&bound)
+                            && pat.binds(&bound, &mut newly)
+                        {
+                            Some(match (lo, hi) {
+                                (NTerm::Sym(a), NTerm::Sym(b)) => {
+                                    match (self.syms.num(*a), self.syms.num(*b)) {
+                                        (Some(a), Some(b)) => (b as f64 - a as f64 + 1.0).max(0.0),
+                                        _ => 0.0,
+                                    }
+                                }
+                                _ => 100.0,
+                            })
+                        } else {
+                            None
+                        }
+                    }
+                    NLit::Agg(a) => {
+                        if placed[..i].iter().all(|&p| p) {
+                            if let Some(NTerm::Var(v)) = a.binder.map(|k| &a.guards[k].1) {
+                                newly.push(*v);
+                            }
+                            Some(1.5)
+                        } else {
+                            None
+                        }
+                    }
+                };
+                let Some(cost) = cost else { continue };
+                if !matches!(l, NLit::Agg(_)) && newly.iter().any(|&v| reserved[v as usize]) {
+                    continue;
+                }
+                if best.is_none_or(|(c, _)| cost < c) {
+                    best = Some((cost, i));
+                }
+            }
+            let Some((_, i)) = best else {
+                // Not expected (the planned order is evaluable): keep the rest as planned.
+                order.extend((0..n).filter(|&j| !placed[j]));
+                return order;
+            };
+            placed[i] = true;
+            order.push(i);
+            newly.clear();
+            lit_binds(&lits[i], &bound, &mut newly);
+            for &v in &newly {
+                bound[v as usize] = true;
+            }
+        }
+        order
     }
 
     /// Produces the ground statement for one solution of the body.
@@ -1786,12 +1986,10 @@ impl<'a> Grounder<'a> {
 
     fn forget_rules_from(&mut self, start: usize) {
         while self.rules.len() > start {
-            let r = self.rules.pop().expect("len > start");
+            self.rules.pop().expect("len > start");
+            let hash = self.rule_hashes.pop().expect("a hash per rule");
             let idx = self.rules.len() as u32;
-            if let Ok(e) = self
-                .rule_set
-                .find_entry(self.hasher.hash_one(&r), |&i| i == idx)
-            {
+            if let Ok(e) = self.rule_set.find_entry(hash, |&i| i == idx) {
                 e.remove();
             }
             if self.provenance {
@@ -1966,6 +2164,38 @@ fn conj(a: Truth, b: Truth) -> Truth {
             x.extend(y);
             Truth::Lits(x)
         }
+    }
+}
+
+/// Adds the variables that evaluating `l` with `bound` known binds to `out`.
+fn lit_binds(l: &NLit, bound: &[bool], out: &mut Vec<u32>) {
+    match l {
+        NLit::Pred {
+            sign: Sign::Positive,
+            atom,
+        } => {
+            for t in &atom.args {
+                t.binds(bound, out);
+            }
+        }
+        NLit::Cmp { lhs, rhs, .. } => {
+            if lhs.bound_by(bound) {
+                rhs.binds(bound, out);
+            } else {
+                lhs.binds(bound, out);
+            }
+        }
+        NLit::Interval { pat, .. } => {
+            pat.binds(bound, out);
+        }
+        NLit::Agg(a) => {
+            if let Some(NTerm::Var(v)) = a.binder.map(|k| &a.guards[k].1) {
+                if !bound[*v as usize] && !out.contains(v) {
+                    out.push(*v);
+                }
+            }
+        }
+        NLit::Pred { .. } | NLit::Bool(_) => {}
     }
 }
 
