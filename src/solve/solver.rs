@@ -195,6 +195,7 @@ impl Solver {
                 engine.add_clause(&c);
             }
         }
+        out.loop_guard = Some(g);
         out.install_unfounded(prog, engine);
         *guard = Some(g);
         out
@@ -267,6 +268,7 @@ impl Solver {
             }
         }
         let prog = self.prog.clone();
+        self.tr.loop_guard = self.step_guard;
         self.tr.install_unfounded(&prog, &mut self.engine);
         Ok(())
     }
