@@ -641,16 +641,9 @@ impl<'a> Rewriter<'a> {
     /// Compiles a pool-free term; intervals add binder literals to `extra`.
     fn term(&mut self, t: &ast::Term, vars: &mut Vars, extra: &mut Vec<NLit>) -> Option<NTerm> {
         Some(match &t.kind {
-            TermKind::Integer(n) => match i32::try_from(*n) {
-                Ok(n) => NTerm::Sym(self.syms.int(n)),
-                Err(_) => {
-                    self.diags.push(
-                        Diagnostic::error(t.span, "integer out of range (32 bits)")
-                            .with_snippet(self.snippet(t.span)),
-                    );
-                    return None;
-                }
-            },
+            // clingo reads an integer literal modulo 2^32 (`2147483648` is `-2147483648`,
+            // `0x80000000` too), as its arithmetic wraps: the truncating cast does the same.
+            TermKind::Integer(n) => NTerm::Sym(self.syms.int(*n as i32)),
             TermKind::String(s) => NTerm::Sym(self.syms.string(s)),
             TermKind::Constant(c) => match self.consts.get(c) {
                 Some(&v) => NTerm::Sym(v),
