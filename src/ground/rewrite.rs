@@ -1052,19 +1052,7 @@ impl<'a> Rewriter<'a> {
                 overrides.insert(name.clone(), v);
             }
         }
-        for st in &program.statements {
-            if let ast::StatementKind::Const(c) = &st.kind {
-                if c.kind == ast::ConstKind::Default && overrides.contains_key(&c.name) {
-                    continue;
-                }
-                if self.consts.contains_key(&c.name) && c.kind == ast::ConstKind::Default {
-                    continue;
-                }
-                if let Some(v) = self.eval_ground(&c.value) {
-                    self.consts.insert(c.name.clone(), v);
-                }
-            }
-        }
+        self.const_definitions(program, &overrides);
         for (k, v) in overrides {
             self.consts.entry(k).or_insert(v);
         }
@@ -1096,6 +1084,110 @@ impl<'a> Rewriter<'a> {
                 continue;
             }
             self.statement(i as u32, st);
+        }
+    }
+
+    /// Evaluates the `#const` definitions not overridden by `-c`, each after the constants its
+    /// value names (`#const a=b. #const b=1.` gives `a` the value 1, as gringo does). A second
+    /// definition of a name is gringo's `redefinition of constant` error (the first one
+    /// stays); definitions naming each other in a cycle are a `cyclic constant definition`
+    /// error and stay unevaluated. A definition naming itself (`#const a=a.`) is no cycle: the
+    /// name stays a symbol.
+    fn const_definitions(&mut self, program: &ast::Program, overrides: &HashMap<String, SymId>) {
+        // The definitions in force, in file order: (statement span, definition).
+        let mut defs: Vec<(Span, &ast::ConstDef)> = Vec::new();
+        for st in &program.statements {
+            let ast::StatementKind::Const(c) = &st.kind else {
+                continue;
+            };
+            if c.kind == ast::ConstKind::Default && overrides.contains_key(&c.name) {
+                continue;
+            }
+            if let Some(&(first, _)) = defs.iter().find(|(_, d)| d.name == c.name) {
+                self.diags.push(
+                    Diagnostic::error(st.span, "redefinition of constant")
+                        .with_snippet(self.snippet(st.span))
+                        .with_note(Some(first), "constant also defined here"),
+                );
+                continue;
+            }
+            defs.push((st.span, c));
+        }
+        // deps[i]: the definitions whose names definition i's value mentions.
+        let deps: Vec<Vec<usize>> = defs
+            .iter()
+            .enumerate()
+            .map(|(i, (_, d))| {
+                let mut names = Vec::new();
+                const_names(&d.value, &mut names);
+                let mut out: Vec<usize> = names
+                    .iter()
+                    .filter_map(|n| defs.iter().position(|(_, e)| e.name == *n))
+                    .filter(|&j| j != i)
+                    .collect();
+                out.sort_unstable();
+                out.dedup();
+                out
+            })
+            .collect();
+        let mut done = vec![false; defs.len()];
+        loop {
+            let mut progress = false;
+            for i in 0..defs.len() {
+                if done[i] || deps[i].iter().any(|&j| !done[j]) {
+                    continue;
+                }
+                done[i] = true;
+                progress = true;
+                if let Some(v) = self.eval_ground(&defs[i].1.value) {
+                    self.consts.insert(defs[i].1.name.clone(), v);
+                }
+            }
+            if !progress {
+                break;
+            }
+        }
+        // What is left lies on a cycle or depends on one; report each cycle once, at its first
+        // definition, with the others as notes (last first, as gringo lists them).
+        let left: Vec<usize> = (0..defs.len()).filter(|&i| !done[i]).collect();
+        let reach = |from: usize| -> Vec<bool> {
+            let mut seen = vec![false; defs.len()];
+            let mut stack = vec![from];
+            while let Some(k) = stack.pop() {
+                for &j in &deps[k] {
+                    if !seen[j] {
+                        seen[j] = true;
+                        stack.push(j);
+                    }
+                }
+            }
+            seen
+        };
+        let reaches: Vec<Vec<bool>> = (0..defs.len())
+            .map(|i| if done[i] { Vec::new() } else { reach(i) })
+            .collect();
+        let mut reported = vec![false; defs.len()];
+        for &i in &left {
+            if reported[i] || !reaches[i][i] {
+                continue;
+            }
+            let cycle: Vec<usize> = left
+                .iter()
+                .copied()
+                .filter(|&j| reaches[i][j] && reaches[j][i])
+                .collect();
+            let mut d = Diagnostic::error(defs[i].0, "cyclic constant definition")
+                .with_snippet(self.snippet(defs[i].0));
+            for &j in cycle.iter().rev().filter(|&&j| j != i) {
+                d = d.with_note(
+                    Some(defs[j].0),
+                    format!("cycle involves definition:\n  {}", self.snippet(defs[j].0)),
+                );
+            }
+            for j in cycle {
+                reported[j] = true;
+            }
+            self.diags.push(d);
         }
     }
 
@@ -1685,6 +1777,31 @@ impl<'a> Rewriter<'a> {
             var_names,
             globals,
         });
+    }
+}
+
+/// The constant names (candidates for `#const` values) in a term.
+fn const_names<'t>(t: &'t ast::Term, out: &mut Vec<&'t str>) {
+    match &t.kind {
+        TermKind::Constant(c) => out.push(c),
+        TermKind::Function { args, .. } => args.iter().flatten().for_each(|a| const_names(a, out)),
+        TermKind::ScriptCall { args, .. } => args.iter().for_each(|a| const_names(a, out)),
+        TermKind::Pool(ts) => ts.iter().for_each(|a| const_names(a, out)),
+        TermKind::Unary { arg, .. } | TermKind::Paren(arg) => const_names(arg, out),
+        TermKind::Binary { lhs, rhs, .. } => {
+            const_names(lhs, out);
+            const_names(rhs, out);
+        }
+        TermKind::Interval { lo, hi } => {
+            const_names(lo, out);
+            const_names(hi, out);
+        }
+        TermKind::Integer(_)
+        | TermKind::String(_)
+        | TermKind::Variable(_)
+        | TermKind::Anonymous
+        | TermKind::Infimum
+        | TermKind::Supremum => {}
     }
 }
 
