@@ -70,3 +70,10 @@ fn constants_in_any_order_and_self_reference() {
     // `#const a=b. #const b=1.` gives a=1; `#const s=s.` leaves the name (clingo 5.8.3).
     assert_eq!(check("#const a=b.\n#const b=1.\n#const s=s.\np(a,s)."), "");
 }
+
+#[test]
+fn undefined_tuple_in_head_aggregate() {
+    // clingo 5.8.3 warns about the same two terms, printed as `(X+0)` (its own weight check)
+    // and `(X+1)`, and locates an operation at its first operand.
+    insta::assert_snapshot!(check("p(bot).\n#sum{X:q(X):p(X)}.\n#count{X+1:q(X):p(X)}."));
+}

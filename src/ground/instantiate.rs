@@ -1292,22 +1292,30 @@ impl<'a> Grounder<'a> {
         match &stmt.head {
             NHead::None => {}
             NHead::Disj(es) | NHead::Choice(es) => {
+                // An undefined head atom (`p(a+0)`) drops its element from a choice, and the
+                // whole rule from a disjunction, conditional elements included (clingo 5.8).
                 for e in es {
                     if e.cond.is_empty() {
-                        let Some(s) = self.atom_sym(&e.atom, &ctx.binding) else {
-                            return;
-                        };
-                        head.push(self.atom_of(s, e.atom.pred));
+                        match self.atom_sym(&e.atom, &ctx.binding) {
+                            Some(s) => head.push(self.atom_of(s, e.atom.pred)),
+                            None if is_choice => {}
+                            None => return,
+                        }
                         continue;
                     }
                     let blen = ctx.body.len();
                     let mut found: Vec<(SymId, Vec<Lit>)> = Vec::new();
-                    self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
-                        if let Some(s) = g.atom_sym(&e.atom, &ctx.binding) {
-                            found.push((s, ctx.body[blen..].to_vec()));
-                        }
+                    let mut undefined = false;
+                    self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| match g
+                        .atom_sym(&e.atom, &ctx.binding)
+                    {
+                        Some(s) => found.push((s, ctx.body[blen..].to_vec())),
+                        None => undefined = true,
                     });
                     ctx.body.truncate(blen);
+                    if undefined && !is_choice {
+                        return;
+                    }
                     for (s, c) in found {
                         let a = self.atom_of(s, e.atom.pred);
                         if c.is_empty() {

@@ -1043,6 +1043,59 @@ impl<'a> Rewriter<'a> {
         Some(NCondLit { atom, cond })
     }
 
+    /// The element `t1,...,tn : a : c` of a head aggregate chooses `a` only for the instances
+    /// whose tuple is defined and, for `#sum` and `#sum+`, whose weight `t1` is an integer, as
+    /// in clingo. Adds to the element's condition `t = t` for each tuple term with an
+    /// operation and `t1+0 = t1+0` for a non-integer sum weight (gringo's own check: clingo
+    /// reports `operation undefined: (X+0)`). Returns false when the element can never count.
+    fn tuple_checks(
+        &mut self,
+        func: AggregateFunction,
+        terms: &[ast::Term],
+        vars: &mut Vars,
+        cond: &mut Vec<NLit>,
+    ) -> bool {
+        let sum = matches!(func, AggregateFunction::Sum | AggregateFunction::SumPlus);
+        for (i, t) in terms.iter().enumerate() {
+            let mut scratch = Vec::new();
+            let Some(nt) = self.term(t, vars, &mut scratch) else {
+                return false;
+            };
+            if !scratch.is_empty() {
+                // An interval: always defined, and already a number when it is the weight.
+                continue;
+            }
+            let check = if sum && i == 0 {
+                match nt {
+                    NTerm::Sym(v) if self.syms.num(v).is_some() => continue,
+                    NTerm::Sym(_) => return false,
+                    NTerm::Var(_)
+                    | NTerm::Fun { .. }
+                    | NTerm::Unary { .. }
+                    | NTerm::Binary { .. } => {
+                        let zero = self.syms.int(0);
+                        NTerm::Binary {
+                            op: ast::BinaryOp::Add,
+                            lhs: Box::new(nt),
+                            rhs: Box::new(NTerm::Sym(zero)),
+                            span: t.span,
+                        }
+                    }
+                }
+            } else if nt.has_operation() {
+                nt
+            } else {
+                continue;
+            };
+            cond.push(NLit::Cmp {
+                op: CmpOp::Eq,
+                lhs: check.clone(),
+                rhs: check,
+            });
+        }
+        true
+    }
+
     /// Rewrites every statement of `program`.
     pub fn program(&mut self, program: &ast::Program, consts: &[(String, ast::Term)]) {
         // #const: command-line values win over default definitions, [override] wins over both.
@@ -1579,9 +1632,12 @@ impl<'a> Rewriter<'a> {
                         has_colon: !e.condition.is_empty(),
                     };
                     for ce in unpool_cond(&ce) {
-                        let Some(n) = self.head_elem(&ce, &mut vars, &mut extra) else {
+                        let Some(mut n) = self.head_elem(&ce, &mut vars, &mut extra) else {
                             return;
                         };
+                        if !self.tuple_checks(h.function, &e.terms, &mut vars, &mut n.cond) {
+                            continue;
+                        }
                         es.push(n);
                         let mut condition = vec![ce.literal.clone()];
                         condition.extend(ce.condition.iter().cloned());

@@ -157,6 +157,15 @@ impl NTerm {
         }
     }
 
+    /// True when evaluating the term applies an operator (and so may be undefined).
+    pub fn has_operation(&self) -> bool {
+        match self {
+            NTerm::Sym(_) | NTerm::Var(_) => false,
+            NTerm::Fun { args, .. } => args.iter().any(|a| a.has_operation()),
+            NTerm::Unary { .. } | NTerm::Binary { .. } => true,
+        }
+    }
+
     /// Adds the variable slots of the term to `out`.
     pub fn vars(&self, out: &mut Vec<u32>) {
         match self {
