@@ -827,10 +827,11 @@ impl<'a> Grounder<'a> {
         for cand in candidates {
             let mut gs = guards.clone();
             if let Some(v) = cand {
-                let NTerm::Var(var) = &agg.guards[agg.binder.expect("binder")].1 else {
+                let pat = &agg.guards[agg.binder.expect("binder")].1;
+                if !pat.matches(&mut self.syms, v, &mut ctx.binding) {
+                    ctx.binding.undo(mark);
                     continue;
-                };
-                ctx.binding.bind(*var, v);
+                }
                 gs.push((CmpOp::Eq, v));
             }
             let mut lits: Vec<Lit> = Vec::new();

@@ -1962,9 +1962,12 @@ fn readiness(l: &mut NLit, bound: &[bool], global: &[bool], newly: &mut Vec<u32>
                     continue;
                 }
                 if *op == CmpOp::Eq && a.sign == Sign::Positive && a.binder.is_none() {
-                    if let NTerm::Var(v) = t {
+                    // `X = #agg{...}`, and as in gringo any term matching can bind, such as
+                    // the linear `X+1 = #min{...}` (a value it cannot match is skipped).
+                    let mut vs = Vec::new();
+                    if t.binds(bound, &mut vs) && !vs.is_empty() {
                         a.binder = Some(i);
-                        newly.push(*v);
+                        newly.extend(vs);
                         continue;
                     }
                 }
