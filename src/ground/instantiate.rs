@@ -25,7 +25,7 @@ use crate::base::{Diagnostic, Diagnostics, SourceMap, Span, WarningKind};
 use crate::syntax::ast::{AggregateFunction, CmpOp, Sign};
 
 use super::program::{Body, ExternalValue, HeadKind, HeuristicModifier, Lit, Origin, Rule, Weight};
-use super::rewrite::{Compiled, NAgg, NAtom, NHead, NKind, NLit, NStmt, PredId};
+use super::rewrite::{Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId};
 use super::symbol::{SymData, SymId, Symbols};
 use super::term::{Binding, NTerm};
 
@@ -171,6 +171,18 @@ struct Ctx {
     /// Ground body literals so far.
     body: Vec<Lit>,
 }
+
+/// A ground conditional disjunction element: its literals (sign and atom) and its condition.
+type ElemInstance = (Vec<(Sign, AtomId)>, Vec<Lit>);
+
+/// One ground literal of a conditional disjunction element: its sign, the index of its
+/// non-ground literal in the element's conjunction, and the atom.
+type ElemLit = (Sign, usize, SymId);
+
+/// A ground instance of a conditional body literal's condition: its literals, and the
+/// alternatives of the literal (`None` when none can hold, an empty list when one certainly
+/// does).
+type CondInstance = (Vec<Lit>, Option<Vec<Vec<Lit>>>);
 
 /// The value of an aggregate atom under a guard, over ground elements.
 enum Truth {
@@ -650,9 +662,7 @@ impl<'a> Grounder<'a> {
         let mut preds = Vec::new();
         for e in &agg.elems {
             e.cond.iter().for_each(|l| lit_preds(l, &mut preds));
-            if let Some(l) = &e.lit {
-                lit_preds(l, &mut preds);
-            }
+            e.lit_lits().for_each(|l| lit_preds(l, &mut preds));
         }
         preds.iter().any(|&p| !self.domains[p as usize].complete)
     }
@@ -684,24 +694,37 @@ impl<'a> Grounder<'a> {
         -(a as Lit)
     }
 
-    /// A conditional body literal `l : c`: for each instance of `c`, `l` must hold. An
-    /// instance with a certain condition contributes `l` itself (positively, as gringo keeps
-    /// it); otherwise an auxiliary atom `x :- l.  x :- not c.` stands for `c -> l`.
+    /// A conditional body literal `l : c`: for each instance of `c`, some instance of `l` must
+    /// hold (`l`'s pools, intervals and local variables give alternatives). An instance with a
+    /// certain condition contributes `l` itself (positively, as gringo keeps it); otherwise an
+    /// auxiliary atom `x :- l.  x :- not c.` stands for `c -> l`.
     fn conditional(&mut self, ctx: &mut Ctx, agg: &NAgg, k: &mut dyn FnMut(&mut Self, &mut Ctx)) {
         let e = &agg.elems[0];
-        let l = e.lit.as_deref().expect("conditional literal");
+        let alts = e.lit.as_deref().expect("conditional literal");
         let blen = ctx.body.len();
-        let mut found: Vec<(Vec<Lit>, Option<Vec<Lit>>)> = Vec::new();
+        // Per condition instance: its literals, and the alternatives of `l` (None when none
+        // can hold, an empty alternative when one certainly holds).
+        let mut found: Vec<CondInstance> = Vec::new();
         self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
             let cond = ctx.body[blen..].to_vec();
             let b2 = ctx.body.len();
-            let mut sol: Option<Vec<Lit>> = None;
-            g.join(ctx, std::slice::from_ref(l), 0, &[], &mut |_, ctx| {
-                if sol.as_ref().is_none_or(|s| !s.is_empty()) {
-                    sol = Some(ctx.body[b2..].to_vec());
-                }
-            });
+            let mut sols: Vec<Vec<Lit>> = Vec::new();
+            for alt in alts {
+                g.join(ctx, alt, 0, &[], &mut |_, ctx| {
+                    let s = ctx.body[b2..].to_vec();
+                    if !sols.contains(&s) {
+                        sols.push(s);
+                    }
+                });
+            }
             ctx.body.truncate(b2);
+            let sol = if sols.iter().any(|s| s.is_empty()) {
+                Some(Vec::new())
+            } else if sols.is_empty() {
+                None
+            } else {
+                Some(sols)
+            };
             found.push((cond, sol));
         });
         ctx.body.truncate(blen);
@@ -710,35 +733,38 @@ impl<'a> Grounder<'a> {
             match (cond.is_empty(), sol) {
                 (_, Some(s)) if s.is_empty() => {}
                 (true, None) => return,
-                (true, Some(s)) => lits.extend(s),
+                (true, Some(s)) if s.len() == 1 => lits.extend(s.into_iter().flatten()),
+                (true, Some(s)) => lits.push(self.disjunction_lit(&s)),
                 (false, None) => lits.push(self.not_conj(&cond)),
                 (false, Some(s)) => {
-                    // x :- l.  x :- not c.  and, for a condition atom c, x | c :- not not l
-                    // (gringo's encoding: c -> l keeps c in the reduct when c depends on x).
+                    // x :- l.  x :- not c.  and x | k :- not not l, with k :- c and c_i :- k
+                    // for the positive c_i (gringo's encoding: c -> l keeps c in the reduct
+                    // when c depends on x).
                     let nc = self.not_conj(&cond);
                     let x = self.aux();
-                    for body in [s.clone(), vec![nc]] {
-                        self.add_rule(
-                            Rule {
-                                head_kind: HeadKind::Disjunction,
-                                head: vec![x],
-                                body: Body::Normal(body),
-                            },
-                            Origin::default,
-                        );
+                    for body in s.iter().cloned().chain([vec![nc]]) {
+                        self.add_rule(Rule::normal(&[x], &body), Origin::default);
                     }
-                    if cond.len() == 1 && cond[0] > 0 {
-                        let t = self.disjunction_lit(&[s]);
+                    let k = if cond.len() == 1 && cond[0] > 0 {
+                        Some(cond[0] as AtomId)
+                    } else if cond.iter().any(|&c| c > 0) {
+                        let k = self.aux();
+                        self.add_rule(Rule::normal(&[k], &cond), Origin::default);
+                        for &c in cond.iter().filter(|&&c| c > 0) {
+                            self.add_rule(
+                                Rule::normal(&[c as AtomId], &[k as Lit]),
+                                Origin::default,
+                            );
+                        }
+                        Some(k)
+                    } else {
+                        None
+                    };
+                    if let Some(k) = k {
+                        let t = self.disjunction_lit(&s);
                         let nt = self.negate_lit(t);
                         let nnt = self.negate_lit(nt);
-                        self.add_rule(
-                            Rule {
-                                head_kind: HeadKind::Disjunction,
-                                head: vec![x, cond[0] as AtomId],
-                                body: Body::Normal(vec![nnt]),
-                            },
-                            Origin::default,
-                        );
+                        self.add_rule(Rule::normal(&[x, k], &[nnt]), Origin::default);
                     }
                     lits.push(x as Lit);
                 }
@@ -1289,6 +1315,7 @@ impl<'a> Grounder<'a> {
     fn emit_rule(&mut self, stmt: &NStmt, ctx: &mut Ctx) {
         let mut head: Vec<AtomId> = Vec::new();
         let mut extra_choices: Vec<(AtomId, Vec<Lit>)> = Vec::new();
+        let mut elems: Vec<ElemInstance> = Vec::new();
         let is_choice = matches!(stmt.head, NHead::Choice(_));
         match &stmt.head {
             NHead::None => {}
@@ -1296,6 +1323,12 @@ impl<'a> Grounder<'a> {
                 // An undefined head atom (`p(a+0)`) drops its element from a choice, and the
                 // whole rule from a disjunction, conditional elements included (clingo 5.8).
                 for e in es {
+                    if !e.conj.is_empty() {
+                        if !self.conj_elems(e, ctx, &mut elems) {
+                            return;
+                        }
+                        continue;
+                    }
                     if e.cond.is_empty() {
                         match self.atom_sym(&e.atom, &ctx.binding) {
                             Some(s) => head.push(self.atom_of(s, e.atom.pred)),
@@ -1434,6 +1467,17 @@ impl<'a> Grounder<'a> {
         if head.iter().any(|&a| self.info(a).fact) {
             return;
         }
+        for el in elems {
+            match el {
+                (lits, cond)
+                    if cond.is_empty() && lits.len() == 1 && lits[0].0 == Sign::Positive =>
+                {
+                    head.push(lits[0].1)
+                }
+                (lits, cond) => head.push(self.elem_atom(&lits, &cond)),
+            }
+        }
+        head.dedup();
         for &a in &head {
             self.derive(a);
         }
@@ -1451,6 +1495,96 @@ impl<'a> Grounder<'a> {
         );
     }
 
+    /// Grounds the instances of a conditional disjunction element (`l : c` with gringo's
+    /// reading) into `out`, simplified over what is known; false when one of them is certainly
+    /// true, so the whole disjunction is satisfied.
+    fn conj_elems(&mut self, e: &NCondLit, ctx: &mut Ctx, out: &mut Vec<ElemInstance>) -> bool {
+        let blen = ctx.body.len();
+        let mut found: Vec<(Vec<ElemLit>, Vec<Lit>)> = Vec::new();
+        self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
+            let cond = ctx.body[blen..].to_vec();
+            let mut lits = Vec::new();
+            for (i, l) in e.conj.iter().enumerate() {
+                g.join(ctx, &l.expand, 0, &[], &mut |g, ctx| {
+                    // An undefined instance is left out of the conjunction.
+                    if let Some(s) = g.atom_sym(&l.atom, &ctx.binding) {
+                        if !lits.contains(&(l.sign, i, s)) {
+                            lits.push((l.sign, i, s));
+                        }
+                    }
+                });
+            }
+            found.push((lits, cond));
+        });
+        ctx.body.truncate(blen);
+        'inst: for (lits, cond) in found {
+            let mut ground: Vec<(Sign, AtomId)> = Vec::new();
+            for (sign, i, s) in lits {
+                let pred = e.conj[i].atom.pred;
+                let existing = self.find_atom(s);
+                let (fact, never) = existing.map_or((false, true), |a| {
+                    (self.info(a).fact, !self.info(a).in_domain)
+                });
+                let never = never && self.domains[pred as usize].complete;
+                match sign {
+                    Sign::Positive if fact => {}
+                    Sign::Positive => ground.push((sign, self.atom_of(s, pred))),
+                    Sign::Not if fact => continue 'inst,
+                    Sign::NotNot if never => continue 'inst,
+                    Sign::Not if never => {}
+                    Sign::NotNot if fact => {}
+                    _ => ground.push((sign, self.atom_of(s, pred))),
+                }
+            }
+            if ground.is_empty() && cond.is_empty() {
+                return false;
+            }
+            out.push((ground, cond));
+        }
+        true
+    }
+
+    /// The auxiliary atom `e` of a conditional disjunction element instance with literals
+    /// `lits` and condition `cond` (gringo's translation): `e :- lits, cond.`; `a :- e, cond.`
+    /// for each positive `a`; `:- e, cond, a.` for `not a` and `:- e, cond, not a.` for
+    /// `not not a`; `:- e, not c.` for each condition literal `c`.
+    fn elem_atom(&mut self, lits: &[(Sign, AtomId)], cond: &[Lit]) -> AtomId {
+        let e = self.aux();
+        let mut body: Vec<Lit> = Vec::with_capacity(lits.len() + cond.len());
+        for &(sign, a) in lits {
+            body.push(match sign {
+                Sign::Positive => a as Lit,
+                Sign::Not => -(a as Lit),
+                Sign::NotNot => -(self.not_aux(a) as Lit),
+            });
+        }
+        body.extend_from_slice(cond);
+        self.add_rule(Rule::normal(&[e], &body), Origin::default);
+        let mut guard = vec![e as Lit];
+        guard.extend_from_slice(cond);
+        for &(sign, a) in lits {
+            let mut b = guard.clone();
+            match sign {
+                Sign::Positive => {
+                    self.derive(a);
+                    self.add_rule(Rule::normal(&[a], &b), Origin::default);
+                }
+                Sign::Not => {
+                    b.push(a as Lit);
+                    self.add_rule(Rule::normal(&[], &b), Origin::default);
+                }
+                Sign::NotNot => {
+                    b.push(-(a as Lit));
+                    self.add_rule(Rule::normal(&[], &b), Origin::default);
+                }
+            }
+        }
+        for &c in cond {
+            self.add_rule(Rule::normal(&[], &[e as Lit, -c]), Origin::default);
+        }
+        e
+    }
+
     /// Grounds the whole compiled program.
     pub fn run(&mut self, prog: &Compiled) {
         let n = prog.preds.len();
@@ -1461,9 +1595,9 @@ impl<'a> Grounder<'a> {
             let mut h = Vec::new();
             match &s.head {
                 NHead::Disj(es) | NHead::Choice(es) => {
-                    for e in es {
-                        if !h.contains(&e.atom.pred) {
-                            h.push(e.atom.pred)
+                    for a in es.iter().flat_map(|e| e.derived_atoms()) {
+                        if !h.contains(&a.pred) {
+                            h.push(a.pred)
                         }
                     }
                 }
@@ -1480,6 +1614,9 @@ impl<'a> Grounder<'a> {
                 for e in es {
                     for l in &e.cond {
                         lit_preds(l, &mut r);
+                    }
+                    for l in e.conj.iter().filter(|l| l.sign != Sign::Positive) {
+                        r.push(l.atom.pred);
                     }
                 }
             }
@@ -1736,9 +1873,7 @@ fn positive_atoms<'x>(l: &'x NLit, out: &mut Vec<&'x NAtom>) {
         NLit::Agg(a) => {
             for e in &a.elems {
                 e.cond.iter().for_each(|c| positive_atoms(c, out));
-                if let Some(l) = &e.lit {
-                    positive_atoms(l, out);
-                }
+                e.lit_lits().for_each(|l| positive_atoms(l, out));
             }
         }
         _ => {}
@@ -1793,9 +1928,7 @@ fn lit_preds(l: &NLit, out: &mut Vec<PredId>) {
         NLit::Agg(a) => {
             for e in &a.elems {
                 e.cond.iter().for_each(|c| lit_preds(c, out));
-                if let Some(l) = &e.lit {
-                    lit_preds(l, out);
-                }
+                e.lit_lits().for_each(|l| lit_preds(l, out));
             }
         }
         _ => {}

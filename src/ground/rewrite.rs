@@ -1,10 +1,13 @@
 //! Rewriting: from syntax-tree statements to [`NStmt`]s the instantiator can ground.
 //!
 //! What happens here, in order: `#const` names are replaced by their values; pools are
-//! unfolded (in rule heads and bodies into separate statements, inside aggregates and
-//! conditions into separate elements); intervals become fresh variables bound by an interval
-//! literal; anonymous variables become fresh variables; conditional body literals `l : c`
-//! become `#count { locals : c, ~l } <= 0`; choice bounds and head aggregates become an
+//! unfolded (in rule heads, bodies and aggregate bounds into separate statements, inside
+//! aggregates and conditions into separate elements; as clingo does, the pools of the literal
+//! of a conditional element stay within it: a conjunction in a disjunctive head, a
+//! disjunction in a conditional body literal); intervals become fresh variables bound by an
+//! interval literal; anonymous variables become fresh variables; conditional body literals
+//! `l : c` become a guard-less one-element aggregate the instantiator reads as "every
+//! instance of `c` has some instance of `l`"; choice bounds and head aggregates become an
 //! unbounded choice plus a constraint on a body aggregate; every body (and every element
 //! condition) is put in an order in which each literal is evaluable when reached, which is also
 //! the safety check.
@@ -113,17 +116,56 @@ pub struct NElem {
     /// The condition, in evaluation order.
     pub cond: Vec<NLit>,
     /// For a conditional body literal `l : cond` (an aggregate with this single element and no
-    /// guards): the literal `l`.
-    pub lit: Option<Box<NLit>>,
+    /// guards): the alternatives of `l` (its pool alternatives), each its interval binders
+    /// followed by the literal. An instance of the condition asks for *some* instance of some
+    /// alternative (clingo's reading: pools, intervals and variables local to `l` give a
+    /// disjunction).
+    pub lit: Option<Vec<Vec<NLit>>>,
+}
+
+impl NElem {
+    /// The literals of a conditional body literal's alternatives (none for other elements).
+    pub fn lit_lits(&self) -> impl Iterator<Item = &NLit> {
+        self.lit.iter().flatten().flatten()
+    }
 }
 
 /// A head element `[not] atom : cond`.
 #[derive(Clone, Debug)]
 pub struct NCondLit {
-    /// The atom.
+    /// The atom (for an element with `conj`, the atom of its first literal).
     pub atom: NAtom,
     /// The condition, in evaluation order (empty when unconditional).
     pub cond: Vec<NLit>,
+    /// Empty for a plain head atom. For an element written with a colon in a disjunction,
+    /// gringo's reading: the element holds when its condition and every literal here holds
+    /// (pools and intervals of the written literal are unfolded into this conjunction).
+    pub conj: Vec<NHeadLit>,
+}
+
+/// One literal of a conditional disjunction element: `[not [not]] atom`, over every solution
+/// of `expand` (the interval literals of the written literal, planned after the condition).
+#[derive(Clone, Debug)]
+pub struct NHeadLit {
+    /// `not`, `not not` or nothing.
+    pub sign: Sign,
+    /// The atom.
+    pub atom: NAtom,
+    /// Interval binders local to this literal.
+    pub expand: Vec<NLit>,
+}
+
+impl NCondLit {
+    /// Every atom the element can make true (the positive literals of its conjunction).
+    pub fn derived_atoms(&self) -> impl Iterator<Item = &NAtom> {
+        let plain = self.conj.is_empty().then_some(&self.atom);
+        plain.into_iter().chain(
+            self.conj
+                .iter()
+                .filter(|l| l.sign == Sign::Positive)
+                .map(|l| &l.atom),
+        )
+    }
 }
 
 /// A statement's head.
@@ -431,17 +473,19 @@ fn product<T: Clone>(choices: Vec<Vec<T>>) -> Vec<Vec<T>> {
 /// Unfolds pools in body literals: each alternative of a plain literal is a separate rule;
 /// inside aggregates and conditions alternatives become separate elements.
 fn unpool_body(body: &[ast::BodyLiteral]) -> Vec<Vec<ast::BodyLiteral>> {
-    let choices: Vec<Vec<ast::BodyLiteral>> = body
+    let choices: Vec<Vec<Vec<ast::BodyLiteral>>> = body
         .iter()
         .map(|b| match b {
             ast::BodyLiteral::Literal(l) => unpool_literal(l)
                 .into_iter()
-                .map(ast::BodyLiteral::Literal)
+                .map(|l| vec![ast::BodyLiteral::Literal(l)])
                 .collect(),
-            ast::BodyLiteral::Conditional(c) => unpool_cond(c)
+            // The literal keeps its pools (alternatives of one conditional literal); the
+            // condition's alternatives are further conditional literals of the same rule.
+            ast::BodyLiteral::Conditional(c) => vec![unpool_condition(c)
                 .into_iter()
                 .map(ast::BodyLiteral::Conditional)
-                .collect(),
+                .collect()],
             ast::BodyLiteral::Aggregate { sign, aggregate } => {
                 let mut agg = aggregate.clone();
                 agg.elements = aggregate
@@ -464,14 +508,24 @@ fn unpool_body(body: &[ast::BodyLiteral]) -> Vec<Vec<ast::BodyLiteral>> {
                     })
                     .collect();
                 agg.set_syntax = aggregate.set_syntax.iter().flat_map(unpool_cond).collect();
-                vec![ast::BodyLiteral::Aggregate {
-                    sign: *sign,
-                    aggregate: agg,
-                }]
+                // Alternatives of the guards are separate rules.
+                let mut out = Vec::new();
+                for lower in unpool_guard(&aggregate.lower) {
+                    for upper in unpool_guard(&aggregate.upper) {
+                        let mut a = agg.clone();
+                        a.lower = lower.clone();
+                        a.upper = upper;
+                        out.push(vec![ast::BodyLiteral::Aggregate {
+                            sign: *sign,
+                            aggregate: a,
+                        }]);
+                    }
+                }
+                out
             }
         })
         .collect();
-    product(choices)
+    product(choices).into_iter().map(|b| b.concat()).collect()
 }
 
 /// Unfolds pools in a conditional literal into several.
@@ -489,6 +543,30 @@ fn unpool_cond(c: &ast::ConditionalLiteral) -> Vec<ast::ConditionalLiteral> {
         }
     }
     out
+}
+
+/// The alternatives of an optional guard.
+fn unpool_guard(g: &Option<ast::Guard>) -> Vec<Option<ast::Guard>> {
+    match g {
+        None => vec![None],
+        Some(g) => unpool_term(&g.term)
+            .into_iter()
+            .map(|term| Some(ast::Guard { op: g.op, term }))
+            .collect(),
+    }
+}
+
+/// Unfolds the pools of a conditional literal's condition only, one literal per alternative.
+fn unpool_condition(c: &ast::ConditionalLiteral) -> Vec<ast::ConditionalLiteral> {
+    product(c.condition.iter().map(unpool_literal).collect())
+        .into_iter()
+        .map(|condition| ast::ConditionalLiteral {
+            span: c.span,
+            literal: c.literal.clone(),
+            condition,
+            has_colon: c.has_colon,
+        })
+        .collect()
 }
 
 /// The default-negation complement of a sign.
@@ -930,10 +1008,12 @@ impl<'a> Rewriter<'a> {
                     // aggregate with one element that the instantiator treats specially.
                     let mut cond = Vec::new();
                     self.condition(&c.condition, vars, &mut cond)?;
-                    let mut lit = Vec::new();
-                    self.condition(std::slice::from_ref(&c.literal), vars, &mut lit)?;
-                    let l = lit.pop().expect("one literal compiled");
-                    cond.extend(lit);
+                    let mut alts = Vec::new();
+                    for l in unpool_literal(&c.literal) {
+                        let mut alt = Vec::new();
+                        self.condition(std::slice::from_ref(&l), vars, &mut alt)?;
+                        alts.push(alt);
+                    }
                     NLit::Agg(Box::new(NAgg {
                         sign: Sign::Positive,
                         func: AggregateFunction::Count,
@@ -942,7 +1022,7 @@ impl<'a> Rewriter<'a> {
                         elems: vec![NElem {
                             terms: Vec::new(),
                             cond,
-                            lit: Some(Box::new(l)),
+                            lit: Some(alts),
                         }],
                         span: c.span,
                     }))
@@ -1040,7 +1120,38 @@ impl<'a> Rewriter<'a> {
             self.condition(&c.condition, vars, &mut cond)?;
             at
         };
-        Some(NCondLit { atom, cond })
+        Some(NCondLit {
+            atom,
+            cond,
+            conj: Vec::new(),
+        })
+    }
+
+    /// A disjunction element written with a colon, `l : c`, read as gringo does: it holds
+    /// when `c` and every instance of `l` hold, where `l`'s pools and intervals give the
+    /// instances (an undefined instance is left out, so an element without any is `c`).
+    fn disj_elem(&mut self, c: &ast::ConditionalLiteral, vars: &mut Vars) -> Option<NCondLit> {
+        let mut conj = Vec::new();
+        for l in unpool_literal(&c.literal) {
+            let ast::Atom::Symbolic(a) = &l.atom else {
+                self.unsupported(c.span, "this head literal");
+                return None;
+            };
+            let mut expand = Vec::new();
+            let atom = self.atom(a, vars, &mut expand)?;
+            conj.push(NHeadLit {
+                sign: l.sign,
+                atom,
+                expand,
+            });
+        }
+        let mut cond = Vec::new();
+        self.condition(&c.condition, vars, &mut cond)?;
+        Some(NCondLit {
+            atom: conj[0].atom.clone(),
+            cond,
+            conj,
+        })
     }
 
     /// The element `t1,...,tn : a : c` of a head aggregate chooses `a` only for the instances
@@ -1483,14 +1594,61 @@ impl<'a> Rewriter<'a> {
     fn rule(&mut self, index: u32, span: Span, r: &ast::Rule) {
         // Unfold pools of the head and body into separate rules.
         let heads: Vec<ast::Head> = match &r.head {
-            ast::Head::Disjunction(elems) => product(elems.iter().map(unpool_cond).collect())
-                .into_iter()
-                .map(ast::Head::Disjunction)
-                .collect(),
+            // A plain element's alternatives are separate rules; an element written with a
+            // colon keeps its literal's pools (a conjunction, see `head_elem`) and its
+            // condition's alternatives become further elements of the same disjunction.
+            ast::Head::Disjunction(elems) => product(
+                elems
+                    .iter()
+                    .map(|e| {
+                        if e.has_colon {
+                            vec![unpool_condition(e)]
+                        } else {
+                            unpool_cond(e).into_iter().map(|c| vec![c]).collect()
+                        }
+                    })
+                    .collect(),
+            )
+            .into_iter()
+            .map(|es: Vec<Vec<ast::ConditionalLiteral>>| ast::Head::Disjunction(es.concat()))
+            .collect(),
+            // Alternatives of the guards are separate rules (each bound must hold).
             ast::Head::Choice(c) => {
                 let mut c = c.clone();
                 c.elements = c.elements.iter().flat_map(unpool_cond).collect();
-                vec![ast::Head::Choice(c)]
+                let mut out = Vec::new();
+                for lower in unpool_guard(&c.lower) {
+                    for upper in unpool_guard(&c.upper) {
+                        let mut c = c.clone();
+                        c.lower = lower.clone();
+                        c.upper = upper;
+                        out.push(ast::Head::Choice(c));
+                    }
+                }
+                out
+            }
+            ast::Head::Aggregate(h) => {
+                let mut h = h.clone();
+                h.elements = h
+                    .elements
+                    .iter()
+                    .flat_map(|e| {
+                        unpool_list(&e.terms)
+                            .into_iter()
+                            .map(|terms| ast::HeadAggregateElement { terms, ..e.clone() })
+                            .collect::<Vec<_>>()
+                    })
+                    .collect();
+                let mut out = Vec::new();
+                for lower in unpool_guard(&h.lower) {
+                    for upper in unpool_guard(&h.upper) {
+                        let mut h = h.clone();
+                        h.lower = lower.clone();
+                        h.upper = upper;
+                        out.push(ast::Head::Aggregate(h));
+                    }
+                }
+                out
             }
             h => vec![h.clone()],
         };
@@ -1551,12 +1709,12 @@ impl<'a> Rewriter<'a> {
                 // h | not a :- B.  ==  h :- B, not not a.   (and `not not a` moves as `not a`)
                 if elems
                     .iter()
-                    .any(|e| e.literal.sign != Sign::Positive && e.condition.is_empty())
+                    .any(|e| e.literal.sign != Sign::Positive && !e.has_colon)
                 {
                     let mut keep = Vec::new();
                     let mut nbody = body.to_vec();
                     for e in elems {
-                        if e.literal.sign != Sign::Positive && e.condition.is_empty() {
+                        if e.literal.sign != Sign::Positive && !e.has_colon {
                             let mut l = e.literal.clone();
                             l.sign = negate_sign(l.sign);
                             nbody.push(ast::BodyLiteral::Literal(l));
@@ -1579,7 +1737,12 @@ impl<'a> Rewriter<'a> {
                 }
                 let mut es = Vec::new();
                 for e in elems {
-                    let Some(e) = self.head_elem(e, &mut vars, &mut extra) else {
+                    let e = if e.has_colon {
+                        self.disj_elem(e, &mut vars)
+                    } else {
+                        self.head_elem(e, &mut vars, &mut extra)
+                    };
+                    let Some(e) = e else {
                         return;
                     };
                     es.push(e);
@@ -1736,7 +1899,7 @@ impl<'a> Rewriter<'a> {
         }
         match &head {
             NHead::Disj(es) | NHead::Choice(es) => {
-                for e in es.iter().filter(|e| e.cond.is_empty()) {
+                for e in es.iter().filter(|e| e.cond.is_empty() && e.conj.is_empty()) {
                     e.atom.args.iter().for_each(|t| mark(t, &mut global));
                 }
             }
@@ -1791,7 +1954,17 @@ impl<'a> Rewriter<'a> {
                     let cond = std::mem::take(&mut e.cond);
                     e.cond = plan(cond, &mut b, &global, &mut unsafe_vars);
                     let mut vs = Vec::new();
-                    e.atom.args.iter().for_each(|t| t.vars(&mut vs));
+                    if e.conj.is_empty() {
+                        e.atom.args.iter().for_each(|t| t.vars(&mut vs));
+                    }
+                    for l in &mut e.conj {
+                        let mut bl = b.clone();
+                        let expand = std::mem::take(&mut l.expand);
+                        l.expand = plan(expand, &mut bl, &global, &mut unsafe_vars);
+                        let mut lv = Vec::new();
+                        l.atom.args.iter().for_each(|t| t.vars(&mut lv));
+                        vs.extend(lv.into_iter().filter(|&v| !bl[v as usize]));
+                    }
                     for v in vs {
                         if !b[v as usize] && !unsafe_vars.contains(&v) {
                             unsafe_vars.push(v);
@@ -1892,9 +2065,7 @@ pub fn lit_vars(l: &NLit, out: &mut Vec<u32>) {
             for e in &a.elems {
                 e.terms.iter().for_each(|t| t.vars(out));
                 e.cond.iter().for_each(|c| lit_vars(c, out));
-                if let Some(l) = &e.lit {
-                    lit_vars(l, out);
-                }
+                e.lit_lits().for_each(|l| lit_vars(l, out));
             }
         }
     }
@@ -1949,9 +2120,7 @@ fn readiness(l: &mut NLit, bound: &[bool], global: &[bool], newly: &mut Vec<u32>
                 let mut vs = Vec::new();
                 e.terms.iter().for_each(|t| t.vars(&mut vs));
                 e.cond.iter().for_each(|c| lit_vars(c, &mut vs));
-                if let Some(l) = &e.lit {
-                    lit_vars(l, &mut vs);
-                }
+                e.lit_lits().for_each(|l| lit_vars(l, &mut vs));
                 if vs.iter().any(|&v| global[v as usize] && !bound[v as usize]) {
                     return None;
                 }
@@ -2026,8 +2195,13 @@ pub fn plan(
                 e.cond = plan(cond, &mut b, global, unsafe_vars);
                 let mut vs = Vec::new();
                 e.terms.iter().for_each(|t| t.vars(&mut vs));
-                if let Some(l) = &e.lit {
-                    lit_vars(l, &mut vs);
+                // Each alternative of a conditional literal may bind its own local variables.
+                for alt in e.lit.iter_mut().flatten() {
+                    let mut ba = b.clone();
+                    *alt = plan(std::mem::take(alt), &mut ba, global, unsafe_vars);
+                    let mut av = Vec::new();
+                    alt.iter().for_each(|l| lit_vars(l, &mut av));
+                    vs.extend(av.into_iter().filter(|&v| !ba[v as usize]));
                 }
                 for v in vs {
                     if !b[v as usize] && !unsafe_vars.contains(&v) {
