@@ -848,6 +848,9 @@ impl<'a> Grounder<'a> {
                 .map(Some)
                 .collect(),
         };
+        // A positive aggregate over atoms still being grounded may need the translation that
+        // keeps Ferraris' semantics when it is not monotone (see `sum_saturated`).
+        let recursive = agg.sign == Sign::Positive && self.reads_incomplete(agg);
         let mark = ctx.binding.mark();
         let blen = ctx.body.len();
         for cand in candidates {
@@ -863,7 +866,7 @@ impl<'a> Grounder<'a> {
             let mut lits: Vec<Lit> = Vec::new();
             let mut truth = true;
             for (op, v) in gs {
-                match self.guard_truth(agg.func, &elems, op, v) {
+                match self.guard_truth(agg.func, &elems, op, v, recursive) {
                     Truth::True => {}
                     Truth::False => {
                         truth = false;
@@ -998,9 +1001,13 @@ impl<'a> Grounder<'a> {
         elems: &[(SymId, Vec<Vec<Lit>>)],
         op: CmpOp,
         v: SymId,
+        recursive: bool,
     ) -> Truth {
         match func {
             AggregateFunction::Min | AggregateFunction::Max => {
+                if recursive && op == CmpOp::Ne {
+                    return self.minmax_saturated(func == AggregateFunction::Max, elems, v);
+                }
                 self.minmax_truth(func, elems, op, v)
             }
             _ => {
@@ -1014,6 +1021,31 @@ impl<'a> Grounder<'a> {
                     };
                 };
                 let k = k as i64;
+                // `!=` at an end of the possible sums is one-sided: keep it monotone (a
+                // positive dependency) rather than the negation of `=`.
+                let (lo, hi) = self.sum_range(elems);
+                let op = match op {
+                    CmpOp::Ne if k < lo || k > hi => return Truth::True,
+                    CmpOp::Ne if k == lo => CmpOp::Gt,
+                    CmpOp::Ne if k == hi => CmpOp::Lt,
+                    op => op,
+                };
+                if recursive && self.sum_nonmonotone(elems, op, k) {
+                    // Each comparison as a disjunction of monotone sums `dir * sum >= bound`;
+                    // `=` is the conjunction of two (Ferraris' semantics splits conjunctions).
+                    return match op {
+                        CmpOp::Ge => self.sum_saturated(elems, &[(1, k)]),
+                        CmpOp::Gt => self.sum_saturated(elems, &[(1, k + 1)]),
+                        CmpOp::Le => self.sum_saturated(elems, &[(-1, -k)]),
+                        CmpOp::Lt => self.sum_saturated(elems, &[(-1, 1 - k)]),
+                        CmpOp::Ne => self.sum_saturated(elems, &[(1, k + 1), (-1, 1 - k)]),
+                        CmpOp::Eq => {
+                            let a = self.sum_saturated(elems, &[(1, k)]);
+                            let b = self.sum_saturated(elems, &[(-1, -k)]);
+                            conj(a, b)
+                        }
+                    };
+                }
                 match op {
                     CmpOp::Ge => self.sum_ge(elems, k),
                     CmpOp::Gt => self.sum_ge(elems, k + 1),
@@ -1096,6 +1128,200 @@ impl<'a> Grounder<'a> {
             Origin::default,
         );
         Truth::Lits(vec![a as Lit])
+    }
+
+    /// The least and the greatest sum the elements can take.
+    fn sum_range(&self, elems: &[(SymId, Vec<Vec<Lit>>)]) -> (i64, i64) {
+        let (mut lo, mut hi) = (0i64, 0i64);
+        for (w, c) in elems {
+            let w = self.syms.num(*w).unwrap_or(0) as i64;
+            if c.is_empty() {
+                lo += w;
+                hi += w;
+            } else if w < 0 {
+                lo += w;
+            } else {
+                hi += w;
+            }
+        }
+        (lo, hi)
+    }
+
+    /// True when `sum op k` is not monotone in the truth of the elements' literals: the
+    /// uncertain weights have both signs, or `op` is `!=` with `k` strictly between the least
+    /// and the greatest possible sum (gringo's NONMONOTONE analysis).
+    fn sum_nonmonotone(&self, elems: &[(SymId, Vec<Vec<Lit>>)], op: CmpOp, k: i64) -> bool {
+        let (lo, hi) = self.sum_range(elems);
+        let mixed = elems
+            .iter()
+            .any(|(w, c)| !c.is_empty() && self.syms.num(*w).is_some_and(|n| n > 0))
+            && elems
+                .iter()
+                .any(|(w, c)| !c.is_empty() && self.syms.num(*w).is_some_and(|n| n < 0));
+        mixed || (op == CmpOp::Ne && lo < k && k < hi)
+    }
+
+    /// `sum op k` for a non-monotone comparison over atoms still being grounded, as the
+    /// disjunction of monotone sums `dir * sum >= bound` (`dir` is 1 or -1), see `saturated`.
+    fn sum_saturated(
+        &mut self,
+        elems: &[(SymId, Vec<Vec<Lit>>)],
+        disjuncts: &[(i64, i64)],
+    ) -> Truth {
+        let mut certain: i64 = 0;
+        let mut merged: Vec<(Lit, i64)> = Vec::new();
+        for (w, c) in elems {
+            let w = self.syms.num(*w).unwrap_or(0) as i64;
+            if c.is_empty() {
+                certain += w;
+                continue;
+            }
+            let l = self.disjunction_lit(c);
+            match merged.iter_mut().find(|(x, _)| *x == l) {
+                Some(e) => e.1 += w,
+                None => merged.push((l, w)),
+            }
+        }
+        merged.retain(|&(_, w)| w != 0);
+        let parts: Vec<(Vec<(Lit, i64)>, i64)> = disjuncts
+            .iter()
+            .map(|&(dir, k)| {
+                let lits = merged.iter().map(|&(l, w)| (l, dir * w)).collect();
+                (lits, k - dir * certain)
+            })
+            .collect();
+        self.saturated(parts)
+    }
+
+    /// An atom `A` for a disjunction of weighted sums `sum_i w_i * l_i >= bound` over element
+    /// literals some of which are still being grounded, with Ferraris' semantics however the
+    /// weights are signed (Alviano, Faber, Gebser: "Rewriting recursive aggregates in answer
+    /// set programming: back to monotonicity", TPLP 2015; gringo translates so too). A literal
+    /// `l` weighing `-w < 0` counts as its complement with weight `w` (the bound grows by `w`),
+    /// which makes every disjunct monotone; the complement of an atom of the current component
+    /// is an atom `c` saturated on `A`, so that `A` keeps its positive dependency on `l`:
+    ///   c :- not l.   c :- A.   c | l :- not not A.
+    /// Other complements are default negations. Then `A :- bound' { lits = weights }` for each
+    /// disjunct that can hold; `True` when one always holds, `False` when none can.
+    fn saturated(&mut self, disjuncts: Vec<(Vec<(Lit, i64)>, i64)>) -> Truth {
+        let mut live: Vec<(Vec<(Lit, i64)>, i64)> = Vec::new();
+        for (lits, k) in disjuncts {
+            let lits: Vec<(Lit, i64)> = lits.into_iter().filter(|&(_, w)| w != 0).collect();
+            let bound = k - lits
+                .iter()
+                .filter(|&&(_, w)| w < 0)
+                .map(|&(_, w)| w)
+                .sum::<i64>();
+            let max: i64 = lits.iter().map(|&(_, w)| w.abs()).sum();
+            if bound <= 0 {
+                return Truth::True;
+            }
+            if bound <= max {
+                live.push((lits, bound));
+            }
+        }
+        if live.is_empty() {
+            return Truth::False;
+        }
+        let a = self.aux();
+        let mut complements: Vec<(Lit, Lit)> = Vec::new();
+        for (lits, bound) in live {
+            let mut body: Vec<(Lit, Weight)> = Vec::new();
+            for (l, w) in lits {
+                if w > 0 {
+                    body.push((l, w));
+                    continue;
+                }
+                let c = match complements.iter().find(|(x, _)| *x == l) {
+                    Some(&(_, c)) => c,
+                    None => {
+                        let c = self.complement(l, a);
+                        complements.push((l, c));
+                        c
+                    }
+                };
+                body.push((c, -w));
+            }
+            self.add_rule(
+                Rule {
+                    head_kind: HeadKind::Disjunction,
+                    head: vec![a],
+                    body: Body::Weight {
+                        lower: bound,
+                        lits: body,
+                    },
+                },
+                Origin::default,
+            );
+        }
+        Truth::Lits(vec![a as Lit])
+    }
+
+    /// The complement of an element literal `l` inside the saturated atom `a` (see
+    /// `saturated`).
+    fn complement(&mut self, l: Lit, a: AtomId) -> Lit {
+        let recursive = l > 0 && {
+            let p = self.info(l as AtomId).pred;
+            p == u32::MAX || !self.domains[p as usize].complete
+        };
+        if !recursive {
+            return self.negate_lit(l);
+        }
+        let c = self.aux();
+        let not_a = self.not_aux(a);
+        for (head, body) in [
+            (vec![c], vec![-l]),
+            (vec![c], vec![a as Lit]),
+            (vec![c, l as AtomId], vec![-(not_a as Lit)]),
+        ] {
+            self.add_rule(
+                Rule {
+                    head_kind: HeadKind::Disjunction,
+                    head,
+                    body: Body::Normal(body),
+                },
+                Origin::default,
+            );
+        }
+        c as Lit
+    }
+
+    /// `#max != v` over atoms still being grounded (not monotone), with Ferraris' semantics:
+    /// the maximum is above `v` (some element above `v` holds) or below it (no element at or
+    /// above `v` holds): `#count{above} >= 1` or `-#count{at v} >= 0`, see `saturated`.
+    /// `#min` is the mirror image.
+    fn minmax_saturated(
+        &mut self,
+        is_max: bool,
+        elems: &[(SymId, Vec<Vec<Lit>>)],
+        v: SymId,
+    ) -> Truth {
+        let mut beyond: Vec<(Lit, i64)> = Vec::new();
+        let mut at: Vec<(Lit, i64)> = Vec::new();
+        let mut at_certain = false;
+        for (w, c) in elems {
+            let o = self.syms.compare(*w, v);
+            let past = if is_max { o.is_gt() } else { o.is_lt() };
+            if past {
+                if c.is_empty() {
+                    return Truth::True;
+                }
+                let l = self.disjunction_lit(c);
+                beyond.push((l, 1));
+            } else if o.is_eq() {
+                if c.is_empty() {
+                    at_certain = true;
+                    continue;
+                }
+                let l = self.disjunction_lit(c);
+                at.push((l, -1));
+            }
+        }
+        let mut parts = vec![(beyond, 1)];
+        if !at_certain {
+            parts.push((at, 0));
+        }
+        self.saturated(parts)
     }
 
     /// `#min`/`#max` compared with `v`. With `m` the extremum (`#inf` for an empty `#max`,
