@@ -1355,6 +1355,34 @@ impl<'a> Rewriter<'a> {
         }
     }
 
+    /// The `weight@priority, terms` tuple that weak constraints and `#minimize`/`#maximize`
+    /// elements share, as a [`NKind::Minimize`] (priority 0 when omitted); `None` when the
+    /// weight or the priority does not compile (a term that does not compile is left out, its
+    /// error already reported).
+    fn minimize_kind(
+        &mut self,
+        (weight, priority, terms): (&ast::Term, Option<&ast::Term>, &[ast::Term]),
+        maximize: bool,
+        vars: &mut Vars,
+        extra: &mut Vec<NLit>,
+    ) -> Option<NKind> {
+        let weight = self.term(weight, vars, extra)?;
+        let priority = match priority {
+            Some(p) => self.term(p, vars, extra)?,
+            None => NTerm::Sym(self.syms.int(0)),
+        };
+        let terms = terms
+            .iter()
+            .filter_map(|t| self.term(t, vars, extra))
+            .collect();
+        Some(NKind::Minimize {
+            weight,
+            priority,
+            terms,
+            maximize,
+        })
+    }
+
     fn sig_pred(&mut self, s: &ast::Signature) -> PredId {
         self.pred(&s.name, s.arity, s.negated)
     }
@@ -1369,30 +1397,14 @@ impl<'a> Rewriter<'a> {
                     let mut vars = Vars::default();
                     let mut out = Vec::new();
                     let mut extra = Vec::new();
-                    let Some(weight) = self.term(&w.weight, &mut vars, &mut extra) else {
+                    let cost = (&w.weight, w.priority.as_ref(), &w.terms[..]);
+                    let Some(kind) = self.minimize_kind(cost, false, &mut vars, &mut extra) else {
                         continue;
                     };
-                    let priority = match &w.priority {
-                        Some(p) => self.term(p, &mut vars, &mut extra),
-                        None => Some(NTerm::Sym(self.syms.int(0))),
-                    };
-                    let Some(priority) = priority else { continue };
-                    let mut terms = Vec::new();
-                    for t in &w.terms {
-                        if let Some(t) = self.term(t, &mut vars, &mut extra) {
-                            terms.push(t);
-                        }
-                    }
                     if self.body(&body, &mut vars, &mut out).is_none() {
                         continue;
                     }
                     out.append(&mut extra);
-                    let kind = NKind::Minimize {
-                        weight,
-                        priority,
-                        terms,
-                        maximize: false,
-                    };
                     self.finish(index, st.span, NHead::None, out, kind, vars);
                 }
             }
@@ -1402,30 +1414,16 @@ impl<'a> Rewriter<'a> {
                         let mut vars = Vars::default();
                         let mut out = Vec::new();
                         let mut extra = Vec::new();
-                        let Some(weight) = self.term(&e.weight, &mut vars, &mut extra) else {
+                        let cost = (&e.weight, e.priority.as_ref(), &e.terms[..]);
+                        let Some(kind) =
+                            self.minimize_kind(cost, o.maximize, &mut vars, &mut extra)
+                        else {
                             continue;
                         };
-                        let priority = match &e.priority {
-                            Some(p) => self.term(p, &mut vars, &mut extra),
-                            None => Some(NTerm::Sym(self.syms.int(0))),
-                        };
-                        let Some(priority) = priority else { continue };
-                        let mut terms = Vec::new();
-                        for t in &e.terms {
-                            if let Some(t) = self.term(t, &mut vars, &mut extra) {
-                                terms.push(t);
-                            }
-                        }
                         if self.condition(&cond, &mut vars, &mut out).is_none() {
                             continue;
                         }
                         out.append(&mut extra);
-                        let kind = NKind::Minimize {
-                            weight,
-                            priority,
-                            terms,
-                            maximize: o.maximize,
-                        };
                         self.finish(index, e.span, NHead::None, out, kind, vars);
                     }
                 }
