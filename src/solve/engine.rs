@@ -6,8 +6,8 @@
 //! vectors, long clauses in one `Vec<u32>` arena with a three-word header, binary clauses only in
 //! the watch lists. Weight constraints `b <-> sum(w_i * l_i) >= k` are propagated natively with
 //! explanations stored per variable (clasp's weight constraints, AIJ 2012 section 6). An optional
-//! `Unfounded` propagator (source-free greatest-unfounded-set check) runs at every propagation
-//! fixpoint and contributes loop nogoods as learnt clauses.
+//! `Unfounded` propagator (source pointers) runs at every propagation fixpoint on the trail
+//! segment assigned since its previous run and contributes loop nogoods as learnt clauses.
 //!
 //! Invariants:
 //! - The first two literals of every long clause are its watched literals; when a clause is the
@@ -368,6 +368,11 @@ impl Engine {
         self.trail_lim.len() as u32
     }
 
+    /// The assigned literals in order (the unfounded-set propagator reads what changed).
+    pub fn trail(&self) -> &[Lit] {
+        &self.trail
+    }
+
     /// The decision level at which the variable of `l` was assigned.
     pub fn level_of(&self, l: Lit) -> u32 {
         self.level[l.var().index()]
@@ -554,6 +559,14 @@ impl Engine {
             self.assign(l, Reason::Decision);
             return false;
         }
+        if self.val(lits[0]) == 0 && self.val(lits[1]) == -1 {
+            // Asserting: imply lits[0] at the level where the clause became unit, so the
+            // implication survives backtracking above that level (the watches stay valid).
+            let level = self.level[lits[1].var().index()];
+            if level < self.decision_level() {
+                self.backtrack(level);
+            }
+        }
         let reason = self.attach(lits, learnt, lits.len() as u32);
         let (v0, v1) = (self.val(lits[0]), self.val(lits[1]));
         if v0 == -1 {
@@ -657,11 +670,13 @@ impl Engine {
                 return None;
             }
             let mut uf = self.unfounded.take().expect("checked above");
-            let nogoods = uf.check(self);
+            let nogoods = uf.check(self, start);
             self.unfounded = Some(uf);
+            // The propagator has seen everything up to here; the nogoods' own assignments
+            // (and a backjump they may cause) start the next segment.
+            self.uf_clean_upto = self.trail.len();
+            self.uf_dirty = false;
             if nogoods.is_empty() {
-                self.uf_clean_upto = self.trail.len();
-                self.uf_dirty = false;
                 return None;
             }
             for mut ng in nogoods {

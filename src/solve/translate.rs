@@ -287,10 +287,12 @@ impl Translation {
         });
         let mut local = vec![u32::MAX; n];
         let mut atom_lits = Vec::new();
+        let mut components = Vec::new();
         for a in 0..n {
             if cyclic[a] && !self.free[a] {
                 local[a] = atom_lits.len() as u32;
                 atom_lits.push(self.atom_lit[a]);
+                components.push(comp[a]);
             }
         }
         if atom_lits.is_empty() {
@@ -342,7 +344,7 @@ impl Translation {
                 });
             }
         }
-        e.set_unfounded(Some(Unfounded::new(atom_lits, sups)));
+        e.set_unfounded(Some(Unfounded::new(atom_lits, components, sups)));
     }
 }
 

@@ -1,25 +1,51 @@
-//! Unfounded-set propagation for non-tight programs (Gebser, Kaufmann, Schaub, "Conflict-driven
-//! answer set solving: from theory to practice", AIJ 2012, section 5).
+//! Unfounded-set propagation with source pointers for non-tight programs (Gebser, Kaufmann,
+//! Schaub, "Conflict-driven answer set solving: from theory to practice", AIJ 2012, section 5,
+//! algorithm `UnfoundedSet`; clasp's `DefaultUnfoundedCheck` follows the same idea).
 //!
-//! At every propagation fixpoint we compute the greatest unfounded set among the *cyclic* atoms
-//! (those in a non-trivial strongly connected component of the positive dependency graph): a
-//! least fixpoint marks an atom founded when one of its supports is not false and every cyclic
-//! atom of the support's positive body is already founded (for weight bodies: the founded or
-//! non-cyclic, non-false literals reach the bound). Non-false cyclic atoms left unfounded form a
-//! set `U`; for each `a` in `U` we return the loop nogood `a -> external supports of U`, written
-//! as a clause whose other literals are all false, so it propagates `not a`.
+//! Every *cyclic* atom (in a non-trivial strongly connected component of the positive dependency
+//! graph) keeps a *source pointer*: one of its supports whose body was, when chosen, not false
+//! and whose positive atoms of the same component all had sources themselves (for a weight body:
+//! the non-false literals outside the component plus the sourced atoms inside reached the bound).
+//! Source pointers are never undone on backtracking: backtracking only makes literals less
+//! false, so a valid source stays valid.
 //!
-//! Invariants: the check runs only when unit propagation is at a fixpoint, so a support literal
-//! that is not false has no false positive body atom; every support literal of an external
-//! support of `U` is therefore false (the argument of AIJ 2012, Proposition 5.3). For
-//! non-head-cycle-free programs supports use the rule body only (a weaker but sound nogood);
-//! minimality is then checked separately.
+//! At a propagation fixpoint the check looks only at what changed since the previous check (the
+//! trail segment the engine passes in):
+//! 1. atoms whose source became invalid (its literal, or for a weight source any of its
+//!    literals, became false) and that are not false themselves form the set `S`;
+//! 2. `S` is closed under "my source's body contains an atom of `S` of my component";
+//! 3. support is propagated forward inside `S` (least fixpoint): an atom of `S` with a support
+//!    that is not false and has no same-component positive atom still in `S` gets that support
+//!    as its new source and leaves `S`;
+//! 4. what remains of `S` is unfounded. Split by component, each part `U` gets, per atom `a`,
+//!    the loop nogood `a -> external supports of U`, written as a clause whose other literals
+//!    are all false, so it propagates `not a`.
 //!
-//! This is a source-pointer-free variant: simpler to trust, linear in the cyclic part per
-//! fixpoint.
+//! Invariants:
+//! - The source graph (atom -> same-component atoms its source counted) is acyclic: a source is
+//!   only chosen among atoms outside `S`, and `S` is closed under dependence, so no chosen source
+//!   can depend on the atom it is chosen for. A weight source counts only the atoms that were
+//!   sourced and non-false when it was chosen, and any later loss among its literals or atoms
+//!   invalidates it (step 1/2), so what it counted stays true of it.
+//! - After a check, every non-false cyclic atom has a valid source, except the atoms the check
+//!   just returned nogoods for. Hence, with all propagation at a fixpoint, the assignment is
+//!   unfounded-free (AIJ 2012, Theorem 5.4).
+//! - The trail segment of one check lies at one decision level, so an atom that was false (and
+//!   skipped) when its source was invalidated is unassigned again only after that invalidation
+//!   was undone as well.
+//! - Atoms that never had a source (before the first check) sit in `no_source` and are tried at
+//!   every check until they get one or are false at level 0.
+//! - For non-head-cycle-free programs supports use the rule body only (a weaker but sound
+//!   nogood); minimality is then checked separately.
+//!
+//! Cost: a check with no invalidated source touches only the watch lists of the newly false
+//! literals. Weight bodies in recursive components are handled natively (no fallback).
 
 use super::engine::Engine;
 use super::lit::Lit;
+
+/// Marks an atom without a source pointer.
+const NONE: u32 = u32::MAX;
 
 /// One way for a cyclic atom to be supported.
 #[derive(Clone, Debug)]
@@ -35,10 +61,12 @@ pub struct Support {
 /// The body of a support, as far as foundedness is concerned.
 #[derive(Clone, Debug)]
 pub enum SupportBody {
-    /// A conjunction: local indices of its positive cyclic atoms.
+    /// A conjunction: local indices of its positive cyclic atoms (`Unfounded::new` keeps those
+    /// of the head's component).
     Normal(Vec<u32>),
     /// A weight body: literals with positive weights and the local index of the literal's atom
-    /// when it is a positive cyclic atom.
+    /// when it is a positive cyclic atom (`Unfounded::new` keeps it only in the head's
+    /// component).
     Weight {
         /// The lower bound.
         bound: u64,
@@ -47,38 +75,69 @@ pub enum SupportBody {
     },
 }
 
-/// The unfounded-set propagator's program view.
+/// The unfounded-set propagator's program view and its source pointers.
 #[derive(Clone, Debug, Default)]
 pub struct Unfounded {
     /// Literal of each cyclic atom (local index).
     pub atom_lit: Vec<Lit>,
+    /// Per cyclic atom: its strongly connected component.
+    pub component: Vec<u32>,
     /// Per cyclic atom: indices of its supports.
     pub supports_of: Vec<Vec<u32>>,
-    /// Per cyclic atom: supports whose body has it as a positive cyclic atom.
+    /// Per cyclic atom: supports of atoms of its component whose body has it as a positive
+    /// atom (each support once).
     pub occurs: Vec<Vec<u32>>,
     /// All supports of cyclic atoms.
     pub supports: Vec<Support>,
-    /// Scratch: per atom, founded flag.
-    founded: Vec<bool>,
-    /// Scratch: per support, count of unfounded positive cyclic atoms.
+    /// Per literal code: supports whose validity is lost when that literal becomes false (the
+    /// support literal; for weight bodies also every weighted literal).
+    watch: Vec<Vec<u32>>,
+    /// Per atom: its source (a support index), or `NONE`.
+    source: Vec<u32>,
+    /// Atoms that never had a source.
+    no_source: Vec<u32>,
+    /// Scratch: per atom, membership in `S`.
+    in_s: Vec<bool>,
+    /// Scratch: per support, count of positive same-component atoms in `S`.
     count: Vec<u32>,
+    /// Scratch: the atoms put in `S` by the current check.
+    s_list: Vec<u32>,
+    /// Scratch: atoms that got a source and whose dependents must be rechecked.
+    queue: Vec<u32>,
+    /// Statistics: checks that found an invalidated source.
+    pub checks: u64,
 }
 
 impl Unfounded {
-    /// Builds the propagator; `supports` must refer to atoms `0..atom_lit.len()`.
-    pub fn new(atom_lit: Vec<Lit>, mut supports: Vec<Support>) -> Unfounded {
+    /// Builds the propagator; `supports` must refer to atoms `0..atom_lit.len()` and
+    /// `component` gives each atom's strongly connected component. Positive atoms of other
+    /// components are dropped from the bodies: they are founded or unfounded on their own.
+    pub fn new(atom_lit: Vec<Lit>, component: Vec<u32>, mut supports: Vec<Support>) -> Unfounded {
         let n = atom_lit.len();
-        // Counting requires each positive cyclic atom once per body.
+        assert_eq!(component.len(), n, "one component per cyclic atom");
         for s in supports.iter_mut() {
-            if let SupportBody::Normal(pos) = &mut s.body {
-                pos.sort_unstable();
-                pos.dedup();
+            let c = component[s.head as usize];
+            match &mut s.body {
+                SupportBody::Normal(pos) => {
+                    pos.retain(|&p| component[p as usize] == c);
+                    pos.sort_unstable();
+                    pos.dedup();
+                }
+                SupportBody::Weight { lits, .. } => {
+                    for (_, _, at) in lits.iter_mut() {
+                        if at.is_some_and(|a| component[a as usize] != c) {
+                            *at = None;
+                        }
+                    }
+                }
             }
         }
         let mut supports_of = vec![Vec::new(); n];
         let mut occurs = vec![Vec::new(); n];
+        let mut max_code = 0usize;
         for (i, s) in supports.iter().enumerate() {
             supports_of[s.head as usize].push(i as u32);
+            max_code = max_code.max(s.lit.code());
             match &s.body {
                 SupportBody::Normal(pos) => {
                     for &p in pos {
@@ -86,7 +145,8 @@ impl Unfounded {
                     }
                 }
                 SupportBody::Weight { lits, .. } => {
-                    for &(_, _, a) in lits {
+                    for &(l, _, a) in lits {
+                        max_code = max_code.max(l.code());
                         if let Some(a) = a {
                             occurs[a as usize].push(i as u32);
                         }
@@ -98,14 +158,34 @@ impl Unfounded {
             o.sort_unstable();
             o.dedup();
         }
+        let mut watch = vec![Vec::new(); max_code + 1];
+        for (i, s) in supports.iter().enumerate() {
+            watch[s.lit.code()].push(i as u32);
+            if let SupportBody::Weight { lits, .. } = &s.body {
+                for &(l, _, _) in lits {
+                    watch[l.code()].push(i as u32);
+                }
+            }
+        }
+        for w in watch.iter_mut() {
+            w.sort_unstable();
+            w.dedup();
+        }
         let count = vec![0; supports.len()];
         Unfounded {
             atom_lit,
+            component,
             supports_of,
             occurs,
             supports,
-            founded: vec![false; n],
+            watch,
+            source: vec![NONE; n],
+            no_source: (0..n as u32).collect(),
+            in_s: vec![false; n],
             count,
+            s_list: Vec::new(),
+            queue: Vec::new(),
+            checks: 0,
         }
     }
 
@@ -124,122 +204,208 @@ impl Unfounded {
         v
     }
 
-    fn weight_founded(&self, e: &Engine, s: &Support) -> bool {
+    /// The current source of a cyclic atom (local index): a support index, if it has one.
+    pub fn source(&self, atom: u32) -> Option<u32> {
+        match self.source[atom as usize] {
+            NONE => None,
+            s => Some(s),
+        }
+    }
+
+    fn is_false(e: &Engine, l: Lit) -> bool {
+        e.value(l) == Some(false)
+    }
+
+    /// Puts atom `a` into `S` unless it is there already or false.
+    fn enter(&mut self, e: &Engine, a: u32) {
+        let au = a as usize;
+        if !self.in_s[au] && !Self::is_false(e, self.atom_lit[au]) {
+            self.in_s[au] = true;
+            self.s_list.push(a);
+        }
+    }
+
+    /// Whether support `si` can be (re)chosen as a source now: its literal is not false and it
+    /// does not depend on an atom of `S`.
+    fn eligible(&self, e: &Engine, si: usize) -> bool {
+        let s = &self.supports[si];
+        if Self::is_false(e, s.lit) {
+            return false;
+        }
         match &s.body {
+            SupportBody::Normal(_) => self.count[si] == 0,
             SupportBody::Weight { bound, lits } => {
-                if *bound == 0 {
-                    return true;
-                }
                 let mut sum = 0u64;
-                for &(l, w, a) in lits {
-                    if e.value(l) == Some(false) {
+                for &(l, w, at) in lits {
+                    if Self::is_false(e, l) || at.is_some_and(|a| self.in_s[a as usize]) {
                         continue;
-                    }
-                    if let Some(a) = a {
-                        if !self.founded[a as usize] {
-                            continue;
-                        }
                     }
                     sum += w;
                     if sum >= *bound {
                         return true;
                     }
                 }
-                false
+                *bound == 0
             }
-            SupportBody::Normal(_) => false,
         }
     }
 
-    /// Computes loop nogoods for the greatest unfounded set under the current assignment; empty
-    /// when every non-false cyclic atom is founded.
+    /// Makes `si` the source of its head, which leaves `S`; dependents are rechecked later.
+    fn take_source(&mut self, si: usize) {
+        let h = self.supports[si].head;
+        self.source[h as usize] = si as u32;
+        self.in_s[h as usize] = false;
+        self.queue.push(h);
+    }
+
+    /// Processes the assignments `trail[start..]` made since the previous check and returns
+    /// loop nogoods for the unfounded atoms found (empty when every non-false cyclic atom still
+    /// has a valid source). Must be called at a unit-propagation fixpoint.
     #[inline(never)]
-    pub fn check(&mut self, e: &Engine) -> Vec<Vec<Lit>> {
-        let n = self.atom_lit.len();
-        self.founded.clear();
-        self.founded.resize(n, false);
-        let mut queue: Vec<u32> = Vec::new();
-        for (i, s) in self.supports.iter().enumerate() {
-            if let SupportBody::Normal(pos) = &s.body {
-                self.count[i] = pos.len() as u32;
-            }
-        }
-        for i in 0..self.supports.len() {
-            let s = &self.supports[i];
-            let h = s.head as usize;
-            if self.founded[h]
-                || e.value(s.lit) == Some(false)
-                || e.value(self.atom_lit[h]) == Some(false)
-            {
+    pub fn check(&mut self, e: &Engine, start: usize) -> Vec<Vec<Lit>> {
+        debug_assert!(self.s_list.is_empty() && self.queue.is_empty());
+        // 1. Sources invalidated by newly false literals.
+        let trail = e.trail();
+        for &t in &trail[start.min(trail.len())..] {
+            let f = (!t).code();
+            if f >= self.watch.len() {
                 continue;
             }
-            let ok = match &s.body {
-                SupportBody::Normal(_) => self.count[i] == 0,
-                SupportBody::Weight { .. } => self.weight_founded(e, s),
-            };
-            if ok {
-                self.founded[h] = true;
-                queue.push(h as u32);
-            }
-        }
-        while let Some(x) = queue.pop() {
-            for k in 0..self.occurs[x as usize].len() {
-                let si = self.occurs[x as usize][k] as usize;
-                let h = self.supports[si].head as usize;
-                if let SupportBody::Normal(_) = self.supports[si].body {
-                    self.count[si] -= 1;
-                }
-                if self.founded[h] || e.value(self.supports[si].lit) == Some(false) {
-                    continue;
-                }
-                let ok = match &self.supports[si].body {
-                    SupportBody::Normal(_) => self.count[si] == 0,
-                    SupportBody::Weight { .. } => self.weight_founded(e, &self.supports[si]),
-                };
-                if ok {
-                    self.founded[h] = true;
-                    queue.push(h as u32);
+            for k in 0..self.watch[f].len() {
+                let si = self.watch[f][k];
+                let h = self.supports[si as usize].head;
+                if self.source[h as usize] == si {
+                    self.enter(e, h);
                 }
             }
         }
-        let unfounded: Vec<usize> = (0..n)
-            .filter(|&a| !self.founded[a] && e.value(self.atom_lit[a]) != Some(false))
-            .collect();
-        if unfounded.is_empty() {
+        // Atoms that never had a source; those false at level 0 stay false.
+        if !self.no_source.is_empty() {
+            let mut list = std::mem::take(&mut self.no_source);
+            list.retain(|&a| {
+                let l = self.atom_lit[a as usize];
+                self.source[a as usize] == NONE && !(Self::is_false(e, l) && e.level_of(l) == 0)
+            });
+            for &a in &list {
+                self.enter(e, a);
+            }
+            self.no_source = list;
+        }
+        if self.s_list.is_empty() {
             return Vec::new();
         }
-        let mut in_u = vec![false; n];
-        for &a in &unfounded {
-            in_u[a] = true;
+        self.checks += 1;
+        // 2. Close `S` under dependence of sources.
+        let mut i = 0;
+        while i < self.s_list.len() {
+            let x = self.s_list[i] as usize;
+            i += 1;
+            for k in 0..self.occurs[x].len() {
+                let si = self.occurs[x][k];
+                let h = self.supports[si as usize].head;
+                if self.source[h as usize] == si {
+                    self.enter(e, h);
+                }
+            }
         }
-        // External supports of U, each as a false literal.
+        // 3. Forward propagation of support inside `S`.
+        for i in 0..self.s_list.len() {
+            let x = self.s_list[i] as usize;
+            for &si in &self.occurs[x] {
+                self.count[si as usize] += 1;
+            }
+        }
+        for i in 0..self.s_list.len() {
+            let p = self.s_list[i] as usize;
+            if !self.in_s[p] {
+                continue;
+            }
+            for k in 0..self.supports_of[p].len() {
+                let si = self.supports_of[p][k] as usize;
+                if self.eligible(e, si) {
+                    self.take_source(si);
+                    break;
+                }
+            }
+            while let Some(x) = self.queue.pop() {
+                for k in 0..self.occurs[x as usize].len() {
+                    let si = self.occurs[x as usize][k] as usize;
+                    self.count[si] -= 1;
+                    let h = self.supports[si].head as usize;
+                    if self.in_s[h] && self.eligible(e, si) {
+                        self.take_source(si);
+                    }
+                }
+            }
+        }
+        for i in 0..self.s_list.len() {
+            let x = self.s_list[i] as usize;
+            for &si in &self.occurs[x] {
+                self.count[si as usize] = 0;
+            }
+        }
+        // 4. What is left is unfounded; one nogood per atom, per component.
+        let mut unfounded: Vec<u32> = self
+            .s_list
+            .iter()
+            .copied()
+            .filter(|&a| self.in_s[a as usize])
+            .collect();
+        let nogoods = if unfounded.is_empty() {
+            Vec::new()
+        } else {
+            unfounded.sort_unstable_by_key(|&a| (self.component[a as usize], a));
+            let mut out = Vec::new();
+            for part in unfounded
+                .chunk_by(|a, b| self.component[*a as usize] == self.component[*b as usize])
+            {
+                let ext = self.external(e, part);
+                for &a in part {
+                    let mut c = Vec::with_capacity(ext.len() + 1);
+                    c.push(!self.atom_lit[a as usize]);
+                    c.extend_from_slice(&ext);
+                    out.push(c);
+                }
+            }
+            out
+        };
+        for &a in &self.s_list {
+            self.in_s[a as usize] = false;
+        }
+        self.s_list.clear();
+        nogoods
+    }
+
+    /// The external supports of `part` (atoms of one component, all in `S`), each as a false
+    /// literal whose truth would let some support of `part` hold without `part`.
+    fn external(&self, e: &Engine, part: &[u32]) -> Vec<Lit> {
         let mut ext: Vec<Lit> = Vec::new();
-        for &a in &unfounded {
-            for &si in &self.supports_of[a] {
+        for &a in part {
+            for &si in &self.supports_of[a as usize] {
                 let s = &self.supports[si as usize];
                 match &s.body {
                     SupportBody::Normal(pos) => {
-                        if pos.iter().all(|&p| !in_u[p as usize]) {
-                            debug_assert_eq!(e.value(s.lit), Some(false));
+                        if pos.iter().all(|&p| !self.in_s[p as usize]) {
+                            debug_assert!(Self::is_false(e, s.lit));
                             ext.push(s.lit);
                         }
                     }
                     SupportBody::Weight { bound, lits } => {
                         let outside: u64 = lits
                             .iter()
-                            .filter(|&&(_, _, at)| at.is_none_or(|x| !in_u[x as usize]))
+                            .filter(|&&(_, _, at)| at.is_none_or(|x| !self.in_s[x as usize]))
                             .map(|&(_, w, _)| w)
                             .sum();
                         if outside < *bound {
                             continue;
                         }
-                        if e.value(s.lit) == Some(false) {
+                        if Self::is_false(e, s.lit) {
                             ext.push(s.lit);
                         } else {
-                            // The body cannot reach its bound without U unless one of these
-                            // currently false literals becomes true.
+                            // The body cannot reach its bound without the part unless one of
+                            // these currently false literals becomes true.
                             for &(l, _, at) in lits {
-                                if at.is_none_or(|x| !in_u[x as usize]) && e.value(l) == Some(false)
+                                if at.is_none_or(|x| !self.in_s[x as usize]) && Self::is_false(e, l)
                                 {
                                     ext.push(l);
                                 }
@@ -251,14 +417,6 @@ impl Unfounded {
         }
         ext.sort_unstable();
         ext.dedup();
-        unfounded
-            .iter()
-            .map(|&a| {
-                let mut c = Vec::with_capacity(ext.len() + 1);
-                c.push(!self.atom_lit[a]);
-                c.extend_from_slice(&ext);
-                c
-            })
-            .collect()
+        ext
     }
 }
