@@ -1466,13 +1466,32 @@ impl<'a> Grounder<'a> {
                 let Some(s) = self.atom_sym(a, &ctx.binding) else {
                     return;
                 };
+                let Some(v) = self.eval(value, &ctx.binding) else {
+                    return;
+                };
+                // Any other value leaves the instance out, as clingo 5.8.3 does, silently.
+                let value = match self.syms.get(v) {
+                    SymData::Fun {
+                        name,
+                        len: 0,
+                        neg: false,
+                        ..
+                    } => match self.syms.names.resolve(name) {
+                        "true" => ExternalValue::True,
+                        "false" => ExternalValue::False,
+                        "free" => ExternalValue::Free,
+                        "release" => ExternalValue::Release,
+                        _ => return,
+                    },
+                    _ => return,
+                };
                 let id = self.atom_of(s, a.pred);
                 if self.info(id).fact {
                     return;
                 }
                 self.derive(id);
                 if !self.externals.iter().any(|(x, _)| *x == id) {
-                    self.externals.push((id, *value));
+                    self.externals.push((id, value));
                 }
             }
             NKind::Heuristic {

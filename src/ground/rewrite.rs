@@ -24,7 +24,6 @@ use crate::syntax::ast::{self, AggregateFunction, CmpOp, Sign, TermKind};
 use super::symbol::{SymId, Symbols};
 use super::term::NTerm;
 use crate::base::intern::Sym;
-use crate::ground::program::ExternalValue;
 
 /// Index of a predicate signature in [`Compiled::preds`].
 pub type PredId = u32;
@@ -203,7 +202,7 @@ pub enum NKind {
     /// `#project a : body.`
     Project(NAtom),
     /// `#external a : body. [v]`
-    External(NAtom, ExternalValue),
+    External(NAtom, NTerm),
     /// `#heuristic a : body. [w@p, m]`
     Heuristic {
         /// The atom.
@@ -1475,6 +1474,13 @@ impl<'a> Rewriter<'a> {
                             if self.body(&b, &mut vars, &mut out).is_none() {
                                 continue;
                             }
+                            // The atom ranges over its predicate's possible atoms and binds the
+                            // variables it alone has, as in gringo: `#project p(X).` projects
+                            // onto every p/1 atom.
+                            out.push(NLit::Pred {
+                                sign: Sign::Positive,
+                                atom: a.clone(),
+                            });
                             out.append(&mut extra);
                             self.finish(index, st.span, NHead::None, out, NKind::Project(a), vars);
                         }
@@ -1482,20 +1488,6 @@ impl<'a> Rewriter<'a> {
                 }
             },
             K::External(e) => {
-                let value = match e.value.as_ref().map(|t| &t.kind) {
-                    None => ExternalValue::False,
-                    Some(TermKind::Constant(c)) if c == "false" => ExternalValue::False,
-                    Some(TermKind::Constant(c)) if c == "true" => ExternalValue::True,
-                    Some(TermKind::Constant(c)) if c == "free" => ExternalValue::Free,
-                    Some(TermKind::Constant(c)) if c == "release" => ExternalValue::Release,
-                    Some(_) => {
-                        self.diags.push(Diagnostic::error(
-                            st.span,
-                            "external value must be one of true, false, free, release",
-                        ));
-                        return;
-                    }
-                };
                 for a in unpool_atom(&e.atom) {
                     for b in unpool_body(&e.body) {
                         let mut vars = Vars::default();
@@ -1503,6 +1495,14 @@ impl<'a> Rewriter<'a> {
                         let mut extra = Vec::new();
                         let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
                             continue;
+                        };
+                        // The value is a term of the instance (`[X]`); omitted, it is false.
+                        let value = match &e.value {
+                            Some(t) => match self.term(t, &mut vars, &mut extra) {
+                                Some(v) => v,
+                                None => continue,
+                            },
+                            None => NTerm::Sym(self.syms.fun_str("false", false, &[])),
                         };
                         if self.body(&b, &mut vars, &mut out).is_none() {
                             continue;
@@ -1916,8 +1916,10 @@ impl<'a> Rewriter<'a> {
                 mark(priority, &mut global);
                 terms.iter().for_each(|t| mark(t, &mut global));
             }
-            NKind::Project(a) | NKind::External(a, _) => {
-                a.args.iter().for_each(|t| mark(t, &mut global))
+            NKind::Project(a) => a.args.iter().for_each(|t| mark(t, &mut global)),
+            NKind::External(a, value) => {
+                a.args.iter().for_each(|t| mark(t, &mut global));
+                mark(value, &mut global);
             }
             NKind::Heuristic {
                 atom,
