@@ -1021,6 +1021,21 @@ impl<'a> Grounder<'a> {
                     };
                 };
                 let k = k as i64;
+                // Over atoms still being grounded, a sum whose uncertain weights are all
+                // negative is read as `-sum op' -k` with positive weights, so that `<=` stays
+                // the monotone comparison it is (a positive dependency), as gringo does.
+                if recursive && self.all_negative(elems) {
+                    let flipped: Vec<(SymId, Vec<Vec<Lit>>)> = elems
+                        .iter()
+                        .map(|(w, c)| {
+                            let n = self.syms.num(*w).unwrap_or(0);
+                            (self.syms.int(n.wrapping_neg()), c.clone())
+                        })
+                        .collect();
+                    let nk = self.syms.int((-k) as i32);
+                    let op = super::rewrite::flip_cmp(op);
+                    return self.guard_truth(func, &flipped, op, nk, recursive);
+                }
                 // `!=` at an end of the possible sums is one-sided: keep it monotone (a
                 // positive dependency) rather than the negation of `=`.
                 let (lo, hi) = self.sum_range(elems);
@@ -1128,6 +1143,20 @@ impl<'a> Grounder<'a> {
             Origin::default,
         );
         Truth::Lits(vec![a as Lit])
+    }
+
+    /// True when some uncertain weight is negative and none is positive.
+    fn all_negative(&self, elems: &[(SymId, Vec<Vec<Lit>>)]) -> bool {
+        let signs = |pos: bool| {
+            elems.iter().any(|(w, c)| {
+                !c.is_empty()
+                    && self
+                        .syms
+                        .num(*w)
+                        .is_some_and(|n| if pos { n > 0 } else { n < 0 })
+            })
+        };
+        signs(false) && !signs(true)
     }
 
     /// The least and the greatest sum the elements can take.
