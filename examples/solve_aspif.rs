@@ -3,10 +3,12 @@
 //! the real command line is `lucent --mode=clasp`.
 //!
 //! Usage: `solve_aspif [-n N] [--opt-mode=opt|optN|enum[,B..]|ignore]
-//! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [--parallel-mode=N] [-q] [FILE]`.
+//! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [--parallel-mode=N]
+//! [--init-moms|--no-init-moms] [--vsids-decay=X] [--restarts=L,N|glucose|no] [-q] [FILE]`;
+//! the last three override the solver's search defaults, for tuning experiments.
 
 use lucent::ground::aspif;
-use lucent::solve::{Config, CrMode, EnumMode, OptMode, Outcome, Solver};
+use lucent::solve::{Config, CrMode, EnumMode, OptMode, Outcome, RestartPolicy, Solver};
 use std::io::Read;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
@@ -56,6 +58,16 @@ fn main() -> ExitCode {
                 .next()
                 .and_then(|n| n.parse().ok())
                 .unwrap_or(1);
+        } else if a == "--init-moms" || a == "--no-init-moms" {
+            config.init_moms = a == "--init-moms";
+        } else if let Some(v) = a.strip_prefix("--vsids-decay=") {
+            config.var_decay = v.parse().unwrap_or(config.var_decay);
+        } else if let Some(v) = a.strip_prefix("--restarts=") {
+            config.restarts = match v.split_once(',') {
+                Some(("L", u)) => RestartPolicy::Luby(u.parse().unwrap_or(100)),
+                _ if v == "no" => RestartPolicy::Never,
+                _ => RestartPolicy::Glucose,
+            };
         } else if a == "-q" {
             quiet = true;
         } else {
@@ -133,6 +145,10 @@ fn main() -> ExitCode {
     }
     println!("Choices      : {}", result.stats.choices);
     println!("Conflicts    : {}", result.stats.conflicts);
+    println!("Restarts     : {}", result.stats.restarts);
+    println!("Propagations : {}", result.stats.propagations);
+    println!("Variables    : {}", result.stats.vars);
+    println!("Constraints  : {}", result.stats.clauses);
     println!("Time         : {:.3}s", start.elapsed().as_secs_f64());
     ExitCode::from(match result.outcome {
         Outcome::Unknown => 1,

@@ -246,12 +246,11 @@ pub fn write(aspif: &Aspif) -> String {
 /// Writes a program as a single-step aspif file in the canonical layout (see
 /// [`AspifStep::from_program`]).
 pub fn write_program(program: &GroundProgram) -> String {
-    let aspif = Aspif {
-        version: (1, 0, 0),
-        tags: Vec::new(),
-        steps: vec![AspifStep::from_program(program.clone())],
-    };
-    write(&aspif)
+    // The program is borrowed, not copied into an `Aspif`: ground programs can be large.
+    let mut out = Vec::with_capacity(1 << 12);
+    out.extend_from_slice(b"asp 1 0 0\n");
+    write_statements(&mut out, program, &[], &canonical_layout(program));
+    String::from_utf8(out).expect("aspif writer produced UTF-8 from UTF-8 parts")
 }
 
 impl AspifStep {
@@ -260,38 +259,43 @@ impl AspifStep {
     /// theory lines, then the CR comments and, when there are CR rules, the CR minimize at a
     /// priority one above the highest user priority (0 without user minimize statements).
     pub fn from_program(program: GroundProgram) -> AspifStep {
-        let mut layout = Vec::new();
-        let idx = |n: usize| 0..n as u32;
-        layout.extend(idx(program.rules.len()).map(Stmt::Rule));
-        layout.extend(idx(program.minimize.len()).map(Stmt::Minimize));
-        if !program.projections.is_empty() {
-            layout.push(Stmt::Project {
-                start: 0,
-                len: program.projections.len() as u32,
-            });
-        }
-        layout.extend(idx(program.outputs.len()).map(Stmt::Output));
-        layout.extend(idx(program.externals.len()).map(Stmt::External));
-        if !program.assumptions.is_empty() {
-            layout.push(Stmt::Assume {
-                start: 0,
-                len: program.assumptions.len() as u32,
-            });
-        }
-        layout.extend(idx(program.heuristics.len()).map(Stmt::Heuristic));
-        layout.extend(idx(program.edges.len()).map(Stmt::Edge));
-        layout.extend(idx(program.theory.len()).map(Stmt::Theory));
-        layout.extend(idx(program.cr_rules.len()).map(Stmt::CrRule));
-        layout.extend(idx(program.prefers.len()).map(Stmt::Prefer));
-        if !program.cr_rules.is_empty() {
-            layout.push(Stmt::CrMinimize(cr_priority(&program)));
-        }
         AspifStep {
+            layout: canonical_layout(&program),
             program,
             comments: Vec::new(),
-            layout,
         }
     }
+}
+
+/// The statements of `program` in the canonical layout (see [`AspifStep::from_program`]).
+fn canonical_layout(program: &GroundProgram) -> Vec<Stmt> {
+    let mut layout = Vec::new();
+    let idx = |n: usize| 0..n as u32;
+    layout.extend(idx(program.rules.len()).map(Stmt::Rule));
+    layout.extend(idx(program.minimize.len()).map(Stmt::Minimize));
+    if !program.projections.is_empty() {
+        layout.push(Stmt::Project {
+            start: 0,
+            len: program.projections.len() as u32,
+        });
+    }
+    layout.extend(idx(program.outputs.len()).map(Stmt::Output));
+    layout.extend(idx(program.externals.len()).map(Stmt::External));
+    if !program.assumptions.is_empty() {
+        layout.push(Stmt::Assume {
+            start: 0,
+            len: program.assumptions.len() as u32,
+        });
+    }
+    layout.extend(idx(program.heuristics.len()).map(Stmt::Heuristic));
+    layout.extend(idx(program.edges.len()).map(Stmt::Edge));
+    layout.extend(idx(program.theory.len()).map(Stmt::Theory));
+    layout.extend(idx(program.cr_rules.len()).map(Stmt::CrRule));
+    layout.extend(idx(program.prefers.len()).map(Stmt::Prefer));
+    if !program.cr_rules.is_empty() {
+        layout.push(Stmt::CrMinimize(cr_priority(program)));
+    }
+    layout
 }
 
 /// The priority of the CR minimize statement: one above every user priority.
@@ -305,8 +309,12 @@ pub fn cr_priority(program: &GroundProgram) -> Weight {
 }
 
 fn write_step(out: &mut Vec<u8>, step: &AspifStep) {
-    let p = &step.program;
-    for stmt in &step.layout {
+    write_statements(out, &step.program, &step.comments, &step.layout);
+}
+
+/// Writes the statements of `layout` over `p` and `comments`, then the step's closing `0`.
+fn write_statements(out: &mut Vec<u8>, p: &GroundProgram, comments: &[String], layout: &[Stmt]) {
+    for stmt in layout {
         match *stmt {
             Stmt::Rule(i) => {
                 let rule = &p.rules[i as usize];
@@ -383,7 +391,7 @@ fn write_step(out: &mut Vec<u8>, step: &AspifStep) {
                 out.extend_from_slice(line.as_bytes());
             }
             Stmt::Comment(i) => {
-                let text = &step.comments[i as usize];
+                let text = &comments[i as usize];
                 assert!(
                     !text.contains('\n'),
                     "an aspif comment must not contain a newline"

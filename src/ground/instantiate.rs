@@ -57,12 +57,15 @@ pub struct AtomInfo {
 }
 
 /// Index of a predicate's atoms on a set of bound argument positions.
-#[derive(Default)]
 struct Index {
+    /// The bound positions (bit `i` for argument `i`).
+    mask: u64,
     /// Atoms `[0, upto)` of the domain list are indexed.
     upto: usize,
-    /// Key: the values at the bound positions; value: domain positions, increasing.
-    map: HashMap<SmallVec<[SymId; 4]>, Vec<u32>>,
+    /// Key: the values at the bound positions; value: its group in `groups`.
+    map: HashMap<SmallVec<[SymId; 4]>, u32>,
+    /// Domain positions of each key, increasing (append-only).
+    groups: Vec<Vec<u32>>,
 }
 
 /// The atoms of one predicate.
@@ -70,8 +73,8 @@ struct Index {
 struct Domain {
     /// Atoms in derivation order.
     atoms: Vec<AtomId>,
-    /// Indexes by bound-position mask.
-    indexes: HashMap<u64, Index>,
+    /// Indexes, one per bound-position mask (few per predicate, found by linear search).
+    indexes: Vec<Index>,
     /// All rules that can derive the predicate have been grounded.
     complete: bool,
     /// Semi-naive: positions below `old` were seen by every rule in all combinations.
@@ -87,8 +90,19 @@ type Range = (u32, u32);
 enum Candidates {
     /// Every position in `[lo, hi)`.
     Range(u32, u32),
-    /// These positions.
-    List(SmallVec<[u32; 16]>),
+    /// At most one position.
+    One(Option<u32>),
+    /// `groups[group][lo..hi]` of the predicate's index number `index`.
+    Group {
+        /// Index number in the domain.
+        index: u32,
+        /// Group in the index.
+        group: u32,
+        /// First entry.
+        lo: u32,
+        /// One past the last entry.
+        hi: u32,
+    },
 }
 
 /// Grounding limits, as values.
@@ -109,8 +123,8 @@ pub struct Grounder<'a> {
     pub syms: Symbols,
     /// Atom table, index `id - 1`.
     pub atoms: Vec<AtomInfo>,
-    /// Atom of each predicate-atom symbol.
-    atom_map: HashMap<SymId, AtomId>,
+    /// Atom of each predicate-atom symbol, by symbol id (0: none).
+    sym_atom: Vec<AtomId>,
     /// Domains, by predicate.
     domains: Vec<Domain>,
     /// Ground rules over internal ids.
@@ -119,6 +133,8 @@ pub struct Grounder<'a> {
     pub origins: Vec<Origin>,
     /// Deduplication of `rules`.
     rule_set: HashTable<u32>,
+    /// Hash of each rule in `rules` (so that growing `rule_set` does not rehash rules).
+    rule_hashes: Vec<u64>,
     /// Hasher for `rule_set`.
     hasher: hashbrown::DefaultHashBuilder,
     /// Diagnostics.
@@ -209,11 +225,12 @@ impl<'a> Grounder<'a> {
         Grounder {
             syms,
             atoms: Vec::new(),
-            atom_map: HashMap::new(),
+            sym_atom: Vec::new(),
             domains,
             rules: Vec::new(),
             origins: Vec::new(),
             rule_set: HashTable::new(),
+            rule_hashes: Vec::new(),
             hasher: hashbrown::DefaultHashBuilder::default(),
             diags,
             sources,
@@ -279,7 +296,7 @@ impl<'a> Grounder<'a> {
 
     /// The atom of a predicate-atom symbol, created outside the domain if new.
     pub fn atom_of(&mut self, sym: SymId, pred: PredId) -> AtomId {
-        if let Some(&a) = self.atom_map.get(&sym) {
+        if let Some(a) = self.find_atom(sym) {
             return a;
         }
         self.atoms.push(AtomInfo {
@@ -290,13 +307,20 @@ impl<'a> Grounder<'a> {
             dom_pos: 0,
         });
         let id = self.atoms.len() as AtomId;
-        self.atom_map.insert(sym, id);
+        let i = sym.0 as usize;
+        if i >= self.sym_atom.len() {
+            self.sym_atom.resize((i + 1).max(self.syms.len()), 0);
+        }
+        self.sym_atom[i] = id;
         id
     }
 
     /// The atom of a symbol, if it exists.
     pub fn find_atom(&self, sym: SymId) -> Option<AtomId> {
-        self.atom_map.get(&sym).copied()
+        match self.sym_atom.get(sym.0 as usize) {
+            Some(&a) if a != 0 => Some(a),
+            _ => None,
+        }
     }
 
     fn info(&self, a: AtomId) -> &AtomInfo {
@@ -339,16 +363,13 @@ impl<'a> Grounder<'a> {
         }
         let idx = self.rules.len() as u32;
         self.rules.push(rule);
+        self.rule_hashes.push(hash);
         if self.provenance {
             self.origins.push(origin());
         }
-        let Grounder {
-            rule_set,
-            rules,
-            hasher,
-            ..
-        } = self;
-        rule_set.insert_unique(hash, idx, |&i| hasher.hash_one(&rules[i as usize]));
+        let hashes = &self.rule_hashes;
+        self.rule_set
+            .insert_unique(hash, idx, |&i| hashes[i as usize]);
         self.check_size();
         self.since_check += 1;
         if self.since_check >= 4096 {
@@ -406,19 +427,31 @@ impl<'a> Grounder<'a> {
             return Some(Candidates::Range(range.0, range.1));
         }
         if key.len() == atom.args.len() {
-            // Every argument is known: look the atom up directly.
-            let sym = self.syms.fun(atom.name, atom.neg, &key);
-            let mut list = SmallVec::new();
-            if let Some(a) = self.find_atom(sym) {
-                let info = self.info(a);
-                if info.in_domain && info.dom_pos >= range.0 && info.dom_pos < range.1 {
-                    list.push(info.dom_pos);
-                }
-            }
-            return Some(Candidates::List(list));
+            // Every argument is known: look the atom up directly (an atom whose symbol was
+            // never created does not exist).
+            let found = self
+                .syms
+                .find_fun(atom.name, atom.neg, &key)
+                .and_then(|sym| self.find_atom(sym))
+                .map(|a| *self.info(a))
+                .filter(|info| info.in_domain && info.dom_pos >= range.0 && info.dom_pos < range.1)
+                .map(|info| info.dom_pos);
+            return Some(Candidates::One(found));
         }
         let d = &mut self.domains[atom.pred as usize];
-        let idx = d.indexes.entry(mask).or_default();
+        let slot = match d.indexes.iter().position(|x| x.mask == mask) {
+            Some(i) => i,
+            None => {
+                d.indexes.push(Index {
+                    mask,
+                    upto: 0,
+                    map: HashMap::new(),
+                    groups: Vec::new(),
+                });
+                d.indexes.len() - 1
+            }
+        };
+        let idx = &mut d.indexes[slot];
         // Extend the index to the atoms derived since it was last used.
         while idx.upto < d.atoms.len() {
             let a = d.atoms[idx.upto];
@@ -430,21 +463,34 @@ impl<'a> Grounder<'a> {
                 .filter(|&i| i < 64 && mask & (1 << i) != 0)
                 .map(|i| args[i])
                 .collect();
-            idx.map.entry(k).or_default().push(idx.upto as u32);
+            let groups = &mut idx.groups;
+            let g = *idx.map.entry(k).or_insert_with(|| {
+                groups.push(Vec::new());
+                groups.len() as u32 - 1
+            });
+            idx.groups[g as usize].push(idx.upto as u32);
             idx.upto += 1;
         }
-        let list = match idx.map.get(&key) {
-            Some(l) => l,
-            None => return Some(Candidates::List(SmallVec::new())),
+        let Some(&group) = idx.map.get(&key) else {
+            return Some(Candidates::One(None));
         };
-        let start = list.partition_point(|&p| p < range.0);
-        Some(Candidates::List(
-            list[start..]
-                .iter()
-                .copied()
-                .take_while(|&p| p < range.1)
-                .collect(),
-        ))
+        let list = &idx.groups[group as usize];
+        let lo = if range.0 == 0 {
+            0
+        } else {
+            list.partition_point(|&p| p < range.0)
+        };
+        let hi = if range.1 as usize >= d.atoms.len() {
+            list.len()
+        } else {
+            list.partition_point(|&p| p < range.1)
+        };
+        Some(Candidates::Group {
+            index: slot as u32,
+            group,
+            lo: lo as u32,
+            hi: hi as u32,
+        })
     }
 
     /// Grounds `lits[i..]` and calls `k` for every solution.
@@ -476,17 +522,21 @@ impl<'a> Grounder<'a> {
                 let Some(cands) = self.candidates(atom, &ctx.binding, range) else {
                     return;
                 };
-                let (list, lo, hi) = match cands {
-                    Candidates::Range(lo, hi) => (SmallVec::new(), lo, hi),
-                    Candidates::List(l) => {
-                        let n = l.len() as u32;
-                        (l, 0, n)
-                    }
+                let (lo, hi) = match cands {
+                    Candidates::Range(lo, hi) => (lo, hi),
+                    Candidates::One(None) => return,
+                    Candidates::One(Some(p)) => (p, p + 1),
+                    Candidates::Group { lo, hi, .. } => (lo, hi),
                 };
-                let ranged = list.is_empty();
                 for j in lo..hi {
-                    let pos = if ranged { j } else { list[j as usize] };
-                    let a = self.domains[atom.pred as usize].atoms[pos as usize];
+                    let d = &self.domains[atom.pred as usize];
+                    let pos = match cands {
+                        Candidates::Group { index, group, .. } => {
+                            d.indexes[index as usize].groups[group as usize][j as usize]
+                        }
+                        _ => j,
+                    };
+                    let a = d.atoms[pos as usize];
                     let sym = self.info(a).sym.expect("predicate atom has a symbol");
                     let mut ok = true;
                     for (j, t) in atom.args.iter().enumerate() {
@@ -2012,12 +2062,10 @@ impl<'a> Grounder<'a> {
 
     fn forget_rules_from(&mut self, start: usize) {
         while self.rules.len() > start {
-            let r = self.rules.pop().expect("len > start");
+            self.rules.pop().expect("len > start");
+            let hash = self.rule_hashes.pop().expect("a hash per rule");
             let idx = self.rules.len() as u32;
-            if let Ok(e) = self
-                .rule_set
-                .find_entry(self.hasher.hash_one(&r), |&i| i == idx)
-            {
+            if let Ok(e) = self.rule_set.find_entry(hash, |&i| i == idx) {
                 e.remove();
             }
             if self.provenance {

@@ -10,6 +10,9 @@
 //!   positive before negated, then name, then arguments left to right) < `#sup`. Checked against
 //!   clingo 5.8.3's `Symbol.__lt__`.
 //! - Integers are 32-bit, as in clingo.
+//! - Small integers (`SMALL_MIN..SMALL_MAX`) are also found through a direct table, so the
+//!   arithmetic of the grounder's inner loops does not hash; the table only caches ids that the
+//!   hash-consing table holds too.
 
 use std::cmp::Ordering;
 use std::hash::{BuildHasher, Hash};
@@ -59,7 +62,14 @@ pub struct Symbols {
     table: HashTable<SymId>,
     /// Hasher for the table.
     hasher: hashbrown::DefaultHashBuilder,
+    /// Id of each small integer `SMALL_MIN + i`, `u32::MAX` when not created yet.
+    small: Vec<u32>,
 }
+
+/// Smallest integer of the direct table.
+const SMALL_MIN: i32 = -1024;
+/// One past the largest integer of the direct table.
+const SMALL_MAX: i32 = 16384;
 
 impl Default for Symbols {
     fn default() -> Self {
@@ -76,6 +86,7 @@ impl Symbols {
             args: Vec::new(),
             table: HashTable::new(),
             hasher: hashbrown::DefaultHashBuilder::default(),
+            small: Vec::new(),
         }
     }
 
@@ -161,7 +172,22 @@ impl Symbols {
     }
 
     /// The integer `n`.
+    #[inline]
     pub fn int(&mut self, n: i32) -> SymId {
+        if (SMALL_MIN..SMALL_MAX).contains(&n) {
+            let i = (n - SMALL_MIN) as usize;
+            if let Some(&id) = self.small.get(i) {
+                if id != u32::MAX {
+                    return SymId(id);
+                }
+            }
+            let id = self.intern_key(KeyRef::Num(n));
+            if self.small.is_empty() {
+                self.small = vec![u32::MAX; (SMALL_MAX - SMALL_MIN) as usize];
+            }
+            self.small[i] = id.0;
+            return id;
+        }
         self.intern_key(KeyRef::Num(n))
     }
 
@@ -184,6 +210,13 @@ impl Symbols {
     /// The function `name(args)` (a constant when `args` is empty, a tuple when `name` is empty).
     pub fn fun(&mut self, name: Sym, neg: bool, args: &[SymId]) -> SymId {
         self.intern_key(KeyRef::Fun(name, neg, args))
+    }
+
+    /// The function `name(args)` if it was created before, without creating it.
+    pub fn find_fun(&self, name: Sym, neg: bool, args: &[SymId]) -> Option<SymId> {
+        let key = KeyRef::Fun(name, neg, args);
+        let hash = self.hash_key(&key);
+        self.table.find(hash, |&id| self.key_of(id) == key).copied()
     }
 
     /// Like [`Symbols::fun`] with a name given as text.
@@ -219,6 +252,9 @@ impl Symbols {
     pub fn compare(&self, a: SymId, b: SymId) -> Ordering {
         if a == b {
             return Ordering::Equal;
+        }
+        if let (SymData::Num(x), SymData::Num(y)) = (self.get(a), self.get(b)) {
+            return x.cmp(&y);
         }
         let (ra, rb) = (self.rank(a), self.rank(b));
         if ra != rb {

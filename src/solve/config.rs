@@ -75,6 +75,9 @@ pub struct Config {
     pub default_phase_false: bool,
     /// Restart policy.
     pub restarts: RestartPolicy,
+    /// Seed the VSIDS activities from clause occurrences before the first decision (clasp
+    /// `--init-moms`).
+    pub init_moms: bool,
     /// Keep the solver ready for `add_rules` that give new rules to existing atoms; costs one
     /// assumption per step (see `Solver::add_rules`).
     pub incremental: bool,
@@ -110,6 +113,7 @@ impl Default for Config {
             var_decay: 0.95,
             default_phase_false: true,
             restarts: RestartPolicy::Glucose,
+            init_moms: false,
             incremental: false,
             check_models: false,
             threads: 1,

@@ -213,8 +213,24 @@ pub struct Engine {
     pub num_clauses: u64,
     /// Whether the last `search` stopped because the interrupt flag was raised.
     pub interrupted: bool,
-    /// Scratch buffer for reason literals.
-    scratch: Vec<Lit>,
+    /// Level-0 trail length at the last `simplify`.
+    simp_assigns: usize,
+    /// Propagation count before which `simplify` is not worth running again.
+    simp_props: u64,
+    /// Learnt clause of the last `analyze`.
+    learnt: Vec<Lit>,
+    /// Variables marked `seen` during analysis.
+    to_clear: Vec<Var>,
+    /// Work stack of clause minimisation.
+    min_stack: Vec<Lit>,
+    /// Reason buffer of clause minimisation.
+    min_buf: Vec<Lit>,
+    /// Per decision level: stamp of the last LBD computation that met it.
+    level_seen: Vec<u64>,
+    /// Current LBD stamp.
+    lbd_stamp: u64,
+    /// Whether initial activities should still be set from clause occurrences (MOMS).
+    pub init_moms: bool,
 }
 
 impl Default for Engine {
@@ -274,7 +290,15 @@ impl Engine {
             loop_nogoods: 0,
             num_clauses: 0,
             interrupted: false,
-            scratch: Vec::new(),
+            simp_assigns: 0,
+            simp_props: 0,
+            learnt: Vec::new(),
+            to_clear: Vec::new(),
+            min_stack: Vec::new(),
+            min_buf: Vec::new(),
+            level_seen: Vec::new(),
+            lbd_stamp: 0,
+            init_moms: false,
         }
     }
 
@@ -444,10 +468,6 @@ impl Engine {
 
     fn clause_flags(&self, cref: ClauseRef) -> u32 {
         self.arena[cref as usize + 1]
-    }
-
-    fn clause_deleted(&self, cref: ClauseRef) -> bool {
-        self.clause_flags(cref) & FLAG_DELETED != 0
     }
 
     fn alloc_clause(&mut self, lits: &[Lit], learnt: bool, lbd: u32) -> ClauseRef {
@@ -706,88 +726,7 @@ impl Engine {
                     c.sum_false += w.weight;
                 }
             }
-            let false_lit = !p;
-            let mut ws = std::mem::take(&mut self.watches[false_lit.code()]);
-            let mut i = 0;
-            let mut j = 0;
-            let mut conflict = false;
-            while i < ws.len() {
-                let w = ws[i];
-                i += 1;
-                if w.cref == u32::MAX {
-                    ws[j] = w;
-                    j += 1;
-                    match self.val(w.other) {
-                        1 => {}
-                        0 => self.assign(w.other, Reason::Binary(false_lit)),
-                        _ => {
-                            self.conflict.clear();
-                            self.conflict.push(w.other);
-                            self.conflict.push(false_lit);
-                            conflict = true;
-                            break;
-                        }
-                    }
-                    continue;
-                }
-                let cref = w.cref;
-                if self.val(w.other) == 1 {
-                    ws[j] = w;
-                    j += 1;
-                    continue;
-                }
-                debug_assert!(
-                    !self.clause_deleted(cref),
-                    "watches of deleted clauses are removed"
-                );
-                let base = cref as usize + HEADER;
-                // Make sure the false literal is at position 1.
-                if self.arena[base] == false_lit.code() as u32 {
-                    self.arena.swap(base, base + 1);
-                }
-                let first = Lit::from_code(self.arena[base]);
-                if first != w.other && self.val(first) == 1 {
-                    ws[j] = Watch { cref, other: first };
-                    j += 1;
-                    continue;
-                }
-                let len = self.clause_len(cref);
-                let mut found = false;
-                for k in 2..len {
-                    let l = Lit::from_code(self.arena[base + k]);
-                    if self.val(l) != -1 {
-                        self.arena.swap(base + 1, base + k);
-                        self.watches[l.code()].push(Watch { cref, other: first });
-                        found = true;
-                        break;
-                    }
-                }
-                if found {
-                    continue;
-                }
-                ws[j] = Watch { cref, other: first };
-                j += 1;
-                if self.val(first) == -1 {
-                    self.conflict.clear();
-                    for k in 0..len {
-                        self.conflict.push(Lit::from_code(self.arena[base + k]));
-                    }
-                    conflict = true;
-                    break;
-                }
-                self.assign(first, Reason::Long(cref));
-            }
-            while i < ws.len() {
-                ws[j] = ws[i];
-                j += 1;
-                i += 1;
-            }
-            ws.truncate(j);
-            // Watches added to this list during the loop (none: we never watch false_lit anew).
-            let added = std::mem::take(&mut self.watches[false_lit.code()]);
-            ws.extend(added);
-            self.watches[false_lit.code()] = ws;
-            if conflict {
+            if self.propagate_clauses(p) {
                 return true;
             }
             let wl = std::mem::take(&mut self.weight_watch[p.var().index()]);
@@ -805,6 +744,116 @@ impl Engine {
             }
         }
         false
+    }
+
+    /// Visits the watch list of `!p` after `p` became true: binary clauses assign or conflict
+    /// directly, long clauses are skipped when their blocker is true, else get a new watch or
+    /// assign their other watched literal. Returns true on conflict (in `self.conflict`).
+    fn propagate_clauses(&mut self, p: Lit) -> bool {
+        let false_lit = !p;
+        let false_code = false_lit.code() as u32;
+        let dl = self.trail_lim.len() as u32;
+        let mut ws = std::mem::take(&mut self.watches[false_lit.code()]);
+        // Disjoint borrows of the fields the loop touches, so that assignments do not force
+        // the compiler to reload every vector through `self`.
+        let Engine {
+            values,
+            level,
+            reason,
+            trail,
+            arena,
+            watches,
+            conflict: conflict_lits,
+            ..
+        } = self;
+        let n = ws.len();
+        let mut i = 0;
+        let mut j = 0;
+        let mut conflict = false;
+        while i < n {
+            let w = ws[i];
+            i += 1;
+            let bv = values[w.other.code()];
+            if bv == 1 {
+                ws[j] = w;
+                j += 1;
+                continue;
+            }
+            if w.cref == u32::MAX {
+                ws[j] = w;
+                j += 1;
+                if bv == 0 {
+                    let l = w.other;
+                    values[l.code()] = 1;
+                    values[(!l).code()] = -1;
+                    level[l.var().index()] = dl;
+                    reason[l.var().index()] = Reason::Binary(false_lit);
+                    trail.push(l);
+                } else {
+                    conflict_lits.clear();
+                    conflict_lits.push(w.other);
+                    conflict_lits.push(false_lit);
+                    conflict = true;
+                    break;
+                }
+                continue;
+            }
+            let cref = w.cref;
+            debug_assert!(
+                arena[cref as usize + 1] & FLAG_DELETED == 0,
+                "watches of deleted clauses are removed"
+            );
+            let len = arena[cref as usize] as usize;
+            let base = cref as usize + HEADER;
+            let c = &mut arena[base..base + len];
+            // Make sure the false literal is at position 1.
+            if c[0] == false_code {
+                c.swap(0, 1);
+            }
+            let first = Lit::from_code(c[0]);
+            let fv = values[first.code()];
+            if first != w.other && fv == 1 {
+                ws[j] = Watch { cref, other: first };
+                j += 1;
+                continue;
+            }
+            let mut found = 0;
+            for k in 2..len {
+                if values[c[k] as usize] != -1 {
+                    found = k;
+                    break;
+                }
+            }
+            if found != 0 {
+                c.swap(1, found);
+                watches[c[1] as usize].push(Watch { cref, other: first });
+                continue;
+            }
+            ws[j] = Watch { cref, other: first };
+            j += 1;
+            if fv == -1 {
+                conflict_lits.clear();
+                conflict_lits.extend(c.iter().map(|&x| Lit::from_code(x)));
+                conflict = true;
+                break;
+            }
+            values[first.code()] = 1;
+            values[(!first).code()] = -1;
+            level[first.var().index()] = dl;
+            reason[first.var().index()] = Reason::Long(cref);
+            trail.push(first);
+        }
+        while i < n {
+            ws[j] = ws[i];
+            j += 1;
+            i += 1;
+        }
+        ws.truncate(j);
+        // No watch of `false_lit` was added during the loop: new watches go to non-false
+        // literals only.
+        debug_assert!(self.watches[false_lit.code()].is_empty());
+        self.watches[false_lit.code()] = ws;
+        conflict
     }
 
     /// Whether the counters allow a propagation or conflict of the constraint (cheap test).
@@ -833,35 +882,16 @@ impl Engine {
         let sum_true = c.sum_true;
         let max = c.total - c.sum_false;
         let hv = self.val(head);
-        let false_lits = |e: &Engine| -> Vec<Lit> {
-            e.weights[id]
-                .lits
-                .iter()
-                .map(|&(l, _)| l)
-                .filter(|&l| e.val(l) == -1)
-                .collect()
-        };
-        let true_lits_neg = |e: &Engine| -> Vec<Lit> {
-            e.weights[id]
-                .lits
-                .iter()
-                .map(|&(l, _)| !l)
-                .filter(|&l| e.val(l) == -1)
-                .collect()
-        };
         if sum_true >= bound {
             match hv {
                 1 => {}
-                0 => {
-                    let mut r = vec![head];
-                    r.extend(true_lits_neg(self));
-                    self.assign_stored(head, r);
-                }
+                0 => self.assign_weight_implied(head, None, id, true),
                 _ => {
-                    self.conflict.clear();
-                    self.conflict.push(head);
-                    let t = true_lits_neg(self);
-                    self.conflict.extend(t);
+                    let mut r = std::mem::take(&mut self.conflict);
+                    r.clear();
+                    r.push(head);
+                    self.weight_lits(id, true, &mut r);
+                    self.conflict = r;
                     return true;
                 }
             }
@@ -870,16 +900,13 @@ impl Engine {
         if max < bound {
             match hv {
                 -1 => {}
-                0 => {
-                    let mut r = vec![!head];
-                    r.extend(false_lits(self));
-                    self.assign_stored(!head, r);
-                }
+                0 => self.assign_weight_implied(!head, None, id, false),
                 _ => {
-                    self.conflict.clear();
-                    self.conflict.push(!head);
-                    let f = false_lits(self);
-                    self.conflict.extend(f);
+                    let mut r = std::mem::take(&mut self.conflict);
+                    r.clear();
+                    r.push(!head);
+                    self.weight_lits(id, false, &mut r);
+                    self.conflict = r;
                     return true;
                 }
             }
@@ -887,54 +914,56 @@ impl Engine {
         }
         if hv == 1 {
             // Every unassigned literal whose loss would drop the maximum below the bound must
-            // hold: weight > max - bound.
+            // hold: weight > max - bound. The explanation (the false literals) does not change
+            // while these literals become true.
             let slack = max - bound;
-            let need: Vec<Lit> = self.weights[id]
-                .lits
-                .iter()
-                .take_while(|&&(_, w)| w > slack)
-                .filter(|&&(l, _)| self.val(l) == 0)
-                .map(|&(l, _)| l)
-                .collect();
-            if !need.is_empty() {
-                let f = false_lits(self);
-                for l in need {
-                    if self.val(l) != 0 {
-                        continue;
-                    }
-                    let mut r = vec![l, !head];
-                    r.extend_from_slice(&f);
-                    self.assign_stored(l, r);
+            for k in 0..self.weights[id].lits.len() {
+                let (l, w) = self.weights[id].lits[k];
+                if w <= slack {
+                    break;
+                }
+                if self.val(l) == 0 {
+                    self.assign_weight_implied(l, Some(!head), id, false);
                 }
             }
         } else if hv == -1 {
             // Every unassigned literal that would reach the bound must be false:
-            // weight >= bound - sum_true.
+            // weight >= bound - sum_true. The explanation (the true literals) does not change
+            // while these literals become false.
             let gap = bound - sum_true;
-            let deny: Vec<Lit> = self.weights[id]
-                .lits
-                .iter()
-                .take_while(|&&(_, w)| w >= gap)
-                .filter(|&&(l, _)| self.val(l) == 0)
-                .map(|&(l, _)| l)
-                .collect();
-            if !deny.is_empty() {
-                let t = true_lits_neg(self);
-                for l in deny {
-                    if self.val(l) != 0 {
-                        continue;
-                    }
-                    let mut r = vec![!l, head];
-                    r.extend_from_slice(&t);
-                    self.assign_stored(!l, r);
+            for k in 0..self.weights[id].lits.len() {
+                let (l, w) = self.weights[id].lits[k];
+                if w < gap {
+                    break;
+                }
+                if self.val(l) == 0 {
+                    self.assign_weight_implied(!l, Some(head), id, true);
                 }
             }
         }
         false
     }
 
-    fn assign_stored(&mut self, l: Lit, explanation: Vec<Lit>) {
-        self.stored[l.var().index()] = explanation;
+    /// Appends the currently false literals of constraint `id` to `out`, or, when `of_true`,
+    /// the negations of its currently true literals (both are false literals).
+    fn weight_lits(&self, id: usize, of_true: bool, out: &mut Vec<Lit>) {
+        let want: i8 = if of_true { 1 } else { -1 };
+        for &(l, _) in &self.weights[id].lits {
+            if self.values[l.code()] == want {
+                out.push(if of_true { !l } else { l });
+            }
+        }
+    }
+
+    /// Assigns `l` with a stored explanation: `l`, then `extra` if given, then the literals of
+    /// `weight_lits(id, of_true)`. Reuses the variable's explanation buffer.
+    fn assign_weight_implied(&mut self, l: Lit, extra: Option<Lit>, id: usize, of_true: bool) {
+        let mut r = std::mem::take(&mut self.stored[l.var().index()]);
+        r.clear();
+        r.push(l);
+        r.extend(extra);
+        self.weight_lits(id, of_true, &mut r);
+        self.stored[l.var().index()] = r;
         self.assign(l, Reason::Stored);
     }
 
@@ -962,15 +991,19 @@ impl Engine {
 
     // ---------------------------------------------------------------- analysis
 
-    /// First-UIP analysis of `self.conflict`; returns the learnt clause (asserting literal
-    /// first, a literal of the backjump level second) and the backjump level.
-    fn analyze(&mut self) -> (Vec<Lit>, u32) {
+    /// First-UIP analysis of `self.conflict`; leaves the learnt clause in `self.learnt`
+    /// (asserting literal first, a literal of the backjump level second) and returns the
+    /// backjump level. Works in reused buffers: no allocation per conflict once they are warm.
+    fn analyze(&mut self) -> u32 {
         let current = self.decision_level();
-        let mut learnt: Vec<Lit> = vec![Lit::from_code(0)];
+        let mut learnt = std::mem::take(&mut self.learnt);
+        learnt.clear();
+        learnt.push(Lit::from_code(0));
         let mut counter = 0usize;
         let mut index = self.trail.len();
         let mut clause = std::mem::take(&mut self.conflict);
-        let mut to_clear: Vec<Var> = Vec::new();
+        let mut to_clear = std::mem::take(&mut self.to_clear);
+        to_clear.clear();
         let mut p: Option<Lit> = None;
         loop {
             for &q in &clause {
@@ -1007,12 +1040,8 @@ impl Engine {
             if let Reason::Long(cref) = self.reason[pl.var().index()] {
                 self.bump_clause(cref);
             }
-            let mut buf = std::mem::take(&mut self.scratch);
-            buf.clear();
-            self.reason_lits(pl.var(), &mut buf);
-            clause.extend_from_slice(&buf);
-            self.scratch = buf;
-            // The implied literal itself is never in `clause`, and the filter above skips it.
+            // The implied literal itself is not added, and the filter above skips it.
+            self.reason_lits(pl.var(), &mut clause);
         }
         self.conflict = clause;
         // Recursive minimisation: drop literals implied by the others.
@@ -1020,38 +1049,46 @@ impl Engine {
         for &l in &learnt[1..] {
             abstract_levels |= 1u64 << (self.level[l.var().index()] & 63);
         }
-        let mut keep: Vec<Lit> = vec![learnt[0]];
-        for &l in &learnt[1..] {
+        let mut kept = 1;
+        for k in 1..learnt.len() {
+            let l = learnt[k];
             if matches!(self.reason[l.var().index()], Reason::Decision)
                 || !self.redundant(l, abstract_levels, &mut to_clear)
             {
-                keep.push(l);
+                learnt[kept] = l;
+                kept += 1;
             }
         }
-        for v in to_clear {
+        learnt.truncate(kept);
+        for &v in &to_clear {
             self.seen[v.index()] = 0;
         }
+        self.to_clear = to_clear;
         // Put a literal of the highest remaining level second.
         let mut bt = 0;
-        if keep.len() > 1 {
+        if learnt.len() > 1 {
             let mut best = 1;
-            for k in 2..keep.len() {
-                if self.level[keep[k].var().index()] > self.level[keep[best].var().index()] {
+            for k in 2..learnt.len() {
+                if self.level[learnt[k].var().index()] > self.level[learnt[best].var().index()] {
                     best = k;
                 }
             }
-            keep.swap(1, best);
-            bt = self.level[keep[1].var().index()];
+            learnt.swap(1, best);
+            bt = self.level[learnt[1].var().index()];
         }
-        (keep, bt)
+        self.learnt = learnt;
+        bt
     }
 
     /// Whether `l` (false, in the learnt clause) is implied by other literals of the clause.
     fn redundant(&mut self, l: Lit, abstract_levels: u64, to_clear: &mut Vec<Var>) -> bool {
-        let mut stack = vec![l];
+        let mut stack = std::mem::take(&mut self.min_stack);
+        let mut buf = std::mem::take(&mut self.min_buf);
+        stack.clear();
+        stack.push(l);
         let top = to_clear.len();
-        let mut buf = Vec::new();
-        while let Some(q) = stack.pop() {
+        let mut result = true;
+        'outer: while let Some(q) = stack.pop() {
             buf.clear();
             self.reason_lits(q.var(), &mut buf);
             for &r in &buf {
@@ -1068,18 +1105,32 @@ impl Engine {
                     for w in to_clear.drain(top..) {
                         self.seen[w.index()] = 0;
                     }
-                    return false;
+                    result = false;
+                    break 'outer;
                 }
             }
         }
-        true
+        self.min_stack = stack;
+        self.min_buf = buf;
+        result
     }
 
+    /// Number of distinct decision levels among `lits` (literal block distance).
     fn lbd(&mut self, lits: &[Lit]) -> u32 {
-        let mut levels: Vec<u32> = lits.iter().map(|l| self.level[l.var().index()]).collect();
-        levels.sort_unstable();
-        levels.dedup();
-        levels.len() as u32
+        self.lbd_stamp += 1;
+        let stamp = self.lbd_stamp;
+        let mut n = 0;
+        for l in lits {
+            let lv = self.level[l.var().index()] as usize;
+            if lv >= self.level_seen.len() {
+                self.level_seen.resize(lv + 1, 0);
+            }
+            if self.level_seen[lv] != stamp {
+                self.level_seen[lv] = stamp;
+                n += 1;
+            }
+        }
+        n
     }
 
     // ---------------------------------------------------------------- heuristic
@@ -1300,6 +1351,146 @@ impl Engine {
         self.wasted = 0;
     }
 
+    // ---------------------------------------------------------------- level-0 simplification
+
+    /// Removes clauses satisfied at decision level 0 and the literals false there, turning
+    /// long clauses that shrink to two literals into binary watches (MiniSat's `simplify`,
+    /// clasp's removal of satisfied constraints). Must be called at level 0 after a
+    /// conflict-free propagation. Rebuilds the arena and the long-clause watches; every
+    /// level-0 assignment gets `Reason::Decision` (analysis never looks at level 0).
+    fn simplify(&mut self) {
+        debug_assert_eq!(self.decision_level(), 0);
+        debug_assert_eq!(self.qhead, self.trail.len());
+        for &l in &self.trail {
+            self.reason[l.var().index()] = Reason::Decision;
+        }
+        // Binary clauses with an assigned literal are satisfied at level 0 (a false literal
+        // forced its partner true).
+        for code in 0..self.watches.len() {
+            if self.values[code] != 0 {
+                self.watches[code].clear();
+                continue;
+            }
+            let values = &self.values;
+            self.watches[code].retain(|w| w.cref == u32::MAX && values[w.other.code()] == 0);
+        }
+        let old = std::mem::take(&mut self.arena);
+        let mut learnts = Vec::with_capacity(self.learnts.len());
+        let mut lits: Vec<Lit> = Vec::new();
+        let mut pos = 0usize;
+        while pos < old.len() {
+            let len = old[pos] as usize;
+            let flags = old[pos + 1];
+            let next = pos + HEADER + len;
+            if flags & FLAG_DELETED != 0 {
+                pos = next;
+                continue;
+            }
+            lits.clear();
+            let mut satisfied = false;
+            for &c in &old[pos + HEADER..next] {
+                let l = Lit::from_code(c);
+                match self.values[l.code()] {
+                    1 => {
+                        satisfied = true;
+                        break;
+                    }
+                    0 => lits.push(l),
+                    _ => {}
+                }
+            }
+            if !satisfied {
+                debug_assert!(lits.len() >= 2, "propagation reached a fixpoint");
+                if lits.len() == 2 {
+                    self.watches[lits[0].code()].push(Watch {
+                        cref: u32::MAX,
+                        other: lits[1],
+                    });
+                    self.watches[lits[1].code()].push(Watch {
+                        cref: u32::MAX,
+                        other: lits[0],
+                    });
+                } else {
+                    let cref = self.arena.len() as u32;
+                    self.arena.push(lits.len() as u32);
+                    self.arena.push(flags);
+                    self.arena.push(old[pos + 2]);
+                    self.arena.extend(lits.iter().map(|l| l.code() as u32));
+                    self.watches[lits[0].code()].push(Watch {
+                        cref,
+                        other: lits[1],
+                    });
+                    self.watches[lits[1].code()].push(Watch {
+                        cref,
+                        other: lits[0],
+                    });
+                    if flags & FLAG_LEARNT != 0 {
+                        learnts.push(cref);
+                    }
+                }
+            }
+            pos = next;
+        }
+        self.learnts = learnts;
+        self.wasted = 0;
+        self.simp_assigns = self.trail.len();
+        self.simp_props = self.propagations + self.arena.len() as u64;
+    }
+
+    /// Runs `simplify` when new level-0 facts exist and enough propagation work was done since
+    /// the last run to pay for a pass over the arena.
+    fn maybe_simplify(&mut self) {
+        if self.decision_level() == 0
+            && self.trail.len() > self.simp_assigns
+            && self.propagations >= self.simp_props
+        {
+            self.simplify();
+        }
+    }
+
+    /// Seeds the VSIDS activities with a MOMS-like score (clasp `--init-moms`): variables
+    /// occurring often in both polarities in short clauses come first. Scores are scaled into
+    /// [0, 1], below one conflict bump, so learning takes over at the first conflict.
+    fn seed_activities(&mut self) {
+        let n = self.num_vars();
+        let mut occ = vec![0u64; 2 * n];
+        for (code, ws) in self.watches.iter().enumerate() {
+            // Each binary clause appears in two lists; count it once per literal.
+            occ[code] += ws.iter().filter(|w| w.cref == u32::MAX).count() as u64;
+        }
+        let mut pos = 0usize;
+        while pos < self.arena.len() {
+            let len = self.arena[pos] as usize;
+            if self.arena[pos + 1] & (FLAG_DELETED | FLAG_LEARNT) == 0 {
+                for &c in &self.arena[pos + HEADER..pos + HEADER + len] {
+                    occ[c as usize] += 1;
+                }
+            }
+            pos += HEADER + len;
+        }
+        let score: Vec<f64> = (0..n)
+            .map(|v| {
+                let (p, q) = (occ[2 * v], occ[2 * v + 1]);
+                ((p * q) as f64) * 1024.0 + (p + q) as f64
+            })
+            .collect();
+        let max = score.iter().copied().fold(0.0f64, f64::max);
+        if max <= 0.0 {
+            return;
+        }
+        for (v, s) in score.into_iter().enumerate() {
+            self.activity[v] = s / max;
+        }
+        let vars: Vec<Var> = self.heap.clone();
+        self.heap.clear();
+        for v in vars {
+            self.heap_pos[v.index()] = usize::MAX;
+        }
+        for v in 0..n {
+            self.heap_insert(Var::new(v));
+        }
+    }
+
     // ---------------------------------------------------------------- search
 
     fn luby(mut i: u32) -> u64 {
@@ -1382,6 +1573,11 @@ impl Engine {
             self.inconsistent = true;
             return SearchResult::Unsat;
         }
+        self.maybe_simplify();
+        if self.init_moms {
+            self.init_moms = false;
+            self.seed_activities();
+        }
         let mut ticks: u64 = 0;
         loop {
             ticks += 1;
@@ -1407,7 +1603,8 @@ impl Engine {
                 if max_level < self.decision_level() {
                     self.backtrack(max_level);
                 }
-                let (learnt, bt) = self.analyze();
+                let bt = self.analyze();
+                let learnt = std::mem::take(&mut self.learnt);
                 let lbd = self.lbd(&learnt);
                 self.backtrack(bt);
                 if learnt.len() == 1 {
@@ -1420,6 +1617,7 @@ impl Engine {
                     };
                     self.assign(learnt[0], r);
                 }
+                self.learnt = learnt;
                 self.var_inc /= self.var_decay;
                 self.cla_inc /= 0.999;
                 if self.should_restart(Some(lbd)) {
@@ -1428,6 +1626,7 @@ impl Engine {
                 }
                 continue;
             }
+            self.maybe_simplify();
             if self.learnts.len() as f64 >= self.max_learnts + self.trail.len() as f64 {
                 self.reduce_db();
                 self.max_learnts *= 1.1;

@@ -102,6 +102,7 @@ impl Solver {
         engine.configure(config.var_decay, config.seed);
         engine.random_permille = config.random_freq_permille.min(1000);
         engine.default_phase = !config.default_phase_false;
+        engine.init_moms = config.init_moms;
         engine.restarts = match config.restarts {
             RestartPolicy::Luby(u) => Restarts::Luby {
                 unit: u.max(1),
@@ -117,6 +118,14 @@ impl Solver {
         };
         let mut prog = prog.clone();
         prog.num_atoms = max_atom(&prog);
+        // As clasp (and `check::external_values`): an external statement on an atom that has
+        // a rule in the same program is ignored; the rules define the atom.
+        let defined: std::collections::HashSet<u32> = prog
+            .rules
+            .iter()
+            .flat_map(|r| r.head.iter().copied())
+            .collect();
+        prog.externals.retain(|(a, _)| !defined.contains(a));
         let mut tr;
         let mut step_guard = None;
         if config.incremental {
