@@ -25,7 +25,9 @@ use crate::base::{Diagnostic, Diagnostics, SourceMap, Span, WarningKind};
 use crate::syntax::ast::{AggregateFunction, CmpOp, Sign};
 
 use super::program::{Body, ExternalValue, HeadKind, HeuristicModifier, Lit, Origin, Rule, Weight};
-use super::rewrite::{Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId};
+use super::rewrite::{
+    lit_vars, Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
+};
 use super::symbol::{SymData, SymId, Symbols};
 use super::term::{Binding, NTerm};
 
@@ -194,6 +196,11 @@ type ElemInstance = (Vec<(Sign, AtomId)>, Vec<Lit>);
 /// One ground literal of a conditional disjunction element: its sign, the index of its
 /// non-ground literal in the element's conjunction, and the atom.
 type ElemLit = (Sign, usize, SymId);
+
+/// The instances of a conditional disjunction element that form one element: their key (the
+/// values of the local variables shared by condition and literals), their conditions and the
+/// union of their literals.
+type ElemGroup = (Vec<SymId>, Vec<Vec<Lit>>, Vec<ElemLit>);
 
 /// A ground instance of a conditional body literal's condition: its literals, and the
 /// alternatives of the literal (`None` when none can hold, an empty list when one certainly
@@ -438,7 +445,35 @@ impl<'a> Grounder<'a> {
                 .map(|info| info.dom_pos);
             return Some(Candidates::One(found));
         }
+        let slot = self.index(atom.pred, mask);
         let d = &mut self.domains[atom.pred as usize];
+        let idx = &mut d.indexes[slot];
+        let Some(&group) = idx.map.get(&key) else {
+            return Some(Candidates::One(None));
+        };
+        let list = &idx.groups[group as usize];
+        let lo = if range.0 == 0 {
+            0
+        } else {
+            list.partition_point(|&p| p < range.0)
+        };
+        let hi = if range.1 as usize >= d.atoms.len() {
+            list.len()
+        } else {
+            list.partition_point(|&p| p < range.1)
+        };
+        Some(Candidates::Group {
+            index: slot as u32,
+            group,
+            lo: lo as u32,
+            hi: hi as u32,
+        })
+    }
+
+    /// The number of the index of `pred` on the positions of `mask`, created if needed and
+    /// extended to every atom of the domain.
+    fn index(&mut self, pred: PredId, mask: u64) -> usize {
+        let d = &mut self.domains[pred as usize];
         let slot = match d.indexes.iter().position(|x| x.mask == mask) {
             Some(i) => i,
             None => {
@@ -471,26 +506,7 @@ impl<'a> Grounder<'a> {
             idx.groups[g as usize].push(idx.upto as u32);
             idx.upto += 1;
         }
-        let Some(&group) = idx.map.get(&key) else {
-            return Some(Candidates::One(None));
-        };
-        let list = &idx.groups[group as usize];
-        let lo = if range.0 == 0 {
-            0
-        } else {
-            list.partition_point(|&p| p < range.0)
-        };
-        let hi = if range.1 as usize >= d.atoms.len() {
-            list.len()
-        } else {
-            list.partition_point(|&p| p < range.1)
-        };
-        Some(Candidates::Group {
-            index: slot as u32,
-            group,
-            lo: lo as u32,
-            hi: hi as u32,
-        })
+        slot
     }
 
     /// Grounds `lits[i..]` and calls `k` for every solution.
@@ -1477,9 +1493,150 @@ impl<'a> Grounder<'a> {
             binding: Binding::new(stmt.num_vars as usize),
             body: Vec::new(),
         };
-        self.join(&mut ctx, &stmt.body, 0, ranges, &mut |g, ctx| {
-            g.emit(stmt, ctx)
-        });
+        let order = self.join_order(stmt, ranges);
+        if order.iter().enumerate().all(|(i, &j)| i == j) {
+            self.join(&mut ctx, &stmt.body, 0, ranges, &mut |g, ctx| {
+                g.emit(stmt, ctx)
+            });
+            return;
+        }
+        let body: Vec<NLit> = order.iter().map(|&j| stmt.body[j].clone()).collect();
+        let ranges: Vec<Option<Range>> = order
+            .iter()
+            .map(|&j| ranges.get(j).copied().flatten())
+            .collect();
+        self.join(&mut ctx, &body, 0, &ranges, &mut |g, ctx| g.emit(stmt, ctx));
+    }
+
+    /// The order in which to join the body literals of `stmt`, given the ranges of its
+    /// semi-naive literals: greedily, the evaluable literal expected to yield the fewest
+    /// matches under the current domains (gringo orders bodies by such estimates too).
+    /// Tests and bound comparisons come first, then assignments, then positive atoms by
+    /// estimated matches: the domain's size in range divided by the number of distinct values
+    /// on the bound positions (read from the index on those positions).
+    ///
+    /// Evaluability follows the planner's rules (`rewrite::plan`); an aggregate keeps every
+    /// literal the planner put before it in front of it (so its global variables are bound as
+    /// planned), and the variable an aggregate binds is bound by it alone.
+    fn join_order(&mut self, stmt: &NStmt, ranges: &[Option<Range>]) -> Vec<usize> {
+        let lits = &stmt.body;
+        let n = lits.len();
+        if n <= 1 {
+            return (0..n).collect();
+        }
+        let mut bound = vec![false; stmt.num_vars as usize];
+        // Variables bound by aggregates (as planned).
+        let mut reserved = vec![false; stmt.num_vars as usize];
+        for l in lits {
+            if let NLit::Agg(a) = l {
+                if let Some(NTerm::Var(v)) = a.binder.map(|i| &a.guards[i].1) {
+                    reserved[*v as usize] = true;
+                }
+            }
+        }
+        let mut placed = vec![false; n];
+        let mut order = Vec::with_capacity(n);
+        let mut newly: Vec<u32> = Vec::new();
+        while order.len() < n {
+            let mut best: Option<(f64, usize)> = None;
+            for (i, l) in lits.iter().enumerate() {
+                if placed[i] {
+                    continue;
+                }
+                newly.clear();
+                let cost = match l {
+                    NLit::Bool(_) => Some(0.0),
+                    NLit::Pred { sign, atom } if *sign != Sign::Positive => {
+                        atom.args.iter().all(|t| t.bound_by(&bound)).then_some(0.0)
+                    }
+                    NLit::Pred { atom, .. } => {
+                        if atom.args.iter().all(|t| t.binds(&bound, &mut newly)) {
+                            let range =
+                                self.lookup_range(atom.pred, ranges.get(i).copied().flatten());
+                            let size = range.1.saturating_sub(range.0) as f64;
+                            let mut mask = 0u64;
+                            for (k, t) in atom.args.iter().enumerate() {
+                                if k < 64 && t.bound_by(&bound) {
+                                    mask |= 1 << k;
+                                }
+                            }
+                            Some(if newly.is_empty() {
+                                size.min(0.5)
+                            } else if mask == 0 {
+                                size
+                            } else {
+                                let slot = self.index(atom.pred, mask);
+                                let keys = self.domains[atom.pred as usize].indexes[slot].map.len();
+                                size / keys.max(1) as f64
+                            })
+                        } else {
+                            None
+                        }
+                    }
+                    NLit::Cmp { op, lhs, rhs } => {
+                        let (lb, rb) = (lhs.bound_by(&bound), rhs.bound_by(&bound));
+                        if lb && rb {
+                            Some(0.0)
+                        } else if *op == CmpOp::Eq
+                            && ((rb && lhs.binds(&bound, &mut newly))
+                                || (lb && rhs.binds(&bound, &mut newly)))
+                        {
+                            Some(1.0)
+                        } else {
+                            None
+                        }
+                    }
+                    NLit::Interval { pat, lo, hi } => {
+                        if lo.bound_by(&bound)
+                            && hi.bound_by(&bound)
+                            && pat.binds(&bound, &mut newly)
+                        {
+                            Some(match (lo, hi) {
+                                (NTerm::Sym(a), NTerm::Sym(b)) => {
+                                    match (self.syms.num(*a), self.syms.num(*b)) {
+                                        (Some(a), Some(b)) => (b as f64 - a as f64 + 1.0).max(0.0),
+                                        _ => 0.0,
+                                    }
+                                }
+                                _ => 100.0,
+                            })
+                        } else {
+                            None
+                        }
+                    }
+                    NLit::Agg(a) => {
+                        if placed[..i].iter().all(|&p| p) {
+                            if let Some(NTerm::Var(v)) = a.binder.map(|k| &a.guards[k].1) {
+                                newly.push(*v);
+                            }
+                            Some(1.5)
+                        } else {
+                            None
+                        }
+                    }
+                };
+                let Some(cost) = cost else { continue };
+                if !matches!(l, NLit::Agg(_)) && newly.iter().any(|&v| reserved[v as usize]) {
+                    continue;
+                }
+                if best.is_none_or(|(c, _)| cost < c) {
+                    best = Some((cost, i));
+                }
+            }
+            let Some((_, i)) = best else {
+                // Not expected (the planned order is evaluable): keep the rest as planned.
+                order.extend((0..n).filter(|&j| !placed[j]));
+                return order;
+            };
+            placed[i] = true;
+            order.push(i);
+            newly.clear();
+            lit_binds(&lits[i], &bound, &mut newly);
+            for &v in &newly {
+                bound[v as usize] = true;
+            }
+        }
+        order
     }
 
     /// Produces the ground statement for one solution of the body.
@@ -1823,25 +1980,54 @@ impl<'a> Grounder<'a> {
     /// reading) into `out`, simplified over what is known; false when one of them is certainly
     /// true, so the whole disjunction is satisfied.
     fn conj_elems(&mut self, e: &NCondLit, ctx: &mut Ctx, out: &mut Vec<ElemInstance>) -> bool {
+        // As gringo does, instances of the condition that agree on the local variables shared
+        // by the condition and the literals form one element: its condition is their
+        // disjunction, its literals their union.
+        let mut cond_vars = Vec::new();
+        e.cond.iter().for_each(|l| lit_vars(l, &mut cond_vars));
+        let mut head_vars = Vec::new();
+        for l in &e.conj {
+            l.atom.args.iter().for_each(|t| t.vars(&mut head_vars));
+            l.expand.iter().for_each(|x| lit_vars(x, &mut head_vars));
+        }
+        let mut key_vars: Vec<u32> = cond_vars
+            .into_iter()
+            .filter(|v| head_vars.contains(v) && ctx.binding.get(*v).is_none())
+            .collect();
+        key_vars.sort_unstable();
+        key_vars.dedup();
         let blen = ctx.body.len();
-        let mut found: Vec<(Vec<ElemLit>, Vec<Lit>)> = Vec::new();
+        // Per group: its key, the conditions of its instances, and its literals.
+        let mut groups: Vec<ElemGroup> = Vec::new();
         self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
+            let key: Vec<SymId> = key_vars
+                .iter()
+                .filter_map(|&v| ctx.binding.get(v))
+                .collect();
+            let gi = match groups.iter().position(|(k, _, _)| *k == key) {
+                Some(gi) => gi,
+                None => {
+                    groups.push((key, Vec::new(), Vec::new()));
+                    groups.len() - 1
+                }
+            };
             let cond = ctx.body[blen..].to_vec();
-            let mut lits = Vec::new();
+            if !groups[gi].1.contains(&cond) {
+                groups[gi].1.push(cond);
+            }
             for (i, l) in e.conj.iter().enumerate() {
                 g.join(ctx, &l.expand, 0, &[], &mut |g, ctx| {
                     // An undefined instance is left out of the conjunction.
                     if let Some(s) = g.atom_sym(&l.atom, &ctx.binding) {
-                        if !lits.contains(&(l.sign, i, s)) {
-                            lits.push((l.sign, i, s));
+                        if !groups[gi].2.contains(&(l.sign, i, s)) {
+                            groups[gi].2.push((l.sign, i, s));
                         }
                     }
                 });
             }
-            found.push((lits, cond));
         });
         ctx.body.truncate(blen);
-        'inst: for (lits, cond) in found {
+        'group: for (_, conds, lits) in groups {
             let mut ground: Vec<(Sign, AtomId)> = Vec::new();
             for (sign, i, s) in lits {
                 let pred = e.conj[i].atom.pred;
@@ -1853,13 +2039,20 @@ impl<'a> Grounder<'a> {
                 match sign {
                     Sign::Positive if fact => {}
                     Sign::Positive => ground.push((sign, self.atom_of(s, pred))),
-                    Sign::Not if fact => continue 'inst,
-                    Sign::NotNot if never => continue 'inst,
+                    Sign::Not if fact => continue 'group,
+                    Sign::NotNot if never => continue 'group,
                     Sign::Not if never => {}
                     Sign::NotNot if fact => {}
                     _ => ground.push((sign, self.atom_of(s, pred))),
                 }
             }
+            let cond = if conds.iter().any(|c| c.is_empty()) {
+                Vec::new()
+            } else if conds.len() == 1 {
+                conds.into_iter().next().expect("one condition")
+            } else {
+                vec![self.disjunction_lit(&conds)]
+            };
             if ground.is_empty() && cond.is_empty() {
                 return false;
             }
@@ -1883,9 +2076,20 @@ impl<'a> Grounder<'a> {
             });
         }
         body.extend_from_slice(cond);
+        // Repeated body literals are left out, as gringo does (clasp 3.3.5 mishandles some).
+        let dedup = |v: &mut Vec<Lit>| {
+            let mut seen = Vec::with_capacity(v.len());
+            v.retain(|l| {
+                let new = !seen.contains(l);
+                seen.push(*l);
+                new
+            });
+        };
+        dedup(&mut body);
         self.add_rule(Rule::normal(&[e], &body), Origin::default);
         let mut guard = vec![e as Lit];
         guard.extend_from_slice(cond);
+        dedup(&mut guard);
         for &(sign, a) in lits {
             let mut b = guard.clone();
             match sign {
@@ -1893,12 +2097,15 @@ impl<'a> Grounder<'a> {
                     self.derive(a);
                     self.add_rule(Rule::normal(&[a], &b), Origin::default);
                 }
-                Sign::Not => {
-                    b.push(a as Lit);
-                    self.add_rule(Rule::normal(&[], &b), Origin::default);
-                }
-                Sign::NotNot => {
-                    b.push(-(a as Lit));
+                Sign::Not | Sign::NotNot => {
+                    let l = if sign == Sign::Not {
+                        a as Lit
+                    } else {
+                        -(a as Lit)
+                    };
+                    if !b.contains(&l) {
+                        b.push(l);
+                    }
                     self.add_rule(Rule::normal(&[], &b), Origin::default);
                 }
             }
@@ -2240,6 +2447,38 @@ fn conj(a: Truth, b: Truth) -> Truth {
             x.extend(y);
             Truth::Lits(x)
         }
+    }
+}
+
+/// Adds the variables that evaluating `l` with `bound` known binds to `out`.
+fn lit_binds(l: &NLit, bound: &[bool], out: &mut Vec<u32>) {
+    match l {
+        NLit::Pred {
+            sign: Sign::Positive,
+            atom,
+        } => {
+            for t in &atom.args {
+                t.binds(bound, out);
+            }
+        }
+        NLit::Cmp { lhs, rhs, .. } => {
+            if lhs.bound_by(bound) {
+                rhs.binds(bound, out);
+            } else {
+                lhs.binds(bound, out);
+            }
+        }
+        NLit::Interval { pat, .. } => {
+            pat.binds(bound, out);
+        }
+        NLit::Agg(a) => {
+            if let Some(NTerm::Var(v)) = a.binder.map(|k| &a.guards[k].1) {
+                if !bound[*v as usize] && !out.contains(v) {
+                    out.push(*v);
+                }
+            }
+        }
+        NLit::Pred { .. } | NLit::Bool(_) => {}
     }
 }
 
