@@ -350,8 +350,20 @@ impl<'a> Grounder<'a> {
         }
     }
 
+    /// Frees the rule deduplication table once instantiation is over (simplification does
+    /// not add rules through [`Grounder::add_rule`]); large programs need the memory.
+    pub fn release_dedup(&mut self) {
+        self.rule_set = HashTable::new();
+        self.rule_hashes = Vec::new();
+    }
+
     /// Adds a ground rule unless an equal one exists; returns its index if added.
     fn add_rule(&mut self, rule: Rule, origin: impl FnOnce() -> Origin) -> bool {
+        assert_eq!(
+            self.rule_hashes.len(),
+            self.rules.len(),
+            "add_rule after release_dedup"
+        );
         let hash = self.hasher.hash_one(&rule);
         let rules = &self.rules;
         if self
