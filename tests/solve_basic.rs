@@ -339,6 +339,34 @@ fn incremental_rules_for_existing_atoms() {
 }
 
 #[test]
+fn incremental_rules_give_a_loop_an_external_support() {
+    // {c}. a :- b. b :- a.  Answer sets {} and {c}: the loop {a, b} is unfounded, so the solver
+    // learns that a and b are false. Then add a :- c.  Answer sets {} and {a, b, c}: what was
+    // learnt about the loop must not outlive the step (derived by hand from the reduct).
+    let p = program(
+        3,
+        vec![
+            Rule::choice(&[3], &[]),
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[1]),
+        ],
+    );
+    let cfg = Config {
+        models: 0,
+        incremental: true,
+        ..Config::default()
+    };
+    let mut s = Solver::new(&p, cfg);
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![3]]);
+    s.add_rules(&[Rule::normal(&[1], &[3])]).unwrap();
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![1, 2, 3]]);
+}
+
+#[test]
 fn support_pointers_are_well_founded() {
     // c. b :- c. a :- b.  Supports: a by rule 2, b by rule 1, c by rule 0.
     let p = program(

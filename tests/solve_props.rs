@@ -287,3 +287,32 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Incremental solving: the rules arrive in two steps (the second may define atoms of the
+    /// first again), and each step's answer sets must be those of the rules so far.
+    #[test]
+    fn loop_programs_in_two_steps_match_brute_force(p in loop_program_strategy(), cut in any::<prop::sample::Index>()) {
+        let k = cut.index(p.rules.len() + 1);
+        let mut first = p.clone();
+        first.rules.truncate(k);
+        let cfg = Config { models: 0, opt_mode: OptMode::Ignore, incremental: true, ..Config::default() };
+        let mut s = Solver::new(&first, cfg);
+        for (step, prog) in [(1, &first), (2, &p)] {
+            if step == 2 {
+                s.add_rules(&p.rules[k..]).unwrap();
+            }
+            let r = s.solve();
+            prop_assert!(r.exhausted);
+            let mut got: Vec<Vec<u32>> = r.models.iter().map(|m| m.atoms.clone()).collect();
+            got.sort();
+            let want: Vec<Vec<u32>> = brute_atoms(prog, BruteConfig { optimize: false, ..BruteConfig::default() })
+                .into_iter()
+                .map(|(m, _)| m)
+                .collect();
+            prop_assert_eq!(got, want, "step {}", step);
+        }
+    }
+}

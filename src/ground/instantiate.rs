@@ -25,7 +25,9 @@ use crate::base::{Diagnostic, Diagnostics, SourceMap, Span, WarningKind};
 use crate::syntax::ast::{AggregateFunction, CmpOp, Sign};
 
 use super::program::{Body, ExternalValue, HeadKind, HeuristicModifier, Lit, Origin, Rule, Weight};
-use super::rewrite::{Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId};
+use super::rewrite::{
+    lit_vars, Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
+};
 use super::symbol::{SymData, SymId, Symbols};
 use super::term::{Binding, NTerm};
 
@@ -194,6 +196,11 @@ type ElemInstance = (Vec<(Sign, AtomId)>, Vec<Lit>);
 /// One ground literal of a conditional disjunction element: its sign, the index of its
 /// non-ground literal in the element's conjunction, and the atom.
 type ElemLit = (Sign, usize, SymId);
+
+/// The instances of a conditional disjunction element that form one element: their key (the
+/// values of the local variables shared by condition and literals), their conditions and the
+/// union of their literals.
+type ElemGroup = (Vec<SymId>, Vec<Vec<Lit>>, Vec<ElemLit>);
 
 /// A ground instance of a conditional body literal's condition: its literals, and the
 /// alternatives of the literal (`None` when none can hold, an empty list when one certainly
@@ -1713,25 +1720,54 @@ impl<'a> Grounder<'a> {
     /// reading) into `out`, simplified over what is known; false when one of them is certainly
     /// true, so the whole disjunction is satisfied.
     fn conj_elems(&mut self, e: &NCondLit, ctx: &mut Ctx, out: &mut Vec<ElemInstance>) -> bool {
+        // As gringo does, instances of the condition that agree on the local variables shared
+        // by the condition and the literals form one element: its condition is their
+        // disjunction, its literals their union.
+        let mut cond_vars = Vec::new();
+        e.cond.iter().for_each(|l| lit_vars(l, &mut cond_vars));
+        let mut head_vars = Vec::new();
+        for l in &e.conj {
+            l.atom.args.iter().for_each(|t| t.vars(&mut head_vars));
+            l.expand.iter().for_each(|x| lit_vars(x, &mut head_vars));
+        }
+        let mut key_vars: Vec<u32> = cond_vars
+            .into_iter()
+            .filter(|v| head_vars.contains(v) && ctx.binding.get(*v).is_none())
+            .collect();
+        key_vars.sort_unstable();
+        key_vars.dedup();
         let blen = ctx.body.len();
-        let mut found: Vec<(Vec<ElemLit>, Vec<Lit>)> = Vec::new();
+        // Per group: its key, the conditions of its instances, and its literals.
+        let mut groups: Vec<ElemGroup> = Vec::new();
         self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
+            let key: Vec<SymId> = key_vars
+                .iter()
+                .filter_map(|&v| ctx.binding.get(v))
+                .collect();
+            let gi = match groups.iter().position(|(k, _, _)| *k == key) {
+                Some(gi) => gi,
+                None => {
+                    groups.push((key, Vec::new(), Vec::new()));
+                    groups.len() - 1
+                }
+            };
             let cond = ctx.body[blen..].to_vec();
-            let mut lits = Vec::new();
+            if !groups[gi].1.contains(&cond) {
+                groups[gi].1.push(cond);
+            }
             for (i, l) in e.conj.iter().enumerate() {
                 g.join(ctx, &l.expand, 0, &[], &mut |g, ctx| {
                     // An undefined instance is left out of the conjunction.
                     if let Some(s) = g.atom_sym(&l.atom, &ctx.binding) {
-                        if !lits.contains(&(l.sign, i, s)) {
-                            lits.push((l.sign, i, s));
+                        if !groups[gi].2.contains(&(l.sign, i, s)) {
+                            groups[gi].2.push((l.sign, i, s));
                         }
                     }
                 });
             }
-            found.push((lits, cond));
         });
         ctx.body.truncate(blen);
-        'inst: for (lits, cond) in found {
+        'group: for (_, conds, lits) in groups {
             let mut ground: Vec<(Sign, AtomId)> = Vec::new();
             for (sign, i, s) in lits {
                 let pred = e.conj[i].atom.pred;
@@ -1743,13 +1779,20 @@ impl<'a> Grounder<'a> {
                 match sign {
                     Sign::Positive if fact => {}
                     Sign::Positive => ground.push((sign, self.atom_of(s, pred))),
-                    Sign::Not if fact => continue 'inst,
-                    Sign::NotNot if never => continue 'inst,
+                    Sign::Not if fact => continue 'group,
+                    Sign::NotNot if never => continue 'group,
                     Sign::Not if never => {}
                     Sign::NotNot if fact => {}
                     _ => ground.push((sign, self.atom_of(s, pred))),
                 }
             }
+            let cond = if conds.iter().any(|c| c.is_empty()) {
+                Vec::new()
+            } else if conds.len() == 1 {
+                conds.into_iter().next().expect("one condition")
+            } else {
+                vec![self.disjunction_lit(&conds)]
+            };
             if ground.is_empty() && cond.is_empty() {
                 return false;
             }
@@ -1773,9 +1816,20 @@ impl<'a> Grounder<'a> {
             });
         }
         body.extend_from_slice(cond);
+        // Repeated body literals are left out, as gringo does (clasp 3.3.5 mishandles some).
+        let dedup = |v: &mut Vec<Lit>| {
+            let mut seen = Vec::with_capacity(v.len());
+            v.retain(|l| {
+                let new = !seen.contains(l);
+                seen.push(*l);
+                new
+            });
+        };
+        dedup(&mut body);
         self.add_rule(Rule::normal(&[e], &body), Origin::default);
         let mut guard = vec![e as Lit];
         guard.extend_from_slice(cond);
+        dedup(&mut guard);
         for &(sign, a) in lits {
             let mut b = guard.clone();
             match sign {
@@ -1783,12 +1837,15 @@ impl<'a> Grounder<'a> {
                     self.derive(a);
                     self.add_rule(Rule::normal(&[a], &b), Origin::default);
                 }
-                Sign::Not => {
-                    b.push(a as Lit);
-                    self.add_rule(Rule::normal(&[], &b), Origin::default);
-                }
-                Sign::NotNot => {
-                    b.push(-(a as Lit));
+                Sign::Not | Sign::NotNot => {
+                    let l = if sign == Sign::Not {
+                        a as Lit
+                    } else {
+                        -(a as Lit)
+                    };
+                    if !b.contains(&l) {
+                        b.push(l);
+                    }
                     self.add_rule(Rule::normal(&[], &b), Origin::default);
                 }
             }

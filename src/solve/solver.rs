@@ -188,6 +188,7 @@ impl Solver {
                 engine.add_clause(&c);
             }
         }
+        out.loop_guard = Some(g);
         out.install_unfounded(prog, engine);
         *guard = Some(g);
         out
@@ -260,6 +261,7 @@ impl Solver {
             }
         }
         let prog = self.prog.clone();
+        self.tr.loop_guard = self.step_guard;
         self.tr.install_unfounded(&prog, &mut self.engine);
         Ok(())
     }

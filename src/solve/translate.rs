@@ -41,6 +41,8 @@ pub struct Translation {
     pub assumptions: Vec<Lit>,
     /// True when some disjunctive rule has two head atoms in one positive cycle.
     pub non_hcf: bool,
+    /// Guard of the current incremental step, attached to loop nogoods (see `unfounded`).
+    pub loop_guard: Option<Lit>,
     /// Conjunctions already given a literal, keyed by sorted literal codes.
     conj: HashMap<Vec<u32>, Lit>,
     /// Weight bodies already given a literal, keyed by bound and sorted (code, weight) pairs.
@@ -344,7 +346,9 @@ impl Translation {
                 });
             }
         }
-        e.set_unfounded(Some(Unfounded::new(atom_lits, components, sups)));
+        let mut uf = Unfounded::new(atom_lits, components, sups);
+        uf.guard = self.loop_guard;
+        e.set_unfounded(Some(uf));
     }
 }
 

@@ -35,6 +35,8 @@
 //!   was undone as well.
 //! - Atoms that never had a source (before the first check) sit in `no_source` and are tried at
 //!   every check until they get one or are false at level 0.
+//! - With a step guard (incremental solving), every nogood carries the guard's negation: it
+//!   holds for the current step's rules only.
 //! - For non-head-cycle-free programs supports use the rule body only (a weaker but sound
 //!   nogood); minimality is then checked separately.
 //!
@@ -46,6 +48,41 @@ use super::lit::Lit;
 
 /// Marks an atom without a source pointer.
 const NONE: u32 = u32::MAX;
+
+/// Lists of `(support, head)` pairs indexed by a key (an atom or a literal code), stored flat
+/// (compressed rows) so that the hot loops read one contiguous slice and never the supports.
+#[derive(Clone, Debug, Default)]
+struct Lists {
+    /// Per key: start of its row in `data`; one extra entry closes the last row.
+    start: Vec<u32>,
+    /// The rows, concatenated.
+    data: Vec<(u32, u32)>,
+}
+
+impl Lists {
+    /// Builds the rows from `(key, support, head)` triples; duplicates are dropped.
+    fn build(keys: usize, mut triples: Vec<(u32, u32, u32)>) -> Lists {
+        triples.sort_unstable();
+        triples.dedup();
+        let mut start = vec![0u32; keys + 1];
+        for &(k, _, _) in &triples {
+            start[k as usize + 1] += 1;
+        }
+        for k in 0..keys {
+            start[k + 1] += start[k];
+        }
+        let data = triples.into_iter().map(|(_, s, h)| (s, h)).collect();
+        Lists { start, data }
+    }
+
+    /// The row range of `key` (empty for keys beyond the table).
+    fn range(&self, key: usize) -> std::ops::Range<usize> {
+        if key + 1 >= self.start.len() {
+            return 0..0;
+        }
+        self.start[key] as usize..self.start[key + 1] as usize
+    }
+}
 
 /// One way for a cyclic atom to be supported.
 #[derive(Clone, Debug)]
@@ -84,14 +121,14 @@ pub struct Unfounded {
     pub component: Vec<u32>,
     /// Per cyclic atom: indices of its supports.
     pub supports_of: Vec<Vec<u32>>,
-    /// Per cyclic atom: supports of atoms of its component whose body has it as a positive
-    /// atom (each support once).
-    pub occurs: Vec<Vec<u32>>,
+    /// Per cyclic atom: supports (with their heads) of atoms of its component whose body has
+    /// it as a positive atom (each support once).
+    occurs: Lists,
     /// All supports of cyclic atoms.
     pub supports: Vec<Support>,
     /// Per literal code: supports whose validity is lost when that literal becomes false (the
     /// support literal; for weight bodies also every weighted literal).
-    watch: Vec<Vec<u32>>,
+    watch: Lists,
     /// Per atom: its source (a support index), or `NONE`.
     source: Vec<u32>,
     /// Atoms that never had a source.
@@ -104,6 +141,9 @@ pub struct Unfounded {
     s_list: Vec<u32>,
     /// Scratch: atoms that got a source and whose dependents must be rechecked.
     queue: Vec<u32>,
+    /// Guard of the current incremental step: loop nogoods hold only while it is true, since
+    /// rules added later may give an unfounded set an external support.
+    pub guard: Option<Lit>,
     /// Statistics: checks that found an invalidated source.
     pub checks: u64,
 }
@@ -133,44 +173,33 @@ impl Unfounded {
             }
         }
         let mut supports_of = vec![Vec::new(); n];
-        let mut occurs = vec![Vec::new(); n];
+        let mut occurs = Vec::new();
+        let mut watch = Vec::new();
         let mut max_code = 0usize;
         for (i, s) in supports.iter().enumerate() {
-            supports_of[s.head as usize].push(i as u32);
+            let (i, h) = (i as u32, s.head);
+            supports_of[h as usize].push(i);
             max_code = max_code.max(s.lit.code());
+            watch.push((s.lit.code() as u32, i, h));
             match &s.body {
                 SupportBody::Normal(pos) => {
                     for &p in pos {
-                        occurs[p as usize].push(i as u32);
+                        occurs.push((p, i, h));
                     }
                 }
                 SupportBody::Weight { lits, .. } => {
                     for &(l, _, a) in lits {
                         max_code = max_code.max(l.code());
+                        watch.push((l.code() as u32, i, h));
                         if let Some(a) = a {
-                            occurs[a as usize].push(i as u32);
+                            occurs.push((a, i, h));
                         }
                     }
                 }
             }
         }
-        for o in occurs.iter_mut() {
-            o.sort_unstable();
-            o.dedup();
-        }
-        let mut watch = vec![Vec::new(); max_code + 1];
-        for (i, s) in supports.iter().enumerate() {
-            watch[s.lit.code()].push(i as u32);
-            if let SupportBody::Weight { lits, .. } = &s.body {
-                for &(l, _, _) in lits {
-                    watch[l.code()].push(i as u32);
-                }
-            }
-        }
-        for w in watch.iter_mut() {
-            w.sort_unstable();
-            w.dedup();
-        }
+        let occurs = Lists::build(n, occurs);
+        let watch = Lists::build(max_code + 1, watch);
         let count = vec![0; supports.len()];
         Unfounded {
             atom_lit,
@@ -185,6 +214,7 @@ impl Unfounded {
             count,
             s_list: Vec::new(),
             queue: Vec::new(),
+            guard: None,
             checks: 0,
         }
     }
@@ -267,13 +297,8 @@ impl Unfounded {
         // 1. Sources invalidated by newly false literals.
         let trail = e.trail();
         for &t in &trail[start.min(trail.len())..] {
-            let f = (!t).code();
-            if f >= self.watch.len() {
-                continue;
-            }
-            for k in 0..self.watch[f].len() {
-                let si = self.watch[f][k];
-                let h = self.supports[si as usize].head;
+            for k in self.watch.range((!t).code()) {
+                let (si, h) = self.watch.data[k];
                 if self.source[h as usize] == si {
                     self.enter(e, h);
                 }
@@ -300,9 +325,8 @@ impl Unfounded {
         while i < self.s_list.len() {
             let x = self.s_list[i] as usize;
             i += 1;
-            for k in 0..self.occurs[x].len() {
-                let si = self.occurs[x][k];
-                let h = self.supports[si as usize].head;
+            for k in self.occurs.range(x) {
+                let (si, h) = self.occurs.data[k];
                 if self.source[h as usize] == si {
                     self.enter(e, h);
                 }
@@ -311,8 +335,8 @@ impl Unfounded {
         // 3. Forward propagation of support inside `S`.
         for i in 0..self.s_list.len() {
             let x = self.s_list[i] as usize;
-            for &si in &self.occurs[x] {
-                self.count[si as usize] += 1;
+            for k in self.occurs.range(x) {
+                self.count[self.occurs.data[k].0 as usize] += 1;
             }
         }
         for i in 0..self.s_list.len() {
@@ -328,10 +352,10 @@ impl Unfounded {
                 }
             }
             while let Some(x) = self.queue.pop() {
-                for k in 0..self.occurs[x as usize].len() {
-                    let si = self.occurs[x as usize][k] as usize;
+                for k in self.occurs.range(x as usize) {
+                    let (si, h) = self.occurs.data[k];
+                    let (si, h) = (si as usize, h as usize);
                     self.count[si] -= 1;
-                    let h = self.supports[si].head as usize;
                     if self.in_s[h] && self.eligible(e, si) {
                         self.take_source(si);
                     }
@@ -340,8 +364,8 @@ impl Unfounded {
         }
         for i in 0..self.s_list.len() {
             let x = self.s_list[i] as usize;
-            for &si in &self.occurs[x] {
-                self.count[si as usize] = 0;
+            for k in self.occurs.range(x) {
+                self.count[self.occurs.data[k].0 as usize] = 0;
             }
         }
         // 4. What is left is unfounded; one nogood per atom, per component.
@@ -361,9 +385,10 @@ impl Unfounded {
             {
                 let ext = self.external(e, part);
                 for &a in part {
-                    let mut c = Vec::with_capacity(ext.len() + 1);
+                    let mut c = Vec::with_capacity(ext.len() + 2);
                     c.push(!self.atom_lit[a as usize]);
                     c.extend_from_slice(&ext);
+                    c.extend(self.guard.map(|g| !g));
                     out.push(c);
                 }
             }
