@@ -433,7 +433,12 @@ fn run_clasp_mode(
         Ok(p) => p,
         Err(e) => {
             let name = names.join(",");
-            writeln!(io.err, "{name}: error: malformed aspif input: {e}\n")?;
+            // gringo's diagnostic form, `file:line:column: error: message` (the column in bytes).
+            let (line, column, kind) = (e.line, e.column, &e.kind);
+            writeln!(
+                io.err,
+                "{name}:{line}:{column}: error: malformed aspif input: {kind}\n"
+            )?;
             writeln!(io.err, "*** ERROR: (lucent): reading aspif failed")?;
             return Ok(EXIT_INPUT);
         }

@@ -433,8 +433,10 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 Some(true) => {}
                 Some(false) => ok = false,
                 None => {
+                    // An atom left out of the numbering occurs in no rule, so it is false:
+                    // `not a` holds and drops out of the condition, `a` fails it.
                     if number[l.unsigned_abs() as usize] == 0 {
-                        ok = false;
+                        ok &= l < 0;
                     } else {
                         c.push(map_lit(l))
                     }
@@ -455,10 +457,14 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 Some(true) => {}
                 Some(false) => return None,
                 None => {
+                    // As for shows: an unnumbered atom is false.
                     if number[l.unsigned_abs() as usize] == 0 {
-                        return None;
+                        if l > 0 {
+                            return None;
+                        }
+                    } else {
+                        c.push(map_lit(l))
                     }
-                    c.push(map_lit(l))
                 }
             }
         }

@@ -6,7 +6,8 @@
 //! `unfounded`-set propagation for non-tight programs; `solver` drives it for enumeration,
 //! optimization, consequences, CR-Prolog semantics, limits, incremental rules and the portfolio,
 //! and produces a `SolveResult`. `lit` holds the literal encoding, `config` and `result` the
-//! caller-facing types; `check` and `brute` are independent references for tests.
+//! caller-facing types; `check` and `brute` are independent references for tests;
+//! `fuzzing` is the body of the aspif fuzz target.
 
 pub mod brute;
 pub mod check;
@@ -16,6 +17,7 @@ pub mod result;
 pub use config::{Config, CrMode, EnumMode, OptMode, RestartPolicy};
 pub use result::{Model, Outcome, SolveResult, Stats, StopReason};
 pub mod engine;
+pub mod fuzzing;
 pub mod lit;
 pub mod solver;
 pub mod translate;

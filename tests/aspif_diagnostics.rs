@@ -1,0 +1,91 @@
+//! Malformed aspif at the command line (`lucent --mode=clasp`): exit code 65 and a diagnostic
+//! `file:line:column: error: malformed aspif input: ...` (snapshots), never a panic. The inputs
+//! are named after their error; each comment says where the error is and why.
+
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+/// Runs `lucent --mode=clasp` on `input` from standard input; returns (exit code, stderr).
+fn clasp_mode(input: &[u8]) -> (i32, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_lucent"))
+        .args(["--mode=clasp", "-n0"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(input).unwrap();
+    let out = child.wait_with_output().unwrap();
+    (
+        out.status.code().expect("exited, not killed by a signal"),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn diagnostic(input: &[u8]) -> String {
+    let (code, err) = clasp_mode(input);
+    assert_eq!(code, 65, "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    err
+}
+
+#[test]
+fn bad_header() {
+    // Line 1, column 1: `aps` is not the `asp` header.
+    insta::assert_snapshot!(diagnostic(b"aps 1 0 0\n0\n"));
+}
+
+#[test]
+fn letter_in_atom() {
+    // Line 2, column 7: the head atom `1x` is not a number.
+    insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n1 0 1 1x 0 0\n0\n"));
+}
+
+#[test]
+fn atom_out_of_range() {
+    // Line 2, column 7: atoms are positive; `-3` in a head is out of range.
+    insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n1 0 1 -3 0 0\n0\n"));
+}
+
+#[test]
+fn unknown_statement() {
+    // Line 2, column 1: aspif version 1 has statement types 0 to 10.
+    insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n42 1 2\n0\n"));
+}
+
+#[test]
+fn bad_external_value() {
+    // Line 2, column 5: external values are 0 to 3.
+    insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n5 1 7\n0\n"));
+}
+
+#[test]
+fn missing_end_of_step() {
+    // The input ends after line 2 without the step's closing `0`.
+    insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n1 0 1 1 0 0\n"));
+}
+
+#[test]
+fn truncated_rule() {
+    // Line 2: the body announces two literals and gives one; the newline comes where the
+    // second literal should be.
+    insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n1 0 1 1 0 2 3\n0\n"));
+}
+
+#[test]
+fn negative_weight() {
+    // Line 2, column 17 (the weight of literal 2): weight bodies take non-negative weights (clasp rejects them too).
+    insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n1 0 1 1 1 1 1 2 -1\n0\n"));
+}
+
+#[test]
+fn binary_garbage() {
+    // Not text at all: the header is missing.
+    insta::assert_snapshot!(diagnostic(b"\x00\xff\xfe\x01asp"));
+}
+
+#[test]
+fn output_symbol_not_utf8() {
+    // Line 2, column 5: the output symbol's two bytes are not UTF-8.
+    insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n4 2 \xff\xfe 0\n0\n"));
+}
