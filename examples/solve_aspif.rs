@@ -4,11 +4,13 @@
 //!
 //! Usage: `solve_aspif [-n N] [--opt-mode=opt|optN|enum[,B..]|ignore]
 //! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [--parallel-mode=N]
-//! [--init-moms|--no-init-moms] [--vsids-decay=X] [--restarts=L,N|glucose|no] [-q] [FILE]`;
-//! the last three override the solver's search defaults, for tuning experiments.
+//! [--init-moms|--no-init-moms] [--vsids-decay=X] [--restarts=L,N|glucose|no]
+//! [--save-progress=N] [--body-phase=true|false] [--del-cfl=FIRST,INC] [-q] [FILE]`; the search options override the solver's search defaults, for tuning experiments.
 
 use lucent::ground::aspif;
-use lucent::solve::{Config, CrMode, EnumMode, OptMode, Outcome, RestartPolicy, Solver};
+use lucent::solve::{
+    Config, CrMode, EnumMode, OptMode, Outcome, ReduceSchedule, RestartPolicy, Solver,
+};
 use std::io::Read;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
@@ -60,6 +62,16 @@ fn main() -> ExitCode {
                 .unwrap_or(1);
         } else if a == "--init-moms" || a == "--no-init-moms" {
             config.init_moms = a == "--init-moms";
+        } else if let Some(v) = a.strip_prefix("--del-cfl=") {
+            let mut it = v.split(',').filter_map(|x| x.parse().ok());
+            config.reduce = ReduceSchedule::Conflicts {
+                first: it.next().unwrap_or(2000),
+                inc: it.next().unwrap_or(300),
+            };
+        } else if let Some(v) = a.strip_prefix("--save-progress=") {
+            config.save_progress = v.parse().unwrap_or(0);
+        } else if let Some(v) = a.strip_prefix("--body-phase=") {
+            config.body_phase_true = v == "true";
         } else if let Some(v) = a.strip_prefix("--vsids-decay=") {
             config.var_decay = v.parse().unwrap_or(config.var_decay);
         } else if let Some(v) = a.strip_prefix("--restarts=") {

@@ -73,8 +73,15 @@ pub struct Config {
     pub var_decay: f64,
     /// Initial phase of decision variables: false first when `true` (clasp's default for atoms).
     pub default_phase_false: bool,
+    /// Initial phase of body variables (clasp's `--sign-def=asp` tries bodies true).
+    pub body_phase_true: bool,
+    /// Save phases only on backjumps over more than this many levels (clasp
+    /// `--save-progress`); 0 saves on every backtrack.
+    pub save_progress: u32,
     /// Restart policy.
     pub restarts: RestartPolicy,
+    /// When learnt clauses are reduced.
+    pub reduce: ReduceSchedule,
     /// Seed the VSIDS activities from clause occurrences before the first decision (clasp
     /// `--init-moms`).
     pub init_moms: bool,
@@ -85,6 +92,21 @@ pub struct Config {
     pub check_models: bool,
     /// Number of portfolio threads (`--parallel-mode=N`); 1 is sequential.
     pub threads: usize,
+}
+
+/// When learnt clauses are reduced (half of those with LBD above 2 are deleted each time).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ReduceSchedule {
+    /// When the number of learnt clauses exceeds a limit that starts at 4000 plus the trail
+    /// length and grows by 10% per reduction (MiniSat).
+    Size,
+    /// Every `first + i * inc` conflicts (Glucose; clasp `--del-cfl=+,first,inc`).
+    Conflicts {
+        /// Conflicts before the first reduction.
+        first: u64,
+        /// Growth of the interval per reduction.
+        inc: u64,
+    },
 }
 
 /// When the search restarts.
@@ -112,8 +134,14 @@ impl Default for Config {
             random_freq_permille: 0,
             var_decay: 0.95,
             default_phase_false: true,
+            body_phase_true: true,
+            save_progress: 0,
             restarts: RestartPolicy::Glucose,
-            init_moms: false,
+            init_moms: true,
+            reduce: ReduceSchedule::Conflicts {
+                first: 2000,
+                inc: 300,
+            },
             incremental: false,
             check_models: false,
             threads: 1,

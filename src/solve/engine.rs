@@ -16,6 +16,7 @@
 //!   `values[(!l).code()] == -values[l.code()]`.
 //! - Assumptions occupy decision levels `1..=assumptions.len()` during `search`.
 
+use super::config::ReduceSchedule;
 use super::lit::{Lit, Var};
 use super::unfounded::Unfounded;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -84,6 +85,8 @@ struct WeightConstraint {
     lits: Vec<(Lit, u64)>,
     /// The lower bound.
     bound: u64,
+    /// Detached by `remove_weight`: no longer watched or propagated.
+    removed: bool,
 }
 
 /// Answer of a search.
@@ -185,14 +188,26 @@ pub struct Engine {
     uf_dirty: bool,
     /// Restart state.
     pub restarts: Restarts,
-    /// Maximum number of learnt clauses before a reduction.
+    /// Maximum number of learnt clauses before a reduction (`ReduceSchedule::Size`).
     max_learnts: f64,
+    /// When the learnt clause database is reduced.
+    pub reduce: ReduceSchedule,
+    /// Conflict count at which the next reduction is due (`ReduceSchedule::Conflicts`).
+    next_reduce: u64,
+    /// Number of reductions so far.
+    reductions: u64,
     /// Pseudo-random state.
     rng: u64,
     /// Random decision probability in 1/1000.
     pub random_permille: u32,
     /// Phase of a variable never assigned before.
     pub default_phase: bool,
+    /// Phase of a new body variable (`new_body_var`): clasp's `--sign-def=asp` tries bodies
+    /// true and atoms false.
+    pub body_phase: bool,
+    /// Save phases only on backjumps over more than this many levels (clasp
+    /// `--save-progress`); 0 saves on every backtrack.
+    pub save_progress: u32,
     /// Deadline, checked every few hundred conflicts or decisions.
     pub deadline: Option<Instant>,
     /// Interrupt flag, checked like the deadline.
@@ -277,9 +292,14 @@ impl Engine {
                 since: 0,
             },
             max_learnts: 4000.0,
+            reduce: ReduceSchedule::Size,
+            next_reduce: 0,
+            reductions: 0,
             rng: 0x9E37_79B9_7F4A_7C15,
             random_permille: 0,
             default_phase: false,
+            body_phase: false,
+            save_progress: 0,
             deadline: None,
             interrupt: None,
             portfolio_stop: None,
@@ -336,6 +356,14 @@ impl Engine {
         self.watches.push(Vec::new());
         self.watches.push(Vec::new());
         self.heap_insert(v);
+        v
+    }
+
+    /// Creates a new variable standing for a rule body (or another conjunction); its initial
+    /// phase is `body_phase`.
+    pub fn new_body_var(&mut self) -> Var {
+        let v = self.new_var();
+        self.phase[v.index()] = self.body_phase;
         v
     }
 
@@ -427,6 +455,7 @@ impl Engine {
             return;
         }
         let start = self.trail_lim[level as usize];
+        let save = self.decision_level() - level > self.save_progress;
         for i in (start..self.trail.len()).rev() {
             let l = self.trail[i];
             let v = l.var();
@@ -444,7 +473,9 @@ impl Engine {
             }
             self.values[l.code()] = 0;
             self.values[(!l).code()] = 0;
-            self.phase[v.index()] = !l.is_neg();
+            if save {
+                self.phase[v.index()] = !l.is_neg();
+            }
             self.reason[v.index()] = Reason::Decision;
             if self.heap_pos[v.index()] == usize::MAX && self.decidable[v.index()] {
                 self.heap_insert(v);
@@ -661,6 +692,7 @@ impl Engine {
             head,
             lits: norm,
             bound,
+            removed: false,
         });
         self.num_clauses += 1;
         if self.propagate_weight(id as usize) || self.propagate().is_some() {
@@ -668,6 +700,28 @@ impl Engine {
             return false;
         }
         true
+    }
+
+    /// Detaches the weight constraint whose literal is `head` (if `add_weight` made one), at
+    /// level 0. Its head variable becomes unconstrained by it; clauses learnt with its help
+    /// stay valid for every assignment of the other variables (the constraint only defined
+    /// `head`), so callers may retire auxiliary bounds this way once nothing reads `head`.
+    pub fn remove_weight(&mut self, head: Lit) {
+        self.backtrack(0);
+        let Some(id) = self
+            .weights
+            .iter()
+            .position(|c| !c.removed && c.head == head)
+        else {
+            return;
+        };
+        let c = &mut self.weights[id];
+        c.removed = true;
+        let lits = std::mem::take(&mut c.lits);
+        let idu = id as u32;
+        for v in lits.iter().map(|&(l, _)| l.var()).chain([head.var()]) {
+            self.weight_watch[v.index()].retain(|w| w.id != idu);
+        }
     }
 
     // ---------------------------------------------------------------- propagation
@@ -1039,6 +1093,7 @@ impl Engine {
             clause.clear();
             if let Reason::Long(cref) = self.reason[pl.var().index()] {
                 self.bump_clause(cref);
+                self.update_lbd(cref);
             }
             // The implied literal itself is not added, and the filter above skips it.
             self.reason_lits(pl.var(), &mut clause);
@@ -1113,6 +1168,35 @@ impl Engine {
         self.min_stack = stack;
         self.min_buf = buf;
         result
+    }
+
+    /// Lowers the stored LBD of a learnt clause met in analysis when its literals now span
+    /// fewer levels (clasp `--update-lbd=less`), so reductions keep clauses that became good.
+    fn update_lbd(&mut self, cref: ClauseRef) {
+        let flags = self.clause_flags(cref);
+        let old = flags >> 2;
+        if flags & FLAG_LEARNT == 0 || old <= 2 {
+            return;
+        }
+        self.lbd_stamp += 1;
+        let stamp = self.lbd_stamp;
+        let len = self.clause_len(cref);
+        let mut n = 0;
+        for k in 0..len {
+            let l = self.clause_lit(cref, k);
+            let lv = self.level[l.var().index()] as usize;
+            if lv >= self.level_seen.len() {
+                self.level_seen.resize(lv + 1, 0);
+            }
+            if self.level_seen[lv] != stamp {
+                self.level_seen[lv] = stamp;
+                n += 1;
+                if n >= old {
+                    return;
+                }
+            }
+        }
+        self.arena[cref as usize + 1] = (flags & 3) | (n << 2);
     }
 
     /// Number of distinct decision levels among `lits` (literal block distance).
@@ -1627,9 +1711,23 @@ impl Engine {
                 continue;
             }
             self.maybe_simplify();
-            if self.learnts.len() as f64 >= self.max_learnts + self.trail.len() as f64 {
-                self.reduce_db();
-                self.max_learnts *= 1.1;
+            match self.reduce {
+                ReduceSchedule::Size => {
+                    if self.learnts.len() as f64 >= self.max_learnts + self.trail.len() as f64 {
+                        self.reduce_db();
+                        self.max_learnts *= 1.1;
+                    }
+                }
+                ReduceSchedule::Conflicts { first, inc } => {
+                    if self.next_reduce == 0 {
+                        self.next_reduce = self.conflicts + first;
+                    }
+                    if self.conflicts >= self.next_reduce {
+                        self.reductions += 1;
+                        self.next_reduce = self.conflicts + first + self.reductions * inc;
+                        self.reduce_db();
+                    }
+                }
             }
             let level = self.decision_level() as usize;
             let next = if level < assumptions.len() {

@@ -68,6 +68,9 @@ pub struct Solver {
     minimality_checks: u64,
     /// Costs of the best model of the last branch-and-bound run.
     best: Option<Vec<i64>>,
+    /// Weight constraints made for a cost bound, by guard: detached when the guard retires,
+    /// so that dead bounds of earlier models are not propagated.
+    bound_weights: Vec<(Lit, Vec<Lit>)>,
 }
 
 /// Mutable state of one call.
@@ -103,6 +106,9 @@ impl Solver {
         engine.random_permille = config.random_freq_permille.min(1000);
         engine.default_phase = !config.default_phase_false;
         engine.init_moms = config.init_moms;
+        engine.reduce = config.reduce;
+        engine.body_phase = config.body_phase_true;
+        engine.save_progress = config.save_progress;
         engine.restarts = match config.restarts {
             RestartPolicy::Luby(u) => Restarts::Luby {
                 unit: u.max(1),
@@ -153,6 +159,7 @@ impl Solver {
             step_guard,
             minimality_checks: 0,
             best: None,
+            bound_weights: Vec::new(),
         }
     }
 
@@ -406,6 +413,15 @@ impl Solver {
 
     fn retire(&mut self, guard: Lit) {
         self.engine.add_clause(&[!guard]);
+        if let Some(k) = self.bound_weights.iter().position(|(g, _)| *g == guard) {
+            let (_, heads) = self.bound_weights.swap_remove(k);
+            // The bound's variables stop being functions of the atoms: take them out of the
+            // decisions too, so that decision-based blocking still enumerates atom sets.
+            for h in heads {
+                self.engine.remove_weight(h);
+                self.engine.set_decidable(h.var(), false);
+            }
+        }
     }
 
     // ------------------------------------------------------------------ search primitives
@@ -784,6 +800,9 @@ impl Solver {
             at_most.push(a);
             below.push(b);
         }
+        let heads = at_most.iter().chain(&below).copied().collect();
+        self.bound_weights.push((guard, heads));
+        let mut conj_vars = Vec::new();
         let mut big = vec![!guard];
         for i in 0..k {
             // g_i <-> a_0 and ... and a_{i-1} and b_i; a full equivalence keeps every auxiliary
@@ -792,6 +811,12 @@ impl Solver {
             conj.push(below[i]);
             let g = self.tr.conjunction(&mut self.engine, &conj);
             big.push(g);
+            if conj.len() > 1 {
+                conj_vars.push(g);
+            }
+        }
+        if let Some(entry) = self.bound_weights.last_mut() {
+            entry.1.extend(conj_vars);
         }
         self.engine.add_clause(&big);
     }

@@ -113,7 +113,7 @@ impl Translation {
         if let Some(&b) = self.conj.get(&key) {
             return b;
         }
-        let b = e.new_var().positive();
+        let b = e.new_body_var().positive();
         let mut big = vec![b];
         for &c in &key {
             let l = Lit::from_code(c);
@@ -140,7 +140,7 @@ impl Translation {
                 if let Some(&b) = self.weights.get(&(*lower, key.clone())) {
                     return b;
                 }
-                let b = e.new_var().positive();
+                let b = e.new_body_var().positive();
                 let wl: Vec<(Lit, i64)> =
                     key.iter().map(|&(c, w)| (Lit::from_code(c), w)).collect();
                 e.add_weight(b, &wl, *lower);
