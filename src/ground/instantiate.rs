@@ -357,8 +357,20 @@ impl<'a> Grounder<'a> {
         }
     }
 
+    /// Frees the rule deduplication table once instantiation is over (simplification does
+    /// not add rules through [`Grounder::add_rule`]); large programs need the memory.
+    pub fn release_dedup(&mut self) {
+        self.rule_set = HashTable::new();
+        self.rule_hashes = Vec::new();
+    }
+
     /// Adds a ground rule unless an equal one exists; returns its index if added.
     fn add_rule(&mut self, rule: Rule, origin: impl FnOnce() -> Origin) -> bool {
+        assert_eq!(
+            self.rule_hashes.len(),
+            self.rules.len(),
+            "add_rule after release_dedup"
+        );
         let hash = self.hasher.hash_one(&rule);
         let rules = &self.rules;
         if self
@@ -615,12 +627,23 @@ impl<'a> Grounder<'a> {
                 let lb = lhs.bound_by_binding(&ctx.binding);
                 let rb = rhs.bound_by_binding(&ctx.binding);
                 if lb && rb {
-                    let (Some(l), Some(r)) =
-                        (self.eval(lhs, &ctx.binding), self.eval(rhs, &ctx.binding))
-                    else {
-                        return;
+                    // Integer arithmetic is compared without creating symbols; anything else
+                    // (and undefined operations, which warn) goes the general way.
+                    let holds = match (
+                        lhs.eval_int(&self.syms, &ctx.binding),
+                        rhs.eval_int(&self.syms, &ctx.binding),
+                    ) {
+                        (Some(l), Some(r)) => cmp_ints(*op, l, r),
+                        _ => {
+                            let (Some(l), Some(r)) =
+                                (self.eval(lhs, &ctx.binding), self.eval(rhs, &ctx.binding))
+                            else {
+                                return;
+                            };
+                            cmp_holds(&self.syms, *op, l, r)
+                        }
                     };
-                    if cmp_holds(&self.syms, *op, l, r) {
+                    if holds {
                         self.join(ctx, lits, i + 1, ranges, k);
                     }
                 } else {
@@ -2123,6 +2146,18 @@ fn positive_atoms<'x>(l: &'x NLit, out: &mut Vec<&'x NAtom>) {
             }
         }
         _ => {}
+    }
+}
+
+/// `a op b` on integers (clingo orders integers numerically).
+fn cmp_ints(op: CmpOp, a: i32, b: i32) -> bool {
+    match op {
+        CmpOp::Eq => a == b,
+        CmpOp::Ne => a != b,
+        CmpOp::Lt => a < b,
+        CmpOp::Le => a <= b,
+        CmpOp::Gt => a > b,
+        CmpOp::Ge => a >= b,
     }
 }
 

@@ -266,6 +266,28 @@ impl NTerm {
         }
     }
 
+    /// The value of a term made of integers, variables bound to integers and defined integer
+    /// operations, computed without creating symbols; `None` for any other term (including an
+    /// undefined operation), which the caller then evaluates with [`NTerm::eval`].
+    pub fn eval_int(&self, syms: &Symbols, b: &Binding) -> Option<i32> {
+        match self {
+            NTerm::Sym(s) => syms.num(*s),
+            NTerm::Var(v) => syms.num(b.get(*v)?),
+            NTerm::Unary { op, arg, .. } => {
+                let n = arg.eval_int(syms, b)?;
+                Some(match op {
+                    UnaryOp::Minus => n.wrapping_neg(),
+                    UnaryOp::BitNot => !n,
+                    UnaryOp::Abs => n.wrapping_abs(),
+                })
+            }
+            NTerm::Binary { op, lhs, rhs, .. } => {
+                binary_int(*op, lhs.eval_int(syms, b)?, rhs.eval_int(syms, b)?)
+            }
+            NTerm::Fun { .. } => None,
+        }
+    }
+
     /// Matches the term against `sym`, binding unbound variables; on failure the binding may
     /// hold partial bindings, which the caller undoes to its mark. An undefined operation is a
     /// failed match.
