@@ -1735,6 +1735,17 @@ impl<'a> Rewriter<'a> {
                 }
                 let mut es = Vec::new();
                 for e in elems {
+                    // An element with a colon whose literal is false (`#false`, `not #true`) never
+                    // holds; gringo reads a comparison there the same way.
+                    if e.has_colon
+                        && match &e.literal.atom {
+                            ast::Atom::Boolean(b) => *b == (e.literal.sign == Sign::Not),
+                            ast::Atom::Comparison { .. } => true,
+                            _ => false,
+                        }
+                    {
+                        continue;
+                    }
                     let e = if e.has_colon {
                         self.disj_elem(e, &mut vars)
                     } else {
