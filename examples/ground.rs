@@ -88,6 +88,10 @@ fn main() {
             text::write_text(&result, if origins { Some(&sources) } else { None })
         );
     } else {
-        print!("{}", aspif::write_program(&result.program));
+        let stdout = std::io::stdout();
+        let mut out = std::io::BufWriter::new(stdout.lock());
+        aspif::write_program_to(&result.program, &mut out)
+            .and_then(|()| std::io::Write::flush(&mut out))
+            .expect("writing standard output");
     }
 }

@@ -49,3 +49,31 @@ fn size_limit_stops_grounding() {
     assert!(g.program.rules.is_empty());
     insta::assert_snapshot!(g.diagnostics.render(&sources));
 }
+
+#[test]
+fn redefinition_of_constant() {
+    // clingo 5.8.3 reports the second and third definitions, each with a note at the first.
+    insta::assert_snapshot!(check("#const a=1.\n#const a=2.\n#const a=3.\np(a)."));
+}
+
+#[test]
+fn cyclic_constant_definition() {
+    // One error per cycle, at its first definition; `b` only depends on the cycle. clingo 5.8.3
+    // prints the same messages (with the value normalised as `(d+1)`).
+    insta::assert_snapshot!(check(
+        "#const a=f(c).\n#const b=a.\n#const c=d+1.\n#const d=a.\np(b)."
+    ));
+}
+
+#[test]
+fn constants_in_any_order_and_self_reference() {
+    // `#const a=b. #const b=1.` gives a=1; `#const s=s.` leaves the name (clingo 5.8.3).
+    assert_eq!(check("#const a=b.\n#const b=1.\n#const s=s.\np(a,s)."), "");
+}
+
+#[test]
+fn undefined_tuple_in_head_aggregate() {
+    // clingo 5.8.3 warns about the same two terms, printed as `(X+0)` (its own weight check)
+    // and `(X+1)`, and locates an operation at its first operand.
+    insta::assert_snapshot!(check("p(bot).\n#sum{X:q(X):p(X)}.\n#count{X+1:q(X):p(X)}."));
+}

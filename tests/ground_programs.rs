@@ -1,6 +1,7 @@
 //! Data-driven grounder tests over `tests/data/ground/*.lp`:
 //! - answer sets: ground with Lucent, write aspif, solve with clasp, and compare the sorted answer
-//!   sets and costs with `NAME.expected.json` (recorded from clingo 5.4.1, command inside);
+//!   sets and costs with `NAME.expected.json` (recorded from clingo 5.4.1, or 5.8.3 where the
+//!   program's first line says so; command inside);
 //! - atoms: the shown (possibly true) atoms of Lucent's ground program equal gringo's
 //!   (`gringo --output=intermediate`), and gringo's facts are facts here too.
 //!
@@ -174,6 +175,12 @@ fn gringo_outputs(path: &Path) -> (BTreeSet<String>, BTreeSet<String>) {
 #[test]
 fn atoms_match_gringo() {
     for path in programs() {
+        // Programs recorded with clingo 5.8.3 are there because gringo 5.4.1 grounds them
+        // differently (record.py); their answer sets are checked above.
+        let text = std::fs::read_to_string(&path).expect("program");
+        if text.starts_with("% record with clingo 5.8.3") {
+            continue;
+        }
         let (g, _) = ground_file(&path);
         let mut facts = BTreeSet::new();
         let mut others = BTreeSet::new();

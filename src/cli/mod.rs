@@ -379,11 +379,9 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
     match options.mode {
         options::Mode::Gringo => {
             match options.ground_format {
-                options::GroundFormat::Aspif => write!(
-                    io.out,
-                    "{}",
-                    ground::aspif::write_program(&grounding.program)
-                )?,
+                options::GroundFormat::Aspif => {
+                    ground::aspif::write_program_to(&grounding.program, &mut *io.out)?
+                }
                 options::GroundFormat::Text => {
                     let sources = options.provenance.then_some(&parsed.sources);
                     write!(io.out, "{}", ground::text::write_text(&grounding, sources))?

@@ -246,11 +246,28 @@ pub fn write(aspif: &Aspif) -> String {
 /// Writes a program as a single-step aspif file in the canonical layout (see
 /// [`AspifStep::from_program`]).
 pub fn write_program(program: &GroundProgram) -> String {
-    // The program is borrowed, not copied into an `Aspif`: ground programs can be large.
     let mut out = Vec::with_capacity(1 << 12);
-    out.extend_from_slice(b"asp 1 0 0\n");
-    write_statements(&mut out, program, &[], &canonical_layout(program));
+    write_program_to(program, &mut out).expect("writing to memory does not fail");
     String::from_utf8(out).expect("aspif writer produced UTF-8 from UTF-8 parts")
+}
+
+/// Like [`write_program`], streaming to `w` in blocks (a large ground program is never held
+/// as text in memory).
+pub fn write_program_to(
+    program: &GroundProgram,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
+    let mut buf = Vec::with_capacity(1 << 16);
+    buf.extend_from_slice(b"asp 1 0 0\n");
+    for stmt in canonical_layout(program) {
+        write_statement(&mut buf, program, &[], stmt);
+        if buf.len() >= 1 << 16 {
+            w.write_all(&buf)?;
+            buf.clear();
+        }
+    }
+    buf.extend_from_slice(b"0\n");
+    w.write_all(&buf)
 }
 
 impl AspifStep {
@@ -314,120 +331,125 @@ fn write_step(out: &mut Vec<u8>, step: &AspifStep) {
 
 /// Writes the statements of `layout` over `p` and `comments`, then the step's closing `0`.
 fn write_statements(out: &mut Vec<u8>, p: &GroundProgram, comments: &[String], layout: &[Stmt]) {
-    for stmt in layout {
-        match *stmt {
-            Stmt::Rule(i) => {
-                let rule = &p.rules[i as usize];
-                out.extend_from_slice(match rule.head_kind {
-                    HeadKind::Disjunction => b"1 0",
-                    HeadKind::Choice => b"1 1",
-                });
-                write_lits(out, &rule.head);
-                match &rule.body {
-                    Body::Normal(lits) => {
-                        out.extend_from_slice(b" 0");
-                        write_lits(out, lits);
-                    }
-                    Body::Weight { lower, lits } => {
-                        out.extend_from_slice(b" 1");
-                        push_int(out, *lower);
-                        write_wlits(out, lits);
-                    }
+    for &stmt in layout {
+        write_statement(out, p, comments, stmt);
+    }
+    out.extend_from_slice(b"0\n");
+}
+
+/// Writes one statement and its newline.
+fn write_statement(out: &mut Vec<u8>, p: &GroundProgram, comments: &[String], stmt: Stmt) {
+    match stmt {
+        Stmt::Rule(i) => {
+            let rule = &p.rules[i as usize];
+            out.extend_from_slice(match rule.head_kind {
+                HeadKind::Disjunction => b"1 0",
+                HeadKind::Choice => b"1 1",
+            });
+            write_lits(out, &rule.head);
+            match &rule.body {
+                Body::Normal(lits) => {
+                    out.extend_from_slice(b" 0");
+                    write_lits(out, lits);
                 }
-            }
-            Stmt::Minimize(i) => {
-                let m = &p.minimize[i as usize];
-                out.push(b'2');
-                push_int(out, m.priority);
-                write_wlits(out, &m.lits);
-            }
-            Stmt::Project { start, len } => {
-                out.push(b'3');
-                write_lits(out, &p.projections[start as usize..(start + len) as usize]);
-            }
-            Stmt::Output(i) => {
-                let o = &p.outputs[i as usize];
-                let _ = write!(out, "4 {} {}", o.symbol.len(), o.symbol);
-                write_lits(out, &o.condition);
-            }
-            Stmt::External(i) => {
-                let (atom, value) = p.externals[i as usize];
-                let v = match value {
-                    ExternalValue::Free => 0,
-                    ExternalValue::True => 1,
-                    ExternalValue::False => 2,
-                    ExternalValue::Release => 3,
-                };
-                let _ = write!(out, "5 {atom} {v}");
-            }
-            Stmt::Assume { start, len } => {
-                out.push(b'6');
-                write_lits(out, &p.assumptions[start as usize..(start + len) as usize]);
-            }
-            Stmt::Heuristic(i) => {
-                let h = &p.heuristics[i as usize];
-                let m = match h.modifier {
-                    HeuristicModifier::Level => 0,
-                    HeuristicModifier::Sign => 1,
-                    HeuristicModifier::Factor => 2,
-                    HeuristicModifier::Init => 3,
-                    HeuristicModifier::True => 4,
-                    HeuristicModifier::False => 5,
-                };
-                let _ = write!(out, "7 {m} {} {} {}", h.atom, h.bias, h.priority);
-                write_lits(out, &h.condition);
-            }
-            Stmt::Edge(i) => {
-                let e = &p.edges[i as usize];
-                let _ = write!(out, "8 {} {}", e.from, e.to);
-                write_lits(out, &e.condition);
-            }
-            Stmt::Theory(i) => {
-                let line = &p.theory[i as usize];
-                assert!(
-                    !line.contains('\n'),
-                    "a theory line must not contain a newline"
-                );
-                out.extend_from_slice(line.as_bytes());
-            }
-            Stmt::Comment(i) => {
-                let text = &comments[i as usize];
-                assert!(
-                    !text.contains('\n'),
-                    "an aspif comment must not contain a newline"
-                );
-                if text.is_empty() {
-                    out.extend_from_slice(b"10");
-                } else {
-                    let _ = write!(out, "10 {text}");
-                }
-            }
-            Stmt::CrRule(i) => {
-                let cr = &p.cr_rules[i as usize];
-                assert!(
-                    !cr.label.contains('\n'),
-                    "a CR label must not contain a newline"
-                );
-                let _ = write!(out, "10 {CR_TAG} {} {}", cr.appl, cr.label);
-            }
-            Stmt::Prefer(i) => {
-                let pr = &p.prefers[i as usize];
-                let _ = write!(out, "10 {PREFER_TAG} {} {}", pr.better, pr.worse);
-            }
-            Stmt::CrMinimize(priority) => {
-                let _ = write!(
-                    out,
-                    "10 {CR_MINIMIZE_TAG} {priority}\n2 {priority} {}",
-                    p.cr_rules.len()
-                );
-                for cr in &p.cr_rules {
-                    let _ = write!(out, " {} 1", cr.appl);
+                Body::Weight { lower, lits } => {
+                    out.extend_from_slice(b" 1");
+                    push_int(out, *lower);
+                    write_wlits(out, lits);
                 }
             }
         }
-        out.push(b'\n');
+        Stmt::Minimize(i) => {
+            let m = &p.minimize[i as usize];
+            out.push(b'2');
+            push_int(out, m.priority);
+            write_wlits(out, &m.lits);
+        }
+        Stmt::Project { start, len } => {
+            out.push(b'3');
+            write_lits(out, &p.projections[start as usize..(start + len) as usize]);
+        }
+        Stmt::Output(i) => {
+            let o = &p.outputs[i as usize];
+            let _ = write!(out, "4 {} {}", o.symbol.len(), o.symbol);
+            write_lits(out, &o.condition);
+        }
+        Stmt::External(i) => {
+            let (atom, value) = p.externals[i as usize];
+            let v = match value {
+                ExternalValue::Free => 0,
+                ExternalValue::True => 1,
+                ExternalValue::False => 2,
+                ExternalValue::Release => 3,
+            };
+            let _ = write!(out, "5 {atom} {v}");
+        }
+        Stmt::Assume { start, len } => {
+            out.push(b'6');
+            write_lits(out, &p.assumptions[start as usize..(start + len) as usize]);
+        }
+        Stmt::Heuristic(i) => {
+            let h = &p.heuristics[i as usize];
+            let m = match h.modifier {
+                HeuristicModifier::Level => 0,
+                HeuristicModifier::Sign => 1,
+                HeuristicModifier::Factor => 2,
+                HeuristicModifier::Init => 3,
+                HeuristicModifier::True => 4,
+                HeuristicModifier::False => 5,
+            };
+            let _ = write!(out, "7 {m} {} {} {}", h.atom, h.bias, h.priority);
+            write_lits(out, &h.condition);
+        }
+        Stmt::Edge(i) => {
+            let e = &p.edges[i as usize];
+            let _ = write!(out, "8 {} {}", e.from, e.to);
+            write_lits(out, &e.condition);
+        }
+        Stmt::Theory(i) => {
+            let line = &p.theory[i as usize];
+            assert!(
+                !line.contains('\n'),
+                "a theory line must not contain a newline"
+            );
+            out.extend_from_slice(line.as_bytes());
+        }
+        Stmt::Comment(i) => {
+            let text = &comments[i as usize];
+            assert!(
+                !text.contains('\n'),
+                "an aspif comment must not contain a newline"
+            );
+            if text.is_empty() {
+                out.extend_from_slice(b"10");
+            } else {
+                let _ = write!(out, "10 {text}");
+            }
+        }
+        Stmt::CrRule(i) => {
+            let cr = &p.cr_rules[i as usize];
+            assert!(
+                !cr.label.contains('\n'),
+                "a CR label must not contain a newline"
+            );
+            let _ = write!(out, "10 {CR_TAG} {} {}", cr.appl, cr.label);
+        }
+        Stmt::Prefer(i) => {
+            let pr = &p.prefers[i as usize];
+            let _ = write!(out, "10 {PREFER_TAG} {} {}", pr.better, pr.worse);
+        }
+        Stmt::CrMinimize(priority) => {
+            let _ = write!(
+                out,
+                "10 {CR_MINIMIZE_TAG} {priority}\n2 {priority} {}",
+                p.cr_rules.len()
+            );
+            for cr in &p.cr_rules {
+                let _ = write!(out, " {} 1", cr.appl);
+            }
+        }
     }
-    out.extend_from_slice(b"0\n");
+    out.push(b'\n');
 }
 
 /// Writes ` n x1 .. xn`.

@@ -357,8 +357,20 @@ impl<'a> Grounder<'a> {
         }
     }
 
+    /// Frees the rule deduplication table once instantiation is over (simplification does
+    /// not add rules through [`Grounder::add_rule`]); large programs need the memory.
+    pub fn release_dedup(&mut self) {
+        self.rule_set = HashTable::new();
+        self.rule_hashes = Vec::new();
+    }
+
     /// Adds a ground rule unless an equal one exists; returns its index if added.
     fn add_rule(&mut self, rule: Rule, origin: impl FnOnce() -> Origin) -> bool {
+        assert_eq!(
+            self.rule_hashes.len(),
+            self.rules.len(),
+            "add_rule after release_dedup"
+        );
         let hash = self.hasher.hash_one(&rule);
         let rules = &self.rules;
         if self
@@ -615,12 +627,23 @@ impl<'a> Grounder<'a> {
                 let lb = lhs.bound_by_binding(&ctx.binding);
                 let rb = rhs.bound_by_binding(&ctx.binding);
                 if lb && rb {
-                    let (Some(l), Some(r)) =
-                        (self.eval(lhs, &ctx.binding), self.eval(rhs, &ctx.binding))
-                    else {
-                        return;
+                    // Integer arithmetic is compared without creating symbols; anything else
+                    // (and undefined operations, which warn) goes the general way.
+                    let holds = match (
+                        lhs.eval_int(&self.syms, &ctx.binding),
+                        rhs.eval_int(&self.syms, &ctx.binding),
+                    ) {
+                        (Some(l), Some(r)) => cmp_ints(*op, l, r),
+                        _ => {
+                            let (Some(l), Some(r)) =
+                                (self.eval(lhs, &ctx.binding), self.eval(rhs, &ctx.binding))
+                            else {
+                                return;
+                            };
+                            cmp_holds(&self.syms, *op, l, r)
+                        }
                     };
-                    if cmp_holds(&self.syms, *op, l, r) {
+                    if holds {
                         self.join(ctx, lits, i + 1, ranges, k);
                     }
                 } else {
@@ -914,21 +937,25 @@ impl<'a> Grounder<'a> {
                 .map(Some)
                 .collect(),
         };
+        // A positive aggregate over atoms still being grounded may need the translation that
+        // keeps Ferraris' semantics when it is not monotone (see `sum_saturated`).
+        let recursive = agg.sign == Sign::Positive && self.reads_incomplete(agg);
         let mark = ctx.binding.mark();
         let blen = ctx.body.len();
         for cand in candidates {
             let mut gs = guards.clone();
             if let Some(v) = cand {
-                let NTerm::Var(var) = &agg.guards[agg.binder.expect("binder")].1 else {
+                let pat = &agg.guards[agg.binder.expect("binder")].1;
+                if !pat.matches(&mut self.syms, v, &mut ctx.binding) {
+                    ctx.binding.undo(mark);
                     continue;
-                };
-                ctx.binding.bind(*var, v);
+                }
                 gs.push((CmpOp::Eq, v));
             }
             let mut lits: Vec<Lit> = Vec::new();
             let mut truth = true;
             for (op, v) in gs {
-                match self.guard_truth(agg.func, &elems, op, v) {
+                match self.guard_truth(agg.func, &elems, op, v, recursive) {
                     Truth::True => {}
                     Truth::False => {
                         truth = false;
@@ -1063,9 +1090,13 @@ impl<'a> Grounder<'a> {
         elems: &[(SymId, Vec<Vec<Lit>>)],
         op: CmpOp,
         v: SymId,
+        recursive: bool,
     ) -> Truth {
         match func {
             AggregateFunction::Min | AggregateFunction::Max => {
+                if recursive && op == CmpOp::Ne {
+                    return self.minmax_saturated(func == AggregateFunction::Max, elems, v);
+                }
                 self.minmax_truth(func, elems, op, v)
             }
             _ => {
@@ -1079,6 +1110,46 @@ impl<'a> Grounder<'a> {
                     };
                 };
                 let k = k as i64;
+                // Over atoms still being grounded, a sum whose uncertain weights are all
+                // negative is read as `-sum op' -k` with positive weights, so that `<=` stays
+                // the monotone comparison it is (a positive dependency), as gringo does.
+                if recursive && self.all_negative(elems) {
+                    let flipped: Vec<(SymId, Vec<Vec<Lit>>)> = elems
+                        .iter()
+                        .map(|(w, c)| {
+                            let n = self.syms.num(*w).unwrap_or(0);
+                            (self.syms.int(n.wrapping_neg()), c.clone())
+                        })
+                        .collect();
+                    let nk = self.syms.int((-k) as i32);
+                    let op = super::rewrite::flip_cmp(op);
+                    return self.guard_truth(func, &flipped, op, nk, recursive);
+                }
+                // `!=` at an end of the possible sums is one-sided: keep it monotone (a
+                // positive dependency) rather than the negation of `=`.
+                let (lo, hi) = self.sum_range(elems);
+                let op = match op {
+                    CmpOp::Ne if k < lo || k > hi => return Truth::True,
+                    CmpOp::Ne if k == lo => CmpOp::Gt,
+                    CmpOp::Ne if k == hi => CmpOp::Lt,
+                    op => op,
+                };
+                if recursive && self.sum_nonmonotone(elems, op, k) {
+                    // Each comparison as a disjunction of monotone sums `dir * sum >= bound`;
+                    // `=` is the conjunction of two (Ferraris' semantics splits conjunctions).
+                    return match op {
+                        CmpOp::Ge => self.sum_saturated(elems, &[(1, k)]),
+                        CmpOp::Gt => self.sum_saturated(elems, &[(1, k + 1)]),
+                        CmpOp::Le => self.sum_saturated(elems, &[(-1, -k)]),
+                        CmpOp::Lt => self.sum_saturated(elems, &[(-1, 1 - k)]),
+                        CmpOp::Ne => self.sum_saturated(elems, &[(1, k + 1), (-1, 1 - k)]),
+                        CmpOp::Eq => {
+                            let a = self.sum_saturated(elems, &[(1, k)]);
+                            let b = self.sum_saturated(elems, &[(-1, -k)]);
+                            conj(a, b)
+                        }
+                    };
+                }
                 match op {
                     CmpOp::Ge => self.sum_ge(elems, k),
                     CmpOp::Gt => self.sum_ge(elems, k + 1),
@@ -1161,6 +1232,214 @@ impl<'a> Grounder<'a> {
             Origin::default,
         );
         Truth::Lits(vec![a as Lit])
+    }
+
+    /// True when some uncertain weight is negative and none is positive.
+    fn all_negative(&self, elems: &[(SymId, Vec<Vec<Lit>>)]) -> bool {
+        let signs = |pos: bool| {
+            elems.iter().any(|(w, c)| {
+                !c.is_empty()
+                    && self
+                        .syms
+                        .num(*w)
+                        .is_some_and(|n| if pos { n > 0 } else { n < 0 })
+            })
+        };
+        signs(false) && !signs(true)
+    }
+
+    /// The least and the greatest sum the elements can take.
+    fn sum_range(&self, elems: &[(SymId, Vec<Vec<Lit>>)]) -> (i64, i64) {
+        let (mut lo, mut hi) = (0i64, 0i64);
+        for (w, c) in elems {
+            let w = self.syms.num(*w).unwrap_or(0) as i64;
+            if c.is_empty() {
+                lo += w;
+                hi += w;
+            } else if w < 0 {
+                lo += w;
+            } else {
+                hi += w;
+            }
+        }
+        (lo, hi)
+    }
+
+    /// True when `sum op k` is not monotone in the truth of the elements' literals: the
+    /// uncertain weights have both signs, or `op` is `!=` with `k` strictly between the least
+    /// and the greatest possible sum (gringo's NONMONOTONE analysis).
+    fn sum_nonmonotone(&self, elems: &[(SymId, Vec<Vec<Lit>>)], op: CmpOp, k: i64) -> bool {
+        let (lo, hi) = self.sum_range(elems);
+        let mixed = elems
+            .iter()
+            .any(|(w, c)| !c.is_empty() && self.syms.num(*w).is_some_and(|n| n > 0))
+            && elems
+                .iter()
+                .any(|(w, c)| !c.is_empty() && self.syms.num(*w).is_some_and(|n| n < 0));
+        mixed || (op == CmpOp::Ne && lo < k && k < hi)
+    }
+
+    /// `sum op k` for a non-monotone comparison over atoms still being grounded, as the
+    /// disjunction of monotone sums `dir * sum >= bound` (`dir` is 1 or -1), see `saturated`.
+    fn sum_saturated(
+        &mut self,
+        elems: &[(SymId, Vec<Vec<Lit>>)],
+        disjuncts: &[(i64, i64)],
+    ) -> Truth {
+        let mut certain: i64 = 0;
+        let mut merged: Vec<(Lit, i64)> = Vec::new();
+        for (w, c) in elems {
+            let w = self.syms.num(*w).unwrap_or(0) as i64;
+            if c.is_empty() {
+                certain += w;
+                continue;
+            }
+            let l = self.disjunction_lit(c);
+            match merged.iter_mut().find(|(x, _)| *x == l) {
+                Some(e) => e.1 += w,
+                None => merged.push((l, w)),
+            }
+        }
+        merged.retain(|&(_, w)| w != 0);
+        let parts: Vec<(Vec<(Lit, i64)>, i64)> = disjuncts
+            .iter()
+            .map(|&(dir, k)| {
+                let lits = merged.iter().map(|&(l, w)| (l, dir * w)).collect();
+                (lits, k - dir * certain)
+            })
+            .collect();
+        self.saturated(parts)
+    }
+
+    /// An atom `A` for a disjunction of weighted sums `sum_i w_i * l_i >= bound` over element
+    /// literals some of which are still being grounded, with Ferraris' semantics however the
+    /// weights are signed (Alviano, Faber, Gebser: "Rewriting recursive aggregates in answer
+    /// set programming: back to monotonicity", TPLP 2015; gringo translates so too). A literal
+    /// `l` weighing `-w < 0` counts as its complement with weight `w` (the bound grows by `w`),
+    /// which makes every disjunct monotone; the complement of an atom of the current component
+    /// is an atom `c` saturated on `A`, so that `A` keeps its positive dependency on `l`:
+    ///   c :- not l.   c :- A.   c | l :- not not A.
+    /// Other complements are default negations. Then `A :- bound' { lits = weights }` for each
+    /// disjunct that can hold; `True` when one always holds, `False` when none can.
+    fn saturated(&mut self, disjuncts: Vec<(Vec<(Lit, i64)>, i64)>) -> Truth {
+        let mut live: Vec<(Vec<(Lit, i64)>, i64)> = Vec::new();
+        for (lits, k) in disjuncts {
+            let lits: Vec<(Lit, i64)> = lits.into_iter().filter(|&(_, w)| w != 0).collect();
+            let bound = k - lits
+                .iter()
+                .filter(|&&(_, w)| w < 0)
+                .map(|&(_, w)| w)
+                .sum::<i64>();
+            let max: i64 = lits.iter().map(|&(_, w)| w.abs()).sum();
+            if bound <= 0 {
+                return Truth::True;
+            }
+            if bound <= max {
+                live.push((lits, bound));
+            }
+        }
+        if live.is_empty() {
+            return Truth::False;
+        }
+        let a = self.aux();
+        let mut complements: Vec<(Lit, Lit)> = Vec::new();
+        for (lits, bound) in live {
+            let mut body: Vec<(Lit, Weight)> = Vec::new();
+            for (l, w) in lits {
+                if w > 0 {
+                    body.push((l, w));
+                    continue;
+                }
+                let c = match complements.iter().find(|(x, _)| *x == l) {
+                    Some(&(_, c)) => c,
+                    None => {
+                        let c = self.complement(l, a);
+                        complements.push((l, c));
+                        c
+                    }
+                };
+                body.push((c, -w));
+            }
+            self.add_rule(
+                Rule {
+                    head_kind: HeadKind::Disjunction,
+                    head: vec![a],
+                    body: Body::Weight {
+                        lower: bound,
+                        lits: body,
+                    },
+                },
+                Origin::default,
+            );
+        }
+        Truth::Lits(vec![a as Lit])
+    }
+
+    /// The complement of an element literal `l` inside the saturated atom `a` (see
+    /// `saturated`).
+    fn complement(&mut self, l: Lit, a: AtomId) -> Lit {
+        let recursive = l > 0 && {
+            let p = self.info(l as AtomId).pred;
+            p == u32::MAX || !self.domains[p as usize].complete
+        };
+        if !recursive {
+            return self.negate_lit(l);
+        }
+        let c = self.aux();
+        let not_a = self.not_aux(a);
+        for (head, body) in [
+            (vec![c], vec![-l]),
+            (vec![c], vec![a as Lit]),
+            (vec![c, l as AtomId], vec![-(not_a as Lit)]),
+        ] {
+            self.add_rule(
+                Rule {
+                    head_kind: HeadKind::Disjunction,
+                    head,
+                    body: Body::Normal(body),
+                },
+                Origin::default,
+            );
+        }
+        c as Lit
+    }
+
+    /// `#max != v` over atoms still being grounded (not monotone), with Ferraris' semantics:
+    /// the maximum is above `v` (some element above `v` holds) or below it (no element at or
+    /// above `v` holds): `#count{above} >= 1` or `-#count{at v} >= 0`, see `saturated`.
+    /// `#min` is the mirror image.
+    fn minmax_saturated(
+        &mut self,
+        is_max: bool,
+        elems: &[(SymId, Vec<Vec<Lit>>)],
+        v: SymId,
+    ) -> Truth {
+        let mut beyond: Vec<(Lit, i64)> = Vec::new();
+        let mut at: Vec<(Lit, i64)> = Vec::new();
+        let mut at_certain = false;
+        for (w, c) in elems {
+            let o = self.syms.compare(*w, v);
+            let past = if is_max { o.is_gt() } else { o.is_lt() };
+            if past {
+                if c.is_empty() {
+                    return Truth::True;
+                }
+                let l = self.disjunction_lit(c);
+                beyond.push((l, 1));
+            } else if o.is_eq() {
+                if c.is_empty() {
+                    at_certain = true;
+                    continue;
+                }
+                let l = self.disjunction_lit(c);
+                at.push((l, -1));
+            }
+        }
+        let mut parts = vec![(beyond, 1)];
+        if !at_certain {
+            parts.push((at, 0));
+        }
+        self.saturated(parts)
     }
 
     /// `#min`/`#max` compared with `v`. With `m` the extremum (`#inf` for an empty `#max`,
@@ -1446,13 +1725,32 @@ impl<'a> Grounder<'a> {
                 let Some(s) = self.atom_sym(a, &ctx.binding) else {
                     return;
                 };
+                let Some(v) = self.eval(value, &ctx.binding) else {
+                    return;
+                };
+                // Any other value leaves the instance out, as clingo 5.8.3 does, silently.
+                let value = match self.syms.get(v) {
+                    SymData::Fun {
+                        name,
+                        len: 0,
+                        neg: false,
+                        ..
+                    } => match self.syms.names.resolve(name) {
+                        "true" => ExternalValue::True,
+                        "false" => ExternalValue::False,
+                        "free" => ExternalValue::Free,
+                        "release" => ExternalValue::Release,
+                        _ => return,
+                    },
+                    _ => return,
+                };
                 let id = self.atom_of(s, a.pred);
                 if self.info(id).fact {
                     return;
                 }
                 self.derive(id);
                 if !self.externals.iter().any(|(x, _)| *x == id) {
-                    self.externals.push((id, *value));
+                    self.externals.push((id, value));
                 }
             }
             NKind::Heuristic {
@@ -1526,6 +1824,8 @@ impl<'a> Grounder<'a> {
         match &stmt.head {
             NHead::None => {}
             NHead::Disj(es) | NHead::Choice(es) => {
+                // An undefined head atom (`p(a+0)`) drops its element from a choice, and the
+                // whole rule from a disjunction, conditional elements included (clingo 5.8).
                 for e in es {
                     if !e.conj.is_empty() {
                         if !self.conj_elems(e, ctx, &mut elems) {
@@ -1534,20 +1834,26 @@ impl<'a> Grounder<'a> {
                         continue;
                     }
                     if e.cond.is_empty() {
-                        let Some(s) = self.atom_sym(&e.atom, &ctx.binding) else {
-                            return;
-                        };
-                        head.push(self.atom_of(s, e.atom.pred));
+                        match self.atom_sym(&e.atom, &ctx.binding) {
+                            Some(s) => head.push(self.atom_of(s, e.atom.pred)),
+                            None if is_choice => {}
+                            None => return,
+                        }
                         continue;
                     }
                     let blen = ctx.body.len();
                     let mut found: Vec<(SymId, Vec<Lit>)> = Vec::new();
-                    self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
-                        if let Some(s) = g.atom_sym(&e.atom, &ctx.binding) {
-                            found.push((s, ctx.body[blen..].to_vec()));
-                        }
+                    let mut undefined = false;
+                    self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| match g
+                        .atom_sym(&e.atom, &ctx.binding)
+                    {
+                        Some(s) => found.push((s, ctx.body[blen..].to_vec())),
+                        None => undefined = true,
                     });
                     ctx.body.truncate(blen);
+                    if undefined && !is_choice {
+                        return;
+                    }
                     for (s, c) in found {
                         let a = self.atom_of(s, e.atom.pred);
                         if c.is_empty() {
@@ -2123,6 +2429,18 @@ fn positive_atoms<'x>(l: &'x NLit, out: &mut Vec<&'x NAtom>) {
             }
         }
         _ => {}
+    }
+}
+
+/// `a op b` on integers (clingo orders integers numerically).
+fn cmp_ints(op: CmpOp, a: i32, b: i32) -> bool {
+    match op {
+        CmpOp::Eq => a == b,
+        CmpOp::Ne => a != b,
+        CmpOp::Lt => a < b,
+        CmpOp::Le => a <= b,
+        CmpOp::Gt => a > b,
+        CmpOp::Ge => a >= b,
     }
 }
 

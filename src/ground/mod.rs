@@ -113,6 +113,7 @@ pub fn ground(
     let mut g =
         instantiate::Grounder::new(syms, npreds, &mut diags, sources, config.provenance, limits);
     g.run(&compiled);
+    g.release_dedup();
     let stopped = g.stopped;
     let fin = simplify::finish(&mut g, &compiled);
     let syms = std::mem::take(&mut g.syms);

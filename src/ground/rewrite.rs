@@ -24,7 +24,6 @@ use crate::syntax::ast::{self, AggregateFunction, CmpOp, Sign, TermKind};
 use super::symbol::{SymId, Symbols};
 use super::term::NTerm;
 use crate::base::intern::Sym;
-use crate::ground::program::ExternalValue;
 
 /// Index of a predicate signature in [`Compiled::preds`].
 pub type PredId = u32;
@@ -203,7 +202,7 @@ pub enum NKind {
     /// `#project a : body.`
     Project(NAtom),
     /// `#external a : body. [v]`
-    External(NAtom, ExternalValue),
+    External(NAtom, NTerm),
     /// `#heuristic a : body. [w@p, m]`
     Heuristic {
         /// The atom.
@@ -719,16 +718,9 @@ impl<'a> Rewriter<'a> {
     /// Compiles a pool-free term; intervals add binder literals to `extra`.
     fn term(&mut self, t: &ast::Term, vars: &mut Vars, extra: &mut Vec<NLit>) -> Option<NTerm> {
         Some(match &t.kind {
-            TermKind::Integer(n) => match i32::try_from(*n) {
-                Ok(n) => NTerm::Sym(self.syms.int(n)),
-                Err(_) => {
-                    self.diags.push(
-                        Diagnostic::error(t.span, "integer out of range (32 bits)")
-                            .with_snippet(self.snippet(t.span)),
-                    );
-                    return None;
-                }
-            },
+            // clingo reads an integer literal modulo 2^32 (`2147483648` is `-2147483648`,
+            // `0x80000000` too), as its arithmetic wraps: the truncating cast does the same.
+            TermKind::Integer(n) => NTerm::Sym(self.syms.int(*n as i32)),
             TermKind::String(s) => NTerm::Sym(self.syms.string(s)),
             TermKind::Constant(c) => match self.consts.get(c) {
                 Some(&v) => NTerm::Sym(v),
@@ -1161,6 +1153,59 @@ impl<'a> Rewriter<'a> {
         })
     }
 
+    /// The element `t1,...,tn : a : c` of a head aggregate chooses `a` only for the instances
+    /// whose tuple is defined and, for `#sum` and `#sum+`, whose weight `t1` is an integer, as
+    /// in clingo. Adds to the element's condition `t = t` for each tuple term with an
+    /// operation and `t1+0 = t1+0` for a non-integer sum weight (gringo's own check: clingo
+    /// reports `operation undefined: (X+0)`). Returns false when the element can never count.
+    fn tuple_checks(
+        &mut self,
+        func: AggregateFunction,
+        terms: &[ast::Term],
+        vars: &mut Vars,
+        cond: &mut Vec<NLit>,
+    ) -> bool {
+        let sum = matches!(func, AggregateFunction::Sum | AggregateFunction::SumPlus);
+        for (i, t) in terms.iter().enumerate() {
+            let mut scratch = Vec::new();
+            let Some(nt) = self.term(t, vars, &mut scratch) else {
+                return false;
+            };
+            if !scratch.is_empty() {
+                // An interval: always defined, and already a number when it is the weight.
+                continue;
+            }
+            let check = if sum && i == 0 {
+                match nt {
+                    NTerm::Sym(v) if self.syms.num(v).is_some() => continue,
+                    NTerm::Sym(_) => return false,
+                    NTerm::Var(_)
+                    | NTerm::Fun { .. }
+                    | NTerm::Unary { .. }
+                    | NTerm::Binary { .. } => {
+                        let zero = self.syms.int(0);
+                        NTerm::Binary {
+                            op: ast::BinaryOp::Add,
+                            lhs: Box::new(nt),
+                            rhs: Box::new(NTerm::Sym(zero)),
+                            span: t.span,
+                        }
+                    }
+                }
+            } else if nt.has_operation() {
+                nt
+            } else {
+                continue;
+            };
+            cond.push(NLit::Cmp {
+                op: CmpOp::Eq,
+                lhs: check.clone(),
+                rhs: check,
+            });
+        }
+        true
+    }
+
     /// Rewrites every statement of `program`.
     pub fn program(&mut self, program: &ast::Program, consts: &[(String, ast::Term)]) {
         // #const: command-line values win over default definitions, [override] wins over both.
@@ -1170,19 +1215,7 @@ impl<'a> Rewriter<'a> {
                 overrides.insert(name.clone(), v);
             }
         }
-        for st in &program.statements {
-            if let ast::StatementKind::Const(c) = &st.kind {
-                if c.kind == ast::ConstKind::Default && overrides.contains_key(&c.name) {
-                    continue;
-                }
-                if self.consts.contains_key(&c.name) && c.kind == ast::ConstKind::Default {
-                    continue;
-                }
-                if let Some(v) = self.eval_ground(&c.value) {
-                    self.consts.insert(c.name.clone(), v);
-                }
-            }
-        }
+        self.const_definitions(program, &overrides);
         for (k, v) in overrides {
             self.consts.entry(k).or_insert(v);
         }
@@ -1217,6 +1250,138 @@ impl<'a> Rewriter<'a> {
         }
     }
 
+    /// Evaluates the `#const` definitions not overridden by `-c`, each after the constants its
+    /// value names (`#const a=b. #const b=1.` gives `a` the value 1, as gringo does). A second
+    /// definition of a name is gringo's `redefinition of constant` error (the first one
+    /// stays); definitions naming each other in a cycle are a `cyclic constant definition`
+    /// error and stay unevaluated. A definition naming itself (`#const a=a.`) is no cycle: the
+    /// name stays a symbol.
+    fn const_definitions(&mut self, program: &ast::Program, overrides: &HashMap<String, SymId>) {
+        // The definitions in force, in file order: (statement span, definition).
+        let mut defs: Vec<(Span, &ast::ConstDef)> = Vec::new();
+        for st in &program.statements {
+            let ast::StatementKind::Const(c) = &st.kind else {
+                continue;
+            };
+            if c.kind == ast::ConstKind::Default && overrides.contains_key(&c.name) {
+                continue;
+            }
+            if let Some(&(first, _)) = defs.iter().find(|(_, d)| d.name == c.name) {
+                self.diags.push(
+                    Diagnostic::error(st.span, "redefinition of constant")
+                        .with_snippet(self.snippet(st.span))
+                        .with_note(Some(first), "constant also defined here"),
+                );
+                continue;
+            }
+            defs.push((st.span, c));
+        }
+        // deps[i]: the definitions whose names definition i's value mentions.
+        let deps: Vec<Vec<usize>> = defs
+            .iter()
+            .enumerate()
+            .map(|(i, (_, d))| {
+                let mut names = Vec::new();
+                const_names(&d.value, &mut names);
+                let mut out: Vec<usize> = names
+                    .iter()
+                    .filter_map(|n| defs.iter().position(|(_, e)| e.name == *n))
+                    .filter(|&j| j != i)
+                    .collect();
+                out.sort_unstable();
+                out.dedup();
+                out
+            })
+            .collect();
+        let mut done = vec![false; defs.len()];
+        loop {
+            let mut progress = false;
+            for i in 0..defs.len() {
+                if done[i] || deps[i].iter().any(|&j| !done[j]) {
+                    continue;
+                }
+                done[i] = true;
+                progress = true;
+                if let Some(v) = self.eval_ground(&defs[i].1.value) {
+                    self.consts.insert(defs[i].1.name.clone(), v);
+                }
+            }
+            if !progress {
+                break;
+            }
+        }
+        // What is left lies on a cycle or depends on one; report each cycle once, at its first
+        // definition, with the others as notes (last first, as gringo lists them).
+        let left: Vec<usize> = (0..defs.len()).filter(|&i| !done[i]).collect();
+        let reach = |from: usize| -> Vec<bool> {
+            let mut seen = vec![false; defs.len()];
+            let mut stack = vec![from];
+            while let Some(k) = stack.pop() {
+                for &j in &deps[k] {
+                    if !seen[j] {
+                        seen[j] = true;
+                        stack.push(j);
+                    }
+                }
+            }
+            seen
+        };
+        let reaches: Vec<Vec<bool>> = (0..defs.len())
+            .map(|i| if done[i] { Vec::new() } else { reach(i) })
+            .collect();
+        let mut reported = vec![false; defs.len()];
+        for &i in &left {
+            if reported[i] || !reaches[i][i] {
+                continue;
+            }
+            let cycle: Vec<usize> = left
+                .iter()
+                .copied()
+                .filter(|&j| reaches[i][j] && reaches[j][i])
+                .collect();
+            let mut d = Diagnostic::error(defs[i].0, "cyclic constant definition")
+                .with_snippet(self.snippet(defs[i].0));
+            for &j in cycle.iter().rev().filter(|&&j| j != i) {
+                d = d.with_note(
+                    Some(defs[j].0),
+                    format!("cycle involves definition:\n  {}", self.snippet(defs[j].0)),
+                );
+            }
+            for j in cycle {
+                reported[j] = true;
+            }
+            self.diags.push(d);
+        }
+    }
+
+    /// The `weight@priority, terms` tuple that weak constraints and `#minimize`/`#maximize`
+    /// elements share, as a [`NKind::Minimize`] (priority 0 when omitted); `None` when the
+    /// weight or the priority does not compile (a term that does not compile is left out, its
+    /// error already reported).
+    fn minimize_kind(
+        &mut self,
+        (weight, priority, terms): (&ast::Term, Option<&ast::Term>, &[ast::Term]),
+        maximize: bool,
+        vars: &mut Vars,
+        extra: &mut Vec<NLit>,
+    ) -> Option<NKind> {
+        let weight = self.term(weight, vars, extra)?;
+        let priority = match priority {
+            Some(p) => self.term(p, vars, extra)?,
+            None => NTerm::Sym(self.syms.int(0)),
+        };
+        let terms = terms
+            .iter()
+            .filter_map(|t| self.term(t, vars, extra))
+            .collect();
+        Some(NKind::Minimize {
+            weight,
+            priority,
+            terms,
+            maximize,
+        })
+    }
+
     fn sig_pred(&mut self, s: &ast::Signature) -> PredId {
         self.pred(&s.name, s.arity, s.negated)
     }
@@ -1231,30 +1396,14 @@ impl<'a> Rewriter<'a> {
                     let mut vars = Vars::default();
                     let mut out = Vec::new();
                     let mut extra = Vec::new();
-                    let Some(weight) = self.term(&w.weight, &mut vars, &mut extra) else {
+                    let cost = (&w.weight, w.priority.as_ref(), &w.terms[..]);
+                    let Some(kind) = self.minimize_kind(cost, false, &mut vars, &mut extra) else {
                         continue;
                     };
-                    let priority = match &w.priority {
-                        Some(p) => self.term(p, &mut vars, &mut extra),
-                        None => Some(NTerm::Sym(self.syms.int(0))),
-                    };
-                    let Some(priority) = priority else { continue };
-                    let mut terms = Vec::new();
-                    for t in &w.terms {
-                        if let Some(t) = self.term(t, &mut vars, &mut extra) {
-                            terms.push(t);
-                        }
-                    }
                     if self.body(&body, &mut vars, &mut out).is_none() {
                         continue;
                     }
                     out.append(&mut extra);
-                    let kind = NKind::Minimize {
-                        weight,
-                        priority,
-                        terms,
-                        maximize: false,
-                    };
                     self.finish(index, st.span, NHead::None, out, kind, vars);
                 }
             }
@@ -1264,30 +1413,16 @@ impl<'a> Rewriter<'a> {
                         let mut vars = Vars::default();
                         let mut out = Vec::new();
                         let mut extra = Vec::new();
-                        let Some(weight) = self.term(&e.weight, &mut vars, &mut extra) else {
+                        let cost = (&e.weight, e.priority.as_ref(), &e.terms[..]);
+                        let Some(kind) =
+                            self.minimize_kind(cost, o.maximize, &mut vars, &mut extra)
+                        else {
                             continue;
                         };
-                        let priority = match &e.priority {
-                            Some(p) => self.term(p, &mut vars, &mut extra),
-                            None => Some(NTerm::Sym(self.syms.int(0))),
-                        };
-                        let Some(priority) = priority else { continue };
-                        let mut terms = Vec::new();
-                        for t in &e.terms {
-                            if let Some(t) = self.term(t, &mut vars, &mut extra) {
-                                terms.push(t);
-                            }
-                        }
                         if self.condition(&cond, &mut vars, &mut out).is_none() {
                             continue;
                         }
                         out.append(&mut extra);
-                        let kind = NKind::Minimize {
-                            weight,
-                            priority,
-                            terms,
-                            maximize: o.maximize,
-                        };
                         self.finish(index, e.span, NHead::None, out, kind, vars);
                     }
                 }
@@ -1339,6 +1474,13 @@ impl<'a> Rewriter<'a> {
                             if self.body(&b, &mut vars, &mut out).is_none() {
                                 continue;
                             }
+                            // The atom ranges over its predicate's possible atoms and binds the
+                            // variables it alone has, as in gringo: `#project p(X).` projects
+                            // onto every p/1 atom.
+                            out.push(NLit::Pred {
+                                sign: Sign::Positive,
+                                atom: a.clone(),
+                            });
                             out.append(&mut extra);
                             self.finish(index, st.span, NHead::None, out, NKind::Project(a), vars);
                         }
@@ -1346,20 +1488,6 @@ impl<'a> Rewriter<'a> {
                 }
             },
             K::External(e) => {
-                let value = match e.value.as_ref().map(|t| &t.kind) {
-                    None => ExternalValue::False,
-                    Some(TermKind::Constant(c)) if c == "false" => ExternalValue::False,
-                    Some(TermKind::Constant(c)) if c == "true" => ExternalValue::True,
-                    Some(TermKind::Constant(c)) if c == "free" => ExternalValue::Free,
-                    Some(TermKind::Constant(c)) if c == "release" => ExternalValue::Release,
-                    Some(_) => {
-                        self.diags.push(Diagnostic::error(
-                            st.span,
-                            "external value must be one of true, false, free, release",
-                        ));
-                        return;
-                    }
-                };
                 for a in unpool_atom(&e.atom) {
                     for b in unpool_body(&e.body) {
                         let mut vars = Vars::default();
@@ -1367,6 +1495,14 @@ impl<'a> Rewriter<'a> {
                         let mut extra = Vec::new();
                         let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
                             continue;
+                        };
+                        // The value is a term of the instance (`[X]`); omitted, it is false.
+                        let value = match &e.value {
+                            Some(t) => match self.term(t, &mut vars, &mut extra) {
+                                Some(v) => v,
+                                None => continue,
+                            },
+                            None => NTerm::Sym(self.syms.fun_str("false", false, &[])),
                         };
                         if self.body(&b, &mut vars, &mut out).is_none() {
                             continue;
@@ -1599,6 +1735,17 @@ impl<'a> Rewriter<'a> {
                 }
                 let mut es = Vec::new();
                 for e in elems {
+                    // An element with a colon whose literal is false (`#false`, `not #true`) never
+                    // holds; gringo reads a comparison there the same way.
+                    if e.has_colon
+                        && match &e.literal.atom {
+                            ast::Atom::Boolean(b) => *b == (e.literal.sign == Sign::Not),
+                            ast::Atom::Comparison { .. } => true,
+                            _ => false,
+                        }
+                    {
+                        continue;
+                    }
                     let e = if e.has_colon {
                         self.disj_elem(e, &mut vars)
                     } else {
@@ -1657,9 +1804,12 @@ impl<'a> Rewriter<'a> {
                         has_colon: !e.condition.is_empty(),
                     };
                     for ce in unpool_cond(&ce) {
-                        let Some(n) = self.head_elem(&ce, &mut vars, &mut extra) else {
+                        let Some(mut n) = self.head_elem(&ce, &mut vars, &mut extra) else {
                             return;
                         };
+                        if !self.tuple_checks(h.function, &e.terms, &mut vars, &mut n.cond) {
+                            continue;
+                        }
                         es.push(n);
                         let mut condition = vec![ce.literal.clone()];
                         condition.extend(ce.condition.iter().cloned());
@@ -1777,8 +1927,10 @@ impl<'a> Rewriter<'a> {
                 mark(priority, &mut global);
                 terms.iter().for_each(|t| mark(t, &mut global));
             }
-            NKind::Project(a) | NKind::External(a, _) => {
-                a.args.iter().for_each(|t| mark(t, &mut global))
+            NKind::Project(a) => a.args.iter().for_each(|t| mark(t, &mut global)),
+            NKind::External(a, value) => {
+                a.args.iter().for_each(|t| mark(t, &mut global));
+                mark(value, &mut global);
             }
             NKind::Heuristic {
                 atom,
@@ -1865,6 +2017,31 @@ impl<'a> Rewriter<'a> {
             var_names,
             globals,
         });
+    }
+}
+
+/// The constant names (candidates for `#const` values) in a term.
+fn const_names<'t>(t: &'t ast::Term, out: &mut Vec<&'t str>) {
+    match &t.kind {
+        TermKind::Constant(c) => out.push(c),
+        TermKind::Function { args, .. } => args.iter().flatten().for_each(|a| const_names(a, out)),
+        TermKind::ScriptCall { args, .. } => args.iter().for_each(|a| const_names(a, out)),
+        TermKind::Pool(ts) => ts.iter().for_each(|a| const_names(a, out)),
+        TermKind::Unary { arg, .. } | TermKind::Paren(arg) => const_names(arg, out),
+        TermKind::Binary { lhs, rhs, .. } => {
+            const_names(lhs, out);
+            const_names(rhs, out);
+        }
+        TermKind::Interval { lo, hi } => {
+            const_names(lo, out);
+            const_names(hi, out);
+        }
+        TermKind::Integer(_)
+        | TermKind::String(_)
+        | TermKind::Variable(_)
+        | TermKind::Anonymous
+        | TermKind::Infimum
+        | TermKind::Supremum => {}
     }
 }
 
@@ -1965,9 +2142,12 @@ fn readiness(l: &mut NLit, bound: &[bool], global: &[bool], newly: &mut Vec<u32>
                     continue;
                 }
                 if *op == CmpOp::Eq && a.sign == Sign::Positive && a.binder.is_none() {
-                    if let NTerm::Var(v) = t {
+                    // `X = #agg{...}`, and as in gringo any term matching can bind, such as
+                    // the linear `X+1 = #min{...}` (a value it cannot match is skipped).
+                    let mut vs = Vec::new();
+                    if t.binds(bound, &mut vs) && !vs.is_empty() {
                         a.binder = Some(i);
-                        newly.push(*v);
+                        newly.extend(vs);
                         continue;
                     }
                 }

@@ -37,6 +37,65 @@ pub struct Finished {
     pub facts: Vec<String>,
 }
 
+/// The two passes that build [`Occurrences`]: count, then fill.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Pass {
+    Count,
+    Fill,
+}
+
+/// Body occurrences of atoms `0..=n` in one flat array (compressed rows): the entries of atom
+/// `a` are `items[start[a]..start[a + 1]]`, in rule order.
+struct Occurrences {
+    start: Vec<usize>,
+    items: Vec<(u32, i64)>,
+}
+
+impl Occurrences {
+    fn new(n: usize) -> Occurrences {
+        Occurrences {
+            start: vec![0; n + 2],
+            items: Vec::new(),
+        }
+    }
+
+    /// Counts (first pass) or places (second pass) one occurrence of `atom`.
+    fn add(&mut self, pass: Pass, atom: u32, item: (u32, i64)) {
+        let a = atom as usize;
+        match pass {
+            Pass::Count => self.start[a + 1] += 1,
+            Pass::Fill => {
+                // During filling, `start[a]` is the next free slot of atom `a`.
+                self.items[self.start[a]] = item;
+                self.start[a] += 1;
+            }
+        }
+    }
+
+    /// After counting: turns counts into start offsets; after filling: restores them.
+    fn end(&mut self, pass: Pass) {
+        match pass {
+            Pass::Count => {
+                for i in 1..self.start.len() {
+                    self.start[i] += self.start[i - 1];
+                }
+                // start[a] is now atom a's first slot, the next free one while filling.
+                self.items = vec![(0, 0); *self.start.last().unwrap_or(&0)];
+            }
+            Pass::Fill => {
+                // Each start[a] now holds the end of atom a, which is the start of a + 1.
+                self.start.rotate_right(1);
+                self.start[0] = 0;
+            }
+        }
+    }
+
+    /// The occurrences of atom `a`.
+    fn of(&self, a: usize) -> &[(u32, i64)] {
+        &self.items[self.start[a]..self.start[a + 1]]
+    }
+}
+
 /// Adds `:- a, -a.` for complementary atoms, then simplifies and numbers.
 pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     add_classical_constraints(g);
@@ -54,34 +113,36 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         .collect();
     let mut head_count = vec![0u32; n + 1];
     // Occurrences in bodies: (rule, weight); weight 0 marks a normal body.
-    let mut pos_occ: Vec<Vec<(u32, i64)>> = vec![Vec::new(); n + 1];
-    let mut neg_occ: Vec<Vec<(u32, i64)>> = vec![Vec::new(); n + 1];
+    let mut pos_occ = Occurrences::new(n);
+    let mut neg_occ = Occurrences::new(n);
     // For weight bodies: the weight still reachable minus the bound; below 0 the rule is dead.
     let mut slack: Vec<i64> = vec![0; g.rules.len()];
+    for pass in [Pass::Count, Pass::Fill] {
+        for (ri, r) in g.rules.iter().enumerate() {
+            match &r.body {
+                Body::Normal(lits) => {
+                    for &l in lits {
+                        let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
+                        occ.add(pass, l.unsigned_abs(), (ri as u32, 0));
+                    }
+                }
+                Body::Weight { lits, .. } => {
+                    for &(l, w) in lits {
+                        let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
+                        occ.add(pass, l.unsigned_abs(), (ri as u32, w.max(1)));
+                    }
+                }
+            }
+        }
+        pos_occ.end(pass);
+        neg_occ.end(pass);
+    }
     for (ri, r) in g.rules.iter().enumerate() {
         for &h in &r.head {
             head_count[h as usize] += 1;
         }
-        match &r.body {
-            Body::Normal(lits) => {
-                for &l in lits {
-                    if l > 0 {
-                        pos_occ[l as usize].push((ri as u32, 0));
-                    } else {
-                        neg_occ[(-l) as usize].push((ri as u32, 0));
-                    }
-                }
-            }
-            Body::Weight { lower, lits } => {
-                slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
-                for &(l, w) in lits {
-                    if l > 0 {
-                        pos_occ[l as usize].push((ri as u32, w.max(1)));
-                    } else {
-                        neg_occ[(-l) as usize].push((ri as u32, w.max(1)));
-                    }
-                }
-            }
+        if let Body::Weight { lower, lits } = &r.body {
+            slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
         }
     }
     let mut external = vec![false; n + 1];
@@ -120,7 +181,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     // Rules with `not a`, a a fact, are dead from the start.
     for a in 1..=n {
         if status[a - 1] == Status::Fact {
-            for &(ri, w) in &neg_occ[a] {
+            for &(ri, w) in neg_occ.of(a) {
                 // A weight body loses the literal's weight; a normal body dies.
                 if w > 0 {
                     slack[ri as usize] -= w;
@@ -140,7 +201,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         }
     }
     while let Some(a) = work.pop() {
-        for &(ri, w) in &pos_occ[a as usize] {
+        for &(ri, w) in pos_occ.of(a as usize) {
             if w > 0 {
                 slack[ri as usize] -= w;
                 if slack[ri as usize] >= 0 {
@@ -169,30 +230,31 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut rules: Vec<Rule> = Vec::new();
     let mut origins = Vec::new();
     let mut fact_rule_seen = vec![false; n + 1];
-    for (ri, r) in g.rules.iter().enumerate() {
+    // The rules are moved out (the grounder's copy is not used after this).
+    for (ri, r) in std::mem::take(&mut g.rules).into_iter().enumerate() {
         if dead[ri] {
             continue;
         }
-        let body = match &r.body {
-            Body::Normal(lits) => {
-                let mut out = Vec::with_capacity(lits.len());
+        let body = match r.body {
+            Body::Normal(mut lits) => {
                 let mut ok = true;
-                for &l in lits {
-                    match truth(l, &status) {
-                        Some(true) => {}
-                        Some(false) => ok = false,
-                        None => out.push(l),
+                lits.retain(|&l| match truth(l, &status) {
+                    Some(true) => false,
+                    Some(false) => {
+                        ok = false;
+                        false
                     }
-                }
+                    None => true,
+                });
                 if !ok {
                     continue;
                 }
-                Body::Normal(out)
+                Body::Normal(lits)
             }
             Body::Weight { lower, lits } => {
-                let mut lower = *lower;
+                let mut lower = lower;
                 let mut out = Vec::new();
-                for &(l, w) in lits {
+                for (l, w) in lits {
                     match truth(l, &status) {
                         Some(true) => lower -= w,
                         Some(false) => {}
@@ -208,7 +270,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 }
             }
         };
-        let mut head = r.head.clone();
+        let mut head = r.head;
         if r.head_kind == HeadKind::Disjunction {
             if head.iter().any(|&h| status[h as usize - 1] == Status::Fact)
                 && !(head.len() == 1 && body == Body::Normal(Vec::new()))
@@ -381,20 +443,15 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     };
     let mut out = GroundProgram::new();
     out.num_atoms = next;
-    out.rules = rules
-        .into_iter()
-        .map(|r| Rule {
-            head_kind: r.head_kind,
-            head: r.head.iter().map(|&h| number[h as usize]).collect(),
-            body: match r.body {
-                Body::Normal(ls) => Body::Normal(ls.into_iter().map(map_lit).collect()),
-                Body::Weight { lower, lits } => Body::Weight {
-                    lower,
-                    lits: lits.into_iter().map(|(l, w)| (map_lit(l), w)).collect(),
-                },
-            },
-        })
-        .collect();
+    // Renumbered in place.
+    for r in &mut rules {
+        r.head.iter_mut().for_each(|h| *h = number[*h as usize]);
+        match &mut r.body {
+            Body::Normal(ls) => ls.iter_mut().for_each(|l| *l = map_lit(*l)),
+            Body::Weight { lits, .. } => lits.iter_mut().for_each(|(l, _)| *l = map_lit(*l)),
+        }
+    }
+    out.rules = rules;
     out.origins = origins;
     out.minimize = minimize
         .into_iter()

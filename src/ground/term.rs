@@ -5,11 +5,14 @@
 //! Invariants:
 //! - Variables are dense slots `0..num_vars` of their rule; a [`Binding`] holds one optional
 //!   symbol per slot and a trail, so matching can be undone in LIFO order.
-//! - Arithmetic is clingo's: 32-bit integers with wrap-around, `/` truncates toward zero, `\` is
+//! - Arithmetic is clingo's: 32-bit integers with wrap-around (integer literals too are read
+//!   modulo 2^32, so `2147483648` is `-2147483648`), `/` truncates toward zero, `\` is
 //!   the remainder with the dividend's sign, `**` with a negative exponent is 0 (undefined for a
 //!   base of 0), `~` is bitwise complement; an operation on a non-integer, or division by zero,
 //!   is *undefined*: evaluation returns the span of the offending term and the caller drops the
 //!   rule instance with an `operation undefined` warning (checked against clingo 5.8.3).
+//!   `-2147483648 / -1` (and `\ -1`), where clingo itself dies of SIGFPE, wrap like
+//!   two's-complement hardware would: `-2147483648` and `0`.
 //! - Matching inverts the linear forms `X+c`, `c+X`, `X-c`, `c-X`, `-X`, `c*X` and `X*c` on
 //!   integers, as gringo binds `X` in `p(X+1)`.
 
@@ -113,14 +116,8 @@ fn ipow(base: i32, exp: i32) -> Option<i32> {
     if exp < 0 {
         return if base == 0 { None } else { Some(0) };
     }
-    let mut r: i32 = 1;
-    for _ in 0..exp {
-        r = r.wrapping_mul(base);
-        if r == 0 || (r == 1 && base == 1) {
-            break;
-        }
-    }
-    Some(r)
+    // Squaring, wrapping at 32 bits: `3 ** 2000000000` costs 31 steps, not two billion.
+    Some(base.wrapping_pow(exp as u32))
 }
 
 /// Applies a binary operator to integers as clingo does; `None` when undefined.
@@ -157,6 +154,15 @@ impl NTerm {
             NTerm::Fun { args, .. } => args.iter().all(NTerm::is_ground),
             NTerm::Unary { arg, .. } => arg.is_ground(),
             NTerm::Binary { lhs, rhs, .. } => lhs.is_ground() && rhs.is_ground(),
+        }
+    }
+
+    /// True when evaluating the term applies an operator (and so may be undefined).
+    pub fn has_operation(&self) -> bool {
+        match self {
+            NTerm::Sym(_) | NTerm::Var(_) => false,
+            NTerm::Fun { args, .. } => args.iter().any(|a| a.has_operation()),
+            NTerm::Unary { .. } | NTerm::Binary { .. } => true,
         }
     }
 
@@ -263,6 +269,28 @@ impl NTerm {
                 let v = binary_int(*op, l, r).ok_or(*span)?;
                 Ok(syms.int(v))
             }
+        }
+    }
+
+    /// The value of a term made of integers, variables bound to integers and defined integer
+    /// operations, computed without creating symbols; `None` for any other term (including an
+    /// undefined operation), which the caller then evaluates with [`NTerm::eval`].
+    pub fn eval_int(&self, syms: &Symbols, b: &Binding) -> Option<i32> {
+        match self {
+            NTerm::Sym(s) => syms.num(*s),
+            NTerm::Var(v) => syms.num(b.get(*v)?),
+            NTerm::Unary { op, arg, .. } => {
+                let n = arg.eval_int(syms, b)?;
+                Some(match op {
+                    UnaryOp::Minus => n.wrapping_neg(),
+                    UnaryOp::BitNot => !n,
+                    UnaryOp::Abs => n.wrapping_abs(),
+                })
+            }
+            NTerm::Binary { op, lhs, rhs, .. } => {
+                binary_int(*op, lhs.eval_int(syms, b)?, rhs.eval_int(syms, b)?)
+            }
+            NTerm::Fun { .. } => None,
         }
     }
 
@@ -398,6 +426,17 @@ mod tests {
         assert_eq!(binary_int(BinaryOp::Pow, -1, 5), Some(-1));
         assert_eq!(binary_int(BinaryOp::Add, i32::MAX, 1), Some(i32::MIN));
         assert_eq!(binary_int(BinaryOp::BitXor, 5, 3), Some(6));
+        // clingo 5.8.3: 2147483647*2=-2, 2**40=0, (-2)**31=-2147483648, 3**4=81.
+        assert_eq!(binary_int(BinaryOp::Mul, i32::MAX, 2), Some(-2));
+        assert_eq!(binary_int(BinaryOp::Pow, 2, 40), Some(0));
+        assert_eq!(binary_int(BinaryOp::Pow, -2, 31), Some(i32::MIN));
+        assert_eq!(binary_int(BinaryOp::Pow, 3, 4), Some(81));
+        assert_eq!(binary_int(BinaryOp::Pow, -1, i32::MAX), Some(-1));
+        // clingo 5.8.3 dies of SIGFPE on -2147483648/-1 and -2147483648\-1; we decide the
+        // two's-complement results instead of an error: the quotient wraps to -2147483648,
+        // the remainder is 0.
+        assert_eq!(binary_int(BinaryOp::Div, i32::MIN, -1), Some(i32::MIN));
+        assert_eq!(binary_int(BinaryOp::Mod, i32::MIN, -1), Some(0));
     }
 
     #[test]
