@@ -6,17 +6,18 @@
 //! Every run is `-n 0 --opt-mode=optN --outf=2`.
 //!
 //! clasp (3.3.5, and the clasp inside clingo 5.8.3) is run twice, with its default
-//! equivalence preprocessing and with `--eq=0`, and a comparison passes when the two sides
-//! agree under one of the two settings. Reason: on some non-head-cycle-free ground programs
+//! equivalence preprocessing and with `--eq=0`, and a comparison passes when a run of one side
+//! agrees with a run of the other under either setting (see `agree`). Reason: on some non-head-cycle-free ground programs
 //! read from aspif (the disjunctions gringo and Lucent write for recursive conditional
 //! literals) one setting of clasp reports wrong answer sets, and which one depends on the
 //! program. Found here: gringo's aspif for `d(1..2). #count { X : p(X) : d(X) } 1 :- p(Y) :
 //! p(Y). {p(X) : d(X)}.` gets a 4th answer set `{p(1), p(2)}` (which breaks the upper bound)
 //! from default clasp and the right 3 with `--eq=0`, while Lucent's aspif for seed 103 gets
 //! twice its 125 answer sets with `--eq=0` and the right 125 by default; the same ground
-//! programs written as text rules give the right counts to clingo under both settings. Two runs agree when they give the same
-//! multiset of answer sets (shown atoms, sorted), or, with optimization, the same optimum and
-//! the same set of optimal answer sets; an input error on both sides also agrees.
+//! programs written as text rules give the right counts to clingo under both settings. Two runs
+//! agree when they give the same multiset of answer sets (shown atoms, sorted), or, with
+//! optimization, the same optimum and the same multiset of optimal answer sets (an optimum of
+//! all zeros counts as no optimization, see `answer_of`); an input error on both sides agrees.
 //!
 //! The reference tools must be installed (`apt-get install -y gringo clasp`, `pip install
 //! clingo`; scripts/test.sh does both); without them the test fails and says so.
@@ -29,7 +30,6 @@
 
 mod support;
 
-use std::collections::BTreeSet;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -92,8 +92,8 @@ fn require_tools() {
 }
 
 /// Normalises (models with their costs) into an `Answer`: with costs, the optimum is the last
-/// model's costs (clasp's optN reports improving models first) and only the models with that
-/// cost count, once each; without, the sorted multiset of models.
+/// model's costs (clasp's optN reports improving models first) and only the optimal models
+/// count; without, the sorted multiset of models.
 fn answer_of(models: Vec<(Vec<String>, Vec<i64>)>) -> Answer {
     let optimum = models
         .last()
@@ -101,16 +101,29 @@ fn answer_of(models: Vec<(Vec<String>, Vec<i64>)>) -> Answer {
         .filter(|c| !c.is_empty());
     let mut sets: Vec<Vec<String>> = match &optimum {
         Some(best) => {
-            let set: BTreeSet<Vec<String>> = models
+            // optN prints the improving models, then every optimal model: the last improving
+            // model (the first with the best cost) is printed twice, so one copy is dropped and
+            // the rest is compared as a multiset (shown atoms may repeat across answer sets).
+            let mut optimal: Vec<Vec<String>> = models
                 .into_iter()
                 .filter(|(_, c)| c == best)
                 .map(|(m, _)| m)
                 .collect();
-            set.into_iter().collect()
+            if optimal.len() > 1 {
+                optimal.remove(0);
+            }
+            optimal
         }
         None => models.into_iter().map(|(m, _)| m).collect(),
     };
     sets.sort();
+    // An optimum of all zeros compares as no optimization (the optimal answer sets, each once):
+    // whether a minimize statement that no answer set pays for is written at all depends on how
+    // far the grounder simplifies. gringo keeps one over `p(1) :- not #sum+ { } <= 0.` (an
+    // aggregate it leaves undecided) where Lucent finds p(1) false and writes none, and the
+    // other way round elsewhere. A minimize that excludes some answer set still differs from a
+    // run without one, since its optimal sets are then fewer.
+    let optimum = optimum.filter(|c| c.iter().any(|&x| x != 0));
     Answer::Sets { optimum, sets }
 }
 
@@ -148,9 +161,13 @@ fn answer_of_json(stdout: &[u8]) -> Answer {
 /// the programs above) and off (see the module documentation).
 const EQ_SETTINGS: [&str; 2] = ["--eq=5", "--eq=0"];
 
-/// True when `x` and `y` agree under one of the `EQ_SETTINGS`.
+/// True when one of `x`'s `EQ_SETTINGS` agrees with one of `y`'s. Any pairing counts, since
+/// the setting clasp gets wrong depends on the ground program, and gringo's and Lucent's ground
+/// programs differ: for seed 11303 (`LUCENT_DIFF_FIRST=11303`), clingo 5.8 and `gringo | clasp`
+/// report 72 answer sets by default and 56 with `--eq=0`, while Lucent's aspif gets 56 from clasp
+/// by default, and Lucent's own solver, with every model checked by `--check`, also finds 56.
 fn agree(x: &[Answer; 2], y: &[Answer; 2]) -> bool {
-    x[0] == y[0] || x[1] == y[1]
+    x.iter().any(|a| y.contains(a))
 }
 
 const SOLVE_ARGS: [&str; 4] = ["-n", "0", "--opt-mode=optN", "--outf=2"];
@@ -305,7 +322,7 @@ fn random_programs_agree_with_gringo_clasp_and_clingo() {
     let all = std::env::var("LUCENT_DIFF_ALL").is_ok_and(|v| v == "1");
     let features = Features {
         conditional_disjunction: all,
-        aggregate_not_equal: all,
+        aggregate_not_equal: true,
     };
     let dir = std::env::temp_dir().join(format!("lucent-diff-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

@@ -9,11 +9,12 @@
 //! choice rules with bounds and conditions; disjunction; conditional literals in bodies;
 //! `#count`, `#sum`, `#sum+`, `#min`, `#max` in bodies (with and without an assigned variable)
 //! and in heads; `#minimize` and weak constraints with priorities; `#show` of signatures and of
-//! terms. [`Features::conditional_disjunction`] adds disjunctions with conditional elements
-//! (`p(X) : d(X) ; a`), off by default only while the grounder reports some of them unsupported
-//! (scripts/known-failures/lucent-clasp.txt), and [`Features::aggregate_not_equal`] adds `!=`
-//! between aggregates and bounds, off while bug B3 is open; `LUCENT_DIFF_ALL=1` turns both on
-//! in the tests.
+//! terms, and `!=` between aggregates and bounds ([`Features::aggregate_not_equal`]).
+//! [`Features::conditional_disjunction`] adds disjunctions with conditional elements
+//! (`p(X) : d(X) ; a`); it is off by default because clingo itself reads some of them in ways
+//! that are not the plain reading (an element whose own atom occurs in its condition; see
+//! ARCHITECTURE.md, "Semantics decisions"), so differences there need a person to judge.
+//! `LUCENT_DIFF_ALL=1` turns it on in the tests.
 //!
 //! Invariant: the same seed and features give the same text.
 
@@ -22,9 +23,9 @@
 pub struct Features {
     /// Disjunctions whose elements have conditions (`p(X) : d(X) ; a :- b.`).
     pub conditional_disjunction: bool,
-    /// `!=` between an aggregate and its bound (`#sum { 1 : p; 2 : a } != 2`). Off by default
-    /// while Lucent gets recursive ones wrong (/work/notes/bugs.md B3: `{a}. p :- #sum { 1 : p;
-    /// 2 : a } != 2.` has answer sets {a} and {p} in clingo, Lucent adds {a, p}).
+    /// `!=` between an aggregate and its bound (`#sum { 1 : p; 2 : a } != 2`). Recursive ones
+    /// are non-monotone (`{a}. p :- #sum { 1 : p; 2 : a } != 2.` has answer sets {a} and {p} in
+    /// clingo; Lucent once added {a, p}).
     pub aggregate_not_equal: bool,
 }
 
