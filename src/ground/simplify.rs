@@ -4,8 +4,7 @@
 //! statements and the other directives.
 //!
 //! Rules implemented (each by a worklist step):
-//! - an atom that is not external and heads no live rule is false, and so is one outside the
-//!   least model of the live rules with negative literals taken as true (no base for it);
+//! - an atom that is not external and heads no live rule is false;
 //! - a rule with a positive body literal over a false atom, or `not a` with `a` a fact, is dead;
 //! - a disjunctive rule with a fact among its heads (other than the fact's own rule) is dead,
 //!   and so is a rule whose body contains a literal and its negation;
@@ -223,16 +222,6 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                     &g.rules,
                 );
             }
-        }
-    }
-    // Atoms that no live rule can derive even with every negative literal taken as true are
-    // false in every stable model: recursion without a base (`p :- p.`) yields nothing, as in
-    // gringo, so a `#minimize` over such atoms is dropped as gringo drops it.
-    let possible = possible_atoms(n, &g.rules, &dead, &status, &external, &pos_occ);
-    for a in 1..=n {
-        if !possible[a] && !external[a] && status[a - 1] == Status::Unknown {
-            status[a - 1] = Status::False;
-            work.push(a as AtomId);
         }
     }
     while let Some(a) = work.pop() {
@@ -625,73 +614,6 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         names,
         facts,
     }
-}
-
-/// The atoms (index `1..=n`) derivable from the live rules when every negative literal is taken
-/// as true and a rule derives all of its heads: the least model of that positive program, which
-/// contains every stable model (a disjunctive rule's heads are all derived, so it also bounds
-/// the minimal models of the reduct). Facts and externals are derivable.
-fn possible_atoms(
-    n: usize,
-    rules: &[Rule],
-    dead: &[bool],
-    status: &[Status],
-    external: &[bool],
-    pos_occ: &Occurrences,
-) -> Vec<bool> {
-    let mut possible = vec![false; n + 1];
-    let mut queue: Vec<usize> = Vec::new();
-    // need[r]: for a normal body, the positive literals not yet derived; for a weight body, the
-    // weight still missing once every negative literal counts. A rule fires when it reaches 0.
-    let mut need: Vec<i64> = rules
-        .iter()
-        .map(|r| match &r.body {
-            Body::Normal(lits) => lits.iter().filter(|&&l| l > 0).count() as i64,
-            Body::Weight { lower, lits } => {
-                lower
-                    - lits
-                        .iter()
-                        .filter(|&&(l, _)| l < 0)
-                        .map(|&(_, w)| w.max(0))
-                        .sum::<i64>()
-            }
-        })
-        .collect();
-    let fire = |r: &Rule, possible: &mut Vec<bool>, queue: &mut Vec<usize>| {
-        for &h in &r.head {
-            if !possible[h as usize] {
-                possible[h as usize] = true;
-                queue.push(h as usize);
-            }
-        }
-    };
-    for a in 1..=n {
-        if status[a - 1] == Status::Fact || external[a] {
-            possible[a] = true;
-            queue.push(a);
-        }
-    }
-    for (ri, r) in rules.iter().enumerate() {
-        if !dead[ri] && need[ri] <= 0 {
-            fire(r, &mut possible, &mut queue);
-        }
-    }
-    while let Some(a) = queue.pop() {
-        for &(ri, w) in pos_occ.of(a) {
-            let ri = ri as usize;
-            if dead[ri] {
-                continue;
-            }
-            let before = need[ri];
-            // Occurrences store a weight body's weight as at least 1 and a normal body's as 0;
-            // counting 1 for a weight-0 literal only derives more, which stays sound.
-            need[ri] -= w.max(1);
-            if before > 0 && need[ri] <= 0 {
-                fire(&rules[ri], &mut possible, &mut queue);
-            }
-        }
-    }
-    possible
 }
 
 /// Whether a normal body contains a literal and its negation (it can never hold). Only short
