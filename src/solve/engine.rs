@@ -522,16 +522,22 @@ impl Engine {
         cref
     }
 
+    /// Watches the binary clause `a ∨ b` inline (no arena entry): each literal's list holds
+    /// the other.
+    fn watch_binary(&mut self, a: Lit, b: Lit) {
+        self.watches[a.code()].push(Watch {
+            cref: u32::MAX,
+            other: b,
+        });
+        self.watches[b.code()].push(Watch {
+            cref: u32::MAX,
+            other: a,
+        });
+    }
+
     fn attach(&mut self, lits: &[Lit], learnt: bool, lbd: u32) -> Reason {
         if lits.len() == 2 {
-            self.watches[lits[0].code()].push(Watch {
-                cref: u32::MAX,
-                other: lits[1],
-            });
-            self.watches[lits[1].code()].push(Watch {
-                cref: u32::MAX,
-                other: lits[0],
-            });
+            self.watch_binary(lits[0], lits[1]);
             Reason::Binary(lits[1])
         } else {
             Reason::Long(self.alloc_clause(lits, learnt, lbd))
@@ -1486,14 +1492,7 @@ impl Engine {
             if !satisfied {
                 debug_assert!(lits.len() >= 2, "propagation reached a fixpoint");
                 if lits.len() == 2 {
-                    self.watches[lits[0].code()].push(Watch {
-                        cref: u32::MAX,
-                        other: lits[1],
-                    });
-                    self.watches[lits[1].code()].push(Watch {
-                        cref: u32::MAX,
-                        other: lits[0],
-                    });
+                    self.watch_binary(lits[0], lits[1]);
                 } else {
                     let cref = self.arena.len() as u32;
                     self.arena.push(lits.len() as u32);
