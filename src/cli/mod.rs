@@ -294,6 +294,9 @@ fn solve_and_report(
     let mut rep = report::Report::new(&result, context);
     rep.times.total = start.elapsed().as_secs_f64();
     rep.times.cpu = rep.times.total;
+    if options.stats > 0 {
+        rep.stats = Some(result.stats.clone());
+    }
     let quiet = report::Quiet::from_levels(options.quiet);
     match options.outf {
         options::OutputFormat::Text => report::write_text(io.out, &rep, quiet)?,
