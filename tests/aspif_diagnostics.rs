@@ -89,3 +89,40 @@ fn output_symbol_not_utf8() {
     // Line 2, column 5: the output symbol's two bytes are not UTF-8.
     insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n4 2 \xff\xfe 0\n0\n"));
 }
+
+/// Runs `lucent --mode=clasp` on `input` with `args`; returns (exit code, stdout, stderr).
+fn clasp_mode_out(input: &[u8], args: &[&str]) -> (i32, String, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_lucent"))
+        .arg("--mode=clasp")
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    child.stdin.take().unwrap().write_all(input).unwrap();
+    let out = child.wait_with_output().unwrap();
+    (
+        out.status.code().expect("exited, not killed by a signal"),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+#[test]
+fn largest_atom_id_is_solved_in_little_memory() {
+    // Atoms 2147483647 (the largest aspif literal), 5 and 7: {a; b}. c :- 2 {a = 3; b = 1}.
+    // #minimize {1 : a; 3 : not b}. Sized by the largest atom, the solver's per-atom arrays
+    // would take tens of gigabytes; renumbered, three atoms. Optimal answer sets by hand:
+    // {} costs 3, {b} 0, {a, c} 4, {a, b, c} 1 (c holds exactly when a does), so {b} is the
+    // single optimum. Same program with atoms 1, 2, 3: `clasp --opt-mode=optN -n0` gives the
+    // single optimal model `b` with `Optimization: 0`.
+    let input = b"asp 1 0 0\n1 1 2 2147483647 5 0 0\n1 0 1 7 1 2 2 2147483647 3 5 1\n\
+2 0 2 2147483647 1 -5 3\n4 1 a 1 2147483647\n4 1 b 1 5\n4 1 c 1 7\n0\n";
+    let (code, out, err) = clasp_mode_out(input, &["--opt-mode=optN", "-n0", "--check"]);
+    assert_eq!(code, 30, "{err}");
+    assert!(
+        out.contains("Answer: 1\nb\nOptimization: 0\nOPTIMUM FOUND"),
+        "{out}"
+    );
+}
