@@ -90,6 +90,32 @@ fn output_symbol_not_utf8() {
     insta::assert_snapshot!(diagnostic(b"asp 1 0 0\n4 2 \xff\xfe 0\n0\n"));
 }
 
+#[test]
+fn weight_body_too_heavy() {
+    // Line 2, column 17 (the first weight): the bound 1 and the weight 4611686018427387904
+    // (2^62) of a weight body add up to more than 2^62, so sums over them could overflow.
+    insta::assert_snapshot!(diagnostic(
+        b"asp 1 0 0\n1 0 1 3 1 1 2 1 4611686018427387904 2 1\n0\n"
+    ));
+}
+
+#[test]
+fn huge_bound() {
+    // Line 2, column 11: the bound -9223372036854775808 alone is beyond 2^62 in absolute value.
+    insta::assert_snapshot!(diagnostic(
+        b"asp 1 0 0\n1 0 1 3 1 -9223372036854775808 1 1 5\n0\n"
+    ));
+}
+
+#[test]
+fn minimize_priority_too_heavy() {
+    // Line 3, column 10: the weights of priority 0 add up over both statements to 2^62 + 1
+    // (each alone fits); the solver adds the statements of one priority together.
+    insta::assert_snapshot!(diagnostic(
+        b"asp 1 0 0\n2 0 1 1 4611686018427387904\n2 0 1 -2 -1\n0\n"
+    ));
+}
+
 /// Runs `lucent --mode=clasp` on `input` with `args`; returns (exit code, stdout, stderr).
 fn clasp_mode_out(input: &[u8], args: &[&str]) -> (i32, String, String) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_lucent"))
@@ -123,6 +149,35 @@ fn largest_atom_id_is_solved_in_little_memory() {
     assert_eq!(code, 30, "{err}");
     assert!(
         out.contains("Answer: 1\nb\nOptimization: 0\nOPTIMUM FOUND"),
+        "{out}"
+    );
+}
+
+#[test]
+fn extreme_weights_and_bounds_do_not_overflow() {
+    // {a; b}. #minimize {-2^61 : not a; -2^61 : not b}. (the largest sum the reader accepts in
+    // absolute value, 2^62). Costs by hand: {} -2^62, {a} and {b} -2^61, {a, b} 0. Every
+    // command-line bound must be taken as it is, without overflow: none lies below -2^62, all
+    // four at most i64::MAX.
+    let input = b"asp 1 0 0\n1 1 2 1 2 0 0\n2 0 2 -1 -2305843009213693952 -2 -2305843009213693952\n\
+4 1 a 1 1\n0\n";
+    for (bound, models) in [
+        ("-9223372036854775808", 0),
+        ("-4611686018427387905", 0),
+        ("-4611686018427387904", 1),
+        ("-2305843009213693952", 3),
+        ("9223372036854775807", 4),
+    ] {
+        let (code, out, err) =
+            clasp_mode_out(input, &[&format!("--opt-mode=enum,{bound}"), "-n0", "--check"]);
+        assert!(!err.contains("panicked"), "{err}");
+        assert_eq!(code, if models == 0 { 20 } else { 30 }, "{bound}: {out}{err}");
+        assert_eq!(out.matches("Answer:").count(), models, "{bound}: {out}");
+    }
+    let (code, out, err) = clasp_mode_out(input, &["--opt-mode=optN", "-n0"]);
+    assert_eq!(code, 30, "{err}");
+    assert!(
+        out.contains("Answer: 1\n\nOptimization: -4611686018427387904\nOPTIMUM FOUND"),
         "{out}"
     );
 }

@@ -786,9 +786,12 @@ impl Solver {
             return;
         }
         self.engine.backtrack(0);
+        // Bounds from the command line may be anything; the sums they bound stay within
+        // +-2^62 (see `aspif::WEIGHT_SUM_MAX`), so saturating at the ends of i64 keeps the
+        // meaning.
         let mut bound = bound[..k].to_vec();
         if inclusive {
-            bound[k - 1] += 1;
+            bound[k - 1] = bound[k - 1].saturating_add(1);
         }
         let levels: Vec<Vec<(Lit, i64)>> = self.tr.minimize[..k]
             .iter()
@@ -800,9 +803,10 @@ impl Solver {
             let neg: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (l, -w)).collect();
             // sum <= c  <=>  -sum >= -c.
             let a = self.engine.new_var().positive();
-            self.engine.add_weight(a, &neg, -bound[i]);
+            self.engine.add_weight(a, &neg, bound[i].saturating_neg());
             let b = self.engine.new_var().positive();
-            self.engine.add_weight(b, &neg, -(bound[i] - 1));
+            self.engine
+                .add_weight(b, &neg, bound[i].saturating_sub(1).saturating_neg());
             at_most.push(a);
             below.push(b);
         }
