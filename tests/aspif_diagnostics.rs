@@ -156,10 +156,11 @@ fn largest_atom_id_is_solved_in_little_memory() {
 #[test]
 fn extreme_weights_and_bounds_do_not_overflow() {
     // {a; b}. #minimize {-2^61 : not a; -2^61 : not b}. (the largest sum the reader accepts in
-    // absolute value, 2^62). Costs by hand: {} -2^62, {a} and {b} -2^61, {a, b} 0. Every
-    // command-line bound must be taken as it is, without overflow: none lies below -2^62, all
-    // four at most i64::MAX.
-    let input = b"asp 1 0 0\n1 1 2 1 2 0 0\n2 0 2 -1 -2305843009213693952 -2 -2305843009213693952\n\
+    // absolute value, 2^62). Costs by hand: {} -2^62, {a} and {b} -2^61, {a, b} 0, so the
+    // number of models with cost at most the bound is counted by hand. Every command-line
+    // bound, down to i64::MIN and up to i64::MAX, is taken as it is, without overflow.
+    let input =
+        b"asp 1 0 0\n1 1 2 1 2 0 0\n2 0 2 -1 -2305843009213693952 -2 -2305843009213693952\n\
 4 1 a 1 1\n0\n";
     for (bound, models) in [
         ("-9223372036854775808", 0),
@@ -168,10 +169,16 @@ fn extreme_weights_and_bounds_do_not_overflow() {
         ("-2305843009213693952", 3),
         ("9223372036854775807", 4),
     ] {
-        let (code, out, err) =
-            clasp_mode_out(input, &[&format!("--opt-mode=enum,{bound}"), "-n0", "--check"]);
+        let (code, out, err) = clasp_mode_out(
+            input,
+            &[&format!("--opt-mode=enum,{bound}"), "-n0", "--check"],
+        );
         assert!(!err.contains("panicked"), "{err}");
-        assert_eq!(code, if models == 0 { 20 } else { 30 }, "{bound}: {out}{err}");
+        assert_eq!(
+            code,
+            if models == 0 { 20 } else { 30 },
+            "{bound}: {out}{err}"
+        );
         assert_eq!(out.matches("Answer:").count(), models, "{bound}: {out}");
     }
     let (code, out, err) = clasp_mode_out(input, &["--opt-mode=optN", "-n0"]);
