@@ -455,7 +455,7 @@ fn incremental_step_makes_a_program_non_head_cycle_free() {
     //   only come from a | b :- c and c from b: {} is the answer set. With b chosen, c
     //   follows, then a | b :- c is satisfied by b: {b, c} is an answer set. Answer sets
     //   {} and {b, c}.
-    let rules = vec![
+    let rules = [
         Rule::choice(&[2], &[]),
         Rule::choice(&[3], &[3]),
         Rule::normal(&[2, 3], &[2]),
