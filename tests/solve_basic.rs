@@ -439,3 +439,51 @@ fn cr_rules_are_applied_minimally() {
     assert_eq!(r.models[0].cr_applied.len(), 1);
     assert!(["r1", "r2"].contains(&r.models[0].cr_applied[0].as_str()));
 }
+
+#[test]
+fn incremental_step_makes_a_program_non_head_cycle_free() {
+    // The shrunk case of the property test `loop_programs_in_two_steps_match_brute_force`.
+    // Step 1: {b}. {c} :- c. b | c :- b. a | b :- c.
+    //   No positive cycle through two head atoms of one disjunction, so the program is
+    //   head-cycle-free. Reducts by hand: {b} is an answer set (b by choice, then b | c is
+    //   satisfied by b; c stays out, so a | b :- c is inactive); {} is one (b not chosen, c
+    //   only by its own choice loop). {b, c}: c's only founded support would be b | c with b
+    //   true, which a minimal model of the reduct does not need, so no. Answer sets {} and {b}.
+    // Step 2 adds {a} :- a. and c :- #sum{2 : b} >= 1 (that is, c :- b).
+    //   Now b and c are in one positive cycle (b | c :- b, c :- b, a | b :- c) with the
+    //   disjunction b | c, so the program is not head-cycle-free. With b not chosen, b can
+    //   only come from a | b :- c and c from b: {} is the answer set. With b chosen, c
+    //   follows, then a | b :- c is satisfied by b: {b, c} is an answer set. Answer sets
+    //   {} and {b, c}.
+    let rules = [
+        Rule::choice(&[2], &[]),
+        Rule::choice(&[3], &[3]),
+        Rule::normal(&[2, 3], &[2]),
+        Rule::normal(&[1, 2], &[3]),
+        Rule::choice(&[1], &[1]),
+        Rule {
+            head_kind: HeadKind::Disjunction,
+            head: vec![3],
+            body: Body::Weight {
+                lower: 1,
+                lits: vec![(2, 2)],
+            },
+        },
+    ];
+    let mut p = GroundProgram::new();
+    p.num_atoms = 4;
+    p.rules = rules[..4].to_vec();
+    let cfg = Config {
+        models: 0,
+        incremental: true,
+        ..Config::default()
+    };
+    let mut s = Solver::new(&p, cfg);
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![2]]);
+    s.add_rules(&rules[4..]).unwrap();
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![2, 3]]);
+}

@@ -9,6 +9,15 @@ use lucent::solve::check;
 use lucent::solve::{Config, CrMode, OptMode, Solver};
 use proptest::prelude::*;
 
+/// The number of cases of a property: `default`, or `PROPTEST_CASES` when set (for soaks:
+/// `PROPTEST_CASES=5000 cargo test --release --test solve_props`).
+fn cases(default: u32) -> u32 {
+    std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(default)
+}
+
 fn lit_strategy(n: u32) -> impl Strategy<Value = i32> {
     (1..=n, any::<bool>()).prop_map(|(a, pos)| if pos { a as i32 } else { -(a as i32) })
 }
@@ -140,7 +149,7 @@ fn brute_atoms(p: &GroundProgram, cfg: BruteConfig) -> Vec<(Vec<u32>, Vec<i64>)>
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: cases(400), ..ProptestConfig::default() })]
 
     #[test]
     fn all_answer_sets_match_brute_force(p in program_strategy()) {
@@ -246,7 +255,7 @@ fn holds(atoms: &[u32], l: i32) -> bool {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 600, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: cases(600), ..ProptestConfig::default() })]
 
     #[test]
     fn loop_programs_match_brute_force(p in loop_program_strategy()) {
@@ -289,7 +298,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: cases(300), ..ProptestConfig::default() })]
 
     /// Incremental solving: the rules arrive in two steps (the second may define atoms of the
     /// first again), and each step's answer sets must be those of the rules so far.

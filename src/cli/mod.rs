@@ -430,7 +430,7 @@ fn run_clasp_mode(
             return Ok(EXIT_INPUT);
         }
     }
-    let program = match ground::aspif::read_program(&bytes) {
+    let mut program = match ground::aspif::read_program(&bytes) {
         Ok(p) => p,
         Err(e) => {
             let name = names.join(",");
@@ -444,6 +444,10 @@ fn run_clasp_mode(
             return Ok(EXIT_INPUT);
         }
     };
+    // The solver's per-atom arrays are sized by the largest atom; renumbering sparse atoms
+    // keeps memory proportional to the atoms used (what is shown comes from output symbols,
+    // so the numbers are not visible).
+    program.compact_atoms();
     solve_and_report(options, io, &program, names, start, deadline)
 }
 

@@ -11,7 +11,7 @@
 //!   for CR programs (where answer sets are compared on their non-CR atoms).
 //! - For non-head-cycle-free programs every candidate is checked to be a minimal model of its
 //!   reduct (Gelfond-Lifschitz) with a fresh engine before it is reported; failed candidates are
-//!   blocked permanently.
+//!   blocked for the rest of the incremental step (permanently without `Config::incremental`).
 //! - Every auxiliary variable (bodies, shifted supports, cost-bound literals) is a function of
 //!   the atoms, so decision-based blocking never reports one answer set twice.
 //! - Edge directives are acyclicity constraints, checked on each total assignment: a cycle of
@@ -453,8 +453,13 @@ impl Solver {
                             return Next::Stopped;
                         }
                     }
-                    // Not a minimal model of its reduct: exclude this atom assignment forever.
-                    let block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
+                    // Not a minimal model of its reduct: exclude this atom assignment for as
+                    // long as the rules stay the same. Rules for new atoms cannot make it
+                    // minimal (a smaller model extends by the same new atoms), but rules added
+                    // to existing atoms in an incremental step can (a rule `c :- b` makes
+                    // `{b, c}` minimal where `b | c :- b` alone did not), so the clause carries
+                    // the step guard.
+                    let mut block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
                         .map(|a| {
                             let l = self.tr.atom_lit[a];
                             if self.engine.value(l) == Some(true) {
@@ -464,6 +469,7 @@ impl Solver {
                             }
                         })
                         .collect();
+                    block.extend(self.step_guard.map(|g| !g));
                     self.engine.add_clause(&block);
                 }
             }
@@ -780,9 +786,12 @@ impl Solver {
             return;
         }
         self.engine.backtrack(0);
+        // Bounds from the command line may be anything; the sums they bound stay within
+        // +-2^62 (see `aspif::WEIGHT_SUM_MAX`), so saturating at the ends of i64 keeps the
+        // meaning.
         let mut bound = bound[..k].to_vec();
         if inclusive {
-            bound[k - 1] += 1;
+            bound[k - 1] = bound[k - 1].saturating_add(1);
         }
         let levels: Vec<Vec<(Lit, i64)>> = self.tr.minimize[..k]
             .iter()
@@ -794,9 +803,10 @@ impl Solver {
             let neg: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (l, -w)).collect();
             // sum <= c  <=>  -sum >= -c.
             let a = self.engine.new_var().positive();
-            self.engine.add_weight(a, &neg, -bound[i]);
+            self.engine.add_weight(a, &neg, bound[i].saturating_neg());
             let b = self.engine.new_var().positive();
-            self.engine.add_weight(b, &neg, -(bound[i] - 1));
+            self.engine
+                .add_weight(b, &neg, bound[i].saturating_sub(1).saturating_neg());
             at_most.push(a);
             below.push(b);
         }
