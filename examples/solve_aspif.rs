@@ -5,7 +5,7 @@
 //! Usage: `solve_aspif [-n N] [--opt-mode=opt|optN|enum[,B..]|ignore]
 //! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [--parallel-mode=N]
 //! [--init-moms|--no-init-moms] [--vsids-decay=X] [--restarts=L,N|glucose|no]
-//! [--save-progress=N] [--body-phase=true|false] [--del-cfl=FIRST,INC] [-q] [FILE]`; the search options override the solver's search defaults, for tuning experiments.
+//! [--save-progress=N] [--eq=0|1] [--score-other=all|no] [--solve-limit=CONFLICTS] [--body-phase=true|false] [--del-cfl=FIRST,INC] [-q] [FILE]`; the search options override the solver's search defaults, for tuning experiments.
 
 use lucent::ground::aspif;
 use lucent::solve::{
@@ -80,6 +80,12 @@ fn main() -> ExitCode {
                 _ if v == "no" => RestartPolicy::Never,
                 _ => RestartPolicy::Glucose,
             };
+        } else if let Some(v) = a.strip_prefix("--score-other=") {
+            config.score_other = v == "all";
+        } else if let Some(v) = a.strip_prefix("--solve-limit=") {
+            config.conflict_limit = v.parse().ok();
+        } else if let Some(v) = a.strip_prefix("--eq=") {
+            config.eq = v != "0";
         } else if a == "-q" {
             quiet = true;
         } else {
@@ -159,6 +165,7 @@ fn main() -> ExitCode {
     println!("Conflicts    : {}", result.stats.conflicts);
     println!("Restarts     : {}", result.stats.restarts);
     println!("Propagations : {}", result.stats.propagations);
+    println!("Loop nogoods : {}", result.stats.loop_nogoods);
     println!("Variables    : {}", result.stats.vars);
     println!("Constraints  : {}", result.stats.clauses);
     println!("Time         : {:.3}s", start.elapsed().as_secs_f64());

@@ -153,18 +153,23 @@ proptest! {
 
     #[test]
     fn all_answer_sets_match_brute_force(p in program_strategy()) {
-        let cfg = Config { models: 0, opt_mode: OptMode::Ignore, ..Config::default() };
-        let got = solver_atoms(&p, cfg);
         let want = brute_atoms(&p, BruteConfig { optimize: false, ..BruteConfig::default() });
-        prop_assert_eq!(got, want);
+        // With and without the merging of equivalent atoms (translate::equivalences).
+        for eq in [false, true] {
+            let cfg = Config { models: 0, opt_mode: OptMode::Ignore, eq, ..Config::default() };
+            let got = solver_atoms(&p, cfg);
+            prop_assert_eq!(got, want.clone());
+        }
     }
 
     #[test]
     fn optimal_answer_sets_match_brute_force(p in program_strategy()) {
-        let cfg = Config { models: 0, opt_mode: OptMode::OptN, ..Config::default() };
-        let got = solver_atoms(&p, cfg);
         let want = brute_atoms(&p, BruteConfig { optimize: !p.minimize.is_empty(), ..BruteConfig::default() });
-        prop_assert_eq!(got, want);
+        for eq in [false, true] {
+            let cfg = Config { models: 0, opt_mode: OptMode::OptN, eq, ..Config::default() };
+            let got = solver_atoms(&p, cfg);
+            prop_assert_eq!(got, want.clone());
+        }
     }
 
     #[test]
@@ -259,10 +264,12 @@ proptest! {
 
     #[test]
     fn loop_programs_match_brute_force(p in loop_program_strategy()) {
-        let cfg = Config { models: 0, opt_mode: OptMode::Ignore, ..Config::default() };
-        let got = solver_atoms(&p, cfg);
         let want = brute_atoms(&p, BruteConfig { optimize: false, ..BruteConfig::default() });
-        prop_assert_eq!(got, want);
+        for eq in [false, true] {
+            let cfg = Config { models: 0, opt_mode: OptMode::Ignore, eq, ..Config::default() };
+            let got = solver_atoms(&p, cfg);
+            prop_assert_eq!(got, want.clone());
+        }
     }
 
     /// One solver answers several calls under different assumptions: the source pointers and

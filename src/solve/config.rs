@@ -85,6 +85,15 @@ pub struct Config {
     /// Seed the VSIDS activities from clause occurrences before the first decision (clasp
     /// `--init-moms`).
     pub init_moms: bool,
+    /// Stop with `UNKNOWN` after this many conflicts (clasp `--solve-limit`; for tuning).
+    pub conflict_limit: Option<u64>,
+    /// Bump the variables of loop nogoods when they are learnt (clasp `--score-other=all`).
+    pub score_other: bool,
+    /// Merge atoms equivalent to a literal or to a rule body by their completion before search
+    /// (clasp `--eq`; see `translate::equivalences`). Off by default: with the current
+    /// heuristic it did not reduce conflicts over the benchmark pairs (fewer variables, but a
+    /// different and on balance worse search).
+    pub eq: bool,
     /// Keep the solver ready for `add_rules` that give new rules to existing atoms; costs one
     /// assumption per step (see `Solver::add_rules`).
     pub incremental: bool,
@@ -142,6 +151,9 @@ impl Default for Config {
                 first: 2000,
                 inc: 300,
             },
+            score_other: false,
+            conflict_limit: None,
+            eq: false,
             incremental: false,
             check_models: false,
             threads: 1,

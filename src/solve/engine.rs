@@ -265,6 +265,10 @@ pub struct Engine {
     lbd_stamp: u64,
     /// Whether initial activities should still be set from clause occurrences (MOMS).
     pub init_moms: bool,
+    /// Stop with `Unknown` after this many conflicts in total (clasp `--solve-limit`).
+    pub conflict_limit: Option<u64>,
+    /// Bump the variables of every loop nogood when it is learnt (clasp `--score-other=all`).
+    pub score_other: bool,
 }
 
 impl Default for Engine {
@@ -339,6 +343,8 @@ impl Engine {
             level_seen: Vec::new(),
             lbd_stamp: 0,
             init_moms: false,
+            score_other: false,
+            conflict_limit: None,
         }
     }
 
@@ -785,6 +791,11 @@ impl Engine {
             }
             for mut ng in nogoods {
                 self.loop_nogoods += 1;
+                if self.score_other {
+                    for &l in &ng {
+                        self.bump_var(l.var());
+                    }
+                }
                 if self.add_clause_in_search(&mut ng, true) {
                     return Some(());
                 }
@@ -1678,7 +1689,7 @@ impl Engine {
                 return true;
             }
         }
-        false
+        self.conflict_limit.is_some_and(|n| self.conflicts >= n)
     }
 
     /// Searches for a total assignment extending `assumptions`. On `Sat` the assignment stays

@@ -125,6 +125,8 @@ impl Solver {
         engine.reduce = config.reduce;
         engine.body_phase = config.body_phase_true;
         engine.save_progress = config.save_progress;
+        engine.score_other = config.score_other;
+        engine.conflict_limit = config.conflict_limit;
         engine.restarts = match config.restarts {
             RestartPolicy::Luby(u) => Restarts::Luby {
                 unit: u.max(1),
@@ -154,7 +156,7 @@ impl Solver {
             tr = Translation::default();
             tr = Self::build_guarded(&prog, &mut engine, &mut tr, &mut step_guard);
         } else {
-            tr = Translation::build(&prog, &mut engine);
+            tr = Translation::build_with(&prog, &mut engine, config.eq);
         }
         let cr_lits = prog
             .cr_rules

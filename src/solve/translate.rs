@@ -3,9 +3,18 @@
 //! weight constraints for weight bodies, and the positive dependency graph that decides which
 //! atoms need unfounded-set propagation and whether the program is head-cycle-free.
 //!
+//! With `Config::eq`, before translation, atoms equivalent by completion to a literal (`a :- l.` as their only
+//! rule) or to a conjunctive body (`a :- B.` as their only rule) are merged with it, as clasp's
+//! `--eq` preprocessing does for these cases (`equivalences`): fewer variables, and the heuristic
+//! scores one variable instead of two that always agree.
+//!
 //! Invariants:
 //! - Every atom `1..=num_atoms` has a solver literal (`atom_lit`); index 0 holds the constant
-//!   true literal.
+//!   true literal. Merged atoms share a literal (possibly negated) with another atom, the true
+//!   literal or their body; every rule still gets its clauses, so the completion holds over the
+//!   merged literals. Cyclic atoms (positive loops) always have a variable of their own, and no
+//!   merging happens for free atoms, disjunctive programs, or incremental builds (whose atoms
+//!   are all free while translating).
 //! - For a rule `H :- B`, `B` gets one literal shared by all rules with the same body. A
 //!   disjunctive rule with head atoms `h1..hn` gives `hi` the support `B and not hj (j != i)`
 //!   (shifting); a choice rule gives each head atom the support `B`.
@@ -137,6 +146,15 @@ impl Translation {
                     .map(|&(l, w)| (self.lit(l).code() as u32, w))
                     .collect();
                 key.sort_unstable();
+                // Merged atoms can make a literal occur twice: one entry with the summed weight.
+                key.dedup_by(|b, a| {
+                    if a.0 == b.0 {
+                        a.1 = a.1.saturating_add(b.1);
+                        true
+                    } else {
+                        false
+                    }
+                });
                 if let Some(&b) = self.weights.get(&(*lower, key.clone())) {
                     return b;
                 }
@@ -150,27 +168,60 @@ impl Translation {
         }
     }
 
-    /// Translates the whole program into a fresh engine.
+    /// Translates the whole program into a fresh engine, without merging equivalent atoms.
     pub fn build(p: &GroundProgram, e: &mut Engine) -> Translation {
+        Translation::build_with(p, e, false)
+    }
+
+    /// Translates the whole program into a fresh engine; `eq` turns the merging of equivalent
+    /// atoms and bodies on (clasp `--eq`).
+    pub fn build_with(p: &GroundProgram, e: &mut Engine, eq: bool) -> Translation {
         let n = max_atom(p) as usize;
         let mut t = Translation::default();
         let truth = e.new_var();
         e.add_clause(&[truth.positive()]);
         t.atom_lit.push(truth.positive());
-        for _ in 0..n {
-            let v = e.new_var();
-            t.atom_lit.push(v.positive());
-        }
         t.supports = vec![Vec::new(); n + 1];
         t.free = vec![false; n + 1];
         for &(a, v) in &p.externals {
             match v {
-                ExternalValue::Free => t.free[a as usize] = true,
-                ExternalValue::True => {
-                    t.free[a as usize] = true;
-                    t.assumptions.push(t.atom_lit[a as usize]);
-                }
+                ExternalValue::Free | ExternalValue::True => t.free[a as usize] = true,
                 ExternalValue::False | ExternalValue::Release => t.free[a as usize] = false,
+            }
+        }
+        let eqs = if eq {
+            equivalences(p, n, &t.free)
+        } else {
+            vec![Equiv::None; n + 1]
+        };
+        // Atoms with a variable of their own first, in atom order; then the aliases.
+        let mut lit = vec![None; n + 1];
+        lit[0] = Some(truth.positive());
+        for a in 1..=n {
+            match eqs[a] {
+                Equiv::Lit(_) => {}
+                // The atom stands for a body: tried true first, as bodies are.
+                Equiv::Body(_) => lit[a] = Some(e.new_body_var().positive()),
+                Equiv::None => lit[a] = Some(e.new_var().positive()),
+            }
+        }
+        resolve_aliases(&eqs, &mut lit, e);
+        t.atom_lit = lit
+            .into_iter()
+            .map(|l| l.expect("every atom has a literal after alias resolution"))
+            .collect();
+        for &(a, v) in &p.externals {
+            if v == ExternalValue::True {
+                t.assumptions.push(t.atom_lit[a as usize]);
+            }
+        }
+        // An atom whose only rule is `a :- B` (B of two or more literals) stands for B itself.
+        for (a, q) in eqs.iter().enumerate() {
+            if let Equiv::Body(ri) = *q {
+                if let Body::Normal(ls) = &p.rules[ri].body {
+                    let lits: Vec<Lit> = ls.iter().map(|&l| t.lit(l)).collect();
+                    t.define_conjunction(e, &lits, t.atom_lit[a]);
+                }
             }
         }
         for (i, r) in p.rules.iter().enumerate() {
@@ -202,6 +253,30 @@ impl Translation {
         }
         t.install_unfounded(p, e);
         t
+    }
+
+    /// Makes the existing literal `x` stand for the conjunction of `lits` (clauses
+    /// `x -> l` and `lits -> x`), unless that conjunction already has a literal, is a single
+    /// literal, or mentions `x`'s variable; then nothing happens and the rule clauses keep the
+    /// equivalence.
+    fn define_conjunction(&mut self, e: &mut Engine, lits: &[Lit], x: Lit) {
+        let mut key: Vec<u32> = lits.iter().map(|l| l.code() as u32).collect();
+        key.sort_unstable();
+        key.dedup();
+        if key.len() < 2
+            || self.conj.contains_key(&key)
+            || key.iter().any(|&c| Lit::from_code(c).var() == x.var())
+        {
+            return;
+        }
+        let mut big = vec![x];
+        for &c in &key {
+            let l = Lit::from_code(c);
+            e.add_clause(&[!x, l]);
+            big.push(!l);
+        }
+        e.add_clause(&big);
+        self.conj.insert(key, x);
     }
 
     /// Adds the clauses of one rule (its body, its head clause and its supports).
@@ -254,20 +329,7 @@ impl Translation {
     /// head-cycle-freeness and installs the unfounded-set propagator if there are cycles.
     pub fn install_unfounded(&mut self, p: &GroundProgram, e: &mut Engine) {
         let n = self.atom_lit.len();
-        let mut edges: Vec<Vec<u32>> = vec![Vec::new(); n];
-        for r in &p.rules {
-            let pos: Vec<u32> = match &r.body {
-                Body::Normal(ls) => ls.iter().filter(|&&l| l > 0).map(|&l| l as u32).collect(),
-                Body::Weight { lits, .. } => lits
-                    .iter()
-                    .filter(|&&(l, w)| l > 0 && w > 0)
-                    .map(|&(l, _)| l as u32)
-                    .collect(),
-            };
-            for &h in &r.head {
-                edges[h as usize].extend_from_slice(&pos);
-            }
-        }
+        let edges = positive_edges(p, n);
         let comp = scc(&edges);
         let mut size = vec![0u32; n];
         for &c in &comp {
@@ -350,6 +412,132 @@ impl Translation {
         uf.guard = self.loop_guard;
         e.set_unfounded(Some(uf));
     }
+}
+
+/// What an atom is known to be equivalent to before translation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Equiv {
+    /// Nothing: the atom gets a variable of its own.
+    None,
+    /// The aspif literal given (0: the constant true): the atom's only rule is `a :- l.` (or
+    /// the fact `a.`), so completion makes `a <-> l`, and the atom shares `l`'s literal.
+    Lit(i32),
+    /// The atom's only rule, this one, is `a :- B.` with `B` a conjunction of two or more
+    /// literals: `a <-> B`, and `B` gets the atom's variable.
+    Body(usize),
+}
+
+/// Finds atoms equivalent to a literal or to a rule body by their completion (clasp's `--eq`
+/// for the simplest and most frequent case): the atom is not free, has exactly one rule, that
+/// rule is a normal rule with a single head atom and a conjunctive body. Not done for programs
+/// with disjunctive heads (the shifted supports and the minimality check keep the plain
+/// translation). An alias `a :- b.` to a positive atom of `a`'s own strongly connected
+/// component would merge a loop into one variable and lose its unfoundedness, so it is left
+/// out; such an atom is cyclic, every other alias target is outside the alias's component,
+/// so aliased atoms are never cyclic and every cyclic atom keeps a variable of its own.
+fn equivalences(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<Equiv> {
+    let mut out = vec![Equiv::None; n + 1];
+    if p.rules
+        .iter()
+        .any(|r| r.head_kind == HeadKind::Disjunction && r.head.len() > 1)
+    {
+        return out;
+    }
+    // Per atom: number of rules with it in the head (capped at 2) and the last such rule.
+    let mut count = vec![0u8; n + 1];
+    let mut rule = vec![usize::MAX; n + 1];
+    for (i, r) in p.rules.iter().enumerate() {
+        for &h in &r.head {
+            let h = h as usize;
+            count[h] = count[h].saturating_add(1).min(2);
+            rule[h] = i;
+        }
+    }
+    let comp = scc(&positive_edges(p, n + 1));
+    for a in 1..=n {
+        if count[a] != 1 || free[a] {
+            continue;
+        }
+        let r = &p.rules[rule[a]];
+        if r.head_kind != HeadKind::Disjunction || r.head.len() != 1 {
+            continue;
+        }
+        let Body::Normal(ls) = &r.body else {
+            continue;
+        };
+        out[a] = match ls.as_slice() {
+            [] => Equiv::Lit(0),
+            [l] => {
+                let b = l.unsigned_abs() as usize;
+                if free[b] || (*l > 0 && comp[b] == comp[a]) {
+                    continue;
+                }
+                Equiv::Lit(*l)
+            }
+            _ => Equiv::Body(rule[a]),
+        };
+    }
+    out
+}
+
+/// Gives every aliased atom (`Equiv::Lit`) the literal of its target, following chains; an
+/// alias cycle (`a :- not b. b :- not a.`) is broken by a fresh variable for one of its atoms,
+/// whose rule clauses keep the equivalences.
+fn resolve_aliases(eqs: &[Equiv], lit: &mut [Option<Lit>], e: &mut Engine) {
+    let target = |x: usize| match eqs[x] {
+        Equiv::Lit(l) => l,
+        _ => unreachable!("only aliases have a target"),
+    };
+    let mut visiting = vec![false; eqs.len()];
+    let mut stack: Vec<usize> = Vec::new();
+    for a in 1..eqs.len() {
+        if lit[a].is_some() {
+            continue;
+        }
+        stack.clear();
+        let mut x = a;
+        loop {
+            if lit[x].is_some() {
+                break;
+            }
+            if visiting[x] {
+                lit[x] = Some(e.new_var().positive());
+                break;
+            }
+            visiting[x] = true;
+            stack.push(x);
+            x = target(x).unsigned_abs() as usize;
+        }
+        while let Some(y) = stack.pop() {
+            visiting[y] = false;
+            if lit[y].is_some() {
+                continue;
+            }
+            let l = target(y);
+            let t = lit[l.unsigned_abs() as usize].expect("the chain's end is resolved");
+            lit[y] = Some(if l < 0 { !t } else { t });
+        }
+    }
+}
+
+/// The positive dependency graph: per atom, the atoms of positive body literals (positive
+/// weights) of its rules.
+fn positive_edges(p: &GroundProgram, n: usize) -> Vec<Vec<u32>> {
+    let mut edges: Vec<Vec<u32>> = vec![Vec::new(); n];
+    for r in &p.rules {
+        let pos: Vec<u32> = match &r.body {
+            Body::Normal(ls) => ls.iter().filter(|&&l| l > 0).map(|&l| l as u32).collect(),
+            Body::Weight { lits, .. } => lits
+                .iter()
+                .filter(|&&(l, w)| l > 0 && w > 0)
+                .map(|&(l, _)| l as u32)
+                .collect(),
+        };
+        for &h in &r.head {
+            edges[h as usize].extend_from_slice(&pos);
+        }
+    }
+    edges
 }
 
 /// Tarjan's strongly connected components, iteratively; returns the component of each node.

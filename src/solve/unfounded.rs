@@ -386,8 +386,11 @@ impl Unfounded {
                 let ext = self.external(e, part);
                 for &a in part {
                     let mut c = Vec::with_capacity(ext.len() + 2);
-                    c.push(!self.atom_lit[a as usize]);
-                    c.extend_from_slice(&ext);
+                    let not_a = !self.atom_lit[a as usize];
+                    c.push(not_a);
+                    // With merged atoms an external support can be `not a` itself (a support
+                    // literal shared with `a`'s negation); a clause never repeats a literal.
+                    c.extend(ext.iter().copied().filter(|&l| l != not_a));
                     c.extend(self.guard.map(|g| !g));
                     out.push(c);
                 }
