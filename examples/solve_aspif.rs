@@ -9,7 +9,8 @@
 
 use lucent::ground::aspif;
 use lucent::solve::{
-    Config, CrMode, EnumMode, OptMode, Outcome, ReduceSchedule, RestartPolicy, Solver,
+    Config, CrMode, EnumMode, OptMode, Outcome, ReduceSchedule, RestartPolicy, SearchProfile,
+    Solver,
 };
 use std::io::Read;
 use std::process::ExitCode;
@@ -69,12 +70,15 @@ fn main() -> ExitCode {
                 inc: it.next().unwrap_or(300),
             };
         } else if let Some(v) = a.strip_prefix("--save-progress=") {
+            config.profile = SearchProfile::Fixed;
             config.save_progress = v.parse().unwrap_or(0);
         } else if let Some(v) = a.strip_prefix("--body-phase=") {
             config.body_phase_true = v == "true";
         } else if let Some(v) = a.strip_prefix("--vsids-decay=") {
+            config.profile = SearchProfile::Fixed;
             config.var_decay = v.parse().unwrap_or(config.var_decay);
         } else if let Some(v) = a.strip_prefix("--restarts=") {
+            config.profile = SearchProfile::Fixed;
             config.restarts = match v.split_once(',') {
                 Some(("L", u)) => RestartPolicy::Luby(u.parse().unwrap_or(100)),
                 _ if v == "no" => RestartPolicy::Never,

@@ -424,6 +424,11 @@ impl Engine {
         self.uf_dirty = true;
     }
 
+    /// Whether an unfounded-set propagator is installed (the program is not tight).
+    pub fn has_unfounded(&self) -> bool {
+        self.unfounded.is_some()
+    }
+
     /// Whether a conflict at level 0 was derived: no more models under any assumption.
     pub fn is_inconsistent(&self) -> bool {
         self.inconsistent

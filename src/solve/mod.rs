@@ -14,7 +14,7 @@ pub mod check;
 pub mod config;
 pub mod result;
 
-pub use config::{Config, CrMode, EnumMode, OptMode, ReduceSchedule, RestartPolicy};
+pub use config::{Config, CrMode, EnumMode, OptMode, ReduceSchedule, RestartPolicy, SearchProfile};
 pub use result::{Model, Outcome, SolveResult, Stats, StopReason};
 pub mod engine;
 pub mod fuzzing;

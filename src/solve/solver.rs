@@ -20,7 +20,7 @@
 //!   `costs <lex c` (as `exists i: sum_j <= c_j for j < i and sum_i <= c_i - 1`); the last model
 //!   is optimal when the bound becomes unsatisfiable.
 
-use super::config::{Config, CrMode, EnumMode, OptMode, RestartPolicy};
+use super::config::{Config, CrMode, EnumMode, OptMode, RestartPolicy, SearchProfile};
 use super::engine::{Engine, Restarts, SearchResult};
 use super::lit::Lit;
 use super::result::{Model, Outcome, SolveResult, Stats, StopReason};
@@ -127,19 +127,7 @@ impl Solver {
         engine.save_progress = config.save_progress;
         engine.score_other = config.score_other;
         engine.conflict_limit = config.conflict_limit;
-        engine.restarts = match config.restarts {
-            RestartPolicy::Luby(u) => Restarts::Luby {
-                unit: u.max(1),
-                index: 0,
-                left: u.max(1) as u64,
-            },
-            RestartPolicy::Glucose => Restarts::Glucose {
-                fast: 0.0,
-                slow: 0.0,
-                since: 0,
-            },
-            RestartPolicy::Never => Restarts::Never,
-        };
+        engine.restarts = restart_state(config.restarts);
         let mut prog = prog.clone();
         prog.num_atoms = max_atom(&prog);
         // As clasp (and `check::external_values`): an external statement on an atom that has
@@ -157,6 +145,13 @@ impl Solver {
             tr = Self::build_guarded(&prog, &mut engine, &mut tr, &mut step_guard);
         } else {
             tr = Translation::build_with(&prog, &mut engine, config.eq);
+        }
+        let optimizing = !prog.minimize.is_empty() && config.opt_mode != OptMode::Ignore;
+        if config.profile == SearchProfile::Auto && engine.has_unfounded() && !optimizing {
+            // Non-tight decision problems: clasp's `tweety` search settings (`SearchProfile`).
+            engine.configure(0.92, config.seed);
+            engine.restarts = restart_state(RestartPolicy::Luby(60));
+            engine.save_progress = 160;
         }
         let cr_lits = prog
             .cr_rules
@@ -1252,6 +1247,23 @@ impl Solver {
     }
 }
 
+/// The engine's initial restart state for a policy.
+fn restart_state(policy: RestartPolicy) -> Restarts {
+    match policy {
+        RestartPolicy::Luby(u) => Restarts::Luby {
+            unit: u.max(1),
+            index: 0,
+            left: u.max(1) as u64,
+        },
+        RestartPolicy::Glucose => Restarts::Glucose {
+            fast: 0.0,
+            slow: 0.0,
+            since: 0,
+        },
+        RestartPolicy::Never => Restarts::Never,
+    }
+}
+
 /// Races `config.threads` differently configured solvers; the first to finish wins.
 fn portfolio(prog: &GroundProgram, config: &Config) -> SolveResult {
     let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
@@ -1264,6 +1276,7 @@ fn portfolio(prog: &GroundProgram, config: &Config) -> SolveResult {
                 let mut c = config.clone();
                 c.threads = 1;
                 if t % 2 == 1 {
+                    c.profile = SearchProfile::Fixed;
                     c.restarts = RestartPolicy::Luby(100);
                     c.random_freq_permille = 10;
                 }
