@@ -242,7 +242,7 @@ impl Solver {
         for _ in old_n..new_n {
             let v = self.engine.new_var();
             self.tr.atom_lit.push(v.positive());
-            self.tr.supports.push(Vec::new());
+            self.tr.supports.push(Default::default());
             self.tr.free.push(false);
             self.is_cr.push(false);
         }

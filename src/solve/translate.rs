@@ -20,7 +20,13 @@ use super::engine::Engine;
 use super::lit::Lit;
 use super::unfounded::{Support, SupportBody, Unfounded};
 use crate::ground::program::{Body, ExternalValue, GroundProgram, HeadKind, Rule};
-use hashbrown::HashMap;
+use hashbrown::{DefaultHashBuilder, HashMap, HashTable};
+use smallvec::SmallVec;
+use std::hash::BuildHasher;
+
+/// The supports of one atom as (support literal, rule index); most atoms have one or two, held
+/// inline without a heap allocation.
+pub type AtomSupports = SmallVec<[(Lit, u32); 2]>;
 
 /// The link between a ground program and the engine's variables.
 #[derive(Clone, Debug, Default)]
@@ -28,7 +34,7 @@ pub struct Translation {
     /// Per atom (index 0: constant true): its literal.
     pub atom_lit: Vec<Lit>,
     /// Per atom: supports as (support literal, rule index).
-    pub supports: Vec<Vec<(Lit, usize)>>,
+    pub supports: Vec<AtomSupports>,
     /// Per rule: the literal of its body.
     pub rule_body: Vec<Lit>,
     /// Per atom: free (an external that is not false), so no completion clause.
@@ -43,8 +49,14 @@ pub struct Translation {
     pub non_hcf: bool,
     /// Guard of the current incremental step, attached to loop nogoods (see `unfounded`).
     pub loop_guard: Option<Lit>,
-    /// Conjunctions already given a literal, keyed by sorted literal codes.
-    conj: HashMap<Vec<u32>, Lit>,
+    /// Conjunctions already given a literal: (start, length, literal), the key (sorted literal
+    /// codes) being `conj_keys[start..start + length]`. One flat key array instead of a `Vec`
+    /// per key keeps a body at 12 bytes in the table plus its codes.
+    conj: HashTable<(u32, u32, Lit)>,
+    /// The keys of `conj`, one after another.
+    conj_keys: Vec<u32>,
+    /// Hasher of the keys of `conj`.
+    conj_hasher: DefaultHashBuilder,
     /// Weight bodies already given a literal, keyed by bound and sorted (code, weight) pairs.
     weights: HashMap<(i64, Vec<(u32, i64)>), Lit>,
 }
@@ -110,7 +122,12 @@ impl Translation {
         if key.len() == 1 {
             return Lit::from_code(key[0]);
         }
-        if let Some(&b) = self.conj.get(&key) {
+        let hash = self.conj_hasher.hash_one(&key[..]);
+        let keys = &self.conj_keys;
+        let same = |&(start, len, _): &(u32, u32, Lit)| {
+            keys[start as usize..(start + len) as usize] == key[..]
+        };
+        if let Some(&(_, _, b)) = self.conj.find(hash, same) {
             return b;
         }
         let b = e.new_body_var().positive();
@@ -121,7 +138,13 @@ impl Translation {
             big.push(!l);
         }
         e.add_clause(&big);
-        self.conj.insert(key, b);
+        let start = self.conj_keys.len() as u32;
+        self.conj_keys.extend_from_slice(&key);
+        let (keys, hasher) = (&self.conj_keys, &self.conj_hasher);
+        self.conj
+            .insert_unique(hash, (start, key.len() as u32, b), |&(s, n, _)| {
+                hasher.hash_one(&keys[s as usize..(s + n) as usize])
+            });
         b
     }
 
@@ -161,7 +184,7 @@ impl Translation {
             let v = e.new_var();
             t.atom_lit.push(v.positive());
         }
-        t.supports = vec![Vec::new(); n + 1];
+        t.supports = vec![AtomSupports::new(); n + 1];
         t.free = vec![false; n + 1];
         for &(a, v) in &p.externals {
             match v {
@@ -215,7 +238,7 @@ impl Translation {
         match r.head_kind {
             HeadKind::Choice => {
                 for &h in &head {
-                    self.supports[h as usize].push((b, index));
+                    self.supports[h as usize].push((b, index as u32));
                 }
             }
             HeadKind::Disjunction => {
@@ -223,7 +246,7 @@ impl Translation {
                 c.extend(head.iter().map(|&h| self.atom_lit[h as usize]));
                 e.add_clause(&c);
                 if head.len() == 1 {
-                    self.supports[head[0] as usize].push((b, index));
+                    self.supports[head[0] as usize].push((b, index as u32));
                 } else {
                     for &h in &head {
                         let mut conj = vec![b];
@@ -233,7 +256,7 @@ impl Translation {
                                 .map(|&o| !self.atom_lit[o as usize]),
                         );
                         let s = self.conjunction(e, &conj);
-                        self.supports[h as usize].push((s, index));
+                        self.supports[h as usize].push((s, index as u32));
                     }
                 }
             }
@@ -307,6 +330,7 @@ impl Translation {
                 continue;
             }
             for &(s, ri) in &self.supports[a] {
+                let ri = ri as usize;
                 let r = &p.rules[ri];
                 // Non-HCF programs use the rule body as support (see the module comment).
                 let lit = if self.non_hcf { self.rule_body[ri] } else { s };
