@@ -113,6 +113,16 @@ impl Translation {
 
     /// A literal equivalent to the conjunction of `lits`.
     pub fn conjunction(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
+        self.conjunction_as(e, lits, true)
+    }
+
+    /// The literal of the conjunction of `lits`, where `to_lits` says whether the clauses
+    /// `b -> l` are needed. Without them the literal only follows from its literals
+    /// (`l1 and .. and lk -> b`), which is all an integrity constraint needs: its body literal is
+    /// made false at once, so `b -> l` would be satisfied at level 0 from then on (and dropped by
+    /// the engine's level-0 simplification before the search; the search is the same either
+    /// way), and a later rule with the same body shares the false literal.
+    fn conjunction_as(&mut self, e: &mut Engine, lits: &[Lit], to_lits: bool) -> Lit {
         let mut key: Vec<u32> = lits.iter().map(|l| l.code() as u32).collect();
         key.sort_unstable();
         key.dedup();
@@ -134,7 +144,9 @@ impl Translation {
         let mut big = vec![b];
         for &c in &key {
             let l = Lit::from_code(c);
-            e.add_clause(&[!b, l]);
+            if to_lits {
+                e.add_clause(&[!b, l]);
+            }
             big.push(!l);
         }
         e.add_clause(&big);
@@ -148,11 +160,13 @@ impl Translation {
         b
     }
 
-    fn body_lit(&mut self, e: &mut Engine, body: &Body) -> Lit {
+    /// The literal of a rule body; `constraint` when the rule is an integrity constraint (its
+    /// body literal is made false right after).
+    fn body_lit(&mut self, e: &mut Engine, body: &Body, constraint: bool) -> Lit {
         match body {
             Body::Normal(ls) => {
                 let lits: Vec<Lit> = ls.iter().map(|&l| self.lit(l)).collect();
-                self.conjunction(e, &lits)
+                self.conjunction_as(e, &lits, !constraint)
             }
             Body::Weight { lower, lits } => {
                 let mut key: Vec<(u32, i64)> = lits
@@ -229,7 +243,8 @@ impl Translation {
 
     /// Adds the clauses of one rule (its body, its head clause and its supports).
     pub fn add_rule(&mut self, e: &mut Engine, index: usize, r: &Rule) {
-        let b = self.body_lit(e, &r.body);
+        let constraint = r.head_kind == HeadKind::Disjunction && r.head.is_empty();
+        let b = self.body_lit(e, &r.body, constraint);
         self.rule_body.push(b);
         debug_assert_eq!(self.rule_body.len(), index + 1);
         let mut head: Vec<u32> = r.head.clone();
