@@ -191,6 +191,9 @@ impl Translation {
     pub fn build(p: &GroundProgram, e: &mut Engine) -> Translation {
         let n = max_atom(p) as usize;
         let mut t = Translation::default();
+        // One variable per atom and, at most, about one per rule body (shifted disjunctions
+        // and output conditions may add a few more).
+        e.reserve_vars(n + 1 + p.rules.len());
         let truth = e.new_var();
         e.add_clause(&[truth.positive()]);
         t.atom_lit.push(truth.positive());
