@@ -439,3 +439,98 @@ fn cr_rules_are_applied_minimally() {
     assert_eq!(r.models[0].cr_applied.len(), 1);
     assert!(["r1", "r2"].contains(&r.models[0].cr_applied[0].as_str()));
 }
+
+#[test]
+fn incremental_step_makes_a_program_non_head_cycle_free() {
+    // The shrunk case of the property test `loop_programs_in_two_steps_match_brute_force`.
+    // Step 1: {b}. {c} :- c. b | c :- b. a | b :- c.
+    //   No positive cycle through two head atoms of one disjunction, so the program is
+    //   head-cycle-free. Reducts by hand: {b} is an answer set (b by choice, then b | c is
+    //   satisfied by b; c stays out, so a | b :- c is inactive); {} is one (b not chosen, c
+    //   only by its own choice loop). {b, c}: c's only founded support would be b | c with b
+    //   true, which a minimal model of the reduct does not need, so no. Answer sets {} and {b}.
+    // Step 2 adds {a} :- a. and c :- #sum{2 : b} >= 1 (that is, c :- b).
+    //   Now b and c are in one positive cycle (b | c :- b, c :- b, a | b :- c) with the
+    //   disjunction b | c, so the program is not head-cycle-free. With b not chosen, b can
+    //   only come from a | b :- c and c from b: {} is the answer set. With b chosen, c
+    //   follows, then a | b :- c is satisfied by b: {b, c} is an answer set. Answer sets
+    //   {} and {b, c}.
+    let rules = [
+        Rule::choice(&[2], &[]),
+        Rule::choice(&[3], &[3]),
+        Rule::normal(&[2, 3], &[2]),
+        Rule::normal(&[1, 2], &[3]),
+        Rule::choice(&[1], &[1]),
+        Rule {
+            head_kind: HeadKind::Disjunction,
+            head: vec![3],
+            body: Body::Weight {
+                lower: 1,
+                lits: vec![(2, 2)],
+            },
+        },
+    ];
+    let mut p = GroundProgram::new();
+    p.num_atoms = 4;
+    p.rules = rules[..4].to_vec();
+    let cfg = Config {
+        models: 0,
+        incremental: true,
+        ..Config::default()
+    };
+    let mut s = Solver::new(&p, cfg);
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![2]]);
+    s.add_rules(&rules[4..]).unwrap();
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![2, 3]]);
+}
+
+#[test]
+fn a_rule_for_an_external_atom_makes_it_ordinary() {
+    // #external a. {b}.  Answer sets {}, {a}, {b}, {a, b} (a is free).  Then add a :- b.
+    // As clingo says, an atom is external until it is released or defined by a rule: a is now
+    // defined by a :- b only, so the answer sets are {} and {a, b}, as for the whole program
+    // given at once (where the external statement on a defined atom is ignored, as clasp
+    // does). With `#external a. [true]` the same holds: a is no longer assumed.
+    for value in [ExternalValue::Free, ExternalValue::True] {
+        for incremental in [false, true] {
+            let mut p = program(2, vec![Rule::choice(&[2], &[])]);
+            p.externals = vec![(1, value)];
+            let cfg = Config {
+                models: 0,
+                incremental,
+                ..Config::default()
+            };
+            let mut s = Solver::new(&p, cfg);
+            s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
+            let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+            got.sort();
+            assert_eq!(got, vec![vec![], vec![1, 2]], "{value:?}, {incremental}");
+        }
+    }
+}
+
+#[test]
+fn a_later_step_may_define_an_external_atom_that_was_false() {
+    // #external a. [false]  {b}.  Answer sets {} and {b}.  Then (incremental) add a :- b.
+    // Answer sets {} and {a, b}: a false external is still an external, so a rule may define
+    // it later (an unguarded completion clause made a false for good).
+    let mut p = program(2, vec![Rule::choice(&[2], &[])]);
+    p.externals = vec![(1, ExternalValue::False)];
+    let cfg = Config {
+        models: 0,
+        incremental: true,
+        ..Config::default()
+    };
+    let mut s = Solver::new(&p, cfg);
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![2]]);
+    s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![1, 2]]);
+}

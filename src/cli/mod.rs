@@ -432,7 +432,7 @@ fn run_clasp_mode(
             return Ok(EXIT_INPUT);
         }
     }
-    let program = match ground::aspif::read_program(&bytes) {
+    let mut program = match ground::aspif::read_program(&bytes) {
         Ok(p) => p,
         Err(e) => {
             let name = names.join(",");
@@ -448,6 +448,10 @@ fn run_clasp_mode(
     };
     // The text is not needed once read; free it before the solver is built.
     drop(bytes);
+    // The solver's per-atom arrays are sized by the largest atom; renumbering sparse atoms
+    // keeps memory proportional to the atoms used (what is shown comes from output symbols,
+    // so the numbers are not visible).
+    program.compact_atoms();
     solve_and_report(options, io, program, names, start, deadline)
 }
 

@@ -37,6 +37,9 @@
 //! - `GroundProgram::num_atoms` is the largest atom mentioned by any statement read so far
 //!   (steps of an incremental program accumulate), theory statements excepted.
 //! - Only output symbols, comments, theory lines and labels allocate strings while reading.
+//! - Every sum the solver can form fits in an `i64`: in a weight body, the bound's and the
+//!   weights' absolute values add up to at most [`WEIGHT_SUM_MAX`], and so do the weights of all
+//!   minimize statements of one priority (clasp is stricter: it takes 32-bit weights only).
 
 use std::io::Write as _;
 
@@ -49,6 +52,14 @@ use super::program::{
 
 /// The largest atom number aspif allows (literals are 32-bit signed integers).
 pub const ATOM_MAX: u32 = i32::MAX as u32;
+
+/// The largest sum of absolute values of a weight body's bound and weights, and of the weights
+/// of one minimize priority: 2^62, so that sums, differences and negations of such values, as
+/// the solver forms them for weight constraints and cost bounds, cannot overflow an `i64`.
+pub const WEIGHT_SUM_MAX: i128 = 1 << 62;
+
+/// What [`AspifErrorKind::WeightsTooLarge`] names for a weight body.
+const WEIGHT_BODY: &str = "the bound and the weights of this weight body";
 
 /// Comment tag naming a CR rule: `10 lucent-cr <appl> <label>`.
 pub const CR_TAG: &str = "lucent-cr";
@@ -180,6 +191,9 @@ pub enum AspifErrorKind {
         /// The value found.
         found: i64,
     },
+    /// A weight body or a minimize priority whose weights (and bound) are too large to add up.
+    #[error("{0} add up to more than 2^62 in absolute value")]
+    WeightsTooLarge(String),
     /// A weight body with a negative weight (clasp rejects them too).
     #[error("negative weight {0} in a weight body")]
     NegativeWeight(i64),
@@ -205,6 +219,7 @@ pub fn read(src: &[u8]) -> Result<Aspif, AspifError> {
     Reader {
         cur: Cursor { src, pos: 0 },
         num_atoms: 0,
+        minimize_totals: std::collections::HashMap::new(),
     }
     .file()
 }
@@ -669,10 +684,12 @@ impl<'a> Cursor<'a> {
     }
 }
 
-/// Reading state: the cursor and the largest atom seen.
+/// Reading state: the cursor, the largest atom seen and, per minimize priority, the sum of the
+/// absolute values of its weights so far (all steps: the solver adds them up the same way).
 struct Reader<'a> {
     cur: Cursor<'a>,
     num_atoms: u32,
+    minimize_totals: std::collections::HashMap<Weight, i128>,
 }
 
 /// What a step's reader remembers about the CR minimize while the step is open.
@@ -713,7 +730,14 @@ impl<'a> Reader<'a> {
         Ok(atoms)
     }
 
-    fn wlits(&mut self, allow_negative: bool) -> Result<Vec<(Lit, Weight)>, AspifError> {
+    /// Reads weighted literals; `total` is the running sum of absolute values (of the bound and
+    /// weights read before), checked against [`WEIGHT_SUM_MAX`] at every weight.
+    fn wlits(
+        &mut self,
+        allow_negative: bool,
+        what: &str,
+        total: &mut i128,
+    ) -> Result<Vec<(Lit, Weight)>, AspifError> {
         let n = self.cur.count("number of weighted literals")?;
         let mut lits = Vec::with_capacity(self.cur.capacity(n));
         for _ in 0..n {
@@ -724,6 +748,12 @@ impl<'a> Reader<'a> {
             let w = self.cur.int("weight", i64::MIN, i64::MAX)?;
             if w < 0 && !allow_negative {
                 return Err(self.cur.error_at(at, AspifErrorKind::NegativeWeight(w)));
+            }
+            *total += i128::from(w).abs();
+            if *total > WEIGHT_SUM_MAX {
+                return Err(self
+                    .cur
+                    .error_at(at, AspifErrorKind::WeightsTooLarge(what.to_string())));
             }
             lits.push((l, w));
         }
@@ -833,10 +863,19 @@ impl<'a> Reader<'a> {
                     let body = match self.cur.int("body type", 0, i64::MAX)? {
                         0 => Body::Normal(self.lits()?),
                         1 => {
+                            self.cur.skip_blanks();
+                            let at = self.cur.pos;
                             let lower = self.cur.int("lower bound", i64::MIN, i64::MAX)?;
+                            let mut total = i128::from(lower).abs();
+                            if total > WEIGHT_SUM_MAX {
+                                return Err(self.cur.error_at(
+                                    at,
+                                    AspifErrorKind::WeightsTooLarge(WEIGHT_BODY.into()),
+                                ));
+                            }
                             Body::Weight {
                                 lower,
-                                lits: self.wlits(false)?,
+                                lits: self.wlits(false, WEIGHT_BODY, &mut total)?,
                             }
                         }
                         v => return Err(self.bad_value("body type", "0 (normal), 1 (weight)", v)),
@@ -851,7 +890,11 @@ impl<'a> Reader<'a> {
                 }
                 2 => {
                     let priority = self.cur.int("priority", i64::MIN, i64::MAX)?;
-                    let lits = self.wlits(true)?;
+                    let mut total = self.minimize_totals.get(&priority).copied().unwrap_or(0);
+                    let what =
+                        format!("the weights of the minimize statements of priority {priority}");
+                    let lits = self.wlits(true, &what, &mut total)?;
+                    self.minimize_totals.insert(priority, total);
                     if let Some((expected, marker_pos)) = expect_cr_minimize.take() {
                         if priority != expected {
                             return Err(self.cur.error_at(stmt_pos, AspifErrorKind::BadLucentComment(

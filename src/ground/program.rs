@@ -218,4 +218,127 @@ impl GroundProgram {
         self.num_atoms += 1;
         self.num_atoms
     }
+
+    /// Renumbers the atoms densely when they are sparse: aspif from elsewhere may name atom
+    /// 2147483647 in a program of three atoms, and the solver's per-atom arrays are sized by
+    /// the largest atom. Atoms keep their order; atoms no statement mentions (which no rule
+    /// defines, so they are false and shown by nothing) disappear. Returns, when it renumbered,
+    /// the old number of each new atom (index 0 unused); `None` when the numbering was already
+    /// dense enough (at most twice the atoms used, plus 1024) and nothing changed.
+    ///
+    /// Theory statements are kept verbatim, with their old numbers: renumber only a program
+    /// that is solved, not one written back as aspif.
+    pub fn compact_atoms(&mut self) -> Option<Vec<Atom>> {
+        let mut used: Vec<Atom> = Vec::new();
+        let mut max = self.num_atoms;
+        self.for_each_atom(&mut |a| {
+            used.push(*a);
+            max = max.max(*a);
+        });
+        used.sort_unstable();
+        used.dedup();
+        if u64::from(max) <= 2 * used.len() as u64 + 1024 {
+            return None;
+        }
+        let new_of = |a: Atom| -> Atom {
+            let k = used.binary_search(&a).expect("every atom was collected");
+            k as Atom + 1
+        };
+        self.for_each_atom(&mut |a| *a = new_of(*a));
+        self.num_atoms = used.len() as Atom;
+        let mut old = Vec::with_capacity(used.len() + 1);
+        old.push(0);
+        old.extend_from_slice(&used);
+        Some(old)
+    }
+
+    /// Calls `f` on every atom occurrence of every statement (theory statements excepted),
+    /// literals as their atoms; `f` may change the atom, and a literal keeps its sign.
+    fn for_each_atom(&mut self, f: &mut dyn FnMut(&mut Atom)) {
+        let mut lit = |l: &mut Lit| {
+            let mut a = l.unsigned_abs();
+            f(&mut a);
+            let m = a as Lit;
+            *l = if *l < 0 { -m } else { m };
+        };
+        for r in &mut self.rules {
+            match &mut r.body {
+                Body::Normal(ls) => ls.iter_mut().for_each(&mut lit),
+                Body::Weight { lits, .. } => lits.iter_mut().for_each(|(l, _)| lit(l)),
+            }
+        }
+        for m in &mut self.minimize {
+            m.lits.iter_mut().for_each(|(l, _)| lit(l));
+        }
+        for o in &mut self.outputs {
+            o.condition.iter_mut().for_each(&mut lit);
+        }
+        self.assumptions.iter_mut().for_each(&mut lit);
+        for h in &mut self.heuristics {
+            h.condition.iter_mut().for_each(&mut lit);
+        }
+        for e in &mut self.edges {
+            e.condition.iter_mut().for_each(&mut lit);
+        }
+        for r in &mut self.rules {
+            r.head.iter_mut().for_each(&mut *f);
+        }
+        self.projections.iter_mut().for_each(&mut *f);
+        for (a, _) in &mut self.externals {
+            f(a);
+        }
+        for h in &mut self.heuristics {
+            f(&mut h.atom);
+        }
+        for c in &mut self.cr_rules {
+            f(&mut c.appl);
+        }
+        for p in &mut self.prefers {
+            f(&mut p.better);
+            f(&mut p.worse);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn compact_atoms_renumbers_sparse_atoms_in_order() {
+        // {a; b}. c :- a, not b. with a = 9, b = 2147483647, c = 4; every field renumbered.
+        let mut p = GroundProgram::new();
+        p.rules = vec![
+            Rule::choice(&[9, 2147483647], &[]),
+            Rule::normal(&[4], &[9, -2147483647]),
+        ];
+        p.num_atoms = 2147483647;
+        p.outputs.push(Output {
+            symbol: "b".into(),
+            condition: vec![2147483647],
+        });
+        p.minimize.push(Minimize {
+            priority: 0,
+            lits: vec![(-4, 1)],
+        });
+        p.cr_rules.push(CrRule {
+            appl: 9,
+            label: "r".into(),
+        });
+        let old = p.compact_atoms().expect("sparse atoms are renumbered");
+        // Old 4, 9, 2147483647 become 1, 2, 3.
+        assert_eq!(old, vec![0, 4, 9, 2147483647]);
+        assert_eq!(p.num_atoms, 3);
+        assert_eq!(
+            p.rules,
+            vec![Rule::choice(&[2, 3], &[]), Rule::normal(&[1], &[2, -3])]
+        );
+        assert_eq!(p.outputs[0].condition, vec![3]);
+        assert_eq!(p.minimize[0].lits, vec![(-1, 1)]);
+        assert_eq!(p.cr_rules[0].appl, 2);
+        // Dense enough now: nothing changes.
+        let before = p.clone();
+        assert_eq!(p.compact_atoms(), None);
+        assert_eq!(p, before);
+    }
 }

@@ -89,6 +89,21 @@ struct WeightConstraint {
     removed: bool,
 }
 
+/// Asks the processor to start loading the cache line at `p` into its caches. Propagation
+/// is bound by cache misses on watch lists (a list header per literal, then the list itself):
+/// issuing the loads one propagation step early overlaps them with the current step.
+#[inline(always)]
+fn prefetch<T>(p: *const T) {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: a prefetch is only a hint: it never faults, whatever the address (it may be
+    // dangling or past the end), and neither reads a value into the program nor writes.
+    unsafe {
+        std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(p.cast::<i8>())
+    };
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = p;
+}
+
 /// Answer of a search.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SearchResult {
@@ -147,6 +162,10 @@ pub struct Engine {
     seen: Vec<u8>,
     /// Per variable: occurrences in weight constraints (the head occurs with weight 0).
     weight_watch: Vec<Vec<WeightWatch>>,
+    /// Per variable: whether `weight_watch` is non-empty. One byte per variable, so that
+    /// propagation and backtracking of the (usually many) variables outside every weight
+    /// constraint do not load a 24-byte `Vec` header from a cold cache line.
+    weighted: Vec<bool>,
     /// Per literal code: watches of clauses in which that literal is watched.
     watches: Vec<Vec<Watch>>,
     /// The clause arena: headers followed by literal codes.
@@ -268,6 +287,7 @@ impl Engine {
             decidable: Vec::new(),
             seen: Vec::new(),
             weight_watch: Vec::new(),
+            weighted: Vec::new(),
             watches: Vec::new(),
             arena: Vec::new(),
             wasted: 0,
@@ -352,6 +372,7 @@ impl Engine {
         self.decidable.reserve(additional);
         self.seen.reserve(additional);
         self.weight_watch.reserve(additional);
+        self.weighted.reserve(additional);
         self.uf_relevant.reserve(additional);
         self.watches.reserve(2 * additional);
         self.heap.reserve(additional);
@@ -371,6 +392,7 @@ impl Engine {
         self.decidable.push(true);
         self.seen.push(0);
         self.weight_watch.push(Vec::new());
+        self.weighted.push(false);
         self.uf_relevant.push(false);
         self.watches.push(Vec::new());
         self.watches.push(Vec::new());
@@ -466,6 +488,7 @@ impl Engine {
         self.level[v] = self.decision_level();
         self.reason[v] = reason;
         self.trail.push(l);
+        prefetch(self.watches.as_ptr().wrapping_add((!l).code()));
     }
 
     /// Undoes all assignments above `level`.
@@ -478,7 +501,7 @@ impl Engine {
         for i in (start..self.trail.len()).rev() {
             let l = self.trail[i];
             let v = l.var();
-            if i < self.qhead {
+            if i < self.qhead && self.weighted[v.index()] {
                 // Undo the weight counters of processed assignments.
                 for k in 0..self.weight_watch[v.index()].len() {
                     let w = self.weight_watch[v.index()][k];
@@ -495,7 +518,6 @@ impl Engine {
             if save {
                 self.phase[v.index()] = !l.is_neg();
             }
-            self.reason[v.index()] = Reason::Decision;
             if self.heap_pos[v.index()] == usize::MAX && self.decidable[v.index()] {
                 self.heap_insert(v);
             }
@@ -696,6 +718,7 @@ impl Engine {
                 lit: l,
                 weight: w,
             });
+            self.weighted[l.var().index()] = true;
             match self.val(l) {
                 1 => sum_true += w,
                 -1 => sum_false += w,
@@ -707,6 +730,7 @@ impl Engine {
             lit: head,
             weight: 0,
         });
+        self.weighted[head.var().index()] = true;
         let total = norm.iter().map(|&(_, w)| w).sum();
         let max_weight = norm.iter().map(|&(_, w)| w).max().unwrap_or(0);
         self.weights.push(WeightConstraint {
@@ -746,6 +770,7 @@ impl Engine {
         let idu = id as u32;
         for v in lits.iter().map(|&(l, _)| l.var()).chain([head.var()]) {
             self.weight_watch[v.index()].retain(|w| w.id != idu);
+            self.weighted[v.index()] = !self.weight_watch[v.index()].is_empty();
         }
     }
 
@@ -794,6 +819,17 @@ impl Engine {
             let p = self.trail[self.qhead];
             self.qhead += 1;
             self.propagations += 1;
+            if let Some(&q) = self.trail.get(self.qhead) {
+                // The next literal's watch list: its header was prefetched when it was
+                // assigned; now start loading the list itself.
+                prefetch(self.watches[(!q).code()].as_ptr());
+            }
+            if !self.weighted[p.var().index()] {
+                if self.propagate_clauses(p) {
+                    return true;
+                }
+                continue;
+            }
             // Count `p` in its weight constraints now: backtracking undoes every processed
             // position, even when a clause conflict stops this iteration early.
             for k in 0..self.weight_watch[p.var().index()].len() {
@@ -868,6 +904,7 @@ impl Engine {
                     level[l.var().index()] = dl;
                     reason[l.var().index()] = Reason::Binary(false_lit);
                     trail.push(l);
+                    prefetch(watches.as_ptr().wrapping_add((!l).code()));
                 } else {
                     conflict_lits.clear();
                     conflict_lits.push(w.other);
@@ -921,6 +958,7 @@ impl Engine {
             level[first.var().index()] = dl;
             reason[first.var().index()] = Reason::Long(cref);
             trail.push(first);
+            prefetch(watches.as_ptr().wrapping_add((!first).code()));
         }
         while i < n {
             ws[j] = ws[i];

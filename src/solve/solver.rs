@@ -11,7 +11,7 @@
 //!   for CR programs (where answer sets are compared on their non-CR atoms).
 //! - For non-head-cycle-free programs every candidate is checked to be a minimal model of its
 //!   reduct (Gelfond-Lifschitz) with a fresh engine before it is reported; failed candidates are
-//!   blocked permanently.
+//!   blocked for the rest of the incremental step (permanently without `Config::incremental`).
 //! - Every auxiliary variable (bodies, shifted supports, cost-bound literals) is a function of
 //!   the atoms, so decision-based blocking never reports one answer set twice.
 //! - Edge directives are acyclicity constraints, checked on each total assignment: a cycle of
@@ -96,6 +96,22 @@ struct Call<'a> {
     has_costs: bool,
     /// Set when everything was explored.
     exhausted: bool,
+    /// When the call started.
+    start: Instant,
+    /// Time from `start` to the first reported model.
+    first_model: Option<std::time::Duration>,
+    /// When the last model was reported.
+    last_model: Option<Instant>,
+}
+
+impl Call<'_> {
+    /// Counts a reported model and notes its time.
+    fn note_model(&mut self) {
+        self.count += 1;
+        let now = Instant::now();
+        self.first_model.get_or_insert(now - self.start);
+        self.last_model = Some(now);
+    }
 }
 
 impl Solver {
@@ -178,23 +194,17 @@ impl Solver {
         _old: &mut Translation,
         guard: &mut Option<Lit>,
     ) -> Translation {
-        // Build without completion by translating a program whose atoms are all free, then add
-        // guarded completion clauses.
+        // Build without completion by translating a program whose atoms are all free, then set
+        // the real external values and add guarded completion clauses (external statements
+        // with value false get a guarded completion too, so that a later step may define them).
         let mut open = prog.clone();
-        let mut extra = Vec::new();
-        for a in 1..=prog.num_atoms {
-            if !prog.externals.iter().any(|&(x, _)| x == a) {
-                open.externals
-                    .push((a, crate::ground::program::ExternalValue::Free));
-                extra.push(a);
-            }
-        }
+        open.externals = (1..=prog.num_atoms)
+            .map(|a| (a, crate::ground::program::ExternalValue::Free))
+            .collect();
         let mut tr = Translation::build(&open, engine);
+        tr.set_externals(prog);
         let g = engine.new_var().positive();
         engine.set_decidable(g.var(), false);
-        for &a in &extra {
-            tr.free[a as usize] = false;
-        }
         let mut out = tr;
         for a in 1..=prog.num_atoms as usize {
             if !out.free[a] {
@@ -253,9 +263,21 @@ impl Solver {
             let r = r.clone();
             self.tr.add_rule(&mut self.engine, first + k, &r);
         }
+        // A rule for an external atom makes it an ordinary atom, defined by its rules (clingo:
+        // an atom is external until it is released or defined by a rule; `Solver::new` drops
+        // such external statements the same way).
+        let defined: HashSet<u32> = rules.iter().flat_map(|r| r.head.iter().copied()).collect();
+        let was_free: Vec<usize> = (1..=old_n as usize)
+            .filter(|&a| self.tr.free[a] && defined.contains(&(a as u32)))
+            .collect();
+        if !was_free.is_empty() {
+            self.prog.externals.retain(|(a, _)| !defined.contains(a));
+            self.tr.set_externals(&self.prog);
+        }
         match self.step_guard {
             None => {
-                for a in old_n as usize + 1..=new_n as usize {
+                let fresh = old_n as usize + 1..=new_n as usize;
+                for a in was_free.into_iter().chain(fresh) {
                     self.tr.complete(&mut self.engine, a);
                 }
             }
@@ -357,6 +379,9 @@ impl Solver {
             optimum: false,
             has_costs: false,
             exhausted: false,
+            start,
+            first_model: None,
+            last_model: None,
         };
         if self.cr_lits.is_empty() {
             self.run_main(&mut call, &assume, call_guard);
@@ -403,6 +428,12 @@ impl Solver {
                 vars: self.engine.num_vars() as u64,
                 clauses: self.engine.num_clauses,
                 time: start.elapsed(),
+                first_model: call.first_model,
+                unsat: if call.exhausted && !call.stopped {
+                    call.last_model.unwrap_or(start).elapsed()
+                } else {
+                    std::time::Duration::ZERO
+                },
             },
         }
     }
@@ -461,8 +492,13 @@ impl Solver {
                             return Next::Stopped;
                         }
                     }
-                    // Not a minimal model of its reduct: exclude this atom assignment forever.
-                    let block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
+                    // Not a minimal model of its reduct: exclude this atom assignment for as
+                    // long as the rules stay the same. Rules for new atoms cannot make it
+                    // minimal (a smaller model extends by the same new atoms), but rules added
+                    // to existing atoms in an incremental step can (a rule `c :- b` makes
+                    // `{b, c}` minimal where `b | c :- b` alone did not), so the clause carries
+                    // the step guard.
+                    let mut block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
                         .map(|a| {
                             let l = self.tr.atom_lit[a];
                             if self.engine.value(l) == Some(true) {
@@ -472,6 +508,7 @@ impl Solver {
                             }
                         })
                         .collect();
+                    block.extend(self.step_guard.map(|g| !g));
                     self.engine.add_clause(&block);
                 }
             }
@@ -714,7 +751,7 @@ impl Solver {
                 return true;
             }
         }
-        call.count += 1;
+        call.note_model();
         call.phase_count += 1;
         m.number = call.phase_count;
         if !m.costs.is_empty() {
@@ -788,9 +825,12 @@ impl Solver {
             return;
         }
         self.engine.backtrack(0);
+        // Bounds from the command line may be anything; the sums they bound stay within
+        // +-2^62 (see `aspif::WEIGHT_SUM_MAX`), so saturating at the ends of i64 keeps the
+        // meaning.
         let mut bound = bound[..k].to_vec();
         if inclusive {
-            bound[k - 1] += 1;
+            bound[k - 1] = bound[k - 1].saturating_add(1);
         }
         let levels: Vec<Vec<(Lit, i64)>> = self.tr.minimize[..k]
             .iter()
@@ -802,9 +842,10 @@ impl Solver {
             let neg: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (l, -w)).collect();
             // sum <= c  <=>  -sum >= -c.
             let a = self.engine.new_var().positive();
-            self.engine.add_weight(a, &neg, -bound[i]);
+            self.engine.add_weight(a, &neg, bound[i].saturating_neg());
             let b = self.engine.new_var().positive();
-            self.engine.add_weight(b, &neg, -(bound[i] - 1));
+            self.engine
+                .add_weight(b, &neg, bound[i].saturating_sub(1).saturating_neg());
             at_most.push(a);
             below.push(b);
         }
@@ -1013,7 +1054,7 @@ impl Solver {
                             m.symbols.push(o.symbol.clone());
                         }
                     }
-                    call.count += 1;
+                    call.note_model();
                     if !(call.sink)(&m) {
                         call.done = true;
                         break;
