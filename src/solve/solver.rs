@@ -115,8 +115,14 @@ impl Call<'_> {
 }
 
 impl Solver {
-    /// Translates `prog` and prepares a solver.
+    /// Translates `prog` and prepares a solver (on a copy of `prog`; `from_program` takes the
+    /// program instead, which saves the copy when the caller no longer needs it).
     pub fn new(prog: &GroundProgram, config: Config) -> Solver {
+        Solver::from_program(prog.clone(), config)
+    }
+
+    /// Translates `prog`, which the solver keeps, and prepares a solver.
+    pub fn from_program(mut prog: GroundProgram, config: Config) -> Solver {
         let mut engine = Engine::new();
         engine.configure(config.var_decay, config.seed);
         engine.random_permille = config.random_freq_permille.min(1000);
@@ -128,16 +134,18 @@ impl Solver {
         engine.score_other = config.score_other;
         engine.conflict_limit = config.conflict_limit;
         engine.restarts = restart_state(config.restarts);
-        let mut prog = prog.clone();
         prog.num_atoms = max_atom(&prog);
         // As clasp (and `check::external_values`): an external statement on an atom that has
         // a rule in the same program is ignored; the rules define the atom.
-        let defined: std::collections::HashSet<u32> = prog
-            .rules
-            .iter()
-            .flat_map(|r| r.head.iter().copied())
-            .collect();
-        prog.externals.retain(|(a, _)| !defined.contains(a));
+        if !prog.externals.is_empty() {
+            let mut defined = vec![false; prog.num_atoms as usize + 1];
+            for r in &prog.rules {
+                for &h in &r.head {
+                    defined[h as usize] = true;
+                }
+            }
+            prog.externals.retain(|&(a, _)| !defined[a as usize]);
+        }
         let mut tr;
         let mut step_guard = None;
         if config.incremental {
@@ -183,23 +191,17 @@ impl Solver {
         _old: &mut Translation,
         guard: &mut Option<Lit>,
     ) -> Translation {
-        // Build without completion by translating a program whose atoms are all free, then add
-        // guarded completion clauses.
+        // Build without completion by translating a program whose atoms are all free, then set
+        // the real external values and add guarded completion clauses (external statements
+        // with value false get a guarded completion too, so that a later step may define them).
         let mut open = prog.clone();
-        let mut extra = Vec::new();
-        for a in 1..=prog.num_atoms {
-            if !prog.externals.iter().any(|&(x, _)| x == a) {
-                open.externals
-                    .push((a, crate::ground::program::ExternalValue::Free));
-                extra.push(a);
-            }
-        }
+        open.externals = (1..=prog.num_atoms)
+            .map(|a| (a, crate::ground::program::ExternalValue::Free))
+            .collect();
         let mut tr = Translation::build(&open, engine);
+        tr.set_externals(prog);
         let g = engine.new_var().positive();
         engine.set_decidable(g.var(), false);
-        for &a in &extra {
-            tr.free[a as usize] = false;
-        }
         let mut out = tr;
         for a in 1..=prog.num_atoms as usize {
             if !out.free[a] {
@@ -247,7 +249,7 @@ impl Solver {
         for _ in old_n..new_n {
             let v = self.engine.new_var();
             self.tr.atom_lit.push(v.positive());
-            self.tr.supports.push(Vec::new());
+            self.tr.supports.push(Default::default());
             self.tr.free.push(false);
             self.is_cr.push(false);
         }
@@ -258,9 +260,21 @@ impl Solver {
             let r = r.clone();
             self.tr.add_rule(&mut self.engine, first + k, &r);
         }
+        // A rule for an external atom makes it an ordinary atom, defined by its rules (clingo:
+        // an atom is external until it is released or defined by a rule; `Solver::new` drops
+        // such external statements the same way).
+        let defined: HashSet<u32> = rules.iter().flat_map(|r| r.head.iter().copied()).collect();
+        let was_free: Vec<usize> = (1..=old_n as usize)
+            .filter(|&a| self.tr.free[a] && defined.contains(&(a as u32)))
+            .collect();
+        if !was_free.is_empty() {
+            self.prog.externals.retain(|(a, _)| !defined.contains(a));
+            self.tr.set_externals(&self.prog);
+        }
         match self.step_guard {
             None => {
-                for a in old_n as usize + 1..=new_n as usize {
+                let fresh = old_n as usize + 1..=new_n as usize;
+                for a in was_free.into_iter().chain(fresh) {
                     self.tr.complete(&mut self.engine, a);
                 }
             }
