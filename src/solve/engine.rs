@@ -1081,12 +1081,11 @@ impl Engine {
             Reason::Decision => {}
             Reason::Binary(l) => out.push(l),
             Reason::Long(cref) => {
-                for k in 0..self.clause_len(cref) {
-                    let l = self.clause_lit(cref, k);
-                    if l.var() != v {
-                        out.push(l);
-                    }
-                }
+                // The implied literal is at position 0 of its reason (module invariant).
+                let c = cref as usize;
+                let lits = &self.arena[c + HEADER..c + HEADER + self.arena[c] as usize];
+                debug_assert_eq!(Lit::from_code(lits[0]).var(), v);
+                out.extend(lits[1..].iter().map(|&x| Lit::from_code(x)));
             }
             Reason::Stored => out.extend(
                 self.stored[v.index()]
