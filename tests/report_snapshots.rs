@@ -198,3 +198,26 @@ fn statistics_when_asked_for() {
     assert_eq!(value["Stats"]["Core"]["Choices"], 3);
     assert_eq!(value["Stats"]["Lucent"]["Constraints"], 12);
 }
+
+#[test]
+fn first_model_and_unsat_times_come_from_the_result() {
+    // The solver's times (given here, not measured) reach clasp's `Time` line and the JSON
+    // `Time` object: 1st Model is the time to the first model, Unsat the time after the last.
+    let mut r = cr_result();
+    r.stats.time = Duration::from_millis(963);
+    r.stats.first_model = Some(Duration::from_millis(550));
+    r.stats.unsat = Duration::from_millis(410);
+    let rep = Report::new(&r, context());
+    let mut out = Vec::new();
+    write_text(&mut out, &rep, Quiet::default()).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert!(
+        text.contains("Time         : 0.963s (Solving: 0.96s 1st Model: 0.55s Unsat: 0.41s)"),
+        "{text}"
+    );
+    let mut out = Vec::new();
+    write_json(&mut out, &rep, Quiet::default()).unwrap();
+    let value: serde_json::Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(value["Time"]["Model"], 0.55);
+    assert_eq!(value["Time"]["Unsat"], 0.41);
+}

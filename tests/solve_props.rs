@@ -325,3 +325,58 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(200), ..ProptestConfig::default() })]
+
+    /// Three steps of loop programs or general ones (weight bodies with negative literals,
+    /// disjunctions, constraints): the guards of two earlier steps retire one after the other,
+    /// and each step is solved under assumptions before it is solved plainly.
+    #[test]
+    fn programs_in_three_steps_match_brute_force(
+        p in prop_oneof![loop_program_strategy(), program_strategy()],
+        cuts in (any::<prop::sample::Index>(), any::<prop::sample::Index>()),
+        assumed in prop::collection::vec((1u32..13, any::<bool>()), 0..2),
+    ) {
+        let n = p.rules.len();
+        let (mut a, mut b) = (cuts.0.index(n + 1), cuts.1.index(n + 1));
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        let assumptions: Vec<i32> = assumed
+            .into_iter()
+            .filter(|&(x, _)| x <= p.num_atoms)
+            .map(|(x, pos)| if pos { x as i32 } else { -(x as i32) })
+            .collect();
+        let mut first = p.clone();
+        first.rules.truncate(a);
+        let cfg = Config { models: 0, opt_mode: OptMode::Ignore, incremental: true, ..Config::default() };
+        let mut s = Solver::new(&first, cfg);
+        for (step, end) in [(1, a), (2, b), (3, n)] {
+            if step == 2 {
+                s.add_rules(&p.rules[a..b]).unwrap();
+            } else if step == 3 {
+                s.add_rules(&p.rules[b..]).unwrap();
+            }
+            let mut prog = p.clone();
+            prog.rules.truncate(end);
+            let all = brute_atoms(&prog, BruteConfig { optimize: false, ..BruteConfig::default() });
+            let r = s.solve_with(&assumptions);
+            prop_assert!(r.exhausted);
+            let mut got: Vec<Vec<u32>> = r.models.iter().map(|m| m.atoms.clone()).collect();
+            got.sort();
+            let want: Vec<Vec<u32>> = all
+                .iter()
+                .filter(|(m, _)| assumptions.iter().all(|&l| holds(m, l)))
+                .map(|(m, _)| m.clone())
+                .collect();
+            prop_assert_eq!(got, want, "step {} under {:?}", step, assumptions);
+            let r = s.solve();
+            prop_assert!(r.exhausted);
+            let mut got: Vec<Vec<u32>> = r.models.iter().map(|m| m.atoms.clone()).collect();
+            got.sort();
+            let want: Vec<Vec<u32>> = all.into_iter().map(|(m, _)| m).collect();
+            prop_assert_eq!(got, want, "step {}", step);
+        }
+    }
+}

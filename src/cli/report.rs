@@ -229,8 +229,8 @@ impl Report {
             times: Times {
                 total: secs,
                 solve: secs,
-                first_model: 0.0,
-                unsat: 0.0,
+                first_model: result.stats.first_model.map_or(0.0, |t| t.as_secs_f64()),
+                unsat: result.stats.unsat.as_secs_f64(),
                 cpu: secs,
             },
             stats: None,

@@ -82,6 +82,13 @@ pub struct Stats {
     pub clauses: u64,
     /// Wall-clock time of the call.
     pub time: Duration,
+    /// Wall-clock time from the start of the call to the first reported model, if any (clasp's
+    /// `1st Model`).
+    pub first_model: Option<Duration>,
+    /// Wall-clock time from the last reported model (or the start of the call, without one) to
+    /// the end of the call when the search space was exhausted, zero otherwise: the time spent
+    /// proving that nothing (better) is left (clasp's `Unsat`).
+    pub unsat: Duration,
 }
 
 /// Everything one call of the solver answers.

@@ -96,6 +96,22 @@ struct Call<'a> {
     has_costs: bool,
     /// Set when everything was explored.
     exhausted: bool,
+    /// When the call started.
+    start: Instant,
+    /// Time from `start` to the first reported model.
+    first_model: Option<std::time::Duration>,
+    /// When the last model was reported.
+    last_model: Option<Instant>,
+}
+
+impl Call<'_> {
+    /// Counts a reported model and notes its time.
+    fn note_model(&mut self) {
+        self.count += 1;
+        let now = Instant::now();
+        self.first_model.get_or_insert(now - self.start);
+        self.last_model = Some(now);
+    }
 }
 
 impl Solver {
@@ -349,6 +365,9 @@ impl Solver {
             optimum: false,
             has_costs: false,
             exhausted: false,
+            start,
+            first_model: None,
+            last_model: None,
         };
         if self.cr_lits.is_empty() {
             self.run_main(&mut call, &assume, call_guard);
@@ -395,6 +414,12 @@ impl Solver {
                 vars: self.engine.num_vars() as u64,
                 clauses: self.engine.num_clauses,
                 time: start.elapsed(),
+                first_model: call.first_model,
+                unsat: if call.exhausted && !call.stopped {
+                    call.last_model.unwrap_or(start).elapsed()
+                } else {
+                    std::time::Duration::ZERO
+                },
             },
         }
     }
@@ -712,7 +737,7 @@ impl Solver {
                 return true;
             }
         }
-        call.count += 1;
+        call.note_model();
         call.phase_count += 1;
         m.number = call.phase_count;
         if !m.costs.is_empty() {
@@ -1015,7 +1040,7 @@ impl Solver {
                             m.symbols.push(o.symbol.clone());
                         }
                     }
-                    call.count += 1;
+                    call.note_model();
                     if !(call.sink)(&m) {
                         call.done = true;
                         break;
