@@ -487,3 +487,50 @@ fn incremental_step_makes_a_program_non_head_cycle_free() {
     got.sort();
     assert_eq!(got, vec![vec![], vec![2, 3]]);
 }
+
+#[test]
+fn a_rule_for_an_external_atom_makes_it_ordinary() {
+    // #external a. {b}.  Answer sets {}, {a}, {b}, {a, b} (a is free).  Then add a :- b.
+    // As clingo says, an atom is external until it is released or defined by a rule: a is now
+    // defined by a :- b only, so the answer sets are {} and {a, b}, as for the whole program
+    // given at once (where the external statement on a defined atom is ignored, as clasp
+    // does). With `#external a. [true]` the same holds: a is no longer assumed.
+    for value in [ExternalValue::Free, ExternalValue::True] {
+        for incremental in [false, true] {
+            let mut p = program(2, vec![Rule::choice(&[2], &[])]);
+            p.externals = vec![(1, value)];
+            let cfg = Config {
+                models: 0,
+                incremental,
+                ..Config::default()
+            };
+            let mut s = Solver::new(&p, cfg);
+            s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
+            let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+            got.sort();
+            assert_eq!(got, vec![vec![], vec![1, 2]], "{value:?}, {incremental}");
+        }
+    }
+}
+
+#[test]
+fn a_later_step_may_define_an_external_atom_that_was_false() {
+    // #external a. [false]  {b}.  Answer sets {} and {b}.  Then (incremental) add a :- b.
+    // Answer sets {} and {a, b}: a false external is still an external, so a rule may define
+    // it later (an unguarded completion clause made a false for good).
+    let mut p = program(2, vec![Rule::choice(&[2], &[])]);
+    p.externals = vec![(1, ExternalValue::False)];
+    let cfg = Config {
+        models: 0,
+        incremental: true,
+        ..Config::default()
+    };
+    let mut s = Solver::new(&p, cfg);
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![2]]);
+    s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    assert_eq!(got, vec![vec![], vec![1, 2]]);
+}

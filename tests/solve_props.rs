@@ -3,7 +3,9 @@
 //! statements and CR rules. Every model the solver reports must also pass the independent
 //! stable-model checker.
 
-use lucent::ground::program::{Body, CrRule, GroundProgram, HeadKind, Minimize, Prefer, Rule};
+use lucent::ground::program::{
+    Body, CrRule, ExternalValue, GroundProgram, HeadKind, Minimize, Prefer, Rule,
+};
 use lucent::solve::brute::{self, BruteConfig};
 use lucent::solve::check;
 use lucent::solve::{Config, CrMode, OptMode, Solver};
@@ -330,14 +332,23 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: cases(200), ..ProptestConfig::default() })]
 
     /// Three steps of loop programs or general ones (weight bodies with negative literals,
-    /// disjunctions, constraints): the guards of two earlier steps retire one after the other,
-    /// and each step is solved under assumptions before it is solved plainly.
+    /// disjunctions, constraints) with a few external statements: the guards of two earlier
+    /// steps retire one after the other, a rule added for an external atom makes it an
+    /// ordinary atom (as `check::external_values` reads the whole program), and each step is
+    /// solved under assumptions before it is solved plainly.
     #[test]
     fn programs_in_three_steps_match_brute_force(
         p in prop_oneof![loop_program_strategy(), program_strategy()],
         cuts in (any::<prop::sample::Index>(), any::<prop::sample::Index>()),
         assumed in prop::collection::vec((1u32..13, any::<bool>()), 0..2),
+        externals in prop::collection::vec((1u32..13, 0u8..4), 0..3),
     ) {
+        let mut p = p;
+        p.externals = externals
+            .into_iter()
+            .filter(|&(x, _)| x <= p.num_atoms)
+            .map(|(x, v)| (x, [ExternalValue::Free, ExternalValue::True, ExternalValue::False, ExternalValue::Release][v as usize]))
+            .collect();
         let n = p.rules.len();
         let (mut a, mut b) = (cuts.0.index(n + 1), cuts.1.index(n + 1));
         if a > b {

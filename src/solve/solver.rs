@@ -186,23 +186,17 @@ impl Solver {
         _old: &mut Translation,
         guard: &mut Option<Lit>,
     ) -> Translation {
-        // Build without completion by translating a program whose atoms are all free, then add
-        // guarded completion clauses.
+        // Build without completion by translating a program whose atoms are all free, then set
+        // the real external values and add guarded completion clauses (external statements
+        // with value false get a guarded completion too, so that a later step may define them).
         let mut open = prog.clone();
-        let mut extra = Vec::new();
-        for a in 1..=prog.num_atoms {
-            if !prog.externals.iter().any(|&(x, _)| x == a) {
-                open.externals
-                    .push((a, crate::ground::program::ExternalValue::Free));
-                extra.push(a);
-            }
-        }
+        open.externals = (1..=prog.num_atoms)
+            .map(|a| (a, crate::ground::program::ExternalValue::Free))
+            .collect();
         let mut tr = Translation::build(&open, engine);
+        tr.set_externals(prog);
         let g = engine.new_var().positive();
         engine.set_decidable(g.var(), false);
-        for &a in &extra {
-            tr.free[a as usize] = false;
-        }
         let mut out = tr;
         for a in 1..=prog.num_atoms as usize {
             if !out.free[a] {
@@ -261,9 +255,21 @@ impl Solver {
             let r = r.clone();
             self.tr.add_rule(&mut self.engine, first + k, &r);
         }
+        // A rule for an external atom makes it an ordinary atom, defined by its rules (clingo:
+        // an atom is external until it is released or defined by a rule; `Solver::new` drops
+        // such external statements the same way).
+        let defined: HashSet<u32> = rules.iter().flat_map(|r| r.head.iter().copied()).collect();
+        let was_free: Vec<usize> = (1..=old_n as usize)
+            .filter(|&a| self.tr.free[a] && defined.contains(&(a as u32)))
+            .collect();
+        if !was_free.is_empty() {
+            self.prog.externals.retain(|(a, _)| !defined.contains(a));
+            self.tr.set_externals(&self.prog);
+        }
         match self.step_guard {
             None => {
-                for a in old_n as usize + 1..=new_n as usize {
+                let fresh = old_n as usize + 1..=new_n as usize;
+                for a in was_free.into_iter().chain(fresh) {
                     self.tr.complete(&mut self.engine, a);
                 }
             }

@@ -163,25 +163,12 @@ impl Translation {
         }
         t.supports = vec![Vec::new(); n + 1];
         t.free = vec![false; n + 1];
-        for &(a, v) in &p.externals {
-            match v {
-                ExternalValue::Free => t.free[a as usize] = true,
-                ExternalValue::True => {
-                    t.free[a as usize] = true;
-                    t.assumptions.push(t.atom_lit[a as usize]);
-                }
-                ExternalValue::False | ExternalValue::Release => t.free[a as usize] = false,
-            }
-        }
+        t.set_externals(p);
         for (i, r) in p.rules.iter().enumerate() {
             t.add_rule(e, i, r);
         }
         for a in 1..=n {
             t.complete(e, a);
-        }
-        for &l in &p.assumptions {
-            let x = t.lit(l);
-            t.assumptions.push(x);
         }
         for o in &p.outputs {
             let lits: Vec<Lit> = o.condition.iter().map(|&l| t.lit(l)).collect();
@@ -202,6 +189,37 @@ impl Translation {
         }
         t.install_unfounded(p, e);
         t
+    }
+
+    /// Sets `free` and `assumptions` from the external statements and assumptions of `p`: the
+    /// last statement on an atom gives its value (as `check::external_values`), free and true
+    /// externals are free, true ones assumed; every other atom is not free. The caller drops
+    /// external statements on atoms that have rules (they are ordinary atoms then).
+    pub fn set_externals(&mut self, p: &GroundProgram) {
+        self.free.iter_mut().for_each(|f| *f = false);
+        self.assumptions.clear();
+        let mut last: HashMap<u32, ExternalValue> = HashMap::new();
+        for &(a, v) in &p.externals {
+            last.insert(a, v);
+        }
+        let mut assumed = hashbrown::HashSet::new();
+        for &(a, _) in &p.externals {
+            let v = last[&a];
+            match v {
+                ExternalValue::Free => self.free[a as usize] = true,
+                ExternalValue::True => {
+                    self.free[a as usize] = true;
+                    if assumed.insert(a) {
+                        self.assumptions.push(self.atom_lit[a as usize]);
+                    }
+                }
+                ExternalValue::False | ExternalValue::Release => {}
+            }
+        }
+        for &l in &p.assumptions {
+            let x = self.lit(l);
+            self.assumptions.push(x);
+        }
     }
 
     /// Adds the clauses of one rule (its body, its head clause and its supports).
