@@ -346,9 +346,14 @@ fn random_programs_agree_with_gringo_clasp_and_clingo() {
         let workers: Vec<_> = (0..2)
             .map(|w| {
                 let files = &files;
+                let reference = &reference;
                 scope.spawn(move || {
+                    // Programs with too many answer sets for the reference are not compared,
+                    // so not run either: their outputs (millions of answer sets, kept as
+                    // strings) took 23 GB in a soak of seeds 40000.. and the OOM killer ended it.
                     (w..files.len())
                         .step_by(2)
+                        .filter(|&i| reference[i].is_some())
                         .map(|i| {
                             let f = &files[i];
                             (
