@@ -103,6 +103,8 @@ fn main() -> ExitCode {
             return ExitCode::from(65);
         }
     };
+    // The text is not needed once read; free it before the solver is built.
+    drop(bytes);
     let optimizing = !program.minimize.is_empty() && config.opt_mode != OptMode::Ignore;
     config.models = models.unwrap_or(if optimizing || config.enum_mode != EnumMode::Auto {
         0
@@ -110,7 +112,7 @@ fn main() -> ExitCode {
         1
     });
     let threads = config.threads;
-    let mut solver = Solver::new(&program, config);
+    let mut solver = Solver::from_program(program, config);
     let mut count = 0;
     let mut last_costs: Vec<i64> = Vec::new();
     let mut print = |m: &lucent::solve::Model| {

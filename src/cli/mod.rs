@@ -278,18 +278,20 @@ fn solve_config(
     }
 }
 
-/// Solves `program` and prints the result as clingo does; returns the exit code.
+/// Solves `program` and prints the result as clingo does; returns the exit code. The solver
+/// takes the program (no copy is kept beside it unless `--check` needs the original).
 fn solve_and_report(
     options: &Options,
     io: &mut Io,
-    program: &GroundProgram,
+    program: GroundProgram,
     inputs: Vec<String>,
     start: Instant,
     deadline: Option<Instant>,
 ) -> std::io::Result<i32> {
-    let config = solve_config(options, program, deadline);
-    let context = report::Context::for_program(program, &config, inputs);
-    let mut solver = solve::Solver::new(program, config);
+    let config = solve_config(options, &program, deadline);
+    let context = report::Context::for_program(&program, &config, inputs);
+    let original = options.check.then(|| program.clone());
+    let mut solver = solve::Solver::from_program(program, config);
     let result = solver.solve();
     let mut rep = report::Report::new(&result, context);
     rep.times.total = start.elapsed().as_secs_f64();
@@ -302,7 +304,7 @@ fn solve_and_report(
         options::OutputFormat::Text => report::write_text(io.out, &rep, quiet)?,
         options::OutputFormat::Json => report::write_json(io.out, &rep, quiet)?,
     }
-    if options.check {
+    if let Some(program) = &original {
         for model in &result.models {
             if let Err(why) = solve::check::check(program, &model.atoms) {
                 writeln!(
@@ -392,14 +394,14 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
             }
             Ok(0)
         }
-        _ => solve_and_report(
-            options,
-            io,
-            &grounding.program,
-            parsed.names,
-            start,
-            deadline,
-        ),
+        _ => {
+            // Only the ground program is needed from here on: free the parse tree and the
+            // grounder's tables before the solver is built.
+            let ground_program = std::mem::take(&mut grounding.program);
+            drop(grounding);
+            drop(program);
+            solve_and_report(options, io, ground_program, parsed.names, start, deadline)
+        }
     }
 }
 
@@ -444,11 +446,13 @@ fn run_clasp_mode(
             return Ok(EXIT_INPUT);
         }
     };
+    // The text is not needed once read; free it before the solver is built.
+    drop(bytes);
     // The solver's per-atom arrays are sized by the largest atom; renumbering sparse atoms
     // keeps memory proportional to the atoms used (what is shown comes from output symbols,
     // so the numbers are not visible).
     program.compact_atoms();
-    solve_and_report(options, io, &program, names, start, deadline)
+    solve_and_report(options, io, program, names, start, deadline)
 }
 
 #[cfg(test)]

@@ -358,6 +358,26 @@ impl Engine {
         self.learnts.len()
     }
 
+    /// Reserves room for `additional` more variables in every per-variable (and per-literal)
+    /// vector, so that translating a large program grows each vector once: grown by doubling,
+    /// the abandoned smaller copies stay in the allocator's heap and count in the peak memory.
+    pub fn reserve_vars(&mut self, additional: usize) {
+        self.values.reserve(2 * additional);
+        self.level.reserve(additional);
+        self.reason.reserve(additional);
+        self.stored.reserve(additional);
+        self.phase.reserve(additional);
+        self.activity.reserve(additional);
+        self.heap_pos.reserve(additional);
+        self.decidable.reserve(additional);
+        self.seen.reserve(additional);
+        self.weight_watch.reserve(additional);
+        self.weighted.reserve(additional);
+        self.uf_relevant.reserve(additional);
+        self.watches.reserve(2 * additional);
+        self.heap.reserve(additional);
+    }
+
     /// Creates a new variable, decidable by default.
     pub fn new_var(&mut self) -> Var {
         let v = Var::new(self.level.len());

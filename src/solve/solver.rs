@@ -115,8 +115,14 @@ impl Call<'_> {
 }
 
 impl Solver {
-    /// Translates `prog` and prepares a solver.
+    /// Translates `prog` and prepares a solver (on a copy of `prog`; `from_program` takes the
+    /// program instead, which saves the copy when the caller no longer needs it).
     pub fn new(prog: &GroundProgram, config: Config) -> Solver {
+        Solver::from_program(prog.clone(), config)
+    }
+
+    /// Translates `prog`, which the solver keeps, and prepares a solver.
+    pub fn from_program(mut prog: GroundProgram, config: Config) -> Solver {
         let mut engine = Engine::new();
         engine.configure(config.var_decay, config.seed);
         engine.random_permille = config.random_freq_permille.min(1000);
@@ -138,16 +144,18 @@ impl Solver {
             },
             RestartPolicy::Never => Restarts::Never,
         };
-        let mut prog = prog.clone();
         prog.num_atoms = max_atom(&prog);
         // As clasp (and `check::external_values`): an external statement on an atom that has
         // a rule in the same program is ignored; the rules define the atom.
-        let defined: std::collections::HashSet<u32> = prog
-            .rules
-            .iter()
-            .flat_map(|r| r.head.iter().copied())
-            .collect();
-        prog.externals.retain(|(a, _)| !defined.contains(a));
+        if !prog.externals.is_empty() {
+            let mut defined = vec![false; prog.num_atoms as usize + 1];
+            for r in &prog.rules {
+                for &h in &r.head {
+                    defined[h as usize] = true;
+                }
+            }
+            prog.externals.retain(|&(a, _)| !defined[a as usize]);
+        }
         let mut tr;
         let mut step_guard = None;
         if config.incremental {
@@ -244,7 +252,7 @@ impl Solver {
         for _ in old_n..new_n {
             let v = self.engine.new_var();
             self.tr.atom_lit.push(v.positive());
-            self.tr.supports.push(Vec::new());
+            self.tr.supports.push(Default::default());
             self.tr.free.push(false);
             self.is_cr.push(false);
         }

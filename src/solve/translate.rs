@@ -20,7 +20,13 @@ use super::engine::Engine;
 use super::lit::Lit;
 use super::unfounded::{Support, SupportBody, Unfounded};
 use crate::ground::program::{Body, ExternalValue, GroundProgram, HeadKind, Rule};
-use hashbrown::HashMap;
+use hashbrown::{DefaultHashBuilder, HashMap, HashTable};
+use smallvec::SmallVec;
+use std::hash::BuildHasher;
+
+/// The supports of one atom as (support literal, rule index); most atoms have one or two, held
+/// inline without a heap allocation.
+pub type AtomSupports = SmallVec<[(Lit, u32); 2]>;
 
 /// The link between a ground program and the engine's variables.
 #[derive(Clone, Debug, Default)]
@@ -28,7 +34,7 @@ pub struct Translation {
     /// Per atom (index 0: constant true): its literal.
     pub atom_lit: Vec<Lit>,
     /// Per atom: supports as (support literal, rule index).
-    pub supports: Vec<Vec<(Lit, usize)>>,
+    pub supports: Vec<AtomSupports>,
     /// Per rule: the literal of its body.
     pub rule_body: Vec<Lit>,
     /// Per atom: free (an external that is not false), so no completion clause.
@@ -43,8 +49,14 @@ pub struct Translation {
     pub non_hcf: bool,
     /// Guard of the current incremental step, attached to loop nogoods (see `unfounded`).
     pub loop_guard: Option<Lit>,
-    /// Conjunctions already given a literal, keyed by sorted literal codes.
-    conj: HashMap<Vec<u32>, Lit>,
+    /// Conjunctions already given a literal: (start, length, literal), the key (sorted literal
+    /// codes) being `conj_keys[start..start + length]`. One flat key array instead of a `Vec`
+    /// per key keeps a body at 12 bytes in the table plus its codes.
+    conj: HashTable<(u32, u32, Lit)>,
+    /// The keys of `conj`, one after another.
+    conj_keys: Vec<u32>,
+    /// Hasher of the keys of `conj`.
+    conj_hasher: DefaultHashBuilder,
     /// Weight bodies already given a literal, keyed by bound and sorted (code, weight) pairs.
     weights: HashMap<(i64, Vec<(u32, i64)>), Lit>,
 }
@@ -101,6 +113,16 @@ impl Translation {
 
     /// A literal equivalent to the conjunction of `lits`.
     pub fn conjunction(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
+        self.conjunction_as(e, lits, true)
+    }
+
+    /// The literal of the conjunction of `lits`, where `to_lits` says whether the clauses
+    /// `b -> l` are needed. Without them the literal only follows from its literals
+    /// (`l1 and .. and lk -> b`), which is all an integrity constraint needs: its body literal is
+    /// made false at once, so `b -> l` would be satisfied at level 0 from then on (and dropped by
+    /// the engine's level-0 simplification before the search; the search is the same either
+    /// way), and a later rule with the same body shares the false literal.
+    fn conjunction_as(&mut self, e: &mut Engine, lits: &[Lit], to_lits: bool) -> Lit {
         let mut key: Vec<u32> = lits.iter().map(|l| l.code() as u32).collect();
         key.sort_unstable();
         key.dedup();
@@ -110,26 +132,41 @@ impl Translation {
         if key.len() == 1 {
             return Lit::from_code(key[0]);
         }
-        if let Some(&b) = self.conj.get(&key) {
+        let hash = self.conj_hasher.hash_one(&key[..]);
+        let keys = &self.conj_keys;
+        let same = |&(start, len, _): &(u32, u32, Lit)| {
+            keys[start as usize..(start + len) as usize] == key[..]
+        };
+        if let Some(&(_, _, b)) = self.conj.find(hash, same) {
             return b;
         }
         let b = e.new_body_var().positive();
         let mut big = vec![b];
         for &c in &key {
             let l = Lit::from_code(c);
-            e.add_clause(&[!b, l]);
+            if to_lits {
+                e.add_clause(&[!b, l]);
+            }
             big.push(!l);
         }
         e.add_clause(&big);
-        self.conj.insert(key, b);
+        let start = self.conj_keys.len() as u32;
+        self.conj_keys.extend_from_slice(&key);
+        let (keys, hasher) = (&self.conj_keys, &self.conj_hasher);
+        self.conj
+            .insert_unique(hash, (start, key.len() as u32, b), |&(s, n, _)| {
+                hasher.hash_one(&keys[s as usize..(s + n) as usize])
+            });
         b
     }
 
-    fn body_lit(&mut self, e: &mut Engine, body: &Body) -> Lit {
+    /// The literal of a rule body; `constraint` when the rule is an integrity constraint (its
+    /// body literal is made false right after).
+    fn body_lit(&mut self, e: &mut Engine, body: &Body, constraint: bool) -> Lit {
         match body {
             Body::Normal(ls) => {
                 let lits: Vec<Lit> = ls.iter().map(|&l| self.lit(l)).collect();
-                self.conjunction(e, &lits)
+                self.conjunction_as(e, &lits, !constraint)
             }
             Body::Weight { lower, lits } => {
                 let mut key: Vec<(u32, i64)> = lits
@@ -154,6 +191,9 @@ impl Translation {
     pub fn build(p: &GroundProgram, e: &mut Engine) -> Translation {
         let n = max_atom(p) as usize;
         let mut t = Translation::default();
+        // One variable per atom and, at most, about one per rule body (shifted disjunctions
+        // and output conditions may add a few more).
+        e.reserve_vars(n + 1 + p.rules.len());
         let truth = e.new_var();
         e.add_clause(&[truth.positive()]);
         t.atom_lit.push(truth.positive());
@@ -161,7 +201,7 @@ impl Translation {
             let v = e.new_var();
             t.atom_lit.push(v.positive());
         }
-        t.supports = vec![Vec::new(); n + 1];
+        t.supports = vec![AtomSupports::new(); n + 1];
         t.free = vec![false; n + 1];
         t.set_externals(p);
         for (i, r) in p.rules.iter().enumerate() {
@@ -224,7 +264,8 @@ impl Translation {
 
     /// Adds the clauses of one rule (its body, its head clause and its supports).
     pub fn add_rule(&mut self, e: &mut Engine, index: usize, r: &Rule) {
-        let b = self.body_lit(e, &r.body);
+        let constraint = r.head_kind == HeadKind::Disjunction && r.head.is_empty();
+        let b = self.body_lit(e, &r.body, constraint);
         self.rule_body.push(b);
         debug_assert_eq!(self.rule_body.len(), index + 1);
         let mut head: Vec<u32> = r.head.clone();
@@ -233,7 +274,7 @@ impl Translation {
         match r.head_kind {
             HeadKind::Choice => {
                 for &h in &head {
-                    self.supports[h as usize].push((b, index));
+                    self.supports[h as usize].push((b, index as u32));
                 }
             }
             HeadKind::Disjunction => {
@@ -241,7 +282,7 @@ impl Translation {
                 c.extend(head.iter().map(|&h| self.atom_lit[h as usize]));
                 e.add_clause(&c);
                 if head.len() == 1 {
-                    self.supports[head[0] as usize].push((b, index));
+                    self.supports[head[0] as usize].push((b, index as u32));
                 } else {
                     for &h in &head {
                         let mut conj = vec![b];
@@ -251,7 +292,7 @@ impl Translation {
                                 .map(|&o| !self.atom_lit[o as usize]),
                         );
                         let s = self.conjunction(e, &conj);
-                        self.supports[h as usize].push((s, index));
+                        self.supports[h as usize].push((s, index as u32));
                     }
                 }
             }
@@ -325,6 +366,7 @@ impl Translation {
                 continue;
             }
             for &(s, ri) in &self.supports[a] {
+                let ri = ri as usize;
                 let r = &p.rules[ri];
                 // Non-HCF programs use the rule body as support (see the module comment).
                 let lit = if self.non_hcf { self.rule_body[ri] } else { s };
