@@ -104,6 +104,9 @@ fn prefetch<T>(p: *const T) {
     let _ = p;
 }
 
+/// How many trail positions ahead of the propagation queue head watch lists are prefetched.
+const PREFETCH_AHEAD: usize = 4;
+
 /// Answer of a search.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SearchResult {
@@ -182,6 +185,8 @@ pub struct Engine {
     trail_lim: Vec<usize>,
     /// Next trail position to propagate.
     qhead: usize,
+    /// Trail position up to which watch lists were prefetched (may lag behind `qhead`).
+    pf_head: usize,
     /// Binary heap of decision candidates ordered by activity.
     heap: Vec<Var>,
     /// Activity increment.
@@ -300,6 +305,7 @@ impl Engine {
             trail: Vec::new(),
             trail_lim: Vec::new(),
             qhead: 0,
+            pf_head: 0,
             heap: Vec::new(),
             var_inc: 1.0,
             var_decay: 0.95,
@@ -536,6 +542,7 @@ impl Engine {
         self.trail.truncate(start);
         self.trail_lim.truncate(level as usize);
         self.qhead = self.trail.len();
+        self.pf_head = self.qhead;
         self.uf_clean_upto = self.uf_clean_upto.min(self.trail.len());
     }
 
@@ -835,11 +842,15 @@ impl Engine {
             let p = self.trail[self.qhead];
             self.qhead += 1;
             self.propagations += 1;
-            if let Some(&q) = self.trail.get(self.qhead) {
-                // The next literal's watch list: its header was prefetched when it was
-                // assigned; now start loading the list itself.
-                prefetch(self.watches[(!q).code()].as_ptr());
+            // The watch lists of the next few literals: their headers were prefetched when
+            // they were assigned; now start loading the lists themselves.
+            let end = self.trail.len().min(self.qhead + PREFETCH_AHEAD);
+            let mut k = self.pf_head.max(self.qhead);
+            while k < end {
+                prefetch(self.watches[(!self.trail[k]).code()].as_ptr());
+                k += 1;
             }
+            self.pf_head = k;
             if !self.weighted[p.var().index()] {
                 if self.propagate_clauses(p) {
                     return true;
@@ -1106,12 +1117,11 @@ impl Engine {
             Reason::Decision => {}
             Reason::Binary(l) => out.push(l),
             Reason::Long(cref) => {
-                for k in 0..self.clause_len(cref) {
-                    let l = self.clause_lit(cref, k);
-                    if l.var() != v {
-                        out.push(l);
-                    }
-                }
+                // The implied literal is at position 0 of its reason (module invariant).
+                let c = cref as usize;
+                let lits = &self.arena[c + HEADER..c + HEADER + self.arena[c] as usize];
+                debug_assert_eq!(Lit::from_code(lits[0]).var(), v);
+                out.extend(lits[1..].iter().map(|&x| Lit::from_code(x)));
             }
             Reason::Stored => out.extend(
                 self.stored[v.index()]
