@@ -132,9 +132,7 @@ impl Translation {
     /// the engine's level-0 simplification before the search; the search is the same either
     /// way), and a later rule with the same body shares the false literal.
     fn conjunction_as(&mut self, e: &mut Engine, lits: &[Lit], to_lits: bool) -> Lit {
-        let mut key: Vec<u32> = lits.iter().map(|l| l.code() as u32).collect();
-        key.sort_unstable();
-        key.dedup();
+        let key = conj_key(lits);
         if key.is_empty() {
             return self.true_lit();
         }
@@ -142,14 +140,27 @@ impl Translation {
             return Lit::from_code(key[0]);
         }
         let hash = self.conj_hasher.hash_one(&key[..]);
-        let keys = &self.conj_keys;
-        let same = |&(start, len, _): &(u32, u32, Lit)| {
-            keys[start as usize..(start + len) as usize] == key[..]
-        };
-        if let Some(&(_, _, b)) = self.conj.find(hash, same) {
+        if let Some(b) = self.find_conj(hash, &key) {
             return b;
         }
         let b = e.new_body_var().positive();
+        self.insert_conj(e, key, hash, b, to_lits);
+        b
+    }
+
+    /// The literal already standing for the conjunction `key` (sorted codes), if any.
+    fn find_conj(&self, hash: u64, key: &[u32]) -> Option<Lit> {
+        let keys = &self.conj_keys;
+        self.conj
+            .find(hash, |&(start, len, _)| {
+                keys[start as usize..(start + len) as usize] == *key
+            })
+            .map(|&(_, _, b)| b)
+    }
+
+    /// Makes `b` stand for the conjunction `key` (sorted codes, at least two, hashed to `hash`):
+    /// the clause `key -> b`, the clauses `b -> l` when `to_lits`, and the table entry.
+    fn insert_conj(&mut self, e: &mut Engine, key: Vec<u32>, hash: u64, b: Lit, to_lits: bool) {
         let mut big = vec![b];
         for &c in &key {
             let l = Lit::from_code(c);
@@ -166,7 +177,6 @@ impl Translation {
             .insert_unique(hash, (start, key.len() as u32, b), |&(s, n, _)| {
                 hasher.hash_one(&keys[s as usize..(s + n) as usize])
             });
-        b
     }
 
     /// The literal of a rule body; `constraint` when the rule is an integrity constraint (its
@@ -286,34 +296,14 @@ impl Translation {
     /// literal, or mentions `x`'s variable; then nothing happens and the rule clauses keep the
     /// equivalence.
     fn define_conjunction(&mut self, e: &mut Engine, lits: &[Lit], x: Lit) {
-        let mut key: Vec<u32> = lits.iter().map(|l| l.code() as u32).collect();
-        key.sort_unstable();
-        key.dedup();
+        let key = conj_key(lits);
         if key.len() < 2 || key.iter().any(|&c| Lit::from_code(c).var() == x.var()) {
             return;
         }
         let hash = self.conj_hasher.hash_one(&key[..]);
-        let keys = &self.conj_keys;
-        let same = |&(start, len, _): &(u32, u32, Lit)| {
-            keys[start as usize..(start + len) as usize] == key[..]
-        };
-        if self.conj.find(hash, same).is_some() {
-            return;
+        if self.find_conj(hash, &key).is_none() {
+            self.insert_conj(e, key, hash, x, true);
         }
-        let mut big = vec![x];
-        for &c in &key {
-            let l = Lit::from_code(c);
-            e.add_clause(&[!x, l]);
-            big.push(!l);
-        }
-        e.add_clause(&big);
-        let start = self.conj_keys.len() as u32;
-        self.conj_keys.extend_from_slice(&key);
-        let (keys, hasher) = (&self.conj_keys, &self.conj_hasher);
-        self.conj
-            .insert_unique(hash, (start, key.len() as u32, x), |&(s, n, _)| {
-                hasher.hash_one(&keys[s as usize..(s + n) as usize])
-            });
     }
 
     /// Sets `free` and `assumptions` from the external statements and assumptions of `p`: the
@@ -618,6 +608,14 @@ fn positive_edges(p: &GroundProgram, n: usize) -> Vec<Vec<u32>> {
         }
     }
     edges
+}
+
+/// The key of a conjunction: its literal codes, sorted, without repeats.
+fn conj_key(lits: &[Lit]) -> Vec<u32> {
+    let mut key: Vec<u32> = lits.iter().map(|l| l.code() as u32).collect();
+    key.sort_unstable();
+    key.dedup();
+    key
 }
 
 /// Tarjan's strongly connected components, iteratively; returns the component of each node.
