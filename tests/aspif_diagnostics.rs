@@ -7,19 +7,8 @@ use std::process::{Command, Stdio};
 
 /// Runs `lucent --mode=clasp` on `input` from standard input; returns (exit code, stderr).
 fn clasp_mode(input: &[u8]) -> (i32, String) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_lucent"))
-        .args(["--mode=clasp", "-n0"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    child.stdin.take().unwrap().write_all(input).unwrap();
-    let out = child.wait_with_output().unwrap();
-    (
-        out.status.code().expect("exited, not killed by a signal"),
-        String::from_utf8(out.stderr).unwrap(),
-    )
+    let (code, _, err) = clasp_mode_out(input, &["-n0"]);
+    (code, err)
 }
 
 fn diagnostic(input: &[u8]) -> String {

@@ -40,6 +40,13 @@ fn answer_sets(p: &GroundProgram, config: Config) -> Vec<Vec<String>> {
     v
 }
 
+/// Solves and returns the atoms of every answer set, sorted.
+fn atom_sets(s: &mut Solver) -> Vec<Vec<u32>> {
+    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
+    got.sort();
+    got
+}
+
 fn sets(x: &[&[&str]]) -> Vec<Vec<String>> {
     let mut v: Vec<Vec<String>> = x
         .iter()
@@ -357,13 +364,9 @@ fn incremental_rules_give_a_loop_an_external_support() {
         ..Config::default()
     };
     let mut s = Solver::new(&p, cfg);
-    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
-    got.sort();
-    assert_eq!(got, vec![vec![], vec![3]]);
+    assert_eq!(atom_sets(&mut s), vec![vec![], vec![3]]);
     s.add_rules(&[Rule::normal(&[1], &[3])]).unwrap();
-    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
-    got.sort();
-    assert_eq!(got, vec![vec![], vec![1, 2, 3]]);
+    assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2, 3]]);
 }
 
 #[test]
@@ -479,13 +482,9 @@ fn incremental_step_makes_a_program_non_head_cycle_free() {
         ..Config::default()
     };
     let mut s = Solver::new(&p, cfg);
-    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
-    got.sort();
-    assert_eq!(got, vec![vec![], vec![2]]);
+    assert_eq!(atom_sets(&mut s), vec![vec![], vec![2]]);
     s.add_rules(&rules[4..]).unwrap();
-    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
-    got.sort();
-    assert_eq!(got, vec![vec![], vec![2, 3]]);
+    assert_eq!(atom_sets(&mut s), vec![vec![], vec![2, 3]]);
 }
 
 #[test]
@@ -506,9 +505,11 @@ fn a_rule_for_an_external_atom_makes_it_ordinary() {
             };
             let mut s = Solver::new(&p, cfg);
             s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
-            let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
-            got.sort();
-            assert_eq!(got, vec![vec![], vec![1, 2]], "{value:?}, {incremental}");
+            assert_eq!(
+                atom_sets(&mut s),
+                vec![vec![], vec![1, 2]],
+                "{value:?}, {incremental}"
+            );
         }
     }
 }
@@ -526,11 +527,7 @@ fn a_later_step_may_define_an_external_atom_that_was_false() {
         ..Config::default()
     };
     let mut s = Solver::new(&p, cfg);
-    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
-    got.sort();
-    assert_eq!(got, vec![vec![], vec![2]]);
+    assert_eq!(atom_sets(&mut s), vec![vec![], vec![2]]);
     s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
-    let mut got: Vec<Vec<u32>> = s.solve().models.iter().map(|m| m.atoms.clone()).collect();
-    got.sort();
-    assert_eq!(got, vec![vec![], vec![1, 2]]);
+    assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2]]);
 }

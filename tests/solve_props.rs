@@ -261,6 +261,14 @@ fn holds(atoms: &[u32], l: i32) -> bool {
     atoms.contains(&l.unsigned_abs()) == (l > 0)
 }
 
+/// The answer sets among `all` (brute force, with costs) in which every assumption holds.
+fn models_under(all: &[(Vec<u32>, Vec<i64>)], assumptions: &[i32]) -> Vec<Vec<u32>> {
+    all.iter()
+        .filter(|(m, _)| assumptions.iter().all(|&l| holds(m, l)))
+        .map(|(m, _)| m.clone())
+        .collect()
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: cases(600), ..ProptestConfig::default() })]
 
@@ -296,11 +304,7 @@ proptest! {
                 prop_assert!(check::check(&p, m).is_ok(), "model {:?} is not stable", m);
             }
             got.sort();
-            let want: Vec<Vec<u32>> = all
-                .iter()
-                .filter(|(m, _)| assumptions.iter().all(|&l| holds(m, l)))
-                .map(|(m, _)| m.clone())
-                .collect();
+            let want = models_under(&all, &assumptions);
             prop_assert_eq!(got, want, "assumptions {:?}", assumptions);
         }
     }
@@ -383,11 +387,7 @@ proptest! {
             prop_assert!(r.exhausted);
             let mut got: Vec<Vec<u32>> = r.models.iter().map(|m| m.atoms.clone()).collect();
             got.sort();
-            let want: Vec<Vec<u32>> = all
-                .iter()
-                .filter(|(m, _)| assumptions.iter().all(|&l| holds(m, l)))
-                .map(|(m, _)| m.clone())
-                .collect();
+            let want = models_under(&all, &assumptions);
             prop_assert_eq!(got, want, "step {} under {:?}", step, assumptions);
             let r = s.solve();
             prop_assert!(r.exhausted);
