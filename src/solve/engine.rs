@@ -1511,45 +1511,66 @@ impl Engine {
         }
     }
 
-    /// Copies live clauses into a fresh arena and rebuilds the watch lists.
+    /// Moves the live clauses to the front of the arena, in order, and redirects the watch
+    /// lists, reasons and learnt references. In place, so that the peak memory holds one
+    /// arena, not the old one and a growing copy: a first pass writes each live clause's new
+    /// position into its activity word (keeping the activities aside), the references are
+    /// redirected through that word, and a second pass moves the clauses and puts the
+    /// activities back.
     fn collect_garbage(&mut self) {
-        let old = std::mem::take(&mut self.arena);
-        let mut map: hashbrown::HashMap<u32, u32> = hashbrown::HashMap::new();
-        let mut pos = 0usize;
-        while pos < old.len() {
-            let len = old[pos] as usize;
-            if old[pos + 1] & FLAG_DELETED == 0 {
-                map.insert(pos as u32, self.arena.len() as u32);
-                self.arena.extend_from_slice(&old[pos..pos + HEADER + len]);
+        let mut activities = Vec::with_capacity(self.learnts.len());
+        let (mut pos, mut to) = (0usize, 0usize);
+        while pos < self.arena.len() {
+            let len = self.arena[pos] as usize;
+            if self.arena[pos + 1] & FLAG_DELETED == 0 {
+                activities.push(self.arena[pos + 2]);
+                self.arena[pos + 2] = to as u32;
+                to += HEADER + len;
             }
             pos += HEADER + len;
         }
+        let arena = &self.arena;
+        let live = |c: u32| arena[c as usize + 1] & FLAG_DELETED == 0;
         for ws in self.watches.iter_mut() {
             ws.retain_mut(|w| {
                 if w.cref == u32::MAX {
-                    return true;
-                }
-                match map.get(&w.cref) {
-                    Some(&n) => {
-                        w.cref = n;
-                        true
-                    }
-                    None => false,
+                    true
+                } else if live(w.cref) {
+                    w.cref = arena[w.cref as usize + 2];
+                    true
+                } else {
+                    false
                 }
             });
         }
-        for r in self.reason.iter_mut() {
+        // Only assigned variables have meaningful reasons; an unassigned one may hold a stale
+        // reference that is not a clause start any more, so it is cleared, never followed.
+        for (v, r) in self.reason.iter_mut().enumerate() {
             if let Reason::Long(c) = r {
-                if let Some(&n) = map.get(c) {
-                    *c = n;
+                if self.values[2 * v] != 0 && live(*c) {
+                    *c = arena[*c as usize + 2];
                 } else {
                     *r = Reason::Decision;
                 }
             }
         }
         for c in self.learnts.iter_mut() {
-            *c = map[c];
+            debug_assert!(live(*c), "learnt references are live");
+            *c = arena[*c as usize + 2];
         }
+        let (mut pos, mut to) = (0usize, 0usize);
+        let mut live_index = 0;
+        while pos < self.arena.len() {
+            let len = self.arena[pos] as usize;
+            if self.arena[pos + 1] & FLAG_DELETED == 0 {
+                self.arena.copy_within(pos..pos + HEADER + len, to);
+                self.arena[to + 2] = activities[live_index];
+                live_index += 1;
+                to += HEADER + len;
+            }
+            pos += HEADER + len;
+        }
+        self.arena.truncate(to);
         self.wasted = 0;
     }
 
@@ -1576,13 +1597,17 @@ impl Engine {
             let values = &self.values;
             self.watches[code].retain(|w| w.cref == u32::MAX && values[w.other.code()] == 0);
         }
-        let old = std::mem::take(&mut self.arena);
+        // In place (see `collect_garbage`): a clause only shrinks or goes, so the write
+        // position never passes the read position, and a clause's literals are read before
+        // its new place is written.
         let mut learnts = Vec::with_capacity(self.learnts.len());
         let mut lits: Vec<Lit> = Vec::new();
-        let mut pos = 0usize;
-        while pos < old.len() {
-            let len = old[pos] as usize;
-            let flags = old[pos + 1];
+        let (mut pos, mut to) = (0usize, 0usize);
+        let end = self.arena.len();
+        while pos < end {
+            let len = self.arena[pos] as usize;
+            let flags = self.arena[pos + 1];
+            let activity = self.arena[pos + 2];
             let next = pos + HEADER + len;
             if flags & FLAG_DELETED != 0 {
                 pos = next;
@@ -1590,8 +1615,8 @@ impl Engine {
             }
             lits.clear();
             let mut satisfied = false;
-            for &c in &old[pos + HEADER..next] {
-                let l = Lit::from_code(c);
+            for k in pos + HEADER..next {
+                let l = Lit::from_code(self.arena[k]);
                 match self.values[l.code()] {
                     1 => {
                         satisfied = true;
@@ -1606,11 +1631,14 @@ impl Engine {
                 if lits.len() == 2 {
                     self.watch_binary(lits[0], lits[1]);
                 } else {
-                    let cref = self.arena.len() as u32;
-                    self.arena.push(lits.len() as u32);
-                    self.arena.push(flags);
-                    self.arena.push(old[pos + 2]);
-                    self.arena.extend(lits.iter().map(|l| l.code() as u32));
+                    let cref = to as u32;
+                    self.arena[to] = lits.len() as u32;
+                    self.arena[to + 1] = flags;
+                    self.arena[to + 2] = activity;
+                    for (k, l) in lits.iter().enumerate() {
+                        self.arena[to + HEADER + k] = l.code() as u32;
+                    }
+                    to += HEADER + lits.len();
                     self.watches[lits[0].code()].push(Watch {
                         cref,
                         other: lits[1],
@@ -1626,6 +1654,7 @@ impl Engine {
             }
             pos = next;
         }
+        self.arena.truncate(to);
         self.learnts = learnts;
         self.wasted = 0;
         self.simp_assigns = self.trail.len();
