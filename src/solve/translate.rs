@@ -122,16 +122,6 @@ impl Translation {
 
     /// A literal equivalent to the conjunction of `lits`.
     pub fn conjunction(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
-        self.conjunction_as(e, lits, true)
-    }
-
-    /// The literal of the conjunction of `lits`, where `to_lits` says whether the clauses
-    /// `b -> l` are needed. Without them the literal only follows from its literals
-    /// (`l1 and .. and lk -> b`), which is all an integrity constraint needs: its body literal is
-    /// made false at once, so `b -> l` would be satisfied at level 0 from then on (and dropped by
-    /// the engine's level-0 simplification before the search; the search is the same either
-    /// way), and a later rule with the same body shares the false literal.
-    fn conjunction_as(&mut self, e: &mut Engine, lits: &[Lit], to_lits: bool) -> Lit {
         let key = conj_key(lits);
         if key.is_empty() {
             return self.true_lit();
@@ -144,8 +134,32 @@ impl Translation {
             return b;
         }
         let b = e.new_body_var().positive();
-        self.insert_conj(e, key, hash, b, to_lits);
+        self.insert_conj(e, key, hash, b);
         b
+    }
+
+    /// The body literal of an integrity constraint `:- lits.`, which the caller makes false.
+    /// A body of two or more literals that no earlier rule has becomes the clause
+    /// `not l1 or .. or not lk` directly, as clasp writes it, and the answer is the false
+    /// literal: a variable of its own would only be false at level 0 (with the level-0
+    /// simplification leaving the same clause), yet cost its per-variable arrays, which on
+    /// programs made mostly of constraints (stable marriage, queens) was most of the memory.
+    /// A later rule with the same body gets a body variable of its own.
+    fn constraint_body(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
+        let key = conj_key(lits);
+        if key.is_empty() {
+            return self.true_lit();
+        }
+        if key.len() == 1 {
+            return Lit::from_code(key[0]);
+        }
+        let hash = self.conj_hasher.hash_one(&key[..]);
+        if let Some(b) = self.find_conj(hash, &key) {
+            return b;
+        }
+        let clause: Vec<Lit> = key.iter().map(|&c| !Lit::from_code(c)).collect();
+        e.add_clause(&clause);
+        !self.true_lit()
     }
 
     /// The literal already standing for the conjunction `key` (sorted codes), if any.
@@ -159,14 +173,12 @@ impl Translation {
     }
 
     /// Makes `b` stand for the conjunction `key` (sorted codes, at least two, hashed to `hash`):
-    /// the clause `key -> b`, the clauses `b -> l` when `to_lits`, and the table entry.
-    fn insert_conj(&mut self, e: &mut Engine, key: Vec<u32>, hash: u64, b: Lit, to_lits: bool) {
+    /// the clause `key -> b`, the clauses `b -> l`, and the table entry.
+    fn insert_conj(&mut self, e: &mut Engine, key: Vec<u32>, hash: u64, b: Lit) {
         let mut big = vec![b];
         for &c in &key {
             let l = Lit::from_code(c);
-            if to_lits {
-                e.add_clause(&[!b, l]);
-            }
+            e.add_clause(&[!b, l]);
             big.push(!l);
         }
         e.add_clause(&big);
@@ -185,7 +197,11 @@ impl Translation {
         match body {
             BodyRef::Normal(ls) => {
                 let lits: Vec<Lit> = ls.iter().map(|&l| self.lit(l)).collect();
-                self.conjunction_as(e, &lits, !constraint)
+                if constraint {
+                    self.constraint_body(e, &lits)
+                } else {
+                    self.conjunction(e, &lits)
+                }
             }
             BodyRef::Weight { lower, lits } => {
                 let mut key: Vec<(u32, i64)> = lits
@@ -302,7 +318,7 @@ impl Translation {
         }
         let hash = self.conj_hasher.hash_one(&key[..]);
         if self.find_conj(hash, &key).is_none() {
-            self.insert_conj(e, key, hash, x, true);
+            self.insert_conj(e, key, hash, x);
         }
     }
 
