@@ -24,7 +24,9 @@ use std::hash::BuildHasher;
 use crate::base::{Diagnostic, Diagnostics, SourceMap, Span, WarningKind};
 use crate::syntax::ast::{AggregateFunction, CmpOp, Sign};
 
-use super::program::{Body, ExternalValue, HeadKind, HeuristicModifier, Lit, Origin, Rule, Weight};
+use super::program::{
+    Body, ExternalValue, HeadKind, HeuristicModifier, Lit, Origin, Rule, Rules, Weight,
+};
 use super::rewrite::{
     lit_vars, Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
 };
@@ -129,8 +131,8 @@ pub struct Grounder<'a> {
     sym_atom: Vec<AtomId>,
     /// Domains, by predicate.
     domains: Vec<Domain>,
-    /// Ground rules over internal ids.
-    pub rules: Vec<Rule>,
+    /// Ground rules over internal ids, stored flat (a program may ground to millions).
+    pub rules: Rules,
     /// Origins parallel to `rules` (when provenance is on).
     pub origins: Vec<Origin>,
     /// Deduplication of `rules`.
@@ -285,7 +287,7 @@ impl<'a> Grounder<'a> {
             atoms: Vec::new(),
             sym_atom: Vec::new(),
             domains,
-            rules: Vec::new(),
+            rules: Rules::new(),
             origins: Vec::new(),
             rule_set: HashTable::new(),
             rule_hashes: Vec::new(),
@@ -422,17 +424,18 @@ impl<'a> Grounder<'a> {
             self.rules.len(),
             "add_rule after release_dedup"
         );
-        let hash = self.hasher.hash_one(&rule);
+        let rule = rule.as_ref();
+        let hash = self.hasher.hash_one(rule);
         let rules = &self.rules;
         if self
             .rule_set
-            .find(hash, |&i| rules[i as usize] == rule)
+            .find(hash, |&i| rules.get(i as usize) == rule)
             .is_some()
         {
             return false;
         }
         let idx = self.rules.len() as u32;
-        self.rules.push(rule);
+        self.rules.push_ref(rule);
         self.rule_hashes.push(hash);
         if self.provenance {
             self.origins.push(origin());
@@ -2345,10 +2348,9 @@ impl<'a> Grounder<'a> {
     }
 
     fn forget_rules_from(&mut self, start: usize) {
-        while self.rules.len() > start {
-            self.rules.pop().expect("len > start");
-            let hash = self.rule_hashes.pop().expect("a hash per rule");
-            let idx = self.rules.len() as u32;
+        while self.rule_hashes.len() > start {
+            let hash = self.rule_hashes.pop().expect("len > start");
+            let idx = self.rule_hashes.len() as u32;
             if let Ok(e) = self.rule_set.find_entry(hash, |&i| i == idx) {
                 e.remove();
             }
@@ -2356,6 +2358,7 @@ impl<'a> Grounder<'a> {
                 self.origins.pop();
             }
         }
+        self.rules.truncate(start);
         // Their defining rules may be gone; fresh auxiliaries are made next round.
         self.notnot.clear();
     }

@@ -16,6 +16,7 @@
 use super::instantiate::{AtomId, Grounder};
 use super::program::{
     Body, BodyRef, CrRule, GroundProgram, HeadKind, Lit, Minimize, Output, Prefer, Rule, Rules,
+    Weight,
 };
 use super::rewrite::Compiled;
 use super::symbol::SymId;
@@ -123,14 +124,14 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut slack: Vec<i64> = vec![0; g.rules.len()];
     for pass in [Pass::Count, Pass::Fill] {
         for (ri, r) in g.rules.iter().enumerate() {
-            match &r.body {
-                Body::Normal(lits) => {
+            match r.body {
+                BodyRef::Normal(lits) => {
                     for &l in lits {
                         let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
                         occ.add(pass, l.unsigned_abs(), (ri as u32, 0));
                     }
                 }
-                Body::Weight { lits, .. } => {
+                BodyRef::Weight { lits, .. } => {
                     for &(l, w) in lits {
                         let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
                         occ.add(pass, l.unsigned_abs(), (ri as u32, w.max(1)));
@@ -142,10 +143,10 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         neg_occ.end(pass);
     }
     for (ri, r) in g.rules.iter().enumerate() {
-        for &h in &r.head {
+        for &h in r.head {
             head_count[h as usize] += 1;
         }
-        if let Body::Weight { lower, lits } = &r.body {
+        if let BodyRef::Weight { lower, lits } = r.body {
             slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
         }
     }
@@ -166,12 +167,12 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 head_count: &mut Vec<u32>,
                 status: &mut Vec<Status>,
                 work: &mut Vec<AtomId>,
-                rules: &[Rule]| {
+                rules: &Rules| {
         if dead[ri] {
             return;
         }
         dead[ri] = true;
-        for &h in &rules[ri].head {
+        for &h in rules.get(ri).head {
             head_count[h as usize] -= 1;
             if head_count[h as usize] == 0
                 && !external[h as usize]
@@ -187,13 +188,13 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     // so atoms only it could derive become false. The fact's own rule `a.` is kept. So is a
     // rule whose body holds `a` and `not a` (a weak constraint `:~ r, not r.` costs nothing).
     for ri in 0..g.rules.len() {
-        let r = &g.rules[ri];
+        let r = g.rules.get(ri);
         let satisfied_head = r.head_kind == HeadKind::Disjunction
             && r.head
                 .iter()
                 .any(|&h| status[h as usize - 1] == Status::Fact)
-            && !(r.head.len() == 1 && matches!(&r.body, Body::Normal(b) if b.is_empty()));
-        if satisfied_head || contradictory(&r.body) {
+            && !(r.head.len() == 1 && r.body.is_empty_normal());
+        if satisfied_head || contradictory(r.body) {
             kill(
                 ri,
                 &mut dead,
@@ -257,50 +258,63 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut rules = Rules::new();
     let mut origins = Vec::new();
     let mut fact_rule_seen = vec![false; n + 1];
-    // The rules are moved out (the grounder's copy is not used after this).
-    for (ri, r) in std::mem::take(&mut g.rules).into_iter().enumerate() {
+    // The rules are moved out (the grounder's copy is not used after this); each surviving
+    // rule is simplified in the scratch vectors and copied to `rules`.
+    drop((pos_occ, neg_occ, slack, head_count));
+    let old = std::mem::take(&mut g.rules);
+    let mut head: Vec<AtomId> = Vec::new();
+    let mut lits: Vec<Lit> = Vec::new();
+    let mut wlits: Vec<(Lit, Weight)> = Vec::new();
+    for (ri, r) in old.iter().enumerate() {
         if dead[ri] {
             continue;
         }
+        lits.clear();
+        wlits.clear();
         let body = match r.body {
-            Body::Normal(mut lits) => {
+            BodyRef::Normal(ls) => {
                 let mut ok = true;
-                lits.retain(|&l| match truth(l, &status) {
-                    Some(true) => false,
-                    Some(false) => {
-                        ok = false;
-                        false
+                for &l in ls {
+                    match truth(l, &status) {
+                        Some(true) => {}
+                        Some(false) => {
+                            ok = false;
+                            break;
+                        }
+                        None => lits.push(l),
                     }
-                    None => true,
-                });
+                }
                 if !ok {
                     continue;
                 }
-                Body::Normal(lits)
+                BodyRef::Normal(&lits)
             }
-            Body::Weight { lower, lits } => {
+            BodyRef::Weight { lower, lits: ls } => {
                 let mut lower = lower;
-                let mut out = Vec::new();
-                for (l, w) in lits {
+                for &(l, w) in ls {
                     match truth(l, &status) {
                         Some(true) => lower -= w,
                         Some(false) => {}
-                        None => out.push((l, w)),
+                        None => wlits.push((l, w)),
                     }
                 }
                 if lower <= 0 {
-                    Body::Normal(Vec::new())
-                } else if out.iter().map(|&(_, w)| w).sum::<i64>() < lower {
+                    BodyRef::Normal(&[])
+                } else if wlits.iter().map(|&(_, w)| w).sum::<i64>() < lower {
                     continue;
                 } else {
-                    Body::Weight { lower, lits: out }
+                    BodyRef::Weight {
+                        lower,
+                        lits: &wlits,
+                    }
                 }
             }
         };
-        let mut head = r.head;
+        head.clear();
+        head.extend_from_slice(r.head);
         if r.head_kind == HeadKind::Disjunction {
             if head.iter().any(|&h| status[h as usize - 1] == Status::Fact)
-                && !(head.len() == 1 && body == Body::Normal(Vec::new()))
+                && !(head.len() == 1 && body.is_empty_normal())
             {
                 continue;
             }
@@ -311,10 +325,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 continue;
             }
         }
-        if r.head_kind == HeadKind::Disjunction
-            && head.len() == 1
-            && body == Body::Normal(Vec::new())
-        {
+        if r.head_kind == HeadKind::Disjunction && head.len() == 1 && body.is_empty_normal() {
             let h = head[0] as usize;
             if fact_rule_seen[h] {
                 continue;
@@ -322,11 +333,12 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             fact_rule_seen[h] = true;
             status[h - 1] = Status::Fact;
         }
-        rules.push_parts(r.head_kind, &head, body.as_ref());
+        rules.push_parts(r.head_kind, &head, body);
         if g.provenance {
             origins.push(g.origins[ri].clone());
         }
     }
+    drop(old);
     // Minimize statements: one per priority, highest first.
     let mut minimize: Vec<Minimize> = Vec::new();
     let keys = std::mem::take(&mut g.minimize_order);
@@ -604,10 +616,10 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
 
 /// Whether a normal body contains a literal and its negation (it can never hold). Only short
 /// bodies are checked (quadratic scan, no allocation); missing a long one is only less simple.
-fn contradictory(body: &Body) -> bool {
+fn contradictory(body: BodyRef<'_>) -> bool {
     match body {
-        Body::Normal(lits) => contradictory_lits(lits),
-        Body::Weight { .. } => false,
+        BodyRef::Normal(lits) => contradictory_lits(lits),
+        BodyRef::Weight { .. } => false,
     }
 }
 
