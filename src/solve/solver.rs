@@ -132,6 +132,7 @@ impl Solver {
         engine.body_phase = config.body_phase_true;
         engine.save_progress = config.save_progress;
         engine.score_other = config.score_other;
+        engine.sign_from_learnts = config.sign_from_learnts;
         engine.conflict_limit = config.conflict_limit;
         engine.restarts = restart_state(config.restarts);
         prog.num_atoms = max_atom(&prog);
@@ -160,6 +161,7 @@ impl Solver {
             engine.configure(0.92, config.seed);
             engine.restarts = restart_state(RestartPolicy::Luby(60));
             engine.save_progress = 160;
+            engine.sign_from_learnts = true;
         }
         let cr_lits = prog
             .cr_rules
