@@ -162,6 +162,11 @@ pub struct Engine {
     stored: Vec<Vec<Lit>>,
     /// Per variable: saved phase (last value).
     phase: Vec<bool>,
+    /// Per variable: whether `phase` was saved by a backjump (not the initial sign).
+    phase_saved: Vec<bool>,
+    /// Per variable: occurrences in learnt clauses, +1 per positive and -1 per negative
+    /// literal (clasp's sign score, used when `sign_from_learnts` is set).
+    occ: Vec<i32>,
     /// Per variable: VSIDS activity.
     activity: Vec<f64>,
     /// Per variable: position in `heap`, or `NO_SLOT`.
@@ -283,6 +288,10 @@ pub struct Engine {
     pub conflict_limit: Option<u64>,
     /// Bump the variables of every loop nogood when it is learnt (clasp `--score-other=all`).
     pub score_other: bool,
+    /// Choose the sign of a decision variable without a saved phase from its occurrences in
+    /// learnt clauses (the polarity that satisfies more of them), as clasp's VSIDS does;
+    /// ties fall back to the initial sign.
+    pub sign_from_learnts: bool,
 }
 
 impl Default for Engine {
@@ -301,6 +310,8 @@ impl Engine {
             stored_slot: Vec::new(),
             stored: Vec::new(),
             phase: Vec::new(),
+            phase_saved: Vec::new(),
+            occ: Vec::new(),
             activity: Vec::new(),
             heap_pos: Vec::new(),
             decidable: Vec::new(),
@@ -360,6 +371,7 @@ impl Engine {
             lbd_stamp: 0,
             init_moms: false,
             score_other: false,
+            sign_from_learnts: false,
             conflict_limit: None,
         }
     }
@@ -408,6 +420,8 @@ impl Engine {
         self.reason.push(Reason::Decision);
         self.stored_slot.push(NO_SLOT);
         self.phase.push(self.default_phase);
+        self.phase_saved.push(false);
+        self.occ.push(0);
         self.activity.push(0.0);
         self.heap_pos.push(NO_SLOT);
         self.decidable.push(true);
@@ -543,6 +557,7 @@ impl Engine {
             self.values[(!l).code()] = 0;
             if save {
                 self.phase[v.index()] = !l.is_neg();
+                self.phase_saved[v.index()] = true;
             }
             if self.heap_pos[v.index()] == NO_SLOT && self.decidable[v.index()] {
                 self.heap_insert(v);
@@ -844,8 +859,9 @@ impl Engine {
             }
             for mut ng in nogoods {
                 self.loop_nogoods += 1;
-                if self.score_other {
-                    for &l in &ng {
+                for &l in &ng {
+                    self.occ[l.var().index()] += if l.is_neg() { -1 } else { 1 };
+                    if self.score_other {
                         self.bump_var(l.var());
                     }
                 }
@@ -1233,6 +1249,10 @@ impl Engine {
             }
         }
         learnt.truncate(kept);
+        for &l in &learnt {
+            let v = l.var();
+            self.occ[v.index()] += if l.is_neg() { -1 } else { 1 };
+        }
         for &v in &to_clear {
             self.seen[v.index()] = 0;
         }
@@ -1444,6 +1464,16 @@ impl Engine {
         self.rng.wrapping_mul(0x2545_F491_4F6C_DD1D)
     }
 
+    /// The sign to decide `v` with: its saved phase, else (with `sign_from_learnts`) the
+    /// polarity occurring more often in learnt clauses, else its initial sign.
+    fn decision_sign(&self, v: Var) -> bool {
+        let i = v.index();
+        if self.sign_from_learnts && !self.phase_saved[i] && self.occ[i] != 0 {
+            return self.occ[i] > 0;
+        }
+        self.phase[i]
+    }
+
     fn pick_branch(&mut self) -> Option<Lit> {
         if self.random_permille > 0
             && !self.heap.is_empty()
@@ -1452,12 +1482,12 @@ impl Engine {
             let k = (self.next_random() % self.heap.len() as u64) as usize;
             let v = self.heap[k];
             if self.val(v.positive()) == 0 {
-                return Some(Lit::new(v, self.phase[v.index()]));
+                return Some(Lit::new(v, self.decision_sign(v)));
             }
         }
         while let Some(v) = self.heap_pop() {
             if self.val(v.positive()) == 0 && self.decidable[v.index()] {
-                return Some(Lit::new(v, self.phase[v.index()]));
+                return Some(Lit::new(v, self.decision_sign(v)));
             }
         }
         None

@@ -28,7 +28,7 @@
 use super::engine::Engine;
 use super::lit::Lit;
 use super::unfounded::{Support, SupportBody, Unfounded};
-use crate::ground::program::{Body, ExternalValue, GroundProgram, HeadKind, Rule};
+use crate::ground::program::{BodyRef, ExternalValue, GroundProgram, HeadKind, RuleRef};
 use hashbrown::{DefaultHashBuilder, HashMap, HashTable};
 use smallvec::SmallVec;
 use std::hash::BuildHasher;
@@ -76,9 +76,9 @@ pub fn max_atom(p: &GroundProgram) -> u32 {
     let lit_atom = |l: i32| l.unsigned_abs();
     for r in &p.rules {
         m = m.max(r.head.iter().copied().max().unwrap_or(0));
-        match &r.body {
-            Body::Normal(ls) => m = m.max(ls.iter().map(|&l| lit_atom(l)).max().unwrap_or(0)),
-            Body::Weight { lits, .. } => {
+        match r.body {
+            BodyRef::Normal(ls) => m = m.max(ls.iter().map(|&l| lit_atom(l)).max().unwrap_or(0)),
+            BodyRef::Weight { lits, .. } => {
                 m = m.max(lits.iter().map(|&(l, _)| lit_atom(l)).max().unwrap_or(0))
             }
         }
@@ -193,9 +193,9 @@ impl Translation {
 
     /// The literal of a rule body; `constraint` when the rule is an integrity constraint (its
     /// body literal is made false right after).
-    fn body_lit(&mut self, e: &mut Engine, body: &Body, constraint: bool) -> Lit {
+    fn body_lit(&mut self, e: &mut Engine, body: BodyRef<'_>, constraint: bool) -> Lit {
         match body {
-            Body::Normal(ls) => {
+            BodyRef::Normal(ls) => {
                 let lits: Vec<Lit> = ls.iter().map(|&l| self.lit(l)).collect();
                 if constraint {
                     self.constraint_body(e, &lits)
@@ -203,7 +203,7 @@ impl Translation {
                     self.conjunction(e, &lits)
                 }
             }
-            Body::Weight { lower, lits } => {
+            BodyRef::Weight { lower, lits } => {
                 let mut key: Vec<(u32, i64)> = lits
                     .iter()
                     .map(|&(l, w)| (self.lit(l).code() as u32, w))
@@ -218,14 +218,14 @@ impl Translation {
                         false
                     }
                 });
-                if let Some(&b) = self.weights.get(&(*lower, key.clone())) {
+                if let Some(&b) = self.weights.get(&(lower, key.clone())) {
                     return b;
                 }
                 let b = e.new_body_var().positive();
                 let wl: Vec<(Lit, i64)> =
                     key.iter().map(|&(c, w)| (Lit::from_code(c), w)).collect();
-                e.add_weight(b, &wl, *lower);
-                self.weights.insert((*lower, key), b);
+                e.add_weight(b, &wl, lower);
+                self.weights.insert((lower, key), b);
                 b
             }
         }
@@ -274,7 +274,7 @@ impl Translation {
         // An atom whose only rule is `a :- B` (B of two or more literals) stands for B itself.
         for (a, q) in eqs.iter().enumerate() {
             if let Equiv::Body(ri) = *q {
-                if let Body::Normal(ls) = &p.rules[ri].body {
+                if let BodyRef::Normal(ls) = p.rules.get(ri).body {
                     let lits: Vec<Lit> = ls.iter().map(|&l| t.lit(l)).collect();
                     t.define_conjunction(e, &lits, t.atom_lit[a]);
                 }
@@ -354,12 +354,12 @@ impl Translation {
     }
 
     /// Adds the clauses of one rule (its body, its head clause and its supports).
-    pub fn add_rule(&mut self, e: &mut Engine, index: usize, r: &Rule) {
+    pub fn add_rule(&mut self, e: &mut Engine, index: usize, r: RuleRef<'_>) {
         let constraint = r.head_kind == HeadKind::Disjunction && r.head.is_empty();
-        let b = self.body_lit(e, &r.body, constraint);
+        let b = self.body_lit(e, r.body, constraint);
         self.rule_body.push(b);
         debug_assert_eq!(self.rule_body.len(), index + 1);
-        let mut head: Vec<u32> = r.head.clone();
+        let mut head: Vec<u32> = r.head.to_vec();
         head.sort_unstable();
         head.dedup();
         match r.head_kind {
@@ -450,18 +450,18 @@ impl Translation {
             }
             for &(s, ri) in &self.supports[a] {
                 let ri = ri as usize;
-                let r = &p.rules[ri];
+                let r = p.rules.get(ri);
                 // Non-HCF programs use the rule body as support (see the module comment).
                 let lit = if self.non_hcf { self.rule_body[ri] } else { s };
-                let body = match &r.body {
-                    Body::Normal(ls) => SupportBody::Normal(
+                let body = match r.body {
+                    BodyRef::Normal(ls) => SupportBody::Normal(
                         ls.iter()
                             .filter(|&&l| l > 0 && local[l as usize] != u32::MAX)
                             .map(|&l| local[l as usize])
                             .collect(),
                     ),
-                    Body::Weight { lower, lits } => {
-                        let mut bound = *lower as i128;
+                    BodyRef::Weight { lower, lits } => {
+                        let mut bound = lower as i128;
                         let mut wl = Vec::new();
                         for &(l, w) in lits {
                             if w > 0 {
@@ -528,7 +528,7 @@ fn equivalences(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<Equiv> {
     let mut count = vec![0u8; n + 1];
     let mut rule = vec![usize::MAX; n + 1];
     for (i, r) in p.rules.iter().enumerate() {
-        for &h in &r.head {
+        for &h in r.head {
             let h = h as usize;
             count[h] = count[h].saturating_add(1).min(2);
             rule[h] = i;
@@ -539,14 +539,14 @@ fn equivalences(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<Equiv> {
         if count[a] != 1 || free[a] {
             continue;
         }
-        let r = &p.rules[rule[a]];
+        let r = p.rules.get(rule[a]);
         if r.head_kind != HeadKind::Disjunction || r.head.len() != 1 {
             continue;
         }
-        let Body::Normal(ls) = &r.body else {
+        let BodyRef::Normal(ls) = r.body else {
             continue;
         };
-        out[a] = match ls.as_slice() {
+        out[a] = match ls {
             [] => Equiv::Lit(0),
             [l] => {
                 let b = l.unsigned_abs() as usize;
@@ -614,19 +614,19 @@ fn resolve_aliases(eqs: &[Equiv], lit: &mut [Option<Lit>], e: &mut Engine) {
 /// The positive dependency graph: per atom, the atoms of positive body literals (positive
 /// weights) of its rules.
 fn positive_edges(p: &GroundProgram, n: usize) -> Graph {
-    let positive = |r: &Rule| -> usize {
-        match &r.body {
-            Body::Normal(ls) => ls.iter().filter(|&&l| l > 0).count(),
-            Body::Weight { lits, .. } => lits.iter().filter(|&&(l, w)| l > 0 && w > 0).count(),
+    let positive = |r: &RuleRef<'_>| -> usize {
+        match r.body {
+            BodyRef::Normal(ls) => ls.iter().filter(|&&l| l > 0).count(),
+            BodyRef::Weight { lits, .. } => lits.iter().filter(|&&(l, w)| l > 0 && w > 0).count(),
         }
     };
     // Two passes (count, then fill) into one flat array: a `Vec` per atom cost 24 bytes of
     // header per atom even for the many atoms without edges.
     let mut first = vec![0usize; n + 1];
     for r in &p.rules {
-        let k = positive(r);
+        let k = positive(&r);
         if k > 0 {
-            for &h in &r.head {
+            for &h in r.head {
                 first[h as usize + 1] += k;
             }
         }
@@ -637,18 +637,18 @@ fn positive_edges(p: &GroundProgram, n: usize) -> Graph {
     let mut fill = first.clone();
     let mut targets = vec![0u32; first[n]];
     for r in &p.rules {
-        if positive(r) == 0 {
+        if positive(&r) == 0 {
             continue;
         }
-        for &h in &r.head {
+        for &h in r.head {
             let at = &mut fill[h as usize];
             let mut put = |b: u32| {
                 targets[*at] = b;
                 *at += 1;
             };
-            match &r.body {
-                Body::Normal(ls) => ls.iter().filter(|&&l| l > 0).for_each(|&l| put(l as u32)),
-                Body::Weight { lits, .. } => lits
+            match r.body {
+                BodyRef::Normal(ls) => ls.iter().filter(|&&l| l > 0).for_each(|&l| put(l as u32)),
+                BodyRef::Weight { lits, .. } => lits
                     .iter()
                     .filter(|&&(l, w)| l > 0 && w > 0)
                     .for_each(|&(l, _)| put(l as u32)),
