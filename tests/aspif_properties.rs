@@ -3,8 +3,8 @@
 
 use lucent::ground::aspif;
 use lucent::ground::program::{
-    Body, CrRule, Edge, ExternalValue, GroundProgram, HeadKind, Heuristic, HeuristicModifier,
-    Minimize, Output, Prefer, Rule,
+    Body, BodyRef, CrRule, Edge, ExternalValue, GroundProgram, HeadKind, Heuristic,
+    HeuristicModifier, Minimize, Output, Prefer, Rule,
 };
 use proptest::prelude::*;
 
@@ -98,7 +98,7 @@ fn program() -> impl Strategy<Value = GroundProgram> {
             ];
             let mut p = GroundProgram {
                 num_atoms: 0,
-                rules,
+                rules: rules.into(),
                 minimize,
                 projections,
                 outputs,
@@ -148,9 +148,9 @@ fn max_atom(p: &GroundProgram) -> u32 {
     let mut lit = |l: i32| m = m.max(l.unsigned_abs());
     for r in &p.rules {
         r.head.iter().for_each(|&a| lit(a as i32));
-        match &r.body {
-            Body::Normal(ls) => ls.iter().for_each(|&l| lit(l)),
-            Body::Weight { lits, .. } => lits.iter().for_each(|&(l, _)| lit(l)),
+        match r.body {
+            BodyRef::Normal(ls) => ls.iter().for_each(|&l| lit(l)),
+            BodyRef::Weight { lits, .. } => lits.iter().for_each(|&(l, _)| lit(l)),
         }
     }
     p.minimize

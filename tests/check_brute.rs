@@ -9,7 +9,7 @@ use lucent::solve::CrMode;
 fn program(num_atoms: u32, rules: Vec<Rule>) -> GroundProgram {
     GroundProgram {
         num_atoms,
-        rules,
+        rules: rules.into(),
         ..Default::default()
     }
 }

@@ -2,7 +2,7 @@
 //! not a stable model (the reduct and its least or minimal models, worked out by hand).
 
 use lucent::ground::program::{
-    Atom, Body, Edge, ExternalValue, GroundProgram, HeadKind, Lit, Rule, Weight,
+    Atom, Body, BodyRef, Edge, ExternalValue, GroundProgram, HeadKind, Lit, Rule, Weight,
 };
 use lucent::solve::check::{check, Violation};
 
@@ -20,7 +20,7 @@ fn weight(head: &[Atom], lower: Weight, lits: &[(Lit, Weight)]) -> Rule {
 fn program(num_atoms: u32, rules: Vec<Rule>) -> GroundProgram {
     GroundProgram {
         num_atoms,
-        rules,
+        rules: rules.into(),
         ..Default::default()
     }
 }
@@ -335,15 +335,15 @@ mod against_definition {
         x[l.unsigned_abs() as usize] == (l > 0)
     }
 
-    fn body_holds(x: &[bool], body: &Body) -> bool {
+    fn body_holds(x: &[bool], body: BodyRef<'_>) -> bool {
         match body {
-            Body::Normal(lits) => lits.iter().all(|&l| holds(x, l)),
-            Body::Weight { lower, lits } => {
+            BodyRef::Normal(lits) => lits.iter().all(|&l| holds(x, l)),
+            BodyRef::Weight { lower, lits } => {
                 lits.iter()
                     .filter(|(l, _)| holds(x, *l))
                     .map(|(_, w)| w)
                     .sum::<Weight>()
-                    >= *lower
+                    >= lower
             }
         }
     }
@@ -352,14 +352,14 @@ mod against_definition {
     fn models_reduct(p: &GroundProgram, x: &[bool], y: &[bool]) -> bool {
         let reduct_holds = |l: Lit| if l > 0 { y[l as usize] } else { holds(x, l) };
         p.rules.iter().all(|r| {
-            let body = match &r.body {
-                Body::Normal(lits) => lits.iter().all(|&l| reduct_holds(l)),
-                Body::Weight { lower, lits } => {
+            let body = match r.body {
+                BodyRef::Normal(lits) => lits.iter().all(|&l| reduct_holds(l)),
+                BodyRef::Weight { lower, lits } => {
                     lits.iter()
                         .filter(|(l, _)| reduct_holds(*l))
                         .map(|(_, w)| w)
                         .sum::<Weight>()
-                        >= *lower
+                        >= lower
                 }
             };
             !body
@@ -374,7 +374,7 @@ mod against_definition {
         let n = p.num_atoms as usize;
         let model = p.rules.iter().all(|r| {
             r.head_kind == HeadKind::Choice
-                || !body_holds(x, &r.body)
+                || !body_holds(x, r.body)
                 || r.head.iter().any(|&h| x[h as usize])
         });
         if !model {

@@ -1,7 +1,7 @@
 //! Consistency-restoring rules, `prefer/2`, provenance and the text form.
 
 use lucent::base::SourceMap;
-use lucent::ground::program::{Body, HeadKind};
+use lucent::ground::program::{BodyRef, HeadKind};
 use lucent::ground::{ground, text, GroundConfig, Grounding};
 use lucent::syntax::ast::Dialect;
 use lucent::syntax::parse;
@@ -46,14 +46,14 @@ fn cr_rules_get_application_atoms_labels_and_preferences() {
             .rules
             .iter()
             .any(|r| r.head_kind == HeadKind::Choice
-                && r.head == vec![c.appl]
-                && r.body == Body::Normal(Vec::new())));
+                && r.head == [c.appl]
+                && r.body.is_empty_normal()));
         assert!(g
             .program
             .rules
             .iter()
             .any(|r| r.head_kind == HeadKind::Disjunction
-                && matches!(&r.body, Body::Normal(b) if b.contains(&(c.appl as i32)))));
+                && matches!(r.body, BodyRef::Normal(b) if b.contains(&(c.appl as i32)))));
     }
     let appl = |l: &str| {
         g.program

@@ -97,7 +97,7 @@ proptest! {
         prop_assert_eq!(&facts, &expected);
         // Every remaining rule is a fact rule.
         for r in &result.program.rules {
-            prop_assert!(r.body == lucent::ground::program::Body::Normal(Vec::new()), "{:?}", r);
+            prop_assert!(r.body.is_empty_normal(), "{:?}", r);
         }
         let shown: BTreeSet<String> = result.program.outputs.iter().map(|o| o.symbol.clone()).collect();
         prop_assert_eq!(shown, expected);

@@ -9,7 +9,7 @@ use lucent::solve::{Config, EnumMode, OptMode, Outcome, Solver};
 fn program(n: u32, rules: Vec<Rule>) -> GroundProgram {
     let mut p = GroundProgram::new();
     p.num_atoms = n;
-    p.rules = rules;
+    p.rules = rules.into();
     for a in 1..=n {
         p.outputs.push(Output {
             symbol: name(a),
@@ -475,7 +475,7 @@ fn incremental_step_makes_a_program_non_head_cycle_free() {
     ];
     let mut p = GroundProgram::new();
     p.num_atoms = 4;
-    p.rules = rules[..4].to_vec();
+    p.rules = rules[..4].to_vec().into();
     let cfg = Config {
         models: 0,
         incremental: true,

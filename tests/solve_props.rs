@@ -65,7 +65,7 @@ fn program_strategy() -> impl Strategy<Value = GroundProgram> {
         .prop_map(|(n, rules, mins)| {
             let mut p = GroundProgram::new();
             p.num_atoms = n;
-            p.rules = rules;
+            p.rules = rules.into();
             p.minimize = mins
                 .into_iter()
                 .map(|(priority, lits)| Minimize { priority, lits })
@@ -324,7 +324,7 @@ proptest! {
         let mut s = Solver::new(&first, cfg);
         for (step, prog) in [(1, &first), (2, &p)] {
             if step == 2 {
-                s.add_rules(&p.rules[k..]).unwrap();
+                s.add_rules(&p.rules.to_vec()[k..]).unwrap();
             }
             let r = s.solve();
             prop_assert!(r.exhausted);
@@ -376,9 +376,9 @@ proptest! {
         let mut s = Solver::new(&first, cfg);
         for (step, end) in [(1, a), (2, b), (3, n)] {
             if step == 2 {
-                s.add_rules(&p.rules[a..b]).unwrap();
+                s.add_rules(&p.rules.to_vec()[a..b]).unwrap();
             } else if step == 3 {
-                s.add_rules(&p.rules[b..]).unwrap();
+                s.add_rules(&p.rules.to_vec()[b..]).unwrap();
             }
             let mut prog = p.clone();
             prog.rules.truncate(end);

@@ -161,11 +161,19 @@ pub fn run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io
         result.models.len(),
         if result.exhausted { "" } else { "+" }
     )?;
-    Ok(if plans.is_empty() {
-        super::EXIT_UNSAT
-    } else {
-        super::EXIT_EXHAUSTED
-    })
+    Ok(demo_exit_code(result.outcome, plans.len()))
+}
+
+/// The demo is a job, not a solver call: it exits 0 when it printed at least one plan, so a shell
+/// or `cargo run` treats the main job's success as success. Without a plan it answers with
+/// clingo's codes: 20 when the horizon has no plan, 1 (interrupted) when the search stopped
+/// before an answer.
+fn demo_exit_code(outcome: solve::Outcome, plans: usize) -> i32 {
+    match outcome {
+        solve::Outcome::Unknown if plans == 0 => super::EXIT_INTERRUPTED,
+        _ if plans == 0 => super::EXIT_UNSAT,
+        _ => 0,
+    }
 }
 
 #[cfg(test)]

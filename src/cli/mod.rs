@@ -295,7 +295,7 @@ fn solve_and_report(
     let result = solver.solve();
     let mut rep = report::Report::new(&result, context);
     rep.times.total = start.elapsed().as_secs_f64();
-    rep.times.cpu = rep.times.total;
+    rep.times.cpu = report::process_cpu_seconds().unwrap_or(rep.times.total);
     if options.stats > 0 {
         rep.stats = Some(result.stats.clone());
     }

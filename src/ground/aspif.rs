@@ -46,8 +46,8 @@ use std::io::Write as _;
 use thiserror::Error;
 
 use super::program::{
-    Atom, Body, CrRule, Edge, ExternalValue, GroundProgram, HeadKind, Heuristic, HeuristicModifier,
-    Lit, Minimize, Output, Prefer, Rule, Weight,
+    Atom, Body, BodyRef, CrRule, Edge, ExternalValue, GroundProgram, HeadKind, Heuristic,
+    HeuristicModifier, Lit, Minimize, Output, Prefer, Weight,
 };
 
 /// The largest atom number aspif allows (literals are 32-bit signed integers).
@@ -356,20 +356,20 @@ fn write_statements(out: &mut Vec<u8>, p: &GroundProgram, comments: &[String], l
 fn write_statement(out: &mut Vec<u8>, p: &GroundProgram, comments: &[String], stmt: Stmt) {
     match stmt {
         Stmt::Rule(i) => {
-            let rule = &p.rules[i as usize];
+            let rule = p.rules.get(i as usize);
             out.extend_from_slice(match rule.head_kind {
                 HeadKind::Disjunction => b"1 0",
                 HeadKind::Choice => b"1 1",
             });
-            write_lits(out, &rule.head);
-            match &rule.body {
-                Body::Normal(lits) => {
+            write_lits(out, rule.head);
+            match rule.body {
+                BodyRef::Normal(lits) => {
                     out.extend_from_slice(b" 0");
                     write_lits(out, lits);
                 }
-                Body::Weight { lower, lits } => {
+                BodyRef::Weight { lower, lits } => {
                     out.extend_from_slice(b" 1");
-                    push_int(out, *lower);
+                    push_int(out, lower);
                     write_wlits(out, lits);
                 }
             }
@@ -882,11 +882,7 @@ impl<'a> Reader<'a> {
                     };
                     let p = &mut step.program;
                     step.layout.push(Stmt::Rule(p.rules.len() as u32));
-                    p.rules.push(Rule {
-                        head_kind,
-                        head,
-                        body,
-                    });
+                    p.rules.push_parts(head_kind, &head, body.as_ref());
                 }
                 2 => {
                     let priority = self.cur.int("priority", i64::MIN, i64::MAX)?;
@@ -1188,6 +1184,7 @@ fn parse_atom(s: &str) -> Option<Atom> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ground::program::Rule;
 
     #[test]
     fn reads_and_writes_a_small_program() {
@@ -1197,10 +1194,10 @@ mod tests {
         assert_eq!(p.num_atoms, 3);
         assert_eq!(p.rules.len(), 2);
         assert_eq!(
-            p.rules[1].body,
-            Body::Weight {
+            p.rules.get(1).body,
+            BodyRef::Weight {
                 lower: 2,
-                lits: vec![(1, 2), (-1, 3)]
+                lits: &[(1, 2), (-1, 3)]
             }
         );
         assert_eq!(write(&aspif), text);

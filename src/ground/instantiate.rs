@@ -209,6 +209,57 @@ type ElemGroup = (Vec<SymId>, Vec<Vec<Lit>>, Vec<ElemLit>);
 /// does).
 type CondInstance = (Vec<Lit>, Option<Vec<Vec<Lit>>>);
 
+/// The distinct tuples of an aggregate's ground elements, in order of first occurrence, stored
+/// one after another; `table` holds their indexes, hashed by tuple.
+#[derive(Default)]
+struct ElemTuples {
+    /// The tuples' values, one tuple after another.
+    values: Vec<SymId>,
+    /// Where each tuple ends in `values`.
+    ends: Vec<usize>,
+    /// Indexes of the tuples.
+    table: HashTable<u32>,
+    /// Hasher of `table`.
+    hasher: hashbrown::DefaultHashBuilder,
+}
+
+impl ElemTuples {
+    /// Tuple `i`.
+    fn get(&self, i: usize) -> &[SymId] {
+        let start = if i == 0 { 0 } else { self.ends[i - 1] };
+        &self.values[start..self.ends[i]]
+    }
+
+    /// The index of tuple `t`, added at the end if new.
+    fn index(&mut self, t: &[SymId]) -> usize {
+        let hash = self.hasher.hash_one(t);
+        let ElemTuples {
+            values,
+            ends,
+            table,
+            hasher,
+        } = self;
+        let get = |i: u32| {
+            let i = i as usize;
+            let start = if i == 0 { 0 } else { ends[i - 1] };
+            &values[start..ends[i]]
+        };
+        if let Some(&i) = table.find(hash, |&i| get(i) == t) {
+            return i as usize;
+        }
+        let i = ends.len();
+        values.extend_from_slice(t);
+        ends.push(values.len());
+        let (values, ends) = (&*values, &*ends);
+        table.insert_unique(hash, i as u32, |&j| {
+            let j = j as usize;
+            let start = if j == 0 { 0 } else { ends[j - 1] };
+            hasher.hash_one(&values[start..ends[j]])
+        });
+        i
+    }
+}
+
 /// The value of an aggregate atom under a guard, over ground elements.
 enum Truth {
     /// Certainly true.
@@ -869,37 +920,41 @@ impl<'a> Grounder<'a> {
     /// Grounds the elements of an aggregate and continues with each way it can hold.
     fn aggregate(&mut self, ctx: &mut Ctx, agg: &NAgg, k: &mut dyn FnMut(&mut Self, &mut Ctx)) {
         // Ground elements: tuple -> alternative conditions (an empty condition is certain).
-        let mut tuples: Vec<Vec<SymId>> = Vec::new();
+        // An aggregate may have hundreds of thousands of elements (`#count { X,Y : path(X,Y) }`),
+        // so the tuples are kept flat, found through a table of their indexes, and a certain
+        // element keeps no conditions.
+        let mut tuples = ElemTuples::default();
         let mut conds: Vec<Vec<Vec<Lit>>> = Vec::new();
-        let mut pos: HashMap<Vec<SymId>, usize> = HashMap::new();
+        let mut certain: Vec<bool> = Vec::new();
         for e in &agg.elems {
             let blen = ctx.body.len();
-            let mut found: Vec<(Vec<SymId>, Vec<Lit>)> = Vec::new();
+            let mut t: Vec<SymId> = Vec::with_capacity(e.terms.len());
             self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| {
-                let mut t = Vec::with_capacity(e.terms.len());
+                t.clear();
                 for term in &e.terms {
                     match g.eval(term, &ctx.binding) {
                         Some(v) => t.push(v),
                         None => return,
                     }
                 }
-                found.push((t, ctx.body[blen..].to_vec()));
+                let i = tuples.index(&t);
+                if i == conds.len() {
+                    conds.push(Vec::new());
+                    certain.push(false);
+                }
+                let c = &ctx.body[blen..];
+                if c.is_empty() {
+                    certain[i] = true;
+                } else if !certain[i] && !conds[i].iter().any(|x| x.as_slice() == c) {
+                    conds[i].push(c.to_vec());
+                }
             });
             ctx.body.truncate(blen);
-            for (t, c) in found {
-                let i = *pos.entry(t.clone()).or_insert_with(|| {
-                    tuples.push(t);
-                    conds.push(Vec::new());
-                    tuples.len() - 1
-                });
-                if !conds[i].contains(&c) {
-                    conds[i].push(c);
-                }
-            }
         }
         // Weights: integers for sums and counts, symbols for min/max.
         let mut elems: Vec<(SymId, Vec<Vec<Lit>>)> = Vec::new();
-        for (t, c) in tuples.into_iter().zip(conds) {
+        for (i, c) in conds.into_iter().enumerate() {
+            let t = tuples.get(i);
             let w = match agg.func {
                 AggregateFunction::Count => self.syms.int(1),
                 _ => match t.first() {
@@ -917,8 +972,7 @@ impl<'a> Grounder<'a> {
             if agg.func == AggregateFunction::SumPlus && self.syms.num(w).is_some_and(|n| n <= 0) {
                 continue;
             }
-            let certain = c.iter().any(|x| x.is_empty());
-            elems.push((w, if certain { Vec::new() } else { c }));
+            elems.push((w, if certain[i] { Vec::new() } else { c }));
         }
         // Guard values.
         let mut guards: Vec<(CmpOp, SymId)> = Vec::new();

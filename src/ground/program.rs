@@ -73,6 +73,356 @@ impl Rule {
     }
 }
 
+impl Rule {
+    /// The rule as a view (the form [`Rules`] hands out).
+    pub fn as_ref(&self) -> RuleRef<'_> {
+        RuleRef {
+            head_kind: self.head_kind,
+            head: &self.head,
+            body: self.body.as_ref(),
+        }
+    }
+}
+
+impl Body {
+    /// The body as a view.
+    pub fn as_ref(&self) -> BodyRef<'_> {
+        match self {
+            Body::Normal(lits) => BodyRef::Normal(lits),
+            Body::Weight { lower, lits } => BodyRef::Weight {
+                lower: *lower,
+                lits,
+            },
+        }
+    }
+}
+
+/// A rule body borrowed from a [`Rules`] store (or from a [`Body`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BodyRef<'a> {
+    /// A conjunction of literals.
+    Normal(&'a [Lit]),
+    /// Holds when the sum of the weights of the true literals is at least `lower`.
+    Weight {
+        /// The lower bound.
+        lower: Weight,
+        /// Literals with their weights.
+        lits: &'a [(Lit, Weight)],
+    },
+}
+
+impl BodyRef<'_> {
+    /// An owned copy.
+    pub fn to_body(self) -> Body {
+        match self {
+            BodyRef::Normal(lits) => Body::Normal(lits.to_vec()),
+            BodyRef::Weight { lower, lits } => Body::Weight {
+                lower,
+                lits: lits.to_vec(),
+            },
+        }
+    }
+
+    /// `true` for an empty conjunction (a fact's body).
+    pub fn is_empty_normal(self) -> bool {
+        matches!(self, BodyRef::Normal([]))
+    }
+}
+
+/// A rule borrowed from a [`Rules`] store (or from a [`Rule`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct RuleRef<'a> {
+    /// Disjunctive or choice head.
+    pub head_kind: HeadKind,
+    /// Head atoms.
+    pub head: &'a [Atom],
+    /// The body.
+    pub body: BodyRef<'a>,
+}
+
+impl RuleRef<'_> {
+    /// An owned copy.
+    pub fn to_rule(self) -> Rule {
+        Rule {
+            head_kind: self.head_kind,
+            head: self.head.to_vec(),
+            body: self.body.to_body(),
+        }
+    }
+}
+
+/// Where one rule of a [`Rules`] store ends in each of the store's arrays.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Ends {
+    /// End in `heads`, with [`CHOICE`] set for a choice rule.
+    head: usize,
+    /// End in `lits` (normal bodies).
+    lit: usize,
+    /// End in `wlits` (weight bodies).
+    wlit: usize,
+}
+
+/// The flag in `Ends::head` that marks a choice rule.
+const CHOICE: usize = 1 << (usize::BITS - 1);
+
+/// The rules of a ground program, stored flat: the heads of all rules one after another in one
+/// array, normal bodies in a second and weight bodies in a third, plus one record of three
+/// ends per rule. A rule costs 24 bytes plus 4 per head atom and body literal (16 per weight
+/// literal), without an allocation of its own: a `Vec<Rule>` costs 64 bytes per rule plus a
+/// heap block per non-empty head and body, several times more for the millions of small
+/// constraints some programs ground to.
+///
+/// Invariants: `ends` is non-decreasing in each component (with [`CHOICE`] masked off); rule
+/// `i` spans from the ends of rule `i - 1` (0 for the first) to its own; a weight body starts
+/// with one entry `(0, lower)` holding its bound (no literal is 0), so a rule has a weight body
+/// exactly when its `wlits` range is not empty, and then its `lits` range is empty. Equal rule
+/// sequences have equal stores.
+#[derive(Clone, Default, PartialEq, Eq)]
+pub struct Rules {
+    heads: Vec<Atom>,
+    lits: Vec<Lit>,
+    wlits: Vec<(Lit, Weight)>,
+    ends: Vec<Ends>,
+}
+
+impl Rules {
+    /// No rules.
+    pub fn new() -> Rules {
+        Rules::default()
+    }
+
+    /// The number of rules.
+    pub fn len(&self) -> usize {
+        self.ends.len()
+    }
+
+    /// Whether there are no rules.
+    pub fn is_empty(&self) -> bool {
+        self.ends.is_empty()
+    }
+
+    fn last_ends(&self) -> Ends {
+        self.ends.last().map_or(Ends::default(), |e| Ends {
+            head: e.head & !CHOICE,
+            ..*e
+        })
+    }
+
+    /// Appends a rule.
+    pub fn push_parts(&mut self, head_kind: HeadKind, head: &[Atom], body: BodyRef<'_>) {
+        self.heads.extend_from_slice(head);
+        match body {
+            BodyRef::Normal(lits) => self.lits.extend_from_slice(lits),
+            BodyRef::Weight { lower, lits } => {
+                self.wlits.push((0, lower));
+                self.wlits.extend_from_slice(lits);
+            }
+        }
+        let choice = if head_kind == HeadKind::Choice {
+            CHOICE
+        } else {
+            0
+        };
+        self.ends.push(Ends {
+            head: self.heads.len() | choice,
+            lit: self.lits.len(),
+            wlit: self.wlits.len(),
+        });
+    }
+
+    /// Appends a rule given as a view.
+    pub fn push_ref(&mut self, rule: RuleRef<'_>) {
+        self.push_parts(rule.head_kind, rule.head, rule.body);
+    }
+
+    /// Appends an owned rule (its vectors are copied in and dropped).
+    pub fn push(&mut self, rule: Rule) {
+        self.push_ref(rule.as_ref());
+    }
+
+    /// Rule `i` (panics when `i >= len()`, as slice indexing does).
+    pub fn get(&self, i: usize) -> RuleRef<'_> {
+        let start = if i == 0 {
+            Ends::default()
+        } else {
+            let e = self.ends[i - 1];
+            Ends {
+                head: e.head & !CHOICE,
+                ..e
+            }
+        };
+        self.view(start, self.ends[i])
+    }
+
+    fn view(&self, start: Ends, end: Ends) -> RuleRef<'_> {
+        let head_kind = if end.head & CHOICE != 0 {
+            HeadKind::Choice
+        } else {
+            HeadKind::Disjunction
+        };
+        let body = if end.wlit > start.wlit {
+            let w = &self.wlits[start.wlit..end.wlit];
+            BodyRef::Weight {
+                lower: w[0].1,
+                lits: &w[1..],
+            }
+        } else {
+            BodyRef::Normal(&self.lits[start.lit..end.lit])
+        };
+        RuleRef {
+            head_kind,
+            head: &self.heads[start.head..end.head & !CHOICE],
+            body,
+        }
+    }
+
+    /// The rules in order.
+    pub fn iter(&self) -> RulesIter<'_> {
+        RulesIter {
+            rules: self,
+            next: 0,
+            start: Ends::default(),
+        }
+    }
+
+    /// Owned copies of the rules.
+    pub fn to_vec(&self) -> Vec<Rule> {
+        self.iter().map(RuleRef::to_rule).collect()
+    }
+
+    /// Keeps the first `n` rules.
+    pub fn truncate(&mut self, n: usize) {
+        if n >= self.len() {
+            return;
+        }
+        self.ends.truncate(n);
+        let e = self.last_ends();
+        self.heads.truncate(e.head);
+        self.lits.truncate(e.lit);
+        self.wlits.truncate(e.wlit);
+    }
+
+    /// Releases spare capacity.
+    pub fn shrink_to_fit(&mut self) {
+        self.heads.shrink_to_fit();
+        self.lits.shrink_to_fit();
+        self.wlits.shrink_to_fit();
+        self.ends.shrink_to_fit();
+    }
+
+    /// Renumbers every atom of every rule by `f`; a body literal keeps its sign.
+    pub fn map_atoms(&mut self, f: &mut dyn FnMut(Atom) -> Atom) {
+        self.for_each_head_atom(&mut |a| *a = f(*a));
+        self.for_each_body_lit(&mut |l| {
+            let m = f(l.unsigned_abs()) as Lit;
+            *l = if *l < 0 { -m } else { m };
+        });
+    }
+
+    /// Calls `f` on every body literal (weights kept), in place.
+    fn for_each_body_lit(&mut self, f: &mut dyn FnMut(&mut Lit)) {
+        self.lits.iter_mut().for_each(&mut *f);
+        // The `(0, lower)` entries are bounds, not literals.
+        self.wlits
+            .iter_mut()
+            .filter(|(l, _)| *l != 0)
+            .for_each(|(l, _)| f(l));
+    }
+
+    /// Calls `f` on every head atom, in place.
+    fn for_each_head_atom(&mut self, f: &mut dyn FnMut(&mut Atom)) {
+        self.heads.iter_mut().for_each(f);
+    }
+}
+
+impl std::fmt::Debug for Rules {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.iter()).finish()
+    }
+}
+
+impl PartialEq<Vec<Rule>> for Rules {
+    fn eq(&self, other: &Vec<Rule>) -> bool {
+        self.len() == other.len() && self.iter().zip(other).all(|(a, b)| a == b.as_ref())
+    }
+}
+
+impl From<Vec<Rule>> for Rules {
+    fn from(rules: Vec<Rule>) -> Rules {
+        rules.iter().map(Rule::as_ref).collect()
+    }
+}
+
+impl<'a> FromIterator<RuleRef<'a>> for Rules {
+    fn from_iter<I: IntoIterator<Item = RuleRef<'a>>>(iter: I) -> Rules {
+        let mut rules = Rules::new();
+        rules.extend(iter);
+        rules
+    }
+}
+
+impl<'a> Extend<RuleRef<'a>> for Rules {
+    fn extend<I: IntoIterator<Item = RuleRef<'a>>>(&mut self, iter: I) {
+        for r in iter {
+            self.push_ref(r);
+        }
+    }
+}
+
+impl Extend<Rule> for Rules {
+    fn extend<I: IntoIterator<Item = Rule>>(&mut self, iter: I) {
+        for r in iter {
+            self.push(r);
+        }
+    }
+}
+
+impl<'a> Extend<&'a Rule> for Rules {
+    fn extend<I: IntoIterator<Item = &'a Rule>>(&mut self, iter: I) {
+        for r in iter {
+            self.push_ref(r.as_ref());
+        }
+    }
+}
+
+/// The rules of a [`Rules`] store in order.
+pub struct RulesIter<'a> {
+    rules: &'a Rules,
+    next: usize,
+    start: Ends,
+}
+
+impl<'a> Iterator for RulesIter<'a> {
+    type Item = RuleRef<'a>;
+
+    fn next(&mut self) -> Option<RuleRef<'a>> {
+        let end = *self.rules.ends.get(self.next)?;
+        let r = self.rules.view(self.start, end);
+        self.next += 1;
+        self.start = Ends {
+            head: end.head & !CHOICE,
+            ..end
+        };
+        Some(r)
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        let n = self.rules.len() - self.next;
+        (n, Some(n))
+    }
+}
+
+impl ExactSizeIterator for RulesIter<'_> {}
+
+impl<'a> IntoIterator for &'a Rules {
+    type Item = RuleRef<'a>;
+    type IntoIter = RulesIter<'a>;
+
+    fn into_iter(self) -> RulesIter<'a> {
+        self.iter()
+    }
+}
+
 /// A minimize statement (aspif statement 2): minimize the sum of weights of true literals.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Minimize {
@@ -182,7 +532,7 @@ pub struct GroundProgram {
     /// Largest atom number used.
     pub num_atoms: u32,
     /// Rules, in emission order.
-    pub rules: Vec<Rule>,
+    pub rules: Rules,
     /// Minimize statements.
     pub minimize: Vec<Minimize>,
     /// Projection atoms (`#project`); empty means no projection.
@@ -261,12 +611,7 @@ impl GroundProgram {
             let m = a as Lit;
             *l = if *l < 0 { -m } else { m };
         };
-        for r in &mut self.rules {
-            match &mut r.body {
-                Body::Normal(ls) => ls.iter_mut().for_each(&mut lit),
-                Body::Weight { lits, .. } => lits.iter_mut().for_each(|(l, _)| lit(l)),
-            }
-        }
+        self.rules.for_each_body_lit(&mut lit);
         for m in &mut self.minimize {
             m.lits.iter_mut().for_each(|(l, _)| lit(l));
         }
@@ -280,9 +625,7 @@ impl GroundProgram {
         for e in &mut self.edges {
             e.condition.iter_mut().for_each(&mut lit);
         }
-        for r in &mut self.rules {
-            r.head.iter_mut().for_each(&mut *f);
-        }
+        self.rules.for_each_head_atom(f);
         self.projections.iter_mut().for_each(&mut *f);
         for (a, _) in &mut self.externals {
             f(a);
@@ -311,7 +654,8 @@ mod tests {
         p.rules = vec![
             Rule::choice(&[9, 2147483647], &[]),
             Rule::normal(&[4], &[9, -2147483647]),
-        ];
+        ]
+        .into();
         p.num_atoms = 2147483647;
         p.outputs.push(Output {
             symbol: "b".into(),

@@ -16,7 +16,9 @@
 //! and `origins` stays parallel to `rules`.
 
 use super::instantiate::{AtomId, Grounder};
-use super::program::{Body, CrRule, GroundProgram, HeadKind, Lit, Minimize, Output, Prefer, Rule};
+use super::program::{
+    Body, BodyRef, CrRule, GroundProgram, HeadKind, Lit, Minimize, Output, Prefer, Rule, Rules,
+};
 use super::rewrite::Compiled;
 use super::symbol::SymId;
 
@@ -253,7 +255,8 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         }
     };
     // Simplify the surviving rules.
-    let mut rules: Vec<Rule> = Vec::new();
+    // Stored flat (`Rules`): the program outlives grounding and is held beside the solver.
+    let mut rules = Rules::new();
     let mut origins = Vec::new();
     let mut fact_rule_seen = vec![false; n + 1];
     // The rules are moved out (the grounder's copy is not used after this).
@@ -321,11 +324,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             fact_rule_seen[h] = true;
             status[h - 1] = Status::Fact;
         }
-        rules.push(Rule {
-            head_kind: r.head_kind,
-            head,
-            body,
-        });
+        rules.push_parts(r.head_kind, &head, body.as_ref());
         if g.provenance {
             origins.push(g.origins[ri].clone());
         }
@@ -363,11 +362,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         } else {
             let a = new_aux(g, &mut status);
             for alt in alts {
-                rules.push(Rule {
-                    head_kind: HeadKind::Disjunction,
-                    head: vec![a],
-                    body: Body::Normal(alt),
-                });
+                rules.push_parts(HeadKind::Disjunction, &[a], BodyRef::Normal(&alt));
                 if g.provenance {
                     origins.push(Default::default());
                 }
@@ -381,11 +376,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 // a fact atom.
                 let a = new_aux(g, &mut status);
                 status[a as usize - 1] = Status::Fact;
-                rules.push(Rule {
-                    head_kind: HeadKind::Disjunction,
-                    head: vec![a],
-                    body: Body::Normal(Vec::new()),
-                });
+                rules.push_parts(HeadKind::Disjunction, &[a], BodyRef::Normal(&[]));
                 if g.provenance {
                     origins.push(Default::default());
                 }
@@ -413,9 +404,9 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let use_lit = |l: Lit, used: &mut Vec<bool>| used[l.unsigned_abs() as usize] = true;
     for r in &rules {
         r.head.iter().for_each(|&h| used[h as usize] = true);
-        match &r.body {
-            Body::Normal(ls) => ls.iter().for_each(|&l| use_lit(l, &mut used)),
-            Body::Weight { lits, .. } => lits.iter().for_each(|&(l, _)| use_lit(l, &mut used)),
+        match r.body {
+            BodyRef::Normal(ls) => ls.iter().for_each(|&l| use_lit(l, &mut used)),
+            BodyRef::Weight { lits, .. } => lits.iter().for_each(|&(l, _)| use_lit(l, &mut used)),
         }
     }
     for m in &minimize {
@@ -488,13 +479,8 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut out = GroundProgram::new();
     out.num_atoms = next;
     // Renumbered in place.
-    for r in &mut rules {
-        r.head.iter_mut().for_each(|h| *h = number[*h as usize]);
-        match &mut r.body {
-            Body::Normal(ls) => ls.iter_mut().for_each(|l| *l = map_lit(*l)),
-            Body::Weight { lits, .. } => lits.iter_mut().for_each(|(l, _)| *l = map_lit(*l)),
-        }
-    }
+    rules.map_atoms(&mut |a| number[a as usize]);
+    rules.shrink_to_fit();
     out.rules = rules;
     out.origins = origins;
     out.minimize = minimize

@@ -8,7 +8,7 @@
 
 use std::fmt::Write;
 
-use super::program::{Body, HeadKind, Lit};
+use super::program::{BodyRef, HeadKind, Lit};
 use super::Grounding;
 use crate::base::SourceMap;
 
@@ -53,9 +53,9 @@ pub fn write_text(g: &Grounding, sources: Option<&SourceMap>) -> String {
             }
             HeadKind::Disjunction => out.push_str(&head.join("|")),
         }
-        let body: Vec<String> = match &r.body {
-            Body::Normal(ls) => ls.iter().map(|&l| lit(g, l)).collect(),
-            Body::Weight { lower, lits } => {
+        let body: Vec<String> = match r.body {
+            BodyRef::Normal(ls) => ls.iter().map(|&l| lit(g, l)).collect(),
+            BodyRef::Weight { lower, lits } => {
                 let elems: Vec<String> = lits
                     .iter()
                     .enumerate()

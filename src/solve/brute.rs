@@ -53,7 +53,7 @@ pub fn stable_models(program: &GroundProgram) -> Vec<Vec<Atom>> {
     let n = program.num_atoms as usize;
     let mut can_be_true = vec![false; n + 1];
     for rule in &program.rules {
-        for &h in &rule.head {
+        for &h in rule.head {
             assert!(
                 h as usize <= n,
                 "rule head atom {h} is above num_atoms = {n}"

@@ -36,7 +36,7 @@
 
 use thiserror::Error;
 
-use crate::ground::program::{Atom, Body, ExternalValue, GroundProgram, HeadKind, Lit};
+use crate::ground::program::{Atom, BodyRef, ExternalValue, GroundProgram, HeadKind, Lit};
 
 /// Why a candidate is not a stable model.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
@@ -127,22 +127,22 @@ pub fn check_assignment(program: &GroundProgram, truth: &[bool]) -> Result<(), V
             !v
         }
     };
-    let body_holds = |body: &Body| match body {
-        Body::Normal(lits) => lits.iter().all(|&l| holds(l)),
-        Body::Weight { lower, lits } => {
+    let body_holds = |body: BodyRef<'_>| match body {
+        BodyRef::Normal(lits) => lits.iter().all(|&l| holds(l)),
+        BodyRef::Weight { lower, lits } => {
             let sum: i128 = lits
                 .iter()
                 .filter(|(l, _)| holds(*l))
                 .map(|&(_, w)| i128::from(w))
                 .sum();
-            sum >= i128::from(*lower)
+            sum >= i128::from(lower)
         }
     };
 
     // (1) X is a model of P, of the external values and of the assumptions.
     for (i, rule) in program.rules.iter().enumerate() {
         if rule.head_kind == HeadKind::Disjunction
-            && body_holds(&rule.body)
+            && body_holds(rule.body)
             && !rule.head.iter().any(|&h| holds(h as Lit))
         {
             return Err(Violation::RuleViolated { rule: i });
@@ -195,18 +195,18 @@ pub fn check_assignment(program: &GroundProgram, truth: &[bool]) -> Result<(), V
             continue;
         }
         pos.clear();
-        let lower = match &rule.body {
-            Body::Normal(lits) => {
+        let lower = match rule.body {
+            BodyRef::Normal(lits) => {
                 if lits.iter().any(|&l| l < 0 && !holds(l)) {
                     continue;
                 }
                 pos.extend(lits.iter().filter(|&&l| l > 0).map(|&l| (l as Atom, 1)));
                 pos.len() as i128
             }
-            Body::Weight { lower, lits } => {
+            BodyRef::Weight { lower, lits } => {
                 // A negative weight w on l is the weight -w on the complement of l with the
                 // bound raised by -w, so that the positive part stays monotone.
-                let mut bound = i128::from(*lower);
+                let mut bound = i128::from(lower);
                 for &(l, w) in lits {
                     let (l, w) = if w < 0 {
                         bound -= i128::from(w);
@@ -254,9 +254,11 @@ fn largest_atom(program: &GroundProgram) -> usize {
     let mut m = 0;
     for rule in &program.rules {
         m = rule.head.iter().fold(m, |m, &a| m.max(a));
-        m = match &rule.body {
-            Body::Normal(lits) => lits.iter().fold(m, |m, &l| m.max(l.unsigned_abs())),
-            Body::Weight { lits, .. } => lits.iter().fold(m, |m, &(l, _)| m.max(l.unsigned_abs())),
+        m = match rule.body {
+            BodyRef::Normal(lits) => lits.iter().fold(m, |m, &l| m.max(l.unsigned_abs())),
+            BodyRef::Weight { lits, .. } => {
+                lits.iter().fold(m, |m, &(l, _)| m.max(l.unsigned_abs()))
+            }
         };
     }
     m = program.externals.iter().fold(m, |m, &(a, _)| m.max(a));
@@ -486,7 +488,7 @@ mod tests {
         // a :- b. b :- a.  The only stable model is {}; {a, b} is a model but unfounded.
         let p = GroundProgram {
             num_atoms: 2,
-            rules: vec![Rule::normal(&[1], &[2]), Rule::normal(&[2], &[1])],
+            rules: vec![Rule::normal(&[1], &[2]), Rule::normal(&[2], &[1])].into(),
             ..Default::default()
         };
         assert_eq!(check(&p, &[]), Ok(()));

@@ -91,6 +91,10 @@ pub struct Config {
     pub conflict_limit: Option<u64>,
     /// Bump the variables of loop nogoods when they are learnt (clasp `--score-other=all`).
     pub score_other: bool,
+    /// Decide variables without a saved phase with the polarity that occurs more often in
+    /// learnt clauses (clasp's VSIDS sign score). Only matters when phases are rarely saved
+    /// (`save_progress` > 0); `SearchProfile::Auto` turns it on with the tweety values.
+    pub sign_from_learnts: bool,
     /// Merge atoms equivalent to a literal or to a rule body by their completion before search
     /// (clasp `--eq`; see `translate::equivalences`). Off by default: with the current
     /// heuristic it did not reduce conflicts over the benchmark pairs (fewer variables, but a
@@ -108,10 +112,11 @@ pub struct Config {
 /// Which search settings apply.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum SearchProfile {
-    /// `var_decay`, `restarts` and `save_progress` as configured, except for programs with
-    /// positive loops (an unfounded-set propagator is installed) and no `#minimize`: these get
-    /// clasp's `tweety` values instead (decay 0.92, Luby restarts with unit 60, save-progress
-    /// 160). An empirical choice, measured in conflicts over the benchmark pairs: the tweety
+    /// `var_decay`, `restarts`, `save_progress` and `sign_from_learnts` as configured, except
+    /// for programs with positive loops (an unfounded-set propagator is installed) and no
+    /// `#minimize`: these get clasp's `tweety` values instead (decay 0.92, Luby restarts with
+    /// unit 60, save-progress 160, and clasp's sign score from learnt-clause occurrences for
+    /// variables without a saved phase). An empirical choice, measured in conflicts over the benchmark pairs: the tweety
     /// values cut the conflicts on the labyrinth instances by 5 to 13 times, but cost 2 to 4
     /// times more on tight programs (pigeon, color, hanoi) and up to 15 times more on the
     /// non-tight optimization problem tsp.
@@ -171,6 +176,7 @@ impl Default for Config {
                 inc: 300,
             },
             score_other: false,
+            sign_from_learnts: false,
             conflict_limit: None,
             eq: false,
             incremental: false,

@@ -30,6 +30,8 @@ pub type ClauseRef = u32;
 const HEADER: usize = 3;
 const FLAG_LEARNT: u32 = 1;
 const FLAG_DELETED: u32 = 2;
+/// "None" in the per-variable `u32` indexes (`heap_pos`, `stored_slot`, `weight_slot`).
+const NO_SLOT: u32 = u32::MAX;
 
 /// Why a variable has its value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -151,24 +153,36 @@ pub struct Engine {
     level: Vec<u32>,
     /// Per variable: why it is assigned.
     reason: Vec<Reason>,
-    /// Per variable: stored explanation (implied literal first, then false literals).
+    /// Per variable: its buffer in `stored`, or `NO_SLOT` if it never had a stored reason.
+    /// Few variables are ever implied by a weight constraint, so the buffers live in a pool
+    /// and the per-variable cost is four bytes instead of an empty `Vec` header (24 bytes).
+    stored_slot: Vec<u32>,
+    /// Stored explanations (implied literal first, then false literals), one buffer per
+    /// variable that had one; reused when the variable is implied again.
     stored: Vec<Vec<Lit>>,
     /// Per variable: saved phase (last value).
     phase: Vec<bool>,
+    /// Per variable: whether `phase` was saved by a backjump (not the initial sign).
+    phase_saved: Vec<bool>,
+    /// Per variable: occurrences in learnt clauses, +1 per positive and -1 per negative
+    /// literal (clasp's sign score, used when `sign_from_learnts` is set).
+    occ: Vec<i32>,
     /// Per variable: VSIDS activity.
     activity: Vec<f64>,
-    /// Per variable: position in `heap`, or `usize::MAX`.
-    heap_pos: Vec<usize>,
+    /// Per variable: position in `heap`, or `NO_SLOT`.
+    heap_pos: Vec<u32>,
     /// Per variable: whether it may be chosen as a decision.
     decidable: Vec<bool>,
     /// Per variable: scratch mark used by conflict analysis.
     seen: Vec<u8>,
-    /// Per variable: occurrences in weight constraints (the head occurs with weight 0).
+    /// Per variable: its list in `weight_watch`, or `NO_SLOT` when the variable occurs in no
+    /// weight constraint. Four bytes per variable, so that the (usually many) variables
+    /// outside every weight constraint cost no `Vec` header, and their propagation and
+    /// backtracking test one small word instead of loading a header from a cold cache line.
+    weight_slot: Vec<u32>,
+    /// Occurrences in weight constraints (the head occurs with weight 0), one list per
+    /// variable that has a `weight_slot`.
     weight_watch: Vec<Vec<WeightWatch>>,
-    /// Per variable: whether `weight_watch` is non-empty. One byte per variable, so that
-    /// propagation and backtracking of the (usually many) variables outside every weight
-    /// constraint do not load a 24-byte `Vec` header from a cold cache line.
-    weighted: Vec<bool>,
     /// Per literal code: watches of clauses in which that literal is watched.
     watches: Vec<Vec<Watch>>,
     /// The clause arena: headers followed by literal codes.
@@ -274,6 +288,10 @@ pub struct Engine {
     pub conflict_limit: Option<u64>,
     /// Bump the variables of every loop nogood when it is learnt (clasp `--score-other=all`).
     pub score_other: bool,
+    /// Choose the sign of a decision variable without a saved phase from its occurrences in
+    /// learnt clauses (the polarity that satisfies more of them), as clasp's VSIDS does;
+    /// ties fall back to the initial sign.
+    pub sign_from_learnts: bool,
 }
 
 impl Default for Engine {
@@ -289,14 +307,17 @@ impl Engine {
             values: Vec::new(),
             level: Vec::new(),
             reason: Vec::new(),
+            stored_slot: Vec::new(),
             stored: Vec::new(),
             phase: Vec::new(),
+            phase_saved: Vec::new(),
+            occ: Vec::new(),
             activity: Vec::new(),
             heap_pos: Vec::new(),
             decidable: Vec::new(),
             seen: Vec::new(),
+            weight_slot: Vec::new(),
             weight_watch: Vec::new(),
-            weighted: Vec::new(),
             watches: Vec::new(),
             arena: Vec::new(),
             wasted: 0,
@@ -350,6 +371,7 @@ impl Engine {
             lbd_stamp: 0,
             init_moms: false,
             score_other: false,
+            sign_from_learnts: false,
             conflict_limit: None,
         }
     }
@@ -377,14 +399,13 @@ impl Engine {
         self.values.reserve(2 * additional);
         self.level.reserve(additional);
         self.reason.reserve(additional);
-        self.stored.reserve(additional);
+        self.stored_slot.reserve(additional);
         self.phase.reserve(additional);
         self.activity.reserve(additional);
         self.heap_pos.reserve(additional);
         self.decidable.reserve(additional);
         self.seen.reserve(additional);
-        self.weight_watch.reserve(additional);
-        self.weighted.reserve(additional);
+        self.weight_slot.reserve(additional);
         self.uf_relevant.reserve(additional);
         self.watches.reserve(2 * additional);
         self.heap.reserve(additional);
@@ -397,14 +418,15 @@ impl Engine {
         self.values.push(0);
         self.level.push(0);
         self.reason.push(Reason::Decision);
-        self.stored.push(Vec::new());
+        self.stored_slot.push(NO_SLOT);
         self.phase.push(self.default_phase);
+        self.phase_saved.push(false);
+        self.occ.push(0);
         self.activity.push(0.0);
-        self.heap_pos.push(usize::MAX);
+        self.heap_pos.push(NO_SLOT);
         self.decidable.push(true);
         self.seen.push(0);
-        self.weight_watch.push(Vec::new());
-        self.weighted.push(false);
+        self.weight_slot.push(NO_SLOT);
         self.uf_relevant.push(false);
         self.watches.push(Vec::new());
         self.watches.push(Vec::new());
@@ -431,8 +453,8 @@ impl Engine {
     /// Bumps the initial activity of a variable so it is decided early.
     pub fn bump_initial(&mut self, v: Var, amount: f64) {
         self.activity[v.index()] += amount;
-        if self.heap_pos[v.index()] != usize::MAX {
-            self.heap_up(self.heap_pos[v.index()]);
+        if self.heap_pos[v.index()] != NO_SLOT {
+            self.heap_up(self.heap_pos[v.index()] as usize);
         }
     }
 
@@ -518,10 +540,11 @@ impl Engine {
         for i in (start..self.trail.len()).rev() {
             let l = self.trail[i];
             let v = l.var();
-            if i < self.qhead && self.weighted[v.index()] {
+            let slot = self.weight_slot[v.index()];
+            if i < self.qhead && slot != NO_SLOT {
                 // Undo the weight counters of processed assignments.
-                for k in 0..self.weight_watch[v.index()].len() {
-                    let w = self.weight_watch[v.index()][k];
+                for k in 0..self.weight_watch[slot as usize].len() {
+                    let w = self.weight_watch[slot as usize][k];
                     let c = &mut self.weights[w.id as usize];
                     if w.lit == l {
                         c.sum_true -= w.weight;
@@ -534,8 +557,9 @@ impl Engine {
             self.values[(!l).code()] = 0;
             if save {
                 self.phase[v.index()] = !l.is_neg();
+                self.phase_saved[v.index()] = true;
             }
-            if self.heap_pos[v.index()] == usize::MAX && self.decidable[v.index()] {
+            if self.heap_pos[v.index()] == NO_SLOT && self.decidable[v.index()] {
                 self.heap_insert(v);
             }
         }
@@ -731,24 +755,24 @@ impl Engine {
         let id = self.weights.len() as u32;
         let (mut sum_true, mut sum_false) = (0u64, 0u64);
         for &(l, w) in &norm {
-            self.weight_watch[l.var().index()].push(WeightWatch {
+            let slot = self.weight_slot_of(l.var());
+            self.weight_watch[slot].push(WeightWatch {
                 id,
                 lit: l,
                 weight: w,
             });
-            self.weighted[l.var().index()] = true;
             match self.val(l) {
                 1 => sum_true += w,
                 -1 => sum_false += w,
                 _ => {}
             }
         }
-        self.weight_watch[head.var().index()].push(WeightWatch {
+        let slot = self.weight_slot_of(head.var());
+        self.weight_watch[slot].push(WeightWatch {
             id,
             lit: head,
             weight: 0,
         });
-        self.weighted[head.var().index()] = true;
         let total = norm.iter().map(|&(_, w)| w).sum();
         let max_weight = norm.iter().map(|&(_, w)| w).max().unwrap_or(0);
         self.weights.push(WeightConstraint {
@@ -769,6 +793,15 @@ impl Engine {
         true
     }
 
+    /// The index in `weight_watch` of `v`'s occurrence list, made on first use.
+    fn weight_slot_of(&mut self, v: Var) -> usize {
+        if self.weight_slot[v.index()] == NO_SLOT {
+            self.weight_slot[v.index()] = self.weight_watch.len() as u32;
+            self.weight_watch.push(Vec::new());
+        }
+        self.weight_slot[v.index()] as usize
+    }
+
     /// Detaches the weight constraint whose literal is `head` (if `add_weight` made one), at
     /// level 0. Its head variable becomes unconstrained by it; clauses learnt with its help
     /// stay valid for every assignment of the other variables (the constraint only defined
@@ -787,8 +820,11 @@ impl Engine {
         let lits = std::mem::take(&mut c.lits);
         let idu = id as u32;
         for v in lits.iter().map(|&(l, _)| l.var()).chain([head.var()]) {
-            self.weight_watch[v.index()].retain(|w| w.id != idu);
-            self.weighted[v.index()] = !self.weight_watch[v.index()].is_empty();
+            // The slot stays (possibly with an empty list): propagation then finds nothing.
+            let slot = self.weight_slot[v.index()];
+            if slot != NO_SLOT {
+                self.weight_watch[slot as usize].retain(|w| w.id != idu);
+            }
         }
     }
 
@@ -823,8 +859,9 @@ impl Engine {
             }
             for mut ng in nogoods {
                 self.loop_nogoods += 1;
-                if self.score_other {
-                    for &l in &ng {
+                for &l in &ng {
+                    self.occ[l.var().index()] += if l.is_neg() { -1 } else { 1 };
+                    if self.score_other {
                         self.bump_var(l.var());
                     }
                 }
@@ -851,7 +888,8 @@ impl Engine {
                 k += 1;
             }
             self.pf_head = k;
-            if !self.weighted[p.var().index()] {
+            let slot = self.weight_slot[p.var().index()];
+            if slot == NO_SLOT {
                 if self.propagate_clauses(p) {
                     return true;
                 }
@@ -859,8 +897,9 @@ impl Engine {
             }
             // Count `p` in its weight constraints now: backtracking undoes every processed
             // position, even when a clause conflict stops this iteration early.
-            for k in 0..self.weight_watch[p.var().index()].len() {
-                let w = self.weight_watch[p.var().index()][k];
+            let slot = slot as usize;
+            for k in 0..self.weight_watch[slot].len() {
+                let w = self.weight_watch[slot][k];
                 let c = &mut self.weights[w.id as usize];
                 if w.lit == p {
                     c.sum_true += w.weight;
@@ -871,7 +910,7 @@ impl Engine {
             if self.propagate_clauses(p) {
                 return true;
             }
-            let wl = std::mem::take(&mut self.weight_watch[p.var().index()]);
+            let wl = std::mem::take(&mut self.weight_watch[slot]);
             let mut wconflict = false;
             for w in &wl {
                 if self.weight_may_propagate(w.id as usize) && self.propagate_weight(w.id as usize)
@@ -880,7 +919,7 @@ impl Engine {
                     break;
                 }
             }
-            self.weight_watch[p.var().index()] = wl;
+            self.weight_watch[slot] = wl;
             if wconflict {
                 return true;
             }
@@ -1102,12 +1141,18 @@ impl Engine {
     /// Assigns `l` with a stored explanation: `l`, then `extra` if given, then the literals of
     /// `weight_lits(id, of_true)`. Reuses the variable's explanation buffer.
     fn assign_weight_implied(&mut self, l: Lit, extra: Option<Lit>, id: usize, of_true: bool) {
-        let mut r = std::mem::take(&mut self.stored[l.var().index()]);
+        let v = l.var().index();
+        if self.stored_slot[v] == NO_SLOT {
+            self.stored_slot[v] = self.stored.len() as u32;
+            self.stored.push(Vec::new());
+        }
+        let slot = self.stored_slot[v] as usize;
+        let mut r = std::mem::take(&mut self.stored[slot]);
         r.clear();
         r.push(l);
         r.extend(extra);
         self.weight_lits(id, of_true, &mut r);
-        self.stored[l.var().index()] = r;
+        self.stored[slot] = r;
         self.assign(l, Reason::Stored);
     }
 
@@ -1124,7 +1169,7 @@ impl Engine {
                 out.extend(lits[1..].iter().map(|&x| Lit::from_code(x)));
             }
             Reason::Stored => out.extend(
-                self.stored[v.index()]
+                self.stored[self.stored_slot[v.index()] as usize]
                     .iter()
                     .copied()
                     .filter(|l| l.var() != v),
@@ -1204,6 +1249,10 @@ impl Engine {
             }
         }
         learnt.truncate(kept);
+        for &l in &learnt {
+            let v = l.var();
+            self.occ[v.index()] += if l.is_neg() { -1 } else { 1 };
+        }
         for &v in &to_clear {
             self.seen[v.index()] = 0;
         }
@@ -1317,8 +1366,8 @@ impl Engine {
             }
             self.var_inc *= 1e-100;
         }
-        if self.heap_pos[v.index()] != usize::MAX {
-            self.heap_up(self.heap_pos[v.index()]);
+        if self.heap_pos[v.index()] != NO_SLOT {
+            self.heap_up(self.heap_pos[v.index()] as usize);
         }
     }
 
@@ -1343,12 +1392,12 @@ impl Engine {
     }
 
     fn heap_insert(&mut self, v: Var) {
-        if self.heap_pos[v.index()] != usize::MAX || !self.decidable[v.index()] {
+        if self.heap_pos[v.index()] != NO_SLOT || !self.decidable[v.index()] {
             return;
         }
         self.heap.push(v);
         let i = self.heap.len() - 1;
-        self.heap_pos[v.index()] = i;
+        self.heap_pos[v.index()] = i as u32;
         self.heap_up(i);
     }
 
@@ -1360,11 +1409,11 @@ impl Engine {
                 break;
             }
             self.heap[i] = self.heap[parent];
-            self.heap_pos[self.heap[i].index()] = i;
+            self.heap_pos[self.heap[i].index()] = i as u32;
             i = parent;
         }
         self.heap[i] = v;
-        self.heap_pos[v.index()] = i;
+        self.heap_pos[v.index()] = i as u32;
     }
 
     fn heap_down(&mut self, mut i: usize) {
@@ -1385,11 +1434,11 @@ impl Engine {
                 break;
             }
             self.heap[i] = self.heap[c];
-            self.heap_pos[self.heap[i].index()] = i;
+            self.heap_pos[self.heap[i].index()] = i as u32;
             i = c;
         }
         self.heap[i] = v;
-        self.heap_pos[v.index()] = i;
+        self.heap_pos[v.index()] = i as u32;
     }
 
     fn heap_pop(&mut self) -> Option<Var> {
@@ -1398,7 +1447,7 @@ impl Engine {
         }
         let top = self.heap[0];
         let last = self.heap.pop().expect("non-empty heap");
-        self.heap_pos[top.index()] = usize::MAX;
+        self.heap_pos[top.index()] = NO_SLOT;
         if !self.heap.is_empty() {
             self.heap[0] = last;
             self.heap_pos[last.index()] = 0;
@@ -1415,6 +1464,16 @@ impl Engine {
         self.rng.wrapping_mul(0x2545_F491_4F6C_DD1D)
     }
 
+    /// The sign to decide `v` with: its saved phase, else (with `sign_from_learnts`) the
+    /// polarity occurring more often in learnt clauses, else its initial sign.
+    fn decision_sign(&self, v: Var) -> bool {
+        let i = v.index();
+        if self.sign_from_learnts && !self.phase_saved[i] && self.occ[i] != 0 {
+            return self.occ[i] > 0;
+        }
+        self.phase[i]
+    }
+
     fn pick_branch(&mut self) -> Option<Lit> {
         if self.random_permille > 0
             && !self.heap.is_empty()
@@ -1423,12 +1482,12 @@ impl Engine {
             let k = (self.next_random() % self.heap.len() as u64) as usize;
             let v = self.heap[k];
             if self.val(v.positive()) == 0 {
-                return Some(Lit::new(v, self.phase[v.index()]));
+                return Some(Lit::new(v, self.decision_sign(v)));
             }
         }
         while let Some(v) = self.heap_pop() {
             if self.val(v.positive()) == 0 && self.decidable[v.index()] {
-                return Some(Lit::new(v, self.phase[v.index()]));
+                return Some(Lit::new(v, self.decision_sign(v)));
             }
         }
         None
@@ -1482,45 +1541,66 @@ impl Engine {
         }
     }
 
-    /// Copies live clauses into a fresh arena and rebuilds the watch lists.
+    /// Moves the live clauses to the front of the arena, in order, and redirects the watch
+    /// lists, reasons and learnt references. In place, so that the peak memory holds one
+    /// arena, not the old one and a growing copy: a first pass writes each live clause's new
+    /// position into its activity word (keeping the activities aside), the references are
+    /// redirected through that word, and a second pass moves the clauses and puts the
+    /// activities back.
     fn collect_garbage(&mut self) {
-        let old = std::mem::take(&mut self.arena);
-        let mut map: hashbrown::HashMap<u32, u32> = hashbrown::HashMap::new();
-        let mut pos = 0usize;
-        while pos < old.len() {
-            let len = old[pos] as usize;
-            if old[pos + 1] & FLAG_DELETED == 0 {
-                map.insert(pos as u32, self.arena.len() as u32);
-                self.arena.extend_from_slice(&old[pos..pos + HEADER + len]);
+        let mut activities = Vec::with_capacity(self.learnts.len());
+        let (mut pos, mut to) = (0usize, 0usize);
+        while pos < self.arena.len() {
+            let len = self.arena[pos] as usize;
+            if self.arena[pos + 1] & FLAG_DELETED == 0 {
+                activities.push(self.arena[pos + 2]);
+                self.arena[pos + 2] = to as u32;
+                to += HEADER + len;
             }
             pos += HEADER + len;
         }
+        let arena = &self.arena;
+        let live = |c: u32| arena[c as usize + 1] & FLAG_DELETED == 0;
         for ws in self.watches.iter_mut() {
             ws.retain_mut(|w| {
                 if w.cref == u32::MAX {
-                    return true;
-                }
-                match map.get(&w.cref) {
-                    Some(&n) => {
-                        w.cref = n;
-                        true
-                    }
-                    None => false,
+                    true
+                } else if live(w.cref) {
+                    w.cref = arena[w.cref as usize + 2];
+                    true
+                } else {
+                    false
                 }
             });
         }
-        for r in self.reason.iter_mut() {
+        // Only assigned variables have meaningful reasons; an unassigned one may hold a stale
+        // reference that is not a clause start any more, so it is cleared, never followed.
+        for (v, r) in self.reason.iter_mut().enumerate() {
             if let Reason::Long(c) = r {
-                if let Some(&n) = map.get(c) {
-                    *c = n;
+                if self.values[2 * v] != 0 && live(*c) {
+                    *c = arena[*c as usize + 2];
                 } else {
                     *r = Reason::Decision;
                 }
             }
         }
         for c in self.learnts.iter_mut() {
-            *c = map[c];
+            debug_assert!(live(*c), "learnt references are live");
+            *c = arena[*c as usize + 2];
         }
+        let (mut pos, mut to) = (0usize, 0usize);
+        let mut live_index = 0;
+        while pos < self.arena.len() {
+            let len = self.arena[pos] as usize;
+            if self.arena[pos + 1] & FLAG_DELETED == 0 {
+                self.arena.copy_within(pos..pos + HEADER + len, to);
+                self.arena[to + 2] = activities[live_index];
+                live_index += 1;
+                to += HEADER + len;
+            }
+            pos += HEADER + len;
+        }
+        self.arena.truncate(to);
         self.wasted = 0;
     }
 
@@ -1547,13 +1627,17 @@ impl Engine {
             let values = &self.values;
             self.watches[code].retain(|w| w.cref == u32::MAX && values[w.other.code()] == 0);
         }
-        let old = std::mem::take(&mut self.arena);
+        // In place (see `collect_garbage`): a clause only shrinks or goes, so the write
+        // position never passes the read position, and a clause's literals are read before
+        // its new place is written.
         let mut learnts = Vec::with_capacity(self.learnts.len());
         let mut lits: Vec<Lit> = Vec::new();
-        let mut pos = 0usize;
-        while pos < old.len() {
-            let len = old[pos] as usize;
-            let flags = old[pos + 1];
+        let (mut pos, mut to) = (0usize, 0usize);
+        let end = self.arena.len();
+        while pos < end {
+            let len = self.arena[pos] as usize;
+            let flags = self.arena[pos + 1];
+            let activity = self.arena[pos + 2];
             let next = pos + HEADER + len;
             if flags & FLAG_DELETED != 0 {
                 pos = next;
@@ -1561,8 +1645,8 @@ impl Engine {
             }
             lits.clear();
             let mut satisfied = false;
-            for &c in &old[pos + HEADER..next] {
-                let l = Lit::from_code(c);
+            for k in pos + HEADER..next {
+                let l = Lit::from_code(self.arena[k]);
                 match self.values[l.code()] {
                     1 => {
                         satisfied = true;
@@ -1577,11 +1661,14 @@ impl Engine {
                 if lits.len() == 2 {
                     self.watch_binary(lits[0], lits[1]);
                 } else {
-                    let cref = self.arena.len() as u32;
-                    self.arena.push(lits.len() as u32);
-                    self.arena.push(flags);
-                    self.arena.push(old[pos + 2]);
-                    self.arena.extend(lits.iter().map(|l| l.code() as u32));
+                    let cref = to as u32;
+                    self.arena[to] = lits.len() as u32;
+                    self.arena[to + 1] = flags;
+                    self.arena[to + 2] = activity;
+                    for (k, l) in lits.iter().enumerate() {
+                        self.arena[to + HEADER + k] = l.code() as u32;
+                    }
+                    to += HEADER + lits.len();
                     self.watches[lits[0].code()].push(Watch {
                         cref,
                         other: lits[1],
@@ -1597,6 +1684,7 @@ impl Engine {
             }
             pos = next;
         }
+        self.arena.truncate(to);
         self.learnts = learnts;
         self.wasted = 0;
         self.simp_assigns = self.trail.len();
@@ -1650,7 +1738,7 @@ impl Engine {
         let vars: Vec<Var> = self.heap.clone();
         self.heap.clear();
         for v in vars {
-            self.heap_pos[v.index()] = usize::MAX;
+            self.heap_pos[v.index()] = NO_SLOT;
         }
         for v in 0..n {
             self.heap_insert(Var::new(v));

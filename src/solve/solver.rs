@@ -25,7 +25,7 @@ use super::engine::{Engine, Restarts, SearchResult};
 use super::lit::Lit;
 use super::result::{Model, Outcome, SolveResult, Stats, StopReason};
 use super::translate::{max_atom, Translation};
-use crate::ground::program::{Body, GroundProgram, HeadKind, Rule};
+use crate::ground::program::{BodyRef, GroundProgram, HeadKind, Rule};
 use hashbrown::HashSet;
 use std::time::Instant;
 
@@ -132,6 +132,7 @@ impl Solver {
         engine.body_phase = config.body_phase_true;
         engine.save_progress = config.save_progress;
         engine.score_other = config.score_other;
+        engine.sign_from_learnts = config.sign_from_learnts;
         engine.conflict_limit = config.conflict_limit;
         engine.restarts = restart_state(config.restarts);
         prog.num_atoms = max_atom(&prog);
@@ -140,7 +141,7 @@ impl Solver {
         if !prog.externals.is_empty() {
             let mut defined = vec![false; prog.num_atoms as usize + 1];
             for r in &prog.rules {
-                for &h in &r.head {
+                for &h in r.head {
                     defined[h as usize] = true;
                 }
             }
@@ -160,6 +161,7 @@ impl Solver {
             engine.configure(0.92, config.seed);
             engine.restarts = restart_state(RestartPolicy::Luby(60));
             engine.save_progress = 160;
+            engine.sign_from_learnts = true;
         }
         let cr_lits = prog
             .cr_rules
@@ -232,7 +234,7 @@ impl Solver {
     pub fn add_rules(&mut self, rules: &[Rule]) -> Result<(), SolveError> {
         let old_n = self.prog.num_atoms;
         let mut grown = self.prog.clone();
-        grown.rules.extend_from_slice(rules);
+        grown.rules.extend(rules);
         let new_n = max_atom(&grown);
         if self.step_guard.is_none() {
             for r in rules {
@@ -257,8 +259,7 @@ impl Solver {
         self.prog = grown;
         self.prog.num_atoms = new_n;
         for (k, r) in rules.iter().enumerate() {
-            let r = r.clone();
-            self.tr.add_rule(&mut self.engine, first + k, &r);
+            self.tr.add_rule(&mut self.engine, first + k, r.as_ref());
         }
         // A rule for an external atom makes it an ordinary atom, defined by its rules (clingo:
         // an atom is external until it is released or defined by a rule; `Solver::new` drops
@@ -621,8 +622,8 @@ impl Solver {
             // The reduct's body over the smaller model Y: positive literals vary, negative
             // ones are fixed by M.
             let mut clause_body: Vec<Lit> = Vec::new();
-            match &r.body {
-                Body::Normal(ls) => {
+            match r.body {
+                BodyRef::Normal(ls) => {
                     if ls.iter().any(|&l| l < 0 && !holds(l)) {
                         continue;
                     }
@@ -633,7 +634,7 @@ impl Solver {
                         clause_body.push(!vars[l as usize].expect("positive body atom is in M"));
                     }
                 }
-                Body::Weight { lower, lits } => {
+                BodyRef::Weight { lower, lits } => {
                     let mut fixed = 0i64;
                     let mut var_lits = Vec::new();
                     for &(l, w) in lits {
@@ -1338,23 +1339,23 @@ pub fn supports(p: &GroundProgram, atoms: &[u32]) -> Vec<Option<usize>> {
         loop {
             let mut changed = false;
             for (ri, r) in p.rules.iter().enumerate() {
-                let body_ok = match &r.body {
-                    Body::Normal(ls) => ls
+                let body_ok = match r.body {
+                    BodyRef::Normal(ls) => ls
                         .iter()
                         .all(|&l| holds(l) && (l < 0 || derived[l as usize])),
-                    Body::Weight { lower, lits } => {
+                    BodyRef::Weight { lower, lits } => {
                         let s: i64 = lits
                             .iter()
                             .filter(|&&(l, _)| holds(l) && (l < 0 || derived[l as usize]))
                             .map(|&(_, w)| w)
                             .sum();
-                        s >= *lower
+                        s >= lower
                     }
                 };
                 if !body_ok {
                     continue;
                 }
-                for &h in &r.head {
+                for &h in r.head {
                     let hu = h as usize;
                     if hu > n || !in_m[hu] || derived[hu] {
                         continue;

@@ -28,7 +28,7 @@
 use super::engine::Engine;
 use super::lit::Lit;
 use super::unfounded::{Support, SupportBody, Unfounded};
-use crate::ground::program::{Body, ExternalValue, GroundProgram, HeadKind, Rule};
+use crate::ground::program::{BodyRef, ExternalValue, GroundProgram, HeadKind, RuleRef};
 use hashbrown::{DefaultHashBuilder, HashMap, HashTable};
 use smallvec::SmallVec;
 use std::hash::BuildHasher;
@@ -76,9 +76,9 @@ pub fn max_atom(p: &GroundProgram) -> u32 {
     let lit_atom = |l: i32| l.unsigned_abs();
     for r in &p.rules {
         m = m.max(r.head.iter().copied().max().unwrap_or(0));
-        match &r.body {
-            Body::Normal(ls) => m = m.max(ls.iter().map(|&l| lit_atom(l)).max().unwrap_or(0)),
-            Body::Weight { lits, .. } => {
+        match r.body {
+            BodyRef::Normal(ls) => m = m.max(ls.iter().map(|&l| lit_atom(l)).max().unwrap_or(0)),
+            BodyRef::Weight { lits, .. } => {
                 m = m.max(lits.iter().map(|&(l, _)| lit_atom(l)).max().unwrap_or(0))
             }
         }
@@ -122,16 +122,6 @@ impl Translation {
 
     /// A literal equivalent to the conjunction of `lits`.
     pub fn conjunction(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
-        self.conjunction_as(e, lits, true)
-    }
-
-    /// The literal of the conjunction of `lits`, where `to_lits` says whether the clauses
-    /// `b -> l` are needed. Without them the literal only follows from its literals
-    /// (`l1 and .. and lk -> b`), which is all an integrity constraint needs: its body literal is
-    /// made false at once, so `b -> l` would be satisfied at level 0 from then on (and dropped by
-    /// the engine's level-0 simplification before the search; the search is the same either
-    /// way), and a later rule with the same body shares the false literal.
-    fn conjunction_as(&mut self, e: &mut Engine, lits: &[Lit], to_lits: bool) -> Lit {
         let key = conj_key(lits);
         if key.is_empty() {
             return self.true_lit();
@@ -144,8 +134,32 @@ impl Translation {
             return b;
         }
         let b = e.new_body_var().positive();
-        self.insert_conj(e, key, hash, b, to_lits);
+        self.insert_conj(e, key, hash, b);
         b
+    }
+
+    /// The body literal of an integrity constraint `:- lits.`, which the caller makes false.
+    /// A body of two or more literals that no earlier rule has becomes the clause
+    /// `not l1 or .. or not lk` directly, as clasp writes it, and the answer is the false
+    /// literal: a variable of its own would only be false at level 0 (with the level-0
+    /// simplification leaving the same clause), yet cost its per-variable arrays, which on
+    /// programs made mostly of constraints (stable marriage, queens) was most of the memory.
+    /// A later rule with the same body gets a body variable of its own.
+    fn constraint_body(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
+        let key = conj_key(lits);
+        if key.is_empty() {
+            return self.true_lit();
+        }
+        if key.len() == 1 {
+            return Lit::from_code(key[0]);
+        }
+        let hash = self.conj_hasher.hash_one(&key[..]);
+        if let Some(b) = self.find_conj(hash, &key) {
+            return b;
+        }
+        let clause: Vec<Lit> = key.iter().map(|&c| !Lit::from_code(c)).collect();
+        e.add_clause(&clause);
+        !self.true_lit()
     }
 
     /// The literal already standing for the conjunction `key` (sorted codes), if any.
@@ -159,14 +173,12 @@ impl Translation {
     }
 
     /// Makes `b` stand for the conjunction `key` (sorted codes, at least two, hashed to `hash`):
-    /// the clause `key -> b`, the clauses `b -> l` when `to_lits`, and the table entry.
-    fn insert_conj(&mut self, e: &mut Engine, key: Vec<u32>, hash: u64, b: Lit, to_lits: bool) {
+    /// the clause `key -> b`, the clauses `b -> l`, and the table entry.
+    fn insert_conj(&mut self, e: &mut Engine, key: Vec<u32>, hash: u64, b: Lit) {
         let mut big = vec![b];
         for &c in &key {
             let l = Lit::from_code(c);
-            if to_lits {
-                e.add_clause(&[!b, l]);
-            }
+            e.add_clause(&[!b, l]);
             big.push(!l);
         }
         e.add_clause(&big);
@@ -181,13 +193,17 @@ impl Translation {
 
     /// The literal of a rule body; `constraint` when the rule is an integrity constraint (its
     /// body literal is made false right after).
-    fn body_lit(&mut self, e: &mut Engine, body: &Body, constraint: bool) -> Lit {
+    fn body_lit(&mut self, e: &mut Engine, body: BodyRef<'_>, constraint: bool) -> Lit {
         match body {
-            Body::Normal(ls) => {
+            BodyRef::Normal(ls) => {
                 let lits: Vec<Lit> = ls.iter().map(|&l| self.lit(l)).collect();
-                self.conjunction_as(e, &lits, !constraint)
+                if constraint {
+                    self.constraint_body(e, &lits)
+                } else {
+                    self.conjunction(e, &lits)
+                }
             }
-            Body::Weight { lower, lits } => {
+            BodyRef::Weight { lower, lits } => {
                 let mut key: Vec<(u32, i64)> = lits
                     .iter()
                     .map(|&(l, w)| (self.lit(l).code() as u32, w))
@@ -202,14 +218,14 @@ impl Translation {
                         false
                     }
                 });
-                if let Some(&b) = self.weights.get(&(*lower, key.clone())) {
+                if let Some(&b) = self.weights.get(&(lower, key.clone())) {
                     return b;
                 }
                 let b = e.new_body_var().positive();
                 let wl: Vec<(Lit, i64)> =
                     key.iter().map(|&(c, w)| (Lit::from_code(c), w)).collect();
-                e.add_weight(b, &wl, *lower);
-                self.weights.insert((*lower, key), b);
+                e.add_weight(b, &wl, lower);
+                self.weights.insert((lower, key), b);
                 b
             }
         }
@@ -258,7 +274,7 @@ impl Translation {
         // An atom whose only rule is `a :- B` (B of two or more literals) stands for B itself.
         for (a, q) in eqs.iter().enumerate() {
             if let Equiv::Body(ri) = *q {
-                if let Body::Normal(ls) = &p.rules[ri].body {
+                if let BodyRef::Normal(ls) = p.rules.get(ri).body {
                     let lits: Vec<Lit> = ls.iter().map(|&l| t.lit(l)).collect();
                     t.define_conjunction(e, &lits, t.atom_lit[a]);
                 }
@@ -302,7 +318,7 @@ impl Translation {
         }
         let hash = self.conj_hasher.hash_one(&key[..]);
         if self.find_conj(hash, &key).is_none() {
-            self.insert_conj(e, key, hash, x, true);
+            self.insert_conj(e, key, hash, x);
         }
     }
 
@@ -338,12 +354,12 @@ impl Translation {
     }
 
     /// Adds the clauses of one rule (its body, its head clause and its supports).
-    pub fn add_rule(&mut self, e: &mut Engine, index: usize, r: &Rule) {
+    pub fn add_rule(&mut self, e: &mut Engine, index: usize, r: RuleRef<'_>) {
         let constraint = r.head_kind == HeadKind::Disjunction && r.head.is_empty();
-        let b = self.body_lit(e, &r.body, constraint);
+        let b = self.body_lit(e, r.body, constraint);
         self.rule_body.push(b);
         debug_assert_eq!(self.rule_body.len(), index + 1);
-        let mut head: Vec<u32> = r.head.clone();
+        let mut head: Vec<u32> = r.head.to_vec();
         head.sort_unstable();
         head.dedup();
         match r.head_kind {
@@ -429,18 +445,18 @@ impl Translation {
             }
             for &(s, ri) in &self.supports[a] {
                 let ri = ri as usize;
-                let r = &p.rules[ri];
+                let r = p.rules.get(ri);
                 // Non-HCF programs use the rule body as support (see the module comment).
                 let lit = if self.non_hcf { self.rule_body[ri] } else { s };
-                let body = match &r.body {
-                    Body::Normal(ls) => SupportBody::Normal(
+                let body = match r.body {
+                    BodyRef::Normal(ls) => SupportBody::Normal(
                         ls.iter()
                             .filter(|&&l| l > 0 && local[l as usize] != u32::MAX)
                             .map(|&l| local[l as usize])
                             .collect(),
                     ),
-                    Body::Weight { lower, lits } => {
-                        let mut bound = *lower as i128;
+                    BodyRef::Weight { lower, lits } => {
+                        let mut bound = lower as i128;
                         let mut wl = Vec::new();
                         for &(l, w) in lits {
                             if w > 0 {
@@ -507,7 +523,7 @@ fn equivalences(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<Equiv> {
     let mut count = vec![0u8; n + 1];
     let mut rule = vec![usize::MAX; n + 1];
     for (i, r) in p.rules.iter().enumerate() {
-        for &h in &r.head {
+        for &h in r.head {
             let h = h as usize;
             count[h] = count[h].saturating_add(1).min(2);
             rule[h] = i;
@@ -518,14 +534,14 @@ fn equivalences(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<Equiv> {
         if count[a] != 1 || free[a] {
             continue;
         }
-        let r = &p.rules[rule[a]];
+        let r = p.rules.get(rule[a]);
         if r.head_kind != HeadKind::Disjunction || r.head.len() != 1 {
             continue;
         }
-        let Body::Normal(ls) = &r.body else {
+        let BodyRef::Normal(ls) = r.body else {
             continue;
         };
-        out[a] = match ls.as_slice() {
+        out[a] = match ls {
             [] => Equiv::Lit(0),
             [l] => {
                 let b = l.unsigned_abs() as usize;
@@ -595,15 +611,15 @@ fn resolve_aliases(eqs: &[Equiv], lit: &mut [Option<Lit>], e: &mut Engine) {
 fn positive_edges(p: &GroundProgram, n: usize) -> Vec<Vec<u32>> {
     let mut edges: Vec<Vec<u32>> = vec![Vec::new(); n];
     for r in &p.rules {
-        let pos: Vec<u32> = match &r.body {
-            Body::Normal(ls) => ls.iter().filter(|&&l| l > 0).map(|&l| l as u32).collect(),
-            Body::Weight { lits, .. } => lits
+        let pos: Vec<u32> = match r.body {
+            BodyRef::Normal(ls) => ls.iter().filter(|&&l| l > 0).map(|&l| l as u32).collect(),
+            BodyRef::Weight { lits, .. } => lits
                 .iter()
                 .filter(|&&(l, w)| l > 0 && w > 0)
                 .map(|&(l, _)| l as u32)
                 .collect(),
         };
-        for &h in &r.head {
+        for &h in r.head {
             edges[h as usize].extend_from_slice(&pos);
         }
     }
