@@ -398,7 +398,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 .collect(),
         });
     }
-    // Number atoms: every atom that occurs, in creation order.
+    // Which atoms get a number: every atom that occurs, and shown atoms.
     let n = g.atoms.len();
     let mut used = vec![false; n + 1];
     let use_lit = |l: Lit, used: &mut Vec<bool>| used[l.unsigned_abs() as usize] = true;
@@ -455,11 +455,11 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     };
     for r in &rules {
         r.head.iter().for_each(|&h| assign(h as usize, &mut number));
-        match &r.body {
-            Body::Normal(ls) => ls
+        match r.body {
+            BodyRef::Normal(ls) => ls
                 .iter()
                 .for_each(|&l| assign(l.unsigned_abs() as usize, &mut number)),
-            Body::Weight { lits, .. } => lits
+            BodyRef::Weight { lits, .. } => lits
                 .iter()
                 .for_each(|&(l, _)| assign(l.unsigned_abs() as usize, &mut number)),
         }
