@@ -95,6 +95,8 @@ pub struct Config {
     /// learnt clauses (clasp's VSIDS sign score). Only matters when phases are rarely saved
     /// (`save_progress` > 0); `SearchProfile::Auto` turns it on with the tweety values.
     pub sign_from_learnts: bool,
+    /// Postpone glucose restarts while the trail is much longer than on average.
+    pub restart_blocking: bool,
     /// Merge atoms equivalent to a literal or to a rule body by their completion before search
     /// (clasp `--eq`; see `translate::equivalences`). Off by default: with the current
     /// heuristic it did not reduce conflicts over the benchmark pairs (fewer variables, but a
@@ -177,6 +179,7 @@ impl Default for Config {
             },
             score_other: false,
             sign_from_learnts: false,
+            restart_blocking: true,
             conflict_limit: None,
             eq: false,
             incremental: false,
