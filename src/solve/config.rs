@@ -69,7 +69,8 @@ pub struct Config {
     pub seed: u64,
     /// Probability, in 1/1000, of a random decision instead of the VSIDS choice.
     pub random_freq_permille: u32,
-    /// VSIDS decay factor, in (0, 1).
+    /// VSIDS decay factor, in (0, 1). 0.92 as clasp's tweety (ARCHITECTURE.md, "Search
+    /// settings", has the measurements).
     pub var_decay: f64,
     /// Initial phase of decision variables: false first when `true` (clasp's default for atoms).
     pub default_phase_false: bool,
@@ -166,7 +167,7 @@ impl Default for Config {
             interrupt: None,
             seed: 1,
             random_freq_permille: 0,
-            var_decay: 0.95,
+            var_decay: 0.92,
             default_phase_false: true,
             body_phase_true: true,
             save_progress: 0,
