@@ -1,7 +1,9 @@
 //! Instantiation: grounds rewritten statements bottom-up over the predicate dependency graph.
 //!
 //! Algorithm (Kaminski, Schaub, TPLP 2022, simplified): strongly connected components of the
-//! predicate dependency graph are grounded in topological order; inside a recursive component,
+//! predicate dependency graph are grounded in topological order, each split, as gringo does,
+//! into the components of its positive dependencies (a predicate read only under `not` inside
+//! its component is grounded after the reader, whose literal stays); inside a recursive part,
 //! semi-naive evaluation grounds each rule once per combination that uses at least one atom new
 //! in the last round. Components with an aggregate or conditional literal over one of their own
 //! predicates are instead grounded naively to a fixpoint, keeping only the last round's rules
@@ -2199,6 +2201,8 @@ impl<'a> Grounder<'a> {
         // Head predicates of each statement, and the predicates each statement reads.
         let mut heads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
         let mut reads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
+        // What each statement reads other than under default negation.
+        let mut pos_reads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
         for s in &prog.stmts {
             let mut h = Vec::new();
             match &s.head {
@@ -2215,13 +2219,18 @@ impl<'a> Grounder<'a> {
                 h.push(a.pred);
             }
             let mut r = Vec::new();
+            let mut pr = Vec::new();
             for l in &s.body {
                 lit_preds(l, &mut r);
+                if !matches!(l, NLit::Pred { sign, .. } if *sign != Sign::Positive) {
+                    lit_preds(l, &mut pr);
+                }
             }
             if let NHead::Disj(es) | NHead::Choice(es) = &s.head {
                 for e in es {
                     for l in &e.cond {
                         lit_preds(l, &mut r);
+                        lit_preds(l, &mut pr);
                     }
                     for l in e.conj.iter().filter(|l| l.sign != Sign::Positive) {
                         r.push(l.atom.pred);
@@ -2230,6 +2239,7 @@ impl<'a> Grounder<'a> {
             }
             heads.push(h);
             reads.push(r);
+            pos_reads.push(pr);
         }
         self.warn_undefined(prog, &heads);
         // SPARC sorts: facts of their hidden predicates.
@@ -2249,7 +2259,14 @@ impl<'a> Grounder<'a> {
                 edges[p as usize].extend(h.iter().copied());
             }
         }
-        let comps = tarjan(&edges);
+        let mut pos_edges: Vec<Vec<u32>> = vec![Vec::new(); n];
+        for (h, r) in heads.iter().zip(&pos_reads) {
+            for &p in h {
+                pos_edges[p as usize].extend(r.iter().copied());
+                pos_edges[p as usize].extend(h.iter().copied());
+            }
+        }
+        let comps = positive_split(tarjan(&edges), &pos_edges);
         let mut comp_of = vec![0usize; n];
         for (ci, c) in comps.iter().enumerate() {
             for &p in c {
@@ -2595,6 +2612,46 @@ fn nested_reads(l: &NLit, in_comp: &dyn Fn(PredId) -> bool) -> bool {
         }
         _ => false,
     }
+}
+
+/// Splits each strongly connected component of the full dependency graph into the components
+/// of its positive dependencies, in topological order, as gringo does: a predicate read only
+/// under default negation by a rule of the same component is grounded after that rule, which
+/// keeps such literals (the predicate is not complete yet) instead of iterating the whole
+/// component together. Grounding each part to a fixpoint in this order gives the same rules,
+/// in gringo's order.
+fn positive_split(comps: Vec<Vec<u32>>, pos_edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
+    let mut local = vec![u32::MAX; pos_edges.len()];
+    let mut out = Vec::with_capacity(comps.len());
+    for mut comp in comps {
+        if comp.len() == 1 {
+            out.push(comp);
+            continue;
+        }
+        // Roots in discovery order (tarjan lists a component in reverse), as gringo's graph
+        // iterates the nodes of a component; it decides between independent parts.
+        comp.reverse();
+        for (i, &p) in comp.iter().enumerate() {
+            local[p as usize] = i as u32;
+        }
+        let sub: Vec<Vec<u32>> = comp
+            .iter()
+            .map(|&p| {
+                pos_edges[p as usize]
+                    .iter()
+                    .map(|&q| local[q as usize])
+                    .filter(|&q| q != u32::MAX)
+                    .collect()
+            })
+            .collect();
+        for part in tarjan(&sub) {
+            out.push(part.into_iter().map(|i| comp[i as usize]).collect());
+        }
+        for &p in &comp {
+            local[p as usize] = u32::MAX;
+        }
+    }
+    out
 }
 
 /// Tarjan's strongly connected components (iterative); components come out with every

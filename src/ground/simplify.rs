@@ -1,7 +1,9 @@
 //! Final simplification and output: decides which atoms are certainly false (no surviving rule
 //! can derive them) by propagation, removes rules that need false atoms and literals that are
-//! known, numbers the surviving atoms for aspif in creation order, and builds outputs, minimize
-//! statements and the other directives.
+//! known, numbers the surviving atoms for aspif as gringo does (first occurrence in the output
+//! rules, heads before bodies; normal bodies ordered as gringo prints them), and builds outputs,
+//! minimize statements and the other directives. The numbering is the solver's initial variable
+//! order, so it follows gringo's to make search on our ground program behave as on gringo's.
 //!
 //! Rules implemented (each by a worklist step):
 //! - an atom that is not external and heads no live rule is false;
@@ -276,7 +278,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 if !ok {
                     continue;
                 }
-                Body::Normal(lits)
+                Body::Normal(gringo_body_order(lits))
             }
             Body::Weight { lower, lits } => {
                 let mut lower = lower;
@@ -396,7 +398,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 .collect(),
         });
     }
-    // Number atoms: every atom that occurs, in creation order.
+    // Which atoms get a number: every atom that occurs, and shown atoms.
     let n = g.atoms.len();
     let mut used = vec![false; n + 1];
     let use_lit = |l: Lit, used: &mut Vec<bool>| used[l.unsigned_abs() as usize] = true;
@@ -438,16 +440,34 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             used[a] = true;
         }
     }
+    // Numbering as gringo's output does it: atoms in order of first occurrence in the rules
+    // (each rule's heads before its body), then those only in minimize statements, externals
+    // and shown atoms, in creation order. The solver's initial variable order follows it.
     let mut number = vec![0u32; n + 1];
     let mut names: Vec<Option<String>> = Vec::new();
     let mut next = 0u32;
-    for a in 1..=n {
-        if used[a] {
+    let mut assign = |a: usize, number: &mut Vec<u32>| {
+        if number[a] == 0 {
             next += 1;
             number[a] = next;
             names.push(g.atoms[a - 1].sym.map(|s| g.syms.show(s)));
         }
+    };
+    for r in &rules {
+        r.head.iter().for_each(|&h| assign(h as usize, &mut number));
+        match r.body {
+            BodyRef::Normal(ls) => ls
+                .iter()
+                .for_each(|&l| assign(l.unsigned_abs() as usize, &mut number)),
+            BodyRef::Weight { lits, .. } => lits
+                .iter()
+                .for_each(|&(l, _)| assign(l.unsigned_abs() as usize, &mut number)),
+        }
     }
+    for (a, _) in used.iter().enumerate().filter(|&(_, &u)| u) {
+        assign(a, &mut number);
+    }
+    let next = next;
     let map_lit = |l: Lit| -> Lit {
         let a = number[l.unsigned_abs() as usize] as Lit;
         if l > 0 {
@@ -604,6 +624,15 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
 
 /// Whether a normal body contains a literal and its negation (it can never hold). Only short
 /// bodies are checked (quadratic scan, no allocation); missing a long one is only less simple.
+/// Orders a normal body as gringo prints it: the positive literals in reverse order of the
+/// rule's body, then the negative ones in order. Only the solver's initial variable order
+/// depends on it (atoms are numbered by first occurrence).
+fn gringo_body_order(lits: Vec<Lit>) -> Vec<Lit> {
+    let mut out: Vec<Lit> = lits.iter().rev().copied().filter(|&l| l > 0).collect();
+    out.extend(lits.iter().copied().filter(|&l| l < 0));
+    out
+}
+
 fn contradictory(body: &Body) -> bool {
     match body {
         Body::Normal(lits) => contradictory_lits(lits),

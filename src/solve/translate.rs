@@ -412,9 +412,14 @@ impl Translation {
         }
         let cyclic: Vec<bool> = (0..n)
             .map(|a| {
-                a > 0 && (size[comp[a] as usize] > 1 || edges[a].iter().any(|&b| b as usize == a))
+                a > 0
+                    && (size[comp[a] as usize] > 1
+                        || edges.succ(a).iter().any(|&b| b as usize == a))
             })
             .collect();
+        // Freed before the propagator is built: it is as large as the program's positive
+        // dependencies.
+        drop(edges);
         self.non_hcf = p.rules.iter().any(|r| {
             r.head_kind == HeadKind::Disjunction
                 && r.head.iter().enumerate().any(|(i, &h)| {
@@ -608,22 +613,84 @@ fn resolve_aliases(eqs: &[Equiv], lit: &mut [Option<Lit>], e: &mut Engine) {
 
 /// The positive dependency graph: per atom, the atoms of positive body literals (positive
 /// weights) of its rules.
-fn positive_edges(p: &GroundProgram, n: usize) -> Vec<Vec<u32>> {
-    let mut edges: Vec<Vec<u32>> = vec![Vec::new(); n];
+fn positive_edges(p: &GroundProgram, n: usize) -> Graph {
+    let positive = |r: &RuleRef<'_>| -> usize {
+        match r.body {
+            BodyRef::Normal(ls) => ls.iter().filter(|&&l| l > 0).count(),
+            BodyRef::Weight { lits, .. } => lits.iter().filter(|&&(l, w)| l > 0 && w > 0).count(),
+        }
+    };
+    // Two passes (count, then fill) into one flat array: a `Vec` per atom cost 24 bytes of
+    // header per atom even for the many atoms without edges.
+    let mut first = vec![0usize; n + 1];
     for r in &p.rules {
-        let pos: Vec<u32> = match r.body {
-            BodyRef::Normal(ls) => ls.iter().filter(|&&l| l > 0).map(|&l| l as u32).collect(),
-            BodyRef::Weight { lits, .. } => lits
-                .iter()
-                .filter(|&&(l, w)| l > 0 && w > 0)
-                .map(|&(l, _)| l as u32)
-                .collect(),
-        };
-        for &h in r.head {
-            edges[h as usize].extend_from_slice(&pos);
+        let k = positive(&r);
+        if k > 0 {
+            for &h in r.head {
+                first[h as usize + 1] += k;
+            }
         }
     }
-    edges
+    for a in 0..n {
+        first[a + 1] += first[a];
+    }
+    let mut fill = first.clone();
+    let mut targets = vec![0u32; first[n]];
+    for r in &p.rules {
+        if positive(&r) == 0 {
+            continue;
+        }
+        for &h in r.head {
+            let at = &mut fill[h as usize];
+            let mut put = |b: u32| {
+                targets[*at] = b;
+                *at += 1;
+            };
+            match r.body {
+                BodyRef::Normal(ls) => ls.iter().filter(|&&l| l > 0).for_each(|&l| put(l as u32)),
+                BodyRef::Weight { lits, .. } => lits
+                    .iter()
+                    .filter(|&&(l, w)| l > 0 && w > 0)
+                    .for_each(|&(l, _)| put(l as u32)),
+            }
+        }
+    }
+    Graph { first, targets }
+}
+
+/// A directed graph over nodes `0..len()` in compressed form: the successors of `v` are
+/// `targets[first[v]..first[v + 1]]`, in the order they were added.
+pub struct Graph {
+    first: Vec<usize>,
+    targets: Vec<u32>,
+}
+
+impl Graph {
+    /// The graph with the given successor lists.
+    pub fn from_lists(lists: &[Vec<u32>]) -> Graph {
+        let mut first = vec![0usize];
+        let mut targets = Vec::new();
+        for l in lists {
+            targets.extend_from_slice(l);
+            first.push(targets.len());
+        }
+        Graph { first, targets }
+    }
+
+    /// The number of nodes.
+    pub fn len(&self) -> usize {
+        self.first.len() - 1
+    }
+
+    /// Whether the graph has no node.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The successors of `v`.
+    pub fn succ(&self, v: usize) -> &[u32] {
+        &self.targets[self.first[v]..self.first[v + 1]]
+    }
 }
 
 /// The key of a conjunction: its literal codes, sorted, without repeats.
@@ -635,7 +702,7 @@ fn conj_key(lits: &[Lit]) -> Vec<u32> {
 }
 
 /// Tarjan's strongly connected components, iteratively; returns the component of each node.
-pub fn scc(edges: &[Vec<u32>]) -> Vec<u32> {
+pub fn scc(edges: &Graph) -> Vec<u32> {
     let n = edges.len();
     let mut index = vec![u32::MAX; n];
     let mut low = vec![0u32; n];
@@ -656,8 +723,9 @@ pub fn scc(edges: &[Vec<u32>]) -> Vec<u32> {
         on_stack[root] = true;
         while let Some(&mut (v, ref mut k)) = call.last_mut() {
             let v = v as usize;
-            if *k < edges[v].len() {
-                let w = edges[v][*k] as usize;
+            let succ = edges.succ(v);
+            if *k < succ.len() {
+                let w = succ[*k] as usize;
                 *k += 1;
                 if index[w] == u32::MAX {
                     index[w] = next;
@@ -699,7 +767,7 @@ mod tests {
     fn scc_finds_cycles() {
         // 0 -> 1 -> 2 -> 1, 3 alone.
         let edges = vec![vec![1], vec![2], vec![1], vec![]];
-        let c = scc(&edges);
+        let c = scc(&Graph::from_lists(&edges));
         assert_eq!(c[1], c[2]);
         assert_ne!(c[0], c[1]);
         assert_ne!(c[3], c[1]);
