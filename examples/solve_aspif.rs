@@ -5,7 +5,7 @@
 //! Usage: `solve_aspif [-n N] [--opt-mode=opt|optN|enum[,B..]|ignore]
 //! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [--parallel-mode=N]
 //! [--init-moms|--no-init-moms] [--vsids-decay=X] [--restarts=L,N|glucose|no]
-//! [--save-progress=N] [--eq=0|1] [--score-other=all|no] [--profile=auto|fixed] [--sign-occ=0|1] [--solve-limit=CONFLICTS] [--body-phase=true|false] [--del-cfl=FIRST,INC] [-q] [FILE]`; the search options override the solver's search defaults, for tuning experiments.
+//! [--save-progress=N] [--eq=0|1] [--score-other=all|no] [--profile=auto|fixed] [--sign-occ=0|1] [--block-restarts=0|1] [--solve-limit=CONFLICTS] [--body-phase=true|false] [--del-cfl=FIRST,INC] [-q] [FILE]`; the search options override the solver's search defaults, for tuning experiments.
 
 use lucent::ground::aspif;
 use lucent::solve::{
@@ -92,6 +92,8 @@ fn main() -> ExitCode {
             } else {
                 SearchProfile::Auto
             };
+        } else if let Some(v) = a.strip_prefix("--block-restarts=") {
+            config.restart_blocking = v != "0";
         } else if let Some(v) = a.strip_prefix("--sign-occ=") {
             config.sign_from_learnts = v != "0";
         } else if let Some(v) = a.strip_prefix("--solve-limit=") {

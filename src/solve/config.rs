@@ -69,7 +69,8 @@ pub struct Config {
     pub seed: u64,
     /// Probability, in 1/1000, of a random decision instead of the VSIDS choice.
     pub random_freq_permille: u32,
-    /// VSIDS decay factor, in (0, 1).
+    /// VSIDS decay factor, in (0, 1). 0.92 as clasp's tweety (ARCHITECTURE.md, "Search
+    /// settings", has the measurements).
     pub var_decay: f64,
     /// Initial phase of decision variables: false first when `true` (clasp's default for atoms).
     pub default_phase_false: bool,
@@ -95,6 +96,8 @@ pub struct Config {
     /// learnt clauses (clasp's VSIDS sign score). Only matters when phases are rarely saved
     /// (`save_progress` > 0); `SearchProfile::Auto` turns it on with the tweety values.
     pub sign_from_learnts: bool,
+    /// Postpone glucose restarts while the trail is much longer than on average.
+    pub restart_blocking: bool,
     /// Merge atoms equivalent to a literal or to a rule body by their completion before search
     /// (clasp `--eq`; see `translate::equivalences`). Off by default: with the current
     /// heuristic it did not reduce conflicts over the benchmark pairs (fewer variables, but a
@@ -164,7 +167,7 @@ impl Default for Config {
             interrupt: None,
             seed: 1,
             random_freq_permille: 0,
-            var_decay: 0.95,
+            var_decay: 0.92,
             default_phase_false: true,
             body_phase_true: true,
             save_progress: 0,
@@ -177,6 +180,7 @@ impl Default for Config {
             },
             score_other: false,
             sign_from_learnts: false,
+            restart_blocking: true,
             conflict_limit: None,
             eq: false,
             incremental: false,

@@ -140,6 +140,8 @@ pub enum Restarts {
         slow: f64,
         /// Conflicts since the last restart.
         since: u64,
+        /// Moving average of the trail length at conflicts (restart blocking).
+        trail: f64,
     },
     /// Never restart.
     Never,
@@ -292,6 +294,11 @@ pub struct Engine {
     /// learnt clauses (the polarity that satisfies more of them), as clasp's VSIDS does;
     /// ties fall back to the initial sign.
     pub sign_from_learnts: bool,
+    /// Glucose restarts are postponed while the trail at a conflict is much longer than
+    /// usual (Audemard and Simon's blocking: the search may be close to a model).
+    pub restart_blocking: bool,
+    /// Trail length at the last conflict, before backjumping.
+    conflict_trail: usize,
 }
 
 impl Default for Engine {
@@ -341,6 +348,7 @@ impl Engine {
                 fast: 0.0,
                 slow: 0.0,
                 since: 0,
+                trail: 0.0,
             },
             max_learnts: 4000.0,
             reduce: ReduceSchedule::Size,
@@ -372,6 +380,8 @@ impl Engine {
             init_moms: false,
             score_other: false,
             sign_from_learnts: false,
+            restart_blocking: false,
+            conflict_trail: 0,
             conflict_limit: None,
         }
     }
@@ -1779,12 +1789,22 @@ impl Engine {
                 }
                 false
             }
-            Restarts::Glucose { fast, slow, since } => {
+            Restarts::Glucose {
+                fast,
+                slow,
+                since,
+                trail,
+            } => {
                 if let Some(l) = lbd {
                     let l = l as f64;
                     *fast += (l - *fast) / 32.0;
                     *slow += (l - *slow) / 10000.0f64.min(self.conflicts as f64 + 1.0);
                     *since += 1;
+                    let t = self.conflict_trail as f64;
+                    if self.restart_blocking && self.conflicts > 10000 && t > 1.4 * *trail {
+                        *since = 0;
+                    }
+                    *trail += (t - *trail) / 5000.0f64.min(self.conflicts as f64 + 1.0);
                 }
                 if *since >= 50 && *fast > 1.25 * *slow {
                     *since = 0;
@@ -1857,6 +1877,7 @@ impl Engine {
                 if max_level < self.decision_level() {
                     self.backtrack(max_level);
                 }
+                self.conflict_trail = self.trail.len();
                 let bt = self.analyze();
                 let learnt = std::mem::take(&mut self.learnt);
                 let lbd = self.lbd(&learnt);

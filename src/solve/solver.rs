@@ -133,6 +133,7 @@ impl Solver {
         engine.save_progress = config.save_progress;
         engine.score_other = config.score_other;
         engine.sign_from_learnts = config.sign_from_learnts;
+        engine.restart_blocking = config.restart_blocking;
         engine.conflict_limit = config.conflict_limit;
         engine.restarts = restart_state(config.restarts);
         prog.num_atoms = max_atom(&prog);
@@ -1274,6 +1275,7 @@ fn restart_state(policy: RestartPolicy) -> Restarts {
             fast: 0.0,
             slow: 0.0,
             since: 0,
+            trail: 0.0,
         },
         RestartPolicy::Never => Restarts::Never,
     }
