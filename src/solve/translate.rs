@@ -122,20 +122,31 @@ impl Translation {
 
     /// A literal equivalent to the conjunction of `lits`.
     pub fn conjunction(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
+        match self.lookup_conj(lits) {
+            ConjLookup::Known(b) => b,
+            ConjLookup::New(key, hash) => {
+                let b = e.new_body_var().positive();
+                self.insert_conj(e, key, hash, b);
+                b
+            }
+        }
+    }
+
+    /// The literal that already stands for the conjunction of `lits` (the true literal when it
+    /// is empty, the literal itself when it has one), or its key and hash for a new entry.
+    fn lookup_conj(&self, lits: &[Lit]) -> ConjLookup {
         let key = conj_key(lits);
         if key.is_empty() {
-            return self.true_lit();
+            return ConjLookup::Known(self.true_lit());
         }
         if key.len() == 1 {
-            return Lit::from_code(key[0]);
+            return ConjLookup::Known(Lit::from_code(key[0]));
         }
         let hash = self.conj_hasher.hash_one(&key[..]);
-        if let Some(b) = self.find_conj(hash, &key) {
-            return b;
+        match self.find_conj(hash, &key) {
+            Some(b) => ConjLookup::Known(b),
+            None => ConjLookup::New(key, hash),
         }
-        let b = e.new_body_var().positive();
-        self.insert_conj(e, key, hash, b);
-        b
     }
 
     /// The body literal of an integrity constraint `:- lits.`, which the caller makes false.
@@ -146,20 +157,14 @@ impl Translation {
     /// programs made mostly of constraints (stable marriage, queens) was most of the memory.
     /// A later rule with the same body gets a body variable of its own.
     fn constraint_body(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
-        let key = conj_key(lits);
-        if key.is_empty() {
-            return self.true_lit();
+        match self.lookup_conj(lits) {
+            ConjLookup::Known(b) => b,
+            ConjLookup::New(key, _) => {
+                let clause: Vec<Lit> = key.iter().map(|&c| !Lit::from_code(c)).collect();
+                e.add_clause(&clause);
+                !self.true_lit()
+            }
         }
-        if key.len() == 1 {
-            return Lit::from_code(key[0]);
-        }
-        let hash = self.conj_hasher.hash_one(&key[..]);
-        if let Some(b) = self.find_conj(hash, &key) {
-            return b;
-        }
-        let clause: Vec<Lit> = key.iter().map(|&c| !Lit::from_code(c)).collect();
-        e.add_clause(&clause);
-        !self.true_lit()
     }
 
     /// The literal already standing for the conjunction `key` (sorted codes), if any.
@@ -691,6 +696,13 @@ impl Graph {
     pub fn succ(&self, v: usize) -> &[u32] {
         &self.targets[self.first[v]..self.first[v + 1]]
     }
+}
+
+/// What `Translation::lookup_conj` found: the conjunction's literal, or the sorted key and its
+/// hash under which a new one is entered.
+enum ConjLookup {
+    Known(Lit),
+    New(Vec<u32>, u64),
 }
 
 /// The key of a conjunction: its literal codes, sorted, without repeats.
