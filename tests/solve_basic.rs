@@ -47,6 +47,17 @@ fn atom_sets(s: &mut Solver) -> Vec<Vec<u32>> {
     got
 }
 
+/// A solver for `p` that enumerates every answer set and keeps what it learnt between calls, so
+/// rules may be added after a solve.
+fn incremental_solver(p: &GroundProgram) -> Solver {
+    let cfg = Config {
+        models: 0,
+        incremental: true,
+        ..Config::default()
+    };
+    Solver::new(p, cfg)
+}
+
 fn sets(x: &[&[&str]]) -> Vec<Vec<String>> {
     let mut v: Vec<Vec<String>> = x
         .iter()
@@ -329,12 +340,7 @@ fn incremental_constraint_keeps_solver() {
 fn incremental_rules_for_existing_atoms() {
     // a :- not b.  then add b.  Answer sets {a}, then {b}.
     let p = program(2, vec![Rule::normal(&[1], &[-2])]);
-    let cfg = Config {
-        models: 0,
-        incremental: true,
-        ..Config::default()
-    };
-    let mut s = Solver::new(&p, cfg);
+    let mut s = incremental_solver(&p);
     assert_eq!(s.solve().models[0].symbols, vec!["a"]);
     s.add_rules(&[Rule::normal(&[2], &[])]).unwrap();
     let r = s.solve();
@@ -358,12 +364,7 @@ fn incremental_rules_give_a_loop_an_external_support() {
             Rule::normal(&[2], &[1]),
         ],
     );
-    let cfg = Config {
-        models: 0,
-        incremental: true,
-        ..Config::default()
-    };
-    let mut s = Solver::new(&p, cfg);
+    let mut s = incremental_solver(&p);
     assert_eq!(atom_sets(&mut s), vec![vec![], vec![3]]);
     s.add_rules(&[Rule::normal(&[1], &[3])]).unwrap();
     assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2, 3]]);
@@ -476,12 +477,7 @@ fn incremental_step_makes_a_program_non_head_cycle_free() {
     let mut p = GroundProgram::new();
     p.num_atoms = 4;
     p.rules = rules[..4].to_vec().into();
-    let cfg = Config {
-        models: 0,
-        incremental: true,
-        ..Config::default()
-    };
-    let mut s = Solver::new(&p, cfg);
+    let mut s = incremental_solver(&p);
     assert_eq!(atom_sets(&mut s), vec![vec![], vec![2]]);
     s.add_rules(&rules[4..]).unwrap();
     assert_eq!(atom_sets(&mut s), vec![vec![], vec![2, 3]]);
@@ -521,12 +517,7 @@ fn a_later_step_may_define_an_external_atom_that_was_false() {
     // it later (an unguarded completion clause made a false for good).
     let mut p = program(2, vec![Rule::choice(&[2], &[])]);
     p.externals = vec![(1, ExternalValue::False)];
-    let cfg = Config {
-        models: 0,
-        incremental: true,
-        ..Config::default()
-    };
-    let mut s = Solver::new(&p, cfg);
+    let mut s = incremental_solver(&p);
     assert_eq!(atom_sets(&mut s), vec![vec![], vec![2]]);
     s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
     assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2]]);
