@@ -98,6 +98,11 @@ fn main() -> ExitCode {
             config.sign_from_learnts = v != "0";
         } else if let Some(v) = a.strip_prefix("--solve-limit=") {
             config.conflict_limit = v.parse().ok();
+        } else if let Some(v) = a.strip_prefix("--seed=") {
+            config.seed = v.parse().unwrap_or(config.seed);
+        } else if let Some(v) = a.strip_prefix("--rand-freq=") {
+            let p: f64 = v.parse().unwrap_or(0.0);
+            config.random_freq_permille = (p.clamp(0.0, 1.0) * 1000.0).round() as u32;
         } else if let Some(v) = a.strip_prefix("--eq=") {
             config.eq = v != "0";
         } else if a == "-q" {

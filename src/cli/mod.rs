@@ -272,6 +272,7 @@ fn solve_config(
         project: options.project,
         deadline,
         seed: options.seed,
+        random_freq_permille: options.rand_freq_permille,
         check_models: options.check,
         threads: options.threads as usize,
         ..solve::Config::default()

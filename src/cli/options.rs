@@ -76,6 +76,7 @@ pub const OPTIONS: &[OptionSpec] = &[
     opt("parallel-mode", Some('t'), Value, "<n>", "Run a portfolio of <n> threads [1]", "Solving"),
     opt("heuristic", None, Value, "<h>", "Decision heuristic {berkmin|vmtf|vsids|domain|unit|none}: accepted for clasp compatibility; Lucent always uses VSIDS, which changes search order, never answers", "Solving"),
     opt("seed", None, Value, "<n>", "Seed of the solver's random choices [1]", "Solving"),
+    opt("rand-freq", None, Value, "<p>", "Make a random decision with probability <p> in [0.0,1.0] [0.0]", "Solving"),
     opt("check", None, Flag, "", "Verify every reported model with an independent stable-model check", "Solving"),
     opt("outf", None, Value, "<n>", "Output format {0=text|2=json} [0]", "Output"),
     opt("quiet", Some('q'), OptionalValue, "<levels>", "Print {0=all|1=last|2=no} models[,costs[,calls]] [-q: 2,2,2]", "Output"),
@@ -206,6 +207,8 @@ pub struct Options {
     pub threads: u32,
     /// Random seed.
     pub seed: u64,
+    /// Probability of a random decision, in 1/1000 (`--rand-freq`).
+    pub rand_freq_permille: u32,
     /// Check every model independently.
     pub check: bool,
     /// Output format.
@@ -243,6 +246,7 @@ impl Default for Options {
             time_limit: None,
             threads: 1,
             seed: 1,
+            rand_freq_permille: 0,
             check: false,
             outf: OutputFormat::Text,
             quiet: [0, 0, 0],
@@ -484,6 +488,13 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
             }
         }
         "seed" => o.seed = parse_num(long, v)?,
+        "rand-freq" => {
+            let p: f64 = parse_num(long, v)?;
+            if !(0.0..=1.0).contains(&p) {
+                return Err(invalid(long, v));
+            }
+            o.rand_freq_permille = (p * 1000.0).round() as u32;
+        }
         "check" => o.check = true,
         "outf" => {
             o.outf = match v {
@@ -638,6 +649,8 @@ mod tests {
         );
         assert_eq!(o.time_limit, Some(2.5));
         assert!(o.project);
+        let o = parse_args(&args("--seed=7 --rand-freq=0.02")).unwrap();
+        assert_eq!((o.seed, o.rand_freq_permille), (7, 20));
     }
 
     #[test]
@@ -656,6 +669,10 @@ mod tests {
         ));
         assert!(matches!(
             parse_args(&args("--outf=7")),
+            Err(UsageError::InvalidValue { .. })
+        ));
+        assert!(matches!(
+            parse_args(&args("--rand-freq=1.5")),
             Err(UsageError::InvalidValue { .. })
         ));
         assert!(matches!(
