@@ -405,9 +405,9 @@ impl Engine {
         self.level.len()
     }
 
-    /// Number of learnt clauses kept.
+    /// Number of learnt constraints kept: long clauses and shared loop formulas.
     pub fn num_learnts(&self) -> usize {
-        self.learnts.len()
+        self.learnts.len() + self.loops.live
     }
 
     /// Reserves room for `additional` more variables in every per-variable (and per-literal)
@@ -2034,5 +2034,69 @@ mod tests {
         assert_eq!(e.search(&[a.negative()]), SearchResult::Unsat);
         assert_eq!(e.search(&[a.positive(), c.negative()]), SearchResult::Sat);
         assert_eq!(e.value(b.positive()), Some(true));
+    }
+
+    /// Opens a decision level and decides `l` (as `search` does).
+    fn decide(e: &mut Engine, l: Lit) {
+        e.trail_lim.push(e.trail.len());
+        e.assign(l, Reason::Decision);
+        assert!(e.propagate().is_none());
+    }
+
+    #[test]
+    fn shared_loop_formula_propagates_atoms_and_external_bodies() {
+        // Unfounded set {a1, a2} with external bodies b1, b2, b3: the loop nogoods are
+        // a1 -> b1 | b2 | b3 and a2 -> b1 | b2 | b3, learnt as one formula (hand-derived).
+        let mut e = Engine::new();
+        let v = lits(&mut e, 5);
+        let (a1, a2) = (v[0].positive(), v[1].positive());
+        let (b1, b2, b3) = (v[2].positive(), v[3].positive(), v[4].positive());
+        decide(&mut e, !b1);
+        decide(&mut e, !b2);
+        decide(&mut e, !b3);
+        // Every external body false: both atoms false, at the level of the latest body.
+        assert!(!e.add_loop_set(&[a1, a2], &[b1, b2, b3]));
+        assert_eq!(e.loops.live, 1, "one formula, not two clauses");
+        assert_eq!(e.value(a1), Some(false));
+        assert_eq!(e.value(a2), Some(false));
+        assert_eq!(e.level_of(a1), 3);
+        let mut r = Vec::new();
+        e.reason_lits(a1.var(), &mut r);
+        r.sort();
+        assert_eq!(r, vec![b1, b2, b3]);
+        // Undo b3; making a2 true leaves b3 as the only support: it is implied, with the
+        // reason "a2 true, b1 and b2 false".
+        e.backtrack(2);
+        decide(&mut e, a2);
+        assert_eq!(e.value(b3), Some(true));
+        let mut r = Vec::new();
+        e.reason_lits(b3.var(), &mut r);
+        r.sort();
+        let mut want = vec![b1, b2, !a2];
+        want.sort();
+        assert_eq!(r, want);
+        // b3 false with a2 true is a conflict.
+        e.backtrack(2);
+        decide(&mut e, !b3);
+        assert!(e.value(a2) == Some(false) && e.value(a1) == Some(false));
+        e.backtrack(1);
+        e.trail_lim.push(e.trail.len());
+        for l in [a1, !b2, !b3] {
+            e.assign(l, Reason::Decision);
+        }
+        assert!(
+            e.propagate().is_some(),
+            "a1 true and every external body false"
+        );
+        // At level 0 with b1 false, the formula shrinks to b2 | b3 and keeps propagating.
+        e.backtrack(0);
+        e.assign(!b1, Reason::Decision);
+        assert!(e.propagate().is_none());
+        e.simplify();
+        assert_eq!(e.loops.live, 1);
+        decide(&mut e, !b2);
+        decide(&mut e, !b3);
+        assert_eq!(e.value(a1), Some(false));
+        assert_eq!(e.value(a2), Some(false));
     }
 }
