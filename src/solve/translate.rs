@@ -252,10 +252,12 @@ impl Translation {
         let truth = e.new_var();
         e.add_clause(&[truth.positive()]);
         t.atom_lit.push(truth.positive());
-        let eqs = if eq {
-            equivalences(p, n, &external_free(p, n))
-        } else {
-            vec![Equiv::None; n + 1]
+        // With merging, the components of the positive dependency graph are needed before
+        // translation; they are computed once and given to `install_unfounded_with`.
+        let cycles = eq.then(|| Cycles::of(p, n + 1));
+        let eqs = match &cycles {
+            Some(c) => equivalences(p, n, &external_free(p, n), &c.comp),
+            None => vec![Equiv::None; n + 1],
         };
         // Atoms with a variable of their own first, in atom order; then the aliases.
         let mut lit = vec![None; n + 1];
@@ -308,7 +310,7 @@ impl Translation {
             }
             t.minimize.push((pr, lits));
         }
-        t.install_unfounded(p, e);
+        t.install_unfounded_with(p, e, cycles);
         t
     }
 
@@ -408,23 +410,15 @@ impl Translation {
     /// Computes strongly connected components of the positive dependency graph, decides
     /// head-cycle-freeness and installs the unfounded-set propagator if there are cycles.
     pub fn install_unfounded(&mut self, p: &GroundProgram, e: &mut Engine) {
+        self.install_unfounded_with(p, e, None);
+    }
+
+    /// `install_unfounded` with the components of `p`'s positive dependency graph over
+    /// `self.atom_lit.len()` atoms, when already known.
+    fn install_unfounded_with(&mut self, p: &GroundProgram, e: &mut Engine, known: Option<Cycles>) {
         let n = self.atom_lit.len();
-        let edges = positive_edges(p, n);
-        let comp = scc(&edges);
-        let mut size = vec![0u32; n];
-        for &c in &comp {
-            size[c as usize] += 1;
-        }
-        let cyclic: Vec<bool> = (0..n)
-            .map(|a| {
-                a > 0
-                    && (size[comp[a] as usize] > 1
-                        || edges.succ(a).iter().any(|&b| b as usize == a))
-            })
-            .collect();
-        // Freed before the propagator is built: it is as large as the program's positive
-        // dependencies.
-        drop(edges);
+        let Cycles { comp, cyclic } = known.unwrap_or_else(|| Cycles::of(p, n));
+        debug_assert_eq!(comp.len(), n);
         self.non_hcf = p.rules.iter().any(|r| {
             r.head_kind == HeadKind::Disjunction
                 && r.head.iter().enumerate().any(|(i, &h)| {
@@ -500,6 +494,36 @@ impl Translation {
     }
 }
 
+/// The strongly connected components of the positive dependency graph.
+struct Cycles {
+    /// Per atom: its component.
+    comp: Vec<u32>,
+    /// Per atom: on a positive cycle (its component has two or more atoms, or a self-loop);
+    /// index 0 (the constant true) never is.
+    cyclic: Vec<bool>,
+}
+
+impl Cycles {
+    /// The components of `p`'s positive dependency graph over atoms `0..n`. The graph is
+    /// freed on return: it is as large as the program's positive dependencies.
+    fn of(p: &GroundProgram, n: usize) -> Cycles {
+        let edges = positive_edges(p, n);
+        let comp = scc(&edges);
+        let mut size = vec![0u32; n];
+        for &c in &comp {
+            size[c as usize] += 1;
+        }
+        let cyclic = (0..n)
+            .map(|a| {
+                a > 0
+                    && (size[comp[a] as usize] > 1
+                        || edges.succ(a).iter().any(|&b| b as usize == a))
+            })
+            .collect();
+        Cycles { comp, cyclic }
+    }
+}
+
 /// What an atom is known to be equivalent to before translation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Equiv {
@@ -521,30 +545,28 @@ enum Equiv {
 /// component would merge a loop into one variable and lose its unfoundedness, so it is left
 /// out; such an atom is cyclic, every other alias target is outside the alias's component,
 /// so aliased atoms are never cyclic and every cyclic atom keeps a variable of its own.
-fn equivalences(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<Equiv> {
+/// `comp` gives the component of each atom `0..=n` in the positive dependency graph.
+fn equivalences(p: &GroundProgram, n: usize, free: &[bool], comp: &[u32]) -> Vec<Equiv> {
     let mut out = vec![Equiv::None; n + 1];
-    if p.rules
-        .iter()
-        .any(|r| r.head_kind == HeadKind::Disjunction && r.head.len() > 1)
-    {
-        return out;
-    }
-    // Per atom: number of rules with it in the head (capped at 2) and the last such rule.
+    // Per atom: number of rules with it in the head (capped at 2) and the last such rule; one
+    // pass over the rules, which also finds disjunctions.
     let mut count = vec![0u8; n + 1];
-    let mut rule = vec![usize::MAX; n + 1];
+    let mut rule = vec![u32::MAX; n + 1];
     for (i, r) in p.rules.iter().enumerate() {
+        if r.head.len() > 1 && r.head_kind == HeadKind::Disjunction {
+            return out;
+        }
         for &h in r.head {
             let h = h as usize;
             count[h] = count[h].saturating_add(1).min(2);
-            rule[h] = i;
+            rule[h] = i as u32;
         }
     }
-    let comp = scc(&positive_edges(p, n + 1));
     for a in 1..=n {
         if count[a] != 1 || free[a] {
             continue;
         }
-        let r = p.rules.get(rule[a]);
+        let r = p.rules.get(rule[a] as usize);
         if r.head_kind != HeadKind::Disjunction || r.head.len() != 1 {
             continue;
         }
@@ -560,7 +582,7 @@ fn equivalences(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<Equiv> {
                 }
                 Equiv::Lit(*l)
             }
-            _ => Equiv::Body(rule[a]),
+            _ => Equiv::Body(rule[a] as usize),
         };
     }
     out
@@ -620,6 +642,10 @@ fn resolve_aliases(eqs: &[Equiv], lit: &mut [Option<Lit>], e: &mut Engine) {
 /// weights) of its rules.
 fn positive_edges(p: &GroundProgram, n: usize) -> Graph {
     let positive = |r: &RuleRef<'_>| -> usize {
+        if r.head.is_empty() {
+            // Integrity constraints (most rules of some programs) give no edge.
+            return 0;
+        }
         match r.body {
             BodyRef::Normal(ls) => ls.iter().filter(|&&l| l > 0).count(),
             BodyRef::Weight { lits, .. } => lits.iter().filter(|&&(l, w)| l > 0 && w > 0).count(),
@@ -723,11 +749,13 @@ pub fn scc(edges: &Graph) -> Vec<u32> {
     let mut stack: Vec<u32> = Vec::new();
     let mut next = 0u32;
     let mut ncomp = 0u32;
+    // The depth-first path as (node, next successor to visit); empty between roots.
+    let mut call: Vec<(u32, usize)> = Vec::new();
     for root in 0..n {
         if index[root] != u32::MAX {
             continue;
         }
-        let mut call: Vec<(u32, usize)> = vec![(root as u32, 0)];
+        call.push((root as u32, 0));
         index[root] = next;
         low[root] = next;
         next += 1;
