@@ -68,6 +68,11 @@ pub struct Translation {
     conj_hasher: DefaultHashBuilder,
     /// Weight bodies already given a literal, keyed by bound and sorted (code, weight) pairs.
     weights: HashMap<(i64, Vec<(u32, i64)>), Lit>,
+    /// Scratch space for a conjunction's key, reused so that translating a rule allocates
+    /// nothing (empty between calls).
+    key_buf: Vec<u32>,
+    /// Scratch space for a clause or a list of literals, reused likewise.
+    lits_buf: Vec<Lit>,
 }
 
 /// The largest atom mentioned anywhere in the program (the declared count may be too small).
@@ -122,9 +127,19 @@ impl Translation {
 
     /// A literal equivalent to the conjunction of `lits`.
     pub fn conjunction(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
-        match self.lookup_conj(lits) {
+        let mut key = std::mem::take(&mut self.key_buf);
+        conj_key(&mut key, lits.iter().copied());
+        let b = self.conjunction_of_key(e, &key);
+        key.clear();
+        self.key_buf = key;
+        b
+    }
+
+    /// `conjunction` for the key `key` (sorted codes without repeats).
+    fn conjunction_of_key(&mut self, e: &mut Engine, key: &[u32]) -> Lit {
+        match self.lookup_conj(key) {
             ConjLookup::Known(b) => b,
-            ConjLookup::New(key, hash) => {
+            ConjLookup::New(hash) => {
                 let b = e.new_body_var().positive();
                 self.insert_conj(e, key, hash, b);
                 b
@@ -132,20 +147,20 @@ impl Translation {
         }
     }
 
-    /// The literal that already stands for the conjunction of `lits` (the true literal when it
-    /// is empty, the literal itself when it has one), or its key and hash for a new entry.
-    fn lookup_conj(&self, lits: &[Lit]) -> ConjLookup {
-        let key = conj_key(lits);
+    /// The literal that already stands for the conjunction `key` (sorted codes without
+    /// repeats; the true literal when it is empty, the literal itself when it has one), or the
+    /// key's hash for a new entry.
+    fn lookup_conj(&self, key: &[u32]) -> ConjLookup {
         if key.is_empty() {
             return ConjLookup::Known(self.true_lit());
         }
         if key.len() == 1 {
             return ConjLookup::Known(Lit::from_code(key[0]));
         }
-        let hash = self.conj_hasher.hash_one(&key[..]);
-        match self.find_conj(hash, &key) {
+        let hash = self.conj_hasher.hash_one(key);
+        match self.find_conj(hash, key) {
             Some(b) => ConjLookup::Known(b),
-            None => ConjLookup::New(key, hash),
+            None => ConjLookup::New(hash),
         }
     }
 
@@ -156,12 +171,15 @@ impl Translation {
     /// simplification leaving the same clause), yet cost its per-variable arrays, which on
     /// programs made mostly of constraints (stable marriage, queens) was most of the memory.
     /// A later rule with the same body gets a body variable of its own.
-    fn constraint_body(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
-        match self.lookup_conj(lits) {
+    fn constraint_body(&mut self, e: &mut Engine, key: &[u32]) -> Lit {
+        match self.lookup_conj(key) {
             ConjLookup::Known(b) => b,
-            ConjLookup::New(key, _) => {
-                let clause: Vec<Lit> = key.iter().map(|&c| !Lit::from_code(c)).collect();
+            ConjLookup::New(_) => {
+                let mut clause = std::mem::take(&mut self.lits_buf);
+                clause.extend(key.iter().map(|&c| !Lit::from_code(c)));
                 e.add_clause(&clause);
+                clause.clear();
+                self.lits_buf = clause;
                 !self.true_lit()
             }
         }
@@ -179,16 +197,19 @@ impl Translation {
 
     /// Makes `b` stand for the conjunction `key` (sorted codes, at least two, hashed to `hash`):
     /// the clause `key -> b`, the clauses `b -> l`, and the table entry.
-    fn insert_conj(&mut self, e: &mut Engine, key: Vec<u32>, hash: u64, b: Lit) {
-        let mut big = vec![b];
-        for &c in &key {
+    fn insert_conj(&mut self, e: &mut Engine, key: &[u32], hash: u64, b: Lit) {
+        let mut big = std::mem::take(&mut self.lits_buf);
+        big.push(b);
+        for &c in key {
             let l = Lit::from_code(c);
             e.add_clause(&[!b, l]);
             big.push(!l);
         }
         e.add_clause(&big);
+        big.clear();
+        self.lits_buf = big;
         let start = self.conj_keys.len() as u32;
-        self.conj_keys.extend_from_slice(&key);
+        self.conj_keys.extend_from_slice(key);
         let (keys, hasher) = (&self.conj_keys, &self.conj_hasher);
         self.conj
             .insert_unique(hash, (start, key.len() as u32, b), |&(s, n, _)| {
@@ -201,12 +222,16 @@ impl Translation {
     fn body_lit(&mut self, e: &mut Engine, body: BodyRef<'_>, constraint: bool) -> Lit {
         match body {
             BodyRef::Normal(ls) => {
-                let lits: Vec<Lit> = ls.iter().map(|&l| self.lit(l)).collect();
-                if constraint {
-                    self.constraint_body(e, &lits)
+                let mut key = std::mem::take(&mut self.key_buf);
+                conj_key(&mut key, ls.iter().map(|&l| self.lit(l)));
+                let b = if constraint {
+                    self.constraint_body(e, &key)
                 } else {
-                    self.conjunction(e, &lits)
-                }
+                    self.conjunction_of_key(e, &key)
+                };
+                key.clear();
+                self.key_buf = key;
+                b
             }
             BodyRef::Weight { lower, lits } => {
                 let mut key: Vec<(u32, i64)> = lits
@@ -282,8 +307,7 @@ impl Translation {
         for (a, q) in eqs.iter().enumerate() {
             if let Equiv::Body(ri) = *q {
                 if let BodyRef::Normal(ls) = p.rules.get(ri).body {
-                    let lits: Vec<Lit> = ls.iter().map(|&l| t.lit(l)).collect();
-                    t.define_conjunction(e, &lits, t.atom_lit[a]);
+                    t.define_conjunction(e, ls, t.atom_lit[a]);
                 }
             }
         }
@@ -318,15 +342,17 @@ impl Translation {
     /// `x -> l` and `lits -> x`), unless that conjunction already has a literal, is a single
     /// literal, or mentions `x`'s variable; then nothing happens and the rule clauses keep the
     /// equivalence.
-    fn define_conjunction(&mut self, e: &mut Engine, lits: &[Lit], x: Lit) {
-        let key = conj_key(lits);
-        if key.len() < 2 || key.iter().any(|&c| Lit::from_code(c).var() == x.var()) {
-            return;
+    fn define_conjunction(&mut self, e: &mut Engine, lits: &[i32], x: Lit) {
+        let mut key = std::mem::take(&mut self.key_buf);
+        conj_key(&mut key, lits.iter().map(|&l| self.lit(l)));
+        if key.len() >= 2 && key.iter().all(|&c| Lit::from_code(c).var() != x.var()) {
+            let hash = self.conj_hasher.hash_one(&key[..]);
+            if self.find_conj(hash, &key).is_none() {
+                self.insert_conj(e, &key, hash, x);
+            }
         }
-        let hash = self.conj_hasher.hash_one(&key[..]);
-        if self.find_conj(hash, &key).is_none() {
-            self.insert_conj(e, key, hash, x);
-        }
+        key.clear();
+        self.key_buf = key;
     }
 
     /// Sets `free` and `assumptions` from the external statements and assumptions of `p`: the
@@ -366,7 +392,7 @@ impl Translation {
         let b = self.body_lit(e, r.body, constraint);
         self.rule_body.push(b);
         debug_assert_eq!(self.rule_body.len(), index + 1);
-        let mut head: Vec<u32> = r.head.to_vec();
+        let mut head: SmallVec<[u32; 4]> = SmallVec::from_slice(r.head);
         head.sort_unstable();
         head.dedup();
         match r.head_kind {
@@ -376,9 +402,12 @@ impl Translation {
                 }
             }
             HeadKind::Disjunction => {
-                let mut c = vec![!b];
+                let mut c = std::mem::take(&mut self.lits_buf);
+                c.push(!b);
                 c.extend(head.iter().map(|&h| self.atom_lit[h as usize]));
                 e.add_clause(&c);
+                c.clear();
+                self.lits_buf = c;
                 if head.len() == 1 {
                     self.supports[head[0] as usize].push((b, index as u32));
                 } else {
@@ -402,9 +431,12 @@ impl Translation {
         if self.free[a] {
             return;
         }
-        let mut c = vec![!self.atom_lit[a]];
+        let mut c = std::mem::take(&mut self.lits_buf);
+        c.push(!self.atom_lit[a]);
         c.extend(self.supports[a].iter().map(|&(s, _)| s));
         e.add_clause(&c);
+        c.clear();
+        self.lits_buf = c;
     }
 
     /// Computes strongly connected components of the positive dependency graph, decides
@@ -724,19 +756,20 @@ impl Graph {
     }
 }
 
-/// What `Translation::lookup_conj` found: the conjunction's literal, or the sorted key and its
-/// hash under which a new one is entered.
+/// What `Translation::lookup_conj` found: the conjunction's literal, or the key's hash under
+/// which a new one is entered.
 enum ConjLookup {
     Known(Lit),
-    New(Vec<u32>, u64),
+    New(u64),
 }
 
-/// The key of a conjunction: its literal codes, sorted, without repeats.
-fn conj_key(lits: &[Lit]) -> Vec<u32> {
-    let mut key: Vec<u32> = lits.iter().map(|l| l.code() as u32).collect();
+/// Writes into the empty `key` the key of the conjunction of `lits`: their codes, sorted,
+/// without repeats.
+fn conj_key(key: &mut Vec<u32>, lits: impl Iterator<Item = Lit>) {
+    debug_assert!(key.is_empty());
+    key.extend(lits.map(|l| l.code() as u32));
     key.sort_unstable();
     key.dedup();
-    key
 }
 
 /// Tarjan's strongly connected components, iteratively; returns the component of each node.
