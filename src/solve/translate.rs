@@ -279,10 +279,13 @@ impl Translation {
         t.atom_lit.push(truth.positive());
         // With merging, the components of the positive dependency graph are needed before
         // translation; they are computed once and given to `install_unfounded_with`.
-        let cycles = eq.then(|| Cycles::of(p, n + 1));
-        let eqs = match &cycles {
-            Some(c) => equivalences(p, n, &external_free(p, n), &c.comp),
-            None => vec![Equiv::None; n + 1],
+        let (cycles, eqs) = if eq {
+            let mut heads = HeadRules::new(n + 1);
+            let c = Cycles::of(p, n + 1, |i, r| heads.add(i, r));
+            let eqs = equivalences(p, n, &external_free(p, n), &c.comp, &heads);
+            (Some(c), eqs)
+        } else {
+            (None, vec![Equiv::None; n + 1])
         };
         // Atoms with a variable of their own first, in atom order; then the aliases.
         let mut lit = vec![None; n + 1];
@@ -449,7 +452,7 @@ impl Translation {
     /// `self.atom_lit.len()` atoms, when already known.
     fn install_unfounded_with(&mut self, p: &GroundProgram, e: &mut Engine, known: Option<Cycles>) {
         let n = self.atom_lit.len();
-        let Cycles { comp, cyclic } = known.unwrap_or_else(|| Cycles::of(p, n));
+        let Cycles { comp, cyclic } = known.unwrap_or_else(|| Cycles::of(p, n, |_, _| {}));
         debug_assert_eq!(comp.len(), n);
         self.non_hcf = p.rules.iter().any(|r| {
             r.head_kind == HeadKind::Disjunction
@@ -536,10 +539,11 @@ struct Cycles {
 }
 
 impl Cycles {
-    /// The components of `p`'s positive dependency graph over atoms `0..n`. The graph is
-    /// freed on return: it is as large as the program's positive dependencies.
-    fn of(p: &GroundProgram, n: usize) -> Cycles {
-        let edges = positive_edges(p, n);
+    /// The components of `p`'s positive dependency graph over atoms `0..n`; `visit` sees
+    /// every rule and its index on the way. The graph is freed on return: it is as large as
+    /// the program's positive dependencies.
+    fn of(p: &GroundProgram, n: usize, visit: impl FnMut(usize, &RuleRef<'_>)) -> Cycles {
+        let edges = positive_edges(p, n, visit);
         let comp = scc(&edges);
         let mut size = vec![0u32; n];
         for &c in &comp {
@@ -577,28 +581,24 @@ enum Equiv {
 /// component would merge a loop into one variable and lose its unfoundedness, so it is left
 /// out; such an atom is cyclic, every other alias target is outside the alias's component,
 /// so aliased atoms are never cyclic and every cyclic atom keeps a variable of its own.
-/// `comp` gives the component of each atom `0..=n` in the positive dependency graph.
-fn equivalences(p: &GroundProgram, n: usize, free: &[bool], comp: &[u32]) -> Vec<Equiv> {
+/// `comp` gives the component of each atom `0..=n` in the positive dependency graph, `heads`
+/// the rules of each atom.
+fn equivalences(
+    p: &GroundProgram,
+    n: usize,
+    free: &[bool],
+    comp: &[u32],
+    heads: &HeadRules,
+) -> Vec<Equiv> {
     let mut out = vec![Equiv::None; n + 1];
-    // Per atom: number of rules with it in the head (capped at 2) and the last such rule; one
-    // pass over the rules, which also finds disjunctions.
-    let mut count = vec![0u8; n + 1];
-    let mut rule = vec![u32::MAX; n + 1];
-    for (i, r) in p.rules.iter().enumerate() {
-        if r.head.len() > 1 && r.head_kind == HeadKind::Disjunction {
-            return out;
-        }
-        for &h in r.head {
-            let h = h as usize;
-            count[h] = count[h].saturating_add(1).min(2);
-            rule[h] = i as u32;
-        }
+    if heads.disjunctive {
+        return out;
     }
     for a in 1..=n {
-        if count[a] != 1 || free[a] {
+        if heads.count[a] != 1 || free[a] {
             continue;
         }
-        let r = p.rules.get(rule[a] as usize);
+        let r = p.rules.get(heads.rule[a] as usize);
         if r.head_kind != HeadKind::Disjunction || r.head.len() != 1 {
             continue;
         }
@@ -614,10 +614,44 @@ fn equivalences(p: &GroundProgram, n: usize, free: &[bool], comp: &[u32]) -> Vec
                 }
                 Equiv::Lit(*l)
             }
-            _ => Equiv::Body(rule[a] as usize),
+            _ => Equiv::Body(heads.rule[a] as usize),
         };
     }
     out
+}
+
+/// Per atom, its rules as far as `equivalences` needs them; filled by one `add` per rule (in
+/// the pass over the rules that `positive_edges` makes anyway).
+struct HeadRules {
+    /// Per atom: the number of rules with it in the head, counted up to 2.
+    count: Vec<u8>,
+    /// Per atom: the last rule with it in the head.
+    rule: Vec<u32>,
+    /// Whether some rule is a disjunction of two or more atoms.
+    disjunctive: bool,
+}
+
+impl HeadRules {
+    /// No rules yet, for atoms `0..n`.
+    fn new(n: usize) -> HeadRules {
+        HeadRules {
+            count: vec![0; n],
+            rule: vec![u32::MAX; n],
+            disjunctive: false,
+        }
+    }
+
+    /// Records rule `i`, `r`.
+    fn add(&mut self, i: usize, r: &RuleRef<'_>) {
+        if r.head.len() > 1 && r.head_kind == HeadKind::Disjunction {
+            self.disjunctive = true;
+        }
+        for &h in r.head {
+            let h = h as usize;
+            self.count[h] = self.count[h].saturating_add(1).min(2);
+            self.rule[h] = i as u32;
+        }
+    }
 }
 
 /// Per atom: free by the external statements (the last statement on an atom decides, as in
@@ -671,8 +705,13 @@ fn resolve_aliases(eqs: &[Equiv], lit: &mut [Option<Lit>], e: &mut Engine) {
 }
 
 /// The positive dependency graph: per atom, the atoms of positive body literals (positive
-/// weights) of its rules.
-fn positive_edges(p: &GroundProgram, n: usize) -> Graph {
+/// weights) of its rules. `visit` sees every rule and its index, in the first of the two
+/// passes over the rules.
+fn positive_edges(
+    p: &GroundProgram,
+    n: usize,
+    mut visit: impl FnMut(usize, &RuleRef<'_>),
+) -> Graph {
     let positive = |r: &RuleRef<'_>| -> usize {
         if r.head.is_empty() {
             // Integrity constraints (most rules of some programs) give no edge.
@@ -686,7 +725,8 @@ fn positive_edges(p: &GroundProgram, n: usize) -> Graph {
     // Two passes (count, then fill) into one flat array: a `Vec` per atom cost 24 bytes of
     // header per atom even for the many atoms without edges.
     let mut first = vec![0usize; n + 1];
-    for r in &p.rules {
+    for (i, r) in p.rules.iter().enumerate() {
+        visit(i, &r);
         let k = positive(&r);
         if k > 0 {
             for &h in r.head {
