@@ -16,9 +16,12 @@
 //!   `values[(!l).code()] == -values[l.code()]`.
 //! - Assumptions occupy decision levels `1..=assumptions.len()` during `search`.
 
+mod loops;
+
 use super::config::ReduceSchedule;
 use super::lit::{Lit, Var};
 use super::unfounded::Unfounded;
+use loops::{is_loop_watch, Loops};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::Instant;
@@ -44,6 +47,8 @@ enum Reason {
     Long(ClauseRef),
     /// Implied with the explanation stored in `Engine::stored[var]` (weight constraints).
     Stored,
+    /// Implied by a shared loop formula (`loops`), by its id.
+    Loop(u32),
 }
 
 /// A watch list entry.
@@ -193,6 +198,8 @@ pub struct Engine {
     wasted: usize,
     /// References of learnt long clauses.
     learnts: Vec<ClauseRef>,
+    /// Shared loop formulas (learnt, watched in `watches` with tagged references).
+    loops: Loops,
     /// Weight constraints.
     weights: Vec<WeightConstraint>,
     /// Assigned literals in order.
@@ -329,6 +336,7 @@ impl Engine {
             arena: Vec::new(),
             wasted: 0,
             learnts: Vec::new(),
+            loops: Loops::default(),
             weights: Vec::new(),
             trail: Vec::new(),
             trail_lim: Vec::new(),
@@ -858,24 +866,17 @@ impl Engine {
                 return None;
             }
             let mut uf = self.unfounded.take().expect("checked above");
-            let nogoods = uf.check(self, start);
+            let sets = uf.check(self, start);
             self.unfounded = Some(uf);
             // The propagator has seen everything up to here; the nogoods' own assignments
             // (and a backjump they may cause) start the next segment.
             self.uf_clean_upto = self.trail.len();
             self.uf_dirty = false;
-            if nogoods.is_empty() {
+            if sets.is_empty() {
                 return None;
             }
-            for mut ng in nogoods {
-                self.loop_nogoods += 1;
-                for &l in &ng {
-                    self.occ[l.var().index()] += if l.is_neg() { -1 } else { 1 };
-                    if self.score_other {
-                        self.bump_var(l.var());
-                    }
-                }
-                if self.add_clause_in_search(&mut ng, true) {
+            for set in sets {
+                if self.add_loop_set(&set.atoms, &set.ext) {
                     return Some(());
                 }
             }
@@ -961,6 +962,7 @@ impl Engine {
         let mut i = 0;
         let mut j = 0;
         let mut conflict = false;
+        let mut loop_watches = false;
         while i < n {
             let w = ws[i];
             i += 1;
@@ -988,6 +990,13 @@ impl Engine {
                     conflict = true;
                     break;
                 }
+                continue;
+            }
+            if is_loop_watch(w.cref) {
+                // Loop formulas are visited after the clauses (`propagate_loops`).
+                ws[j] = w;
+                j += 1;
+                loop_watches = true;
                 continue;
             }
             let cref = w.cref;
@@ -1046,6 +1055,9 @@ impl Engine {
         // literals only.
         debug_assert!(self.watches[false_lit.code()].is_empty());
         self.watches[false_lit.code()] = ws;
+        if loop_watches && !conflict {
+            return self.propagate_loops(false_lit);
+        }
         conflict
     }
 
@@ -1184,6 +1196,7 @@ impl Engine {
                     .copied()
                     .filter(|l| l.var() != v),
             ),
+            Reason::Loop(id) => self.loop_reason_lits(id, v, out),
         }
     }
 
@@ -1235,9 +1248,13 @@ impl Engine {
                 break;
             }
             clause.clear();
-            if let Reason::Long(cref) = self.reason[pl.var().index()] {
-                self.bump_clause(cref);
-                self.update_lbd(cref);
+            match self.reason[pl.var().index()] {
+                Reason::Long(cref) => {
+                    self.bump_clause(cref);
+                    self.update_lbd(cref);
+                }
+                Reason::Loop(id) => self.bump_loop(id),
+                _ => {}
             }
             // The implied literal itself is not added, and the filter above skips it.
             self.reason_lits(pl.var(), &mut clause);
@@ -1389,12 +1406,18 @@ impl Engine {
         let a = f32::from_bits(self.arena[i]) + self.cla_inc as f32;
         self.arena[i] = a.to_bits();
         if a > 1e20 {
-            for &c in &self.learnts {
-                let k = c as usize + 2;
-                self.arena[k] = (f32::from_bits(self.arena[k]) * 1e-20).to_bits();
-            }
-            self.cla_inc *= 1e-20;
+            self.rescale_clause_activities();
         }
+    }
+
+    /// Scales every learnt clause's and loop formula's activity, and the increment, by 1e-20.
+    fn rescale_clause_activities(&mut self) {
+        for &c in &self.learnts {
+            let k = c as usize + 2;
+            self.arena[k] = (f32::from_bits(self.arena[k]) * 1e-20).to_bits();
+        }
+        self.rescale_loop_activities();
+        self.cla_inc *= 1e-20;
     }
 
     fn heap_less(&self, a: Var, b: Var) -> bool {
@@ -1511,6 +1534,8 @@ impl Engine {
     }
 
     fn reduce_db(&mut self) {
+        // Loop formulas first: the passes over the watch lists below drop their watches.
+        self.reduce_loops();
         let mut cands: Vec<(u32, f32, ClauseRef)> = self
             .learnts
             .iter()
@@ -1544,9 +1569,16 @@ impl Engine {
             self.collect_garbage();
         } else {
             // Propagation never looks at deleted clauses: drop their watches now.
-            let arena = &self.arena;
+            let (arena, loops) = (&self.arena, &self.loops);
             for ws in self.watches.iter_mut() {
-                ws.retain(|w| w.cref == u32::MAX || arena[w.cref as usize + 1] & FLAG_DELETED == 0);
+                ws.retain(|w| {
+                    w.cref == u32::MAX
+                        || if is_loop_watch(w.cref) {
+                            loops.is_live(w.cref & !loops::LOOP_TAG)
+                        } else {
+                            arena[w.cref as usize + 1] & FLAG_DELETED == 0
+                        }
+                })
             }
         }
     }
@@ -1569,12 +1601,14 @@ impl Engine {
             }
             pos += HEADER + len;
         }
-        let arena = &self.arena;
+        let (arena, loops) = (&self.arena, &self.loops);
         let live = |c: u32| arena[c as usize + 1] & FLAG_DELETED == 0;
         for ws in self.watches.iter_mut() {
             ws.retain_mut(|w| {
                 if w.cref == u32::MAX {
                     true
+                } else if is_loop_watch(w.cref) {
+                    loops.is_live(w.cref & !loops::LOOP_TAG)
                 } else if live(w.cref) {
                     w.cref = arena[w.cref as usize + 2];
                     true
@@ -1697,6 +1731,7 @@ impl Engine {
         self.arena.truncate(to);
         self.learnts = learnts;
         self.wasted = 0;
+        self.simplify_loops();
         self.simp_assigns = self.trail.len();
         self.simp_props = self.propagations + self.arena.len() as u64;
     }
@@ -1904,7 +1939,9 @@ impl Engine {
             self.maybe_simplify();
             match self.reduce {
                 ReduceSchedule::Size => {
-                    if self.learnts.len() as f64 >= self.max_learnts + self.trail.len() as f64 {
+                    // A loop formula counts as the clauses it stands for.
+                    let learnts = self.learnts.len() + self.loops.clauses;
+                    if learnts as f64 >= self.max_learnts + self.trail.len() as f64 {
                         self.reduce_db();
                         self.max_learnts *= 1.1;
                     }

@@ -17,9 +17,10 @@
 //! 3. support is propagated forward inside `S` (least fixpoint): an atom of `S` with a support
 //!    that is not false and has no same-component positive atom still in `S` gets that support
 //!    as its new source and leaves `S`;
-//! 4. what remains of `S` is unfounded. Split by component, each part `U` gets, per atom `a`,
-//!    the loop nogood `a -> external supports of U`, written as a clause whose other literals
-//!    are all false, so it propagates `not a`.
+//! 4. what remains of `S` is unfounded. Split by component, each part `U` is returned with its
+//!    external supports `EB(U)` (all false): the engine learns the loop nogoods
+//!    `{a} ∪ EB(U)` for every `a` in `U`, as one shared loop formula (`engine::loops`) when
+//!    that is smaller, so it propagates `not a` for every atom of `U`.
 //!
 //! Invariants:
 //! - The source graph (atom -> same-component atoms its source counted) is acyclic: a source is
@@ -110,6 +111,17 @@ pub enum SupportBody {
         /// Weighted literals.
         lits: Vec<(Lit, u64, Option<u32>)>,
     },
+}
+
+/// An unfounded set `U` of one component and its external supports: every atom of `U` must be
+/// false unless one of `ext` is true (the loop nogoods `{a} ∪ EB(U)` for each `a` in `U`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LoopSet {
+    /// The atoms of `U` (positive literals), none of them false.
+    pub atoms: Vec<Lit>,
+    /// One false literal per external support (with a step guard, also the guard's
+    /// negation), sorted and without repetitions.
+    pub ext: Vec<Lit>,
 }
 
 /// The unfounded-set propagator's program view and its source pointers.
@@ -289,10 +301,10 @@ impl Unfounded {
     }
 
     /// Processes the assignments `trail[start..]` made since the previous check and returns
-    /// loop nogoods for the unfounded atoms found (empty when every non-false cyclic atom still
-    /// has a valid source). Must be called at a unit-propagation fixpoint.
+    /// the unfounded sets found, one per component (empty when every non-false cyclic atom
+    /// still has a valid source). Must be called at a unit-propagation fixpoint.
     #[inline(never)]
-    pub fn check(&mut self, e: &Engine, start: usize) -> Vec<Vec<Lit>> {
+    pub fn check(&mut self, e: &Engine, start: usize) -> Vec<LoopSet> {
         debug_assert!(self.s_list.is_empty() && self.queue.is_empty());
         // 1. Sources invalidated by newly false literals.
         let trail = e.trail();
@@ -368,40 +380,32 @@ impl Unfounded {
                 self.count[self.occurs.data[k].0 as usize] = 0;
             }
         }
-        // 4. What is left is unfounded; one nogood per atom, per component.
+        // 4. What is left is unfounded; one loop set per component.
         let mut unfounded: Vec<u32> = self
             .s_list
             .iter()
             .copied()
             .filter(|&a| self.in_s[a as usize])
             .collect();
-        let nogoods = if unfounded.is_empty() {
-            Vec::new()
-        } else {
+        let mut sets = Vec::new();
+        if !unfounded.is_empty() {
             unfounded.sort_unstable_by_key(|&a| (self.component[a as usize], a));
-            let mut out = Vec::new();
             for part in unfounded
                 .chunk_by(|a, b| self.component[*a as usize] == self.component[*b as usize])
             {
-                let ext = self.external(e, part);
-                for &a in part {
-                    let mut c = Vec::with_capacity(ext.len() + 2);
-                    let not_a = !self.atom_lit[a as usize];
-                    c.push(not_a);
-                    // With merged atoms an external support can be `not a` itself (a support
-                    // literal shared with `a`'s negation); a clause never repeats a literal.
-                    c.extend(ext.iter().copied().filter(|&l| l != not_a));
-                    c.extend(self.guard.map(|g| !g));
-                    out.push(c);
-                }
+                let mut ext = self.external(e, part);
+                ext.extend(self.guard.map(|g| !g));
+                ext.sort_unstable();
+                ext.dedup();
+                let atoms = part.iter().map(|&a| self.atom_lit[a as usize]).collect();
+                sets.push(LoopSet { atoms, ext });
             }
-            out
-        };
+        }
         for &a in &self.s_list {
             self.in_s[a as usize] = false;
         }
         self.s_list.clear();
-        nogoods
+        sets
     }
 
     /// The external supports of `part` (atoms of one component, all in `S`), each as a false
