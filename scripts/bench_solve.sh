@@ -6,6 +6,8 @@
 # and memory ratios over the rows both finished. A development script: it may read ../shared.
 #
 # Usage: scripts/bench_solve.sh [TIMEOUT_SECONDS] [FAMILY_REGEX]
+# Environment: THREADS=N runs both with N threads (clasp `-t N`, its own portfolio; Lucent
+# `--parallel-mode=N`); the default is one thread each.
 # Needs gringo and clasp (apt-get install -y gringo clasp) and GNU time (apt-get install -y time).
 set -u
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -46,14 +48,18 @@ while IFS=$'\x1f' read -r family enc inst args mode; do
         timeout 300 gringo --output=intermediate "$BENCH/$enc" "$BENCH/$inst" $args >"$aspif" 2>/dev/null || { rm -f "$aspif"; echo "$family $inst: grounding failed"; continue; }
     fi
     case $mode in n1) nopt="-n1";; n0) nopt="-n0";; *) nopt="";; esac
-    t0=$(now); cout=$(/usr/bin/time -f %M -o "$TMP/rss.$$" timeout "$LIMIT" clasp $nopt -q "$aspif" 2>/dev/null); t1=$(now)
+    copt="" oopt=""
+    if [ "${THREADS:-1}" -gt 1 ]; then copt="-t ${THREADS}"; oopt="--parallel-mode=${THREADS}"; fi
+    t0=$(now); cout=$(/usr/bin/time -f %M -o "$TMP/rss.$$" timeout "$LIMIT" clasp $nopt $copt -q "$aspif" 2>/dev/null); t1=$(now)
     cm=$(rss)
-    oout=$(/usr/bin/time -f %M -o "$TMP/rss.$$" timeout "$LIMIT" "$OURS" $nopt -q "$aspif" 2>/dev/null); t2=$(now)
+    oout=$(/usr/bin/time -f %M -o "$TMP/rss.$$" timeout "$LIMIT" "$OURS" $nopt $oopt -q "$aspif" 2>/dev/null); t2=$(now)
     om=$(rss)
     ct=$(echo "$t1 - $t0" | bc); ot=$(echo "$t2 - $t1" | bc)
     cs=$(echo "$cout" | summary); os=$(echo "$oout" | summary)
-    if [ -z "${cs%%|*}" ]; then cs="TIMEOUT||"; fi
-    if [ -z "${os%%|*}" ]; then os="TIMEOUT||"; fi
+    # A solver stopped by `timeout` may still print its last result (clasp answers SIGTERM with
+    # the best model so far), so a run that reached the limit is a timeout whatever it printed.
+    if [ -z "${cs%%|*}" ] || [ "$(echo "$ct >= $LIMIT" | bc)" = 1 ]; then cs="TIMEOUT||"; fi
+    if [ -z "${os%%|*}" ] || [ "$(echo "$ot >= $LIMIT" | bc)" = 1 ]; then os="TIMEOUT||"; fi
     if [ "$mode" = opt ]; then
         # The number of improving models depends on the search; compare result and optimum.
         cs="${cs%%|*}|${cs##*|}"; os="${os%%|*}|${os##*|}"

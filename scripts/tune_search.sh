@@ -11,7 +11,9 @@
 #        scripts/tune_search.sh --compare A.tsv B.tsv
 # Environment: LIMIT (conflicts, default 300000), SECS (seconds per row, default 30),
 # JOBS (parallel rows, default 2), FILTER (regex on the family), SKIP (regex on family/instance
-# of rows to leave out, e.g. those clasp does not solve in time), CLOCK (`wall`, the default, or
+# of rows to leave out, e.g. those clasp does not solve in time), GROUNDER (gringo, the default,
+# or lucent: ground with `lucent --mode=gringo` instead, afresh on every run, to compare the
+# search on our ground program with the search on gringo's), CLOCK (`wall`, the default, or
 # `cpu`: the time column holds user plus system seconds instead of elapsed ones, which a busy
 # shared machine disturbs much less; the time limit SECS stays in elapsed seconds).
 set -u
@@ -30,6 +32,9 @@ shift
 BENCH=${BENCH_DIR:-$ROOT/../shared/data/bench}
 TMP=${TMPDIR:-/tmp}/lucent-bench-solve
 OURS=${CARGO_TARGET_DIR:-$ROOT/target}/release/examples/solve_aspif
+LUCENT=${CARGO_TARGET_DIR:-$ROOT/target}/release/lucent
+LTMP=$(mktemp -d "${TMPDIR:-/tmp}/lucent-bench-ground.XXXXXX")
+trap 'rm -rf "$LTMP"' EXIT
 mkdir -p "$TMP"
 export OURS TMP LIMIT=${LIMIT:-300000} SECS=${SECS:-30} CLOCK=${CLOCK:-wall}
 run_row() {
@@ -63,7 +68,14 @@ tail -n +2 "$BENCH/MANIFEST.tsv" | awk -F'\t' -v OFS=$'\x1f' '{print $1,$2,$3,($
         [ "$args" = "-" ] && args=
         key=$(echo "$enc $inst $args" | md5sum | cut -c1-12)
         aspif="$TMP/$key.aspif"
-        if [ ! -s "$aspif" ]; then
+        if [ "${GROUNDER:-gringo}" = lucent ]; then
+            aspif="$LTMP/$key.aspif"
+            # shellcheck disable=SC2086
+            timeout 300 "$LUCENT" --mode=gringo "$BENCH/$enc" "$BENCH/$inst" $args >"$aspif" 2>/dev/null || {
+                rm -f "$aspif"
+                continue
+            }
+        elif [ ! -s "$aspif" ]; then
             # shellcheck disable=SC2086
             timeout 300 gringo --output=intermediate "$BENCH/$enc" "$BENCH/$inst" $args >"$aspif" 2>/dev/null || {
                 rm -f "$aspif"

@@ -1,18 +1,24 @@
-//! Instantiation: grounds rewritten statements bottom-up over the predicate dependency graph.
+//! Instantiation: grounds rewritten statements bottom-up over the statement dependency graph.
 //!
-//! Algorithm (Kaminski, Schaub, TPLP 2022, simplified): strongly connected components of the
-//! predicate dependency graph are grounded in topological order, each split, as gringo does,
-//! into the components of its positive dependencies (a predicate read only under `not` inside
+//! Algorithm (Kaminski, Schaub, TPLP 2022, simplified): ground facts first, then the strongly
+//! connected components of the statement dependency graph (a statement depends on every
+//! statement heading a predicate it reads) in topological order, each split, as gringo does,
+//! into the components of its positive dependencies (a statement read only under `not` inside
 //! its component is grounded after the reader, whose literal stays); inside a recursive part,
 //! semi-naive evaluation grounds each rule once per combination that uses at least one atom new
-//! in the last round. Components with an aggregate or conditional literal over one of their own
-//! predicates are instead grounded naively to a fixpoint, keeping only the last round's rules
-//! (aggregate instances must see every element). Joins use per-predicate indexes on the bound
-//! argument positions, built lazily and extended as atoms arrive.
+//! in the last round, the rounds after the first in gringo's queue order. Components with an
+//! aggregate or conditional literal over one of their own predicates are instead grounded
+//! naively to a fixpoint, keeping only the last round's rules (aggregate instances must see
+//! every element). Joins use per-predicate indexes on the bound argument positions, built
+//! lazily and extended as atoms arrive. The graph search, the split and the queue follow
+//! gringo's (`Dependency::analyze`, `Graph::tarjan`, `Queue::process`), so the rules come out
+//! in gringo's order: the atom numbering, hence the solver's initial variable order, follows.
 //!
 //! Invariants:
 //! - Internal atom ids are `1..=atoms.len()`; an atom is *in the domain* once some rule instance
 //!   can derive it; `fact` atoms are certainly true, and they never lose that status.
+//! - A predicate is *complete* once every statement heading it is grounded; readers come after
+//!   (or in the same component, where `not` literals on it stay).
 //! - A positive body literal only matches atoms in the domain; a fact matched positively is
 //!   removed from the ground body; `not a` with `a` a fact kills the instance, and `not a` with
 //!   `a` of a complete predicate outside the domain is removed.
@@ -2207,27 +2213,18 @@ impl<'a> Grounder<'a> {
         // What each statement reads other than under default negation.
         let mut pos_reads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
         for s in &prog.stmts {
-            let mut h = Vec::new();
-            match &s.head {
-                NHead::Disj(es) | NHead::Choice(es) => {
-                    for a in es.iter().flat_map(|e| e.derived_atoms()) {
-                        if !h.contains(&a.pred) {
-                            h.push(a.pred)
-                        }
-                    }
-                }
-                NHead::None => {}
-            }
-            if let NKind::External(a, _) = &s.kind {
-                h.push(a.pred);
-            }
-            let mut r = Vec::new();
+            let h = stmt_heads(s);
+            // In gringo's order of the body (positive literals last to first, then the negative
+            // ones), which decides the order of its depth-first search.
+            let negative =
+                |l: &NLit| matches!(l, NLit::Pred { sign, .. } if *sign != Sign::Positive);
             let mut pr = Vec::new();
-            for l in &s.body {
+            for l in s.body.iter().rev().filter(|l| !negative(l)) {
+                lit_preds(l, &mut pr);
+            }
+            let mut r = pr.clone();
+            for l in s.body.iter().filter(|l| negative(l)) {
                 lit_preds(l, &mut r);
-                if !matches!(l, NLit::Pred { sign, .. } if *sign != Sign::Positive) {
-                    lit_preds(l, &mut pr);
-                }
             }
             if let NHead::Disj(es) | NHead::Choice(es) = &s.head {
                 for e in es {
@@ -2253,45 +2250,84 @@ impl<'a> Grounder<'a> {
             self.derive(a);
             self.atoms[a as usize - 1].fact = true;
         }
-        // Dependency graph: edges from a head predicate to what its rule reads, and between the
-        // head predicates of one rule.
-        let mut edges: Vec<Vec<u32>> = vec![Vec::new(); n];
-        for (h, r) in heads.iter().zip(&reads) {
-            for &p in h {
-                edges[p as usize].extend(r.iter().copied());
-                edges[p as usize].extend(h.iter().copied());
+        // Statement dependency graph, as gringo's (Dependency::analyze): a statement depends on
+        // every statement heading a predicate it reads. Ground facts are no nodes (gringo keeps
+        // them apart and outputs them first); they are grounded before everything.
+        let mut providers: Vec<Vec<u32>> = vec![Vec::new(); n];
+        let mut nodes: Vec<usize> = Vec::new();
+        let mut node_of = vec![u32::MAX; prog.stmts.len()];
+        for (si, s) in prog.stmts.iter().enumerate() {
+            if !is_ground_fact(s) {
+                node_of[si] = nodes.len() as u32;
+                nodes.push(si);
+            }
+            for &p in &heads[si] {
+                providers[p as usize].push(si as u32);
             }
         }
-        let mut pos_edges: Vec<Vec<u32>> = vec![Vec::new(); n];
-        for (h, r) in heads.iter().zip(&pos_reads) {
-            for &p in h {
-                pos_edges[p as usize].extend(r.iter().copied());
-                pos_edges[p as usize].extend(h.iter().copied());
+        // Statements still to ground per predicate: a predicate is complete once all are done.
+        let mut pending: Vec<u32> = providers.iter().map(|v| v.len() as u32).collect();
+        for (d, &left) in self.domains.iter_mut().zip(&pending) {
+            if left == 0 {
+                d.complete = true;
             }
         }
-        let comps = positive_split(tarjan(&edges), &pos_edges);
-        let mut comp_of = vec![0usize; n];
-        for (ci, c) in comps.iter().enumerate() {
-            for &p in c {
-                comp_of[p as usize] = ci;
+        let finished = |g: &mut Self, si: usize, pending: &mut Vec<u32>| {
+            for &p in &heads[si] {
+                pending[p as usize] -= 1;
+                if pending[p as usize] == 0 {
+                    g.domains[p as usize].complete = true;
+                }
+            }
+        };
+        for (si, s) in prog.stmts.iter().enumerate() {
+            if node_of[si] == u32::MAX {
+                if self.stopped.is_some() {
+                    return;
+                }
+                self.ground_stmt(s, &[]);
+                finished(self, si, &mut pending);
             }
         }
-        let mut by_comp: Vec<Vec<usize>> = vec![Vec::new(); comps.len()];
-        let mut headless: Vec<usize> = Vec::new();
-        for (si, h) in heads.iter().enumerate() {
-            match h.first() {
-                Some(&p) => by_comp[comp_of[p as usize]].push(si),
-                None => headless.push(si),
-            }
-        }
-        // Tarjan yields components in reverse topological order of the "reads" edges, i.e.
-        // dependencies first.
+        let edges_of = |reads: &[Vec<PredId>], keep: &dyn Fn(usize) -> bool| -> Vec<Vec<u32>> {
+            nodes
+                .iter()
+                .map(|&si| {
+                    let mut e = Vec::new();
+                    for &p in &reads[si] {
+                        for &t in &providers[p as usize] {
+                            let t = node_of[t as usize];
+                            if t != u32::MAX && keep(t as usize) {
+                                e.push(t);
+                            }
+                        }
+                    }
+                    e
+                })
+                .collect()
+        };
+        let edges = edges_of(&reads, &|_| true);
+        let pos_edges = edges_of(&pos_reads, &|_| true);
+        let comps = positive_split(gringo_tarjan(&edges), &pos_edges);
+        let mut comp_mark = vec![usize::MAX; n];
         for (ci, comp) in comps.iter().enumerate() {
             if self.stopped.is_some() {
                 break;
             }
-            let stmts: Vec<&NStmt> = by_comp[ci].iter().map(|&i| &prog.stmts[i]).collect();
-            let in_comp = |p: PredId| comp_of[p as usize] == ci;
+            let stmts: Vec<&NStmt> = comp
+                .iter()
+                .map(|&v| &prog.stmts[nodes[v as usize]])
+                .collect();
+            let mut preds: Vec<PredId> = Vec::new();
+            for &v in comp {
+                for &p in &heads[nodes[v as usize]] {
+                    if comp_mark[p as usize] != ci {
+                        comp_mark[p as usize] = ci;
+                        preds.push(p);
+                    }
+                }
+            }
+            let in_comp = |p: PredId| comp_mark[p as usize] == ci;
             let naive = stmts
                 .iter()
                 .any(|s| s.body.iter().any(|l| nested_reads(l, &in_comp)))
@@ -2310,24 +2346,18 @@ impl<'a> Grounder<'a> {
             });
             if naive {
                 self.naive = true;
-                self.ground_naive(&stmts, comp);
+                self.ground_naive(&stmts, &preds);
                 self.naive = false;
             } else if recursive {
-                self.ground_seminaive(&stmts, comp, &in_comp);
+                self.ground_seminaive(&stmts, &preds, &in_comp);
             } else {
                 for s in &stmts {
                     self.ground_stmt(s, &[]);
                 }
             }
-            for &p in comp {
-                self.domains[p as usize].complete = true;
+            for &v in comp {
+                finished(self, nodes[v as usize], &mut pending);
             }
-        }
-        for si in headless {
-            if self.stopped.is_some() {
-                break;
-            }
-            self.ground_stmt(&prog.stmts[si], &[]);
         }
     }
 
@@ -2406,6 +2436,55 @@ impl<'a> Grounder<'a> {
                 .collect();
             self.ground_stmt(s, &ranges);
         }
+        // Later rounds follow gringo's queue of instantiators (Queue::process): an instantiator
+        // is a statement with one recursive literal over the last round's new atoms (earlier
+        // recursive literals over older atoms, later ones over all). After a round, the
+        // statements of that round, in order, enqueue the instantiators reading what they head
+        // whose literal has new atoms, in the order the instantiators were registered. Only
+        // the order of the output rules (hence the atom numbering) depends on this order.
+        let rec: Vec<Vec<usize>> = stmts
+            .iter()
+            .map(|s| {
+                s.body
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, l)| matches!(l, NLit::Pred { sign: Sign::Positive, atom } if in_comp(atom.pred)))
+                    .map(|(i, _)| i)
+                    .collect()
+            })
+            .collect();
+        let heads: Vec<Vec<PredId>> = stmts.iter().map(|s| stmt_heads(s)).collect();
+        let rec_pred = |t: usize, jj: usize| -> PredId {
+            match &stmts[t].body[rec[t][jj]] {
+                NLit::Pred { atom, .. } => atom.pred,
+                _ => unreachable!("recursive literals are predicate literals"),
+            }
+        };
+        // deps[s]: the instantiators (statement, recursive literal) reading a predicate that
+        // statement s heads, in registration order.
+        let mut deps: Vec<Vec<(usize, usize)>> = vec![Vec::new(); stmts.len()];
+        for (t, r) in rec.iter().enumerate() {
+            for jj in 0..r.len() {
+                let p = rec_pred(t, jj);
+                for (s, h) in heads.iter().enumerate() {
+                    if h.contains(&p) {
+                        deps[s].push((t, jj));
+                    }
+                }
+            }
+        }
+        let offset: Vec<usize> = rec
+            .iter()
+            .scan(0usize, |acc, r| {
+                let o = *acc;
+                *acc += r.len();
+                Some(o)
+            })
+            .collect();
+        let mut enqueued =
+            vec![false; offset.last().map_or(0, |&o| o) + rec.last().map_or(0, |r| r.len())];
+        // The statements whose heads propagate after the current round, in order.
+        let mut current: Vec<usize> = (0..stmts.len()).collect();
         loop {
             let mut any = false;
             for &p in comp {
@@ -2417,35 +2496,38 @@ impl<'a> Grounder<'a> {
             if !any || self.stopped.is_some() {
                 return;
             }
-            // For each recursive literal j: j over the delta, earlier ones over old atoms,
-            // later ones over old and delta.
-            for s in stmts {
-                let rec: Vec<usize> = s
-                    .body
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, l)| matches!(l, NLit::Pred { sign: Sign::Positive, atom } if in_comp(atom.pred)))
-                    .map(|(i, _)| i)
-                    .collect();
-                for jj in 0..rec.len() {
-                    let mut ranges: Vec<Option<Range>> = vec![None; s.body.len()];
-                    let mut empty = false;
-                    for (kk, &i) in rec.iter().enumerate() {
-                        let NLit::Pred { atom, .. } = &s.body[i] else {
-                            continue;
-                        };
-                        let d = &self.domains[atom.pred as usize];
-                        let r = match kk.cmp(&jj) {
-                            std::cmp::Ordering::Less => (0, d.old),
-                            std::cmp::Ordering::Equal => (d.old, d.delta),
-                            std::cmp::Ordering::Greater => (0, d.delta),
-                        };
-                        empty |= r.0 >= r.1;
-                        ranges[i] = Some(r);
+            let mut queue: Vec<(usize, usize)> = Vec::new();
+            for &s in &current {
+                for &(t, jj) in &deps[s] {
+                    let d = &self.domains[rec_pred(t, jj) as usize];
+                    if !enqueued[offset[t] + jj] && d.delta > d.old {
+                        enqueued[offset[t] + jj] = true;
+                        queue.push((t, jj));
                     }
-                    if !empty {
-                        self.ground_stmt(s, &ranges);
-                    }
+                }
+            }
+            current.clear();
+            for &(t, jj) in &queue {
+                enqueued[offset[t] + jj] = false;
+                current.push(t);
+                let s = stmts[t];
+                let mut ranges: Vec<Option<Range>> = vec![None; s.body.len()];
+                let mut empty = false;
+                for (kk, &i) in rec[t].iter().enumerate() {
+                    let NLit::Pred { atom, .. } = &s.body[i] else {
+                        continue;
+                    };
+                    let d = &self.domains[atom.pred as usize];
+                    let r = match kk.cmp(&jj) {
+                        std::cmp::Ordering::Less => (0, d.old),
+                        std::cmp::Ordering::Equal => (d.old, d.delta),
+                        std::cmp::Ordering::Greater => (0, d.delta),
+                    };
+                    empty |= r.0 >= r.1;
+                    ranges[i] = Some(r);
+                }
+                if !empty {
+                    self.ground_stmt(s, &ranges);
                 }
             }
         }
@@ -2606,6 +2688,34 @@ fn lit_preds(l: &NLit, out: &mut Vec<PredId>) {
 }
 
 /// True when an aggregate of `l` reads a predicate of the current component.
+/// The predicates a statement derives atoms of (its head atoms, or the external atom).
+fn stmt_heads(s: &NStmt) -> Vec<PredId> {
+    let mut h = Vec::new();
+    match &s.head {
+        NHead::Disj(es) | NHead::Choice(es) => {
+            for a in es.iter().flat_map(|e| e.derived_atoms()) {
+                if !h.contains(&a.pred) {
+                    h.push(a.pred)
+                }
+            }
+        }
+        NHead::None => {}
+    }
+    if let NKind::External(a, _) = &s.kind {
+        h.push(a.pred);
+    }
+    h
+}
+
+/// Whether a statement is a ground fact (one unconditional head atom, no body, no variables):
+/// gringo keeps these out of its dependency graph and outputs them first.
+fn is_ground_fact(s: &NStmt) -> bool {
+    matches!(s.kind, NKind::Rule)
+        && s.body.is_empty()
+        && s.num_vars == 0
+        && matches!(&s.head, NHead::Disj(es) if es.len() == 1 && es[0].cond.is_empty() && es[0].conj.is_empty())
+}
+
 fn nested_reads(l: &NLit, in_comp: &dyn Fn(PredId) -> bool) -> bool {
     match l {
         NLit::Agg(_) => {
@@ -2617,96 +2727,103 @@ fn nested_reads(l: &NLit, in_comp: &dyn Fn(PredId) -> bool) -> bool {
     }
 }
 
-/// Splits each strongly connected component of the full dependency graph into the components
-/// of its positive dependencies, in topological order, as gringo does: a predicate read only
-/// under default negation by a rule of the same component is grounded after that rule, which
-/// keeps such literals (the predicate is not complete yet) instead of iterating the whole
-/// component together. Grounding each part to a fixpoint in this order gives the same rules,
-/// in gringo's order.
+/// Splits each strongly connected component of the statement dependency graph into the
+/// components of its positive dependencies, in topological order, as gringo does: a statement
+/// read only under default negation by a statement of the same component is grounded after
+/// it, which keeps such literals (the predicate is not complete yet) instead of iterating the
+/// whole component together. Grounding each part to a fixpoint in this order gives the same
+/// rules, in gringo's order. Parts list their statements in gringo's order too.
 fn positive_split(comps: Vec<Vec<u32>>, pos_edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
     let mut local = vec![u32::MAX; pos_edges.len()];
     let mut out = Vec::with_capacity(comps.len());
-    for mut comp in comps {
+    for comp in comps {
         if comp.len() == 1 {
             out.push(comp);
             continue;
         }
-        // Roots in discovery order (tarjan lists a component in reverse), as gringo's graph
-        // iterates the nodes of a component; it decides between independent parts.
-        comp.reverse();
-        for (i, &p) in comp.iter().enumerate() {
-            local[p as usize] = i as u32;
+        for (i, &v) in comp.iter().enumerate() {
+            local[v as usize] = i as u32;
         }
         let sub: Vec<Vec<u32>> = comp
             .iter()
-            .map(|&p| {
-                pos_edges[p as usize]
+            .map(|&v| {
+                pos_edges[v as usize]
                     .iter()
-                    .map(|&q| local[q as usize])
-                    .filter(|&q| q != u32::MAX)
+                    .map(|&w| local[w as usize])
+                    .filter(|&w| w != u32::MAX)
                     .collect()
             })
             .collect();
-        for part in tarjan(&sub) {
+        for part in gringo_tarjan(&sub) {
             out.push(part.into_iter().map(|i| comp[i as usize]).collect());
         }
-        for &p in &comp {
-            local[p as usize] = u32::MAX;
+        for &v in &comp {
+            local[v as usize] = u32::MAX;
         }
     }
     out
 }
 
-/// Tarjan's strongly connected components (iterative); components come out with every
-/// component after those it has edges to.
-pub fn tarjan(edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
+/// Strongly connected components, every component after those it has edges to, computed as
+/// gringo's `Graph::tarjan` does so that independent components and the members of one
+/// component come in gringo's order: depth-first from the nodes in reverse order (gringo's
+/// graph prepends inserted nodes), edges in insertion order, and each component listing its
+/// nodes as they leave the trail (last reached first).
+pub fn gringo_tarjan(edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
+    const NEW: u32 = u32::MAX;
+    const DONE: u32 = 0;
     let n = edges.len();
-    let mut index = vec![u32::MAX; n];
-    let mut low = vec![0u32; n];
-    let mut on_stack = vec![false; n];
+    // NEW, DONE, or the node's current low value (from 2 on, as gringo's).
+    let mut visited = vec![NEW; n];
+    let mut next_edge = vec![0usize; n];
     let mut stack: Vec<u32> = Vec::new();
+    let mut trail: Vec<u32> = Vec::new();
     let mut comps: Vec<Vec<u32>> = Vec::new();
-    let mut counter = 0u32;
-    for root in 0..n {
-        if index[root] != u32::MAX {
+    for root in (0..n).rev() {
+        if visited[root] != NEW {
             continue;
         }
-        let mut call: Vec<(u32, usize)> = vec![(root as u32, 0)];
-        index[root] = counter;
-        low[root] = counter;
-        counter += 1;
-        stack.push(root as u32);
-        on_stack[root] = true;
-        while let Some(&mut (v, ref mut ei)) = call.last_mut() {
-            if let Some(&w) = edges[v as usize].get(*ei) {
-                *ei += 1;
-                if index[w as usize] == u32::MAX {
-                    index[w as usize] = counter;
-                    low[w as usize] = counter;
-                    counter += 1;
-                    stack.push(w);
-                    on_stack[w as usize] = true;
-                    call.push((w, 0));
-                } else if on_stack[w as usize] {
-                    low[v as usize] = low[v as usize].min(index[w as usize]);
+        let mut index = 1u32;
+        let mut push =
+            |x: u32, visited: &mut Vec<u32>, stack: &mut Vec<u32>, trail: &mut Vec<u32>| {
+                index += 1;
+                visited[x as usize] = index;
+                stack.push(x);
+                trail.push(x);
+            };
+        push(root as u32, &mut visited, &mut stack, &mut trail);
+        while let Some(&y) = stack.last() {
+            let y = y as usize;
+            let es = &edges[y];
+            while next_edge[y] < es.len() && visited[es[next_edge[y]] as usize] != NEW {
+                next_edge[y] += 1;
+            }
+            if next_edge[y] < es.len() {
+                let z = es[next_edge[y]];
+                next_edge[y] += 1;
+                push(z, &mut visited, &mut stack, &mut trail);
+                continue;
+            }
+            stack.pop();
+            let mut root = true;
+            for &z in es {
+                let vz = visited[z as usize];
+                if vz != DONE && vz < visited[y] {
+                    root = false;
+                    visited[y] = vz;
                 }
-            } else {
-                call.pop();
-                if let Some(&(u, _)) = call.last() {
-                    low[u as usize] = low[u as usize].min(low[v as usize]);
-                }
-                if low[v as usize] == index[v as usize] {
-                    let mut c = Vec::new();
-                    loop {
-                        let w = stack.pop().expect("scc stack");
-                        on_stack[w as usize] = false;
-                        c.push(w);
-                        if w == v {
-                            break;
-                        }
+            }
+            if root {
+                let mut c = Vec::new();
+                loop {
+                    let w = trail.pop().expect("scc trail");
+                    visited[w as usize] = DONE;
+                    c.push(w);
+                    if w as usize == y {
+                        break;
                     }
-                    comps.push(c);
                 }
+                comps.push(c);
             }
         }
     }
