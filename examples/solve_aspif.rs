@@ -5,12 +5,12 @@
 //! Usage: `solve_aspif [-n N] [--opt-mode=opt|optN|enum[,B..]|ignore]
 //! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [--parallel-mode=N]
 //! [--init-moms|--no-init-moms] [--vsids-decay=X] [--restarts=L,N|glucose|no]
-//! [--save-progress=N] [--eq=0|1] [--score-other=all|no] [--profile=auto|fixed] [--sign-occ=0|1] [--block-restarts=0|1] [--solve-limit=CONFLICTS] [--body-phase=true|false] [--del-cfl=FIRST,INC] [-q] [FILE]`; the search options override the solver's search defaults, for tuning experiments.
+//! [--save-progress=N] [--eq=0|1] [--score-other=all|no] [--profile=auto|fixed] [--sign-occ=0|1] [--block-restarts=0|1] [--solve-limit=CONFLICTS] [--body-phase=true|false] [--del-cfl=[+,]FIRST,INC[,REPEAT]] [--deletion=sorted|basic] [-q] [FILE]`; the search options override the solver's search defaults, for tuning experiments.
 
 use lucent::ground::aspif;
 use lucent::solve::{
-    Config, CrMode, EnumMode, OptMode, Outcome, ReduceSchedule, RestartPolicy, SearchProfile,
-    Solver,
+    Config, CrMode, Deletion, EnumMode, OptMode, Outcome, ReduceSchedule, RestartPolicy,
+    SearchProfile, Solver,
 };
 use std::io::Read;
 use std::process::ExitCode;
@@ -64,10 +64,18 @@ fn main() -> ExitCode {
         } else if a == "--init-moms" || a == "--no-init-moms" {
             config.init_moms = a == "--init-moms";
         } else if let Some(v) = a.strip_prefix("--del-cfl=") {
+            let v = v.strip_prefix("+,").unwrap_or(v);
             let mut it = v.split(',').filter_map(|x| x.parse().ok());
             config.reduce = ReduceSchedule::Conflicts {
                 first: it.next().unwrap_or(2000),
                 inc: it.next().unwrap_or(300),
+                repeat: it.next().unwrap_or(0),
+            };
+        } else if let Some(v) = a.strip_prefix("--deletion=") {
+            config.deletion = if v.starts_with("basic") {
+                Deletion::Basic
+            } else {
+                Deletion::Sorted
             };
         } else if let Some(v) = a.strip_prefix("--save-progress=") {
             config.profile = SearchProfile::Fixed;

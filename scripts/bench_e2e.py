@@ -23,6 +23,7 @@ import math
 import os
 import re
 import shlex
+import signal
 import subprocess
 import sys
 import tempfile
@@ -39,10 +40,15 @@ def run(cmd, timeout):
     with tempfile.NamedTemporaryFile(mode="r") as rss, tempfile.TemporaryFile() as out, \
             tempfile.TemporaryFile() as err:
         t0 = time.perf_counter()
+        # Own process group, killed whole on timeout: killing GNU time alone left the measured
+        # program running, loading the machine for every later row.
+        p = subprocess.Popen([TIME, "-f", "%M", "-o", rss.name] + cmd, stdout=out, stderr=err,
+                             start_new_session=True)
         try:
-            p = subprocess.run([TIME, "-f", "%M", "-o", rss.name] + cmd, stdout=out, stderr=err,
-                               timeout=timeout)
+            p.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
             return None
         secs = time.perf_counter() - t0
         lines = rss.read().split()

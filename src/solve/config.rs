@@ -85,6 +85,8 @@ pub struct Config {
     pub profile: SearchProfile,
     /// When learnt clauses are reduced.
     pub reduce: ReduceSchedule,
+    /// Which learnt clauses a reduction deletes.
+    pub deletion: Deletion,
     /// Seed the VSIDS activities from clause occurrences before the first decision (clasp
     /// `--init-moms`).
     pub init_moms: bool,
@@ -129,18 +131,39 @@ pub enum SearchProfile {
     Fixed,
 }
 
-/// When learnt clauses are reduced (half of those with LBD above 2 are deleted each time).
+/// Which learnt clauses a reduction deletes. Both delete up to half of the learnt clauses and
+/// never a clause with LBD at most 2 or one that is the reason of an assignment.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Deletion {
+    /// Glucose's order: sort by LBD (highest first), then by MiniSat activity (a float bumped
+    /// when the clause takes part in conflict analysis, decayed by 0.999 per conflict), and
+    /// delete the first half.
+    #[default]
+    Sorted,
+    /// clasp's `--deletion=basic,50 --del-glue=2`: the activity is a use counter (bumped in
+    /// conflict analysis and in clause minimisation, starting at 1 plus the number of
+    /// restarts, halved at every reduction); going from the oldest clause to the newest, every
+    /// clause whose activity is not above 1.5 times the average is deleted until half of the
+    /// learnt clauses are gone. Learnt clauses of at most three literals are never deleted
+    /// (clasp keeps them in its short implication graph).
+    Basic,
+}
+
+/// When learnt clauses are reduced.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ReduceSchedule {
     /// When the number of learnt clauses exceeds a limit that starts at 4000 plus the trail
     /// length and grows by 10% per reduction (MiniSat).
     Size,
-    /// Every `first + i * inc` conflicts (Glucose; clasp `--del-cfl=+,first,inc`).
+    /// Every `first + i * inc` conflicts (Glucose; clasp `--del-cfl=+,first,inc,repeat`).
     Conflicts {
         /// Conflicts before the first reduction.
         first: u64,
         /// Growth of the interval per reduction.
         inc: u64,
+        /// After this many reductions `i` starts again at 0 and the next run is one reduction
+        /// longer (clasp's `<lim>` of a schedule); 0 lets `i` grow for ever.
+        repeat: u64,
     },
 }
 
@@ -177,7 +200,9 @@ impl Default for Config {
             reduce: ReduceSchedule::Conflicts {
                 first: 2000,
                 inc: 300,
+                repeat: 0,
             },
+            deletion: Deletion::Sorted,
             score_other: false,
             sign_from_learnts: false,
             restart_blocking: true,

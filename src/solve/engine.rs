@@ -18,7 +18,7 @@
 
 mod loops;
 
-use super::config::ReduceSchedule;
+use super::config::{Deletion, ReduceSchedule};
 use super::lit::{Lit, Var};
 use super::unfounded::Unfounded;
 use loops::{is_loop_watch, Loops};
@@ -35,6 +35,8 @@ const FLAG_LEARNT: u32 = 1;
 const FLAG_DELETED: u32 = 2;
 /// "None" in the per-variable `u32` indexes (`heap_pos`, `stored_slot`, `weight_slot`).
 const NO_SLOT: u32 = u32::MAX;
+/// Largest use count of a learnt clause under `Deletion::Basic` (clasp's 20-bit activity).
+const MAX_USES: u32 = (1 << 20) - 1;
 
 /// Why a variable has its value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -243,6 +245,12 @@ pub struct Engine {
     next_reduce: u64,
     /// Number of reductions so far.
     reductions: u64,
+    /// Position in the current run of `ReduceSchedule::Conflicts` intervals.
+    reduce_idx: u64,
+    /// Length of the current run (0 before the first reduction).
+    reduce_len: u64,
+    /// Which learnt clauses a reduction deletes.
+    pub deletion: Deletion,
     /// Pseudo-random state.
     rng: u64,
     /// Random decision probability in 1/1000.
@@ -362,6 +370,9 @@ impl Engine {
             reduce: ReduceSchedule::Size,
             next_reduce: 0,
             reductions: 0,
+            reduce_idx: 0,
+            reduce_len: 0,
+            deletion: Deletion::Sorted,
             rng: 0x9E37_79B9_7F4A_7C15,
             random_permille: 0,
             default_phase: false,
@@ -607,7 +618,12 @@ impl Engine {
         self.arena.push(lits.len() as u32);
         self.arena
             .push(if learnt { FLAG_LEARNT } else { 0 } | (lbd.min(1 << 20) << 2));
-        self.arena.push(0f32.to_bits());
+        self.arena.push(match self.deletion {
+            Deletion::Sorted => 0f32.to_bits(),
+            // As clasp: a new clause counts one use per restart so far, so that new clauses
+            // outrank old ones whose counts were halved.
+            Deletion::Basic => (1 + self.num_restarts).min(MAX_USES as u64) as u32,
+        });
         self.arena.extend(lits.iter().map(|l| l.code() as u32));
         self.watches[(lits[0]).code()].push(Watch {
             cref,
@@ -1251,7 +1267,7 @@ impl Engine {
             match self.reason[pl.var().index()] {
                 Reason::Long(cref) => {
                     self.bump_clause(cref);
-                    self.update_lbd(cref);
+                    self.update_lbd(cref, pl);
                 }
                 Reason::Loop(id) => self.bump_loop(id),
                 _ => {}
@@ -1310,6 +1326,12 @@ impl Engine {
         let mut result = true;
         'outer: while let Some(q) = stack.pop() {
             buf.clear();
+            if self.deletion == Deletion::Basic {
+                // clasp counts a use of a clause in minimisation as in resolution.
+                if let Reason::Long(cref) = self.reason[q.var().index()] {
+                    self.bump_clause(cref);
+                }
+            }
             self.reason_lits(q.var(), &mut buf);
             for &r in &buf {
                 let v = r.var();
@@ -1337,7 +1359,9 @@ impl Engine {
 
     /// Lowers the stored LBD of a learnt clause met in analysis when its literals now span
     /// fewer levels (clasp `--update-lbd=less`), so reductions keep clauses that became good.
-    fn update_lbd(&mut self, cref: ClauseRef) {
+    /// Under `Deletion::Basic` the levels are counted over the reason literals only (without
+    /// the implied literal `implied`), as clasp does.
+    fn update_lbd(&mut self, cref: ClauseRef, implied: Lit) {
         let flags = self.clause_flags(cref);
         let old = flags >> 2;
         if flags & FLAG_LEARNT == 0 || old <= 2 {
@@ -1347,8 +1371,12 @@ impl Engine {
         let stamp = self.lbd_stamp;
         let len = self.clause_len(cref);
         let mut n = 0;
+        let skip_implied = self.deletion == Deletion::Basic;
         for k in 0..len {
             let l = self.clause_lit(cref, k);
+            if skip_implied && l == implied {
+                continue;
+            }
             let lv = self.level[l.var().index()] as usize;
             if lv >= self.level_seen.len() {
                 self.level_seen.resize(lv + 1, 0);
@@ -1403,6 +1431,10 @@ impl Engine {
             return;
         }
         let i = cref as usize + 2;
+        if self.deletion == Deletion::Basic {
+            self.arena[i] = (self.arena[i] + 1).min(MAX_USES);
+            return;
+        }
         let a = f32::from_bits(self.arena[i]) + self.cla_inc as f32;
         self.arena[i] = a.to_bits();
         if a > 1e20 {
@@ -1411,10 +1443,13 @@ impl Engine {
     }
 
     /// Scales every learnt clause's and loop formula's activity, and the increment, by 1e-20.
+    /// Under `Deletion::Basic` the clauses hold use counters, which are left alone.
     fn rescale_clause_activities(&mut self) {
-        for &c in &self.learnts {
-            let k = c as usize + 2;
-            self.arena[k] = (f32::from_bits(self.arena[k]) * 1e-20).to_bits();
+        if self.deletion == Deletion::Sorted {
+            for &c in &self.learnts {
+                let k = c as usize + 2;
+                self.arena[k] = (f32::from_bits(self.arena[k]) * 1e-20).to_bits();
+            }
         }
         self.rescale_loop_activities();
         self.cla_inc *= 1e-20;
@@ -1536,6 +1571,75 @@ impl Engine {
     fn reduce_db(&mut self) {
         // Loop formulas first: the passes over the watch lists below drop their watches.
         self.reduce_loops();
+        match self.deletion {
+            Deletion::Sorted => self.reduce_sorted(),
+            Deletion::Basic => self.reduce_basic(),
+        }
+        if self.wasted * 2 > self.arena.len() {
+            self.collect_garbage();
+        } else {
+            // Propagation never looks at deleted clauses: drop their watches now.
+            let (arena, loops) = (&self.arena, &self.loops);
+            for ws in self.watches.iter_mut() {
+                ws.retain(|w| {
+                    w.cref == u32::MAX
+                        || if is_loop_watch(w.cref) {
+                            loops.is_live(w.cref & !loops::LOOP_TAG)
+                        } else {
+                            arena[w.cref as usize + 1] & FLAG_DELETED == 0
+                        }
+                })
+            }
+        }
+    }
+
+    fn delete_learnt(&mut self, c: ClauseRef) {
+        self.arena[c as usize + 1] |= FLAG_DELETED;
+        self.wasted += HEADER + self.clause_len(c);
+    }
+
+    /// `Deletion::Basic` (clasp's linear reduction): oldest first, keeps reasons, glue
+    /// clauses (LBD <= 2), clauses of at most three literals and clauses used more than 1.5
+    /// times the average; the uses of every kept clause are halved.
+    fn reduce_basic(&mut self) {
+        let mut learnts = std::mem::take(&mut self.learnts);
+        // Clauses of at most three literals live outside the database in clasp: they are
+        // neither counted nor deleted.
+        let (mut n, mut sum) = (0u64, 0u64);
+        for &c in &learnts {
+            if self.clause_len(c) > 3 {
+                n += 1;
+                sum += self.arena[c as usize + 2] as u64;
+            }
+        }
+        let mut to_remove = n / 2;
+        let avg = if n == 0 { 0.0 } else { sum as f64 / n as f64 };
+        let mut active = avg * 1.5;
+        if active > MAX_USES as f64 {
+            active = (MAX_USES as f64 + avg) / 2.0;
+        }
+        learnts.retain(|&c| {
+            let uses = self.arena[c as usize + 2];
+            if self.clause_len(c) <= 3 {
+                return true;
+            }
+            let keep = to_remove == 0
+                || self.clause_flags(c) >> 2 <= 2
+                || uses as f64 > active
+                || self.locked(c);
+            if keep {
+                self.arena[c as usize + 2] = uses >> 1;
+            } else {
+                self.delete_learnt(c);
+                to_remove -= 1;
+            }
+            keep
+        });
+        self.learnts = learnts;
+    }
+
+    /// `Deletion::Sorted`: deletes the worst half by LBD, then activity.
+    fn reduce_sorted(&mut self) {
         let mut cands: Vec<(u32, f32, ClauseRef)> = self
             .learnts
             .iter()
@@ -1557,30 +1661,13 @@ impl Engine {
         let mut keep = Vec::with_capacity(cands.len());
         for (lbd, _, c) in cands {
             if removed < target && lbd > 2 && !self.locked(c) {
-                self.arena[c as usize + 1] |= FLAG_DELETED;
-                self.wasted += HEADER + self.clause_len(c);
+                self.delete_learnt(c);
                 removed += 1;
             } else {
                 keep.push(c);
             }
         }
         self.learnts = keep;
-        if self.wasted * 2 > self.arena.len() {
-            self.collect_garbage();
-        } else {
-            // Propagation never looks at deleted clauses: drop their watches now.
-            let (arena, loops) = (&self.arena, &self.loops);
-            for ws in self.watches.iter_mut() {
-                ws.retain(|w| {
-                    w.cref == u32::MAX
-                        || if is_loop_watch(w.cref) {
-                            loops.is_live(w.cref & !loops::LOOP_TAG)
-                        } else {
-                            arena[w.cref as usize + 1] & FLAG_DELETED == 0
-                        }
-                })
-            }
-        }
     }
 
     /// Moves the live clauses to the front of the arena, in order, and redirects the watch
@@ -1946,13 +2033,19 @@ impl Engine {
                         self.max_learnts *= 1.1;
                     }
                 }
-                ReduceSchedule::Conflicts { first, inc } => {
+                ReduceSchedule::Conflicts { first, inc, repeat } => {
                     if self.next_reduce == 0 {
                         self.next_reduce = self.conflicts + first;
+                        self.reduce_len = repeat;
                     }
                     if self.conflicts >= self.next_reduce {
                         self.reductions += 1;
-                        self.next_reduce = self.conflicts + first + self.reductions * inc;
+                        self.reduce_idx += 1;
+                        if self.reduce_len > 0 && self.reduce_idx >= self.reduce_len {
+                            self.reduce_idx = 0;
+                            self.reduce_len += 1;
+                        }
+                        self.next_reduce = self.conflicts + first + self.reduce_idx * inc;
                         self.reduce_db();
                     }
                 }
@@ -2016,6 +2109,60 @@ mod tests {
             }
         }
         assert_eq!(e.search(&[]), SearchResult::Unsat);
+    }
+
+    /// Pigeons into holes as clauses: every pigeon somewhere, no two in one hole.
+    fn pigeons(e: &mut Engine, pigeons: usize, holes: usize) -> Vec<Var> {
+        let v = lits(e, pigeons * holes);
+        for i in 0..pigeons {
+            let some: Vec<Lit> = (0..holes).map(|j| v[i * holes + j].positive()).collect();
+            e.add_clause(&some);
+        }
+        for j in 0..holes {
+            for a in 0..pigeons {
+                for b in a + 1..pigeons {
+                    e.add_clause(&[v[a * holes + j].negative(), v[b * holes + j].negative()]);
+                }
+            }
+        }
+        v
+    }
+
+    #[test]
+    fn both_deletion_policies_stay_sound_under_frequent_reductions() {
+        // Reductions every few conflicts delete clauses while others are reasons; the answers
+        // must not change: 7 pigeons do not fit in 6 holes (thousands of conflicts), 6 do,
+        // and the model found must satisfy every clause.
+        for deletion in [Deletion::Sorted, Deletion::Basic] {
+            for (first, inc, repeat) in [(20, 5, 3), (50, 0, 0)] {
+                let mut e = Engine::new();
+                e.deletion = deletion;
+                e.reduce = ReduceSchedule::Conflicts { first, inc, repeat };
+                e.restarts = Restarts::Luby {
+                    unit: 16,
+                    index: 0,
+                    left: 16,
+                };
+                pigeons(&mut e, 7, 6);
+                assert_eq!(e.search(&[]), SearchResult::Unsat, "{deletion:?}");
+                assert!(
+                    e.reductions > 3,
+                    "the test needs reductions: {}",
+                    e.reductions
+                );
+                let mut e = Engine::new();
+                e.deletion = deletion;
+                e.reduce = ReduceSchedule::Conflicts { first, inc, repeat };
+                let v = pigeons(&mut e, 6, 6);
+                assert_eq!(e.search(&[]), SearchResult::Sat, "{deletion:?}");
+                for j in 0..6 {
+                    let in_hole = (0..6)
+                        .filter(|&i| e.value(v[i * 6 + j].positive()) == Some(true))
+                        .count();
+                    assert_eq!(in_hole, 1, "{deletion:?}: hole {j}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -14,7 +14,9 @@ pub mod check;
 pub mod config;
 pub mod result;
 
-pub use config::{Config, CrMode, EnumMode, OptMode, ReduceSchedule, RestartPolicy, SearchProfile};
+pub use config::{
+    Config, CrMode, Deletion, EnumMode, OptMode, ReduceSchedule, RestartPolicy, SearchProfile,
+};
 pub use result::{Model, Outcome, SolveResult, Stats, StopReason};
 pub mod engine;
 pub mod fuzzing;

@@ -129,6 +129,7 @@ impl Solver {
         engine.default_phase = !config.default_phase_false;
         engine.init_moms = config.init_moms;
         engine.reduce = config.reduce;
+        engine.deletion = config.deletion;
         engine.body_phase = config.body_phase_true;
         engine.save_progress = config.save_progress;
         engine.score_other = config.score_other;
