@@ -13,7 +13,9 @@
 # JOBS (parallel rows, default 2), FILTER (regex on the family), SKIP (regex on family/instance
 # of rows to leave out, e.g. those clasp does not solve in time), GROUNDER (gringo, the default,
 # or lucent: ground with `lucent --mode=gringo` instead, afresh on every run, to compare the
-# search on our ground program with the search on gringo's).
+# search on our ground program with the search on gringo's), CLOCK (`wall`, the default, or
+# `cpu`: the time column holds user plus system seconds instead of elapsed ones, which a busy
+# shared machine disturbs much less; the time limit SECS stays in elapsed seconds).
 set -u
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 if [ "${1:-}" = --compare ]; then
@@ -34,22 +36,29 @@ LUCENT=${CARGO_TARGET_DIR:-$ROOT/target}/release/lucent
 LTMP=$(mktemp -d "${TMPDIR:-/tmp}/lucent-bench-ground.XXXXXX")
 trap 'rm -rf "$LTMP"' EXIT
 mkdir -p "$TMP"
-export OURS TMP LIMIT=${LIMIT:-300000} SECS=${SECS:-30}
+export OURS TMP LIMIT=${LIMIT:-300000} SECS=${SECS:-30} CLOCK=${CLOCK:-wall}
 run_row() {
     # $1 label, $2 aspif, $3 mode, then flags
     local label=$1 aspif=$2 mode=$3
     shift 3
     local nopt=""
     case $mode in n1) nopt="-n1" ;; n0) nopt="-n0" ;; esac
-    local t0 t1 out
+    local t0 t1 out secs cpu
+    cpu=$(mktemp)
     t0=$(date +%s.%N)
-    out=$(timeout "$SECS" "$OURS" $nopt -q --stats --solve-limit="$LIMIT" "$@" "$aspif" 2>/dev/null)
+    out=$(/usr/bin/time -f '%U %S' -o "$cpu" timeout "$SECS" "$OURS" $nopt -q --stats --solve-limit="$LIMIT" "$@" "$aspif" 2>/dev/null)
     t1=$(date +%s.%N)
+    if [ "$CLOCK" = cpu ]; then
+        secs=$(awk 'END{print $1 + $2}' "$cpu")
+    else
+        secs=$(echo "$t1 - $t0" | bc)
+    fi
+    rm -f "$cpu"
     local c r
     c=$(echo "$out" | awk '/^Conflicts/{print $3}')
     r=$(echo "$out" | awk '/^(SATISFIABLE|UNSATISFIABLE|OPTIMUM FOUND|UNKNOWN)$/{r=$0} END{print (r==""?"TIMEOUT":r)}')
     [ -z "$c" ] && c=$LIMIT
-    printf "%s\t%s\t%.3f\t%s\n" "$label" "$c" "$(echo "$t1 - $t0" | bc)" "${r// /_}"
+    printf "%s\t%s\t%.3f\t%s\n" "$label" "$c" "$secs" "${r// /_}"
 }
 export -f run_row
 tail -n +2 "$BENCH/MANIFEST.tsv" | awk -F'\t' -v OFS=$'\x1f' '{print $1,$2,$3,($4==""?"-":$4),$5}' |

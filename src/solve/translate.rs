@@ -68,6 +68,11 @@ pub struct Translation {
     conj_hasher: DefaultHashBuilder,
     /// Weight bodies already given a literal, keyed by bound and sorted (code, weight) pairs.
     weights: HashMap<(i64, Vec<(u32, i64)>), Lit>,
+    /// Scratch space for a conjunction's key, reused so that translating a rule allocates
+    /// nothing (empty between calls).
+    key_buf: Vec<u32>,
+    /// Scratch space for a clause or a list of literals, reused likewise.
+    lits_buf: Vec<Lit>,
 }
 
 /// The largest atom mentioned anywhere in the program (the declared count may be too small).
@@ -122,9 +127,19 @@ impl Translation {
 
     /// A literal equivalent to the conjunction of `lits`.
     pub fn conjunction(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
-        match self.lookup_conj(lits) {
+        let mut key = std::mem::take(&mut self.key_buf);
+        conj_key(&mut key, lits.iter().copied());
+        let b = self.conjunction_of_key(e, &key);
+        key.clear();
+        self.key_buf = key;
+        b
+    }
+
+    /// `conjunction` for the key `key` (sorted codes without repeats).
+    fn conjunction_of_key(&mut self, e: &mut Engine, key: &[u32]) -> Lit {
+        match self.lookup_conj(key) {
             ConjLookup::Known(b) => b,
-            ConjLookup::New(key, hash) => {
+            ConjLookup::New(hash) => {
                 let b = e.new_body_var().positive();
                 self.insert_conj(e, key, hash, b);
                 b
@@ -132,20 +147,20 @@ impl Translation {
         }
     }
 
-    /// The literal that already stands for the conjunction of `lits` (the true literal when it
-    /// is empty, the literal itself when it has one), or its key and hash for a new entry.
-    fn lookup_conj(&self, lits: &[Lit]) -> ConjLookup {
-        let key = conj_key(lits);
+    /// The literal that already stands for the conjunction `key` (sorted codes without
+    /// repeats; the true literal when it is empty, the literal itself when it has one), or the
+    /// key's hash for a new entry.
+    fn lookup_conj(&self, key: &[u32]) -> ConjLookup {
         if key.is_empty() {
             return ConjLookup::Known(self.true_lit());
         }
         if key.len() == 1 {
             return ConjLookup::Known(Lit::from_code(key[0]));
         }
-        let hash = self.conj_hasher.hash_one(&key[..]);
-        match self.find_conj(hash, &key) {
+        let hash = self.conj_hasher.hash_one(key);
+        match self.find_conj(hash, key) {
             Some(b) => ConjLookup::Known(b),
-            None => ConjLookup::New(key, hash),
+            None => ConjLookup::New(hash),
         }
     }
 
@@ -156,12 +171,15 @@ impl Translation {
     /// simplification leaving the same clause), yet cost its per-variable arrays, which on
     /// programs made mostly of constraints (stable marriage, queens) was most of the memory.
     /// A later rule with the same body gets a body variable of its own.
-    fn constraint_body(&mut self, e: &mut Engine, lits: &[Lit]) -> Lit {
-        match self.lookup_conj(lits) {
+    fn constraint_body(&mut self, e: &mut Engine, key: &[u32]) -> Lit {
+        match self.lookup_conj(key) {
             ConjLookup::Known(b) => b,
-            ConjLookup::New(key, _) => {
-                let clause: Vec<Lit> = key.iter().map(|&c| !Lit::from_code(c)).collect();
+            ConjLookup::New(_) => {
+                let mut clause = std::mem::take(&mut self.lits_buf);
+                clause.extend(key.iter().map(|&c| !Lit::from_code(c)));
                 e.add_clause(&clause);
+                clause.clear();
+                self.lits_buf = clause;
                 !self.true_lit()
             }
         }
@@ -179,16 +197,19 @@ impl Translation {
 
     /// Makes `b` stand for the conjunction `key` (sorted codes, at least two, hashed to `hash`):
     /// the clause `key -> b`, the clauses `b -> l`, and the table entry.
-    fn insert_conj(&mut self, e: &mut Engine, key: Vec<u32>, hash: u64, b: Lit) {
-        let mut big = vec![b];
-        for &c in &key {
+    fn insert_conj(&mut self, e: &mut Engine, key: &[u32], hash: u64, b: Lit) {
+        let mut big = std::mem::take(&mut self.lits_buf);
+        big.push(b);
+        for &c in key {
             let l = Lit::from_code(c);
             e.add_clause(&[!b, l]);
             big.push(!l);
         }
         e.add_clause(&big);
+        big.clear();
+        self.lits_buf = big;
         let start = self.conj_keys.len() as u32;
-        self.conj_keys.extend_from_slice(&key);
+        self.conj_keys.extend_from_slice(key);
         let (keys, hasher) = (&self.conj_keys, &self.conj_hasher);
         self.conj
             .insert_unique(hash, (start, key.len() as u32, b), |&(s, n, _)| {
@@ -201,12 +222,16 @@ impl Translation {
     fn body_lit(&mut self, e: &mut Engine, body: BodyRef<'_>, constraint: bool) -> Lit {
         match body {
             BodyRef::Normal(ls) => {
-                let lits: Vec<Lit> = ls.iter().map(|&l| self.lit(l)).collect();
-                if constraint {
-                    self.constraint_body(e, &lits)
+                let mut key = std::mem::take(&mut self.key_buf);
+                conj_key(&mut key, ls.iter().map(|&l| self.lit(l)));
+                let b = if constraint {
+                    self.constraint_body(e, &key)
                 } else {
-                    self.conjunction(e, &lits)
-                }
+                    self.conjunction_of_key(e, &key)
+                };
+                key.clear();
+                self.key_buf = key;
+                b
             }
             BodyRef::Weight { lower, lits } => {
                 let mut key: Vec<(u32, i64)> = lits
@@ -252,10 +277,15 @@ impl Translation {
         let truth = e.new_var();
         e.add_clause(&[truth.positive()]);
         t.atom_lit.push(truth.positive());
-        let eqs = if eq {
-            equivalences(p, n, &external_free(p, n))
+        // With merging, the components of the positive dependency graph are needed before
+        // translation; they are computed once and given to `install_unfounded_with`.
+        let (cycles, eqs) = if eq {
+            let mut heads = HeadRules::new(n + 1);
+            let c = Cycles::of(p, n + 1, |i, r| heads.add(i, r));
+            let eqs = equivalences(p, n, &external_free(p, n), &c.comp, &heads);
+            (Some(c), eqs)
         } else {
-            vec![Equiv::None; n + 1]
+            (None, vec![Equiv::None; n + 1])
         };
         // Atoms with a variable of their own first, in atom order; then the aliases.
         let mut lit = vec![None; n + 1];
@@ -280,8 +310,7 @@ impl Translation {
         for (a, q) in eqs.iter().enumerate() {
             if let Equiv::Body(ri) = *q {
                 if let BodyRef::Normal(ls) = p.rules.get(ri).body {
-                    let lits: Vec<Lit> = ls.iter().map(|&l| t.lit(l)).collect();
-                    t.define_conjunction(e, &lits, t.atom_lit[a]);
+                    t.define_conjunction(e, ls, t.atom_lit[a]);
                 }
             }
         }
@@ -308,7 +337,7 @@ impl Translation {
             }
             t.minimize.push((pr, lits));
         }
-        t.install_unfounded(p, e);
+        t.install_unfounded_with(p, e, cycles);
         t
     }
 
@@ -316,15 +345,17 @@ impl Translation {
     /// `x -> l` and `lits -> x`), unless that conjunction already has a literal, is a single
     /// literal, or mentions `x`'s variable; then nothing happens and the rule clauses keep the
     /// equivalence.
-    fn define_conjunction(&mut self, e: &mut Engine, lits: &[Lit], x: Lit) {
-        let key = conj_key(lits);
-        if key.len() < 2 || key.iter().any(|&c| Lit::from_code(c).var() == x.var()) {
-            return;
+    fn define_conjunction(&mut self, e: &mut Engine, lits: &[i32], x: Lit) {
+        let mut key = std::mem::take(&mut self.key_buf);
+        conj_key(&mut key, lits.iter().map(|&l| self.lit(l)));
+        if key.len() >= 2 && key.iter().all(|&c| Lit::from_code(c).var() != x.var()) {
+            let hash = self.conj_hasher.hash_one(&key[..]);
+            if self.find_conj(hash, &key).is_none() {
+                self.insert_conj(e, &key, hash, x);
+            }
         }
-        let hash = self.conj_hasher.hash_one(&key[..]);
-        if self.find_conj(hash, &key).is_none() {
-            self.insert_conj(e, key, hash, x);
-        }
+        key.clear();
+        self.key_buf = key;
     }
 
     /// Sets `free` and `assumptions` from the external statements and assumptions of `p`: the
@@ -364,7 +395,7 @@ impl Translation {
         let b = self.body_lit(e, r.body, constraint);
         self.rule_body.push(b);
         debug_assert_eq!(self.rule_body.len(), index + 1);
-        let mut head: Vec<u32> = r.head.to_vec();
+        let mut head: SmallVec<[u32; 4]> = SmallVec::from_slice(r.head);
         head.sort_unstable();
         head.dedup();
         match r.head_kind {
@@ -374,9 +405,12 @@ impl Translation {
                 }
             }
             HeadKind::Disjunction => {
-                let mut c = vec![!b];
+                let mut c = std::mem::take(&mut self.lits_buf);
+                c.push(!b);
                 c.extend(head.iter().map(|&h| self.atom_lit[h as usize]));
                 e.add_clause(&c);
+                c.clear();
+                self.lits_buf = c;
                 if head.len() == 1 {
                     self.supports[head[0] as usize].push((b, index as u32));
                 } else {
@@ -400,31 +434,26 @@ impl Translation {
         if self.free[a] {
             return;
         }
-        let mut c = vec![!self.atom_lit[a]];
+        let mut c = std::mem::take(&mut self.lits_buf);
+        c.push(!self.atom_lit[a]);
         c.extend(self.supports[a].iter().map(|&(s, _)| s));
         e.add_clause(&c);
+        c.clear();
+        self.lits_buf = c;
     }
 
     /// Computes strongly connected components of the positive dependency graph, decides
     /// head-cycle-freeness and installs the unfounded-set propagator if there are cycles.
     pub fn install_unfounded(&mut self, p: &GroundProgram, e: &mut Engine) {
+        self.install_unfounded_with(p, e, None);
+    }
+
+    /// `install_unfounded` with the components of `p`'s positive dependency graph over
+    /// `self.atom_lit.len()` atoms, when already known.
+    fn install_unfounded_with(&mut self, p: &GroundProgram, e: &mut Engine, known: Option<Cycles>) {
         let n = self.atom_lit.len();
-        let edges = positive_edges(p, n);
-        let comp = scc(&edges);
-        let mut size = vec![0u32; n];
-        for &c in &comp {
-            size[c as usize] += 1;
-        }
-        let cyclic: Vec<bool> = (0..n)
-            .map(|a| {
-                a > 0
-                    && (size[comp[a] as usize] > 1
-                        || edges.succ(a).iter().any(|&b| b as usize == a))
-            })
-            .collect();
-        // Freed before the propagator is built: it is as large as the program's positive
-        // dependencies.
-        drop(edges);
+        let Cycles { comp, cyclic } = known.unwrap_or_else(|| Cycles::of(p, n, |_, _| {}));
+        debug_assert_eq!(comp.len(), n);
         self.non_hcf = p.rules.iter().any(|r| {
             r.head_kind == HeadKind::Disjunction
                 && r.head.iter().enumerate().any(|(i, &h)| {
@@ -500,6 +529,37 @@ impl Translation {
     }
 }
 
+/// The strongly connected components of the positive dependency graph.
+struct Cycles {
+    /// Per atom: its component.
+    comp: Vec<u32>,
+    /// Per atom: on a positive cycle (its component has two or more atoms, or a self-loop);
+    /// index 0 (the constant true) never is.
+    cyclic: Vec<bool>,
+}
+
+impl Cycles {
+    /// The components of `p`'s positive dependency graph over atoms `0..n`; `visit` sees
+    /// every rule and its index on the way. The graph is freed on return: it is as large as
+    /// the program's positive dependencies.
+    fn of(p: &GroundProgram, n: usize, visit: impl FnMut(usize, &RuleRef<'_>)) -> Cycles {
+        let edges = positive_edges(p, n, visit);
+        let comp = scc(&edges);
+        let mut size = vec![0u32; n];
+        for &c in &comp {
+            size[c as usize] += 1;
+        }
+        let cyclic = (0..n)
+            .map(|a| {
+                a > 0
+                    && (size[comp[a] as usize] > 1
+                        || edges.succ(a).iter().any(|&b| b as usize == a))
+            })
+            .collect();
+        Cycles { comp, cyclic }
+    }
+}
+
 /// What an atom is known to be equivalent to before translation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Equiv {
@@ -521,30 +581,24 @@ enum Equiv {
 /// component would merge a loop into one variable and lose its unfoundedness, so it is left
 /// out; such an atom is cyclic, every other alias target is outside the alias's component,
 /// so aliased atoms are never cyclic and every cyclic atom keeps a variable of its own.
-fn equivalences(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<Equiv> {
+/// `comp` gives the component of each atom `0..=n` in the positive dependency graph, `heads`
+/// the rules of each atom.
+fn equivalences(
+    p: &GroundProgram,
+    n: usize,
+    free: &[bool],
+    comp: &[u32],
+    heads: &HeadRules,
+) -> Vec<Equiv> {
     let mut out = vec![Equiv::None; n + 1];
-    if p.rules
-        .iter()
-        .any(|r| r.head_kind == HeadKind::Disjunction && r.head.len() > 1)
-    {
+    if heads.disjunctive {
         return out;
     }
-    // Per atom: number of rules with it in the head (capped at 2) and the last such rule.
-    let mut count = vec![0u8; n + 1];
-    let mut rule = vec![usize::MAX; n + 1];
-    for (i, r) in p.rules.iter().enumerate() {
-        for &h in r.head {
-            let h = h as usize;
-            count[h] = count[h].saturating_add(1).min(2);
-            rule[h] = i;
-        }
-    }
-    let comp = scc(&positive_edges(p, n + 1));
     for a in 1..=n {
-        if count[a] != 1 || free[a] {
+        if heads.count[a] != 1 || free[a] {
             continue;
         }
-        let r = p.rules.get(rule[a]);
+        let r = p.rules.get(heads.rule[a] as usize);
         if r.head_kind != HeadKind::Disjunction || r.head.len() != 1 {
             continue;
         }
@@ -560,10 +614,44 @@ fn equivalences(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<Equiv> {
                 }
                 Equiv::Lit(*l)
             }
-            _ => Equiv::Body(rule[a]),
+            _ => Equiv::Body(heads.rule[a] as usize),
         };
     }
     out
+}
+
+/// Per atom, its rules as far as `equivalences` needs them; filled by one `add` per rule (in
+/// the pass over the rules that `positive_edges` makes anyway).
+struct HeadRules {
+    /// Per atom: the number of rules with it in the head, counted up to 2.
+    count: Vec<u8>,
+    /// Per atom: the last rule with it in the head.
+    rule: Vec<u32>,
+    /// Whether some rule is a disjunction of two or more atoms.
+    disjunctive: bool,
+}
+
+impl HeadRules {
+    /// No rules yet, for atoms `0..n`.
+    fn new(n: usize) -> HeadRules {
+        HeadRules {
+            count: vec![0; n],
+            rule: vec![u32::MAX; n],
+            disjunctive: false,
+        }
+    }
+
+    /// Records rule `i`, `r`.
+    fn add(&mut self, i: usize, r: &RuleRef<'_>) {
+        if r.head.len() > 1 && r.head_kind == HeadKind::Disjunction {
+            self.disjunctive = true;
+        }
+        for &h in r.head {
+            let h = h as usize;
+            self.count[h] = self.count[h].saturating_add(1).min(2);
+            self.rule[h] = i as u32;
+        }
+    }
 }
 
 /// Per atom: free by the external statements (the last statement on an atom decides, as in
@@ -617,9 +705,18 @@ fn resolve_aliases(eqs: &[Equiv], lit: &mut [Option<Lit>], e: &mut Engine) {
 }
 
 /// The positive dependency graph: per atom, the atoms of positive body literals (positive
-/// weights) of its rules.
-fn positive_edges(p: &GroundProgram, n: usize) -> Graph {
+/// weights) of its rules. `visit` sees every rule and its index, in the first of the two
+/// passes over the rules.
+fn positive_edges(
+    p: &GroundProgram,
+    n: usize,
+    mut visit: impl FnMut(usize, &RuleRef<'_>),
+) -> Graph {
     let positive = |r: &RuleRef<'_>| -> usize {
+        if r.head.is_empty() {
+            // Integrity constraints (most rules of some programs) give no edge.
+            return 0;
+        }
         match r.body {
             BodyRef::Normal(ls) => ls.iter().filter(|&&l| l > 0).count(),
             BodyRef::Weight { lits, .. } => lits.iter().filter(|&&(l, w)| l > 0 && w > 0).count(),
@@ -628,7 +725,8 @@ fn positive_edges(p: &GroundProgram, n: usize) -> Graph {
     // Two passes (count, then fill) into one flat array: a `Vec` per atom cost 24 bytes of
     // header per atom even for the many atoms without edges.
     let mut first = vec![0usize; n + 1];
-    for r in &p.rules {
+    for (i, r) in p.rules.iter().enumerate() {
+        visit(i, &r);
         let k = positive(&r);
         if k > 0 {
             for &h in r.head {
@@ -698,19 +796,20 @@ impl Graph {
     }
 }
 
-/// What `Translation::lookup_conj` found: the conjunction's literal, or the sorted key and its
-/// hash under which a new one is entered.
+/// What `Translation::lookup_conj` found: the conjunction's literal, or the key's hash under
+/// which a new one is entered.
 enum ConjLookup {
     Known(Lit),
-    New(Vec<u32>, u64),
+    New(u64),
 }
 
-/// The key of a conjunction: its literal codes, sorted, without repeats.
-fn conj_key(lits: &[Lit]) -> Vec<u32> {
-    let mut key: Vec<u32> = lits.iter().map(|l| l.code() as u32).collect();
+/// Writes into the empty `key` the key of the conjunction of `lits`: their codes, sorted,
+/// without repeats.
+fn conj_key(key: &mut Vec<u32>, lits: impl Iterator<Item = Lit>) {
+    debug_assert!(key.is_empty());
+    key.extend(lits.map(|l| l.code() as u32));
     key.sort_unstable();
     key.dedup();
-    key
 }
 
 /// Tarjan's strongly connected components, iteratively; returns the component of each node.
@@ -723,11 +822,13 @@ pub fn scc(edges: &Graph) -> Vec<u32> {
     let mut stack: Vec<u32> = Vec::new();
     let mut next = 0u32;
     let mut ncomp = 0u32;
+    // The depth-first path as (node, next successor to visit); empty between roots.
+    let mut call: Vec<(u32, usize)> = Vec::new();
     for root in 0..n {
         if index[root] != u32::MAX {
             continue;
         }
-        let mut call: Vec<(u32, usize)> = vec![(root as u32, 0)];
+        call.push((root as u32, 0));
         index[root] = next;
         low[root] = next;
         next += 1;
