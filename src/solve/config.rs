@@ -93,6 +93,10 @@ pub struct Config {
     /// Stop with `UNKNOWN` after this many conflicts (clasp `--solve-limit`; for tuning).
     pub conflict_limit: Option<u64>,
     /// Bump the variables of loop nogoods when they are learnt (clasp `--score-other=all`).
+    /// Learn an unfounded set as one shared loop formula (`engine/loops.rs`) instead of one
+    /// clause per atom. Off by default: it halves the peak memory on labyrinth but raised the
+    /// conflict counts (ARCHITECTURE.md, "Loop nogoods").
+    pub shared_loops: bool,
     pub score_other: bool,
     /// Decide variables without a saved phase with the polarity that occurs more often in
     /// learnt clauses (clasp's VSIDS sign score). Only matters when phases are rarely saved
@@ -204,6 +208,7 @@ impl Default for Config {
             },
             deletion: Deletion::Sorted,
             score_other: false,
+            shared_loops: false,
             sign_from_learnts: false,
             restart_blocking: true,
             conflict_limit: None,

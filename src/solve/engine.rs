@@ -305,6 +305,8 @@ pub struct Engine {
     pub conflict_limit: Option<u64>,
     /// Bump the variables of every loop nogood when it is learnt (clasp `--score-other=all`).
     pub score_other: bool,
+    /// Learn unfounded sets as shared loop formulas (`loops`) rather than one clause per atom.
+    pub shared_loops: bool,
     /// Choose the sign of a decision variable without a saved phase from its occurrences in
     /// learnt clauses (the polarity that satisfies more of them), as clasp's VSIDS does;
     /// ties fall back to the initial sign.
@@ -398,6 +400,7 @@ impl Engine {
             lbd_stamp: 0,
             init_moms: false,
             score_other: false,
+            shared_loops: false,
             sign_from_learnts: false,
             restart_blocking: false,
             conflict_trail: 0,
@@ -2195,6 +2198,7 @@ mod tests {
         // Unfounded set {a1, a2} with external bodies b1, b2, b3: the loop nogoods are
         // a1 -> b1 | b2 | b3 and a2 -> b1 | b2 | b3, learnt as one formula (hand-derived).
         let mut e = Engine::new();
+        e.shared_loops = true;
         let v = lits(&mut e, 5);
         let (a1, a2) = (v[0].positive(), v[1].positive());
         let (b1, b2, b3) = (v[2].positive(), v[3].positive(), v[4].positive());

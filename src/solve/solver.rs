@@ -133,6 +133,7 @@ impl Solver {
         engine.body_phase = config.body_phase_true;
         engine.save_progress = config.save_progress;
         engine.score_other = config.score_other;
+        engine.shared_loops = config.shared_loops;
         engine.sign_from_learnts = config.sign_from_learnts;
         engine.restart_blocking = config.restart_blocking;
         engine.conflict_limit = config.conflict_limit;

@@ -136,6 +136,28 @@ impl Engine {
     pub(super) fn add_loop_set(&mut self, atoms: &[Lit], ext: &[Lit]) -> bool {
         let n = atoms.len();
         self.loop_nogoods += n as u64;
+        let overlap = || atoms.iter().any(|a| ext.iter().any(|l| l.var() == a.var()));
+        if !self.shared_loops || n < 2 || ext.len() < 2 || overlap() {
+            for &a in atoms {
+                let not_a = !a;
+                let mut c = Vec::with_capacity(ext.len() + 1);
+                c.push(not_a);
+                // With merged atoms an external support can be `not a` itself (a support
+                // literal shared with `a`'s negation); a clause never repeats a literal.
+                c.extend(ext.iter().copied().filter(|&l| l != not_a));
+                for &l in &c {
+                    self.occ[l.var().index()] += if l.is_neg() { -1 } else { 1 };
+                    if self.score_other {
+                        self.bump_var(l.var());
+                    }
+                }
+                if self.add_clause_in_search(&mut c, true) {
+                    return true;
+                }
+            }
+            return false;
+        }
+        // The sign score and `--score-other` count the formula as the clauses it stands for.
         for &a in atoms {
             self.occ[a.var().index()] -= 1;
         }
@@ -151,21 +173,6 @@ impl Engine {
                     self.bump_var(l.var());
                 }
             }
-        }
-        let overlap = || atoms.iter().any(|a| ext.iter().any(|l| l.var() == a.var()));
-        if n < 2 || ext.len() < 2 || overlap() {
-            for &a in atoms {
-                let not_a = !a;
-                let mut c = Vec::with_capacity(ext.len() + 1);
-                c.push(not_a);
-                // With merged atoms an external support can be `not a` itself (a support
-                // literal shared with `a`'s negation); a clause never repeats a literal.
-                c.extend(ext.iter().copied().filter(|&l| l != not_a));
-                if self.add_clause_in_search(&mut c, true) {
-                    return true;
-                }
-            }
-            return false;
         }
         // External literals: true first, then unassigned, then false by decreasing level (the
         // order of `add_clause_in_search`), so that positions 0 and 1 are the ones to watch.
