@@ -62,6 +62,14 @@ struct Watch {
     other: Lit,
 }
 
+/// Closes a watch list after a propagation pass stopped early: the watches from `i` on were not
+/// visited and are kept, moved down to follow the `j` kept so far.
+fn keep_unvisited(ws: &mut Vec<Watch>, i: usize, j: usize) {
+    let n = ws.len();
+    ws.copy_within(i..n, j);
+    ws.truncate(j + (n - i));
+}
+
 /// One occurrence of a variable in a weight constraint.
 #[derive(Clone, Copy, Debug)]
 struct WeightWatch {
@@ -1064,12 +1072,7 @@ impl Engine {
             trail.push(first);
             prefetch(watches.as_ptr().wrapping_add((!first).code()));
         }
-        while i < n {
-            ws[j] = ws[i];
-            j += 1;
-            i += 1;
-        }
-        ws.truncate(j);
+        keep_unvisited(&mut ws, i, j);
         // No watch of `false_lit` was added during the loop: new watches go to non-false
         // literals only.
         debug_assert!(self.watches[false_lit.code()].is_empty());

@@ -279,12 +279,7 @@ impl Engine {
                 }
             }
         }
-        while i < n {
-            ws[j] = ws[i];
-            j += 1;
-            i += 1;
-        }
-        ws.truncate(j);
+        super::keep_unvisited(&mut ws, i, j);
         // New watches went to non-false literals only.
         debug_assert!(self.watches[f.code()].is_empty());
         self.watches[f.code()] = ws;
