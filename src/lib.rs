@@ -12,3 +12,4 @@ pub mod sim;
 pub mod solve;
 pub mod action;
 pub mod syntax;
+pub mod learn;
