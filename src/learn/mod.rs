@@ -10,3 +10,8 @@
 
 pub mod rng;
 pub mod cart;
+pub mod term;
+pub mod lift;
+pub mod ensemble;
+pub mod score;
+pub mod state;
