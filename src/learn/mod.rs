@@ -10,3 +10,11 @@
 
 pub mod rng;
 pub mod cart;
+pub mod term;
+pub mod lift;
+pub mod ensemble;
+pub mod score;
+pub mod state;
+pub mod surprise;
+pub mod strength;
+pub mod episode;
