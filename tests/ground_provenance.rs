@@ -7,7 +7,9 @@
 use std::path::Path;
 
 use lucent::base::SourceMap;
-use lucent::ground::program::{AtomStatus, AuxKind, GroundProgram, Provenance, RuleOrigin};
+use lucent::ground::program::{
+    AtomStatus, AuxKind, DeadReason, GroundProgram, Provenance, RuleOrigin,
+};
 use lucent::ground::{ground, text, GroundConfig, Grounding};
 use lucent::syntax::ast::Dialect;
 use lucent::syntax::parse;
@@ -201,8 +203,17 @@ fn false_atoms_are_named_with_the_instances_that_could_derive_them() {
     let t: Vec<_> = p.dead_rules_for(g.find_atom("t").unwrap()).collect();
     assert_eq!(t.len(), 1);
     assert_eq!(g.atom_text(t[0].head[0]), "s");
-    // p(1) was never made: `not q(1)` failed during instantiation.
-    assert_eq!(g.find_atom("p(1)"), None);
+    // p(1)'s instance failed during instantiation at `not q(1)`, q(1) a fact.
+    let p1: Vec<_> = p.dead_rules_for(g.find_atom("p(1)").unwrap()).collect();
+    assert_eq!(p1.len(), 1);
+    assert_eq!(
+        p1[0].why,
+        DeadReason::Literal {
+            positive: false,
+            atom: g.find_atom("q(1)").unwrap()
+        }
+    );
+    assert_eq!(g.bindings_text(p1[0].origins[0].rule.bindings()), "X=1");
 }
 
 #[test]
@@ -237,6 +248,22 @@ fn text_facts_in_bodies() {
 fn text_false_atoms() {
     insta::assert_snapshot!(text_of(
         "n(1..3).\np(X) :- n(X), not q(X).\nq(2).\nr(X) :- n(X), not p(X).\n{ s }.\nu :- s, r(2).\nv | w :- n(1).\nv.\n:- u.\n"
+    ));
+}
+
+#[test]
+fn text_why_not() {
+    insta::assert_snapshot!(text_of(
+        "n(1..3).\np(X) :- n(X), not q(X).\nq(2).\ns(1).\nt(X) :- n(X), not not s(X).\nr(X) :- n(X), s(X).\nu(X) :- p(X), v(X).\nv(3).\n"
+    ));
+}
+
+#[test]
+fn text_rules_that_simplification_turns_into_one_fact() {
+    // q becomes a fact after the disjunctions are grounded: they die, x and x2 are false, and
+    // both rules for p become `p.`, one rule with two origins.
+    insta::assert_snapshot!(text_of(
+        "r.\nx | q :- r.\nx2 | q :- r.\nq :- r.\np :- not x.\np :- not x2.\n"
     ));
 }
 

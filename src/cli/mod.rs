@@ -440,7 +440,7 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
                 }
                 options::GroundFormat::Text => {
                     let sources = options.provenance.then_some(&parsed.sources);
-                    write!(io.out, "{}", ground::text::write_text(&grounding, sources))?
+                    ground::text::write_text_to(&grounding, sources, &mut *io.out)?
                 }
             }
             Ok(0)

@@ -68,7 +68,7 @@ pub const OPTIONS: &[OptionSpec] = &[
     opt("const", Some('c'), Value, "<id>=<term>", "Replace term occurrences of <id> with <term>", "Grounding"),
     opt("warn", Some('W'), Value, "<warn>", "Enable/disable warnings: none, all, [no-]{atom-undefined|file-included|operation-undefined|variable-unbounded|global-variable|other}", "Grounding"),
     opt("message-limit", None, Value, "<n>", "Print at most <n> messages [20]", "Grounding"),
-    opt("provenance", None, Flag, "", "In --text output, show the rule and substitution each ground rule came from", "Grounding"),
+    opt("provenance", None, Flag, "", "In --text output, show where each ground rule came from (statement, substitution, body literals grounding proved) and why each false atom is false", "Grounding"),
     opt("opt-mode", None, Value, "<mode>", "Optimization {opt|optN|enum|ignore}[,<bound>...] [opt]", "Solving"),
     opt("enum-mode", Some('e'), Value, "<mode>", "Enumeration {auto|bt|record|brave|cautious} [auto]", "Solving"),
     opt("project", None, OptionalValue, "<mode>", "Project models to shown/projected atoms {show|project|auto} [no]", "Solving"),

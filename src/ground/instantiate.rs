@@ -217,6 +217,9 @@ struct ProvStmt {
     aux: Option<AuxKind>,
     /// Its variable names (`None` for the rewriting's own variables).
     names: Vec<Option<Sym>>,
+    /// Its head atoms, when its head is a plain disjunction or choice of atoms (so that an
+    /// instance whose body fails can still name the atoms it would have derived).
+    head: Option<Vec<NAtom>>,
 }
 
 /// Per-statement join state.
@@ -574,6 +577,63 @@ impl<'a> Grounder<'a> {
         }
     }
 
+    /// Provenance: an instance of the statement being grounded failed at the body literal
+    /// `sym` (`positive`: `sym` cannot be derived; else `not sym` with `sym` a fact). When the
+    /// statement's head atoms are known under the bindings so far, the instance is recorded
+    /// as a dead rule of those atoms (kept by `simplify` if one ends up false and the literal
+    /// is still decided that way). Only the statement's own body counts, not the conditions
+    /// of its aggregates; naive components (rounds repeated) record nothing.
+    fn blocked(&mut self, ctx: &Ctx, positive: bool, sym: SymId, pred: PredId) {
+        if self.prov_aux.is_some() || self.naive || self.optimistic {
+            return;
+        }
+        let Some(atoms) = self.prov_stmt.head.take() else {
+            return;
+        };
+        let mut head = Vec::with_capacity(atoms.len());
+        for a in &atoms {
+            let mut vals: SmallVec<[SymId; 8]> = SmallVec::new();
+            for t in &a.args {
+                match t.bound_by_binding(&ctx.binding) {
+                    true => match t.eval(&mut self.syms, &ctx.binding) {
+                        Ok(v) => vals.push(v),
+                        Err(_) => break,
+                    },
+                    false => break,
+                }
+            }
+            if vals.len() != a.args.len() {
+                break;
+            }
+            let s = self.syms.fun(a.name, a.neg, &vals);
+            head.push(self.atom_of(s, a.pred));
+        }
+        let complete = head.len() == atoms.len();
+        self.prov_stmt.head = Some(atoms);
+        if !complete || head.is_empty() {
+            return;
+        }
+        let atom = self.atom_of(sym, pred);
+        let bindings = self.bindings(&ctx.binding);
+        let stmt = self.prov_stmt.stmt;
+        let rule = match self.prov_stmt.aux {
+            None => RuleOrigin::Statement { stmt, bindings },
+            Some(kind) => RuleOrigin::Auxiliary {
+                of_stmt: stmt,
+                kind,
+                bindings,
+            },
+        };
+        self.dead.push(DeadRule {
+            head,
+            origins: vec![Origin {
+                rule,
+                removed: Vec::new(),
+            }],
+            why: DeadReason::Literal { positive, atom },
+        });
+    }
+
     /// The origin of an instance of `stmt` (its own rule) under the join state `ctx`: the
     /// statement (or, for a statement the rewriting made, the auxiliary of its kind), the
     /// bindings, and the body literals decided by grounding: a positive literal (or `not not
@@ -756,7 +816,20 @@ impl<'a> Grounder<'a> {
                 };
                 let (lo, hi) = match cands {
                     Candidates::Range(lo, hi) => (lo, hi),
-                    Candidates::One(None) => return,
+                    Candidates::One(None) => {
+                        // With provenance, a fully bound atom that does not exist stops an
+                        // instance: record it (not when a semi-naive range hid the atom).
+                        if self.provenance
+                            && self.prov_aux.is_none()
+                            && ranges.get(i).copied().flatten().is_none()
+                            && atom.args.iter().all(|t| t.bound_by_binding(&ctx.binding))
+                        {
+                            if let Some(sym) = self.atom_sym(atom, &ctx.binding) {
+                                self.blocked(ctx, true, sym, atom.pred);
+                            }
+                        }
+                        return;
+                    }
                     Candidates::One(Some(p)) => (p, p + 1),
                     Candidates::Group { lo, hi, .. } => (lo, hi),
                 };
@@ -804,6 +877,9 @@ impl<'a> Grounder<'a> {
                     Sign::Not => {
                         // not a: true when a cannot be derived, false when a is a fact.
                         if fact {
+                            if self.provenance {
+                                self.blocked(ctx, false, sym, atom.pred);
+                            }
                             return;
                         }
                         if !complete || in_domain {
@@ -815,6 +891,9 @@ impl<'a> Grounder<'a> {
                     _ => {
                         // not not a: false when a cannot be derived, true when a is a fact.
                         if complete && !in_domain {
+                            if self.provenance {
+                                self.blocked(ctx, true, sym, atom.pred);
+                            }
                             return;
                         }
                         if !fact {
@@ -1774,6 +1853,14 @@ impl<'a> Grounder<'a> {
     fn ground_stmt(&mut self, stmt: &NStmt, ranges: &[Option<Range>]) {
         if self.provenance {
             let names = &self.syms.names;
+            let head = match (&stmt.kind, &stmt.head) {
+                (NKind::Rule | NKind::Cr(_), NHead::Disj(es) | NHead::Choice(es))
+                    if es.iter().all(|e| e.cond.is_empty() && e.conj.is_empty()) =>
+                {
+                    Some(es.iter().map(|e| e.atom.clone()).collect())
+                }
+                _ => None,
+            };
             self.prov_stmt = ProvStmt {
                 stmt: stmt.stmt,
                 aux: stmt.aux,
@@ -1782,6 +1869,7 @@ impl<'a> Grounder<'a> {
                     .iter()
                     .map(|&n| (!names.resolve(n).starts_with('#')).then_some(n))
                     .collect(),
+                head,
             };
         }
         let mut ctx = Ctx {

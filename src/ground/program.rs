@@ -748,6 +748,31 @@ impl Provenance {
         &self.origins[start as usize..end as usize]
     }
 
+    /// Adds origins to rules already recorded (`(rule, origin)`), leaving out an origin equal
+    /// to one the rule has.
+    pub fn add_origins(&mut self, mut extra: Vec<(u32, Origin)>) {
+        if extra.is_empty() {
+            return;
+        }
+        extra.sort_by_key(|e| e.0);
+        let old_ends = std::mem::take(&mut self.origin_ends);
+        let mut old = std::mem::take(&mut self.origins).into_iter();
+        let mut extra = extra.into_iter().peekable();
+        let mut start = 0;
+        for (i, &end) in old_ends.iter().enumerate() {
+            let first = self.origins.len();
+            self.origins
+                .extend(old.by_ref().take((end - start) as usize));
+            start = end;
+            while let Some((_, o)) = extra.next_if(|e| e.0 as usize == i) {
+                if !self.origins[first..].contains(&o) {
+                    self.origins.push(o);
+                }
+            }
+            self.origin_ends.push(self.origins.len() as u32);
+        }
+    }
+
     /// Sets the atom table (and its lookups by aspif atom and symbol).
     pub fn set_atoms(&mut self, atoms: Vec<AtomRecord>) {
         let max = atoms.iter().map(|r| r.aspif).max().unwrap_or(0);

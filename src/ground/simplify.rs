@@ -164,7 +164,9 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut rules = Rules::new();
     // With provenance: the origins of each output rule, and the removed rules that headed a
     // false atom.
-    let mut origins: Vec<Vec<Origin>> = Vec::new();
+    let mut origins = Provenance::new();
+    // Origins of second rules for facts, added to the fact's rule at the end.
+    let mut late: Vec<(u32, Origin)> = Vec::new();
     let mut dead_rules: Vec<DeadRule> = std::mem::take(&mut g.dead);
     let mut g_origins = std::mem::take(&mut g.origins);
     let mut g_more = std::mem::take(&mut g.more_origins);
@@ -316,12 +318,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 // A second rule for a fact: its origins are more origins of the fact's rule.
                 if prov {
                     let os = with_removed(take_origins(ri), &removed);
-                    let kept = &mut origins[fact_rule[h] as usize];
-                    for o in os {
-                        if !kept.contains(&o) {
-                            kept.push(o);
-                        }
-                    }
+                    late.extend(os.into_iter().map(|o| (fact_rule[h], o)));
                 }
                 continue;
             }
@@ -330,9 +327,11 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         }
         rules.push_parts(r.head_kind, &head, body);
         if prov {
-            origins.push(with_removed(take_origins(ri), &removed));
+            origins.push_rule(with_removed(take_origins(ri), &removed));
         }
     }
+    drop(g_origins);
+    drop(g_more);
     drop(old);
     // Minimize statements: one per priority, highest first.
     let mut minimize: Vec<Minimize> = Vec::new();
@@ -399,7 +398,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             for (i, alt) in alts.into_iter().enumerate() {
                 rules.push_parts(HeadKind::Disjunction, &[a], BodyRef::Normal(&alt));
                 if prov {
-                    origins.push(std::mem::take(&mut alt_origins[i]));
+                    origins.push_rule(std::mem::take(&mut alt_origins[i]));
                 }
             }
             Some(a as Lit)
@@ -413,7 +412,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 status[a as usize - 1] = Status::Fact;
                 rules.push_parts(HeadKind::Disjunction, &[a], BodyRef::Normal(&[]));
                 if prov {
-                    origins.push(std::mem::take(&mut certain_origins));
+                    origins.push_rule(std::mem::take(&mut certain_origins));
                 }
                 a as Lit
             }
@@ -519,10 +518,8 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     rules.shrink_to_fit();
     out.rules = rules;
     if prov {
-        let mut p = Provenance::new();
-        for os in origins {
-            p.push_rule(os);
-        }
+        let mut p = origins;
+        p.add_origins(late);
         p.set_atoms(
             g.atoms
                 .iter()
@@ -538,11 +535,26 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 })
                 .collect(),
         );
-        // Instances dropped during instantiation are kept only when they headed a false atom.
+        // Instances dropped during instantiation are kept only when they headed a false atom
+        // and the literal that stopped them is still decided that way (one that failed in an
+        // early round of a recursive component may have been derived later).
         dead_rules.retain(|d| {
-            d.head
-                .iter()
-                .any(|&h| status[h as usize - 1] == Status::False)
+            let decided = match d.why {
+                DeadReason::Literal { positive, atom } => {
+                    status[atom as usize - 1]
+                        == if positive {
+                            Status::False
+                        } else {
+                            Status::Fact
+                        }
+                }
+                DeadReason::HeadFact(f) => status[f as usize - 1] == Status::Fact,
+                DeadReason::Contradictory | DeadReason::Unreachable => true,
+            };
+            decided
+                && d.head
+                    .iter()
+                    .any(|&h| status[h as usize - 1] == Status::False)
         });
         p.dead = dead_rules;
         out.provenance = p;

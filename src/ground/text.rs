@@ -74,7 +74,7 @@ fn dead_text(g: &Grounding, why: DeadReason) -> String {
             positive: false,
             atom,
         } => format!("not {} is false ({0} is a fact)", g.atom_text(atom)),
-        DeadReason::HeadFact(atom) => format!("satisfied by the fact {}", g.atom_text(atom)),
+        DeadReason::HeadFact(atom) => format!("the fact {} satisfies it", g.atom_text(atom)),
         DeadReason::Contradictory => "its body holds a literal and its negation".into(),
         DeadReason::Unreachable => "its weight body cannot reach its bound".into(),
     }
@@ -82,7 +82,12 @@ fn dead_text(g: &Grounding, why: DeadReason) -> String {
 
 /// The atoms that grounding proved false (named ones, not the rewriting's own predicates),
 /// each with the removed rule instances that could have derived it.
-fn write_false_atoms(g: &Grounding, src: &SourceMap, out: &mut String) {
+fn write_false_atoms(
+    g: &Grounding,
+    src: &SourceMap,
+    out: &mut String,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
     let p = &g.program.provenance;
     for (i, r) in p.atoms.iter().enumerate() {
         if r.status != AtomStatus::False || r.sym.is_none() {
@@ -93,6 +98,7 @@ fn write_false_atoms(g: &Grounding, src: &SourceMap, out: &mut String) {
         if name.starts_with('#') || name.starts_with("-#") {
             continue;
         }
+        spill(out, w)?;
         let mut dead = p.dead_rules_for(atom).peekable();
         if dead.peek().is_none() {
             let _ = writeln!(out, "% false: {name}: no rule instance derives it");
@@ -103,21 +109,44 @@ fn write_false_atoms(g: &Grounding, src: &SourceMap, out: &mut String) {
             for o in &d.origins {
                 let _ = writeln!(
                     out,
-                    "%   {}; removed: {}",
+                    "%   {}; removed because {}",
                     origin_text(g, src, o),
                     dead_text(g, d.why)
                 );
             }
         }
     }
+    Ok(())
+}
+
+/// Writes `out` to `w` and empties it once it holds more than 64 KiB (the text of a large
+/// program with provenance runs to hundreds of megabytes).
+fn spill(out: &mut String, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+    if out.len() > 1 << 16 {
+        w.write_all(out.as_bytes())?;
+        out.clear();
+    }
+    Ok(())
 }
 
 /// Prints the ground program; with `sources` and provenance recorded, each rule is preceded
 /// by its origins and the false atoms are listed at the end.
 pub fn write_text(g: &Grounding, sources: Option<&SourceMap>) -> String {
+    let mut out = Vec::new();
+    write_text_to(g, sources, &mut out).expect("writing to memory");
+    String::from_utf8(out).expect("the text is UTF-8")
+}
+
+/// [`write_text`] written to `w` as it goes.
+pub fn write_text_to(
+    g: &Grounding,
+    sources: Option<&SourceMap>,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
     let p = &g.program;
     let mut out = String::new();
     for (i, r) in p.rules.iter().enumerate() {
+        spill(&mut out, w)?;
         if let Some(src) = sources {
             for o in p.provenance.origins(i) {
                 let _ = writeln!(out, "% {}", origin_text(g, src, o));
@@ -184,7 +213,7 @@ pub fn write_text(g: &Grounding, sources: Option<&SourceMap>) -> String {
         }
     }
     if let Some(src) = sources {
-        write_false_atoms(g, src, &mut out);
+        write_false_atoms(g, src, &mut out, w)?;
     }
-    out
+    w.write_all(out.as_bytes())
 }
