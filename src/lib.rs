@@ -10,4 +10,6 @@ pub mod ground;
 #[cfg(feature = "sim")]
 pub mod sim;
 pub mod solve;
+pub mod action;
 pub mod syntax;
+pub mod learn;
