@@ -289,14 +289,9 @@ impl Solver {
             self.tr.add_rule(&mut self.engine, first + k, r);
         }
         if !delta.provenance.is_empty() || !self.prog.provenance.is_empty() {
-            // Rules without recorded origins get none, so rule i keeps its own origins.
-            while self.prog.provenance.num_rules() < first {
-                self.prog.provenance.push_rule([]);
-            }
+            self.prog.provenance.resize_rules(first);
             self.prog.provenance.append(delta.provenance.clone());
-            while self.prog.provenance.num_rules() < self.prog.rules.len() {
-                self.prog.provenance.push_rule([]);
-            }
+            self.prog.provenance.resize_rules(self.prog.rules.len());
         }
         // Completion: the atoms defined now, the released externals, and the new atoms that
         // are not external (false when they have no rule).
