@@ -14,7 +14,8 @@
 //!   satisfying the condition `c` (comparisons joined by `and`, `or`, `not(...)`), `+` union,
 //!   `-` difference, `*` intersection, `#s` a sort defined earlier;
 //! - errors: a sort defined twice, an empty sort, a predicate declared twice, an undefined
-//!   sort, a record condition over variables it does not name;
+//!   sort, a record condition over variables it does not name, a concatenation of anything
+//!   but identifiers and natural numbers, a range mixing an integer and an identifier;
 //! - a sort `#s` becomes facts `#s(x)` of a hidden predicate;
 //! - every atom `p(t1, ..., tn)` of a rule must match the declaration `p(#s1, ..., #sn)`: an
 //!   undeclared predicate, a wrong arity, a ground argument (intervals expanded) outside its
