@@ -10,4 +10,5 @@ pub mod ground;
 #[cfg(feature = "sim")]
 pub mod sim;
 pub mod solve;
+pub mod control;
 pub mod syntax;
