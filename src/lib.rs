@@ -11,4 +11,6 @@ pub mod ground;
 pub mod sim;
 pub mod solve;
 pub mod control;
+pub mod action;
 pub mod syntax;
+pub mod learn;

@@ -2,12 +2,15 @@
 //! does I/O (files, standard streams, the clock).
 //!
 //! Invariants: every run ends with one of the exit codes of REFERENCE.md (10, 20, 30 after
-//! solving; 1 interrupted; 65 input or grounding error; 128 usage error); diagnostics go to
+//! solving; 1 interrupted or a bad command line, as clingo 5.4; 65 input or grounding error, after
+//! `UNKNOWN` and the summary on standard output as clingo prints them; 70 a verb or stage this
+//! build does not provide, or an I/O failure); diagnostics go to
 //! standard error in gringo's format, results to standard output. Library modules receive limits
 //! as values and never print.
 
 #[cfg(feature = "sim")]
 pub mod sim;
+pub mod action;
 pub mod demo;
 pub mod input;
 pub mod options;
@@ -38,8 +41,8 @@ pub const EXIT_MEMORY: i32 = 33;
 pub const EXIT_INPUT: i32 = 65;
 /// Exit code: a stage this build does not provide (EX_SOFTWARE).
 pub const EXIT_UNAVAILABLE: i32 = 70;
-/// Exit code: bad command line.
-pub const EXIT_USAGE: i32 = 128;
+/// Exit code: bad command line (clingo 5.4 and clasp exit 1, the code of an interruption).
+pub const EXIT_USAGE: i32 = 1;
 
 /// Runs the command line on the process's arguments and standard streams, and returns the exit
 /// code.
@@ -81,6 +84,7 @@ pub fn run(args: &[String], stdin: &mut dyn Read, out: &mut dyn Write, err: &mut
 fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     match args.first().map(String::as_str) {
         Some("demo") => return demo::run(&args[1..], io.out, io.err),
+        Some("translate") => return action::run_translate(&args[1..], io.out, io.err),
         #[cfg(feature = "sim")]
         Some("sim") => return Ok(sim::run_with(&args[1..], io.out, io.err)),
         #[cfg(not(feature = "sim"))]
@@ -243,7 +247,9 @@ fn report_result(
     }
     let quiet = report::Quiet::from_levels(options.quiet);
     match options.outf {
-        options::OutputFormat::Text => report::write_text(io.out, &rep, quiet)?,
+        options::OutputFormat::Text => {
+            report::write_text_verbose(io.out, &rep, quiet, options.verbose)?
+        }
         options::OutputFormat::Json => report::write_json(io.out, &rep, quiet)?,
     }
     if let Some(program) = original {
@@ -309,6 +315,37 @@ fn solve_control(
     report_result(options, io, &result, context, original.as_ref(), start)
 }
 
+/// After an error in the input (diagnostics already on standard error), clingo still prints
+/// its header, `UNKNOWN` and the summary on standard output (with `--outf=2`, a JSON document
+/// with `"Result": "UNKNOWN"`), so a script reading the output gets a complete document; then
+/// exits with `code`. `--mode=gringo` prints nothing, as gringo.
+fn input_error_report(
+    options: &Options,
+    io: &mut Io,
+    start: Instant,
+    code: i32,
+) -> std::io::Result<i32> {
+    if options.mode == options::Mode::Gringo {
+        return Ok(code);
+    }
+    let total = start.elapsed().as_secs_f64();
+    let times = report::Times {
+        total,
+        cpu: report::process_cpu_seconds().unwrap_or(total),
+        ..report::Times::default()
+    };
+    let rep = report::Report::input_error(options.files.clone(), times);
+    match options.outf {
+        options::OutputFormat::Text => {
+            report::write_text_input_error(io.out, &rep, options.verbose)?
+        }
+        options::OutputFormat::Json => {
+            report::write_json(io.out, &rep, report::Quiet::from_levels(options.quiet))?
+        }
+    }
+    Ok(code)
+}
+
 fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
     let start = Instant::now();
     let deadline = options
@@ -336,6 +373,21 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
     let mut control = Control::with_sources(config, sources);
     // All inputs form one program, as gringo reads several files.
     for input in &loaded {
+        if input.name.ends_with(".ald") {
+            // AL_d: translated to a CR-Prolog syntax tree, then solved like any program.
+            if let Some(t) = action::translate_input(
+                control.sources_mut(),
+                input.file,
+                options.profile.as_deref(),
+                &options.consts,
+                &mut diags,
+            ) {
+                if let Err(e) = control.add_program(t.program) {
+                    diags.extend(e.diagnostics.items().iter().cloned());
+                }
+            }
+            continue;
+        }
         let text = &control.sources().get(input.file).text;
         let dialect = dialect_of(options, &input.name, text);
         if let Err(e) = control.add_file(input.file, Some(dialect)) {
@@ -346,7 +398,7 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
     if diags.has_errors() {
         flush_diagnostics(io, &diags, control.sources())?;
         writeln!(io.err, "*** ERROR: (lucent): parsing failed")?;
-        return Ok(EXIT_INPUT);
+        return input_error_report(options, io, start, EXIT_INPUT);
     }
     flush_diagnostics(io, &diags, control.sources())?;
     let names: Vec<String> = loaded.into_iter().map(|i| i.name).collect();
@@ -354,7 +406,7 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
         return run_incmode(options, io, &mut control, names, start, deadline);
     }
     if let Err(e) = control.ground(&[Part::base()]) {
-        return grounding_failed(options, io, &control, e);
+        return grounding_failed(options, io, &control, e, start);
     }
     flush_control_diagnostics(options, io, &mut control)?;
     match options.mode {
@@ -371,7 +423,15 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
             }
             Ok(0)
         }
-        _ => solve_control(options, io, &mut control, names, start, deadline),
+        // Named as clingo names them: no file given is `stdin`, an explicit `-` stays `-`.
+        _ => solve_control(
+            options,
+            io,
+            &mut control,
+            options.files.clone(),
+            start,
+            deadline,
+        ),
     }
 }
 
@@ -392,6 +452,7 @@ fn grounding_failed(
     io: &mut Io,
     control: &Control,
     e: crate::control::Error,
+    start: Instant,
 ) -> std::io::Result<i32> {
     let mut shown = diagnostics_for(options);
     shown.extend(e.diagnostics.items().iter().cloned());
@@ -400,7 +461,7 @@ fn grounding_failed(
         io.err,
         "*** ERROR: (lucent): grounding stopped because of errors"
     )?;
-    Ok(EXIT_INPUT)
+    input_error_report(options, io, start, EXIT_INPUT)
 }
 
 /// clingo's incremental mode (`#include <incmode>.`): one `Solving...` and its answers per
@@ -470,7 +531,7 @@ fn run_incmode(
     }
     let summary = match result {
         Ok(s) => s,
-        Err(e) => return grounding_failed(options, io, control, e),
+        Err(e) => return grounding_failed(options, io, control, e, start),
     };
     flush_control_diagnostics(options, io, control)?;
     let (word, code) = match &summary.last {
@@ -512,7 +573,7 @@ fn run_clasp_mode(
                 io.err,
                 "<cmd>: error: file could not be opened:\n  {name}\n"
             )?;
-            return Ok(EXIT_INPUT);
+            return input_error_report(options, io, start, EXIT_INPUT);
         }
     }
     let mut program = match ground::aspif::read_program(&bytes) {
@@ -526,7 +587,7 @@ fn run_clasp_mode(
                 "{name}:{line}:{column}: error: malformed aspif input: {kind}\n"
             )?;
             writeln!(io.err, "*** ERROR: (lucent): reading aspif failed")?;
-            return Ok(EXIT_INPUT);
+            return input_error_report(options, io, start, EXIT_INPUT);
         }
     };
     // The text is not needed once read; free it before the solver is built.
@@ -535,7 +596,7 @@ fn run_clasp_mode(
     // keeps memory proportional to the atoms used (what is shown comes from output symbols,
     // so the numbers are not visible).
     program.compact_atoms();
-    solve_and_report(options, io, program, names, start, deadline)
+    solve_and_report(options, io, program, options.files.clone(), start, deadline)
 }
 
 #[cfg(test)]
@@ -556,10 +617,12 @@ mod tests {
     }
 
     #[test]
-    fn usage_error_exits_128() {
+    fn usage_error_exits_1() {
         let (code, _, err) = run_str("--bogus", "");
-        assert_eq!(code, EXIT_USAGE);
-        assert!(err.starts_with("*** ERROR: (lucent): 'bogus': unknown option"));
+        assert_eq!(code, 1);
+        assert!(
+            err.starts_with("*** ERROR: (lucent): In context '<lucent>': unknown option: 'bogus'")
+        );
     }
 
     #[test]
@@ -576,7 +639,7 @@ mod tests {
     fn syntax_error_exits_65_with_gringo_location() {
         let (code, out, err) = run_str("", "p(1)\nq(2).");
         assert_eq!(code, EXIT_INPUT);
-        assert!(out.is_empty());
+        assert!(out.contains("\nUNKNOWN\n"), "{out}");
         assert!(
             err.starts_with("-:2:1-2: error: syntax error, unexpected <IDENTIFIER>"),
             "{err}"

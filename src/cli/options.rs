@@ -3,7 +3,7 @@
 //! Invariants: one declarative table ([`OPTIONS`]) drives both parsing and `--help` (CaDiCaL's
 //! `options.hpp` habit), so an option cannot be accepted without being documented. Parsing is
 //! pure: it never reads files or prints; errors are [`UsageError`] values that the caller turns
-//! into clingo's `*** ERROR: (lucent): ...` lines and exit code 128.
+//! into clingo's `*** ERROR: (lucent): ...` lines and exit code 1.
 
 use crate::base::WarningKind;
 
@@ -63,6 +63,7 @@ pub const OPTIONS: &[OptionSpec] = &[
     opt("text", None, Flag, "", "Print the ground program in text form (implies --mode=gringo)", "Basic"),
     opt("output", Some('o'), Value, "<fmt>", "Ground program format in gringo mode: {aspif|intermediate|text} [aspif]", "Basic"),
     opt("dialect", None, Value, "<lang>", "Input language {auto|clingo|sparc} [auto: .sp files are SPARC]", "Basic"),
+    opt("profile", None, Value, "<name>", "Profile of an AL_d (.ald) input: a switch bundle it declares, e.g. tabletop", "Basic"),
     opt("models", Some('n'), Value, "<n>", "Compute at most <n> models (0 for all) [1]", "Solving"),
     opt("const", Some('c'), Value, "<id>=<term>", "Replace term occurrences of <id> with <term>", "Grounding"),
     opt("warn", Some('W'), Value, "<warn>", "Enable/disable warnings: none, all, [no-]{atom-undefined|file-included|operation-undefined|variable-unbounded|global-variable|other}", "Grounding"),
@@ -185,6 +186,8 @@ pub struct Options {
     pub models_given: bool,
     /// `-c name=value` definitions, in order.
     pub consts: Vec<(String, String)>,
+    /// `--profile`: the profile of AL_d inputs.
+    pub profile: Option<String>,
     /// Warning kinds switched off.
     pub disabled_warnings: Vec<WarningKind>,
     /// Maximum number of messages printed.
@@ -235,6 +238,7 @@ impl Default for Options {
             models: 1,
             models_given: false,
             consts: Vec::new(),
+            profile: None,
             disabled_warnings: Vec::new(),
             message_limit: 20,
             provenance: false,
@@ -258,20 +262,21 @@ impl Default for Options {
     }
 }
 
-/// A command-line mistake: exit code 128.
+/// A command-line mistake: exit code 1, with clingo 5.4's wording (`In context '<lucent>': ...`
+/// or `SyntaxError: ...`).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum UsageError {
     /// An option nobody knows.
-    #[error("'{0}': unknown option")]
+    #[error("In context '<lucent>': unknown option: '{0}'")]
     Unknown(String),
     /// An option that needs a value got none.
-    #[error("'{0}' requires a value!")]
+    #[error("SyntaxError: '{0}' requires a value!")]
     MissingValue(String),
     /// A flag was given a value.
-    #[error("'{0}' does not take a value")]
+    #[error("SyntaxError: '{0}' does not take a value!")]
     UnexpectedValue(String),
     /// A value that does not fit the option.
-    #[error("'{value}' invalid value for: '{option}'")]
+    #[error("In context '<lucent>': '{value}' invalid value for: '{option}'")]
     InvalidValue {
         /// The option's long name.
         option: String,
@@ -420,6 +425,7 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
             }
             o.consts.push((name.to_string(), val.trim().to_string()));
         }
+        "profile" => o.profile = Some(v.to_string()),
         "warn" => apply_warn(o, v)?,
         "message-limit" => o.message_limit = parse_num(long, v)?,
         "provenance" => o.provenance = true,
@@ -605,7 +611,9 @@ pub fn help_text() -> String {
         }
     }
     out.push_str("\nExit codes: 10 model found, 20 no model, 30 search exhausted with a model\n");
-    out.push_str("(all models or optimum), 1 interrupted, 65 input error, 128 usage error.\n");
+    out.push_str("(all models or optimum), 11 model found before a time limit, 1 interrupted\n");
+    out.push_str("or bad command line (as clingo), 65 input error, 70 a verb this build does\n");
+    out.push_str("not have or an I/O failure; `lucent demo` and `lucent sim` exit 0 when done.\n");
     out
 }
 

@@ -64,7 +64,7 @@ use std::time::Instant;
 use hashbrown::{HashMap, HashSet};
 
 use crate::base::{Diagnostic, Diagnostics, FileId, SourceMap, Span, WarningKind};
-use crate::ground::program::{ExternalValue, GroundProgram, Output, Rule};
+use crate::ground::program::{ExternalValue, GroundProgram, Output};
 use crate::ground::symbol::{SymId, Symbols};
 use crate::ground::{self, GroundConfig, Grounding};
 use crate::solve::{self, Solver};
@@ -281,8 +281,12 @@ pub struct Control {
     /// Ground statements not yet handed to the solver (the whole program before the first
     /// solve call, then what later groundings added).
     pending: GroundProgram,
-    /// Set when `pending` holds statements the solver cannot take incrementally.
+    /// Set until the solver is built from the first grounding.
     rebuild: bool,
+    /// Externals declared since the solver last took the pending statements.
+    new_externals: Vec<AtomId>,
+    /// Released externals (false for good).
+    released: HashSet<AtomId>,
     solver: Option<Solver>,
     /// The last grounding's tables, for `--text` output (`take_grounding`).
     last: Option<Grounding>,
@@ -319,6 +323,8 @@ impl Control {
             outputs_seen: None,
             pending: GroundProgram::new(),
             rebuild: false,
+            new_externals: Vec::new(),
+            released: HashSet::new(),
             solver: None,
             last: None,
         }
@@ -340,6 +346,11 @@ impl Control {
     /// The texts diagnostics refer to.
     pub fn sources(&self) -> &SourceMap {
         &self.sources
+    }
+
+    /// The texts diagnostics refer to, to add a file that a caller reads or generates.
+    pub fn sources_mut(&mut self) -> &mut SourceMap {
+        &mut self.sources
     }
 
     /// Warnings collected so far (errors come back in each call's [`Error`]).
@@ -887,49 +898,44 @@ impl Control {
             if is_old(ga) || defined_here.contains(&ga) {
                 continue;
             }
-            self.externals.insert(ga, external_value(v));
-            self.rebuild = true;
+            if !self.released.contains(&ga) {
+                self.externals.insert(ga, external_value(v));
+                self.new_externals.push(ga);
+            }
         }
         for m in &local.minimize {
             let mut m = m.clone();
             m.lits.iter_mut().for_each(|(l, _)| *l = lit(*l));
             delta.minimize.push(m);
-            self.rebuild = true;
         }
         for c in &local.cr_rules {
             delta.cr_rules.push(ground::program::CrRule {
                 appl: map[c.appl as usize],
                 label: c.label.clone(),
             });
-            self.rebuild = true;
         }
         for p in &local.prefers {
             delta.prefers.push(ground::program::Prefer {
                 better: map[p.better as usize],
                 worse: map[p.worse as usize],
             });
-            self.rebuild = true;
         }
         for h in &local.heuristics {
             let mut h = h.clone();
             h.atom = map[h.atom as usize];
             h.condition.iter_mut().for_each(|l| *l = lit(*l));
             delta.heuristics.push(h);
-            self.rebuild = true;
         }
         for e in &local.edges {
             let mut e = e.clone();
             e.condition.iter_mut().for_each(|l| *l = lit(*l));
             delta.edges.push(e);
-            self.rebuild = true;
         }
         for &p in &local.projections {
             delta.projections.push(map[p as usize]);
-            self.rebuild = true;
         }
         for &l in &local.assumptions {
             delta.assumptions.push(lit(l));
-            self.rebuild = true;
         }
         // Outputs, without those already present (the context shows old atoms again).
         if self.outputs_seen.is_none() {
@@ -974,6 +980,7 @@ impl Control {
     /// external are left alone, as clingo does.
     pub fn assign_external(&mut self, atom: &Symbol, value: TruthValue) {
         if let Some(a) = self.lookup(atom) {
+            // (A released atom left the map: it stays false.)
             if let Some(v) = self.externals.get_mut(&a) {
                 if v.is_some() {
                     *v = Some(value);
@@ -1050,24 +1057,22 @@ impl Control {
         if self.solver.is_none() {
             self.last = None;
         }
-        if let (Some(solver), true) = (
-            &mut self.solver,
-            self.pending.rules.is_empty() && !self.rebuild,
-        ) {
-            if !self.pending.outputs.is_empty() {
-                let outs = std::mem::take(&mut self.pending.outputs);
-                solver.add_outputs(&outs);
-            }
-            return;
-        }
         if let (Some(solver), false) = (&mut self.solver, self.rebuild) {
-            let rules: Vec<Rule> = self.pending.rules.to_vec();
-            if solver.add_rules(&rules).is_ok() {
-                let outs = std::mem::take(&mut self.pending.outputs);
-                solver.add_outputs(&outs);
-                self.pending = GroundProgram::new();
+            let mut delta = std::mem::take(&mut self.pending);
+            delta.num_atoms = self.atom_sym.len() as AtomId;
+            delta.externals = std::mem::take(&mut self.new_externals)
+                .into_iter()
+                .filter(|a| self.externals.contains_key(a))
+                .map(|a| (a, ExternalValue::Free))
+                .collect();
+            delta.origins.clear();
+            if solver.add_program(&delta).is_ok() {
+                self.release_in_solver();
                 return;
             }
+            // A later part gave rules to an atom that earlier steps completed (gringo reports
+            // a redefinition): solve the whole program instead.
+            self.pending = delta;
         }
         // Build from the whole program.
         let mut program = match self.solver.take() {
@@ -1095,6 +1100,27 @@ impl Control {
         let config = self.config.solve.clone();
         self.solver = Some(Solver::from_program(program, config));
         self.rebuild = false;
+        self.new_externals.clear();
+        self.release_in_solver();
+    }
+
+    /// Released externals become false for good in the solver (no assumption per call).
+    fn release_in_solver(&mut self) {
+        let Some(solver) = &mut self.solver else {
+            return;
+        };
+        let released: Vec<AtomId> = self
+            .externals
+            .iter()
+            .filter(|(_, v)| v.is_none())
+            .map(|(&a, _)| a)
+            .collect();
+        for a in released {
+            // An atom that is no longer free in the solver is complete already.
+            let _ = solver.release_external(a);
+            self.externals.remove(&a);
+            self.released.insert(a);
+        }
     }
 
     /// The literals assumed in every call: the values of the externals.
