@@ -889,10 +889,6 @@ impl Control {
             }
             delta.rules.push(rule);
         }
-        if self.config.provenance && !local.origins.is_empty() {
-            // Origins index this grounding's statements; kept for the rules that stayed.
-            delta.origins = Vec::new();
-        }
         for &(a, v) in &local.externals {
             let ga = map[a as usize];
             if is_old(ga) || defined_here.contains(&ga) {
@@ -1065,7 +1061,8 @@ impl Control {
                 .filter(|a| self.externals.contains_key(a))
                 .map(|a| (a, ExternalValue::Free))
                 .collect();
-            delta.origins.clear();
+            // Origins of a later grounding index that grounding's statements: not kept.
+            delta.provenance = Default::default();
             if solver.add_program(&delta).is_ok() {
                 self.release_in_solver();
                 return;
@@ -1094,8 +1091,9 @@ impl Control {
         };
         program.num_atoms = self.atom_sym.len() as AtomId;
         program.externals = self.free_externals();
-        if program.origins.len() != program.rules.len() {
-            program.origins.clear();
+        if !program.provenance.is_empty() {
+            // Rules of later groundings have no origins.
+            program.provenance.resize_rules(program.rules.len());
         }
         let config = self.config.solve.clone();
         self.solver = Some(Solver::from_program(program, config));
