@@ -5,6 +5,7 @@
 //! (`base` at the bottom of the dependency order, `cli` at the top). See ARCHITECTURE.md.
 
 pub mod base;
+pub mod explain;
 pub mod cli;
 pub mod ground;
 #[cfg(feature = "sim")]
