@@ -12,3 +12,4 @@ pub mod ground;
 pub mod sim;
 pub mod solve;
 pub mod syntax;
+pub mod learn;

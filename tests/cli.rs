@@ -51,20 +51,175 @@ fn version_exits_0() {
     assert!(out.starts_with("lucent version "));
 }
 
+/// clingo 5.4: `clingo --bogus; echo $?` prints
+/// `*** ERROR: (clingo): In context '<clingo>': unknown option: 'bogus'` and
+/// `*** Info : (clingo): Try '--help' for usage information` on standard error, nothing on
+/// standard output, and exits 1 (so do `clasp --bogus` and `gringo --bogus`).
 #[test]
 fn unknown_option_is_a_usage_error() {
-    let (code, out, err) = lucent(&["--no-such-option"], "");
-    assert_eq!(code, 128);
+    let (code, out, err) = lucent(&["--bogus"], "");
+    assert_eq!(code, 1);
     assert!(out.is_empty());
-    assert!(err.contains("*** ERROR: (lucent): 'no-such-option': unknown option"));
-    assert!(err.contains("Try '--help'"));
+    assert_eq!(
+        err,
+        "*** ERROR: (lucent): In context '<lucent>': unknown option: 'bogus'\n\
+         *** Info : (lucent): Try '--help' for usage information\n"
+    );
+    // clingo 5.4: `clingo -Q` says `unknown option: '-Q'`.
+    let (code, _, err) = lucent(&["-Q"], "");
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("In context '<lucent>': unknown option: '-Q'"),
+        "{err}"
+    );
 }
 
+/// clingo 5.4: `clingo -n many` prints
+/// `*** ERROR: (clingo): In context '<clingo>': 'many' invalid value for: 'models'`, exit 1;
+/// `clingo -n` prints `*** ERROR: (clingo): SyntaxError: 'n' requires a value!`, exit 1;
+/// `clingo --text=1` prints `*** ERROR: (clingo): SyntaxError: 'text' does not take a value!`.
 #[test]
 fn bad_value_is_a_usage_error() {
     let (code, _, err) = lucent(&["-n", "many"], "");
-    assert_eq!(code, 128);
-    assert!(err.contains("'many' invalid value for: 'models'"));
+    assert_eq!(code, 1);
+    assert!(err.contains(
+        "*** ERROR: (lucent): In context '<lucent>': 'many' invalid value for: 'models'"
+    ));
+    let (code, _, err) = lucent(&["-n"], "");
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("*** ERROR: (lucent): SyntaxError: 'n' requires a value!"),
+        "{err}"
+    );
+    let (code, _, err) = lucent(&["--text=1"], "");
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("*** ERROR: (lucent): SyntaxError: 'text' does not take a value!"),
+        "{err}"
+    );
+}
+
+/// The lines of `out` with the times (which depend on the clock) cut off.
+fn without_times(out: &str) -> String {
+    out.lines()
+        .filter(|l| !l.starts_with("Time ") && !l.starts_with("CPU Time"))
+        .map(|l| format!("{l}\n"))
+        .collect()
+}
+
+/// clingo 5.4: `echo 'p(1)' | clingo; echo $?` prints the syntax error on standard error and
+/// on standard output
+/// `clingo version 5.4.1`, `Reading from stdin`, `UNKNOWN`, ``, `Models       : 0+`,
+/// `Calls        : 1`, the two time lines; exit 65. The same for a grounding error
+/// (`echo 'p(X) :- q.' | clingo`) and a missing file (`clingo /nonexistent.lp` reads
+/// `Reading from /nonexistent.lp`).
+#[test]
+fn input_error_prints_unknown_and_the_summary() {
+    let expected = "lucent version 0.1.0\nReading from stdin\nUNKNOWN\n\nModels       : 0+\n\
+                    Calls        : 1\n";
+    for program in ["p(1)", "p(X) :- q."] {
+        let (code, out, err) = lucent(&[], program);
+        assert_eq!(code, 65, "{program}");
+        assert_eq!(without_times(&out), expected, "{program}");
+        assert!(out.contains("\nTime         : "));
+        assert!(out.contains("\nCPU Time     : "));
+        assert!(err.contains("error: "));
+    }
+    let (code, out, _) = lucent(&["/nonexistent/program.lp"], "");
+    assert_eq!(code, 65);
+    assert!(
+        out.starts_with("lucent version 0.1.0\nReading from /nonexistent/program.lp\nUNKNOWN\n")
+    );
+}
+
+/// clingo 5.4: `echo 'p(1)' | clingo --outf=2` prints a JSON document with `"Input": ["stdin"]`,
+/// `"Call": [{}]`, `"Result": "UNKNOWN"`, `"Models": {"Number": 0, "More": "yes"}`,
+/// `"Calls": 1` and the times; exit 65.
+#[test]
+fn input_error_in_json_is_a_document_with_unknown() {
+    let (code, out, _) = lucent(&["--outf=2"], "p(1)");
+    assert_eq!(code, 65);
+    let js: serde_json::Value = serde_json::from_str(&out).expect("a JSON document");
+    assert_eq!(js["Result"], "UNKNOWN");
+    assert_eq!(js["Input"], serde_json::json!(["stdin"]));
+    assert_eq!(js["Models"]["Number"], 0);
+    assert_eq!(js["Models"]["More"], "yes");
+    assert_eq!(js["Calls"], 1);
+}
+
+/// clingo 5.4 at `-V0`: `echo '{a;b}.' | clingo -V0 -n0` prints the models without header or
+/// `Answer:` lines and then only the result: ``, `b`, `a`, `a b` (in its order), `SATISFIABLE`;
+/// `echo 'p(1)' | clingo -V0` prints only `UNKNOWN` (exit 65); with `--stats` the summary follows.
+#[test]
+fn verbosity_0_prints_models_and_result_only() {
+    let (code, out, _) = lucent(&["-V0", "-n0"], "{a;b}.");
+    assert_eq!(code, 30);
+    let mut lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.pop(), Some("SATISFIABLE"));
+    lines.sort_unstable();
+    assert_eq!(lines, ["", "a", "a b", "b"]);
+    let (code, out, _) = lucent(&["-V0"], ":- not a.");
+    assert_eq!((code, out.as_str()), (20, "UNSATISFIABLE\n"));
+    let (code, out, _) = lucent(&["-V0"], "p(1)");
+    assert_eq!((code, out.as_str()), (65, "UNKNOWN\n"));
+    let (_, out, _) = lucent(&["-V0", "--stats"], "a.");
+    assert!(
+        out.starts_with("a\nSATISFIABLE\n\nModels       : 1\n"),
+        "{out}"
+    );
+}
+
+/// clingo 5.4: `echo a. | clingo` prints `Reading from stdin`, and `echo a. | clingo -` prints
+/// `Reading from -`; with `--outf=2` the input is `"stdin"` and `"-"`.
+#[test]
+fn standard_input_is_announced_as_clingo_does() {
+    let (_, out, _) = lucent(&[], "a.");
+    assert!(
+        out.starts_with("lucent version 0.1.0\nReading from stdin\nSolving...\n"),
+        "{out}"
+    );
+    let (_, out, _) = lucent(&["-"], "a.");
+    assert!(
+        out.starts_with("lucent version 0.1.0\nReading from -\nSolving...\n"),
+        "{out}"
+    );
+    let (_, out, _) = lucent(&["--outf=2"], "a.");
+    let js: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(js["Input"], serde_json::json!(["stdin"]));
+}
+
+/// A minimize statement whose only element has a condition holding a literal and its negation,
+/// or an atom that only such a rule derives: gringo keeps it (`echo '{a}. #minimize{1:a,not a}.'
+/// | gringo -t` prints `:~not a,a.[1@0]`), so clingo 5.4 answers
+/// `echo '{a}. #minimize{1:a,not a}.' | clingo` with `Optimization: 0` and `OPTIMUM FOUND`
+/// (exit 30), and so for `{a}. b :- a, not a. c :- b. #minimize{1:c}.`. Without such an element
+/// (`b. #minimize{1:b,not b}.`, where `not b` is false) clingo says `SATISFIABLE`.
+#[test]
+fn minimize_simplified_away_is_an_optimum_of_0() {
+    for program in [
+        "{a}. #minimize{1:a,not a}.",
+        "{a}. b :- a, not a. c :- b. #minimize{1:c}.",
+    ] {
+        let (code, out, _) = lucent(&[], program);
+        assert_eq!(code, 30, "{program}");
+        assert!(
+            out.contains("\nOptimization: 0\nOPTIMUM FOUND\n"),
+            "{program}: {out}"
+        );
+        assert!(out.contains("\nOptimization : 0\n"), "{program}: {out}");
+    }
+    // Two priorities, one of them simplified away: clingo prints `Optimization: 0 0`.
+    let (_, out, _) = lucent(&[], "{a}. #minimize{1@2:a,not a; 1@1:a}.");
+    assert!(
+        out.contains("\nOptimization: 0 0\nOPTIMUM FOUND\n"),
+        "{out}"
+    );
+    let (code, out, _) = lucent(&[], "b. #minimize{1:b,not b}.");
+    assert_eq!(code, 30);
+    assert!(
+        out.contains("\nSATISFIABLE\n") && !out.contains("Optimization"),
+        "{out}"
+    );
 }
 
 #[test]

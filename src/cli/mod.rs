@@ -2,7 +2,9 @@
 //! does I/O (files, standard streams, the clock).
 //!
 //! Invariants: every run ends with one of the exit codes of REFERENCE.md (10, 20, 30 after
-//! solving; 1 interrupted; 65 input or grounding error; 128 usage error); diagnostics go to
+//! solving; 1 interrupted or a bad command line, as clingo 5.4; 65 input or grounding error, after
+//! `UNKNOWN` and the summary on standard output as clingo prints them; 70 a verb or stage this
+//! build does not provide, or an I/O failure); diagnostics go to
 //! standard error in gringo's format, results to standard output. Library modules receive limits
 //! as values and never print.
 
@@ -37,8 +39,8 @@ pub const EXIT_MEMORY: i32 = 33;
 pub const EXIT_INPUT: i32 = 65;
 /// Exit code: a stage this build does not provide (EX_SOFTWARE).
 pub const EXIT_UNAVAILABLE: i32 = 70;
-/// Exit code: bad command line.
-pub const EXIT_USAGE: i32 = 128;
+/// Exit code: bad command line (clingo 5.4 and clasp exit 1, the code of an interruption).
+pub const EXIT_USAGE: i32 = 1;
 
 /// Runs the command line on the process's arguments and standard streams, and returns the exit
 /// code.
@@ -302,7 +304,9 @@ fn solve_and_report(
     }
     let quiet = report::Quiet::from_levels(options.quiet);
     match options.outf {
-        options::OutputFormat::Text => report::write_text(io.out, &rep, quiet)?,
+        options::OutputFormat::Text => {
+            report::write_text_verbose(io.out, &rep, quiet, options.verbose)?
+        }
         options::OutputFormat::Json => report::write_json(io.out, &rep, quiet)?,
     }
     if let Some(program) = &original {
@@ -320,6 +324,37 @@ fn solve_and_report(
     Ok(rep.exit_code())
 }
 
+/// After an error in the input (diagnostics already on standard error), clingo still prints
+/// its header, `UNKNOWN` and the summary on standard output (with `--outf=2`, a JSON document
+/// with `"Result": "UNKNOWN"`), so a script reading the output gets a complete document; then
+/// exits with `code`. `--mode=gringo` prints nothing, as gringo.
+fn input_error_report(
+    options: &Options,
+    io: &mut Io,
+    start: Instant,
+    code: i32,
+) -> std::io::Result<i32> {
+    if options.mode == options::Mode::Gringo {
+        return Ok(code);
+    }
+    let total = start.elapsed().as_secs_f64();
+    let times = report::Times {
+        total,
+        cpu: report::process_cpu_seconds().unwrap_or(total),
+        ..report::Times::default()
+    };
+    let rep = report::Report::input_error(options.files.clone(), times);
+    match options.outf {
+        options::OutputFormat::Text => {
+            report::write_text_input_error(io.out, &rep, options.verbose)?
+        }
+        options::OutputFormat::Json => {
+            report::write_json(io.out, &rep, report::Quiet::from_levels(options.quiet))?
+        }
+    }
+    Ok(code)
+}
+
 fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
     let start = Instant::now();
     let deadline = options
@@ -335,7 +370,7 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
     };
     let parsed = match read_and_parse(options, io, &mut diags)? {
         Ok(p) => p,
-        Err(code) => return Ok(code),
+        Err(code) => return input_error_report(options, io, start, code),
     };
     flush_diagnostics(io, &diags, &parsed.sources)?;
     let config = ground::GroundConfig {
@@ -380,7 +415,7 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
             io.err,
             "*** ERROR: (lucent): grounding stopped because of errors"
         )?;
-        return Ok(EXIT_INPUT);
+        return input_error_report(options, io, start, EXIT_INPUT);
     }
     match options.mode {
         options::Mode::Gringo => {
@@ -401,7 +436,9 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
             let ground_program = std::mem::take(&mut grounding.program);
             drop(grounding);
             drop(program);
-            solve_and_report(options, io, ground_program, parsed.names, start, deadline)
+            // Named as clingo names them: no file given is `stdin`, an explicit `-` stays `-`.
+            let inputs = options.files.clone();
+            solve_and_report(options, io, ground_program, inputs, start, deadline)
         }
     }
 }
@@ -430,7 +467,7 @@ fn run_clasp_mode(
                 io.err,
                 "<cmd>: error: file could not be opened:\n  {name}\n"
             )?;
-            return Ok(EXIT_INPUT);
+            return input_error_report(options, io, start, EXIT_INPUT);
         }
     }
     let mut program = match ground::aspif::read_program(&bytes) {
@@ -444,7 +481,7 @@ fn run_clasp_mode(
                 "{name}:{line}:{column}: error: malformed aspif input: {kind}\n"
             )?;
             writeln!(io.err, "*** ERROR: (lucent): reading aspif failed")?;
-            return Ok(EXIT_INPUT);
+            return input_error_report(options, io, start, EXIT_INPUT);
         }
     };
     // The text is not needed once read; free it before the solver is built.
@@ -453,7 +490,7 @@ fn run_clasp_mode(
     // keeps memory proportional to the atoms used (what is shown comes from output symbols,
     // so the numbers are not visible).
     program.compact_atoms();
-    solve_and_report(options, io, program, names, start, deadline)
+    solve_and_report(options, io, program, options.files.clone(), start, deadline)
 }
 
 #[cfg(test)]
@@ -474,10 +511,12 @@ mod tests {
     }
 
     #[test]
-    fn usage_error_exits_128() {
+    fn usage_error_exits_1() {
         let (code, _, err) = run_str("--bogus", "");
-        assert_eq!(code, EXIT_USAGE);
-        assert!(err.starts_with("*** ERROR: (lucent): 'bogus': unknown option"));
+        assert_eq!(code, 1);
+        assert!(
+            err.starts_with("*** ERROR: (lucent): In context '<lucent>': unknown option: 'bogus'")
+        );
     }
 
     #[test]
@@ -494,7 +533,7 @@ mod tests {
     fn syntax_error_exits_65_with_gringo_location() {
         let (code, out, err) = run_str("", "p(1)\nq(2).");
         assert_eq!(code, EXIT_INPUT);
-        assert!(out.is_empty());
+        assert!(out.contains("\nUNKNOWN\n"), "{out}");
         assert!(
             err.starts_with("-:2:1-2: error: syntax error, unexpected <IDENTIFIER>"),
             "{err}"

@@ -3,7 +3,7 @@
 //! Invariants: one declarative table ([`OPTIONS`]) drives both parsing and `--help` (CaDiCaL's
 //! `options.hpp` habit), so an option cannot be accepted without being documented. Parsing is
 //! pure: it never reads files or prints; errors are [`UsageError`] values that the caller turns
-//! into clingo's `*** ERROR: (lucent): ...` lines and exit code 128.
+//! into clingo's `*** ERROR: (lucent): ...` lines and exit code 1.
 
 use crate::base::WarningKind;
 
@@ -258,20 +258,21 @@ impl Default for Options {
     }
 }
 
-/// A command-line mistake: exit code 128.
+/// A command-line mistake: exit code 1, with clingo 5.4's wording (`In context '<lucent>': ...`
+/// or `SyntaxError: ...`).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum UsageError {
     /// An option nobody knows.
-    #[error("'{0}': unknown option")]
+    #[error("In context '<lucent>': unknown option: '{0}'")]
     Unknown(String),
     /// An option that needs a value got none.
-    #[error("'{0}' requires a value!")]
+    #[error("SyntaxError: '{0}' requires a value!")]
     MissingValue(String),
     /// A flag was given a value.
-    #[error("'{0}' does not take a value")]
+    #[error("SyntaxError: '{0}' does not take a value!")]
     UnexpectedValue(String),
     /// A value that does not fit the option.
-    #[error("'{value}' invalid value for: '{option}'")]
+    #[error("In context '<lucent>': '{value}' invalid value for: '{option}'")]
     InvalidValue {
         /// The option's long name.
         option: String,
@@ -605,7 +606,9 @@ pub fn help_text() -> String {
         }
     }
     out.push_str("\nExit codes: 10 model found, 20 no model, 30 search exhausted with a model\n");
-    out.push_str("(all models or optimum), 1 interrupted, 65 input error, 128 usage error.\n");
+    out.push_str("(all models or optimum), 11 model found before a time limit, 1 interrupted\n");
+    out.push_str("or bad command line (as clingo), 65 input error, 70 a verb this build does\n");
+    out.push_str("not have or an I/O failure; `lucent demo` and `lucent sim` exit 0 when done.\n");
     out
 }
 

@@ -237,6 +237,27 @@ impl Report {
         }
     }
 
+    /// The report of a run whose input had an error: no call was solved, the result is
+    /// `UNKNOWN` with `Models : 0+`, as clingo 5.4 prints it before exiting with 65.
+    pub fn input_error(inputs: Vec<String>, times: Times) -> Report {
+        Report {
+            solver: format!("lucent version {}", env!("CARGO_PKG_VERSION")),
+            inputs,
+            models: Vec::new(),
+            number: 0,
+            outcome: Outcome::Unknown,
+            exhausted: false,
+            has_minimize: false,
+            optimizing: false,
+            enum_mode: EnumMode::Auto,
+            stop: None,
+            has_cr: false,
+            calls: 1,
+            times,
+            stats: None,
+        }
+    }
+
     /// The process exit code for this report (see [`exit_code`]).
     pub fn exit_code(&self) -> i32 {
         exit_code(self.outcome, self.exhausted, self.stop)
@@ -314,8 +335,35 @@ fn join<T: ToString>(items: &[T], sep: &str) -> String {
         .join(sep)
 }
 
-/// Writes the whole text output (`--outf=0`).
+/// Writes the whole text output (`--outf=0`) at clingo's default verbosity (`-V1`).
 pub fn write_text(out: &mut dyn Write, report: &Report, quiet: Quiet) -> io::Result<()> {
+    write_text_verbose(out, report, quiet, 1)
+}
+
+/// Writes the whole text output at verbosity `verbose` (`-V`): at 0, as clingo 5.4, no header
+/// lines, no `Answer: N` lines and, unless statistics were asked for, no summary after the
+/// result line; every other level prints as level 1.
+pub fn write_text_verbose(
+    out: &mut dyn Write,
+    report: &Report,
+    quiet: Quiet,
+    verbose: u8,
+) -> io::Result<()> {
+    if verbose == 0 {
+        for (i, model) in report.models.iter().enumerate() {
+            let last = i + 1 == report.models.len();
+            if Quiet::shows(quiet.models, last) {
+                write_answer_lines(out, report, model, false)?;
+            }
+            if Quiet::shows(quiet.optimize, last) {
+                write_costs(out, report, model)?;
+            }
+        }
+        if report.stats.is_some() {
+            return write_text_summary(out, report);
+        }
+        return writeln!(out, "{}", result_text(report.outcome));
+    }
     write_text_header(out, report)?;
     for model in &report.models {
         write_text_model(out, report, model, quiet)?;
@@ -324,15 +372,32 @@ pub fn write_text(out: &mut dyn Write, report: &Report, quiet: Quiet) -> io::Res
     write_text_summary(out, report)
 }
 
+/// What clingo prints on standard output when the input has an error (exit 65): the first two
+/// header lines (no `Solving...`), then `UNKNOWN` and the summary (only `UNKNOWN` at `-V0`).
+pub fn write_text_input_error(out: &mut dyn Write, report: &Report, verbose: u8) -> io::Result<()> {
+    if verbose == 0 {
+        return writeln!(out, "{}", result_text(report.outcome));
+    }
+    writeln!(out, "{}", report.solver)?;
+    write_reading_from(out, report)?;
+    write_text_summary(out, report)
+}
+
 /// `lucent version X`, `Reading from ...`, `Solving...`.
 pub fn write_text_header(out: &mut dyn Write, report: &Report) -> io::Result<()> {
     writeln!(out, "{}", report.solver)?;
-    match report.inputs.as_slice() {
-        [] => writeln!(out, "Reading from stdin")?,
-        [one] => writeln!(out, "Reading from {one}")?,
-        [first, ..] => writeln!(out, "Reading from {first} ...")?,
-    }
+    write_reading_from(out, report)?;
     writeln!(out, "Solving...")
+}
+
+/// `Reading from ...`: `stdin` when no input was named (an explicit `-` is printed as given,
+/// as clingo 5.4 does).
+fn write_reading_from(out: &mut dyn Write, report: &Report) -> io::Result<()> {
+    match report.inputs.as_slice() {
+        [] => writeln!(out, "Reading from stdin"),
+        [one] => writeln!(out, "Reading from {one}"),
+        [first, ..] => writeln!(out, "Reading from {first} ..."),
+    }
 }
 
 /// What clasp prints when a model is found: the model (quiet level 0) and its costs (level
@@ -368,7 +433,19 @@ pub fn write_text_last(out: &mut dyn Write, report: &Report, quiet: Quiet) -> io
 
 /// `Answer: N`, the symbols, the applied CR rules and the consequence counts.
 fn write_answer(out: &mut dyn Write, report: &Report, model: &ReportModel) -> io::Result<()> {
-    writeln!(out, "Answer: {}", model.number)?;
+    write_answer_lines(out, report, model, true)
+}
+
+/// The lines of one answer, with or without the `Answer: N` line (`-V0` leaves it out).
+fn write_answer_lines(
+    out: &mut dyn Write,
+    report: &Report,
+    model: &ReportModel,
+    numbered: bool,
+) -> io::Result<()> {
+    if numbered {
+        writeln!(out, "Answer: {}", model.number)?;
+    }
     writeln!(out, "{}", model.symbols.join(" "))?;
     if report.has_cr {
         let mut line = String::from("Applied CR rules:");

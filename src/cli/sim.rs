@@ -3,7 +3,7 @@
 //!
 //! Invariants: this is the only place where the simulator touches files; every failure is a
 //! message on standard error and an exit code (0 success, 65 bad input such as a malformed scene,
-//! an unknown object or an unreadable file, 128 bad usage), never a panic. A failed action is
+//! an unknown object or an unreadable file, 1 bad usage), never a panic. A failed action is
 //! not a failure of the command: it is reported and observed, and the exit code is 0.
 
 use crate::sim::{
@@ -14,7 +14,7 @@ use std::fmt::Write as _;
 
 const EXIT_OK: i32 = 0;
 const EXIT_INPUT: i32 = 65;
-const EXIT_USAGE: i32 = 128;
+const EXIT_USAGE: i32 = super::EXIT_USAGE;
 
 /// One option: its spelling, whether it takes a value, the subcommands it applies to, its help.
 struct OptionSpec {

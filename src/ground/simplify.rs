@@ -118,135 +118,30 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             }
         })
         .collect();
-    let mut head_count = vec![0u32; n + 1];
-    // Occurrences in bodies: (rule, weight); weight 0 marks a normal body.
-    let mut pos_occ = Occurrences::new(n);
-    let mut neg_occ = Occurrences::new(n);
-    // For weight bodies: the weight still reachable minus the bound; below 0 the rule is dead.
-    let mut slack: Vec<i64> = vec![0; g.rules.len()];
-    for pass in [Pass::Count, Pass::Fill] {
-        for (ri, r) in g.rules.iter().enumerate() {
-            match r.body {
-                BodyRef::Normal(lits) => {
-                    for &l in lits {
-                        let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
-                        occ.add(pass, l.unsigned_abs(), (ri as u32, 0));
-                    }
-                }
-                BodyRef::Weight { lits, .. } => {
-                    for &(l, w) in lits {
-                        let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
-                        occ.add(pass, l.unsigned_abs(), (ri as u32, w.max(1)));
-                    }
-                }
-            }
-        }
-        pos_occ.end(pass);
-        neg_occ.end(pass);
-    }
-    for (ri, r) in g.rules.iter().enumerate() {
-        for &h in r.head {
-            head_count[h as usize] += 1;
-        }
-        if let BodyRef::Weight { lower, lits } = r.body {
-            slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
-        }
-    }
     let mut external = vec![false; n + 1];
     for &(a, _) in &g.externals {
         external[a as usize] = true;
     }
-    let mut dead = vec![false; g.rules.len()];
-    let mut work: Vec<AtomId> = Vec::new();
-    for a in 1..=n {
-        if head_count[a] == 0 && !external[a] && status[a - 1] == Status::Unknown {
-            status[a - 1] = Status::False;
-            work.push(a as AtomId);
-        }
-    }
-    let kill = |ri: usize,
-                dead: &mut Vec<bool>,
-                head_count: &mut Vec<u32>,
-                status: &mut Vec<Status>,
-                work: &mut Vec<AtomId>,
-                rules: &Rules| {
-        if dead[ri] {
-            return;
-        }
-        dead[ri] = true;
-        for &h in rules.get(ri).head {
-            head_count[h as usize] -= 1;
-            if head_count[h as usize] == 0
-                && !external[h as usize]
-                && status[h as usize - 1] == Status::Unknown
-            {
-                status[h as usize - 1] = Status::False;
-                work.push(h);
-            }
-        }
-    };
-    // A disjunctive rule with a fact among its heads is satisfied in every model and, by
-    // minimality, supports none of its other heads: it is dead from the start (as in gringo),
-    // so atoms only it could derive become false. The fact's own rule `a.` is kept. So is a
-    // rule whose body holds `a` and `not a` (a weak constraint `:~ r, not r.` costs nothing).
-    for ri in 0..g.rules.len() {
-        let r = g.rules.get(ri);
-        let satisfied_head = r.head_kind == HeadKind::Disjunction
-            && r.head
+    let (dead, killed_contradictory) = propagate(g, &external, &mut status, true);
+    // What gringo would still find possible: it keeps rules with contradictory bodies, so atoms
+    // only they derive stay in its minimize statements (clingo then reports an optimum of 0
+    // where a dropped statement would make the answer plain SATISFIABLE).
+    let gringo_status: Option<Vec<Status>> = (killed_contradictory && !g.minimize_order.is_empty())
+        .then(|| {
+            let mut st: Vec<Status> = g
+                .atoms
                 .iter()
-                .any(|&h| status[h as usize - 1] == Status::Fact)
-            && !(r.head.len() == 1 && r.body.is_empty_normal());
-        if satisfied_head || contradictory(r.body) {
-            kill(
-                ri,
-                &mut dead,
-                &mut head_count,
-                &mut status,
-                &mut work,
-                &g.rules,
-            );
-        }
-    }
-    // Rules with `not a`, a a fact, are dead from the start.
-    for a in 1..=n {
-        if status[a - 1] == Status::Fact {
-            for &(ri, w) in neg_occ.of(a) {
-                // A weight body loses the literal's weight; a normal body dies.
-                if w > 0 {
-                    slack[ri as usize] -= w;
-                    if slack[ri as usize] >= 0 {
-                        continue;
+                .map(|a| {
+                    if a.fact {
+                        Status::Fact
+                    } else {
+                        Status::Unknown
                     }
-                }
-                kill(
-                    ri as usize,
-                    &mut dead,
-                    &mut head_count,
-                    &mut status,
-                    &mut work,
-                    &g.rules,
-                );
-            }
-        }
-    }
-    while let Some(a) = work.pop() {
-        for &(ri, w) in pos_occ.of(a as usize) {
-            if w > 0 {
-                slack[ri as usize] -= w;
-                if slack[ri as usize] >= 0 {
-                    continue;
-                }
-            }
-            kill(
-                ri as usize,
-                &mut dead,
-                &mut head_count,
-                &mut status,
-                &mut work,
-                &g.rules,
-            );
-        }
-    }
+                })
+                .collect();
+            propagate(g, &external, &mut st, false);
+            st
+        });
     let truth = |l: Lit, status: &[Status]| -> Option<bool> {
         let s = status[l.unsigned_abs() as usize - 1];
         match (l > 0, s) {
@@ -262,7 +157,6 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut fact_rule_seen = vec![false; n + 1];
     // The rules are moved out (the grounder's copy is not used after this); each surviving
     // rule is simplified in the scratch vectors and copied to `rules`.
-    drop((pos_occ, neg_occ, slack, head_count));
     let old = std::mem::take(&mut g.rules);
     let mut head: Vec<AtomId> = Vec::new();
     let mut lits: Vec<Lit> = Vec::new();
@@ -347,8 +241,16 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut minimize: Vec<Minimize> = Vec::new();
     let keys = std::mem::take(&mut g.minimize_order);
     let mut elements: Vec<(i32, i32, Lit)> = Vec::new();
+    // Priorities whose every element Lucent simplified away but gringo would keep (a condition
+    // holding a literal and its negation, or an atom only a contradictory rule derives): they
+    // stay as empty statements, so the answer is an optimum of 0 as clingo's.
+    let mut empty_prios: Vec<i32> = Vec::new();
     for key in keys {
         let conds = g.minimize.get(&key).cloned().unwrap_or_default();
+        let gstatus = gringo_status.as_deref().unwrap_or(&status);
+        let gringo_keeps = conds
+            .iter()
+            .any(|c| c.iter().all(|&l| truth(l, gstatus) != Some(false)));
         let mut alts: Vec<Vec<Lit>> = Vec::new();
         let mut certain = false;
         for c in conds {
@@ -367,6 +269,9 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             }
         }
         if alts.is_empty() {
+            if gringo_keeps {
+                empty_prios.push(key.0);
+            }
             continue;
         }
         let lit = if certain {
@@ -400,6 +305,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         elements.push((key.0, key.1, lit));
     }
     let mut prios: Vec<i32> = elements.iter().map(|e| e.0).collect();
+    prios.extend(empty_prios);
     prios.sort_unstable_by(|a, b| b.cmp(a));
     prios.dedup();
     for p in prios {
@@ -661,6 +567,142 @@ fn contradictory_lits(lits: &[Lit]) -> bool {
             .iter()
             .enumerate()
             .any(|(i, &l)| lits[i + 1..].contains(&-l))
+}
+
+/// The false atoms by propagation from `status` (facts known, everything else unknown): marks
+/// them in `status` and returns which rules are dead, and whether a rule was killed because its
+/// body holds a literal and its negation (only with `kill_contradictory`; gringo keeps such
+/// rules, so their heads stay possible for gringo).
+fn propagate(
+    g: &Grounder<'_>,
+    external: &[bool],
+    status: &mut [Status],
+    kill_contradictory: bool,
+) -> (Vec<bool>, bool) {
+    let n = g.atoms.len();
+    let mut killed_contradictory = false;
+    let mut head_count = vec![0u32; n + 1];
+    // Occurrences in bodies: (rule, weight); weight 0 marks a normal body.
+    let mut pos_occ = Occurrences::new(n);
+    let mut neg_occ = Occurrences::new(n);
+    // For weight bodies: the weight still reachable minus the bound; below 0 the rule is dead.
+    let mut slack: Vec<i64> = vec![0; g.rules.len()];
+    for pass in [Pass::Count, Pass::Fill] {
+        for (ri, r) in g.rules.iter().enumerate() {
+            match r.body {
+                BodyRef::Normal(lits) => {
+                    for &l in lits {
+                        let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
+                        occ.add(pass, l.unsigned_abs(), (ri as u32, 0));
+                    }
+                }
+                BodyRef::Weight { lits, .. } => {
+                    for &(l, w) in lits {
+                        let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
+                        occ.add(pass, l.unsigned_abs(), (ri as u32, w.max(1)));
+                    }
+                }
+            }
+        }
+        pos_occ.end(pass);
+        neg_occ.end(pass);
+    }
+    for (ri, r) in g.rules.iter().enumerate() {
+        for &h in r.head {
+            head_count[h as usize] += 1;
+        }
+        if let BodyRef::Weight { lower, lits } = r.body {
+            slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
+        }
+    }
+    let mut dead = vec![false; g.rules.len()];
+    let mut work: Vec<AtomId> = Vec::new();
+    for a in 1..=n {
+        if head_count[a] == 0 && !external[a] && status[a - 1] == Status::Unknown {
+            status[a - 1] = Status::False;
+            work.push(a as AtomId);
+        }
+    }
+    let kill = |ri: usize,
+                dead: &mut Vec<bool>,
+                head_count: &mut Vec<u32>,
+                status: &mut [Status],
+                work: &mut Vec<AtomId>,
+                rules: &Rules| {
+        if dead[ri] {
+            return;
+        }
+        dead[ri] = true;
+        for &h in rules.get(ri).head {
+            head_count[h as usize] -= 1;
+            if head_count[h as usize] == 0
+                && !external[h as usize]
+                && status[h as usize - 1] == Status::Unknown
+            {
+                status[h as usize - 1] = Status::False;
+                work.push(h);
+            }
+        }
+    };
+    // A disjunctive rule with a fact among its heads is satisfied in every model and, by
+    // minimality, supports none of its other heads: it is dead from the start (as in gringo),
+    // so atoms only it could derive become false. The fact's own rule `a.` is kept. So is a
+    // rule whose body holds `a` and `not a` (a weak constraint `:~ r, not r.` costs nothing).
+    for ri in 0..g.rules.len() {
+        let r = g.rules.get(ri);
+        let satisfied_head = r.head_kind == HeadKind::Disjunction
+            && r.head
+                .iter()
+                .any(|&h| status[h as usize - 1] == Status::Fact)
+            && !(r.head.len() == 1 && r.body.is_empty_normal());
+        let contra = kill_contradictory && contradictory(r.body);
+        killed_contradictory |= contra;
+        if satisfied_head || contra {
+            kill(ri, &mut dead, &mut head_count, status, &mut work, &g.rules);
+        }
+    }
+    // Rules with `not a`, a a fact, are dead from the start.
+    for a in 1..=n {
+        if status[a - 1] == Status::Fact {
+            for &(ri, w) in neg_occ.of(a) {
+                // A weight body loses the literal's weight; a normal body dies.
+                if w > 0 {
+                    slack[ri as usize] -= w;
+                    if slack[ri as usize] >= 0 {
+                        continue;
+                    }
+                }
+                kill(
+                    ri as usize,
+                    &mut dead,
+                    &mut head_count,
+                    status,
+                    &mut work,
+                    &g.rules,
+                );
+            }
+        }
+    }
+    while let Some(a) = work.pop() {
+        for &(ri, w) in pos_occ.of(a as usize) {
+            if w > 0 {
+                slack[ri as usize] -= w;
+                if slack[ri as usize] >= 0 {
+                    continue;
+                }
+            }
+            kill(
+                ri as usize,
+                &mut dead,
+                &mut head_count,
+                status,
+                &mut work,
+                &g.rules,
+            );
+        }
+    }
+    drop((pos_occ, neg_occ, slack, head_count));
+    (dead, killed_contradictory)
 }
 
 fn new_aux(g: &mut Grounder<'_>, status: &mut Vec<Status>) -> AtomId {

@@ -1,0 +1,489 @@
+//! The learner's small term language: literals over constants and sorted variables, and axioms
+//! (causal laws and executability conditions) with a canonical form up to variable renaming.
+//!
+//! Invariants: a literal is structured data (name, signed, arguments), never text to be sliced;
+//! `relation(S, X, Y)` keeps the relation name `S` as a constant in argument 0; an axiom's body
+//! is kept sorted and free of duplicates; [`Axiom::canonical`] is equal for two axioms exactly
+//! when they are equal up to a sort-preserving renaming of their variables (DOMAIN.md 5.8).
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+/// The sort of a variable: its name prefix (DOMAIN.md 5.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Sort {
+    /// The robot (`R`).
+    Robot,
+    /// An object or the table (`O`).
+    Object,
+}
+
+/// A variable: its sort and index (`R1`, `O5`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Var {
+    /// The sort.
+    pub sort: Sort,
+    /// The index, from 1.
+    pub index: u32,
+}
+
+impl fmt::Display for Var {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let prefix = match self.sort {
+            Sort::Robot => 'R',
+            Sort::Object => 'O',
+        };
+        write!(f, "{prefix}{}", self.index)
+    }
+}
+
+/// A term: a constant or a variable.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Term {
+    /// A constant (`rob1`, `table`, `on`).
+    Const(String),
+    /// A variable.
+    Var(Var),
+}
+
+impl Term {
+    /// The constant `name`.
+    pub fn constant(name: &str) -> Term {
+        Term::Const(name.to_string())
+    }
+
+    /// The variable, if this is one.
+    pub fn var(&self) -> Option<Var> {
+        match self {
+            Term::Var(v) => Some(*v),
+            Term::Const(_) => None,
+        }
+    }
+}
+
+impl fmt::Display for Term {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Term::Const(c) => f.write_str(c),
+            Term::Var(v) => v.fmt(f),
+        }
+    }
+}
+
+/// The predicate of spatial relations; argument 0 is the relation name.
+pub const RELATION: &str = "relation";
+/// The predicate of the hand fluent `in_hand(R, O)`.
+pub const IN_HAND: &str = "in_hand";
+
+/// A literal `name(args)` or its classical negation; also used for action atoms.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Literal {
+    /// False for a classically negated literal (`¬f`).
+    pub positive: bool,
+    /// The predicate name.
+    pub name: String,
+    /// The arguments.
+    pub args: Vec<Term>,
+}
+
+impl Literal {
+    /// A positive literal.
+    pub fn new(name: &str, args: Vec<Term>) -> Literal {
+        Literal {
+            positive: true,
+            name: name.to_string(),
+            args,
+        }
+    }
+
+    /// A positive ground literal from constant names.
+    pub fn ground(name: &str, args: &[&str]) -> Literal {
+        Literal::new(name, args.iter().map(|a| Term::constant(a)).collect())
+    }
+
+    /// `relation(rel, a, b)` over constants.
+    pub fn relation(rel: &str, a: &str, b: &str) -> Literal {
+        Literal::ground(RELATION, &[rel, a, b])
+    }
+
+    /// The complement `l̄`.
+    pub fn complement(&self) -> Literal {
+        Literal {
+            positive: !self.positive,
+            ..self.clone()
+        }
+    }
+
+    /// The same literal with the given sign.
+    pub fn with_sign(mut self, positive: bool) -> Literal {
+        self.positive = positive;
+        self
+    }
+
+    /// The argument positions that hold objects or the robot (not a relation name).
+    pub fn entity_positions(&self) -> std::ops::Range<usize> {
+        if self.name == RELATION {
+            1.min(self.args.len())..self.args.len()
+        } else {
+            0..self.args.len()
+        }
+    }
+
+    /// The variables in order of appearance (repeats included).
+    pub fn vars(&self) -> impl Iterator<Item = Var> + '_ {
+        self.args.iter().filter_map(Term::var)
+    }
+
+    /// The literal with every variable mapped through `map` (unmapped variables unchanged).
+    pub fn rename(&self, map: &impl Fn(Var) -> Var) -> Literal {
+        Literal {
+            positive: self.positive,
+            name: self.name.clone(),
+            args: self
+                .args
+                .iter()
+                .map(|t| match t {
+                    Term::Var(v) => Term::Var(map(*v)),
+                    c => c.clone(),
+                })
+                .collect(),
+        }
+    }
+
+    /// AL_d text: `on(O1, O2)` for `relation(on, O1, O2)`, `-in_hand(R1, O1)` for a negation.
+    pub fn to_ald(&self) -> String {
+        let sign = if self.positive { "" } else { "-" };
+        let (name, args) = if self.name == RELATION && !self.args.is_empty() {
+            (self.args[0].to_string(), &self.args[1..])
+        } else {
+            (self.name.clone(), &self.args[..])
+        };
+        let args: Vec<String> = args.iter().map(Term::to_string).collect();
+        if args.is_empty() {
+            format!("{sign}{name}")
+        } else {
+            format!("{sign}{name}({})", args.join(", "))
+        }
+    }
+}
+
+impl fmt::Display for Literal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.to_ald())
+    }
+}
+
+/// What an axiom says about its action.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum AxiomKind {
+    /// `a causes head if body`.
+    Causal {
+        /// The effect.
+        head: Literal,
+    },
+    /// `impossible a if body`.
+    Executability,
+}
+
+/// A lifted causal law or executability condition.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Axiom {
+    /// Causal law (with its head) or executability condition.
+    pub kind: AxiomKind,
+    /// The lifted action, e.g. `pickup(R1, O1)`.
+    pub action: Literal,
+    /// The conditions, sorted, without duplicates.
+    pub body: Vec<Literal>,
+}
+
+impl Axiom {
+    /// An axiom with its body sorted and deduplicated.
+    pub fn new(kind: AxiomKind, action: Literal, mut body: Vec<Literal>) -> Axiom {
+        body.sort();
+        body.dedup();
+        Axiom { kind, action, body }
+    }
+
+    /// The head literal of a causal law.
+    pub fn head(&self) -> Option<&Literal> {
+        match &self.kind {
+            AxiomKind::Causal { head } => Some(head),
+            AxiomKind::Executability => None,
+        }
+    }
+
+    /// True for an executability condition.
+    pub fn is_executability(&self) -> bool {
+        self.kind == AxiomKind::Executability
+    }
+
+    /// The literals that fix variable names first: the action, then the head.
+    pub fn fixed_part(&self) -> Vec<&Literal> {
+        let mut out = vec![&self.action];
+        if let Some(h) = self.head() {
+            out.push(h);
+        }
+        out
+    }
+
+    /// Every variable of the axiom, sorted, once.
+    pub fn vars(&self) -> Vec<Var> {
+        let mut vs: Vec<Var> = self
+            .fixed_part()
+            .into_iter()
+            .chain(self.body.iter())
+            .flat_map(|l| l.vars().collect::<Vec<_>>())
+            .collect();
+        vs.sort();
+        vs.dedup();
+        vs
+    }
+
+    /// The axiom with its variables renamed.
+    pub fn rename(&self, map: &impl Fn(Var) -> Var) -> Axiom {
+        let kind = match &self.kind {
+            AxiomKind::Causal { head } => AxiomKind::Causal {
+                head: head.rename(map),
+            },
+            AxiomKind::Executability => AxiomKind::Executability,
+        };
+        Axiom::new(
+            kind,
+            self.action.rename(map),
+            self.body.iter().map(|l| l.rename(map)).collect(),
+        )
+    }
+
+    /// The canonical representative up to variable renaming: variables renumbered per sort in
+    /// order of first appearance in the action, the head, then the body literals in the order
+    /// that makes the renamed body smallest. Two axioms are equal up to renaming exactly when
+    /// their canonical forms are equal.
+    pub fn canonical(&self) -> Axiom {
+        let mut map: BTreeMap<Var, Var> = BTreeMap::new();
+        let mut next = [0u32; 2];
+        for lit in self.fixed_part() {
+            for v in lit.vars() {
+                assign(&mut map, &mut next, v);
+            }
+        }
+        let mut best: Option<Vec<Literal>> = None;
+        let remaining: Vec<&Literal> = self.body.iter().collect();
+        canonical_body(&remaining, &map, next, &mut Vec::new(), &mut best);
+        let body = best.unwrap_or_default();
+        let map_fixed = |v: Var| map[&v];
+        let kind = match &self.kind {
+            AxiomKind::Causal { head } => AxiomKind::Causal {
+                head: head.rename(&map_fixed),
+            },
+            AxiomKind::Executability => AxiomKind::Executability,
+        };
+        Axiom::new(kind, self.action.rename(&map_fixed), body)
+    }
+
+    /// AL_d text of the statement, without the final period.
+    pub fn to_ald(&self) -> String {
+        let body: Vec<String> = self.body.iter().map(Literal::to_ald).collect();
+        let cond = if body.is_empty() {
+            String::new()
+        } else {
+            format!(" if {}", body.join(", "))
+        };
+        match &self.kind {
+            AxiomKind::Causal { head } => {
+                format!("{} causes {}{cond}", self.action.to_ald(), head.to_ald())
+            }
+            AxiomKind::Executability => format!("impossible {}{cond}", self.action.to_ald()),
+        }
+    }
+}
+
+impl fmt::Display for Axiom {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.to_ald())
+    }
+}
+
+fn sort_slot(sort: Sort) -> usize {
+    match sort {
+        Sort::Robot => 0,
+        Sort::Object => 1,
+    }
+}
+
+fn assign(map: &mut BTreeMap<Var, Var>, next: &mut [u32; 2], v: Var) -> Var {
+    *map.entry(v).or_insert_with(|| {
+        next[sort_slot(v.sort)] += 1;
+        Var {
+            sort: v.sort,
+            index: next[sort_slot(v.sort)],
+        }
+    })
+}
+
+/// The literal with known variables renamed and unknown ones shown as index 0 (a wildcard that
+/// sorts before every real index).
+fn partial(lit: &Literal, map: &BTreeMap<Var, Var>) -> Literal {
+    lit.rename(&|v| {
+        map.get(&v).copied().unwrap_or(Var {
+            sort: v.sort,
+            index: 0,
+        })
+    })
+}
+
+/// Depth-first search for the body order whose renaming is smallest: at each step only the
+/// literals whose partial renaming is minimal are tried (the others cannot start the smallest
+/// sequence), so the search branches only on ties.
+fn canonical_body(
+    remaining: &[&Literal],
+    map: &BTreeMap<Var, Var>,
+    next: [u32; 2],
+    prefix: &mut Vec<Literal>,
+    best: &mut Option<Vec<Literal>>,
+) {
+    if remaining.is_empty() {
+        let mut body = prefix.clone();
+        body.sort();
+        if best.as_ref().is_none_or(|b| body < *b) {
+            *best = Some(body);
+        }
+        return;
+    }
+    let partials: Vec<Literal> = remaining.iter().map(|l| partial(l, map)).collect();
+    let min = partials.iter().min().expect("non-empty").clone();
+    for (i, lit) in remaining.iter().enumerate() {
+        if partials[i] != min {
+            continue;
+        }
+        let mut map2 = map.clone();
+        let mut next2 = next;
+        for v in lit.vars() {
+            assign(&mut map2, &mut next2, v);
+        }
+        let renamed = lit.rename(&|v| map2[&v]);
+        let rest: Vec<&Literal> = remaining
+            .iter()
+            .enumerate()
+            .filter(|&(j, _)| j != i)
+            .map(|(_, l)| *l)
+            .collect();
+        prefix.push(renamed);
+        canonical_body(&rest, &map2, next2, prefix, best);
+        prefix.pop();
+    }
+}
+
+/// Shorthand for tests and targets: the variable `O{i}`.
+pub fn o(i: u32) -> Term {
+    Term::Var(Var {
+        sort: Sort::Object,
+        index: i,
+    })
+}
+
+/// Shorthand for tests and targets: the variable `R{i}`.
+pub fn r(i: u32) -> Term {
+    Term::Var(Var {
+        sort: Sort::Robot,
+        index: i,
+    })
+}
+
+/// A lifted `relation(rel, a, b)`.
+pub fn rel(name: &str, a: Term, b: Term) -> Literal {
+    Literal::new(RELATION, vec![Term::constant(name), a, b])
+}
+
+/// A lifted `in_hand(robot, object)` with a sign.
+pub fn in_hand(positive: bool, robot: Term, object: Term) -> Literal {
+    Literal::new(IN_HAND, vec![robot, object]).with_sign(positive)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pickup() -> Literal {
+        Literal::new("pickup", vec![r(1), o(1)])
+    }
+
+    #[test]
+    fn rendering() {
+        let ax = Axiom::new(
+            AxiomKind::Executability,
+            pickup(),
+            vec![rel("below", o(1), o(2))],
+        );
+        assert_eq!(ax.to_ald(), "impossible pickup(R1, O1) if below(O1, O2)");
+        let law = Axiom::new(
+            AxiomKind::Causal {
+                head: in_hand(false, r(1), o(1)),
+            },
+            Literal::new("putdown", vec![r(1), o(1), o(2)]),
+            vec![in_hand(false, r(1), o(5))],
+        );
+        assert_eq!(
+            law.to_ald(),
+            "putdown(R1, O1, O2) causes -in_hand(R1, O1) if -in_hand(R1, O5)"
+        );
+    }
+
+    #[test]
+    fn canonical_up_to_renaming() {
+        // impossible pickup(R1, O1) if below(O1, O7), on(O7, O3)  ==  ... below(O1, O2), on(O2, O9)
+        let a = Axiom::new(
+            AxiomKind::Executability,
+            pickup(),
+            vec![rel("below", o(1), o(7)), rel("on", o(7), o(3))],
+        );
+        let b = Axiom::new(
+            AxiomKind::Executability,
+            pickup(),
+            vec![rel("on", o(2), o(9)), rel("below", o(1), o(2))],
+        );
+        assert_eq!(a.canonical(), b.canonical());
+        assert_eq!(
+            a.canonical().to_ald(),
+            "impossible pickup(R1, O1) if below(O1, O2), on(O2, O3)"
+        );
+        // The co-occurrence differs: on(O3, O2) is not a renaming of on(O2, O3) here.
+        let c = Axiom::new(
+            AxiomKind::Executability,
+            pickup(),
+            vec![rel("below", o(1), o(7)), rel("on", o(3), o(7))],
+        );
+        assert_ne!(a.canonical(), c.canonical());
+        // Action variables are not free to rename: in_hand(R1, O1) is not in_hand(R1, O2).
+        let d = Axiom::new(
+            AxiomKind::Executability,
+            pickup(),
+            vec![in_hand(true, r(1), o(1))],
+        );
+        let e = Axiom::new(
+            AxiomKind::Executability,
+            pickup(),
+            vec![in_hand(true, r(1), o(4))],
+        );
+        assert_ne!(d.canonical(), e.canonical());
+        // Ties between symmetric body literals: both orders give one form.
+        let f = Axiom::new(
+            AxiomKind::Executability,
+            pickup(),
+            vec![
+                rel("left", o(1), o(5)),
+                rel("left", o(1), o(4)),
+                rel("on", o(4), o(5)),
+            ],
+        );
+        let g = Axiom::new(
+            AxiomKind::Executability,
+            pickup(),
+            vec![
+                rel("left", o(1), o(4)),
+                rel("left", o(1), o(5)),
+                rel("on", o(5), o(4)),
+            ],
+        );
+        assert_eq!(f.canonical(), g.canonical());
+    }
+}
