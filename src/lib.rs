@@ -11,5 +11,6 @@ pub mod ground;
 #[cfg(feature = "sim")]
 pub mod sim;
 pub mod solve;
+pub mod action;
 pub mod syntax;
 pub mod learn;

@@ -3,7 +3,7 @@
 use lucent::ground::program::{
     Body, ExternalValue, GroundProgram, HeadKind, Minimize, Output, Rule,
 };
-use lucent::solve::{Config, EnumMode, OptMode, Outcome, Solver};
+use lucent::solve::{Config, EnumMode, OptMode, Outcome, SolveError, Solver};
 
 /// A program over atoms named a, b, c, ... (atom i is the i-th letter), all shown.
 fn program(n: u32, rules: Vec<Rule>) -> GroundProgram {
@@ -48,14 +48,9 @@ fn atom_sets(s: &mut Solver) -> Vec<Vec<u32>> {
 }
 
 /// A solver for `p` that enumerates every answer set and keeps what it learnt between calls, so
-/// rules may be added after a solve.
+/// that later steps may be added after a solve.
 fn incremental_solver(p: &GroundProgram) -> Solver {
-    let cfg = Config {
-        models: 0,
-        incremental: true,
-        ..Config::default()
-    };
-    Solver::new(p, cfg)
+    Solver::new(p, Config::all_models())
 }
 
 fn sets(x: &[&[&str]]) -> Vec<Vec<String>> {
@@ -337,36 +332,68 @@ fn incremental_constraint_keeps_solver() {
 }
 
 #[test]
-fn incremental_rules_for_existing_atoms() {
-    // a :- not b.  then add b.  Answer sets {a}, then {b}.
-    let p = program(2, vec![Rule::normal(&[1], &[-2])]);
+fn a_later_step_defines_an_external_atom() {
+    // a :- not b.  #external b.  Answer set {a} (b is false by default). Then add b.
+    // Answer set {b}.
+    let mut p = program(2, vec![Rule::normal(&[1], &[-2])]);
+    p.externals = vec![(2, ExternalValue::False)];
     let mut s = incremental_solver(&p);
     assert_eq!(s.solve().models[0].symbols, vec!["a"]);
     s.add_rules(&[Rule::normal(&[2], &[])]).unwrap();
     let r = s.solve();
     assert_eq!(r.models.len(), 1);
     assert_eq!(r.models[0].symbols, vec!["b"]);
-    // Without the incremental flag, the same change is refused.
+    // Without the external statement b was complete (false): the same step is refused, and
+    // refused again after a step that defined a.
+    let p = program(2, vec![Rule::normal(&[1], &[-2])]);
     let mut s = Solver::new(&p, Config::all_models());
-    assert!(s.add_rules(&[Rule::normal(&[2], &[])]).is_err());
+    assert_eq!(
+        s.add_rules(&[Rule::normal(&[2], &[])]),
+        Err(SolveError::AtomAlreadyDefined(2))
+    );
+    assert_eq!(
+        s.add_rules(&[Rule::normal(&[1], &[])]),
+        Err(SolveError::AtomAlreadyDefined(1))
+    );
+    assert_eq!(atom_sets(&mut s), vec![vec![1]]);
 }
 
 #[test]
-fn incremental_rules_give_a_loop_an_external_support() {
-    // {c}. a :- b. b :- a.  Answer sets {} and {c}: the loop {a, b} is unfounded, so the solver
-    // learns that a and b are false. Then add a :- c.  Answer sets {} and {a, b, c}: what was
-    // learnt about the loop must not outlive the step (derived by hand from the reduct).
-    let p = program(
-        3,
+fn a_later_step_gives_a_loop_an_external_support() {
+    // {c}. a :- b. b :- a. a :- d.  #external d.  With d false, the loop {a, b} is unfounded,
+    // so the solver learns that a and b need d: answer sets {} and {c}. Then add d :- c.
+    // Answer sets {} and {a, b, c, d}: the loop nogood (a -> d) stays valid, and the loop now
+    // has the support d (derived by hand from the reduct).
+    let mut p = program(
+        4,
         vec![
             Rule::choice(&[3], &[]),
             Rule::normal(&[1], &[2]),
             Rule::normal(&[2], &[1]),
+            Rule::normal(&[1], &[4]),
         ],
     );
+    p.externals = vec![(4, ExternalValue::False)];
     let mut s = incremental_solver(&p);
     assert_eq!(atom_sets(&mut s), vec![vec![], vec![3]]);
-    s.add_rules(&[Rule::normal(&[1], &[3])]).unwrap();
+    s.add_rules(&[Rule::normal(&[4], &[3])]).unwrap();
+    assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2, 3, 4]]);
+}
+
+#[test]
+fn a_later_step_closes_a_positive_loop_through_an_external() {
+    // Step 1: a :- b.  {c}.  #external b.  With b free: {}, {c}, {a, b}, {a, b, c}.
+    // Step 2: b :- a.  b :- c.  Now {a, b} is a loop whose only external support is c:
+    // answer sets {} and {a, b, c}; {a, b} alone is unfounded.
+    let mut p = program(3, vec![Rule::normal(&[1], &[2]), Rule::choice(&[3], &[])]);
+    p.externals = vec![(2, ExternalValue::Free)];
+    let mut s = incremental_solver(&p);
+    assert_eq!(
+        atom_sets(&mut s),
+        vec![vec![], vec![1, 2], vec![1, 2, 3], vec![3]]
+    );
+    s.add_rules(&[Rule::normal(&[2], &[1]), Rule::normal(&[2], &[3])])
+        .unwrap();
     assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2, 3]]);
 }
 
@@ -445,42 +472,35 @@ fn cr_rules_are_applied_minimally() {
 }
 
 #[test]
-fn incremental_step_makes_a_program_non_head_cycle_free() {
-    // The shrunk case of the property test `loop_programs_in_two_steps_match_brute_force`.
-    // Step 1: {b}. {c} :- c. b | c :- b. a | b :- c.
-    //   No positive cycle through two head atoms of one disjunction, so the program is
-    //   head-cycle-free. Reducts by hand: {b} is an answer set (b by choice, then b | c is
-    //   satisfied by b; c stays out, so a | b :- c is inactive); {} is one (b not chosen, c
-    //   only by its own choice loop). {b, c}: c's only founded support would be b | c with b
-    //   true, which a minimal model of the reduct does not need, so no. Answer sets {} and {b}.
-    // Step 2 adds {a} :- a. and c :- #sum{2 : b} >= 1 (that is, c :- b).
-    //   Now b and c are in one positive cycle (b | c :- b, c :- b, a | b :- c) with the
-    //   disjunction b | c, so the program is not head-cycle-free. With b not chosen, b can
-    //   only come from a | b :- c and c from b: {} is the answer set. With b chosen, c
-    //   follows, then a | b :- c is satisfied by b: {b, c} is an answer set. Answer sets
-    //   {} and {b, c}.
-    let rules = [
-        Rule::choice(&[2], &[]),
-        Rule::choice(&[3], &[3]),
-        Rule::normal(&[2, 3], &[2]),
-        Rule::normal(&[1, 2], &[3]),
-        Rule::choice(&[1], &[1]),
-        Rule {
-            head_kind: HeadKind::Disjunction,
-            head: vec![3],
-            body: Body::Weight {
-                lower: 1,
-                lits: vec![(2, 2)],
-            },
-        },
-    ];
-    let mut p = GroundProgram::new();
-    p.num_atoms = 4;
-    p.rules = rules[..4].to_vec().into();
+fn a_later_step_merges_components_of_a_disjunction() {
+    // Step 1: {a}. b | c :- a.  b :- d.  c :- e.  #external d. #external e. (both free)
+    //   No positive cycle: head-cycle-free.
+    // Step 2: d :- c.  e :- b.  Now b -> d -> c -> e -> b is a positive cycle holding both
+    //   atoms of the disjunction b | c: the program is not head-cycle-free any more (the
+    //   unfounded-set propagator falls back to rule bodies and candidates get the minimality
+    //   check). Any one of b, c, d, e derives the others, and b | c :- a needs one: answer sets
+    //   {} and {a, b, c, d, e}, as the brute-force reference says for the whole program.
+    let mut p = program(
+        5,
+        vec![
+            Rule::choice(&[1], &[]),
+            Rule::normal(&[2, 3], &[1]),
+            Rule::normal(&[2], &[4]),
+            Rule::normal(&[3], &[5]),
+        ],
+    );
+    p.externals = vec![(4, ExternalValue::Free), (5, ExternalValue::Free)];
     let mut s = incremental_solver(&p);
-    assert_eq!(atom_sets(&mut s), vec![vec![], vec![2]]);
-    s.add_rules(&rules[4..]).unwrap();
-    assert_eq!(atom_sets(&mut s), vec![vec![], vec![2, 3]]);
+    assert_eq!(atom_sets(&mut s), lucent::solve::brute::stable_models(&p));
+    let step2 = [Rule::normal(&[4], &[3]), Rule::normal(&[5], &[2])];
+    s.add_rules(&step2).unwrap();
+    let mut whole = p.clone();
+    whole.rules.push(step2[0].clone());
+    whole.rules.push(step2[1].clone());
+    whole.externals.clear();
+    let want = lucent::solve::brute::stable_models(&whole);
+    assert_eq!(want, vec![vec![], vec![1, 2, 3, 4, 5]]);
+    assert_eq!(atom_sets(&mut s), want);
 }
 
 #[test]
@@ -491,22 +511,11 @@ fn a_rule_for_an_external_atom_makes_it_ordinary() {
     // given at once (where the external statement on a defined atom is ignored, as clasp
     // does). With `#external a. [true]` the same holds: a is no longer assumed.
     for value in [ExternalValue::Free, ExternalValue::True] {
-        for incremental in [false, true] {
-            let mut p = program(2, vec![Rule::choice(&[2], &[])]);
-            p.externals = vec![(1, value)];
-            let cfg = Config {
-                models: 0,
-                incremental,
-                ..Config::default()
-            };
-            let mut s = Solver::new(&p, cfg);
-            s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
-            assert_eq!(
-                atom_sets(&mut s),
-                vec![vec![], vec![1, 2]],
-                "{value:?}, {incremental}"
-            );
-        }
+        let mut p = program(2, vec![Rule::choice(&[2], &[])]);
+        p.externals = vec![(1, value)];
+        let mut s = Solver::new(&p, Config::all_models());
+        s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
+        assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2]], "{value:?}");
     }
 }
 

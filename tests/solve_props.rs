@@ -3,9 +3,7 @@
 //! statements and CR rules. Every model the solver reports must also pass the independent
 //! stable-model checker.
 
-use lucent::ground::program::{
-    Body, CrRule, ExternalValue, GroundProgram, HeadKind, Minimize, Prefer, Rule,
-};
+use lucent::ground::program::{Body, CrRule, GroundProgram, HeadKind, Minimize, Prefer, Rule};
 use lucent::solve::brute::{self, BruteConfig};
 use lucent::solve::check;
 use lucent::solve::{Config, CrMode, OptMode, Solver};
@@ -306,95 +304,6 @@ proptest! {
             got.sort();
             let want = models_under(&all, &assumptions);
             prop_assert_eq!(got, want, "assumptions {:?}", assumptions);
-        }
-    }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig { cases: cases(300), ..ProptestConfig::default() })]
-
-    /// Incremental solving: the rules arrive in two steps (the second may define atoms of the
-    /// first again), and each step's answer sets must be those of the rules so far.
-    #[test]
-    fn loop_programs_in_two_steps_match_brute_force(p in loop_program_strategy(), cut in any::<prop::sample::Index>()) {
-        let k = cut.index(p.rules.len() + 1);
-        let mut first = p.clone();
-        first.rules.truncate(k);
-        let cfg = Config { models: 0, opt_mode: OptMode::Ignore, incremental: true, ..Config::default() };
-        let mut s = Solver::new(&first, cfg);
-        for (step, prog) in [(1, &first), (2, &p)] {
-            if step == 2 {
-                s.add_rules(&p.rules.to_vec()[k..]).unwrap();
-            }
-            let r = s.solve();
-            prop_assert!(r.exhausted);
-            let mut got: Vec<Vec<u32>> = r.models.iter().map(|m| m.atoms.clone()).collect();
-            got.sort();
-            let want: Vec<Vec<u32>> = brute_atoms(prog, BruteConfig { optimize: false, ..BruteConfig::default() })
-                .into_iter()
-                .map(|(m, _)| m)
-                .collect();
-            prop_assert_eq!(got, want, "step {}", step);
-        }
-    }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig { cases: cases(200), ..ProptestConfig::default() })]
-
-    /// Three steps of loop programs or general ones (weight bodies with negative literals,
-    /// disjunctions, constraints) with a few external statements: the guards of two earlier
-    /// steps retire one after the other, a rule added for an external atom makes it an
-    /// ordinary atom (as `check::external_values` reads the whole program), and each step is
-    /// solved under assumptions before it is solved plainly.
-    #[test]
-    fn programs_in_three_steps_match_brute_force(
-        p in prop_oneof![loop_program_strategy(), program_strategy()],
-        cuts in (any::<prop::sample::Index>(), any::<prop::sample::Index>()),
-        assumed in prop::collection::vec((1u32..13, any::<bool>()), 0..2),
-        externals in prop::collection::vec((1u32..13, 0u8..4), 0..3),
-    ) {
-        let mut p = p;
-        p.externals = externals
-            .into_iter()
-            .filter(|&(x, _)| x <= p.num_atoms)
-            .map(|(x, v)| (x, [ExternalValue::Free, ExternalValue::True, ExternalValue::False, ExternalValue::Release][v as usize]))
-            .collect();
-        let n = p.rules.len();
-        let (mut a, mut b) = (cuts.0.index(n + 1), cuts.1.index(n + 1));
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        let assumptions: Vec<i32> = assumed
-            .into_iter()
-            .filter(|&(x, _)| x <= p.num_atoms)
-            .map(|(x, pos)| if pos { x as i32 } else { -(x as i32) })
-            .collect();
-        let mut first = p.clone();
-        first.rules.truncate(a);
-        let cfg = Config { models: 0, opt_mode: OptMode::Ignore, incremental: true, ..Config::default() };
-        let mut s = Solver::new(&first, cfg);
-        for (step, end) in [(1, a), (2, b), (3, n)] {
-            if step == 2 {
-                s.add_rules(&p.rules.to_vec()[a..b]).unwrap();
-            } else if step == 3 {
-                s.add_rules(&p.rules.to_vec()[b..]).unwrap();
-            }
-            let mut prog = p.clone();
-            prog.rules.truncate(end);
-            let all = brute_atoms(&prog, BruteConfig { optimize: false, ..BruteConfig::default() });
-            let r = s.solve_with(&assumptions);
-            prop_assert!(r.exhausted);
-            let mut got: Vec<Vec<u32>> = r.models.iter().map(|m| m.atoms.clone()).collect();
-            got.sort();
-            let want = models_under(&all, &assumptions);
-            prop_assert_eq!(got, want, "step {} under {:?}", step, assumptions);
-            let r = s.solve();
-            prop_assert!(r.exhausted);
-            let mut got: Vec<Vec<u32>> = r.models.iter().map(|m| m.atoms.clone()).collect();
-            got.sort();
-            let want: Vec<Vec<u32>> = all.into_iter().map(|(m, _)| m).collect();
-            prop_assert_eq!(got, want, "step {}", step);
         }
     }
 }

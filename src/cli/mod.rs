@@ -10,6 +10,7 @@
 
 #[cfg(feature = "sim")]
 pub mod sim;
+pub mod action;
 pub mod demo;
 pub mod input;
 pub mod options;
@@ -82,6 +83,7 @@ pub fn run(args: &[String], stdin: &mut dyn Read, out: &mut dyn Write, err: &mut
 fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     match args.first().map(String::as_str) {
         Some("demo") => return demo::run(&args[1..], io.out, io.err),
+        Some("translate") => return action::run_translate(&args[1..], io.out, io.err),
         #[cfg(feature = "sim")]
         Some("sim") => return Ok(sim::run_with(&args[1..], io.out, io.err)),
         #[cfg(not(feature = "sim"))]
@@ -177,6 +179,19 @@ fn read_and_parse(
     diags.extend(load_diags);
     let mut programs = Vec::new();
     for input in &loaded {
+        if input.name.ends_with(".ald") {
+            // AL_d: translated to a CR-Prolog syntax tree, then solved like any program.
+            if let Some(t) = action::translate_input(
+                &mut sources,
+                input.file,
+                options.profile.as_deref(),
+                &options.consts,
+                diags,
+            ) {
+                programs.push(t.program);
+            }
+            continue;
+        }
         let text = &sources.get(input.file).text;
         let dialect = dialect_of(options, &input.name, text);
         let parse = crate::syntax::parse(input.file, text, dialect);

@@ -107,11 +107,9 @@ pub struct Config {
     /// Merge atoms equivalent to a literal or to a rule body by their completion before search
     /// (clasp `--eq`, on in all of clasp's configurations; see `translate::equivalences`). On
     /// by default: over the benchmark pairs it lowers conflicts and CPU time (ARCHITECTURE.md,
-    /// "Search settings"). Ignored with `incremental`, whose rules may still change.
+    /// "Search settings"). Atoms that a later step may still close a positive cycle through
+    /// (they depend on an external atom) are not merged.
     pub eq: bool,
-    /// Keep the solver ready for `add_rules` that give new rules to existing atoms; costs one
-    /// assumption per step (see `Solver::add_rules`).
-    pub incremental: bool,
     /// Check every model with an independent stable-model test before reporting it (debug aid).
     pub check_models: bool,
     /// Number of portfolio threads (`--parallel-mode=N`); 1 is sequential.
@@ -213,7 +211,6 @@ impl Default for Config {
             restart_blocking: true,
             conflict_limit: None,
             eq: true,
-            incremental: false,
             check_models: false,
             threads: 1,
         }

@@ -4,7 +4,7 @@
 //! weight constraints over solver variables (Clark completion with body variables);
 //! `engine` is a CDCL core (two watched literals, first-UIP learning, VSIDS, restarts) with
 //! `unfounded`-set propagation for non-tight programs; `solver` drives it for enumeration,
-//! optimization, consequences, CR-Prolog semantics, limits, incremental rules and the portfolio,
+//! optimization, consequences, CR-Prolog semantics, limits, multi-shot steps and the portfolio,
 //! and produces a `SolveResult`. `lit` holds the literal encoding, `config` and `result` the
 //! caller-facing types; `check` and `brute` are independent references for tests;
 //! `fuzzing` is the body of the aspif fuzz target.

@@ -1,8 +1,17 @@
 //! The solver's public face: enumeration, projection, brave and cautious consequences,
 //! lexicographic branch-and-bound optimization, CR-Prolog semantics, assumptions, limits and
-//! incremental rule addition, all driving one `Engine` so learnt clauses survive between calls.
+//! multi-shot solving (`add_program`, external atoms), all driving one `Engine` so learnt
+//! clauses survive between calls.
 //!
 //! Invariants:
+//! - Multi-shot model (clingo's): an atom is complete once a step gave it rules, or mentioned it
+//!   without declaring it external, or released it; only external atoms (declared, not
+//!   released, without rules) may get rules in a later step, all in that one step. Completion
+//!   clauses and loop nogoods therefore hold in every later step and carry no step guard. The
+//!   values of externals (true, false) are assumptions of each call; free ones are unconstrained.
+//! - A step's work is proportional to the step, plus the unfounded-set structures when it
+//!   closes positive cycles (`Translation::update_cycles`): a new cycle goes through an atom
+//!   the step defines.
 //! - Constraints that hold for one call only (blocking clauses, cost bounds, CR bounds) carry a
 //!   guard literal that is assumed during the call and fixed false afterwards, so later calls
 //!   are unaffected while learnt clauses stay valid (they mention the guard when they used it).
@@ -11,7 +20,7 @@
 //!   for CR programs (where answer sets are compared on their non-CR atoms).
 //! - For non-head-cycle-free programs every candidate is checked to be a minimal model of its
 //!   reduct (Gelfond-Lifschitz) with a fresh engine before it is reported; failed candidates are
-//!   blocked for the rest of the incremental step (permanently without `Config::incremental`).
+//!   blocked for good (later steps cannot make them minimal: see `next`).
 //! - Every auxiliary variable (bodies, shifted supports, cost-bound literals) is a function of
 //!   the atoms, so decision-based blocking never reports one answer set twice.
 //! - Edge directives are acyclicity constraints, checked on each total assignment: a cycle of
@@ -25,16 +34,24 @@ use super::engine::{Engine, Restarts, SearchResult};
 use super::lit::Lit;
 use super::result::{Model, Outcome, SolveResult, Stats, StopReason};
 use super::translate::{max_atom, Translation};
-use crate::ground::program::{BodyRef, GroundProgram, HeadKind, Rule};
+use crate::ground::program::{BodyRef, ExternalValue, GroundProgram, HeadKind, Rule};
 use hashbrown::HashSet;
 use std::time::Instant;
 
-/// Errors of the incremental interface.
+/// Errors of the multi-shot interface (`Solver::add_program` and the external atoms).
 #[derive(Debug, thiserror::Error, PartialEq, Eq)]
 pub enum SolveError {
-    /// `add_rules` gave a rule to an atom that was already defined, without `Config::incremental`.
-    #[error("atom {0} already has a completion; create the solver with `incremental: true` to add rules for it")]
+    /// A rule for an atom that an earlier step completed: it had rules, or it was mentioned
+    /// without being external (so it is false for good), or it was released. As in clingo, only
+    /// external atoms may get rules in a later step.
+    #[error(
+        "atom {0} was completed in an earlier step; only an external atom can get rules later"
+    )]
     AtomAlreadyDefined(u32),
+    /// `assign_external` or `release_external` on an atom that is not external (unknown,
+    /// defined by rules, or released).
+    #[error("atom {0} is not an external atom")]
+    NotExternal(u32),
 }
 
 /// Result of looking for the next answer set.
@@ -61,9 +78,6 @@ pub struct Solver {
     cr_lits: Vec<Lit>,
     /// Per atom: whether it is a CR application atom.
     is_cr: Vec<bool>,
-    /// Guard of the incremental step: completion clauses of the current step contain its
-    /// negation; `None` without `Config::incremental`.
-    step_guard: Option<Lit>,
     /// Minimality checks done for non-HCF programs.
     minimality_checks: u64,
     /// Costs of the best model of the last branch-and-bound run.
@@ -150,14 +164,13 @@ impl Solver {
             }
             prog.externals.retain(|&(a, _)| !defined[a as usize]);
         }
-        let mut tr;
-        let mut step_guard = None;
-        if config.incremental {
-            tr = Translation::default();
-            tr = Self::build_guarded(&prog, &mut engine, &mut tr, &mut step_guard);
-        } else {
-            tr = Translation::build_with(&prog, &mut engine, config.eq);
-        }
+        let tr = Translation::build_with(&prog, &mut engine, config.eq);
+        // One entry per external atom, with its value (the last statement decided it).
+        prog.externals = tr
+            .ext_atoms
+            .iter()
+            .map(|&a| (a, tr.ext_value[a as usize]))
+            .collect();
         let optimizing = !prog.minimize.is_empty() && config.opt_mode != OptMode::Ignore;
         if config.profile == SearchProfile::Auto && engine.has_unfounded() && !optimizing {
             // Non-tight decision problems: clasp's `tweety` search settings (`SearchProfile`).
@@ -182,43 +195,10 @@ impl Solver {
             tr,
             cr_lits,
             is_cr,
-            step_guard,
             minimality_checks: 0,
             best: None,
             bound_weights: Vec::new(),
         }
-    }
-
-    /// Incremental build: like `Translation::build`, but completion clauses are guarded.
-    fn build_guarded(
-        prog: &GroundProgram,
-        engine: &mut Engine,
-        _old: &mut Translation,
-        guard: &mut Option<Lit>,
-    ) -> Translation {
-        // Build without completion by translating a program whose atoms are all free, then set
-        // the real external values and add guarded completion clauses (external statements
-        // with value false get a guarded completion too, so that a later step may define them).
-        let mut open = prog.clone();
-        open.externals = (1..=prog.num_atoms)
-            .map(|a| (a, crate::ground::program::ExternalValue::Free))
-            .collect();
-        let mut tr = Translation::build(&open, engine);
-        tr.set_externals(prog);
-        let g = engine.new_var().positive();
-        engine.set_decidable(g.var(), false);
-        let mut out = tr;
-        for a in 1..=prog.num_atoms as usize {
-            if !out.free[a] {
-                let mut c = vec![!out.atom_lit[a], !g];
-                c.extend(out.supports[a].iter().map(|&(s, _)| s));
-                engine.add_clause(&c);
-            }
-        }
-        out.loop_guard = Some(g);
-        out.install_unfounded(prog, engine);
-        *guard = Some(g);
-        out
     }
 
     /// The ground program as extended so far.
@@ -231,77 +211,198 @@ impl Solver {
         &mut self.config
     }
 
-    /// Adds rules between calls, keeping learnt clauses. Heads may be new atoms (numbered above
-    /// the current `num_atoms`) or, with `Config::incremental`, existing atoms. Output
-    /// statements for new atoms can be added with `add_outputs`.
+    /// Adds rules between calls, keeping learnt clauses: `add_program` with a delta made of
+    /// `rules` alone.
     pub fn add_rules(&mut self, rules: &[Rule]) -> Result<(), SolveError> {
+        let mut delta = GroundProgram::new();
+        for r in rules {
+            delta.rules.push_ref(r.as_ref());
+        }
+        self.add_program(&delta)
+    }
+
+    /// Adds one step of a multi-shot program (clingo's model), keeping learnt clauses.
+    ///
+    /// Atoms are numbered as in the programs given before (new atoms above the current
+    /// `num_atoms`). Rules may define new atoms and external atoms; an atom that already had
+    /// rules, or was mentioned without being external, or was released, is complete and a rule
+    /// for it is an error (`SolveError::AtomAlreadyDefined`; nothing is added then). New atoms
+    /// without rules and not external are false. External statements declare new externals or
+    /// change the value of existing ones (`Release`: false for good); on an atom that gets rules
+    /// in the same delta, or that is complete, they are ignored, as clasp does. Minimize
+    /// statements (new priority levels or more literals for a level), CR rules (their
+    /// application atoms count in the cardinality-minimal semantics with those of earlier
+    /// steps), preferences, output statements, projections, edges, assumptions and origins are
+    /// added to those of the earlier steps. The work is proportional to the delta, plus the
+    /// unfounded-set structures when the delta closes positive cycles (see
+    /// `Translation::update_cycles`).
+    pub fn add_program(&mut self, delta: &GroundProgram) -> Result<(), SolveError> {
         let old_n = self.prog.num_atoms;
-        let mut grown = self.prog.clone();
-        grown.rules.extend(rules);
-        let new_n = max_atom(&grown);
-        if self.step_guard.is_none() {
-            for r in rules {
-                if let Some(&h) = r
-                    .head
-                    .iter()
-                    .find(|&&h| h <= old_n && !self.tr.free[h as usize])
-                {
-                    return Err(SolveError::AtomAlreadyDefined(h));
-                }
+        for r in delta.rules.iter() {
+            if let Some(&h) = r
+                .head
+                .iter()
+                .find(|&&h| h <= old_n && !self.tr.free[h as usize])
+            {
+                return Err(SolveError::AtomAlreadyDefined(h));
             }
         }
+        let new_n = max_atom(delta).max(old_n);
         self.engine.backtrack(0);
-        for _ in old_n..new_n {
-            let v = self.engine.new_var();
-            self.tr.atom_lit.push(v.positive());
-            self.tr.supports.push(Default::default());
-            self.tr.free.push(false);
-            self.is_cr.push(false);
+        self.tr.grow_atoms(&mut self.engine, new_n as usize);
+        self.is_cr.resize(new_n as usize + 1, false);
+        self.prog.num_atoms = new_n;
+        // The atoms this delta defines: heads of its rules.
+        let mut defined: Vec<u32> = delta
+            .rules
+            .iter()
+            .flat_map(|r| r.head.iter().copied())
+            .collect();
+        defined.sort_unstable();
+        defined.dedup();
+        let pos_occ_before = defined
+            .iter()
+            .any(|&a| a <= old_n && self.tr.pos_occ[a as usize]);
+        // External statements, in order; the last one on an atom decides.
+        let mut completed: Vec<u32> = Vec::new();
+        for &(a, v) in &delta.externals {
+            let open = a > old_n || self.tr.free[a as usize];
+            if !open || defined.binary_search(&a).is_ok() {
+                continue;
+            }
+            if v == ExternalValue::Release {
+                if self.tr.free[a as usize] {
+                    completed.push(a);
+                }
+                self.tr.set_external(a, v);
+            } else {
+                self.tr.set_external(a, v);
+            }
+        }
+        // Defined atoms stop being external.
+        for &a in &defined {
+            self.tr.set_external(a, ExternalValue::Release);
         }
         let first = self.prog.rules.len();
-        self.prog = grown;
-        self.prog.num_atoms = new_n;
-        for (k, r) in rules.iter().enumerate() {
-            self.tr.add_rule(&mut self.engine, first + k, r.as_ref());
+        for (k, r) in delta.rules.iter().enumerate() {
+            self.prog.rules.push_ref(r);
+            self.tr.add_rule(&mut self.engine, first + k, r);
         }
-        // A rule for an external atom makes it an ordinary atom, defined by its rules (clingo:
-        // an atom is external until it is released or defined by a rule; `Solver::new` drops
-        // such external statements the same way).
-        let defined: HashSet<u32> = rules.iter().flat_map(|r| r.head.iter().copied()).collect();
-        let was_free: Vec<usize> = (1..=old_n as usize)
-            .filter(|&a| self.tr.free[a] && defined.contains(&(a as u32)))
-            .collect();
-        if !was_free.is_empty() {
-            self.prog.externals.retain(|(a, _)| !defined.contains(a));
-            self.tr.set_externals(&self.prog);
+        if !delta.origins.is_empty() || !self.prog.origins.is_empty() {
+            self.prog.origins.resize(first, Default::default());
+            self.prog.origins.extend(delta.origins.iter().cloned());
+            self.prog
+                .origins
+                .resize(self.prog.rules.len(), Default::default());
         }
-        match self.step_guard {
-            None => {
-                let fresh = old_n as usize + 1..=new_n as usize;
-                for a in was_free.into_iter().chain(fresh) {
-                    self.tr.complete(&mut self.engine, a);
-                }
-            }
-            Some(old) => {
-                // Retire the old step's completion and re-add every completion clause under a
-                // fresh guard.
-                self.engine.add_clause(&[!old]);
-                let g = self.engine.new_var().positive();
-                self.engine.set_decidable(g.var(), false);
-                for a in 1..=new_n as usize {
-                    if !self.tr.free[a] {
-                        let mut c = vec![!self.tr.atom_lit[a], !g];
-                        c.extend(self.tr.supports[a].iter().map(|&(s, _)| s));
-                        self.engine.add_clause(&c);
-                    }
-                }
-                self.step_guard = Some(g);
+        // Completion: the atoms defined now, the released externals, and the new atoms that
+        // are not external (false when they have no rule).
+        completed.extend_from_slice(&defined);
+        completed.extend((old_n + 1..=new_n).filter(|&a| !self.tr.free[a as usize]));
+        completed.sort_unstable();
+        completed.dedup();
+        for &a in &completed {
+            if !self.tr.free[a as usize] {
+                self.tr.complete(&mut self.engine, a as usize);
             }
         }
-        let prog = self.prog.clone();
-        self.tr.loop_guard = self.step_guard;
-        self.tr.install_unfounded(&prog, &mut self.engine);
+        // The program's record of its externals: one entry per atom still external.
+        let free = &self.tr.free;
+        self.prog.externals.retain(|&(a, _)| free[a as usize]);
+        for &(a, _) in &delta.externals {
+            if self.tr.free[a as usize] && !self.prog.externals.iter().any(|&(b, _)| b == a) {
+                self.prog.externals.push((a, self.tr.ext_value[a as usize]));
+            }
+        }
+        self.sync_external_records();
+        for &l in &delta.assumptions {
+            let x = self.tr.lit(l);
+            self.tr.prog_assumptions.push(x);
+            self.prog.assumptions.push(l);
+        }
+        self.tr.refresh_assumptions();
+        // Outputs, minimize, CR rules and the rest.
+        self.add_outputs(&delta.outputs);
+        for m in &delta.minimize {
+            let lits: Vec<(Lit, i64)> = m.lits.iter().map(|&(l, w)| (self.tr.lit(l), w)).collect();
+            match self
+                .tr
+                .minimize
+                .iter()
+                .position(|(pr, _)| *pr <= m.priority)
+            {
+                Some(k) if self.tr.minimize[k].0 == m.priority => {
+                    self.tr.minimize[k].1.extend(lits)
+                }
+                Some(k) => self.tr.minimize.insert(k, (m.priority, lits)),
+                None => self.tr.minimize.push((m.priority, lits)),
+            }
+            self.prog.minimize.push(m.clone());
+        }
+        for c in &delta.cr_rules {
+            self.cr_lits.push(self.tr.atom_lit[c.appl as usize]);
+            self.is_cr[c.appl as usize] = true;
+            self.prog.cr_rules.push(c.clone());
+        }
+        self.prog.prefers.extend(delta.prefers.iter().cloned());
+        self.prog
+            .projections
+            .extend(delta.projections.iter().copied());
+        self.prog.edges.extend(delta.edges.iter().cloned());
+        self.prog
+            .heuristics
+            .extend(delta.heuristics.iter().cloned());
+        self.prog.theory.extend(delta.theory.iter().cloned());
+        self.tr.update_cycles(
+            &self.prog,
+            &mut self.engine,
+            &defined,
+            first,
+            pos_occ_before,
+        );
         Ok(())
+    }
+
+    /// Keeps the values in `prog.externals` equal to the solver's.
+    fn sync_external_records(&mut self) {
+        for e in self.prog.externals.iter_mut() {
+            e.1 = self.tr.ext_value[e.0 as usize];
+        }
+    }
+
+    /// Sets the value of an external atom for the following calls (`Free`, `True`, `False`;
+    /// `Release` is `release_external`).
+    pub fn assign_external(&mut self, atom: u32, value: ExternalValue) -> Result<(), SolveError> {
+        if value == ExternalValue::Release {
+            return self.release_external(atom);
+        }
+        if atom > self.prog.num_atoms || !self.tr.free[atom as usize] {
+            return Err(SolveError::NotExternal(atom));
+        }
+        self.tr.set_external(atom, value);
+        if let Some(e) = self.prog.externals.iter_mut().find(|e| e.0 == atom) {
+            e.1 = value;
+        }
+        self.tr.refresh_assumptions();
+        Ok(())
+    }
+
+    /// Releases an external atom: it is false from now on and can get no rules.
+    pub fn release_external(&mut self, atom: u32) -> Result<(), SolveError> {
+        if atom > self.prog.num_atoms || !self.tr.free[atom as usize] {
+            return Err(SolveError::NotExternal(atom));
+        }
+        self.engine.backtrack(0);
+        self.tr.set_external(atom, ExternalValue::Release);
+        self.tr.complete(&mut self.engine, atom as usize);
+        self.prog.externals.retain(|e| e.0 != atom);
+        self.tr.refresh_assumptions();
+        Ok(())
+    }
+
+    /// Whether `atom` is currently an external atom (declared, not released, without rules).
+    pub fn is_external(&self, atom: u32) -> bool {
+        atom <= self.prog.num_atoms && self.tr.free[atom as usize]
     }
 
     /// Adds output statements (e.g. for atoms introduced by `add_rules`).
@@ -363,9 +464,6 @@ impl Solver {
         self.engine.deadline = self.config.deadline;
         self.engine.interrupt = self.config.interrupt.clone();
         let mut assume: Vec<Lit> = self.tr.assumptions.clone();
-        if let Some(g) = self.step_guard {
-            assume.push(g);
-        }
         assume.extend(assumptions.iter().map(|&l| self.lit_of(l)));
         let call_guard = self.new_guard();
         assume.push(call_guard);
@@ -493,13 +591,11 @@ impl Solver {
                             return Next::Stopped;
                         }
                     }
-                    // Not a minimal model of its reduct: exclude this atom assignment for as
-                    // long as the rules stay the same. Rules for new atoms cannot make it
-                    // minimal (a smaller model extends by the same new atoms), but rules added
-                    // to existing atoms in an incremental step can (a rule `c :- b` makes
-                    // `{b, c}` minimal where `b | c :- b` alone did not), so the clause carries
-                    // the step guard.
-                    let mut block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
+                    // Not a minimal model of its reduct: exclude this atom assignment for good.
+                    // Later steps only give rules to new atoms and to externals, whose values
+                    // the check keeps fixed, so a smaller model of the reduct extends by the
+                    // same new atoms and the assignment never becomes minimal.
+                    let block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
                         .map(|a| {
                             let l = self.tr.atom_lit[a];
                             if self.engine.value(l) == Some(true) {
@@ -509,7 +605,6 @@ impl Solver {
                             }
                         })
                         .collect();
-                    block.extend(self.step_guard.map(|g| !g));
                     self.engine.add_clause(&block);
                 }
             }

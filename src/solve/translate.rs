@@ -13,13 +13,17 @@
 //!   true literal. Merged atoms share a literal (possibly negated) with another atom, the true
 //!   literal or their body; every rule still gets its clauses, so the completion holds over the
 //!   merged literals. Cyclic atoms (positive loops) always have a variable of their own, and no
-//!   merging happens for free atoms, disjunctive programs, or incremental builds (whose atoms
-//!   are all free while translating).
+//!   merging happens for external atoms, disjunctive programs, atoms added by later steps, or
+//!   onto an atom that depends positively on an external (a later step could close a cycle
+//!   through it).
 //! - For a rule `H :- B`, `B` gets one literal shared by all rules with the same body. A
 //!   disjunctive rule with head atoms `h1..hn` gives `hi` the support `B and not hj (j != i)`
 //!   (shifting); a choice rule gives each head atom the support `B`.
-//! - Completion: an atom that is not a free external implies the disjunction of its supports;
-//!   supports and bodies imply heads through the rule clauses.
+//! - Completion: an atom that is not external implies the disjunction of its supports;
+//!   supports and bodies imply heads through the rule clauses. External atoms get theirs when a
+//!   later step defines them (`Solver::add_program`) or releases them.
+//! - `comp`/`cyclic` hold the strongly connected components of the positive dependency graph
+//!   of every step so far; `update_cycles` extends them step by step.
 //! - A program is head-cycle-free when no disjunctive rule has two head atoms in one strongly
 //!   connected component of the positive dependency graph; only then are answer sets exactly
 //!   the supported, unfounded-free assignments. Otherwise `non_hcf` is set and the caller checks
@@ -46,18 +50,38 @@ pub struct Translation {
     pub supports: Vec<AtomSupports>,
     /// Per rule: the literal of its body.
     pub rule_body: Vec<Lit>,
-    /// Per atom: free (an external that is not false), so no completion clause.
+    /// Per atom: an external atom (declared, not released, without rules), so no completion
+    /// clause: its value comes from `ext_value` through the assumptions of each call.
     pub free: Vec<bool>,
+    /// Per atom: the value of an external atom (meaningful where `free` is set).
+    pub ext_value: Vec<ExternalValue>,
+    /// The external atoms, in the order they were declared (may hold atoms that stopped
+    /// being external; `free` decides).
+    pub ext_atoms: Vec<u32>,
+    /// The program's own assumptions (aspif statement 6).
+    pub prog_assumptions: Vec<Lit>,
     /// Per output statement: the literal of its condition.
     pub output_lits: Vec<Lit>,
     /// Minimize levels, highest priority first: (priority, weighted literals).
     pub minimize: Vec<(i64, Vec<(Lit, i64)>)>,
-    /// Literals assumed for every solve call (aspif assumptions and true externals).
+    /// Literals assumed for every solve call: the program's assumptions, true externals and
+    /// the negations of false externals (`refresh_assumptions`).
     pub assumptions: Vec<Lit>,
     /// True when some disjunctive rule has two head atoms in one positive cycle.
     pub non_hcf: bool,
-    /// Guard of the current incremental step, attached to loop nogoods (see `unfounded`).
-    pub loop_guard: Option<Lit>,
+    /// Per atom: its strongly connected component in the positive dependency graph.
+    pub comp: Vec<u32>,
+    /// Per atom: on a positive cycle.
+    pub cyclic: Vec<bool>,
+    /// The cyclic atoms, in the order they became cyclic.
+    pub cyclic_atoms: Vec<u32>,
+    /// Next unused component number.
+    next_comp: u32,
+    /// Per atom: occurs positively in the body of a rule with a non-empty head (so that it
+    /// has a positive dependency pointing at it).
+    pub pos_occ: Vec<bool>,
+    /// Indices of the disjunctive rules with two or more head atoms.
+    disj_rules: Vec<u32>,
     /// Conjunctions already given a literal: (start, length, literal), the key (sorted literal
     /// codes) being `conj_keys[start..start + length]`. One flat key array instead of a `Vec`
     /// per key keeps a body at 12 bytes in the table plus its codes.
@@ -282,7 +306,9 @@ impl Translation {
         let (cycles, eqs) = if eq {
             let mut heads = HeadRules::new(n + 1);
             let c = Cycles::of(p, n + 1, |i, r| heads.add(i, r));
-            let eqs = equivalences(p, n, &external_free(p, n), &c.comp, &heads);
+            let free = external_free(p, n);
+            let reach = reaches_external(p, n, &free);
+            let eqs = equivalences(p, n, &free, &reach, &c.comp, &heads);
             (Some(c), eqs)
         } else {
             (None, vec![Equiv::None; n + 1])
@@ -305,6 +331,8 @@ impl Translation {
             .collect();
         t.supports = vec![AtomSupports::new(); n + 1];
         t.free = vec![false; n + 1];
+        t.ext_value = vec![ExternalValue::Free; n + 1];
+        t.pos_occ = vec![false; n + 1];
         t.set_externals(p);
         // An atom whose only rule is `a :- B` (B of two or more literals) stands for B itself.
         for (a, q) in eqs.iter().enumerate() {
@@ -358,40 +386,92 @@ impl Translation {
         self.key_buf = key;
     }
 
-    /// Sets `free` and `assumptions` from the external statements and assumptions of `p`: the
-    /// last statement on an atom gives its value (as `check::external_values`), free and true
-    /// externals are free, true ones assumed; every other atom is not free. The caller drops
-    /// external statements on atoms that have rules (they are ordinary atoms then).
+    /// Sets `free`, `ext_value` and the assumptions from the external statements and
+    /// assumptions of `p`: the last statement on an atom gives its value (as
+    /// `check::external_values`); `Release` makes the atom an ordinary one (false without
+    /// rules). The caller drops external statements on atoms that have rules (they are
+    /// ordinary atoms then).
     pub fn set_externals(&mut self, p: &GroundProgram) {
-        self.free.iter_mut().for_each(|f| *f = false);
-        self.assumptions.clear();
-        let mut last: HashMap<u32, ExternalValue> = HashMap::new();
-        for &(a, v) in &p.externals {
-            last.insert(a, v);
+        for &a in &self.ext_atoms {
+            self.free[a as usize] = false;
         }
-        let mut assumed = hashbrown::HashSet::new();
-        for &(a, _) in &p.externals {
-            let v = last[&a];
-            match v {
-                ExternalValue::Free => self.free[a as usize] = true,
-                ExternalValue::True => {
-                    self.free[a as usize] = true;
-                    if assumed.insert(a) {
-                        self.assumptions.push(self.atom_lit[a as usize]);
-                    }
-                }
-                ExternalValue::False | ExternalValue::Release => {}
+        self.ext_atoms.clear();
+        for &(a, v) in &p.externals {
+            self.set_external(a, v);
+        }
+        self.prog_assumptions = p.assumptions.iter().map(|&l| self.lit(l)).collect();
+        self.refresh_assumptions();
+    }
+
+    /// Makes `a` an external atom with value `v` (`Release`: an ordinary atom again; the caller
+    /// completes it). Call `refresh_assumptions` afterwards.
+    pub fn set_external(&mut self, a: u32, v: ExternalValue) {
+        let au = a as usize;
+        if v == ExternalValue::Release {
+            self.free[au] = false;
+            return;
+        }
+        if !self.free[au] {
+            self.free[au] = true;
+            self.ext_atoms.push(a);
+        }
+        self.ext_value[au] = v;
+    }
+
+    /// Recomputes `assumptions`: the program's assumptions, then each true external and the
+    /// negation of each false one. Drops atoms that stopped being external from `ext_atoms`.
+    pub fn refresh_assumptions(&mut self) {
+        let free = &self.free;
+        let mut seen = hashbrown::HashSet::new();
+        self.ext_atoms
+            .retain(|&a| free[a as usize] && seen.insert(a));
+        self.assumptions.clear();
+        self.assumptions.extend_from_slice(&self.prog_assumptions);
+        for &a in &self.ext_atoms {
+            let l = self.atom_lit[a as usize];
+            match self.ext_value[a as usize] {
+                ExternalValue::True => self.assumptions.push(l),
+                ExternalValue::False => self.assumptions.push(!l),
+                ExternalValue::Free | ExternalValue::Release => {}
             }
         }
-        for &l in &p.assumptions {
-            let x = self.lit(l);
-            self.assumptions.push(x);
+    }
+
+    /// Makes room for atoms up to `n` (each gets a fresh variable).
+    pub fn grow_atoms(&mut self, e: &mut Engine, n: usize) {
+        while self.atom_lit.len() <= n {
+            self.atom_lit.push(e.new_var().positive());
+            self.supports.push(AtomSupports::new());
+            self.free.push(false);
+            self.ext_value.push(ExternalValue::Free);
+            self.pos_occ.push(false);
+            self.comp.push(self.next_comp);
+            self.next_comp += 1;
+            self.cyclic.push(false);
         }
     }
 
     /// Adds the clauses of one rule (its body, its head clause and its supports).
     pub fn add_rule(&mut self, e: &mut Engine, index: usize, r: RuleRef<'_>) {
         let constraint = r.head_kind == HeadKind::Disjunction && r.head.is_empty();
+        if !r.head.is_empty() {
+            match r.body {
+                BodyRef::Normal(ls) => {
+                    for &l in ls.iter().filter(|&&l| l > 0) {
+                        self.pos_occ[l as usize] = true;
+                    }
+                }
+                BodyRef::Weight { lits, .. } => {
+                    for &(l, w) in lits.iter().filter(|&&(l, w)| l > 0 && w > 0) {
+                        let _ = w;
+                        self.pos_occ[l as usize] = true;
+                    }
+                }
+            }
+            if r.head_kind == HeadKind::Disjunction && r.head.len() > 1 {
+                self.disj_rules.push(index as u32);
+            }
+        }
         let b = self.body_lit(e, r.body, constraint);
         self.rule_body.push(b);
         debug_assert_eq!(self.rule_body.len(), index + 1);
@@ -454,57 +534,160 @@ impl Translation {
         let n = self.atom_lit.len();
         let Cycles { comp, cyclic } = known.unwrap_or_else(|| Cycles::of(p, n, |_, _| {}));
         debug_assert_eq!(comp.len(), n);
-        self.non_hcf = p.rules.iter().any(|r| {
-            r.head_kind == HeadKind::Disjunction
-                && r.head.iter().enumerate().any(|(i, &h)| {
-                    cyclic[h as usize]
-                        && r.head[i + 1..]
-                            .iter()
-                            .any(|&g| g != h && comp[g as usize] == comp[h as usize])
-                })
-        });
-        let mut local = vec![u32::MAX; n];
-        let mut atom_lits = Vec::new();
-        let mut components = Vec::new();
-        for a in 0..n {
-            if cyclic[a] && !self.free[a] {
-                local[a] = atom_lits.len() as u32;
-                atom_lits.push(self.atom_lit[a]);
-                components.push(comp[a]);
+        self.next_comp = comp.iter().copied().max().map_or(0, |c| c + 1);
+        self.cyclic_atoms = (0..n as u32).filter(|&a| cyclic[a as usize]).collect();
+        self.comp = comp;
+        self.cyclic = cyclic;
+        self.rebuild_unfounded(p, e);
+    }
+
+    /// Updates the components after a step whose rules (those from index `first_rule` on)
+    /// gave rules to the atoms `defined` (new atoms, or externals until now), and reinstalls
+    /// the unfounded-set propagator when some atom became cyclic. Atoms defined in earlier
+    /// steps keep their rules, so every new positive cycle goes through `defined`: when no
+    /// defined atom occurred positively in an earlier rule body (`pos_occ_before`), no earlier
+    /// atom reaches one and the new cycles lie among `defined`, found by Tarjan's algorithm
+    /// on the new rules alone; otherwise the components of the whole program are recomputed.
+    pub fn update_cycles(
+        &mut self,
+        p: &GroundProgram,
+        e: &mut Engine,
+        defined: &[u32],
+        first_rule: usize,
+        pos_occ_before: bool,
+    ) {
+        if pos_occ_before {
+            let n = self.atom_lit.len();
+            let before = self.cyclic_atoms.len();
+            let c = Cycles::of(p, n, |_, _| {});
+            let changed = c.cyclic != self.cyclic || before > 0;
+            self.next_comp = c.comp.iter().copied().max().map_or(0, |c| c + 1);
+            self.cyclic_atoms = (0..n as u32).filter(|&a| c.cyclic[a as usize]).collect();
+            self.comp = c.comp;
+            self.cyclic = c.cyclic;
+            if changed {
+                self.rebuild_unfounded(p, e);
             }
-        }
-        if atom_lits.is_empty() {
-            e.set_unfounded(None);
             return;
         }
-        let mut sups = Vec::new();
-        for a in 0..n {
-            if local[a] == u32::MAX {
+        let local: HashMap<u32, u32> = defined
+            .iter()
+            .enumerate()
+            .map(|(i, &a)| (a, i as u32))
+            .collect();
+        let mut lists: Vec<Vec<u32>> = vec![Vec::new(); defined.len()];
+        for ri in first_rule..p.rules.len() {
+            let r = p.rules.get(ri);
+            if r.head.is_empty() {
                 continue;
             }
-            for &(s, ri) in &self.supports[a] {
+            let mut targets: SmallVec<[u32; 8]> = SmallVec::new();
+            match r.body {
+                BodyRef::Normal(ls) => targets.extend(
+                    ls.iter()
+                        .filter(|&&l| l > 0)
+                        .filter_map(|&l| local.get(&(l as u32)).copied()),
+                ),
+                BodyRef::Weight { lits, .. } => targets.extend(
+                    lits.iter()
+                        .filter(|&&(l, w)| l > 0 && w > 0)
+                        .filter_map(|&(l, _)| local.get(&(l as u32)).copied()),
+                ),
+            }
+            if targets.is_empty() {
+                continue;
+            }
+            for &h in r.head {
+                if let Some(&hl) = local.get(&h) {
+                    lists[hl as usize].extend_from_slice(&targets);
+                }
+            }
+        }
+        if lists.iter().all(|l| l.is_empty()) {
+            return;
+        }
+        let g = Graph::from_lists(&lists);
+        let comp = scc(&g);
+        let mut size: HashMap<u32, u32> = HashMap::new();
+        for &c in &comp {
+            *size.entry(c).or_default() += 1;
+        }
+        let mut any = false;
+        for (i, &a) in defined.iter().enumerate() {
+            let c = comp[i];
+            let cyc = size[&c] > 1 || g.succ(i).contains(&(i as u32));
+            self.comp[a as usize] = self.next_comp + c;
+            if cyc {
+                self.cyclic[a as usize] = true;
+                self.cyclic_atoms.push(a);
+                any = true;
+            }
+        }
+        self.next_comp += size.len() as u32;
+        if any {
+            self.rebuild_unfounded(p, e);
+        }
+    }
+
+    /// Decides head-cycle-freeness and (re)installs the unfounded-set propagator over the
+    /// cyclic atoms (none installed when there are none). Work proportional to the cyclic
+    /// atoms, their supports and the disjunctive rules.
+    fn rebuild_unfounded(&mut self, p: &GroundProgram, e: &mut Engine) {
+        let (comp, cyclic) = (&self.comp, &self.cyclic);
+        self.non_hcf = self.disj_rules.iter().any(|&ri| {
+            let r = p.rules.get(ri as usize);
+            r.head.iter().enumerate().any(|(i, &h)| {
+                cyclic[h as usize]
+                    && r.head[i + 1..]
+                        .iter()
+                        .any(|&g| g != h && comp[g as usize] == comp[h as usize])
+            })
+        });
+        let mut local: HashMap<u32, u32> = HashMap::new();
+        let mut atom_lits = Vec::new();
+        let mut components = Vec::new();
+        let mut atoms: Vec<u32> = self
+            .cyclic_atoms
+            .iter()
+            .copied()
+            .filter(|&a| !self.free[a as usize])
+            .collect();
+        atoms.sort_unstable();
+        for &a in &atoms {
+            local.insert(a, atom_lits.len() as u32);
+            atom_lits.push(self.atom_lit[a as usize]);
+            components.push(self.comp[a as usize]);
+        }
+        if atom_lits.is_empty() {
+            if e.has_unfounded() {
+                e.set_unfounded(None);
+            }
+            return;
+        }
+        let loc = |l: i32| -> Option<u32> {
+            if l > 0 {
+                local.get(&(l as u32)).copied()
+            } else {
+                None
+            }
+        };
+        let mut sups = Vec::new();
+        for &a in &atoms {
+            for &(s, ri) in &self.supports[a as usize] {
                 let ri = ri as usize;
                 let r = p.rules.get(ri);
                 // Non-HCF programs use the rule body as support (see the module comment).
                 let lit = if self.non_hcf { self.rule_body[ri] } else { s };
                 let body = match r.body {
-                    BodyRef::Normal(ls) => SupportBody::Normal(
-                        ls.iter()
-                            .filter(|&&l| l > 0 && local[l as usize] != u32::MAX)
-                            .map(|&l| local[l as usize])
-                            .collect(),
-                    ),
+                    BodyRef::Normal(ls) => {
+                        SupportBody::Normal(ls.iter().filter_map(|&l| loc(l)).collect())
+                    }
                     BodyRef::Weight { lower, lits } => {
                         let mut bound = lower as i128;
                         let mut wl = Vec::new();
                         for &(l, w) in lits {
                             if w > 0 {
-                                let at = if l > 0 && local[l as usize] != u32::MAX {
-                                    Some(local[l as usize])
-                                } else {
-                                    None
-                                };
-                                wl.push((self.lit(l), w as u64, at));
+                                wl.push((self.lit(l), w as u64, loc(l)));
                             } else if w < 0 {
                                 bound -= w as i128;
                                 wl.push((!self.lit(l), (-(w as i128)) as u64, None));
@@ -517,14 +700,13 @@ impl Translation {
                     }
                 };
                 sups.push(Support {
-                    head: local[a],
+                    head: local[&a],
                     lit,
                     body,
                 });
             }
         }
-        let mut uf = Unfounded::new(atom_lits, components, sups);
-        uf.guard = self.loop_guard;
+        let uf = Unfounded::new(atom_lits, components, sups);
         e.set_unfounded(Some(uf));
     }
 }
@@ -587,6 +769,7 @@ fn equivalences(
     p: &GroundProgram,
     n: usize,
     free: &[bool],
+    reach: &[bool],
     comp: &[u32],
     heads: &HeadRules,
 ) -> Vec<Equiv> {
@@ -609,7 +792,7 @@ fn equivalences(
             [] => Equiv::Lit(0),
             [l] => {
                 let b = l.unsigned_abs() as usize;
-                if free[b] || (*l > 0 && comp[b] == comp[a]) {
+                if free[b] || (*l > 0 && (comp[b] == comp[a] || reach[b])) {
                     continue;
                 }
                 Equiv::Lit(*l)
@@ -654,14 +837,53 @@ impl HeadRules {
     }
 }
 
-/// Per atom: free by the external statements (the last statement on an atom decides, as in
-/// `Translation::set_externals`).
+/// Per atom: external by the external statements (the last statement on an atom decides, as
+/// in `Translation::set_externals`; any value but `Release`).
 fn external_free(p: &GroundProgram, n: usize) -> Vec<bool> {
     let mut free = vec![false; n + 1];
     for &(a, v) in &p.externals {
-        free[a as usize] = matches!(v, ExternalValue::Free | ExternalValue::True);
+        free[a as usize] = v != ExternalValue::Release;
     }
     free
+}
+
+/// Per atom: whether a positive path of the dependency graph leads from it to an external
+/// atom (`free`). A later step may give such an external rules that close a positive cycle
+/// through the atom, so the atom may not share a variable with an atom it depends on.
+fn reaches_external(p: &GroundProgram, n: usize, free: &[bool]) -> Vec<bool> {
+    let mut reach = free.to_vec();
+    if !free.iter().any(|&f| f) {
+        return reach;
+    }
+    // Reverse edges (body atom -> head), then a search backwards from the externals.
+    let mut rev: Vec<Vec<u32>> = vec![Vec::new(); n + 1];
+    for r in p.rules.iter() {
+        if r.head.is_empty() {
+            continue;
+        }
+        let mut add = |b: i32| {
+            if b > 0 {
+                rev[b as usize].extend_from_slice(r.head);
+            }
+        };
+        match r.body {
+            BodyRef::Normal(ls) => ls.iter().for_each(|&l| add(l)),
+            BodyRef::Weight { lits, .. } => lits
+                .iter()
+                .filter(|&&(_, w)| w > 0)
+                .for_each(|&(l, _)| add(l)),
+        }
+    }
+    let mut stack: Vec<u32> = (0..=n as u32).filter(|&a| free[a as usize]).collect();
+    while let Some(x) = stack.pop() {
+        for &h in &rev[x as usize] {
+            if !reach[h as usize] {
+                reach[h as usize] = true;
+                stack.push(h);
+            }
+        }
+    }
+    reach
 }
 
 /// Gives every aliased atom (`Equiv::Lit`) the literal of its target, following chains; an

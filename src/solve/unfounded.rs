@@ -36,8 +36,8 @@
 //!   was undone as well.
 //! - Atoms that never had a source (before the first check) sit in `no_source` and are tried at
 //!   every check until they get one or are false at level 0.
-//! - With a step guard (incremental solving), every nogood carries the guard's negation: it
-//!   holds for the current step's rules only.
+//! - Loop nogoods stay valid in later steps of a multi-shot program: the rules of an atom are
+//!   all given in one step, so the external supports of a set of defined atoms never change.
 //! - For non-head-cycle-free programs supports use the rule body only (a weaker but sound
 //!   nogood); minimality is then checked separately.
 //!
@@ -119,8 +119,7 @@ pub enum SupportBody {
 pub struct LoopSet {
     /// The atoms of `U` (positive literals), none of them false.
     pub atoms: Vec<Lit>,
-    /// One false literal per external support (with a step guard, also the guard's
-    /// negation), sorted and without repetitions.
+    /// One false literal per external support, sorted and without repetitions.
     pub ext: Vec<Lit>,
 }
 
@@ -153,9 +152,6 @@ pub struct Unfounded {
     s_list: Vec<u32>,
     /// Scratch: atoms that got a source and whose dependents must be rechecked.
     queue: Vec<u32>,
-    /// Guard of the current incremental step: loop nogoods hold only while it is true, since
-    /// rules added later may give an unfounded set an external support.
-    pub guard: Option<Lit>,
     /// Statistics: checks that found an invalidated source.
     pub checks: u64,
 }
@@ -226,7 +222,6 @@ impl Unfounded {
             count,
             s_list: Vec::new(),
             queue: Vec::new(),
-            guard: None,
             checks: 0,
         }
     }
@@ -394,7 +389,6 @@ impl Unfounded {
                 .chunk_by(|a, b| self.component[*a as usize] == self.component[*b as usize])
             {
                 let mut ext = self.external(e, part);
-                ext.extend(self.guard.map(|g| !g));
                 ext.sort_unstable();
                 ext.dedup();
                 let atoms = part.iter().map(|&a| self.atom_lit[a as usize]).collect();
