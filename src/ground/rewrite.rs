@@ -21,6 +21,7 @@ use hashbrown::HashMap;
 use crate::base::{Diagnostic, Diagnostics, SourceMap, Span};
 use crate::syntax::ast::{self, AggregateFunction, CmpOp, Sign, TermKind};
 
+use super::program::AuxKind;
 use super::symbol::{SymId, Symbols};
 use super::term::NTerm;
 use crate::base::intern::Sym;
@@ -237,6 +238,9 @@ pub struct NStmt {
     pub var_names: Vec<Sym>,
     /// Global slots (bound by the body), in slot order.
     pub globals: Vec<u32>,
+    /// Set when the rewriting made this statement as part of statement `stmt`'s translation
+    /// (the constraint of a choice's bounds, a projection rule): its rules are auxiliaries.
+    pub aux: Option<AuxKind>,
 }
 
 /// `#show` configuration.
@@ -289,6 +293,8 @@ pub struct Rewriter<'a> {
     current: (u32, Span),
     /// Number of projection predicates made for anonymous variables under negation.
     projections: u32,
+    /// Set while rewriting a statement made for another one's translation.
+    aux_role: Option<AuxKind>,
 }
 
 /// Per-statement variable table.
@@ -645,6 +651,7 @@ impl<'a> Rewriter<'a> {
             reported: Vec::new(),
             sorts: Vec::new(),
             current: (0, Span::default()),
+            aux_role: None,
             projections: 0,
         }
     }
@@ -1083,7 +1090,9 @@ impl<'a> Rewriter<'a> {
             kind: ast::RuleKind::Normal,
         };
         let (index, span) = self.current;
+        let role = self.aux_role.replace(AuxKind::Projection);
         self.rule(index, span, &rule);
+        self.aux_role = role;
         self.current = (index, span);
         ast::Literal {
             span: l.span,
@@ -1781,6 +1790,7 @@ impl<'a> Rewriter<'a> {
                         sign: Sign::Not,
                         aggregate: Box::new(agg),
                     });
+                    let role = self.aux_role.replace(AuxKind::Bound);
                     self.rule_instance(
                         index,
                         span,
@@ -1788,6 +1798,7 @@ impl<'a> Rewriter<'a> {
                         &cbody,
                         &ast::RuleKind::Normal,
                     );
+                    self.aux_role = role;
                 }
                 NHead::Choice(es)
             }
@@ -1838,6 +1849,7 @@ impl<'a> Rewriter<'a> {
                         sign: Sign::Not,
                         aggregate: Box::new(agg),
                     });
+                    let role = self.aux_role.replace(AuxKind::Bound);
                     self.rule_instance(
                         index,
                         span,
@@ -1845,6 +1857,7 @@ impl<'a> Rewriter<'a> {
                         &cbody,
                         &ast::RuleKind::Normal,
                     );
+                    self.aux_role = role;
                 }
                 NHead::Choice(es)
             }
@@ -2016,6 +2029,7 @@ impl<'a> Rewriter<'a> {
             num_vars: n as u32,
             var_names,
             globals,
+            aux: self.aux_role,
         });
     }
 }
