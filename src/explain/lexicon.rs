@@ -39,6 +39,12 @@ pub const TEMPLATES: &[(&str, &[&str])] = &[
     ("belief_frontier", &["literals"]),
     ("belief_assumed", &["literal", "default"]),
     ("not_believed", &["literal", "step"]),
+    ("belief_default", &["literal"]),
+    ("complement_instead", &["literal"]),
+    ("step_chosen", &["steps"]),
+    ("outside_history", &["step", "last"]),
+    ("not_done", &["action", "step"]),
+    ("no_reason", &[]),
     ("step", &["step"]),
     ("initial_state", &[]),
 ];

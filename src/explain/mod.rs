@@ -9,6 +9,8 @@
 //! - [`verbalize`]: literals, actions and the answer templates of DOMAIN.md 6.7 in English;
 //! - [`tree`]: the proof-tree data type (flat, children before parents) and its independent
 //!   re-check against the ground program and the model;
+//! - [`build`]: proof trees built over a ground program and an answer set (DOMAIN.md 6.2);
+//! - [`questions`]: the four questions of DOMAIN.md 6.3-6.6 over a program, answer set and plan;
 //! - [`draw`]: proof trees as DOT text and as SVG drawn here.
 //!
 //! Invariants: nothing here reads files or the clock (the lexicon is passed as text or built
@@ -20,4 +22,6 @@ pub mod lexicon;
 pub mod english;
 pub mod verbalize;
 pub mod tree;
+pub mod build;
+pub mod questions;
 pub mod draw;

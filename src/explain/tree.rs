@@ -471,13 +471,24 @@ fn check_support(tree: &ProofTree, oracle: &dyn Oracle, node: &Node) -> Result<(
         }
     }
     let kind_fits = match &node.kind {
-        Kind::Action => matches!(node.literal.name(), Some("occurs")) && !node.literal.is_neg(),
-        Kind::Static => node.step.is_none(),
+        Kind::Action => {
+            matches!(node.literal.name(), Some("occurs"))
+                && !node.literal.is_neg()
+                && matches!(
+                    rule.kind,
+                    AxiomKind::Fact | AxiomKind::History | AxiomKind::Planning
+                )
+        }
+        Kind::Static => node.step.is_none() && rule.kind == AxiomKind::Fact,
         Kind::Assumption => rule.kind == AxiomKind::CrRule && oracle.applied(rule),
-        Kind::ClosedWorld => rule.kind == AxiomKind::ClosedWorld,
+        // The CWAs, and the initial-state default D0 (a history rule with `not`).
+        Kind::ClosedWorld => {
+            rule.kind == AxiomKind::ClosedWorld
+                || (rule.kind == AxiomKind::History && rule.negative().next().is_some())
+        }
         Kind::Inertia => rule.kind == AxiomKind::Inertia,
         Kind::Axiom { label, kind } => *label == rule.label && *kind == rule.kind,
-        Kind::Observation => true,
+        Kind::Observation => matches!(rule.kind, AxiomKind::Fact | AxiomKind::History),
         Kind::Unsupported => false,
     };
     if !kind_fits {

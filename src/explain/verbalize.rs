@@ -395,8 +395,8 @@ impl<'a> Verbalizer<'a> {
         }
     }
 
-    /// Fills an answer template of the lexicon.
-    fn template(&self, name: &str, holes: &[(&str, &str)]) -> String {
+    /// Fills an answer template of the lexicon (one of `lexicon::TEMPLATES`), capitalized.
+    pub fn template(&self, name: &str, holes: &[(&str, &str)]) -> String {
         let mut out = self.lexicon.template(name).to_string();
         for (hole, text) in holes {
             out = out.replace(&format!("{{{hole}}}"), text);
