@@ -688,7 +688,8 @@ pub struct DeadRule {
 ///
 /// Invariants: when not empty, `origin_ends` has one entry per rule of the program and is
 /// non-decreasing; rule `i`'s origins are `origins[origin_ends[i - 1]..origin_ends[i]]`, and
-/// every rule has at least one (several when instances ground to the same rule). `atoms` is
+/// every rule the grounder made has at least one (several when instances ground to the same
+/// rule); rules added to a program without provenance have none. `atoms` is
 /// indexed by grounder atom minus one; `by_aspif[a]` is the grounder atom of aspif atom `a`
 /// (0 when none); `by_sym` is sorted by symbol.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -723,6 +724,19 @@ impl Provenance {
     pub fn push_rule(&mut self, origins: impl IntoIterator<Item = Origin>) {
         self.origins.extend(origins);
         self.origin_ends.push(self.origins.len() as u32);
+    }
+
+    /// Keeps the origins of the first `n` rules, or gives the rules from the last recorded
+    /// one up to `n` no origin (rules added without provenance).
+    pub fn resize_rules(&mut self, n: usize) {
+        if n <= self.origin_ends.len() {
+            self.origin_ends.truncate(n);
+            let end = self.origin_ends.last().copied().unwrap_or(0);
+            self.origins.truncate(end as usize);
+        } else {
+            let end = self.origins.len() as u32;
+            self.origin_ends.resize(n, end);
+        }
     }
 
     /// The origins of rule `i` (empty when `i` has none recorded).

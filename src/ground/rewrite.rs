@@ -1592,7 +1592,12 @@ impl<'a> Rewriter<'a> {
             }
             K::Script(_) => self.unsupported(st.span, "#script is not supported by Lucent"),
             K::Const(_) | K::ProgramPart(_) | K::Error => {}
-            K::Section(_) | K::SortDef(_) | K::PredicateDecl(_) | K::Display(_) => {
+            K::Section(_)
+            | K::SortDef(_)
+            | K::PredicateDecl(_)
+            | K::Display(_)
+            | K::DisplaySort(_)
+            | K::MaxInt(_) => {
                 self.unsupported(st.span, "SPARC sections in a clingo-dialect program");
             }
         }
