@@ -257,7 +257,7 @@ impl Answering<'_, '_> {
             return Ok(a);
         }
         session.last_step = Some(step);
-        let Some(done) = self.planned(action, step).cloned() else {
+        if self.planned(action, step).is_none() {
             let text = self.v.template(
                 "not_done",
                 &[
@@ -269,7 +269,7 @@ impl Answering<'_, '_> {
                 ],
             );
             return Ok(Self::simple("why", text));
-        };
+        }
         // 1-3: for each later action a_j, its executability conditions grounded at `step`;
         // a body fluent literal that holds at `step` and not at `step + 1` is a reason; the
         // furthest a_j wins.
@@ -306,7 +306,6 @@ impl Answering<'_, '_> {
                 // 5: the action achieves a goal literal directly.
                 let last = self.scn.last_step;
                 let goal: Vec<Term> = self.scn.goal.iter().map(|g| holds(g, last)).collect();
-                let _ = done;
                 (self.v.why_goal(&goal), goal)
             }
         };
@@ -531,7 +530,6 @@ impl Answering<'_, '_> {
         if inertial {
             // Follow spatial algebra and inertia back to the origin.
             let leaf_node = tree.node(leaf);
-            let parent = path.len().checked_sub(2).map(|i| tree.node(path[i]));
             let (text, literals) = match &leaf_node.kind {
                 Kind::Action => {
                     let action = leaf_node.literal.arg(0).cloned().unwrap_or(Term::Num(0));
@@ -561,14 +559,11 @@ impl Answering<'_, '_> {
                         vec![leaf_node.literal.clone()],
                     )
                 }
-                _ => {
-                    let _ = parent;
-                    (
-                        self.v
-                            .belief_frontier(&[leaf_node.literal.clone()], Tense::Past),
-                        vec![leaf_node.literal.clone()],
-                    )
-                }
+                _ => (
+                    self.v
+                        .belief_frontier(std::slice::from_ref(&leaf_node.literal), Tense::Past),
+                    vec![leaf_node.literal.clone()],
+                ),
             };
             return Ok(Answer {
                 kind: "belief",
