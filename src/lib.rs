@@ -14,3 +14,9 @@ pub mod solve;
 pub mod action;
 pub mod syntax;
 pub mod learn;
+
+/// README.md as documentation, so its Rust example runs as a doctest (`cargo test --doc`);
+/// its shell commands are run by `tests/readme.rs`.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
