@@ -14,7 +14,8 @@
 //!   satisfying the condition `c` (comparisons joined by `and`, `or`, `not(...)`), `+` union,
 //!   `-` difference, `*` intersection, `#s` a sort defined earlier;
 //! - errors: a sort defined twice, an empty sort, a predicate declared twice, an undefined
-//!   sort, a record condition over variables it does not name;
+//!   sort, a record condition over variables it does not name, a concatenation of anything
+//!   but identifiers and natural numbers, a range mixing an integer and an identifier;
 //! - a sort `#s` becomes facts `#s(x)` of a hidden predicate;
 //! - every atom `p(t1, ..., tn)` of a rule must match the declaration `p(#s1, ..., #sn)`: an
 //!   undeclared predicate, a wrong arity, a ground argument (intervals expanded) outside its
@@ -392,12 +393,21 @@ impl Typing {
                     _ => {
                         let names = (constant_name(rw.syms, l), constant_name(rw.syms, h));
                         let (Some(a), Some(b)) = names else {
+                            let (l, h) = (rw.syms.show(l), rw.syms.show(h));
                             rw.diags.push(
                                 Diagnostic::error(
                                     e.span,
-                                    "a range needs two integers or two identifiers as ends",
+                                    format!(
+                                        "range {l}..{h} needs two integers or two \
+                                         identifiers as ends"
+                                    ),
                                 )
-                                .with_snippet(snippet(rw, e.span)),
+                                .with_snippet(snippet(rw, e.span))
+                                .with_note(
+                                    None,
+                                    "an identifier next to an integer is often a #const \
+                                     that is not defined",
+                                ),
                             );
                             return None;
                         };
@@ -452,6 +462,25 @@ impl Typing {
                 let mut texts = vec![String::new()];
                 for p in parts {
                     let vals = self.eval(rw, p)?;
+                    // Only basic sorts (identifiers and integers) concatenate.
+                    let basic = |v: SymId| {
+                        rw.syms.num(v).is_some_and(|n| n >= 0)
+                            || constant_name(rw.syms, v).is_some()
+                    };
+                    if let Some(&bad) = vals.iter().find(|&&v| !basic(v)) {
+                        let shown = rw.syms.show(bad);
+                        rw.diags.push(
+                            Diagnostic::error(
+                                p.span,
+                                format!(
+                                    "a concatenation joins identifiers and natural numbers, \
+                                     not '{shown}'"
+                                ),
+                            )
+                            .with_snippet(snippet(rw, p.span)),
+                        );
+                        return None;
+                    }
                     let mut next = Vec::new();
                     for prefix in &texts {
                         for &v in &vals {
