@@ -11,6 +11,7 @@ pub mod ground;
 #[cfg(feature = "sim")]
 pub mod sim;
 pub mod solve;
+pub mod control;
 pub mod action;
 pub mod syntax;
 pub mod learn;
