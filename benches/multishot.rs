@@ -1,0 +1,203 @@
+//! Multi-shot solving on one solver (issue 12): 100,000 `solve_with` calls with changing
+//! assumptions on the 8-queens program, plain and with one CR rule, printing the mean cost of
+//! the first 1,000 and of the last 1,000 calls and their ratio (goal: at most 1.2: the cost per
+//! call stays flat, nothing leaks from one call into the next), with the engine's variable and
+//! clause counts at the end. Then criterion measures one call on a warm solver, and one step of
+//! `add_program` growing a chain program.
+//!
+//! `cargo bench --no-default-features --bench multishot`; `LUCENT_MULTISHOT_CALLS=N` changes
+//! the number of calls of the flatness runs, `LUCENT_MULTISHOT_CRITERION=0` skips criterion.
+
+use criterion::{black_box, Criterion};
+use lucent::ground::program::{Body, CrRule, GroundProgram, HeadKind, Output, Rule};
+use lucent::solve::{Config, Solver};
+use std::time::Instant;
+
+fn choice(head: Vec<u32>) -> Rule {
+    Rule {
+        head_kind: HeadKind::Choice,
+        head,
+        body: Body::Normal(vec![]),
+    }
+}
+
+fn constraint(body: Vec<i32>) -> Rule {
+    Rule {
+        head_kind: HeadKind::Disjunction,
+        head: vec![],
+        body: Body::Normal(body),
+    }
+}
+
+/// `n` queens: atom `r * n + c + 1` is a queen on row `r`, column `c`.
+fn queens(n: u32) -> GroundProgram {
+    let mut p = GroundProgram::new();
+    let at = |r: u32, c: u32| (r * n + c + 1) as i32;
+    p.num_atoms = n * n;
+    for r in 0..n {
+        p.rules
+            .push(choice((0..n).map(|c| at(r, c) as u32).collect()));
+        p.rules
+            .push(constraint((0..n).map(|c| -at(r, c)).collect()));
+    }
+    for r1 in 0..n {
+        for c1 in 0..n {
+            for r2 in 0..n {
+                for c2 in 0..n {
+                    let (a, b) = (at(r1, c1), at(r2, c2));
+                    if a < b
+                        && (r1 == r2
+                            || c1 == c2
+                            || r1 + c2 == r2 + c1
+                            || r1 as i64 - c1 as i64 == r2 as i64 - c2 as i64)
+                    {
+                        p.rules.push(constraint(vec![a, b]));
+                    }
+                }
+            }
+        }
+    }
+    for a in 1..=n * n {
+        p.outputs.push(Output {
+            symbol: format!("q{a}"),
+            condition: vec![a as i32],
+        });
+    }
+    p
+}
+
+/// `queens(n)` plus one CR rule `r: q1 :+ .` (application atom `{r}.`, rule `q1 :- r.`).
+fn queens_cr(n: u32) -> GroundProgram {
+    let mut p = queens(n);
+    let appl = p.new_atom();
+    p.rules.push(choice(vec![appl]));
+    p.rules.push(Rule::normal(&[1], &[appl as i32]));
+    p.cr_rules.push(CrRule {
+        appl,
+        label: "r".into(),
+    });
+    p
+}
+
+/// A small deterministic generator (xorshift), so that every run makes the same calls.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+}
+
+/// Two assumptions on random squares, each positive or negative.
+fn assumptions(rng: &mut Rng, squares: u32) -> Vec<i32> {
+    (0..2)
+        .map(|_| {
+            let a = (rng.next() % squares as u64) as i32 + 1;
+            if rng.next() % 2 == 0 {
+                a
+            } else {
+                -a
+            }
+        })
+        .collect()
+}
+
+/// Runs `calls` calls on one solver; prints the means of the first and last 1,000.
+fn flatness(name: &str, p: &GroundProgram, calls: usize) {
+    let mut s = Solver::new(p, Config::default());
+    let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+    let window = 1000.min(calls / 2).max(1);
+    let (mut first, mut last) = (0.0f64, 0.0f64);
+    let mut models = 0usize;
+    let mut conflicts = 0u64;
+    let mut learnt_after_window = 0;
+    let start = Instant::now();
+    for i in 0..calls {
+        let a = assumptions(&mut rng, 64);
+        let t = Instant::now();
+        let r = s.solve_with(&a);
+        let dt = t.elapsed().as_secs_f64();
+        models += r.models.len();
+        conflicts += r.stats.conflicts;
+        if i + 1 == window {
+            learnt_after_window = s.engine_size().learnts;
+        }
+        if i < window {
+            first += dt;
+        }
+        if i >= calls - window {
+            last += dt;
+        }
+    }
+    let (first, last) = (first / window as f64, last / window as f64);
+    let size = s.engine_size();
+    println!(
+        "{name}: {calls} calls in {:.2} s ({models} with a model, {:.1} conflicts per call); \
+         first {window}: {:.2} us/call, last {window}: {:.2} us/call, last/first {:.3}; engine \
+         after {window} calls: {learnt_after_window} learnt; at the end: {} variables, \
+         {} clauses, {} learnt, {} weight constraints",
+        start.elapsed().as_secs_f64(),
+        conflicts as f64 / calls as f64,
+        first * 1e6,
+        last * 1e6,
+        last / first,
+        size.vars,
+        size.clauses,
+        size.learnts,
+        size.weights,
+    );
+}
+
+fn main() {
+    let calls: usize = std::env::var("LUCENT_MULTISHOT_CALLS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(100_000);
+    flatness("queens8 + assumptions", &queens(8), calls);
+    flatness("queens8 + assumptions + 1 CR rule", &queens_cr(8), calls);
+    if std::env::var("LUCENT_MULTISHOT_CRITERION").is_ok_and(|v| v == "0") {
+        return;
+    }
+
+    let mut c = Criterion::default().configure_from_args();
+    let p = queens(8);
+    let mut s = Solver::new(&p, Config::default());
+    let mut rng = Rng(7);
+    c.bench_function("multishot/queens8 solve_with on a warm solver", |b| {
+        b.iter(|| {
+            let a = assumptions(&mut rng, 64);
+            black_box(s.solve_with(&a).models.len())
+        })
+    });
+    let p = queens_cr(8);
+    let mut s = Solver::new(&p, Config::default());
+    c.bench_function("multishot/queens8+cr solve_with on a warm solver", |b| {
+        b.iter(|| {
+            let a = assumptions(&mut rng, 64);
+            black_box(s.solve_with(&a).models.len())
+        })
+    });
+    // One step of a growing chain: step t adds `x_t :- x_{t-1}, not y_t. {y_t}.`
+    let mut s = Solver::new(&GroundProgram::new(), Config::default());
+    let mut top = 0u32;
+    c.bench_function("multishot/add_program chain step + solve", |b| {
+        b.iter(|| {
+            let mut d = GroundProgram::new();
+            let (x, y) = (top + 1, top + 2);
+            d.num_atoms = top + 2;
+            d.rules.push(choice(vec![y]));
+            let mut body = vec![-(y as i32)];
+            if top > 0 {
+                body.push(top as i32 - 1);
+            }
+            d.rules.push(Rule::normal(&[x], &body));
+            s.add_program(&d).expect("fresh atoms");
+            top += 2;
+            black_box(s.solve_with(&[x as i32]).models.len())
+        })
+    });
+    c.final_summary();
+}
