@@ -1,12 +1,15 @@
 //! Multi-shot solving on one solver (issue 12): 100,000 `solve_with` calls with changing
 //! assumptions on the 8-queens program, plain and with one CR rule, printing the mean cost of
 //! the first 1,000 and of the last 1,000 calls and their ratio (goal: at most 1.2: the cost per
-//! call stays flat, nothing leaks from one call into the next), with the engine's variable and
-//! clause counts at the end. Then criterion measures one call on a warm solver, and one step of
-//! `add_program` growing a chain program.
+//! call stays flat, nothing leaks from one call into the next; medians beside, as they resist
+//! the preemptions of a loaded machine), with the engine's variable and clause counts at the
+//! end; then 20,000 `add_program` steps of a growing chain, first and last 1,000 steps
+//! compared likewise (a step costs the same at any length). Then criterion measures one call on
+//! a warm solver, and one `add_program` step.
 //!
 //! `cargo bench --no-default-features --bench multishot`; `LUCENT_MULTISHOT_CALLS=N` changes
-//! the number of calls of the flatness runs, `LUCENT_MULTISHOT_CRITERION=0` skips criterion.
+//! the number of calls of the flatness runs, `LUCENT_MULTISHOT_STEPS=N` the chain's steps,
+//! `LUCENT_MULTISHOT_CRITERION=0` skips criterion.
 
 use criterion::{black_box, Criterion};
 use lucent::ground::program::{Body, CrRule, GroundProgram, HeadKind, Output, Rule};
@@ -105,12 +108,19 @@ fn assumptions(rng: &mut Rng, squares: u32) -> Vec<i32> {
         .collect()
 }
 
+/// Mean and median, in microseconds, of durations in seconds.
+fn stats(d: &mut [f64]) -> (f64, f64) {
+    d.sort_by(|a, b| a.partial_cmp(b).expect("durations are numbers"));
+    let mean = d.iter().sum::<f64>() / d.len() as f64;
+    (mean * 1e6, d[d.len() / 2] * 1e6)
+}
+
 /// Runs `calls` calls on one solver; prints the means of the first and last 1,000.
 fn flatness(name: &str, p: &GroundProgram, calls: usize) {
     let mut s = Solver::new(p, Config::default());
     let mut rng = Rng(0x2545_F491_4F6C_DD1D);
     let window = 1000.min(calls / 2).max(1);
-    let (mut first, mut last) = (0.0f64, 0.0f64);
+    let (mut first, mut last) = (Vec::new(), Vec::new());
     let mut models = 0usize;
     let mut conflicts = 0u64;
     let mut learnt_after_window = 0;
@@ -126,28 +136,75 @@ fn flatness(name: &str, p: &GroundProgram, calls: usize) {
             learnt_after_window = s.engine_size().learnts;
         }
         if i < window {
-            first += dt;
+            first.push(dt);
         }
         if i >= calls - window {
-            last += dt;
+            last.push(dt);
         }
     }
-    let (first, last) = (first / window as f64, last / window as f64);
+    let ((first, first_med), (last, last_med)) = (stats(&mut first), stats(&mut last));
     let size = s.engine_size();
     println!(
         "{name}: {calls} calls in {:.2} s ({models} with a model, {:.1} conflicts per call); \
-         first {window}: {:.2} us/call, last {window}: {:.2} us/call, last/first {:.3}; engine \
+         mean of the first {window}: {first:.2} us/call, of the last {window}: {last:.2} us/call, \
+         last/first {:.3} (medians {first_med:.2} and {last_med:.2}, last/first {:.3}); engine \
          after {window} calls: {learnt_after_window} learnt; at the end: {} variables, \
          {} clauses, {} learnt, {} weight constraints",
         start.elapsed().as_secs_f64(),
         conflicts as f64 / calls as f64,
-        first * 1e6,
-        last * 1e6,
         last / first,
+        last_med / first_med,
         size.vars,
         size.clauses,
         size.learnts,
         size.weights,
+    );
+}
+
+/// Step `t` of a growing chain: `{y_t}. x_t :- x_{t-1}, not y_t.` (atoms `2t - 1`, `2t`).
+fn chain_step(t: u32) -> GroundProgram {
+    let (x, y) = (2 * t - 1, 2 * t);
+    let mut d = GroundProgram::new();
+    d.num_atoms = y;
+    d.rules.push(choice(vec![y]));
+    let mut body = vec![-(y as i32)];
+    if t > 1 {
+        body.push(x as i32 - 2);
+    }
+    d.rules.push(Rule::normal(&[x], &body));
+    d
+}
+
+/// `steps` steps of `chain_step` on one solver, solving under `x_t` after every `every`-th
+/// step; prints the mean cost of `add_program` over the first and the last 1,000 steps.
+fn chain(steps: u32, every: u32) {
+    let mut s = Solver::new(&GroundProgram::new(), Config::default());
+    let window = 1000.min(steps / 2).max(1);
+    let (mut first, mut last) = (Vec::new(), Vec::new());
+    let start = Instant::now();
+    for t in 1..=steps {
+        let d = chain_step(t);
+        let t0 = Instant::now();
+        s.add_program(&d).expect("fresh atoms");
+        let dt = t0.elapsed().as_secs_f64();
+        if t <= window {
+            first.push(dt);
+        }
+        if t > steps - window {
+            last.push(dt);
+        }
+        if t % every == 0 {
+            black_box(s.solve_with(&[2 * t as i32 - 1]).models.len());
+        }
+    }
+    let ((first, first_med), (last, last_med)) = (stats(&mut first), stats(&mut last));
+    println!(
+        "chain of {steps} steps (a solve every {every}): {:.2} s; add_program mean of the \
+         first {window}: {first:.2} us/step, of the last {window}: {last:.2} us/step, last/first \
+         {:.3} (medians {first_med:.2} and {last_med:.2}, last/first {:.3})",
+        start.elapsed().as_secs_f64(),
+        last / first,
+        last_med / first_med
     );
 }
 
@@ -158,6 +215,11 @@ fn main() {
         .unwrap_or(100_000);
     flatness("queens8 + assumptions", &queens(8), calls);
     flatness("queens8 + assumptions + 1 CR rule", &queens_cr(8), calls);
+    let steps: u32 = std::env::var("LUCENT_MULTISHOT_STEPS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(20_000);
+    chain(steps, 1000);
     if std::env::var("LUCENT_MULTISHOT_CRITERION").is_ok_and(|v| v == "0") {
         return;
     }
@@ -180,23 +242,13 @@ fn main() {
             black_box(s.solve_with(&a).models.len())
         })
     });
-    // One step of a growing chain: step t adds `x_t :- x_{t-1}, not y_t. {y_t}.`
+    // One step of a growing chain, solved after the step.
     let mut s = Solver::new(&GroundProgram::new(), Config::default());
-    let mut top = 0u32;
-    c.bench_function("multishot/add_program chain step + solve", |b| {
+    let mut t = 0u32;
+    c.bench_function("multishot/add_program chain step", |b| {
         b.iter(|| {
-            let mut d = GroundProgram::new();
-            let (x, y) = (top + 1, top + 2);
-            d.num_atoms = top + 2;
-            d.rules.push(choice(vec![y]));
-            let mut body = vec![-(y as i32)];
-            if top > 0 {
-                body.push(top as i32 - 1);
-            }
-            d.rules.push(Rule::normal(&[x], &body));
-            s.add_program(&d).expect("fresh atoms");
-            top += 2;
-            black_box(s.solve_with(&[x as i32]).models.len())
+            t += 1;
+            s.add_program(&chain_step(t)).expect("fresh atoms");
         })
     });
     c.final_summary();
