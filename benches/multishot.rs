@@ -124,6 +124,8 @@ fn flatness(name: &str, p: &GroundProgram, calls: usize) {
     let mut models = 0usize;
     let mut conflicts = 0u64;
     let mut learnt_after_window = 0;
+    // Propagations per call in the two windows: a count the machine's load does not change.
+    let (mut props_first, mut props_last, mut props_before) = (0u64, 0u64, 0u64);
     let start = Instant::now();
     for i in 0..calls {
         let a = assumptions(&mut rng, 64);
@@ -132,6 +134,14 @@ fn flatness(name: &str, p: &GroundProgram, calls: usize) {
         let dt = t.elapsed().as_secs_f64();
         models += r.models.len();
         conflicts += r.stats.conflicts;
+        let props = r.stats.propagations - props_before;
+        props_before = r.stats.propagations;
+        if i < window {
+            props_first += props;
+        }
+        if i >= calls - window {
+            props_last += props;
+        }
         if i + 1 == window {
             learnt_after_window = s.engine_size().learnts;
         }
@@ -147,13 +157,17 @@ fn flatness(name: &str, p: &GroundProgram, calls: usize) {
     println!(
         "{name}: {calls} calls in {:.2} s ({models} with a model, {:.1} conflicts per call); \
          mean of the first {window}: {first:.2} us/call, of the last {window}: {last:.2} us/call, \
-         last/first {:.3} (medians {first_med:.2} and {last_med:.2}, last/first {:.3}); engine \
+         last/first {:.3} (medians {first_med:.2} and {last_med:.2}, last/first {:.3}; \
+         propagations per call {:.1} and {:.1}, last/first {:.3}); engine \
          after {window} calls: {learnt_after_window} learnt; at the end: {} variables, \
          {} clauses, {} learnt, {} weight constraints",
         start.elapsed().as_secs_f64(),
         conflicts as f64 / calls as f64,
         last / first,
         last_med / first_med,
+        props_first as f64 / window as f64,
+        props_last as f64 / window as f64,
+        props_last as f64 / props_first as f64,
         size.vars,
         size.clauses,
         size.learnts,
