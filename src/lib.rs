@@ -10,5 +10,12 @@ pub mod ground;
 #[cfg(feature = "sim")]
 pub mod sim;
 pub mod solve;
+pub mod action;
 pub mod syntax;
 pub mod learn;
+
+/// README.md as documentation, so its Rust example runs as a doctest (`cargo test --doc`);
+/// its shell commands are run by `tests/readme.rs`.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;

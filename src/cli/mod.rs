@@ -10,6 +10,7 @@
 
 #[cfg(feature = "sim")]
 pub mod sim;
+pub mod action;
 pub mod demo;
 pub mod input;
 pub mod options;
@@ -44,7 +45,25 @@ pub const EXIT_USAGE: i32 = 1;
 
 /// Runs the command line on the process's arguments and standard streams, and returns the exit
 /// code.
+///
+/// The run happens on a thread with a large stack ([`MAIN_STACK`]): the grounder's join recurses
+/// once per body literal, so a rule with 20,000 body literals overflowed the default 8 MiB main
+/// stack. The memory is reserved, not committed: only the depth a program reaches is used.
 pub fn main() -> i32 {
+    std::thread::Builder::new()
+        .name("lucent".into())
+        .stack_size(MAIN_STACK)
+        .spawn(main_on_this_thread)
+        .ok()
+        .and_then(|t| t.join().ok())
+        .unwrap_or(EXIT_UNAVAILABLE)
+}
+
+/// Stack size of the thread that runs the command line: 4 GiB of address space, enough for a
+/// rule with millions of body literals.
+pub const MAIN_STACK: usize = 4 << 30;
+
+fn main_on_this_thread() -> i32 {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
@@ -72,8 +91,11 @@ pub fn run(args: &[String], stdin: &mut dyn Read, out: &mut dyn Write, err: &mut
     match run_io(args, &mut io) {
         Ok(code) => code,
         Err(e) => {
-            // Writing to a closed pipe (e.g. `lucent ... | head`) is not an error of the input.
-            let _ = writeln!(io.err, "*** ERROR: (lucent): {e}");
+            // Writing to a closed pipe (e.g. `lucent ... | head`) is not an error of the input,
+            // and the reader has gone: stop without a message, as clingo does.
+            if e.kind() != std::io::ErrorKind::BrokenPipe {
+                let _ = writeln!(io.err, "*** ERROR: (lucent): {e}");
+            }
             EXIT_UNAVAILABLE
         }
     }
@@ -82,6 +104,7 @@ pub fn run(args: &[String], stdin: &mut dyn Read, out: &mut dyn Write, err: &mut
 fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     match args.first().map(String::as_str) {
         Some("demo") => return demo::run(&args[1..], io.out, io.err),
+        Some("translate") => return action::run_translate(&args[1..], io.out, io.err),
         #[cfg(feature = "sim")]
         Some("sim") => return Ok(sim::run_with(&args[1..], io.out, io.err)),
         #[cfg(not(feature = "sim"))]
@@ -177,6 +200,19 @@ fn read_and_parse(
     diags.extend(load_diags);
     let mut programs = Vec::new();
     for input in &loaded {
+        if input.name.ends_with(".ald") {
+            // AL_d: translated to a CR-Prolog syntax tree, then solved like any program.
+            if let Some(t) = action::translate_input(
+                &mut sources,
+                input.file,
+                options.profile.as_deref(),
+                &options.consts,
+                diags,
+            ) {
+                programs.push(t.program);
+            }
+            continue;
+        }
         let text = &sources.get(input.file).text;
         let dialect = dialect_of(options, &input.name, text);
         let parse = crate::syntax::parse(input.file, text, dialect);

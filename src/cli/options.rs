@@ -63,6 +63,7 @@ pub const OPTIONS: &[OptionSpec] = &[
     opt("text", None, Flag, "", "Print the ground program in text form (implies --mode=gringo)", "Basic"),
     opt("output", Some('o'), Value, "<fmt>", "Ground program format in gringo mode: {aspif|intermediate|text} [aspif]", "Basic"),
     opt("dialect", None, Value, "<lang>", "Input language {auto|clingo|sparc} [auto: .sp files are SPARC]", "Basic"),
+    opt("profile", None, Value, "<name>", "Profile of an AL_d (.ald) input: a switch bundle it declares, e.g. tabletop", "Basic"),
     opt("models", Some('n'), Value, "<n>", "Compute at most <n> models (0 for all) [1]", "Solving"),
     opt("const", Some('c'), Value, "<id>=<term>", "Replace term occurrences of <id> with <term>", "Grounding"),
     opt("warn", Some('W'), Value, "<warn>", "Enable/disable warnings: none, all, [no-]{atom-undefined|file-included|operation-undefined|variable-unbounded|global-variable|other}", "Grounding"),
@@ -185,6 +186,8 @@ pub struct Options {
     pub models_given: bool,
     /// `-c name=value` definitions, in order.
     pub consts: Vec<(String, String)>,
+    /// `--profile`: the profile of AL_d inputs.
+    pub profile: Option<String>,
     /// Warning kinds switched off.
     pub disabled_warnings: Vec<WarningKind>,
     /// Maximum number of messages printed.
@@ -235,6 +238,7 @@ impl Default for Options {
             models: 1,
             models_given: false,
             consts: Vec::new(),
+            profile: None,
             disabled_warnings: Vec::new(),
             message_limit: 20,
             provenance: false,
@@ -421,6 +425,7 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
             }
             o.consts.push((name.to_string(), val.trim().to_string()));
         }
+        "profile" => o.profile = Some(v.to_string()),
         "warn" => apply_warn(o, v)?,
         "message-limit" => o.message_limit = parse_num(long, v)?,
         "provenance" => o.provenance = true,

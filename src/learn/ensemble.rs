@@ -364,7 +364,7 @@ mod tests {
         let learned = learn(&table, &features, &target, &EnsembleParams::default(), 11);
         assert_eq!(learned.kept.len(), 1);
         assert_eq!(
-            learned.kept[0].0.to_ald(),
+            learned.kept[0].0.short(),
             "impossible pickup(R1, O1) if below(O1, O2)"
         );
         let one_thread = rayon::ThreadPoolBuilder::new()

