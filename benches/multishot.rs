@@ -223,16 +223,18 @@ fn chain(steps: u32, every: u32) {
 }
 
 fn main() {
+    // `cargo test --all-targets` runs benches without `--bench`, as a smoke test: small counts.
+    let bench = std::env::args().any(|a| a == "--bench");
     let calls: usize = std::env::var("LUCENT_MULTISHOT_CALLS")
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(100_000);
+        .unwrap_or(if bench { 100_000 } else { 2_000 });
     flatness("queens8 + assumptions", &queens(8), calls);
     flatness("queens8 + assumptions + 1 CR rule", &queens_cr(8), calls);
     let steps: u32 = std::env::var("LUCENT_MULTISHOT_STEPS")
         .ok()
         .and_then(|v| v.parse().ok())
-        .unwrap_or(20_000);
+        .unwrap_or(if bench { 20_000 } else { 2_000 });
     chain(steps, 1000);
     if std::env::var("LUCENT_MULTISHOT_CRITERION").is_ok_and(|v| v == "0") {
         return;

@@ -15,6 +15,12 @@
 //! - `values[l.code()]` is 1 when `l` is true, -1 when false, 0 when unassigned, and
 //!   `values[(!l).code()] == -values[l.code()]`.
 //! - Assumptions occupy decision levels `1..=assumptions.len()` during `search`.
+//! - Variables are recycled: `retire_vars` marks variables nothing will mention again (a
+//!   finished call's guard, the auxiliary variables of its bounds); they are never decided, and
+//!   the next level-0 `simplify` deletes every clause and loop formula mentioning one (learnt or
+//!   not), drops their level-0 assignments and puts them on the free list that `new_var` takes
+//!   from first. A free variable occurs in no clause, watch list, weight constraint or trail.
+//!   Removed weight constraints leave their slot to the next `add_weight`.
 
 mod loops;
 

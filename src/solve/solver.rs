@@ -15,6 +15,13 @@
 //! - Constraints that hold for one call only (blocking clauses, cost bounds, CR bounds) carry a
 //!   guard literal that is assumed during the call and fixed false afterwards, so later calls
 //!   are unaffected while learnt clauses stay valid (they mention the guard when they used it).
+//!   A guard owns the auxiliary variables and weight constraints made for its constraints
+//!   (`Scope`); retiring it removes the weight constraints and retires the variables, which the
+//!   engine then deletes every clause of and reuses (`Engine::retire_vars`). Nothing of a call
+//!   outlives it but learnt clauses that mention none of its variables, so the engine's size
+//!   and the cost per call stay flat over any number of calls (tests/solve_multishot.rs,
+//!   benches/multishot.rs). Between calls the learnt clauses are reduced to a limit set by the
+//!   problem size, as clasp does at the start of each solve call.
 //! - Enumeration blocks each model by the negation of its decisions (sound because every
 //!   propagation is a consequence of the program), or by its projection with `--project` and
 //!   for CR programs (where answer sets are compared on their non-CR atoms).
