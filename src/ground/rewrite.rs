@@ -390,21 +390,12 @@ pub fn unpool_term(t: &ast::Term) -> Vec<ast::Term> {
 }
 
 /// Unfolds the pools of an argument list into pool-free lists (the cross product).
+///
+/// Linear in the size of the result: a term without alternatives is pushed onto every prefix
+/// in place, and prefixes are copied only when a pool multiplies them (an atom with 2,000,000
+/// pool-free arguments is one pass, not 2,000,000 growing copies).
 pub fn unpool_list(list: &[ast::Term]) -> Vec<Vec<ast::Term>> {
-    let mut acc: Vec<Vec<ast::Term>> = vec![Vec::new()];
-    for t in list {
-        let alts = unpool_term(t);
-        let mut next = Vec::with_capacity(acc.len() * alts.len());
-        for prefix in &acc {
-            for a in &alts {
-                let mut p = prefix.clone();
-                p.push(a.clone());
-                next.push(p);
-            }
-        }
-        acc = next;
-    }
-    acc
+    product(list.iter().map(unpool_term).collect())
 }
 
 /// Unfolds the pools of a literal.
@@ -458,16 +449,32 @@ pub fn unpool_atom(a: &ast::SymbolicAtom) -> Vec<ast::SymbolicAtom> {
     out
 }
 
-/// Cross product of alternatives.
+/// Cross product of alternatives, in order (the first choice varies slowest); linear in the
+/// size of the result, see [`unpool_list`].
 fn product<T: Clone>(choices: Vec<Vec<T>>) -> Vec<Vec<T>> {
-    let mut acc: Vec<Vec<T>> = vec![Vec::new()];
-    for alts in choices {
-        let mut next = Vec::new();
-        for prefix in &acc {
-            for a in &alts {
-                let mut p = prefix.clone();
-                p.push(a.clone());
-                next.push(p);
+    let mut acc: Vec<Vec<T>> = vec![Vec::with_capacity(choices.len())];
+    for mut alts in choices {
+        if alts.len() == 1 {
+            // The common case (no pool here): push onto every prefix in place.
+            let a = alts.pop().expect("one alternative");
+            if let Some((last, rest)) = acc.split_last_mut() {
+                for prefix in rest {
+                    prefix.push(a.clone());
+                }
+                last.push(a);
+            }
+            continue;
+        }
+        let mut next = Vec::with_capacity(acc.len() * alts.len());
+        if let Some((last, rest)) = alts.split_last() {
+            for mut prefix in acc {
+                for a in rest {
+                    let mut p = prefix.clone();
+                    p.push(a.clone());
+                    next.push(p);
+                }
+                prefix.push(last.clone());
+                next.push(prefix);
             }
         }
         acc = next;
@@ -1718,15 +1725,18 @@ impl<'a> Rewriter<'a> {
                         _ => {}
                     }
                 }
-                // h | not a :- B.  ==  h :- B, not not a.   (and `not not a` moves as `not a`)
-                if elems
-                    .iter()
-                    .any(|e| e.literal.sign != Sign::Positive && !e.has_colon)
-                {
+                // h | not a :- B.  ==  h :- B, not not a.   (and `not not a` moves as `not a`);
+                // likewise a comparison: h | X < 3 :- B.  ==  h :- B, not X < 3.
+                let moves = |e: &ast::ConditionalLiteral| {
+                    !e.has_colon
+                        && (e.literal.sign != Sign::Positive
+                            || matches!(e.literal.atom, ast::Atom::Comparison { .. }))
+                };
+                if elems.iter().any(moves) {
                     let mut keep = Vec::new();
                     let mut nbody = body.to_vec();
                     for e in elems {
-                        if e.literal.sign != Sign::Positive && !e.has_colon {
+                        if moves(e) {
                             let mut l = e.literal.clone();
                             l.sign = negate_sign(l.sign);
                             nbody.push(ast::BodyLiteral::Literal(l));
