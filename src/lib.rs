@@ -5,11 +5,13 @@
 //! (`base` at the bottom of the dependency order, `cli` at the top). See ARCHITECTURE.md.
 
 pub mod base;
+pub mod explain;
 pub mod cli;
 pub mod ground;
 #[cfg(feature = "sim")]
 pub mod sim;
 pub mod solve;
+pub mod control;
 pub mod action;
 pub mod syntax;
 pub mod learn;

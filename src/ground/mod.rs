@@ -54,6 +54,11 @@ pub struct Grounding {
     pub atom_names: Vec<Option<String>>,
     /// Every atom known to be true (facts), including those simplified away from bodies.
     pub facts: Vec<String>,
+    /// Symbol of each aspif atom (`atom_syms[a - 1]`, parallel to `atom_names`), `None` for
+    /// auxiliary atoms: ids into `symbols`.
+    pub atom_syms: Vec<Option<symbol::SymId>>,
+    /// Symbol of every fact atom (parallel to `facts`), ids into `symbols`.
+    pub fact_syms: Vec<symbol::SymId>,
     /// Span of each source statement, by statement index (what `RuleOrigin` statement ids
     /// index).
     pub statement_spans: Vec<Span>,
@@ -135,6 +140,8 @@ pub fn ground(
             diagnostics: diags,
             atom_names: Vec::new(),
             facts: Vec::new(),
+            atom_syms: Vec::new(),
+            fact_syms: Vec::new(),
             statement_spans,
             symbols: syms,
             stopped: None,
@@ -175,6 +182,8 @@ pub fn ground(
         diagnostics: diags,
         atom_names: if error { Vec::new() } else { fin.names },
         facts: fin.facts,
+        atom_syms: if error { Vec::new() } else { fin.atom_syms },
+        fact_syms: fin.fact_syms,
         statement_spans,
         symbols: syms,
         stopped,

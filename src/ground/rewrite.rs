@@ -1725,15 +1725,18 @@ impl<'a> Rewriter<'a> {
                         _ => {}
                     }
                 }
-                // h | not a :- B.  ==  h :- B, not not a.   (and `not not a` moves as `not a`)
-                if elems
-                    .iter()
-                    .any(|e| e.literal.sign != Sign::Positive && !e.has_colon)
-                {
+                // h | not a :- B.  ==  h :- B, not not a.   (and `not not a` moves as `not a`);
+                // likewise a comparison: h | X < 3 :- B.  ==  h :- B, not X < 3.
+                let moves = |e: &ast::ConditionalLiteral| {
+                    !e.has_colon
+                        && (e.literal.sign != Sign::Positive
+                            || matches!(e.literal.atom, ast::Atom::Comparison { .. }))
+                };
+                if elems.iter().any(moves) {
                     let mut keep = Vec::new();
                     let mut nbody = body.to_vec();
                     for e in elems {
-                        if e.literal.sign != Sign::Positive && !e.has_colon {
+                        if moves(e) {
                             let mut l = e.literal.clone();
                             l.sign = negate_sign(l.sign);
                             nbody.push(ast::BodyLiteral::Literal(l));

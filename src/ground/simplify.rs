@@ -47,6 +47,11 @@ pub struct Finished {
     pub names: Vec<Option<String>>,
     /// Every fact atom's symbol text (also those simplified away from bodies).
     pub facts: Vec<String>,
+    /// Symbol of each aspif atom (`atom_syms[a - 1]`, parallel to `names`), `None` for
+    /// auxiliary atoms.
+    pub atom_syms: Vec<Option<SymId>>,
+    /// Symbol of every fact atom (parallel to `facts`).
+    pub fact_syms: Vec<SymId>,
 }
 
 /// The two passes that build [`Occurrences`]: count, then fill.
@@ -481,12 +486,14 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     // and shown atoms, in creation order. The solver's initial variable order follows it.
     let mut number = vec![0u32; n + 1];
     let mut names: Vec<Option<String>> = Vec::new();
+    let mut atom_syms: Vec<Option<SymId>> = Vec::new();
     let mut next = 0u32;
     let mut assign = |a: usize, number: &mut Vec<u32>| {
         if number[a] == 0 {
             next += 1;
             number[a] = next;
             names.push(g.atoms[a - 1].sym.map(|s| g.syms.show(s)));
+            atom_syms.push(g.atoms[a - 1].sym);
         }
     };
     for r in &rules {
@@ -556,11 +563,13 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         .collect();
     // Outputs: shown atoms, facts with an empty condition.
     let mut facts = Vec::new();
+    let mut fact_syms = Vec::new();
     for a in 1..=n {
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };
         if status[a - 1] == Status::Fact {
             facts.push(g.syms.show(sym));
+            fact_syms.push(sym);
         }
         if info.in_domain && status[a - 1] != Status::False && shown_pred(g, info.pred) {
             let condition = if status[a - 1] == Status::Fact {
@@ -683,6 +692,8 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         program: out,
         names,
         facts,
+        atom_syms,
+        fact_syms,
     }
 }
 
