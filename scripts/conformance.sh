@@ -4,7 +4,8 @@
 #  1. The parser over every program in shared/data: no panic, spans in range, round trip.
 #  2. The clingo test suite through Lucent end to end, through gringo|lucent --mode=clasp, and
 #     through lucent --mode=gringo|clasp.
-#  3. The SPARC robot-assistant programs against SPARC's recorded answers.
+#  3. Incremental mode: Lucent's and clingo's `#include <incmode>` cases (scripts/incmode_check.py).
+#  4. The SPARC robot-assistant programs against SPARC's recorded answers.
 # Exit status: non-zero when any check fails.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -41,6 +42,9 @@ for combo in lucent gringo-lucent lucent-clasp; do
   [ -z "$fixed" ] || { echo "now passing (remove from $known):"; echo "$fixed"; }
   echo "known failures still failing: $(comm -12 <(echo "$failed" | sed '/^$/d') <(grep -v '^#' "$known" | sort -u) | grep -c .)"
 done
+
+step "incremental mode (#include <incmode>): tests/data/incmode and clingo's app-incmode cases"
+python3 scripts/incmode_check.py --solver "$lucent" tests/data/incmode "$shared/data/clingo-tests/app-incmode" || status=1
 
 step "SPARC robot-assistant programs"
 python3 scripts/sparc_check.py "$lucent" "$shared/data/sparc" || status=1

@@ -201,3 +201,36 @@ fn every_profile_translates_every_scene() {
         }
     }
 }
+
+#[test]
+fn kb_full_switches_keep_or_change_the_tabletop_plans() {
+    let four = expected("tabletop.plans");
+    for switches in [
+        vec![("strict_positional", Value::Bool(true))],
+        vec![("sticky_support_fluents", Value::Bool(true))],
+        vec![("small_base_needs_large_top", Value::Bool(true))],
+        vec![("explanation_only_in_planning", Value::Bool(true))],
+        vec![("explanation_rule_base", Value::Bool(true))],
+        vec![("observations_as_facts", Value::Bool(true))],
+        vec![("stability_constraint", Value::Word("creation_only".into()))],
+    ] {
+        let mut overrides = switches.clone();
+        overrides.push(("horizon", Value::Int(3)));
+        let (_, models) = solve_scene("tabletop_task.ald", None, &overrides);
+        assert_eq!(plans(&models), four, "{switches:?}");
+    }
+    // Without the planning constraint the pitcher may also go onto the ball, the duck or the
+    // small can, with no exception needed.
+    let (_, models) = solve_scene(
+        "tabletop_task.ald",
+        None,
+        &[
+            ("horizon", Value::Int(3)),
+            ("stability_constraint", Value::Word("off".into())),
+        ],
+    );
+    let found = plans(&models);
+    assert_eq!(found.len(), 7, "{found:#?}");
+    assert!(four.is_subset(&found));
+    assert!(models.iter().all(|m| m.cr_applied.is_empty()));
+}

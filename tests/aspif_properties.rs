@@ -128,7 +128,7 @@ fn program() -> impl Strategy<Value = GroundProgram> {
                     .map(|(appl, label)| CrRule { appl, label })
                     .collect(),
                 prefers: Vec::new(),
-                origins: Vec::new(),
+                provenance: Default::default(),
             };
             if p.cr_rules.len() >= 2 {
                 p.prefers.push(Prefer {

@@ -71,10 +71,10 @@ fn cr_rules_get_application_atoms_labels_and_preferences() {
 #[test]
 fn provenance_is_parallel_and_printed() {
     let (g, sources) = run("n(1..2).\n{ p(X) } :- n(X).\nq(X) :- p(X), not r.\n", true);
-    assert_eq!(g.program.origins.len(), g.program.rules.len());
+    assert_eq!(g.program.provenance.num_rules(), g.program.rules.len());
     let out = text::write_text(&g, Some(&sources));
     assert!(
-        out.contains("% from rule at -:3:1 with X=2\nq(2):-p(2).\n"),
+        out.contains("% from rule at -:3:1 with X=2; grounding proved not r\nq(2):-p(2).\n"),
         "{out}"
     );
     assert!(out.contains("{p(1)}."), "{out}");

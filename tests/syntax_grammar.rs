@@ -25,7 +25,7 @@ const EXAMPLES: &[(&str, &str, &str)] = &[
     ("asp", "program", "a. b :- a."),
     ("asp", "statement", "a. :~ a. [1] #show a/0."),
     ("asp", "rule", "a. b :- a. :- not b."),
-    ("asp", "cr_rule", "a :+ b. r(X) : p(X) :+ q(X). :+ c."),
+    ("asp", "cr_rule", "a :+ b. r(X) : p(X) :+ q(X). :+ c. k : :+ d."),
     ("asp", "head", "a | b. {c}. 1 #sum { 1 : d }."),
     ("asp", "disjunction", "a | b ; c, d."),
     ("asp", "head_element", "p(X) : q(X) :- r."),
@@ -133,7 +133,11 @@ const EXAMPLES: &[(&str, &str, &str)] = &[
         "display_section",
         "sorts\n#s = {a}.\nrules\np(a).\ndisplay\np.\n#s(X).",
     ),
-    ("sparc", "sort_name", "sorts\n#_s1 = {a}."),
+    (
+        "sparc",
+        "sort_name",
+        "sorts\n#_s1 = {a}.\n#program = #_s1.\npredicates\np(#program).\nrules\np(X) :- #program(X).",
+    ),
     ("sparc", "sort_definition", "sorts\n#s = {a}.\n#t = #s."),
     ("sparc", "sort_expression", "sorts\n#s = {a} + {b} - {c}."),
     ("sparc", "sort_term", "sorts\n#s = {a, b} * {b}."),
@@ -146,8 +150,29 @@ const EXAMPLES: &[(&str, &str, &str)] = &[
     (
         "sparc",
         "record_sort",
-        "sorts\n#s = {a}.\n#r = pick(#s(X), #s(Y)) : X != Y.",
+        "sorts\n#s = {a}.\n#r = pick(#s(X), #s(Y)) : X != Y.\n#q = {b} + f(#s(X)) : X = a + {c}.",
     ),
+    (
+        "sparc",
+        "record_condition",
+        "sorts\n#s = 1..2.\n#r = f(#s(X), #s(Y)) : X < Y or X = 2.",
+    ),
+    (
+        "sparc",
+        "record_conjunction",
+        "sorts\n#s = 1..2.\n#r = f(#s(X), #s(Y)) : X <= Y and Y > 1, X != 0.",
+    ),
+    (
+        "sparc",
+        "record_comparison",
+        "sorts\n#s = 1..2.\n#r = f(#s(X), #s(Y)) : not(X = Y) and (X > Y or Y = 2).",
+    ),
+    (
+        "sparc",
+        "record_operand",
+        "sorts\n#s = 1..2.\n#r = f(#s(X)) : X != -1 and X < c.",
+    ),
+    ("sparc", "maxint", "#const n = 9.\n#maxint = n + 1.\nsorts\n#s = 1..2."),
     (
         "sparc",
         "record_argument",
@@ -166,7 +191,7 @@ const EXAMPLES: &[(&str, &str, &str)] = &[
     (
         "sparc",
         "display_item",
-        "sorts\n#s = {a}.\ndisplay\np.\n-q(X).\n#s(X).",
+        "sorts\n#s = {a}.\ndisplay\np.\n-q(X).\n#s(X).\n#s.",
     ),
 ];
 

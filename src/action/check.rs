@@ -197,24 +197,21 @@ pub fn check(desc: &Description, options: &Options) -> Checked {
             all_labels.entry(l.text.as_str()).or_default().push(i);
         }
     }
+    // Every profile's dropped labels must exist, chosen or not.
     let mut dropped: BTreeSet<String> = BTreeSet::new();
-    if let Some(profile) = &options.profile {
-        for s in statements {
-            if let StatementKind::Profile { name, items } = &s.kind {
-                if &name.text != profile {
-                    continue;
-                }
-                for item in items {
-                    if let ProfileItem::Drop(label) = item {
-                        if all_labels.contains_key(label.text.as_str()) {
-                            dropped.insert(label.text.clone());
-                        } else {
-                            err(
-                                &mut c.diagnostics,
-                                label.span,
-                                format!("unknown label `{}`", label.text),
-                            );
-                        }
+    for s in statements {
+        if let StatementKind::Profile { name, items } = &s.kind {
+            let chosen = options.profile.as_ref() == Some(&name.text);
+            for item in items {
+                if let ProfileItem::Drop(label) = item {
+                    if !all_labels.contains_key(label.text.as_str()) {
+                        err(
+                            &mut c.diagnostics,
+                            label.span,
+                            format!("unknown label `{}`", label.text),
+                        );
+                    } else if chosen {
+                        dropped.insert(label.text.clone());
                     }
                 }
             }
@@ -332,6 +329,32 @@ fn resolve_switches(desc: &Description, options: &Options, c: &mut Checked) {
             assign(c, name, value);
         }
     }
+    // Every profile's switch settings must name known switches with values of their type.
+    let known = c.switches.clone();
+    for s in &desc.statements {
+        if let StatementKind::Profile { items, .. } = &s.kind {
+            for item in items {
+                if let ProfileItem::Set { name, value } = item {
+                    match known.get(&name.text) {
+                        None => err(
+                            &mut c.diagnostics,
+                            name.span,
+                            format!("unknown switch `{}`", name.text),
+                        ),
+                        Some(old) if !same_type(old, value) => err(
+                            &mut c.diagnostics,
+                            name.span,
+                            format!(
+                                "switch `{}` takes values like `{old}`, not `{value}`",
+                                name.text
+                            ),
+                        ),
+                        Some(_) => {}
+                    }
+                }
+            }
+        }
+    }
     let mut found = options.profile.is_none();
     if let Some(profile) = &options.profile {
         for s in &desc.statements {
@@ -342,15 +365,25 @@ fn resolve_switches(desc: &Description, options: &Options, c: &mut Checked) {
                 found = true;
                 for item in items {
                     if let ProfileItem::Set { name, value } = item {
-                        assign(c, name, value);
+                        if known
+                            .get(&name.text)
+                            .is_some_and(|old| same_type(old, value))
+                        {
+                            c.switches.insert(name.text.clone(), value.clone());
+                        }
                     }
                 }
             }
         }
     }
     if !found {
-        let span = desc.statements.first().map(|s| s.span).unwrap_or_default();
-        let span = Span::new(span.file, span.start, span.start);
+        // At the start of the main file: included statements come before the main file's.
+        let file = desc
+            .statements
+            .last()
+            .map(|s| s.span.file)
+            .unwrap_or_default();
+        let span = Span::new(file, 0, 0);
         let mut known: Vec<&str> = desc
             .statements
             .iter()

@@ -21,7 +21,7 @@ pub use check::{check, Checked, Options};
 pub use parser::{parse, Parse};
 pub use translate::{translate, AxiomOrigin, OriginKind, Translation};
 
-use crate::base::{Diagnostic, FileId, SourceMap, Span};
+use crate::base::{Diagnostic, FileId, SourceMap};
 
 /// How deep `include`s may nest.
 pub const MAX_INCLUDE_DEPTH: usize = 16;
@@ -82,9 +82,4 @@ fn load_into(
         }
         out.description.statements.push(st);
     }
-}
-
-/// A span covering nothing at the start of a file, for diagnostics about the command line.
-pub fn start_of(file: FileId) -> Span {
-    Span::new(file, 0, 0)
 }

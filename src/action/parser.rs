@@ -247,6 +247,14 @@ impl<'a> Parser<'a> {
                 span: self.span(tok.start, tok.end),
                 text: self.word_of(tok).to_string(),
             })
+        } else if self.at(T::Ident) {
+            let span = self.span(self.tok.start, self.tok.end);
+            let msg = format!(
+                "syntax error, unexpected keyword {}, expecting <IDENTIFIER>",
+                self.cur()
+            );
+            self.diags.push(Diagnostic::error(span, msg));
+            Err(Failed)
         } else {
             Err(self.unexpected(&["<IDENTIFIER>"]))
         }

@@ -1113,3 +1113,84 @@ impl<'d> Translator<'d> {
         self.rule(&from, Head::None, b);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::base::FileId;
+
+    fn translate_text(text: &str) -> Translation {
+        let parsed = super::super::parse(FileId(0), text);
+        assert!(!parsed.has_errors(), "{:?}", parsed.diagnostics);
+        translate(&parsed.description, &Options::default())
+    }
+
+    const SMALL: &str = "sort s = {a, b}. inertial fluent f(s). defined fluent g(s). \
+                         action go(s). C1: go(I) causes f(I). S1: g(X) if f(X). \
+                         E1: impossible go(X) if f(X). goal f(a).";
+
+    #[test]
+    fn the_step_variable_avoids_the_descriptions_variables() {
+        let t = translate_text(SMALL);
+        assert!(!t.has_errors(), "{:?}", t.diagnostics);
+        let printed = crate::syntax::print(&t.program);
+        assert!(
+            printed.contains(
+                "holds(f(I), I' + 1) :- occurs(go(I), I'), s(I), step(I'), I' < horizon."
+            ),
+            "{printed}"
+        );
+    }
+
+    #[test]
+    fn every_statement_has_an_origin_of_its_kind() {
+        let t = translate_text(SMALL);
+        assert_eq!(t.program.statements.len(), t.origins.len());
+        let kind_of = |label: &str| -> Vec<OriginKind> {
+            t.origins
+                .iter()
+                .filter(|o| o.label.as_deref() == Some(label))
+                .map(|o| o.kind)
+                .collect()
+        };
+        assert_eq!(kind_of("C1"), vec![OriginKind::CausalLaw]);
+        assert_eq!(kind_of("S1"), vec![OriginKind::StateConstraint]);
+        assert_eq!(kind_of("E1"), vec![OriginKind::ExecutabilityCondition]);
+        let c1 = t
+            .origins
+            .iter()
+            .find(|o| o.label.as_deref() == Some("C1"))
+            .unwrap();
+        assert_eq!(c1.text, "go(I) causes f(I)");
+        assert_eq!(c1.statement, Some(4));
+        // Spans of generated statements are the AL_d statement's.
+        let k = t
+            .origins
+            .iter()
+            .position(|o| o.label.as_deref() == Some("C1"))
+            .unwrap();
+        assert_eq!(Some(t.program.statements[k].span), c1.span);
+        for kind in [
+            OriginKind::Inertia,
+            OriginKind::Cwa,
+            OriginKind::History,
+            OriginKind::Planning,
+            OriginKind::Signature,
+        ] {
+            assert!(t.origins.iter().any(|o| o.kind == kind), "{kind:?}");
+        }
+    }
+
+    #[test]
+    fn no_planning_module_without_a_goal_or_when_switched_off() {
+        let t = translate_text("sort s = {a}. inertial fluent f(s). action go(s).");
+        assert!(!t.origins.iter().any(|o| o.kind == OriginKind::Planning));
+        let parsed = super::super::parse(FileId(0), SMALL);
+        let options = Options {
+            profile: None,
+            overrides: vec![("planning".into(), Value::Bool(false))],
+        };
+        let t = translate(&parsed.description, &options);
+        assert!(!t.origins.iter().any(|o| o.kind == OriginKind::Planning));
+    }
+}

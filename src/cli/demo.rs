@@ -6,16 +6,16 @@
 //! prints the minimal plans as numbered action sequences. Later issues add execution in the
 //! simulated world, learning and explanations here.
 //!
-//! Invariant: the demo uses only library entry points (parse, ground, solve, check), so it
-//! exercises exactly what users of the command line get.
+//! Invariant: the demo is a client of `control::Control` (the library's front door) and of the
+//! independent model check, so it exercises exactly what users of the library get; plans are
+//! read from `occurs(Action, Step)` atoms as structured terms.
 
 use std::io::Write;
 use std::time::Instant;
 
-use crate::base::{Diagnostics, SourceMap};
-use crate::ground::{self, GroundConfig};
+use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol};
 use crate::solve::{self, Config};
-use crate::syntax::{self, ast::Dialect};
+use crate::syntax::ast::Dialect;
 
 /// The built-in program.
 const TABLETOP: &str = include_str!("../../domains/tabletop/tabletop.lp");
@@ -31,16 +31,12 @@ stable-model check. With --program, runs the same on another planning program wh
 sets contain occurs(Action, Step) atoms.
 ";
 
-/// One plan: actions sorted by step.
-fn plan_of(symbols: &[String]) -> Vec<(i64, String)> {
-    let mut steps: Vec<(i64, String)> = symbols
+/// One plan: `occurs(Action, Step)` atoms of an answer set, as (step, action) sorted by step.
+fn plan_of(atoms: &[Symbol]) -> Vec<(i64, Symbol)> {
+    let mut steps: Vec<(i64, Symbol)> = atoms
         .iter()
-        .filter_map(|s| {
-            let inner = s.strip_prefix("occurs(")?.strip_suffix(')')?;
-            let comma = inner.rfind(',')?;
-            let step = inner[comma + 1..].parse().ok()?;
-            Some((step, inner[..comma].to_string()))
-        })
+        .filter(|a| a.is("occurs", 2) && !a.is_negative())
+        .filter_map(|a| Some((i64::from(a.args()[1].as_number()?), a.args()[0].clone())))
         .collect();
     steps.sort();
     steps
@@ -80,30 +76,54 @@ pub fn run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io
     }
 
     let start = Instant::now();
-    let mut sources = SourceMap::new();
-    let file = sources.add(name.clone(), text);
-    let parse = syntax::parse(file, &sources.get(file).text, Dialect::Clingo);
-    let mut diags = Diagnostics::default();
-    diags.extend(parse.diagnostics.clone());
-    if diags.has_errors() {
-        write!(err, "{}", diags.render(&sources))?;
-        return Ok(super::EXIT_INPUT);
-    }
-    let grounding = ground::ground(&parse.program, Some(&sources), &GroundConfig::default());
-    write!(err, "{}", grounding.diagnostics.render(&sources))?;
-    if grounding.diagnostics.has_errors() {
-        return Ok(super::EXIT_INPUT);
-    }
-    let ground_time = start.elapsed();
-    let program = &grounding.program;
-    let config = Config {
-        models: 0,
-        check_models: true,
-        ..Config::default()
+    let config = ControlConfig {
+        solve: Config {
+            models: 0,
+            check_models: true,
+            ..Config::default()
+        },
+        dialect: Some(Dialect::Clingo),
+        ..ControlConfig::default()
     };
-    let mut solver = solve::Solver::new(program, config);
-    let result = solver.solve();
+    let mut control = Control::new(config);
+    let grounded = control
+        .add(&name, &text)
+        .and_then(|()| control.ground(&[Part::base()]));
+    if let Err(e) = grounded {
+        write!(err, "{}", e.message)?;
+        return Ok(super::EXIT_INPUT);
+    }
+    write!(
+        err,
+        "{}",
+        control.take_diagnostics().render(control.sources())
+    )?;
+    let ground_time = start.elapsed();
+    let (num_atoms, num_rules, num_cr) = {
+        let p = control.program();
+        (p.num_atoms, p.rules.len(), p.cr_rules.len())
+    };
+    let mut plans: Vec<Vec<(i64, Symbol)>> = Vec::new();
+    let mut models: Vec<(usize, Vec<u32>)> = Vec::new();
+    let result = control.solve(&SolveOptions::default(), |m| {
+        models.push((m.number(), m.raw().atoms.clone()));
+        let plan = plan_of(&m.atoms());
+        if !plans.contains(&plan) {
+            plans.push(plan);
+        }
+        true
+    });
     let total = start.elapsed();
+    for (number, atoms) in &models {
+        if let Err(why) = solve::check::check(control.program(), atoms) {
+            writeln!(
+                err,
+                "lucent demo: answer set {number} failed the stable-model check: {why}"
+            )?;
+            return Ok(super::EXIT_UNAVAILABLE);
+        }
+    }
+    plans.sort();
 
     writeln!(out, "Lucent demo: the robot-assistant tabletop task")?;
     writeln!(out, "  program : {name}")?;
@@ -114,27 +134,11 @@ pub fn run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io
     writeln!(
         out,
         "  ground  : {} atoms, {} rules, {} CR rule instances ({:.3}s)",
-        program.num_atoms,
-        program.rules.len(),
-        program.cr_rules.len(),
+        num_atoms,
+        num_rules,
+        num_cr,
         ground_time.as_secs_f64()
     )?;
-    let mut plans: Vec<Vec<(i64, String)>> = Vec::new();
-    for model in &result.models {
-        if let Err(why) = solve::check::check(program, &model.atoms) {
-            writeln!(
-                err,
-                "lucent demo: answer set {} failed the stable-model check: {why}",
-                model.number
-            )?;
-            return Ok(super::EXIT_UNAVAILABLE);
-        }
-        let plan = plan_of(&model.symbols);
-        if !plans.contains(&plan) {
-            plans.push(plan);
-        }
-    }
-    plans.sort();
     match result.outcome {
         solve::Outcome::Unsatisfiable => writeln!(out, "\nNo plan within the horizon.")?,
         solve::Outcome::Unknown => writeln!(out, "\nThe search stopped before an answer.")?,
@@ -158,7 +162,7 @@ pub fn run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io
         total.as_secs_f64(),
         result.stats.conflicts,
         result.stats.choices,
-        result.models.len(),
+        result.models,
         if result.exhausted { "" } else { "+" }
     )?;
     Ok(demo_exit_code(result.outcome, plans.len()))
@@ -182,13 +186,21 @@ mod tests {
 
     #[test]
     fn plans_are_read_from_occurs_atoms() {
-        let symbols = vec![
-            "occurs(pickup(rob1,a),1)".to_string(),
-            "occurs(putdown(rob1,b,table),0)".to_string(),
-            "goal(3)".to_string(),
-        ];
+        let atoms: Vec<Symbol> = [
+            "occurs(pickup(rob1,a),1)",
+            "occurs(putdown(rob1,b,table),0)",
+            "-occurs(pickup(rob1,b),0)",
+            "goal(3)",
+        ]
+        .iter()
+        .map(|s| Symbol::parse(s).unwrap())
+        .collect();
+        let plan: Vec<(i64, String)> = plan_of(&atoms)
+            .into_iter()
+            .map(|(i, a)| (i, a.to_string()))
+            .collect();
         assert_eq!(
-            plan_of(&symbols),
+            plan,
             vec![
                 (0, "putdown(rob1,b,table)".to_string()),
                 (1, "pickup(rob1,a)".to_string())

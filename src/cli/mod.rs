@@ -19,11 +19,12 @@ pub mod report;
 use std::io::{Read, Write};
 use std::time::{Duration, Instant};
 
+use crate::control::{Control, ControlConfig, Part, SolveOptions};
 use crate::ground::{self, GroundProgram};
 use crate::solve;
 
 use crate::base::{Diagnostics, SourceMap};
-use crate::syntax::ast::{Dialect, Program};
+use crate::syntax::ast::Dialect;
 use options::{Options, UsageError};
 
 /// Exit code: a model was found.
@@ -45,7 +46,25 @@ pub const EXIT_USAGE: i32 = 1;
 
 /// Runs the command line on the process's arguments and standard streams, and returns the exit
 /// code.
+///
+/// The run happens on a thread with a large stack ([`MAIN_STACK`]): the grounder's join recurses
+/// once per body literal, so a rule with 20,000 body literals overflowed the default 8 MiB main
+/// stack. The memory is reserved, not committed: only the depth a program reaches is used.
 pub fn main() -> i32 {
+    std::thread::Builder::new()
+        .name("lucent".into())
+        .stack_size(MAIN_STACK)
+        .spawn(main_on_this_thread)
+        .ok()
+        .and_then(|t| t.join().ok())
+        .unwrap_or(EXIT_UNAVAILABLE)
+}
+
+/// Stack size of the thread that runs the command line: 4 GiB of address space, enough for a
+/// rule with millions of body literals.
+pub const MAIN_STACK: usize = 4 << 30;
+
+fn main_on_this_thread() -> i32 {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let stdin = std::io::stdin();
     let stdout = std::io::stdout();
@@ -73,8 +92,11 @@ pub fn run(args: &[String], stdin: &mut dyn Read, out: &mut dyn Write, err: &mut
     match run_io(args, &mut io) {
         Ok(code) => code,
         Err(e) => {
-            // Writing to a closed pipe (e.g. `lucent ... | head`) is not an error of the input.
-            let _ = writeln!(io.err, "*** ERROR: (lucent): {e}");
+            // Writing to a closed pipe (e.g. `lucent ... | head`) is not an error of the input,
+            // and the reader has gone: stop without a message, as clingo does.
+            if e.kind() != std::io::ErrorKind::BrokenPipe {
+                let _ = writeln!(io.err, "*** ERROR: (lucent): {e}");
+            }
             EXIT_UNAVAILABLE
         }
     }
@@ -158,64 +180,6 @@ fn dialect_of(options: &Options, name: &str, text: &str) -> Dialect {
     }
 }
 
-/// The parsed inputs of a run.
-pub struct Parsed {
-    /// Every input file's text, for diagnostics.
-    pub sources: SourceMap,
-    /// One syntax tree per input, in command-line order.
-    pub programs: Vec<Program>,
-    /// The inputs' names as given.
-    pub names: Vec<String>,
-}
-
-/// Reads and parses every input. On errors, prints the diagnostics and returns the exit code.
-fn read_and_parse(
-    options: &Options,
-    io: &mut Io,
-    diags: &mut Diagnostics,
-) -> std::io::Result<Result<Parsed, i32>> {
-    let mut sources = SourceMap::new();
-    let (loaded, load_diags) = input::load(&options.files, io.stdin, &mut sources);
-    diags.extend(load_diags);
-    let mut programs = Vec::new();
-    for input in &loaded {
-        if input.name.ends_with(".ald") {
-            // AL_d: translated to a CR-Prolog syntax tree, then solved like any program.
-            if let Some(t) = action::translate_input(
-                &mut sources,
-                input.file,
-                options.profile.as_deref(),
-                &options.consts,
-                diags,
-            ) {
-                programs.push(t.program);
-            }
-            continue;
-        }
-        let text = &sources.get(input.file).text;
-        let dialect = dialect_of(options, &input.name, text);
-        let parse = crate::syntax::parse(input.file, text, dialect);
-        diags.extend(parse.diagnostics);
-        // Reading included files is I/O, so the command line supplies the loader.
-        let mut load =
-            |path: &std::path::Path| std::fs::read_to_string(path).map_err(|e| e.to_string());
-        let program =
-            ground::include::resolve_includes(&parse.program, &mut sources, diags, &mut load);
-        programs.push(program);
-    }
-    if diags.has_errors() {
-        flush_diagnostics(io, diags, &sources)?;
-        writeln!(io.err, "*** ERROR: (lucent): parsing failed")?;
-        return Ok(Err(EXIT_INPUT));
-    }
-    let names = loaded.into_iter().map(|i| i.name).collect();
-    Ok(Ok(Parsed {
-        sources,
-        programs,
-        names,
-    }))
-}
-
 /// Parses `-c name=value` values as terms (through the parser, as `#const name = value.`).
 fn const_terms(
     options: &Options,
@@ -223,17 +187,7 @@ fn const_terms(
 ) -> std::io::Result<Result<Vec<(String, crate::syntax::ast::Term)>, i32>> {
     let mut out = Vec::new();
     for (name, value) in &options.consts {
-        let mut sources = SourceMap::new();
-        let text = format!("#const {name} = {value}.");
-        let file = sources.add("<cmd>", text.clone());
-        let parse = crate::syntax::parse(file, &text, Dialect::Clingo);
-        let term = parse.program.statements.iter().find_map(|s| match &s.kind {
-            crate::syntax::ast::StatementKind::Const(c) if !parse.has_errors() => {
-                Some(c.value.clone())
-            }
-            _ => None,
-        });
-        match term {
+        match crate::control::const_term(value) {
             Some(t) => out.push((name.clone(), t)),
             None => {
                 return usage_error(
@@ -296,8 +250,47 @@ fn solve_config(
     }
 }
 
-/// Solves `program` and prints the result as clingo does; returns the exit code. The solver
-/// takes the program (no copy is kept beside it unless `--check` needs the original).
+/// Prints a solve call's result as clingo does and checks the models with `--check`; returns
+/// the exit code.
+fn report_result(
+    options: &Options,
+    io: &mut Io,
+    result: &solve::SolveResult,
+    context: report::Context,
+    original: Option<&GroundProgram>,
+    start: Instant,
+) -> std::io::Result<i32> {
+    let mut rep = report::Report::new(result, context);
+    rep.times.total = start.elapsed().as_secs_f64();
+    rep.times.cpu = report::process_cpu_seconds().unwrap_or(rep.times.total);
+    if options.stats > 0 {
+        rep.stats = Some(result.stats.clone());
+    }
+    let quiet = report::Quiet::from_levels(options.quiet);
+    match options.outf {
+        options::OutputFormat::Text => {
+            report::write_text_verbose(io.out, &rep, quiet, options.verbose)?
+        }
+        options::OutputFormat::Json => report::write_json(io.out, &rep, quiet)?,
+    }
+    if let Some(program) = original {
+        for model in &result.models {
+            if let Err(why) = solve::check::check(program, &model.atoms) {
+                writeln!(
+                    io.err,
+                    "*** ERROR: (lucent): --check: model {} is not a stable model: {why}",
+                    model.number
+                )?;
+                return Ok(EXIT_UNAVAILABLE);
+            }
+        }
+    }
+    Ok(rep.exit_code())
+}
+
+/// Solves `program` with a solver of its own (`--mode=clasp`) and prints the result; returns
+/// the exit code. The solver takes the program (no copy is kept beside it unless `--check`
+/// needs the original).
 fn solve_and_report(
     options: &Options,
     io: &mut Io,
@@ -311,32 +304,36 @@ fn solve_and_report(
     let original = options.check.then(|| program.clone());
     let mut solver = solve::Solver::from_program(program, config);
     let result = solver.solve();
-    let mut rep = report::Report::new(&result, context);
-    rep.times.total = start.elapsed().as_secs_f64();
-    rep.times.cpu = report::process_cpu_seconds().unwrap_or(rep.times.total);
-    if options.stats > 0 {
-        rep.stats = Some(result.stats.clone());
-    }
-    let quiet = report::Quiet::from_levels(options.quiet);
-    match options.outf {
-        options::OutputFormat::Text => {
-            report::write_text_verbose(io.out, &rep, quiet, options.verbose)?
-        }
-        options::OutputFormat::Json => report::write_json(io.out, &rep, quiet)?,
-    }
-    if let Some(program) = &original {
-        for model in &result.models {
-            if let Err(why) = solve::check::check(program, &model.atoms) {
-                writeln!(
-                    io.err,
-                    "*** ERROR: (lucent): --check: model {} is not a stable model: {why}",
-                    model.number
-                )?;
-                return Ok(EXIT_UNAVAILABLE);
-            }
-        }
-    }
-    Ok(rep.exit_code())
+    report_result(options, io, &result, context, original.as_ref(), start)
+}
+
+/// Solves the control's program once and prints the result as clingo does.
+fn solve_control(
+    options: &Options,
+    io: &mut Io,
+    control: &mut Control,
+    inputs: Vec<String>,
+    start: Instant,
+    deadline: Option<Instant>,
+) -> std::io::Result<i32> {
+    let config = solve_config(options, control.program(), deadline);
+    let context = report::Context::for_program(control.program(), &config, inputs);
+    let original = options.check.then(|| control.program().clone());
+    *control.solve_config_mut() = config;
+    let mut models = Vec::new();
+    let summary = control.solve(&SolveOptions::default(), |m| {
+        models.push(m.raw().clone());
+        true
+    });
+    let result = solve::SolveResult {
+        models,
+        outcome: summary.outcome,
+        exhausted: summary.exhausted,
+        optimum_proven: summary.optimum_proven,
+        stop: summary.stop,
+        stats: summary.stats,
+    };
+    report_result(options, io, &result, context, original.as_ref(), start)
 }
 
 /// After an error in the input (diagnostics already on standard error), clingo still prints
@@ -383,79 +380,194 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
         Ok(c) => c,
         Err(code) => return Ok(code),
     };
-    let parsed = match read_and_parse(options, io, &mut diags)? {
-        Ok(p) => p,
-        Err(code) => return input_error_report(options, io, start, code),
-    };
-    flush_diagnostics(io, &diags, &parsed.sources)?;
-    let config = ground::GroundConfig {
+    let mut sources = SourceMap::new();
+    let (loaded, load_diags) = input::load(&options.files, io.stdin, &mut sources);
+    diags.extend(load_diags);
+    let config = ControlConfig {
         consts,
         deadline,
         provenance: options.provenance,
-        message_limit: Some(options.message_limit),
-        ..ground::GroundConfig::default()
+        message_limit: options.message_limit,
+        disabled_warnings: options.disabled_warnings.clone(),
+        ..ControlConfig::default()
     };
+    let mut control = Control::with_sources(config, sources);
     // All inputs form one program, as gringo reads several files.
-    let mut program = Program {
-        dialect: parsed
-            .programs
-            .first()
-            .map(|p| p.dialect)
-            .unwrap_or_default(),
-        statements: Vec::new(),
-    };
-    for p in parsed.programs {
-        program.statements.extend(p.statements);
+    for input in &loaded {
+        if input.name.ends_with(".ald") {
+            // AL_d: translated to a CR-Prolog syntax tree, then solved like any program.
+            if let Some(t) = action::translate_input(
+                control.sources_mut(),
+                input.file,
+                options.profile.as_deref(),
+                &options.consts,
+                &mut diags,
+            ) {
+                if let Err(e) = control.add_program(t.program) {
+                    diags.extend(e.diagnostics.items().iter().cloned());
+                }
+            }
+            continue;
+        }
+        let text = &control.sources().get(input.file).text;
+        let dialect = dialect_of(options, &input.name, text);
+        if let Err(e) = control.add_file(input.file, Some(dialect)) {
+            diags.extend(e.diagnostics.items().iter().cloned());
+        }
+        diags.extend(control.take_diagnostics().items().iter().cloned());
     }
-    let mut grounding = ground::ground(&program, Some(&parsed.sources), &config);
-    for kind in &options.disabled_warnings {
-        grounding.diagnostics.disable(*kind);
-    }
-    let shown: Vec<_> = grounding
-        .diagnostics
-        .items()
-        .iter()
-        .filter(|d| {
-            d.is_error()
-                || d.kind
-                    .is_none_or(|k| !options.disabled_warnings.contains(&k))
-        })
-        .cloned()
-        .collect();
-    let mut filtered = diagnostics_for(options);
-    filtered.extend(shown);
-    flush_diagnostics(io, &filtered, &parsed.sources)?;
-    if grounding.diagnostics.has_errors() {
-        writeln!(
-            io.err,
-            "*** ERROR: (lucent): grounding stopped because of errors"
-        )?;
+    if diags.has_errors() {
+        flush_diagnostics(io, &diags, control.sources())?;
+        writeln!(io.err, "*** ERROR: (lucent): parsing failed")?;
         return input_error_report(options, io, start, EXIT_INPUT);
     }
+    flush_diagnostics(io, &diags, control.sources())?;
+    let names: Vec<String> = loaded.into_iter().map(|i| i.name).collect();
+    if control.incmode() && options.mode != options::Mode::Gringo {
+        return run_incmode(options, io, &mut control, names, start, deadline);
+    }
+    if let Err(e) = control.ground(&[Part::base()]) {
+        return grounding_failed(options, io, &control, e, start);
+    }
+    flush_control_diagnostics(options, io, &mut control)?;
     match options.mode {
         options::Mode::Gringo => {
+            let grounding = control.take_grounding();
             match options.ground_format {
                 options::GroundFormat::Aspif => {
                     ground::aspif::write_program_to(&grounding.program, &mut *io.out)?
                 }
                 options::GroundFormat::Text => {
-                    let sources = options.provenance.then_some(&parsed.sources);
+                    let sources = options.provenance.then_some(control.sources());
                     write!(io.out, "{}", ground::text::write_text(&grounding, sources))?
                 }
             }
             Ok(0)
         }
-        _ => {
-            // Only the ground program is needed from here on: free the parse tree and the
-            // grounder's tables before the solver is built.
-            let ground_program = std::mem::take(&mut grounding.program);
-            drop(grounding);
-            drop(program);
-            // Named as clingo names them: no file given is `stdin`, an explicit `-` stays `-`.
-            let inputs = options.files.clone();
-            solve_and_report(options, io, ground_program, inputs, start, deadline)
-        }
+        // Named as clingo names them: no file given is `stdin`, an explicit `-` stays `-`.
+        _ => solve_control(
+            options,
+            io,
+            &mut control,
+            options.files.clone(),
+            start,
+            deadline,
+        ),
     }
+}
+
+/// Prints the warnings a control collected, with the message limit of the options.
+fn flush_control_diagnostics(
+    options: &Options,
+    io: &mut Io,
+    control: &mut Control,
+) -> std::io::Result<()> {
+    let mut shown = diagnostics_for(options);
+    shown.extend(control.take_diagnostics().items().iter().cloned());
+    flush_diagnostics(io, &shown, control.sources())
+}
+
+/// Prints a failed grounding's diagnostics; returns the exit code.
+fn grounding_failed(
+    options: &Options,
+    io: &mut Io,
+    control: &Control,
+    e: crate::control::Error,
+    start: Instant,
+) -> std::io::Result<i32> {
+    let mut shown = diagnostics_for(options);
+    shown.extend(e.diagnostics.items().iter().cloned());
+    flush_diagnostics(io, &shown, control.sources())?;
+    writeln!(
+        io.err,
+        "*** ERROR: (lucent): grounding stopped because of errors"
+    )?;
+    input_error_report(options, io, start, EXIT_INPUT)
+}
+
+/// clingo's incremental mode (`#include <incmode>.`): one `Solving...` and its answers per
+/// step, then the last step's result and the totals, as clingo prints them.
+fn run_incmode(
+    options: &Options,
+    io: &mut Io,
+    control: &mut Control,
+    names: Vec<String>,
+    start: Instant,
+    deadline: Option<Instant>,
+) -> std::io::Result<i32> {
+    let config = solve_config(options, control.program(), deadline);
+    *control.solve_config_mut() = config;
+    let quiet = report::Quiet::from_levels(options.quiet);
+    let reading = match names.as_slice() {
+        [] => "stdin".to_string(),
+        [one] => one.clone(),
+        [first, ..] => format!("{first} ..."),
+    };
+    writeln!(
+        io.out,
+        "lucent version {}\nReading from {reading}",
+        env!("CARGO_PKG_VERSION"),
+    )?;
+    // Quiet level 0 prints every model, 1 the last model of each step, 2 none.
+    let model_text = |m: &crate::control::Model<'_>| {
+        let mut text = format!("Answer: {}\n{}\n", m.number(), m.raw().symbols.join(" "));
+        if !m.costs().is_empty() {
+            let costs: Vec<String> = m.costs().iter().map(i64::to_string).collect();
+            text.push_str(&format!("Optimization: {}\n", costs.join(" ")));
+        }
+        text
+    };
+    let out = &mut *io.out;
+    let mut failed: Option<std::io::Error> = None;
+    let mut last_model: Option<String> = None;
+    let mut write = |text: &str, failed: &mut Option<std::io::Error>| {
+        if failed.is_none() {
+            if let Err(e) = out.write_all(text.as_bytes()) {
+                *failed = Some(e);
+            }
+        }
+    };
+    use crate::control::incmode::{self, Event};
+    let result = incmode::run(control, |event| {
+        match event {
+            Event::Solving(_) => {
+                if let Some(t) = last_model.take() {
+                    write(&t, &mut failed);
+                }
+                write("Solving...\n", &mut failed);
+            }
+            Event::Model(_, m) => match quiet.models {
+                0 => write(&model_text(m), &mut failed),
+                1 => last_model = Some(model_text(m)),
+                _ => {}
+            },
+        }
+        failed.is_none()
+    });
+    if let Some(t) = last_model.take() {
+        write(&t, &mut failed);
+    }
+    if let Some(e) = failed {
+        return Err(e);
+    }
+    let summary = match result {
+        Ok(s) => s,
+        Err(e) => return grounding_failed(options, io, control, e, start),
+    };
+    flush_control_diagnostics(options, io, control)?;
+    let (word, code) = match &summary.last {
+        Some(s) if s.outcome == solve::Outcome::Optimum => ("OPTIMUM FOUND", EXIT_EXHAUSTED),
+        Some(s) if s.is_satisfiable() && s.exhausted => ("SATISFIABLE", EXIT_EXHAUSTED),
+        Some(s) if s.is_satisfiable() => ("SATISFIABLE", EXIT_SAT),
+        Some(s) if s.is_unsatisfiable() => ("UNSATISFIABLE", EXIT_UNSAT),
+        _ => ("UNKNOWN", EXIT_INTERRUPTED),
+    };
+    writeln!(io.out, "{word}\n")?;
+    writeln!(io.out, "Models       : {}", summary.models)?;
+    writeln!(io.out, "Calls        : {}", summary.calls)?;
+    let total = start.elapsed().as_secs_f64();
+    writeln!(io.out, "Time         : {total:.3}s")?;
+    Ok(code)
 }
 
 /// `--mode=clasp`: reads aspif (gringo's output) and solves it.

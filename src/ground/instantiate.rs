@@ -33,13 +33,15 @@ use crate::base::{Diagnostic, Diagnostics, SourceMap, Span, WarningKind};
 use crate::syntax::ast::{AggregateFunction, CmpOp, Sign};
 
 use super::program::{
-    Body, ExternalValue, HeadKind, HeuristicModifier, Lit, Origin, Rule, Rules, Weight,
+    AuxKind, Bindings, Body, DeadReason, DeadRule, ExternalValue, HeadKind, HeuristicModifier, Lit,
+    Origin, RemovedLit, Rule, RuleOrigin, Rules, Weight,
 };
 use super::rewrite::{
     lit_vars, Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
 };
 use super::symbol::{SymData, SymId, Symbols};
 use super::term::{Binding, NTerm};
+use crate::base::intern::Sym;
 
 /// Internal atom id, `1..`.
 pub type AtomId = u32;
@@ -141,8 +143,19 @@ pub struct Grounder<'a> {
     domains: Vec<Domain>,
     /// Ground rules over internal ids, stored flat (a program may ground to millions).
     pub rules: Rules,
-    /// Origins parallel to `rules` (when provenance is on).
+    /// Origins parallel to `rules` (when provenance is on): the first instance of each rule.
     pub origins: Vec<Origin>,
+    /// Further origins of rules that several instances ground to (when provenance is on).
+    pub more_origins: HashMap<u32, Vec<Origin>>,
+    /// Provenance: the statement being grounded.
+    prov_stmt: ProvStmt,
+    /// Provenance: the auxiliary being built (its kind and the bindings when it started).
+    prov_aux: Option<(AuxKind, Bindings)>,
+    /// Provenance: instances dropped during instantiation because a fact among their heads
+    /// satisfies them (`simplify` keeps those with a head atom that ends up false).
+    pub dead: Vec<DeadRule>,
+    /// Provenance: the origins of each minimize element's conditions, parallel to `minimize`.
+    pub minimize_origins: HashMap<MinKey, Vec<Vec<Origin>>>,
     /// Deduplication of `rules`.
     rule_set: HashTable<u32>,
     /// Hash of each rule in `rules` (so that growing `rule_set` does not rehash rules).
@@ -190,6 +203,20 @@ pub struct Grounder<'a> {
     naive: bool,
     /// Computing a naive component's domain: aggregates over its predicates are assumed true.
     optimistic: bool,
+}
+
+/// A join continuation.
+type Cont<'k, 'a> = &'k mut dyn FnMut(&mut Grounder<'a>, &mut Ctx);
+
+/// The statement being grounded, for provenance.
+#[derive(Default)]
+struct ProvStmt {
+    /// Its index.
+    stmt: u32,
+    /// Set when the statement is itself part of another's translation.
+    aux: Option<AuxKind>,
+    /// Its variable names (`None` for the rewriting's own variables).
+    names: Vec<Option<Sym>>,
 }
 
 /// Per-statement join state.
@@ -297,6 +324,11 @@ impl<'a> Grounder<'a> {
             domains,
             rules: Rules::new(),
             origins: Vec::new(),
+            more_origins: HashMap::new(),
+            prov_stmt: ProvStmt::default(),
+            prov_aux: None,
+            minimize_origins: HashMap::new(),
+            dead: Vec::new(),
             rule_set: HashTable::new(),
             rule_hashes: Vec::new(),
             hasher: hashbrown::DefaultHashBuilder::default(),
@@ -425,8 +457,9 @@ impl<'a> Grounder<'a> {
         self.rule_hashes = Vec::new();
     }
 
-    /// Adds a ground rule unless an equal one exists; returns its index if added.
-    fn add_rule(&mut self, rule: Rule, origin: impl FnOnce() -> Origin) -> bool {
+    /// Adds a ground rule unless an equal one exists; returns whether it was added. With
+    /// provenance, `origin` is recorded for the rule, also when it existed already.
+    fn add_rule(&mut self, rule: Rule, origin: impl FnOnce(&mut Self) -> Origin) -> bool {
         assert_eq!(
             self.rule_hashes.len(),
             self.rules.len(),
@@ -435,18 +468,19 @@ impl<'a> Grounder<'a> {
         let rule = rule.as_ref();
         let hash = self.hasher.hash_one(rule);
         let rules = &self.rules;
-        if self
-            .rule_set
-            .find(hash, |&i| rules.get(i as usize) == rule)
-            .is_some()
-        {
+        if let Some(&i) = self.rule_set.find(hash, |&i| rules.get(i as usize) == rule) {
+            if self.provenance {
+                let o = origin(self);
+                self.add_origin(i, o);
+            }
             return false;
         }
         let idx = self.rules.len() as u32;
         self.rules.push_ref(rule);
         self.rule_hashes.push(hash);
         if self.provenance {
-            self.origins.push(origin());
+            let o = origin(self);
+            self.origins.push(o);
         }
         let hashes = &self.rule_hashes;
         self.rule_set
@@ -464,23 +498,131 @@ impl<'a> Grounder<'a> {
         true
     }
 
-    fn origin(&self, stmt: &NStmt, b: &Binding) -> Origin {
-        Origin {
-            rule: stmt.stmt,
-            bindings: (0..stmt.num_vars)
-                .filter_map(|v| {
-                    b.get(v)
-                        .filter(|_| {
-                            !self
-                                .syms
-                                .names
-                                .resolve(stmt.var_names[v as usize])
-                                .starts_with('#')
-                        })
-                        .map(|s| (stmt.var_names[v as usize].0, s.0))
-                })
-                .collect(),
+    /// Records one more origin for rule `i` (unless it has that origin already).
+    fn add_origin(&mut self, i: u32, o: Origin) {
+        if self.origins[i as usize] == o {
+            return;
         }
+        let more = self.more_origins.entry(i).or_default();
+        if !more.contains(&o) {
+            more.push(o);
+        }
+    }
+
+    /// With provenance: records `origin` for an existing rule equal to `rule`, if there is one
+    /// (an instance satisfied by a fact that grounds to that fact's rule).
+    fn attach_origin(&mut self, rule: Rule, origin: impl FnOnce(&mut Self) -> Origin) {
+        if !self.provenance {
+            return;
+        }
+        let rule = rule.as_ref();
+        let hash = self.hasher.hash_one(rule);
+        let rules = &self.rules;
+        if let Some(&i) = self.rule_set.find(hash, |&i| rules.get(i as usize) == rule) {
+            let o = origin(self);
+            self.add_origin(i, o);
+        }
+    }
+
+    /// Adds an auxiliary rule of the statement being grounded, recorded as an auxiliary of
+    /// `kind` unless a construct (aggregate, condition, ...) or the statement says otherwise.
+    fn add_aux_rule(&mut self, rule: Rule, kind: AuxKind) -> bool {
+        self.add_rule(rule, |g| g.aux_origin(kind))
+    }
+
+    fn aux_origin(&self, kind: AuxKind) -> Origin {
+        let (kind, bindings) = match &self.prov_aux {
+            Some((k, b)) => (self.prov_stmt.aux.unwrap_or(*k), b.clone()),
+            None => (self.prov_stmt.aux.unwrap_or(kind), Vec::new()),
+        };
+        Origin {
+            rule: RuleOrigin::Auxiliary {
+                of_stmt: self.prov_stmt.stmt,
+                kind,
+                bindings,
+            },
+            removed: Vec::new(),
+        }
+    }
+
+    /// The bindings of the statement being grounded under `b` (provenance).
+    fn bindings(&self, b: &Binding) -> Bindings {
+        self.prov_stmt
+            .names
+            .iter()
+            .enumerate()
+            .filter_map(|(v, name)| {
+                let name = (*name)?;
+                b.get(v as u32).map(|s| (name.0, s.0))
+            })
+            .collect()
+    }
+
+    /// Enters an auxiliary construct of `kind` (provenance on and none entered yet): returns
+    /// what to restore with [`Grounder::leave_aux`].
+    fn enter_aux(&mut self, kind: AuxKind, b: &Binding) -> Option<Option<(AuxKind, Bindings)>> {
+        if !self.provenance || self.prov_aux.is_some() {
+            return None;
+        }
+        let bindings = self.bindings(b);
+        Some(self.prov_aux.replace((kind, bindings)))
+    }
+
+    fn leave_aux(&mut self, saved: Option<Option<(AuxKind, Bindings)>>) {
+        if let Some(s) = saved {
+            self.prov_aux = s;
+        }
+    }
+
+    /// The origin of an instance of `stmt` (its own rule) under the join state `ctx`: the
+    /// statement (or, for a statement the rewriting made, the auxiliary of its kind), the
+    /// bindings, and the body literals decided by grounding: a positive literal (or `not not
+    /// a`) whose atom is a fact, `not a` whose atom cannot be derived.
+    fn origin(&mut self, stmt: &NStmt, ctx: &Ctx) -> Origin {
+        let bindings = self.bindings(&ctx.binding);
+        let rule = match stmt.aux {
+            None => RuleOrigin::Statement {
+                stmt: stmt.stmt,
+                bindings,
+            },
+            Some(kind) => RuleOrigin::Auxiliary {
+                of_stmt: stmt.stmt,
+                kind,
+                bindings,
+            },
+        };
+        let mut removed = Vec::new();
+        for l in &stmt.body {
+            let NLit::Pred { sign, atom } = l else {
+                continue;
+            };
+            let Some(sym) = self.atom_sym(atom, &ctx.binding) else {
+                continue;
+            };
+            match sign {
+                Sign::Positive | Sign::NotNot => {
+                    if let Some(a) = self.find_atom(sym).filter(|&a| self.info(a).fact) {
+                        removed.push(RemovedLit {
+                            positive: true,
+                            atom: a,
+                        });
+                    }
+                }
+                Sign::Not => {
+                    let kept = self
+                        .find_atom(sym)
+                        .is_some_and(|a| ctx.body.contains(&-(a as Lit)));
+                    if !kept {
+                        let a = self.atom_of(sym, atom.pred);
+                        removed.push(RemovedLit {
+                            positive: false,
+                            atom: a,
+                        });
+                    }
+                }
+            }
+        }
+        Origin { rule, removed }
     }
 
     fn lookup_range(&self, pred: PredId, range: Option<Range>) -> Range {
@@ -677,7 +819,9 @@ impl<'a> Grounder<'a> {
                         }
                         if !fact {
                             let a = self.atom_of(sym, atom.pred);
+                            let saved = self.enter_aux(AuxKind::DoubleNegation, &ctx.binding);
                             let d = self.not_aux(a);
+                            self.leave_aux(saved);
                             ctx.body.push(-(d as Lit));
                         }
                         self.join(ctx, lits, i + 1, ranges, k);
@@ -774,13 +918,13 @@ impl<'a> Grounder<'a> {
         }
         let d = self.aux();
         self.notnot.insert(a, d);
-        self.add_rule(
+        self.add_aux_rule(
             Rule {
                 head_kind: HeadKind::Disjunction,
                 head: vec![d],
                 body: Body::Normal(vec![-(a as Lit)]),
             },
-            Origin::default,
+            AuxKind::DoubleNegation,
         );
         d
     }
@@ -793,13 +937,13 @@ impl<'a> Grounder<'a> {
         }
         let a = self.aux();
         for alt in alternatives {
-            self.add_rule(
+            self.add_aux_rule(
                 Rule {
                     head_kind: HeadKind::Disjunction,
                     head: vec![a],
                     body: Body::Normal(alt.clone()),
                 },
-                Origin::default,
+                AuxKind::Aggregate,
             );
         }
         if alternatives.iter().any(|c| c.is_empty()) {
@@ -834,13 +978,13 @@ impl<'a> Grounder<'a> {
             return -c[0];
         }
         let a = self.aux();
-        self.add_rule(
+        self.add_aux_rule(
             Rule {
                 head_kind: HeadKind::Disjunction,
                 head: vec![a],
                 body: Body::Normal(c.to_vec()),
             },
-            Origin::default,
+            AuxKind::Condition,
         );
         -(a as Lit)
     }
@@ -850,6 +994,20 @@ impl<'a> Grounder<'a> {
     /// certain condition contributes `l` itself (positively, as gringo keeps it); otherwise an
     /// auxiliary atom `x :- l.  x :- not c.` stands for `c -> l`.
     fn conditional(&mut self, ctx: &mut Ctx, agg: &NAgg, k: &mut dyn FnMut(&mut Self, &mut Ctx)) {
+        self.in_aux(
+            AuxKind::Condition,
+            ctx,
+            &mut |g, ctx, k| g.conditional_inner(ctx, agg, k),
+            k,
+        );
+    }
+
+    fn conditional_inner(
+        &mut self,
+        ctx: &mut Ctx,
+        agg: &NAgg,
+        k: &mut dyn FnMut(&mut Self, &mut Ctx),
+    ) {
         let e = &agg.elems[0];
         let alts = e.lit.as_deref().expect("conditional literal");
         let blen = ctx.body.len();
@@ -894,17 +1052,17 @@ impl<'a> Grounder<'a> {
                     let nc = self.not_conj(&cond);
                     let x = self.aux();
                     for body in s.iter().cloned().chain([vec![nc]]) {
-                        self.add_rule(Rule::normal(&[x], &body), Origin::default);
+                        self.add_aux_rule(Rule::normal(&[x], &body), AuxKind::Condition);
                     }
                     let k = if cond.len() == 1 && cond[0] > 0 {
                         Some(cond[0] as AtomId)
                     } else if cond.iter().any(|&c| c > 0) {
                         let k = self.aux();
-                        self.add_rule(Rule::normal(&[k], &cond), Origin::default);
+                        self.add_aux_rule(Rule::normal(&[k], &cond), AuxKind::Condition);
                         for &c in cond.iter().filter(|&&c| c > 0) {
-                            self.add_rule(
+                            self.add_aux_rule(
                                 Rule::normal(&[c as AtomId], &[k as Lit]),
-                                Origin::default,
+                                AuxKind::Condition,
                             );
                         }
                         Some(k)
@@ -915,7 +1073,7 @@ impl<'a> Grounder<'a> {
                         let t = self.disjunction_lit(&s);
                         let nt = self.negate_lit(t);
                         let nnt = self.negate_lit(nt);
-                        self.add_rule(Rule::normal(&[x, k], &[nnt]), Origin::default);
+                        self.add_aux_rule(Rule::normal(&[x, k], &[nnt]), AuxKind::Condition);
                     }
                     lits.push(x as Lit);
                 }
@@ -926,8 +1084,45 @@ impl<'a> Grounder<'a> {
         ctx.body.truncate(blen);
     }
 
-    /// Grounds the elements of an aggregate and continues with each way it can hold.
+    /// Grounds the elements of an aggregate and continues with each way it can hold; its
+    /// auxiliary rules are recorded as the aggregate's (provenance).
     fn aggregate(&mut self, ctx: &mut Ctx, agg: &NAgg, k: &mut dyn FnMut(&mut Self, &mut Ctx)) {
+        self.in_aux(
+            AuxKind::Aggregate,
+            ctx,
+            &mut |g, ctx, k| g.aggregate_inner(ctx, agg, k),
+            k,
+        );
+    }
+
+    /// Runs `f` (a construct that calls its continuation `k`) inside the auxiliary construct
+    /// `kind` for provenance, leaving it while `k` runs (the rest of the body is the
+    /// statement's own).
+    fn in_aux(
+        &mut self,
+        kind: AuxKind,
+        ctx: &mut Ctx,
+        f: &mut dyn FnMut(&mut Self, &mut Ctx, Cont<'_, 'a>),
+        k: &mut dyn FnMut(&mut Self, &mut Ctx),
+    ) {
+        let Some(outer) = self.enter_aux(kind, &ctx.binding) else {
+            return f(self, ctx, k);
+        };
+        let mut other = outer;
+        f(self, ctx, &mut |g: &mut Self, ctx: &mut Ctx| {
+            std::mem::swap(&mut g.prov_aux, &mut other);
+            k(g, ctx);
+            std::mem::swap(&mut g.prov_aux, &mut other);
+        });
+        self.prov_aux = other;
+    }
+
+    fn aggregate_inner(
+        &mut self,
+        ctx: &mut Ctx,
+        agg: &NAgg,
+        k: &mut dyn FnMut(&mut Self, &mut Ctx),
+    ) {
         // Ground elements: tuple -> alternative conditions (an empty condition is certain).
         // An aggregate may have hundreds of thousands of elements (`#count { X,Y : path(X,Y) }`),
         // so the tuples are kept flat, found through a table of their indexes, and a certain
@@ -1288,13 +1483,13 @@ impl<'a> Grounder<'a> {
         } else {
             Body::Weight { lower: bound, lits }
         };
-        self.add_rule(
+        self.add_aux_rule(
             Rule {
                 head_kind: HeadKind::Disjunction,
                 head: vec![a],
                 body,
             },
-            Origin::default,
+            AuxKind::Aggregate,
         );
         Truth::Lits(vec![a as Lit])
     }
@@ -1425,7 +1620,7 @@ impl<'a> Grounder<'a> {
                 };
                 body.push((c, -w));
             }
-            self.add_rule(
+            self.add_aux_rule(
                 Rule {
                     head_kind: HeadKind::Disjunction,
                     head: vec![a],
@@ -1434,7 +1629,7 @@ impl<'a> Grounder<'a> {
                         lits: body,
                     },
                 },
-                Origin::default,
+                AuxKind::Aggregate,
             );
         }
         Truth::Lits(vec![a as Lit])
@@ -1457,13 +1652,13 @@ impl<'a> Grounder<'a> {
             (vec![c], vec![a as Lit]),
             (vec![c, l as AtomId], vec![-(not_a as Lit)]),
         ] {
-            self.add_rule(
+            self.add_aux_rule(
                 Rule {
                     head_kind: HeadKind::Disjunction,
                     head,
                     body: Body::Normal(body),
                 },
-                Origin::default,
+                AuxKind::Aggregate,
             );
         }
         c as Lit
@@ -1577,6 +1772,18 @@ impl<'a> Grounder<'a> {
 
     /// Grounds one statement with the given ranges for its body literals.
     fn ground_stmt(&mut self, stmt: &NStmt, ranges: &[Option<Range>]) {
+        if self.provenance {
+            let names = &self.syms.names;
+            self.prov_stmt = ProvStmt {
+                stmt: stmt.stmt,
+                aux: stmt.aux,
+                names: stmt
+                    .var_names
+                    .iter()
+                    .map(|&n| (!names.resolve(n).starts_with('#')).then_some(n))
+                    .collect(),
+            };
+        }
         let mut ctx = Ctx {
             binding: Binding::new(stmt.num_vars as usize),
             body: Vec::new(),
@@ -1758,15 +1965,35 @@ impl<'a> Grounder<'a> {
                 let wn = if *maximize { wn.wrapping_neg() } else { wn };
                 let key = (pn, wn, ts);
                 let body = ctx.body.clone();
-                match self.minimize.get_mut(&key) {
-                    Some(v) => {
-                        if !v.contains(&body) {
-                            v.push(body)
-                        }
-                    }
+                let origin = self.provenance.then(|| Origin {
+                    rule: RuleOrigin::Auxiliary {
+                        of_stmt: stmt.stmt,
+                        kind: AuxKind::Minimize,
+                        bindings: self.bindings(&ctx.binding),
+                    },
+                    removed: self.origin(stmt, ctx).removed,
+                });
+                let v = match self.minimize.get_mut(&key) {
+                    Some(v) => v,
                     None => {
                         self.minimize_order.push(key.clone());
-                        self.minimize.insert(key, vec![body]);
+                        self.minimize.entry(key.clone()).or_default()
+                    }
+                };
+                let i = match v.iter().position(|c| *c == body) {
+                    Some(i) => i,
+                    None => {
+                        v.push(body);
+                        v.len() - 1
+                    }
+                };
+                if let Some(o) = origin {
+                    let os = self.minimize_origins.entry(key).or_default();
+                    if os.len() <= i {
+                        os.resize(i + 1, Vec::new());
+                    }
+                    if !os[i].contains(&o) {
+                        os[i].push(o);
                     }
                 }
             }
@@ -1881,7 +2108,15 @@ impl<'a> Grounder<'a> {
         }
     }
 
+    /// Emits the rules of one instance of a rule statement; auxiliary rules of its head
+    /// (element atoms, conditions) are recorded as [`AuxKind::Element`] (provenance).
     fn emit_rule(&mut self, stmt: &NStmt, ctx: &mut Ctx) {
+        let saved = self.enter_aux(AuxKind::Element, &ctx.binding);
+        self.emit_rule_inner(stmt, ctx);
+        self.leave_aux(saved);
+    }
+
+    fn emit_rule_inner(&mut self, stmt: &NStmt, ctx: &mut Ctx) {
         let mut head: Vec<AtomId> = Vec::new();
         let mut extra_choices: Vec<(AtomId, Vec<Lit>)> = Vec::new();
         let mut elems: Vec<ElemInstance> = Vec::new();
@@ -1984,34 +2219,38 @@ impl<'a> Grounder<'a> {
                     let a = self.aux();
                     self.cr_appl.insert((stmt.stmt, key), a);
                     self.cr_rules.push((a, text));
-                    let origin = self.origin(stmt, &ctx.binding);
                     self.add_rule(
                         Rule {
                             head_kind: HeadKind::Choice,
                             head: vec![a],
                             body: Body::Normal(Vec::new()),
                         },
-                        || origin,
+                        |g| Origin {
+                            rule: RuleOrigin::Auxiliary {
+                                of_stmt: stmt.stmt,
+                                kind: AuxKind::CrApplication,
+                                bindings: g.bindings(&ctx.binding),
+                            },
+                            removed: Vec::new(),
+                        },
                     );
                     a
                 }
             };
             ctx.body.push(appl as Lit);
         }
-        let origin = |g: &Self| g.origin(stmt, &ctx.binding);
         if is_choice {
             for &(a, ref c) in &extra_choices {
                 self.derive(a);
                 let mut body = ctx.body.clone();
                 body.extend(c.iter().copied());
-                let o = origin(self);
                 self.add_rule(
                     Rule {
                         head_kind: HeadKind::Choice,
                         head: vec![a],
                         body: Body::Normal(body),
                     },
-                    || o,
+                    |g| g.origin(stmt, ctx),
                 );
             }
             head.retain(|&a| !self.info(a).fact);
@@ -2021,19 +2260,29 @@ impl<'a> Grounder<'a> {
             for &a in &head {
                 self.derive(a);
             }
-            let o = origin(self);
             self.add_rule(
                 Rule {
                     head_kind: HeadKind::Choice,
                     head,
                     body: Body::Normal(ctx.body.clone()),
                 },
-                || o,
+                |g| g.origin(stmt, ctx),
             );
             return;
         }
-        // A disjunction with a true atom is satisfied.
-        if head.iter().any(|&a| self.info(a).fact) {
+        // A disjunction with a true atom is satisfied. (With provenance, an instance that
+        // grounds to a fact's own rule is one more origin of that rule.)
+        if let Some(&f) = head.iter().find(|&&a| self.info(a).fact) {
+            if head.len() == 1 && ctx.body.is_empty() {
+                self.attach_origin(Rule::normal(&[f], &[]), |g| g.origin(stmt, ctx));
+            } else if self.provenance && !self.naive {
+                let origin = self.origin(stmt, ctx);
+                self.dead.push(DeadRule {
+                    head,
+                    origins: vec![origin],
+                    why: DeadReason::HeadFact(f),
+                });
+            }
             return;
         }
         for el in elems {
@@ -2053,14 +2302,13 @@ impl<'a> Grounder<'a> {
         if head.len() == 1 && ctx.body.is_empty() && !self.naive {
             self.atoms[head[0] as usize - 1].fact = true;
         }
-        let o = origin(self);
         self.add_rule(
             Rule {
                 head_kind: HeadKind::Disjunction,
                 head,
                 body: Body::Normal(ctx.body.clone()),
             },
-            || o,
+            |g| g.origin(stmt, ctx),
         );
     }
 
@@ -2174,7 +2422,7 @@ impl<'a> Grounder<'a> {
             });
         };
         dedup(&mut body);
-        self.add_rule(Rule::normal(&[e], &body), Origin::default);
+        self.add_aux_rule(Rule::normal(&[e], &body), AuxKind::Element);
         let mut guard = vec![e as Lit];
         guard.extend_from_slice(cond);
         dedup(&mut guard);
@@ -2183,7 +2431,7 @@ impl<'a> Grounder<'a> {
             match sign {
                 Sign::Positive => {
                     self.derive(a);
-                    self.add_rule(Rule::normal(&[a], &b), Origin::default);
+                    self.add_aux_rule(Rule::normal(&[a], &b), AuxKind::Element);
                 }
                 Sign::Not | Sign::NotNot => {
                     let l = if sign == Sign::Not {
@@ -2194,12 +2442,12 @@ impl<'a> Grounder<'a> {
                     if !b.contains(&l) {
                         b.push(l);
                     }
-                    self.add_rule(Rule::normal(&[], &b), Origin::default);
+                    self.add_aux_rule(Rule::normal(&[], &b), AuxKind::Element);
                 }
             }
         }
         for &c in cond {
-            self.add_rule(Rule::normal(&[], &[e as Lit, -c]), Origin::default);
+            self.add_aux_rule(Rule::normal(&[], &[e as Lit, -c]), AuxKind::Element);
         }
         e
     }
@@ -2404,6 +2652,9 @@ impl<'a> Grounder<'a> {
             if self.provenance {
                 self.origins.pop();
             }
+        }
+        if self.provenance {
+            self.more_origins.retain(|&i, _| (i as usize) < start);
         }
         self.rules.truncate(start);
         // Their defining rules may be gone; fresh auxiliaries are made next round.

@@ -37,7 +37,7 @@ pub struct GroundConfig {
     pub max_size: Option<usize>,
     /// Stop with a diagnostic after this instant (checked every few thousand rules).
     pub deadline: Option<std::time::Instant>,
-    /// Record the origin of every ground rule in `GroundProgram::origins`.
+    /// Record the provenance of every ground rule and atom in `GroundProgram::provenance`.
     pub provenance: bool,
     /// Diagnostics limit (gringo's default is 20).
     pub message_limit: Option<usize>,
@@ -54,19 +54,25 @@ pub struct Grounding {
     pub atom_names: Vec<Option<String>>,
     /// Every atom known to be true (facts), including those simplified away from bodies.
     pub facts: Vec<String>,
-    /// Span of each source statement, by statement index (what `Origin::rule` indexes).
+    /// Symbol of each aspif atom (`atom_syms[a - 1]`, parallel to `atom_names`), `None` for
+    /// auxiliary atoms: ids into `symbols`.
+    pub atom_syms: Vec<Option<symbol::SymId>>,
+    /// Symbol of every fact atom (parallel to `facts`), ids into `symbols`.
+    pub fact_syms: Vec<symbol::SymId>,
+    /// Span of each source statement, by statement index (what `RuleOrigin` statement ids
+    /// index).
     pub statement_spans: Vec<Span>,
-    /// The symbol table: `Origin::bindings` are (variable name, symbol) ids into it.
+    /// The symbol table: provenance bindings are (variable name, symbol) ids into it, atom
+    /// records' symbols are symbol ids.
     pub symbols: symbol::Symbols,
     /// Why grounding stopped early, if it did.
     pub stopped: Option<StopReason>,
 }
 
 impl Grounding {
-    /// `X=1,Y=a` for an origin's bindings.
-    pub fn bindings_text(&self, origin: &program::Origin) -> String {
-        origin
-            .bindings
+    /// `X=1,Y=a` for bindings (an origin's).
+    pub fn bindings_text(&self, bindings: &[(u32, u32)]) -> String {
+        bindings
             .iter()
             .map(|&(v, s)| {
                 format!(
@@ -77,6 +83,40 @@ impl Grounding {
             })
             .collect::<Vec<_>>()
             .join(",")
+    }
+
+    /// A grounder atom as text (provenance on): its symbol, else `#aux(N)` with its aspif
+    /// number, else `#aux`.
+    pub fn atom_text(&self, g: program::GAtom) -> String {
+        match self.program.provenance.atom(g) {
+            Some(program::AtomRecord { sym: Some(s), .. }) => self.symbols.show(symbol::SymId(*s)),
+            Some(r) if r.aspif != 0 => format!("#aux({})", r.aspif),
+            _ => "#aux".to_string(),
+        }
+    }
+
+    /// A removed body literal as text: `p(1)` or `not q(2)`.
+    pub fn removed_text(&self, l: &program::RemovedLit) -> String {
+        let a = self.atom_text(l.atom);
+        if l.positive {
+            a
+        } else {
+            format!("not {a}")
+        }
+    }
+
+    /// The grounder atom of a symbol written as text (`p(1,"a")`), if the grounder made it
+    /// (provenance on).
+    pub fn find_atom(&self, text: &str) -> Option<program::GAtom> {
+        self.program
+            .provenance
+            .atoms
+            .iter()
+            .position(|r| {
+                r.sym
+                    .is_some_and(|s| self.symbols.show(symbol::SymId(s)) == text)
+            })
+            .map(|i| i as program::GAtom + 1)
     }
 }
 
@@ -100,6 +140,8 @@ pub fn ground(
             diagnostics: diags,
             atom_names: Vec::new(),
             facts: Vec::new(),
+            atom_syms: Vec::new(),
+            fact_syms: Vec::new(),
             statement_spans,
             symbols: syms,
             stopped: None,
@@ -140,6 +182,8 @@ pub fn ground(
         diagnostics: diags,
         atom_names: if error { Vec::new() } else { fin.names },
         facts: fin.facts,
+        atom_syms: if error { Vec::new() } else { fin.atom_syms },
+        fact_syms: fin.fact_syms,
         statement_spans,
         symbols: syms,
         stopped,

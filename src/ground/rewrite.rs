@@ -21,6 +21,7 @@ use hashbrown::HashMap;
 use crate::base::{Diagnostic, Diagnostics, SourceMap, Span};
 use crate::syntax::ast::{self, AggregateFunction, CmpOp, Sign, TermKind};
 
+use super::program::AuxKind;
 use super::symbol::{SymId, Symbols};
 use super::term::NTerm;
 use crate::base::intern::Sym;
@@ -237,6 +238,9 @@ pub struct NStmt {
     pub var_names: Vec<Sym>,
     /// Global slots (bound by the body), in slot order.
     pub globals: Vec<u32>,
+    /// Set when the rewriting made this statement as part of statement `stmt`'s translation
+    /// (the constraint of a choice's bounds, a projection rule): its rules are auxiliaries.
+    pub aux: Option<AuxKind>,
 }
 
 /// `#show` configuration.
@@ -289,6 +293,8 @@ pub struct Rewriter<'a> {
     current: (u32, Span),
     /// Number of projection predicates made for anonymous variables under negation.
     projections: u32,
+    /// Set while rewriting a statement made for another one's translation.
+    aux_role: Option<AuxKind>,
 }
 
 /// Per-statement variable table.
@@ -384,21 +390,12 @@ pub fn unpool_term(t: &ast::Term) -> Vec<ast::Term> {
 }
 
 /// Unfolds the pools of an argument list into pool-free lists (the cross product).
+///
+/// Linear in the size of the result: a term without alternatives is pushed onto every prefix
+/// in place, and prefixes are copied only when a pool multiplies them (an atom with 2,000,000
+/// pool-free arguments is one pass, not 2,000,000 growing copies).
 pub fn unpool_list(list: &[ast::Term]) -> Vec<Vec<ast::Term>> {
-    let mut acc: Vec<Vec<ast::Term>> = vec![Vec::new()];
-    for t in list {
-        let alts = unpool_term(t);
-        let mut next = Vec::with_capacity(acc.len() * alts.len());
-        for prefix in &acc {
-            for a in &alts {
-                let mut p = prefix.clone();
-                p.push(a.clone());
-                next.push(p);
-            }
-        }
-        acc = next;
-    }
-    acc
+    product(list.iter().map(unpool_term).collect())
 }
 
 /// Unfolds the pools of a literal.
@@ -452,16 +449,32 @@ pub fn unpool_atom(a: &ast::SymbolicAtom) -> Vec<ast::SymbolicAtom> {
     out
 }
 
-/// Cross product of alternatives.
+/// Cross product of alternatives, in order (the first choice varies slowest); linear in the
+/// size of the result, see [`unpool_list`].
 fn product<T: Clone>(choices: Vec<Vec<T>>) -> Vec<Vec<T>> {
-    let mut acc: Vec<Vec<T>> = vec![Vec::new()];
-    for alts in choices {
-        let mut next = Vec::new();
-        for prefix in &acc {
-            for a in &alts {
-                let mut p = prefix.clone();
-                p.push(a.clone());
-                next.push(p);
+    let mut acc: Vec<Vec<T>> = vec![Vec::with_capacity(choices.len())];
+    for mut alts in choices {
+        if alts.len() == 1 {
+            // The common case (no pool here): push onto every prefix in place.
+            let a = alts.pop().expect("one alternative");
+            if let Some((last, rest)) = acc.split_last_mut() {
+                for prefix in rest {
+                    prefix.push(a.clone());
+                }
+                last.push(a);
+            }
+            continue;
+        }
+        let mut next = Vec::with_capacity(acc.len() * alts.len());
+        if let Some((last, rest)) = alts.split_last() {
+            for mut prefix in acc {
+                for a in rest {
+                    let mut p = prefix.clone();
+                    p.push(a.clone());
+                    next.push(p);
+                }
+                prefix.push(last.clone());
+                next.push(prefix);
             }
         }
         acc = next;
@@ -645,6 +658,7 @@ impl<'a> Rewriter<'a> {
             reported: Vec::new(),
             sorts: Vec::new(),
             current: (0, Span::default()),
+            aux_role: None,
             projections: 0,
         }
     }
@@ -1083,7 +1097,9 @@ impl<'a> Rewriter<'a> {
             kind: ast::RuleKind::Normal,
         };
         let (index, span) = self.current;
+        let role = self.aux_role.replace(AuxKind::Projection);
         self.rule(index, span, &rule);
+        self.aux_role = role;
         self.current = (index, span);
         ast::Literal {
             span: l.span,
@@ -1583,7 +1599,12 @@ impl<'a> Rewriter<'a> {
             }
             K::Script(_) => self.unsupported(st.span, "#script is not supported by Lucent"),
             K::Const(_) | K::ProgramPart(_) | K::Error => {}
-            K::Section(_) | K::SortDef(_) | K::PredicateDecl(_) | K::Display(_) => {
+            K::Section(_)
+            | K::SortDef(_)
+            | K::PredicateDecl(_)
+            | K::Display(_)
+            | K::DisplaySort(_)
+            | K::MaxInt(_) => {
                 self.unsupported(st.span, "SPARC sections in a clingo-dialect program");
             }
         }
@@ -1704,15 +1725,18 @@ impl<'a> Rewriter<'a> {
                         _ => {}
                     }
                 }
-                // h | not a :- B.  ==  h :- B, not not a.   (and `not not a` moves as `not a`)
-                if elems
-                    .iter()
-                    .any(|e| e.literal.sign != Sign::Positive && !e.has_colon)
-                {
+                // h | not a :- B.  ==  h :- B, not not a.   (and `not not a` moves as `not a`);
+                // likewise a comparison: h | X < 3 :- B.  ==  h :- B, not X < 3.
+                let moves = |e: &ast::ConditionalLiteral| {
+                    !e.has_colon
+                        && (e.literal.sign != Sign::Positive
+                            || matches!(e.literal.atom, ast::Atom::Comparison { .. }))
+                };
+                if elems.iter().any(moves) {
                     let mut keep = Vec::new();
                     let mut nbody = body.to_vec();
                     for e in elems {
-                        if e.literal.sign != Sign::Positive && !e.has_colon {
+                        if moves(e) {
                             let mut l = e.literal.clone();
                             l.sign = negate_sign(l.sign);
                             nbody.push(ast::BodyLiteral::Literal(l));
@@ -1781,6 +1805,7 @@ impl<'a> Rewriter<'a> {
                         sign: Sign::Not,
                         aggregate: Box::new(agg),
                     });
+                    let role = self.aux_role.replace(AuxKind::Bound);
                     self.rule_instance(
                         index,
                         span,
@@ -1788,6 +1813,7 @@ impl<'a> Rewriter<'a> {
                         &cbody,
                         &ast::RuleKind::Normal,
                     );
+                    self.aux_role = role;
                 }
                 NHead::Choice(es)
             }
@@ -1838,6 +1864,7 @@ impl<'a> Rewriter<'a> {
                         sign: Sign::Not,
                         aggregate: Box::new(agg),
                     });
+                    let role = self.aux_role.replace(AuxKind::Bound);
                     self.rule_instance(
                         index,
                         span,
@@ -1845,6 +1872,7 @@ impl<'a> Rewriter<'a> {
                         &cbody,
                         &ast::RuleKind::Normal,
                     );
+                    self.aux_role = role;
                 }
                 NHead::Choice(es)
             }
@@ -2016,6 +2044,7 @@ impl<'a> Rewriter<'a> {
             num_vars: n as u32,
             var_names,
             globals,
+            aux: self.aux_role,
         });
     }
 }

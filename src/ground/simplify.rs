@@ -12,13 +12,18 @@
 //!   and so is a rule whose body contains a literal and its negation;
 //! - in kept rules, facts and `not a` with `a` false are removed from bodies.
 //!
-//! Invariant: the result's atoms are `1..=num_atoms`, every atom occurring anywhere is numbered,
-//! and `origins` stays parallel to `rules`.
+//! Invariant: the result's atoms are `1..=num_atoms`, every atom occurring anywhere is numbered.
+//!
+//! Provenance (when on): every output rule keeps the origins of every grounder rule that
+//! became it (a second rule for a fact adds its origins to the fact's rule), each extended
+//! with the body literals this pass decided; a removed rule with a head atom that ends up
+//! false is kept as a `DeadRule` with its reason; the atom table records every grounder
+//! atom's symbol, status and aspif number.
 
 use super::instantiate::{AtomId, Grounder};
 use super::program::{
-    Body, BodyRef, CrRule, GroundProgram, HeadKind, Lit, Minimize, Output, Prefer, Rule, Rules,
-    Weight,
+    AtomRecord, AtomStatus, Body, BodyRef, CrRule, DeadReason, DeadRule, GroundProgram, HeadKind,
+    Lit, Minimize, Origin, Output, Prefer, Provenance, RemovedLit, Rule, RuleOrigin, Rules, Weight,
 };
 use super::rewrite::Compiled;
 use super::symbol::SymId;
@@ -42,6 +47,11 @@ pub struct Finished {
     pub names: Vec<Option<String>>,
     /// Every fact atom's symbol text (also those simplified away from bodies).
     pub facts: Vec<String>,
+    /// Symbol of each aspif atom (`atom_syms[a - 1]`, parallel to `names`), `None` for
+    /// auxiliary atoms.
+    pub atom_syms: Vec<Option<SymId>>,
+    /// Symbol of every fact atom (parallel to `facts`).
+    pub fact_syms: Vec<SymId>,
 }
 
 /// The two passes that build [`Occurrences`]: count, then fill.
@@ -122,7 +132,11 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     for &(a, _) in &g.externals {
         external[a as usize] = true;
     }
-    let (dead, killed_contradictory) = propagate(g, &external, &mut status, true);
+    // With provenance: why each dead rule died.
+    let prov = g.provenance;
+    let mut why: Vec<Option<DeadReason>> = Vec::new();
+    let (dead, killed_contradictory) =
+        propagate(g, &external, &mut status, true, prov.then_some(&mut why));
     // What gringo would still find possible: it keeps rules with contradictory bodies, so atoms
     // only they derive stay in its minimize statements (clingo then reports an optimum of 0
     // where a dropped statement would make the answer plain SATISFIABLE).
@@ -139,7 +153,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                     }
                 })
                 .collect();
-            propagate(g, &external, &mut st, false);
+            propagate(g, &external, &mut st, false, None);
             st
         });
     let truth = |l: Lit, status: &[Status]| -> Option<bool> {
@@ -153,8 +167,26 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     // Simplify the surviving rules.
     // Stored flat (`Rules`): the program outlives grounding and is held beside the solver.
     let mut rules = Rules::new();
-    let mut origins = Vec::new();
-    let mut fact_rule_seen = vec![false; n + 1];
+    // With provenance: the origins of each output rule, and the removed rules that headed a
+    // false atom.
+    let mut origins: Vec<Vec<Origin>> = Vec::new();
+    let mut dead_rules: Vec<DeadRule> = std::mem::take(&mut g.dead);
+    let mut g_origins = std::mem::take(&mut g.origins);
+    let mut g_more = std::mem::take(&mut g.more_origins);
+    let mut take_origins = |ri: usize| -> Vec<Origin> {
+        let mut os = vec![std::mem::replace(
+            &mut g_origins[ri],
+            Origin {
+                rule: RuleOrigin::Complement,
+                removed: Vec::new(),
+            },
+        )];
+        os.extend(g_more.remove(&(ri as u32)).unwrap_or_default());
+        os
+    };
+    let mut removed: Vec<RemovedLit> = Vec::new();
+    // The output rule `a.` of each fact atom `a` (u32::MAX: none yet).
+    let mut fact_rule = vec![u32::MAX; n + 1];
     // The rules are moved out (the grounder's copy is not used after this); each surviving
     // rule is simplified in the scratch vectors and copied to `rules`.
     let old = std::mem::take(&mut g.rules);
@@ -162,26 +194,58 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut lits: Vec<Lit> = Vec::new();
     let mut ordered: Vec<Lit> = Vec::new();
     let mut wlits: Vec<(Lit, Weight)> = Vec::new();
+    // Records a removed rule that headed a false atom (provenance).
+    let mut bury = |ri: usize,
+                    head: &[AtomId],
+                    reason: DeadReason,
+                    status: &[Status],
+                    take: &mut dyn FnMut(usize) -> Vec<Origin>| {
+        if prov
+            && head
+                .iter()
+                .any(|&h| status[h as usize - 1] == Status::False)
+        {
+            dead_rules.push(DeadRule {
+                head: head.to_vec(),
+                origins: take(ri),
+                why: reason,
+            });
+        }
+    };
+    let removed_lit = |l: Lit| RemovedLit {
+        positive: l > 0,
+        atom: l.unsigned_abs(),
+    };
     for (ri, r) in old.iter().enumerate() {
         if dead[ri] {
+            if let Some(&Some(reason)) = why.get(ri) {
+                bury(ri, r.head, reason, &status, &mut take_origins);
+            }
             continue;
         }
         lits.clear();
         wlits.clear();
+        removed.clear();
         let body = match r.body {
             BodyRef::Normal(ls) => {
-                let mut ok = true;
+                let mut failed = None;
                 for &l in ls {
                     match truth(l, &status) {
+                        Some(true) if prov => removed.push(removed_lit(l)),
                         Some(true) => {}
                         Some(false) => {
-                            ok = false;
+                            failed = Some(l);
                             break;
                         }
                         None => lits.push(l),
                     }
                 }
-                if !ok {
+                if let Some(l) = failed {
+                    let reason = DeadReason::Literal {
+                        positive: l > 0,
+                        atom: l.unsigned_abs(),
+                    };
+                    bury(ri, r.head, reason, &status, &mut take_origins);
                     continue;
                 }
                 gringo_body_order(&lits, &mut ordered);
@@ -191,7 +255,12 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 let mut lower = lower;
                 for &(l, w) in ls {
                     match truth(l, &status) {
-                        Some(true) => lower -= w,
+                        Some(true) => {
+                            lower -= w;
+                            if prov {
+                                removed.push(removed_lit(l));
+                            }
+                        }
                         Some(false) => {}
                         None => wlits.push((l, w)),
                     }
@@ -199,6 +268,13 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 if lower <= 0 {
                     BodyRef::Normal(&[])
                 } else if wlits.iter().map(|&(_, w)| w).sum::<i64>() < lower {
+                    bury(
+                        ri,
+                        r.head,
+                        DeadReason::Unreachable,
+                        &status,
+                        &mut take_origins,
+                    );
                     continue;
                 } else {
                     BodyRef::Weight {
@@ -211,10 +287,20 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         head.clear();
         head.extend_from_slice(r.head);
         if r.head_kind == HeadKind::Disjunction {
-            if head.iter().any(|&h| status[h as usize - 1] == Status::Fact)
-                && !(head.len() == 1 && body.is_empty_normal())
+            if let Some(&f) = head
+                .iter()
+                .find(|&&h| status[h as usize - 1] == Status::Fact)
             {
-                continue;
+                if !(head.len() == 1 && body.is_empty_normal()) {
+                    bury(
+                        ri,
+                        r.head,
+                        DeadReason::HeadFact(f),
+                        &status,
+                        &mut take_origins,
+                    );
+                    continue;
+                }
             }
             head.retain(|&h| status[h as usize - 1] != Status::False || external[h as usize]);
         } else {
@@ -223,17 +309,33 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 continue;
             }
         }
+        let with_removed = |mut os: Vec<Origin>, removed: &[RemovedLit]| {
+            for o in &mut os {
+                o.removed.extend_from_slice(removed);
+            }
+            os
+        };
         if r.head_kind == HeadKind::Disjunction && head.len() == 1 && body.is_empty_normal() {
             let h = head[0] as usize;
-            if fact_rule_seen[h] {
+            if fact_rule[h] != u32::MAX {
+                // A second rule for a fact: its origins are more origins of the fact's rule.
+                if prov {
+                    let os = with_removed(take_origins(ri), &removed);
+                    let kept = &mut origins[fact_rule[h] as usize];
+                    for o in os {
+                        if !kept.contains(&o) {
+                            kept.push(o);
+                        }
+                    }
+                }
                 continue;
             }
-            fact_rule_seen[h] = true;
+            fact_rule[h] = rules.len() as u32;
             status[h - 1] = Status::Fact;
         }
         rules.push_parts(r.head_kind, &head, body);
-        if g.provenance {
-            origins.push(g.origins[ri].clone());
+        if prov {
+            origins.push(with_removed(take_origins(ri), &removed));
         }
     }
     drop(old);
@@ -251,13 +353,19 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         let gringo_keeps = conds
             .iter()
             .any(|c| c.iter().all(|&l| truth(l, gstatus) != Some(false)));
+        let mut cond_origins = g.minimize_origins.remove(&key).unwrap_or_default();
         let mut alts: Vec<Vec<Lit>> = Vec::new();
+        // With provenance: the origins of each alternative, and of the certain ones.
+        let mut alt_origins: Vec<Vec<Origin>> = Vec::new();
+        let mut certain_origins: Vec<Origin> = Vec::new();
         let mut certain = false;
-        for c in conds {
+        for (ci, c) in conds.into_iter().enumerate() {
             let mut out = Vec::new();
             let mut ok = !contradictory_lits(&c);
+            removed.clear();
             for l in c {
                 match truth(l, &status) {
+                    Some(true) if prov => removed.push(removed_lit(l)),
                     Some(true) => {}
                     Some(false) => ok = false,
                     None => out.push(l),
@@ -265,6 +373,19 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             }
             if ok {
                 certain |= out.is_empty();
+                if prov {
+                    let mut os = cond_origins
+                        .get_mut(ci)
+                        .map(std::mem::take)
+                        .unwrap_or_default();
+                    for o in &mut os {
+                        o.removed.extend_from_slice(&removed);
+                    }
+                    if out.is_empty() {
+                        certain_origins.extend(os.iter().cloned());
+                    }
+                    alt_origins.push(os);
+                }
                 alts.push(out);
             }
         }
@@ -280,10 +401,10 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             Some(alts[0][0])
         } else {
             let a = new_aux(g, &mut status);
-            for alt in alts {
+            for (i, alt) in alts.into_iter().enumerate() {
                 rules.push_parts(HeadKind::Disjunction, &[a], BodyRef::Normal(&alt));
-                if g.provenance {
-                    origins.push(Default::default());
+                if prov {
+                    origins.push(std::mem::take(&mut alt_origins[i]));
                 }
             }
             Some(a as Lit)
@@ -296,8 +417,8 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 let a = new_aux(g, &mut status);
                 status[a as usize - 1] = Status::Fact;
                 rules.push_parts(HeadKind::Disjunction, &[a], BodyRef::Normal(&[]));
-                if g.provenance {
-                    origins.push(Default::default());
+                if prov {
+                    origins.push(std::mem::take(&mut certain_origins));
                 }
                 a as Lit
             }
@@ -365,12 +486,14 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     // and shown atoms, in creation order. The solver's initial variable order follows it.
     let mut number = vec![0u32; n + 1];
     let mut names: Vec<Option<String>> = Vec::new();
+    let mut atom_syms: Vec<Option<SymId>> = Vec::new();
     let mut next = 0u32;
     let mut assign = |a: usize, number: &mut Vec<u32>| {
         if number[a] == 0 {
             next += 1;
             number[a] = next;
             names.push(g.atoms[a - 1].sym.map(|s| g.syms.show(s)));
+            atom_syms.push(g.atoms[a - 1].sym);
         }
     };
     for r in &rules {
@@ -402,7 +525,35 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     rules.map_atoms(&mut |a| number[a as usize]);
     rules.shrink_to_fit();
     out.rules = rules;
-    out.origins = origins;
+    if prov {
+        let mut p = Provenance::new();
+        for os in origins {
+            p.push_rule(os);
+        }
+        p.set_atoms(
+            g.atoms
+                .iter()
+                .enumerate()
+                .map(|(i, info)| AtomRecord {
+                    sym: info.sym.map(|s| s.0),
+                    status: match status[i] {
+                        Status::Fact => AtomStatus::Fact,
+                        Status::False => AtomStatus::False,
+                        Status::Unknown => AtomStatus::Possible,
+                    },
+                    aspif: number[i + 1],
+                })
+                .collect(),
+        );
+        // Instances dropped during instantiation are kept only when they headed a false atom.
+        dead_rules.retain(|d| {
+            d.head
+                .iter()
+                .any(|&h| status[h as usize - 1] == Status::False)
+        });
+        p.dead = dead_rules;
+        out.provenance = p;
+    }
     out.minimize = minimize
         .into_iter()
         .map(|m| Minimize {
@@ -412,11 +563,13 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         .collect();
     // Outputs: shown atoms, facts with an empty condition.
     let mut facts = Vec::new();
+    let mut fact_syms = Vec::new();
     for a in 1..=n {
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };
         if status[a - 1] == Status::Fact {
             facts.push(g.syms.show(sym));
+            fact_syms.push(sym);
         }
         if info.in_domain && status[a - 1] != Status::False && shown_pred(g, info.pred) {
             let condition = if status[a - 1] == Status::Fact {
@@ -539,6 +692,8 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         program: out,
         names,
         facts,
+        atom_syms,
+        fact_syms,
     }
 }
 
@@ -573,12 +728,23 @@ fn contradictory_lits(lits: &[Lit]) -> bool {
 /// them in `status` and returns which rules are dead, and whether a rule was killed because its
 /// body holds a literal and its negation (only with `kill_contradictory`; gringo keeps such
 /// rules, so their heads stay possible for gringo).
+///
+/// With `why`, records there why each dead rule died (provenance).
 fn propagate(
     g: &Grounder<'_>,
     external: &[bool],
     status: &mut [Status],
     kill_contradictory: bool,
+    why: Option<&mut Vec<Option<DeadReason>>>,
 ) -> (Vec<bool>, bool) {
+    let mut no_why = Vec::new();
+    let why = match why {
+        Some(w) => {
+            *w = vec![None; g.rules.len()];
+            w
+        }
+        None => &mut no_why,
+    };
     let n = g.atoms.len();
     let mut killed_contradictory = false;
     let mut head_count = vec![0u32; n + 1];
@@ -624,6 +790,8 @@ fn propagate(
         }
     }
     let kill = |ri: usize,
+                reason: DeadReason,
+                why: &mut Vec<Option<DeadReason>>,
                 dead: &mut Vec<bool>,
                 head_count: &mut Vec<u32>,
                 status: &mut [Status],
@@ -633,6 +801,9 @@ fn propagate(
             return;
         }
         dead[ri] = true;
+        if let Some(w) = why.get_mut(ri) {
+            *w = Some(reason);
+        }
         for &h in rules.get(ri).head {
             head_count[h as usize] -= 1;
             if head_count[h as usize] == 0
@@ -650,15 +821,31 @@ fn propagate(
     // rule whose body holds `a` and `not a` (a weak constraint `:~ r, not r.` costs nothing).
     for ri in 0..g.rules.len() {
         let r = g.rules.get(ri);
+        let fact_head = r
+            .head
+            .iter()
+            .copied()
+            .find(|&h| status[h as usize - 1] == Status::Fact);
         let satisfied_head = r.head_kind == HeadKind::Disjunction
-            && r.head
-                .iter()
-                .any(|&h| status[h as usize - 1] == Status::Fact)
+            && fact_head.is_some()
             && !(r.head.len() == 1 && r.body.is_empty_normal());
         let contra = kill_contradictory && contradictory(r.body);
         killed_contradictory |= contra;
         if satisfied_head || contra {
-            kill(ri, &mut dead, &mut head_count, status, &mut work, &g.rules);
+            let reason = match fact_head {
+                Some(h) if satisfied_head => DeadReason::HeadFact(h),
+                _ => DeadReason::Contradictory,
+            };
+            kill(
+                ri,
+                reason,
+                why,
+                &mut dead,
+                &mut head_count,
+                status,
+                &mut work,
+                &g.rules,
+            );
         }
     }
     // Rules with `not a`, a a fact, are dead from the start.
@@ -666,14 +853,22 @@ fn propagate(
         if status[a - 1] == Status::Fact {
             for &(ri, w) in neg_occ.of(a) {
                 // A weight body loses the literal's weight; a normal body dies.
-                if w > 0 {
+                let reason = if w > 0 {
                     slack[ri as usize] -= w;
                     if slack[ri as usize] >= 0 {
                         continue;
                     }
-                }
+                    DeadReason::Unreachable
+                } else {
+                    DeadReason::Literal {
+                        positive: false,
+                        atom: a as AtomId,
+                    }
+                };
                 kill(
                     ri as usize,
+                    reason,
+                    why,
                     &mut dead,
                     &mut head_count,
                     status,
@@ -685,14 +880,22 @@ fn propagate(
     }
     while let Some(a) = work.pop() {
         for &(ri, w) in pos_occ.of(a as usize) {
-            if w > 0 {
+            let reason = if w > 0 {
                 slack[ri as usize] -= w;
                 if slack[ri as usize] >= 0 {
                     continue;
                 }
-            }
+                DeadReason::Unreachable
+            } else {
+                DeadReason::Literal {
+                    positive: true,
+                    atom: a,
+                }
+            };
             kill(
                 ri as usize,
+                reason,
+                why,
                 &mut dead,
                 &mut head_count,
                 status,
@@ -715,6 +918,7 @@ fn new_aux(g: &mut Grounder<'_>, status: &mut Vec<Status>) -> AtomId {
 fn add_classical_constraints(g: &mut Grounder<'_>) {
     let n = g.atoms.len();
     let mut extra = Vec::new();
+    let mut removed = Vec::new();
     for a in 1..=n {
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };
@@ -732,21 +936,31 @@ fn add_classical_constraints(g: &mut Grounder<'_>) {
             continue;
         }
         let mut body = Vec::new();
+        let mut facts = Vec::new();
         for x in [b, a as AtomId] {
             if !g.atoms[x as usize - 1].fact {
                 body.push(x as Lit);
+            } else {
+                facts.push(RemovedLit {
+                    positive: true,
+                    atom: x,
+                });
             }
         }
         extra.push(body);
+        removed.push(facts);
     }
-    for body in extra {
+    for (body, removed) in extra.into_iter().zip(removed) {
         g.rules.push(Rule {
             head_kind: HeadKind::Disjunction,
             head: Vec::new(),
             body: Body::Normal(body),
         });
         if g.provenance {
-            g.origins.push(Default::default());
+            g.origins.push(Origin {
+                rule: RuleOrigin::Complement,
+                removed,
+            });
         }
     }
 }

@@ -219,6 +219,27 @@ impl Symbols {
         self.table.find(hash, |&id| self.key_of(id) == key).copied()
     }
 
+    /// The integer `n` if it was created before, without creating it.
+    pub fn find_int(&self, n: i32) -> Option<SymId> {
+        self.find_key(KeyRef::Num(n))
+    }
+
+    /// The string with text `s` if it was created before, without creating it.
+    pub fn find_string(&self, s: &str) -> Option<SymId> {
+        let s = self.names.get(s)?;
+        self.find_key(KeyRef::Str(s))
+    }
+
+    /// `#inf` (`sup == false`) or `#sup` if it was created before, without creating it.
+    pub fn find_bound(&self, sup: bool) -> Option<SymId> {
+        self.find_key(if sup { KeyRef::Sup } else { KeyRef::Inf })
+    }
+
+    fn find_key(&self, key: KeyRef<'_>) -> Option<SymId> {
+        let hash = self.hash_key(&key);
+        self.table.find(hash, |&id| self.key_of(id) == key).copied()
+    }
+
     /// Like [`Symbols::fun`] with a name given as text.
     pub fn fun_str(&mut self, name: &str, neg: bool, args: &[SymId]) -> SymId {
         let name = self.names.intern(name);

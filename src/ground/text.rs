@@ -1,14 +1,16 @@
 //! The readable form of a ground program, as `gringo --text` prints it: facts `a.`, rules
 //! `a:-b,not c.`, choices `{a;b}:-c.`, weight bodies as `#sum` aggregates, minimize statements
-//! and shown terms; optionally each rule preceded by a `% from rule at file:line:col with X=1`
-//! comment giving its origin.
+//! and shown terms; with provenance, each rule preceded by one comment per origin
+//! (`% from rule at file:line:col with X=1; grounding proved q(1), not r(1)`, or
+//! `% aggregate auxiliary of rule at ...`), and at the end the atoms grounding proved false
+//! with the removed rule instances that could have derived them.
 //!
 //! Invariant: atoms print by name when they have one, and auxiliary atoms as `#aux(N)` with
 //! their aspif number, so the text is stable for a given ground program.
 
 use std::fmt::Write;
 
-use super::program::{BodyRef, HeadKind, Lit};
+use super::program::{AtomStatus, BodyRef, DeadReason, GAtom, HeadKind, Lit, Origin, RuleOrigin};
 use super::Grounding;
 use crate::base::SourceMap;
 
@@ -27,23 +29,98 @@ fn lit(g: &Grounding, l: Lit) -> String {
     }
 }
 
-/// Prints the ground program; with `sources`, each rule with a recorded origin gets a comment.
+/// Where statement `stmt` is: `file:line:col`.
+fn stmt_loc(g: &Grounding, src: &SourceMap, stmt: u32) -> String {
+    match g.statement_spans.get(stmt as usize) {
+        Some(&span) => {
+            let loc = src.location(span);
+            loc.rsplit_once('-')
+                .map_or(loc.clone(), |(l, _)| l.to_string())
+        }
+        None => format!("statement {stmt}"),
+    }
+}
+
+/// One origin as a sentence (without the `% `).
+fn origin_text(g: &Grounding, src: &SourceMap, o: &Origin) -> String {
+    let mut out = match &o.rule {
+        RuleOrigin::Statement { stmt, .. } => format!("from rule at {}", stmt_loc(g, src, *stmt)),
+        RuleOrigin::Auxiliary { of_stmt, kind, .. } => format!(
+            "{} auxiliary of rule at {}",
+            kind.name(),
+            stmt_loc(g, src, *of_stmt)
+        ),
+        RuleOrigin::Complement => "an atom and its classical negation exclude each other".into(),
+    };
+    let b = g.bindings_text(o.rule.bindings());
+    if !b.is_empty() {
+        let _ = write!(out, " with {b}");
+    }
+    if !o.removed.is_empty() {
+        let r: Vec<String> = o.removed.iter().map(|l| g.removed_text(l)).collect();
+        let _ = write!(out, "; grounding proved {}", r.join(", "));
+    }
+    out
+}
+
+/// Why a removed rule could not derive anything, as a phrase.
+fn dead_text(g: &Grounding, why: DeadReason) -> String {
+    match why {
+        DeadReason::Literal {
+            positive: true,
+            atom,
+        } => format!("{} is false", g.atom_text(atom)),
+        DeadReason::Literal {
+            positive: false,
+            atom,
+        } => format!("not {} is false ({0} is a fact)", g.atom_text(atom)),
+        DeadReason::HeadFact(atom) => format!("satisfied by the fact {}", g.atom_text(atom)),
+        DeadReason::Contradictory => "its body holds a literal and its negation".into(),
+        DeadReason::Unreachable => "its weight body cannot reach its bound".into(),
+    }
+}
+
+/// The atoms that grounding proved false (named ones, not the rewriting's own predicates),
+/// each with the removed rule instances that could have derived it.
+fn write_false_atoms(g: &Grounding, src: &SourceMap, out: &mut String) {
+    let p = &g.program.provenance;
+    for (i, r) in p.atoms.iter().enumerate() {
+        if r.status != AtomStatus::False || r.sym.is_none() {
+            continue;
+        }
+        let atom = i as GAtom + 1;
+        let name = g.atom_text(atom);
+        if name.starts_with('#') || name.starts_with("-#") {
+            continue;
+        }
+        let mut dead = p.dead_rules_for(atom).peekable();
+        if dead.peek().is_none() {
+            let _ = writeln!(out, "% false: {name}: no rule instance derives it");
+            continue;
+        }
+        let _ = writeln!(out, "% false: {name}:");
+        for d in dead {
+            for o in &d.origins {
+                let _ = writeln!(
+                    out,
+                    "%   {}; removed: {}",
+                    origin_text(g, src, o),
+                    dead_text(g, d.why)
+                );
+            }
+        }
+    }
+}
+
+/// Prints the ground program; with `sources` and provenance recorded, each rule is preceded
+/// by its origins and the false atoms are listed at the end.
 pub fn write_text(g: &Grounding, sources: Option<&SourceMap>) -> String {
     let p = &g.program;
     let mut out = String::new();
     for (i, r) in p.rules.iter().enumerate() {
-        if let (Some(src), Some(o)) = (sources, p.origins.get(i)) {
-            if let Some(&span) = g.statement_spans.get(o.rule as usize) {
-                let loc = src.location(span);
-                let loc = loc
-                    .rsplit_once('-')
-                    .map_or(loc.clone(), |(l, _)| l.to_string());
-                let b = g.bindings_text(o);
-                if b.is_empty() {
-                    let _ = writeln!(out, "% from rule at {loc}");
-                } else {
-                    let _ = writeln!(out, "% from rule at {loc} with {b}");
-                }
+        if let Some(src) = sources {
+            for o in p.provenance.origins(i) {
+                let _ = writeln!(out, "% {}", origin_text(g, src, o));
             }
         }
         let head: Vec<String> = r.head.iter().map(|&a| atom(g, a)).collect();
@@ -89,6 +166,9 @@ pub fn write_text(g: &Grounding, sources: Option<&SourceMap>) -> String {
             format!("{v:?}").to_lowercase()
         );
     }
+    // The facts as a set: one look-up per output (a list search made 200,000 shown facts take
+    // 40 s).
+    let facts: std::collections::HashSet<&str> = g.facts.iter().map(String::as_str).collect();
     for o in &p.outputs {
         let named = o.condition.len() == 1
             && o.condition[0] > 0
@@ -96,7 +176,7 @@ pub fn write_text(g: &Grounding, sources: Option<&SourceMap>) -> String {
                 .get(o.condition[0] as usize - 1)
                 .and_then(|n| n.as_deref())
                 == Some(o.symbol.as_str());
-        if named || (o.condition.is_empty() && g.facts.contains(&o.symbol)) {
+        if named || (o.condition.is_empty() && facts.contains(o.symbol.as_str())) {
             continue;
         }
         let cond: Vec<String> = o.condition.iter().map(|&l| lit(g, l)).collect();
@@ -105,6 +185,9 @@ pub fn write_text(g: &Grounding, sources: Option<&SourceMap>) -> String {
         } else {
             let _ = writeln!(out, "#show {}:{}.", o.symbol, cond.join(","));
         }
+    }
+    if let Some(src) = sources {
+        write_false_atoms(g, src, &mut out);
     }
     out
 }

@@ -288,12 +288,10 @@ impl Solver {
             self.prog.rules.push_ref(r);
             self.tr.add_rule(&mut self.engine, first + k, r);
         }
-        if !delta.origins.is_empty() || !self.prog.origins.is_empty() {
-            self.prog.origins.resize(first, Default::default());
-            self.prog.origins.extend(delta.origins.iter().cloned());
-            self.prog
-                .origins
-                .resize(self.prog.rules.len(), Default::default());
+        if !delta.provenance.is_empty() || !self.prog.provenance.is_empty() {
+            self.prog.provenance.resize_rules(first);
+            self.prog.provenance.append(delta.provenance.clone());
+            self.prog.provenance.resize_rules(self.prog.rules.len());
         }
         // Completion: the atoms defined now, the released externals, and the new atoms that
         // are not external (false when they have no rule).

@@ -81,6 +81,10 @@ pub enum StatementKind {
     PredicateDecl(PredicateDecl),
     /// A SPARC display item, e.g. `occurs.`, `-holds(F, I).`, `#object(O).`
     Display(Box<Literal>),
+    /// A SPARC display item naming a sort, `#s.`: shows the sort's atoms (name without `#`).
+    DisplaySort(String),
+    /// SPARC's `#maxint = N.` directive: integers of arithmetic and of `#nat` are 0..N.
+    MaxInt(Box<Term>),
     /// A statement that did not parse; its diagnostics were reported.
     Error,
 }
@@ -649,8 +653,8 @@ pub enum SortExprKind {
         name: String,
         /// Argument sorts, each with an optional variable name.
         args: Vec<(SortExpr, Option<String>)>,
-        /// Condition over the variables.
-        condition: Vec<Literal>,
+        /// Condition over the variables, when written.
+        condition: Option<Box<RecordCondition>>,
     },
     /// `a + b`
     Union(Box<SortExpr>, Box<SortExpr>),
@@ -660,6 +664,28 @@ pub enum SortExprKind {
     Intersection(Box<SortExpr>, Box<SortExpr>),
     /// `(e)`
     Paren(Box<SortExpr>),
+}
+
+/// The condition of a SPARC record sort, `f(#s(X), #s(Y)) : X < Y or not(X = Y)`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum RecordCondition {
+    /// `lhs op rhs` over the record's variables (and constants).
+    Compare {
+        /// Left operand.
+        lhs: Term,
+        /// The relation.
+        op: CmpOp,
+        /// Right operand.
+        rhs: Term,
+    },
+    /// `a and b` (also written `a, b`).
+    And(Box<RecordCondition>, Box<RecordCondition>),
+    /// `a or b`.
+    Or(Box<RecordCondition>, Box<RecordCondition>),
+    /// `not(a)`.
+    Not(Box<RecordCondition>),
+    /// `(a)`.
+    Paren(Box<RecordCondition>),
 }
 
 /// SPARC `name(#s1, ..., #sn).` in the `predicates` section.

@@ -77,7 +77,7 @@ pub fn parse_auto(file: FileId, text: &str) -> Parse {
     parse(file, text, detect_dialect(text))
 }
 
-/// SPARC when the first token after comments and leading `#const` statements is the section
+/// SPARC when the first token after comments and leading `#const` and `#maxint` statements is the section
 /// keyword `sorts`; the clingo dialect otherwise.
 pub fn detect_dialect(text: &str) -> Dialect {
     let mut lexer = Lexer::new(FileId(0), text, Dialect::Sparc);
@@ -87,7 +87,7 @@ pub fn detect_dialect(text: &str) -> Dialect {
         sink.clear();
         let word = &text[tok.start as usize..tok.end as usize];
         match tok.kind {
-            T::Hash if word == "#const" => loop {
+            T::Hash if word == "#const" || word == "#maxint" => loop {
                 let t = lexer.next_token(&mut sink);
                 sink.clear();
                 if matches!(t.kind, T::Dot | T::Eof) {
@@ -151,6 +151,9 @@ struct Parser<'a> {
     script_reported: bool,
     /// The current SPARC section, if any.
     section: Option<Section>,
+    /// SPARC sort names defined so far (with `#`): a defined sort may be named like a clingo
+    /// directive (`#program`), and is then read as a sort.
+    sort_names: std::collections::HashSet<String>,
     /// What gringo lists as expected after the last body element (its LALR states differ by
     /// the kind of element), used when the closing `.` is missing.
     body_end: &'static [&'static str],
@@ -217,6 +220,7 @@ fn is_keyword_hash(word: &str) -> bool {
             | "#program"
             | "#script"
             | "#end"
+            | "#maxint"
     )
 }
 
@@ -329,6 +333,7 @@ impl<'a> Parser<'a> {
             depth: 0,
             script_reported: false,
             section: None,
+            sort_names: std::collections::HashSet::new(),
             body_end: &[],
         }
     }
@@ -447,9 +452,12 @@ impl<'a> Parser<'a> {
         aggregate_function(self.tok.kind, self.cur()).is_some()
     }
 
-    /// True when the current token is a SPARC sort name `#s` (not a clingo keyword).
+    /// True when the current token is a SPARC sort name `#s`: not a clingo keyword, or a
+    /// sort defined under a keyword's name.
     fn at_sort_name(&self) -> bool {
-        self.dialect == Dialect::Sparc && self.at(T::Hash) && !is_keyword_hash(self.cur())
+        self.dialect == Dialect::Sparc
+            && self.at(T::Hash)
+            && (!is_keyword_hash(self.cur()) || self.sort_names.contains(self.cur()))
     }
 
     /// True when the token can start a term.
@@ -579,15 +587,31 @@ impl<'a> Parser<'a> {
         if self.at(T::Hash) && self.cur() == "#const" {
             return Ok(None);
         }
+        if self.at(T::Hash)
+            && self.cur() == "#maxint"
+            && matches!(self.section, None | Some(Section::Sorts))
+        {
+            self.bump();
+            self.expect(T::Eq, &["="])?;
+            let value = self.term()?;
+            self.expect(T::Dot, &["."])?;
+            return Ok(Some(StatementKind::MaxInt(Box::new(value))));
+        }
         match self.section {
             Some(Section::Sorts) => self.sort_def().map(Some),
             Some(Section::Predicates) => self.predicate_decl().map(Some),
+            Some(Section::Rules) if self.at_sort_name() => self.rule().map(Some),
             Some(Section::Display) => {
-                let start = self.tok.start;
+                if self.at_sort_name() && self.peek().kind == T::Dot {
+                    let tok = self.bump();
+                    self.bump();
+                    return Ok(Some(StatementKind::DisplaySort(
+                        self.word(tok)[1..].to_string(),
+                    )));
+                }
                 let mut lits = Vec::with_capacity(1);
                 self.literal(Ctx::Single, &mut lits)?;
                 self.expect(T::Dot, &["."])?;
-                let _ = start;
                 Ok(Some(StatementKind::Display(Box::new(lits.remove(0)))))
             }
             None if self.at_sort_name() => self.sort_def().map(Some),
@@ -953,10 +977,13 @@ impl<'a> Parser<'a> {
 
     /// `#name = sort_expression.`
     fn sort_def(&mut self) -> PResult<StatementKind> {
-        if !self.at_sort_name() {
+        // A sort may be named like a clingo directive (`#program = {a}.`): the `=` tells.
+        let defines = self.at(T::Hash) && self.peek().kind == T::Eq;
+        if !self.at_sort_name() && !defines {
             return Err(self.unexpected(&["<SORT>"]));
         }
         let name = self.bump();
+        self.sort_names.insert(self.word(name).to_string());
         let name = self.word(name)[1..].to_string();
         self.expect(T::Eq, &["="])?;
         let expr = self.sort_expr(0)?;
@@ -1103,15 +1130,62 @@ impl<'a> Parser<'a> {
         }
         self.expect(T::RParen, &[")", "\",\""])?;
         let condition = if self.eat(T::Colon) {
-            self.condition(true)?
+            Some(Box::new(self.record_condition()?))
         } else {
-            Vec::new()
+            None
         };
         Ok(SortExprKind::Record {
             name,
             args,
             condition,
         })
+    }
+
+    /// A record sort's condition: comparisons joined by `and` (or `,`) and `or`, `not(c)`,
+    /// `(c)`; `and` binds tighter than `or`.
+    fn record_condition(&mut self) -> PResult<RecordCondition> {
+        self.enter()?;
+        let mut lhs = self.record_conjunction()?;
+        while self.at(T::Ident) && self.cur() == "or" {
+            self.bump();
+            let rhs = self.record_conjunction()?;
+            lhs = RecordCondition::Or(Box::new(lhs), Box::new(rhs));
+        }
+        self.leave();
+        Ok(lhs)
+    }
+
+    /// Comparisons joined by `and` or `,`.
+    fn record_conjunction(&mut self) -> PResult<RecordCondition> {
+        let mut lhs = self.record_condition_primary()?;
+        while self.at(T::Comma) || (self.at(T::Ident) && self.cur() == "and") {
+            self.bump();
+            let rhs = self.record_condition_primary()?;
+            lhs = RecordCondition::And(Box::new(lhs), Box::new(rhs));
+        }
+        Ok(lhs)
+    }
+
+    /// `not(c)`, `(c)` or `t1 op t2` with simple operands (variables, constants, numbers).
+    fn record_condition_primary(&mut self) -> PResult<RecordCondition> {
+        if self.eat(T::Not) {
+            self.expect(T::LParen, &["("])?;
+            let inner = self.record_condition()?;
+            self.expect(T::RParen, &[")"])?;
+            return Ok(RecordCondition::Not(Box::new(inner)));
+        }
+        if self.eat(T::LParen) {
+            let inner = self.record_condition()?;
+            self.expect(T::RParen, &[")"])?;
+            return Ok(RecordCondition::Paren(Box::new(inner)));
+        }
+        let lhs = self.unary()?;
+        let Some(op) = cmp_op(self.tok.kind) else {
+            return Err(self.unexpected(&["<", "<=", "=", "!=", ">", ">="]));
+        };
+        self.bump();
+        let rhs = self.unary()?;
+        Ok(RecordCondition::Compare { lhs, op, rhs })
     }
 
     /// `name(#s1, ..., #sn).`
@@ -1923,6 +1997,15 @@ fn split_label(head: Head, first_term: Option<Term>) -> (Head, Option<Term>) {
     let Head::Disjunction(mut elements) = head else {
         return (head, None);
     };
+    // `label : :+ body.`: the label was read as a head literal with an empty condition.
+    let label_only = first_term.is_some()
+        && elements.len() == 1
+        && elements[0].has_colon
+        && elements[0].condition.is_empty()
+        && elements[0].literal.sign == Sign::Positive;
+    if label_only {
+        return (Head::None, first_term);
+    }
     let splittable = first_term.is_some()
         && elements.first().is_some_and(|e| {
             e.has_colon && e.condition.len() == 1 && e.literal.sign == Sign::Positive
@@ -2008,7 +2091,44 @@ mod tests {
             detect_dialect("% c\n#const n = 3.\nsorts\n#s = 1..n."),
             Dialect::Sparc
         );
+        assert_eq!(
+            detect_dialect("#maxint = 10.\n#const n = 3.\nsorts\n#s = 1..n."),
+            Dialect::Sparc
+        );
         assert_eq!(detect_dialect("sorts."), Dialect::Clingo);
         assert_eq!(detect_dialect("a :- b."), Dialect::Clingo);
+    }
+
+    #[test]
+    fn labelled_cr_rule_without_head() {
+        let p = ok("r1: :+ p(c).");
+        let StatementKind::Rule(rule) = &p.statements[0].kind else {
+            panic!("not a rule")
+        };
+        assert!(matches!(rule.head, Head::None));
+        let RuleKind::ConsistencyRestoring { label: Some(label) } = &rule.kind else {
+            panic!("no label")
+        };
+        assert!(matches!(&label.kind,
+            TermKind::Constant(n) | TermKind::Function { name: n, .. } if n == "r1"));
+    }
+
+    #[test]
+    fn sorts_may_take_the_names_of_directives() {
+        let text = "sorts\n#program = {a}.\npredicates\np(#program).\nrules\np(X) :- #program(X).\ndisplay\n#program.\n";
+        let p = parse(FileId(0), text, Dialect::Sparc);
+        assert!(p.diagnostics.is_empty(), "{:?}", p.diagnostics);
+        assert!(
+            matches!(&p.program.statements[1].kind, StatementKind::SortDef(d) if d.name == "program")
+        );
+        assert!(
+            matches!(&p.program.statements.last().unwrap().kind, StatementKind::DisplaySort(s) if s == "program")
+        );
+        // Before its definition, `#program` is still the directive.
+        let p = parse(FileId(0), "#program base.\n", Dialect::Sparc);
+        assert!(matches!(
+            &p.program.statements[0].kind,
+            StatementKind::ProgramPart(_)
+        ));
     }
 }

@@ -227,6 +227,16 @@ pub fn statement(out: &mut String, kind: &StatementKind) {
             literal(out, l);
             out.push('.');
         }
+        StatementKind::DisplaySort(name) => {
+            out.push('#');
+            out.push_str(name);
+            out.push('.');
+        }
+        StatementKind::MaxInt(t) => {
+            out.push_str("#maxint = ");
+            term(out, t);
+            out.push('.');
+        }
         StatementKind::Error => out.push_str("% (statement with a syntax error)"),
     }
 }
@@ -634,9 +644,9 @@ fn sort_expr(out: &mut String, e: &SortExpr) {
                 }
             }
             out.push(')');
-            if !condition.is_empty() {
+            if let Some(c) = condition {
                 out.push_str(" : ");
-                literals(out, condition);
+                record_condition(out, c);
             }
         }
         SortExprKind::Union(a, b) => binary_sort(out, a, "+", b),
@@ -645,6 +655,38 @@ fn sort_expr(out: &mut String, e: &SortExpr) {
         SortExprKind::Paren(a) => {
             out.push('(');
             sort_expr(out, a);
+            out.push(')');
+        }
+    }
+}
+
+/// The condition of a record sort.
+fn record_condition(out: &mut String, c: &RecordCondition) {
+    match c {
+        RecordCondition::Compare { lhs, op, rhs } => {
+            term(out, lhs);
+            out.push(' ');
+            out.push_str(cmp(*op));
+            out.push(' ');
+            term(out, rhs);
+        }
+        RecordCondition::And(a, b) | RecordCondition::Or(a, b) => {
+            record_condition(out, a);
+            out.push_str(if matches!(c, RecordCondition::And(..)) {
+                " and "
+            } else {
+                " or "
+            });
+            record_condition(out, b);
+        }
+        RecordCondition::Not(a) => {
+            out.push_str("not(");
+            record_condition(out, a);
+            out.push(')');
+        }
+        RecordCondition::Paren(a) => {
+            out.push('(');
+            record_condition(out, a);
             out.push(')');
         }
     }

@@ -101,12 +101,14 @@ fn statement(kind: &mut StatementKind, f: &mut dyn FnMut(&mut Span)) {
         }
         StatementKind::SortDef(d) => sort_expr(&mut d.expr, f),
         StatementKind::Display(l) => literal(l, f),
+        StatementKind::MaxInt(t) => term(t, f),
         StatementKind::Defined(_)
         | StatementKind::Include(_)
         | StatementKind::ProgramPart(_)
         | StatementKind::Script(_)
         | StatementKind::Section(_)
         | StatementKind::PredicateDecl(_)
+        | StatementKind::DisplaySort(_)
         | StatementKind::Error => {}
     }
 }
@@ -246,6 +248,21 @@ fn term(t: &mut Term, f: &mut dyn FnMut(&mut Span)) {
     }
 }
 
+/// Spans of a record sort's condition.
+fn record_condition(c: &mut RecordCondition, f: &mut dyn FnMut(&mut Span)) {
+    match c {
+        RecordCondition::Compare { lhs, rhs, .. } => {
+            term(lhs, f);
+            term(rhs, f);
+        }
+        RecordCondition::And(a, b) | RecordCondition::Or(a, b) => {
+            record_condition(a, f);
+            record_condition(b, f);
+        }
+        RecordCondition::Not(a) | RecordCondition::Paren(a) => record_condition(a, f),
+    }
+}
+
 /// Spans of a sort expression.
 fn sort_expr(e: &mut SortExpr, f: &mut dyn FnMut(&mut Span)) {
     f(&mut e.span);
@@ -267,7 +284,9 @@ fn sort_expr(e: &mut SortExpr, f: &mut dyn FnMut(&mut Span)) {
             for (a, _) in args {
                 sort_expr(a, f);
             }
-            literals(condition, f);
+            if let Some(c) = condition {
+                record_condition(c, f);
+            }
         }
         SortExprKind::Union(a, b)
         | SortExprKind::Difference(a, b)

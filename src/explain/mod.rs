@@ -1,0 +1,27 @@
+//! Explanations (DOMAIN.md section 6): the robot says why it did what it did, why it did not do
+//! something else, and why it believes what it believes, by tracing beliefs through the axioms
+//! that produced them.
+//!
+//! Parts, in dependency order:
+//! - [`term`]: structured ground terms and patterns (the explainer's view of atoms);
+//! - [`lexicon`]: the controlled vocabulary, data read from `domains/ra/lexicon.json`;
+//! - [`english`]: questions in controlled English parsed into a [`english::Question`];
+//! - [`verbalize`]: literals, actions and the answer templates of DOMAIN.md 6.7 in English;
+//! - [`tree`]: the proof-tree data type (flat, children before parents) and its independent
+//!   re-check against the ground program and the model;
+//! - [`build`]: proof trees built over a ground program and an answer set (DOMAIN.md 6.2);
+//! - [`questions`]: the four questions of DOMAIN.md 6.3-6.6 over a program, answer set and plan;
+//! - [`draw`]: proof trees as DOT text and as SVG drawn here.
+//!
+//! Invariants: nothing here reads files or the clock (the lexicon is passed as text or built
+//! in); user input (questions) never panics, it is answered by a reply that says what was not
+//! understood.
+
+pub mod term;
+pub mod lexicon;
+pub mod english;
+pub mod verbalize;
+pub mod tree;
+pub mod build;
+pub mod questions;
+pub mod draw;

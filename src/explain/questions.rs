@@ -1,0 +1,694 @@
+//! The four questions of DOMAIN.md 6.3-6.6 answered over a ground program and one answer set
+//! (an [`Oracle`]), a plan (executed or not) and its goal: plan description, why action X at
+//! step I, why not action X at step I, why belief Y at step I; with the missing-step rule and
+//! follow-up steps ([`Session`]), concise and full modes, and the answer's literals (DOMAIN.md
+//! 6.9) beside the English.
+//!
+//! Invariants: answers are computed from the oracle's rules and model, never from the question's
+//! wording; every proof tree an answer uses passed `tree::recheck` (a failed re-check is an
+//! error, not an answer); questions about steps outside the history or actions that are not
+//! there get an answer that says so, never a panic. Questions that need a new solve (why no
+//! plan, what if) are answered by [`AnswerError::NeedsSolver`]: the caller with a `Control`
+//! runs them.
+
+use super::build::{normalize, BuildConfig, Builder};
+use super::english::{holds, occurs, Question};
+use super::lexicon::Lexicon;
+use super::term::Term;
+use super::tree::{recheck, AxiomKind, Kind, NodeId, Oracle, ProofTree, RecheckError};
+use super::verbalize::{Tense, Verbalizer};
+
+/// How much an answer says.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Mode {
+    /// The top condition or reason only (the default).
+    #[default]
+    Concise,
+    /// Every condition.
+    Full,
+}
+
+/// What the questions are about: the program and answer set, the plan and the goal.
+pub struct Scenario<'a> {
+    /// The ground program (with the explanation-only axioms) and the answer set.
+    pub oracle: &'a dyn Oracle,
+    /// The plan's actions with their steps.
+    pub plan: Vec<(u32, Term)>,
+    /// The goal fluents (`relation(on,pitcher,red_block)`).
+    pub goal: Vec<Term>,
+    /// The last step of the history.
+    pub last_step: u32,
+    /// Whether the plan was executed (past tense) or not yet (future tense).
+    pub executed: bool,
+    /// The robot constant.
+    pub robot: Term,
+    /// Fluent names that are inertial (their beliefs are traced to an origin; the others are
+    /// expanded to a frontier of inertial literals and statics).
+    pub inertial: Vec<String>,
+    /// Tree-building settings.
+    pub build: BuildConfig,
+}
+
+impl<'a> Scenario<'a> {
+    /// A scenario with the RA domain's settings: robot `rob1`, inertial fluents `relation`,
+    /// `in_hand`, `partially_occluded`, `absent`, `partially_stable`.
+    pub fn ra(
+        oracle: &'a dyn Oracle,
+        plan: Vec<(u32, Term)>,
+        goal: Vec<Term>,
+        last_step: u32,
+    ) -> Self {
+        let robot = Term::constant("rob1");
+        Scenario {
+            oracle,
+            plan,
+            goal,
+            last_step,
+            executed: true,
+            build: BuildConfig {
+                agents: vec![robot.clone()],
+                ..BuildConfig::default()
+            },
+            robot,
+            inertial: [
+                "relation",
+                "in_hand",
+                "partially_occluded",
+                "absent",
+                "partially_stable",
+            ]
+            .iter()
+            .map(|s| s.to_string())
+            .collect(),
+        }
+    }
+}
+
+/// The context a follow-up question takes its step from.
+#[derive(Clone, Debug, Default)]
+pub struct Session {
+    /// The step of the previous question.
+    pub last_step: Option<u32>,
+}
+
+/// An answer: its type, its English, its literals, and the proof tree it used.
+#[derive(Clone, Debug)]
+pub struct Answer {
+    /// The question type (`plan`, `why`, `why_not`, `belief`).
+    pub kind: &'static str,
+    /// The English answer.
+    pub text: String,
+    /// The answer's ground literals in the program's syntax (DOMAIN.md 6.9).
+    pub literals: Vec<Term>,
+    /// The proof tree the answer used, with the answer's path.
+    pub tree: Option<ProofTree>,
+}
+
+/// A question this module does not answer.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum AnswerError {
+    /// The question needs a new solve (why no plan, what if) or is a task for the planner.
+    #[error("the question needs the planner or a new solve")]
+    NeedsSolver,
+    /// A proof tree failed its independent re-check (a bug, reported rather than answered).
+    #[error("{0}")]
+    Recheck(#[from] RecheckError),
+}
+
+/// Answers one question.
+pub fn answer(
+    scn: &Scenario<'_>,
+    lexicon: &Lexicon,
+    question: &Question,
+    mode: Mode,
+    session: &mut Session,
+) -> Result<Answer, AnswerError> {
+    let v = Verbalizer::new(lexicon);
+    let a = Answering { scn, v, mode };
+    match question {
+        Question::DescribePlan => Ok(a.plan()),
+        Question::WhyAction { action, step } => a.why(action, *step, session),
+        Question::WhyNotAction { action, step } => a.why_not(action, *step, session),
+        Question::Belief {
+            literal,
+            is_static,
+            step,
+        } => a.belief(literal, *is_static, *step, session),
+        Question::Goal { .. } | Question::WhyNoPlan { .. } | Question::WhatIf { .. } => {
+            Err(AnswerError::NeedsSolver)
+        }
+    }
+}
+
+struct Answering<'s, 'a> {
+    scn: &'s Scenario<'a>,
+    v: Verbalizer<'s>,
+    mode: Mode,
+}
+
+impl Answering<'_, '_> {
+    fn tense(&self) -> Tense {
+        if self.scn.executed {
+            Tense::Past
+        } else {
+            Tense::Future
+        }
+    }
+
+    fn simple(kind: &'static str, text: String) -> Answer {
+        Answer {
+            kind,
+            text,
+            literals: Vec::new(),
+            tree: None,
+        }
+    }
+
+    /// A checked proof tree.
+    fn tree(&self, literal: &Term) -> Result<ProofTree, AnswerError> {
+        let tree = Builder::new(self.scn.oracle, self.scn.build.clone()).build(literal);
+        recheck(&tree, self.scn.oracle)?;
+        Ok(tree)
+    }
+
+    fn outside(&self, kind: &'static str, step: u32) -> Option<Answer> {
+        (step > self.scn.last_step).then(|| {
+            Self::simple(
+                kind,
+                self.v.template(
+                    "outside_history",
+                    &[
+                        ("step", &step.to_string()),
+                        ("last", &self.scn.last_step.to_string()),
+                    ],
+                ),
+            )
+        })
+    }
+
+    /// DOMAIN.md 6.3.
+    fn plan(&self) -> Answer {
+        Answer {
+            kind: "plan",
+            text: self.v.plan(&self.scn.plan, self.scn.executed),
+            literals: self.scn.plan.iter().map(|(i, a)| occurs(a, *i)).collect(),
+            tree: None,
+        }
+    }
+
+    /// The missing-step rule: the plan's actions with the same name and first object (the
+    /// robot aside) as the pattern; `(step, note)` with a note when there were several.
+    fn missing_step(&self, action: &Term) -> Option<(u32, Option<String>)> {
+        let key = |a: &Term| (a.name().map(str::to_string), object_arg(a).cloned());
+        let mut steps: Vec<u32> = self
+            .scn
+            .plan
+            .iter()
+            .filter(|(_, a)| key(a) == key(action))
+            .map(|(i, _)| *i)
+            .collect();
+        steps.sort_unstable();
+        let first = *steps.first()?;
+        let note = (steps.len() > 1).then(|| {
+            let list: Vec<String> = steps.iter().map(|s| self.v.step(i64::from(*s))).collect();
+            self.v.template(
+                "step_chosen",
+                &[("steps", &super::english::join_and(&list))],
+            )
+        });
+        Some((first, note))
+    }
+
+    /// The plan's action at a step matching the pattern.
+    fn planned(&self, action: &Term, step: u32) -> Option<&Term> {
+        self.scn.plan.iter().find_map(|(i, a)| {
+            let mut b = Vec::new();
+            (*i == step && action.matches(a, &mut b)).then_some(a)
+        })
+    }
+
+    /// DOMAIN.md 6.4.
+    fn why(
+        &self,
+        action: &Term,
+        step: Option<u32>,
+        session: &mut Session,
+    ) -> Result<Answer, AnswerError> {
+        let (step, note) = match step {
+            Some(s) => (s, None),
+            None => match self.missing_step(action) {
+                Some(x) => x,
+                None => {
+                    let text = self.v.template(
+                        "not_done",
+                        &[
+                            (
+                                "action",
+                                &self.v.action(action, super::verbalize::ActionForm::Base),
+                            ),
+                            ("step", ""),
+                        ],
+                    );
+                    return Ok(Self::simple("why", tidy(&text)));
+                }
+            },
+        };
+        if let Some(a) = self.outside("why", step) {
+            return Ok(a);
+        }
+        session.last_step = Some(step);
+        if self.planned(action, step).is_none() {
+            let text = self.v.template(
+                "not_done",
+                &[
+                    (
+                        "action",
+                        &self.v.action(action, super::verbalize::ActionForm::Base),
+                    ),
+                    ("step", &self.v.step(i64::from(step))),
+                ],
+            );
+            return Ok(Self::simple("why", text));
+        }
+        // 1-3: for each later action a_j, its executability conditions grounded at `step`;
+        // a body fluent literal that holds at `step` and not at `step + 1` is a reason; the
+        // furthest a_j wins.
+        let mut best: Option<(u32, Term, Term)> = None;
+        for (j, later) in &self.scn.plan {
+            if *j <= step {
+                continue;
+            }
+            let head = occurs(later, step).complement().expect("occurs has a sign");
+            for rule in self.scn.oracle.rules_for(&head) {
+                if rule.kind != AxiomKind::Executability {
+                    continue;
+                }
+                for lit in rule.positive() {
+                    if lit.name() != Some("holds") {
+                        continue;
+                    }
+                    let next = at_step(lit, step + 1);
+                    if self.scn.oracle.holds(lit) && !self.scn.oracle.holds(&next) {
+                        let better = best.as_ref().is_none_or(|(bj, _, _)| j > bj);
+                        if better {
+                            best = Some((*j, later.clone(), lit.clone()));
+                        }
+                    }
+                }
+            }
+        }
+        let (text, literals) = match best {
+            Some((j, later, lit)) => (
+                self.v.why_action(&later, &lit, self.tense()),
+                vec![lit, occurs(&later, j)],
+            ),
+            None => {
+                // 5: the action achieves a goal literal directly.
+                let last = self.scn.last_step;
+                let goal: Vec<Term> = self.scn.goal.iter().map(|g| holds(g, last)).collect();
+                (self.v.why_goal(&goal), goal)
+            }
+        };
+        Ok(Answer {
+            kind: "why",
+            text: prefix(note, text),
+            literals,
+            tree: None,
+        })
+    }
+
+    /// DOMAIN.md 6.5.
+    fn why_not(
+        &self,
+        action: &Term,
+        step: Option<u32>,
+        session: &mut Session,
+    ) -> Result<Answer, AnswerError> {
+        let (step, note) = match step {
+            Some(s) => (s, None),
+            None => match self.missing_step(action) {
+                Some(x) => x,
+                None => (session.last_step.unwrap_or(0), None),
+            },
+        };
+        if let Some(a) = self.outside("why_not", step) {
+            return Ok(a);
+        }
+        session.last_step = Some(step);
+        if !action.is_ground() {
+            // A target that was not named: the planned action at that step, if it matches.
+            let Some(a) = self.planned(action, step).cloned() else {
+                return Ok(Self::simple("why_not", self.v.template("no_reason", &[])));
+            };
+            return Ok(Answer {
+                kind: "why_not",
+                text: self.v.did_it(&a, i64::from(step)),
+                literals: vec![occurs(&a, step)],
+                tree: None,
+            });
+        }
+        // 6: the action did occur.
+        if self.scn.oracle.holds(&occurs(action, step)) {
+            return Ok(Answer {
+                kind: "why_not",
+                text: prefix(note, self.v.did_it(action, i64::from(step))),
+                literals: vec![occurs(action, step)],
+                tree: None,
+            });
+        }
+        let root = occurs(action, step)
+            .complement()
+            .expect("occurs has a sign");
+        let mut tree = self.tree(&root)?;
+        // 1-4: the satisfied executability conditions, in the tree's preference order (those
+        // mentioning the action's objects first).
+        let conditions: Vec<NodeId> = tree
+            .roots
+            .iter()
+            .copied()
+            .filter(|r| {
+                matches!(
+                    tree.node(*r).kind,
+                    Kind::Axiom {
+                        kind: AxiomKind::Executability,
+                        ..
+                    }
+                )
+            })
+            .collect();
+        if conditions.is_empty() {
+            // 5: only the action CWA.
+            let objects: Vec<&Term> = action
+                .args()
+                .iter()
+                .skip(1)
+                .filter(|o| o.is_constant())
+                .collect();
+            let related = objects.iter().any(|o| {
+                self.scn.goal.iter().any(|g| mentions(g, o))
+                    || self.scn.plan.iter().any(|(_, a)| mentions(a, o))
+            });
+            let text = match (related, objects.first()) {
+                (false, Some(o)) => self.v.why_not_unrelated(o),
+                _ => self.v.why_not_not_planned(),
+            };
+            return Ok(Answer {
+                kind: "why_not",
+                text: prefix(note, text),
+                literals: Vec::new(),
+                tree: Some(tree),
+            });
+        }
+        let chosen: Vec<NodeId> = match self.mode {
+            Mode::Concise => conditions[..1].to_vec(),
+            Mode::Full => conditions.clone(),
+        };
+        let inner = root.arg(0).cloned();
+        let mut said: Vec<Term> = Vec::new();
+        let mut observed: Option<(Term, u32)> = None;
+        let mut path = vec![chosen[0]];
+        for (k, cond) in chosen.iter().enumerate() {
+            let node = tree.node(*cond).clone();
+            let mut seen = Vec::new();
+            for c in &node.children {
+                let child = tree.node(*c);
+                // One alternative per body literal; the sort guard restating the action is
+                // not a reason.
+                if seen.contains(&child.literal)
+                    || inner.as_ref().is_some_and(|i| contains(&child.literal, i))
+                {
+                    continue;
+                }
+                seen.push(child.literal.clone());
+                let normal = normalize(&tree, *c, &self.scn.build.spatial_labels);
+                let n = tree.node(normal);
+                if k == 0 && path.len() == 1 && child.step.is_some() {
+                    path.extend(spatial_path(&tree, *c, normal));
+                }
+                if n.kind == Kind::Observation && n.step == Some(step) && chosen.len() == 1 {
+                    observed.get_or_insert((n.literal.clone(), step));
+                }
+                said.push(n.literal.clone());
+            }
+        }
+        let text = match (&observed, said.len()) {
+            (Some((lit, s)), 1) => self.v.why_not_observed(lit, i64::from(*s)),
+            _ => self.v.why_not(&said, self.tense()),
+        };
+        extend_to_leaf(&mut path, &tree);
+        tree.path = path;
+        recheck(&tree, self.scn.oracle)?;
+        Ok(Answer {
+            kind: "why_not",
+            text: prefix(note, text),
+            literals: said,
+            tree: Some(tree),
+        })
+    }
+
+    /// DOMAIN.md 6.6.
+    fn belief(
+        &self,
+        literal: &Term,
+        is_static: bool,
+        step: Option<u32>,
+        session: &mut Session,
+    ) -> Result<Answer, AnswerError> {
+        if is_static {
+            let text = if self.scn.oracle.holds(literal) {
+                self.v.belief_static()
+            } else {
+                self.v.template(
+                    "not_believed",
+                    &[
+                        ("literal", &self.v.fluent(literal, Tense::Present)),
+                        ("step", ""),
+                    ],
+                )
+            };
+            return Ok(Answer {
+                kind: "belief",
+                text: tidy(&text),
+                literals: vec![literal.clone()],
+                tree: None,
+            });
+        }
+        let step = match step.or(session.last_step) {
+            Some(s) => s,
+            None => (0..=self.scn.last_step)
+                .rev()
+                .find(|i| self.scn.oracle.holds(&holds(literal, *i)))
+                .unwrap_or(self.scn.last_step),
+        };
+        if let Some(a) = self.outside("belief", step) {
+            return Ok(a);
+        }
+        session.last_step = Some(step);
+        let lit = holds(literal, step);
+        if !self.scn.oracle.holds(&lit) {
+            let complement = lit.complement().expect("holds has a sign");
+            if self.scn.oracle.holds(&complement) {
+                let mut a = self.explain_belief(&complement, step)?;
+                a.text = format!(
+                    "{} {}",
+                    self.v.template(
+                        "complement_instead",
+                        &[("literal", &self.v.clause(&complement, Tense::Past))]
+                    ),
+                    a.text
+                );
+                return Ok(a);
+            }
+            return Ok(Answer {
+                kind: "belief",
+                text: self.v.not_believed(&lit, i64::from(step), Tense::Past),
+                literals: Vec::new(),
+                tree: None,
+            });
+        }
+        self.explain_belief(&lit, step)
+    }
+
+    fn explain_belief(&self, lit: &Term, step: u32) -> Result<Answer, AnswerError> {
+        let tree = self.tree(lit)?;
+        let fluent_name = lit.arg(0).and_then(Term::name).unwrap_or("");
+        let inertial = self.scn.inertial.iter().any(|n| n == fluent_name);
+        let path = tree.path.clone();
+        let Some(&leaf) = path.last() else {
+            return Ok(Self::simple("belief", self.v.template("no_reason", &[])));
+        };
+        let root = tree.node(path[0]);
+        if root.kind == Kind::Assumption {
+            let default = lit.complement().expect("holds has a sign");
+            return Ok(Answer {
+                kind: "belief",
+                text: self.v.belief_assumed(lit, &default, Tense::Past),
+                literals: vec![lit.clone()],
+                tree: Some(tree),
+            });
+        }
+        if inertial {
+            // Follow spatial algebra and inertia back to the origin.
+            let leaf_node = tree.node(leaf);
+            let (text, literals) = match &leaf_node.kind {
+                Kind::Action => {
+                    let action = leaf_node.literal.arg(0).cloned().unwrap_or(Term::Num(0));
+                    let j = leaf_node.step.unwrap_or(0);
+                    (
+                        self.v.belief_action(&action, i64::from(j)),
+                        vec![leaf_node.literal.clone()],
+                    )
+                }
+                Kind::Observation => (
+                    self.v.belief_observed(
+                        &leaf_node.literal,
+                        i64::from(leaf_node.step.unwrap_or(step)),
+                    ),
+                    vec![leaf_node.literal.clone()],
+                ),
+                Kind::ClosedWorld => {
+                    let c = leaf_node
+                        .literal
+                        .complement()
+                        .unwrap_or(leaf_node.literal.clone());
+                    (
+                        self.v.template(
+                            "belief_default",
+                            &[("literal", &self.v.clause(&c, Tense::Past))],
+                        ),
+                        vec![leaf_node.literal.clone()],
+                    )
+                }
+                _ => (
+                    self.v
+                        .belief_frontier(std::slice::from_ref(&leaf_node.literal), Tense::Past),
+                    vec![leaf_node.literal.clone()],
+                ),
+            };
+            return Ok(Answer {
+                kind: "belief",
+                text,
+                literals,
+                tree: Some(tree),
+            });
+        }
+        // A defined fluent: expand defined literals (preferred supports) down to inertial
+        // literals and statics; that frontier is the answer.
+        let mut frontier = Vec::new();
+        self.frontier(&tree, path[0], &mut frontier, &mut Vec::new());
+        Ok(Answer {
+            kind: "belief",
+            text: self.v.belief_frontier(&frontier, Tense::Past),
+            literals: frontier,
+            tree: Some(tree),
+        })
+    }
+
+    fn frontier(&self, tree: &ProofTree, id: NodeId, out: &mut Vec<Term>, seen: &mut Vec<Term>) {
+        let n = tree.node(id);
+        let name = n.literal.arg(0).and_then(Term::name).unwrap_or("");
+        let is_fluent = n.literal.name() == Some("holds");
+        let stop =
+            !is_fluent || self.scn.inertial.iter().any(|x| x == name) || n.children.is_empty();
+        if stop {
+            // Statics and sort guards: statics are said; sort atoms (no step, not a lexicon
+            // property) are said too, as the program's own literals.
+            if !out.contains(&n.literal) {
+                out.push(n.literal.clone());
+            }
+            return;
+        }
+        for c in &n.children {
+            let lit = &tree.node(*c).literal;
+            if seen.contains(lit) {
+                continue;
+            }
+            seen.push(lit.clone());
+            self.frontier(tree, *c, out, seen);
+        }
+    }
+}
+
+/// The object argument of an action (its second argument: the first is the robot).
+fn object_arg(action: &Term) -> Option<&Term> {
+    action.arg(1)
+}
+
+/// The same `holds`/`occurs` literal at another step.
+fn at_step(lit: &Term, step: u32) -> Term {
+    let mut t = lit.clone();
+    if let Term::Fun { args, .. } = &mut t {
+        if let Some(last) = args.last_mut() {
+            *last = Term::Num(step as i32);
+        }
+    }
+    t
+}
+
+fn mentions(t: &Term, c: &Term) -> bool {
+    t == c || t.args().iter().any(|a| mentions(a, c))
+}
+
+fn contains(t: &Term, inner: &Term) -> bool {
+    t == inner || t.args().iter().any(|a| contains(a, inner))
+}
+
+/// The nodes from `from` (included) down to `to` along first fluent children.
+fn spatial_path(tree: &ProofTree, from: NodeId, to: NodeId) -> Vec<NodeId> {
+    let mut out = vec![from];
+    let mut at = from;
+    while at != to {
+        let next = tree
+            .node(at)
+            .children
+            .iter()
+            .copied()
+            .find(|c| *c == to || reaches(tree, *c, to));
+        match next {
+            Some(n) => {
+                out.push(n);
+                at = n;
+            }
+            None => break,
+        }
+    }
+    out
+}
+
+fn reaches(tree: &ProofTree, from: NodeId, to: NodeId) -> bool {
+    from == to
+        || tree
+            .node(from)
+            .children
+            .iter()
+            .any(|c| reaches(tree, *c, to))
+}
+
+/// Extends a path down to a leaf through first fluent children.
+fn extend_to_leaf(path: &mut Vec<NodeId>, tree: &ProofTree) {
+    while let Some(&last) = path.last() {
+        let n = tree.node(last);
+        let next = n
+            .children
+            .iter()
+            .copied()
+            .find(|c| tree.node(*c).step.is_some())
+            .or_else(|| n.children.first().copied());
+        match next {
+            Some(c) => path.push(c),
+            None => break,
+        }
+    }
+}
+
+fn prefix(note: Option<String>, text: String) -> String {
+    match note {
+        Some(n) => format!("{n} {text}"),
+        None => text,
+    }
+}
+
+/// Removes the doubled space and the space before the full stop an empty hole leaves.
+fn tidy(s: &str) -> String {
+    s.replace("  ", " ").replace(" .", ".")
+}

@@ -1,0 +1,8 @@
+% A sort defined twice (SPARC manual, sort definition errors).
+sorts
+#s = {a}.
+#s = {b}.
+predicates
+p(#s).
+rules
+p(a).
