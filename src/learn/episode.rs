@@ -220,7 +220,8 @@ pub fn run(
             && since_last < config.stall_trials
         {
             let s = generate(&config.pools, ty, &mut rng);
-            let (outcome, data) = trial(oracle, learner, &s, &robot, config.collect.informative_only);
+            let (outcome, data) =
+                trial(oracle, learner, &s, &robot, config.collect.informative_only);
             report.trials += 1;
             trials.push(data);
             if collector.offer(t, &outcome).is_empty() {
@@ -352,7 +353,11 @@ fn induce(
 /// apart, and a seeded tie-break between them would split the vote between two spellings of
 /// one fact (`below(O1, O2)` and `on(O2, O1)` when every covered object has its cover directly
 /// on it). The kept one is the lowest by [`Algebra::rank`], then the first created.
-pub fn dedupe_columns(features: &[Literal], rows: Vec<Vec<bool>>, algebra: &Algebra) -> (Vec<Literal>, Vec<Vec<bool>>) {
+pub fn dedupe_columns(
+    features: &[Literal],
+    rows: Vec<Vec<bool>>,
+    algebra: &Algebra,
+) -> (Vec<Literal>, Vec<Vec<bool>>) {
     let column = |f: usize| -> Vec<bool> { rows.iter().map(|r| r[f]).collect() };
     let mut best: std::collections::HashMap<Vec<bool>, usize> = std::collections::HashMap::new();
     for f in 0..features.len() {
@@ -365,7 +370,10 @@ pub fn dedupe_columns(features: &[Literal], rows: Vec<Vec<bool>>, algebra: &Alge
     let mut keep: Vec<usize> = best.into_values().collect();
     keep.sort_unstable();
     let kept_features = keep.iter().map(|&f| features[f].clone()).collect();
-    let kept_rows = rows.iter().map(|r| keep.iter().map(|&f| r[f]).collect()).collect();
+    let kept_rows = rows
+        .iter()
+        .map(|r| keep.iter().map(|&f| r[f]).collect())
+        .collect();
     (kept_features, kept_rows)
 }
 
@@ -392,7 +400,14 @@ mod tests {
             vec![true, true, true, true, false],
         ];
         let (f, rows) = dedupe_columns(&features, rows, &Algebra::ra());
-        assert_eq!(f, vec![rel("below", o(1), o(2)), in_hand(false, r(1), o(1)), rel("touch", o(1), o(4))]);
+        assert_eq!(
+            f,
+            vec![
+                rel("below", o(1), o(2)),
+                in_hand(false, r(1), o(1)),
+                rel("touch", o(1), o(4))
+            ]
+        );
         assert_eq!(rows[0], vec![true, false, true]);
     }
 }
