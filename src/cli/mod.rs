@@ -15,6 +15,7 @@ pub mod demo;
 pub mod learn;
 pub mod input;
 pub mod options;
+pub mod plan;
 pub mod report;
 
 use std::io::{Read, Write};
@@ -107,6 +108,7 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     match args.first().map(String::as_str) {
         Some("demo") => return demo::run(&args[1..], io.out, io.err),
         Some("translate") => return action::run_translate(&args[1..], io.out, io.err),
+        Some("plan") => return plan::run_plan(&args[1..], io.out, io.err),
         #[cfg(feature = "sim")]
         Some("sim") => return Ok(sim::run_with(&args[1..], io.out, io.err)),
         #[cfg(not(feature = "sim"))]
@@ -119,7 +121,7 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
         }
         Some("learn") => return learn::run_learn(&args[1..], io.out, io.err),
         Some("experiment") => return learn::run_experiment(&args[1..], io.out, io.err),
-        Some(verb @ ("plan" | "explain")) => {
+        Some(verb @ "explain") => {
             writeln!(
                 io.err,
                 "*** ERROR: (lucent): `lucent {verb}` is not part of this build yet; \
