@@ -234,3 +234,77 @@ fn kb_full_switches_keep_or_change_the_tabletop_plans() {
     assert!(four.is_subset(&found));
     assert!(models.iter().all(|m| m.cr_applied.is_empty()));
 }
+
+#[test]
+fn supports_cite_the_al_d_axioms() {
+    // The chain an explanation follows: an atom's supporting ground rule, its source statement
+    // in the translation, and that statement's AL_d origin.
+    let path = root().join("domains/ra/scenes/tabletop_task.ald");
+    let mut sources = SourceMap::new();
+    let file = sources.add(
+        path.to_string_lossy().into_owned(),
+        std::fs::read_to_string(&path).unwrap(),
+    );
+    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let parsed = action::load(&mut sources, file, &mut read);
+    let options = Options {
+        profile: Some("tabletop".into()),
+        overrides: Vec::new(),
+    };
+    let t = action::translate(&parsed.description, &options);
+    let config = GroundConfig {
+        provenance: true,
+        ..GroundConfig::default()
+    };
+    let g = ground(&t.program, None, &config);
+    let atom_of = |name: &str| {
+        g.atom_names
+            .iter()
+            .position(|n| n.as_deref() == Some(name))
+            .map(|i| i as u32 + 1)
+            .unwrap_or_else(|| panic!("no atom {name}"))
+    };
+    let mut solver = Solver::new(
+        &g.program,
+        Config {
+            models: 0,
+            ..Config::default()
+        },
+    );
+    let result = solver.solve();
+    assert_eq!(result.models.len(), 4);
+    let cite = |model: &solve::Model, name: &str| -> (String, &'static str) {
+        let a = atom_of(name);
+        let k = model.atoms.binary_search(&a).expect("the atom holds");
+        let rule = model.support[k].expect("a supporting rule");
+        let stmt = g.program.provenance.origins(rule)[0]
+            .rule
+            .stmt()
+            .expect("a source statement") as usize;
+        let origin = &t.origins[stmt];
+        (origin.label.clone().unwrap_or_default(), origin.kind.name())
+    };
+    for m in &result.models {
+        assert_eq!(
+            cite(m, "holds(in_hand(rob1,red_cube_large),3)"),
+            ("C3".to_string(), "causal law")
+        );
+        assert_eq!(
+            cite(m, "holds(relation(on,pitcher,red_cube_large),0)"),
+            (String::new(), "history")
+        );
+        let target = plan(m)[1]
+            .strip_prefix("putdown(rob1,pitcher,")
+            .and_then(|s| s.strip_suffix(")@1"))
+            .unwrap()
+            .to_string();
+        assert_eq!(
+            cite(m, &format!("holds(relation(on,pitcher,{target}),2)")),
+            ("C1".to_string(), "causal law")
+        );
+        assert_eq!(
+            cite(m, &format!("holds(relation(above,pitcher,{target}),2)")),
+            ("SR1b".to_string(), "state constraint")
+        );
+    }
+}

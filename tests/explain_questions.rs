@@ -127,3 +127,30 @@ fn tasks_and_counterfactuals_go_to_the_solver() {
         assert_eq!(r.unwrap_err(), AnswerError::NeedsSolver, "{q}");
     }
 }
+
+#[test]
+fn json_output() {
+    let lex = Lexicon::ra();
+    let parser = Parser::new(&lex, SCENE);
+    let (oracle, plan) = paper();
+    let scn = Scenario::ra(&oracle, plan, vec![t("relation(on,pitcher,red_block)")], 6);
+    let q = parser
+        .parse("Why did you not pick white block at step 0?")
+        .unwrap();
+    let a = answer(&scn, &lex, &q, Mode::Concise, &mut Session::default()).unwrap();
+    let json = a.to_json();
+    assert_eq!(json["type"], "why_not");
+    assert_eq!(
+        json["answer"],
+        "Because I observed the green can on the white block at step 0."
+    );
+    assert_eq!(
+        json["literals"],
+        serde_json::json!(["holds(relation(on,green_can,white_block),0)"])
+    );
+    let path = json["tree"]["path"].as_array().unwrap();
+    let nodes = json["tree"]["nodes"].as_array().unwrap();
+    let last = path.last().unwrap().as_u64().unwrap() as usize;
+    assert_eq!(nodes[last]["kind"], "observation");
+    insta::assert_snapshot!(serde_json::to_string_pretty(&json).unwrap());
+}

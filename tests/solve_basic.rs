@@ -531,3 +531,39 @@ fn a_later_step_may_define_an_external_atom_that_was_false() {
     s.add_rules(&[Rule::normal(&[1], &[2])]).unwrap();
     assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2]]);
 }
+
+#[test]
+fn a_later_step_closes_a_loop_through_an_atom_that_could_have_been_merged() {
+    // Step 1: a :- b.  b :- d.  {c}.  #external d.  With equivalence merging a is a
+    // candidate to share b's variable (its only rule is a :- b), but b depends on the external
+    // d, so a later step may close a positive cycle through both.
+    // Step 2: d :- a.  d :- c.  Now a -> b -> d -> a is a loop whose only external support is
+    // c: answer sets {} and {a, b, c, d}; without c the loop is unfounded.
+    let mut p = program(
+        4,
+        vec![
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[4]),
+            Rule::choice(&[3], &[]),
+        ],
+    );
+    p.externals = vec![(4, ExternalValue::Free)];
+    for eq in [false, true] {
+        let mut s = Solver::new(
+            &p,
+            Config {
+                models: 0,
+                eq,
+                ..Config::default()
+            },
+        );
+        assert_eq!(
+            atom_sets(&mut s),
+            vec![vec![], vec![1, 2, 3, 4], vec![1, 2, 4], vec![3]],
+            "eq {eq}"
+        );
+        s.add_rules(&[Rule::normal(&[4], &[1]), Rule::normal(&[4], &[3])])
+            .unwrap();
+        assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2, 3, 4]], "eq {eq}");
+    }
+}

@@ -467,3 +467,112 @@ proptest! {
         run_chunks(&p, chunks, false, &[])?;
     }
 }
+
+/// `n` queens (atom `r * n + c + 1`), with one CR rule `q1 :+ .` and a minimize statement
+/// over the first row when asked.
+fn queens(n: u32, cr: bool, minimize: bool) -> GroundProgram {
+    let mut p = GroundProgram::new();
+    let at = |r: u32, c: u32| (r * n + c + 1) as i32;
+    p.num_atoms = n * n;
+    for r in 0..n {
+        p.rules.push(Rule::choice(
+            &(0..n).map(|c| at(r, c) as u32).collect::<Vec<_>>(),
+            &[],
+        ));
+        p.rules.push(Rule::normal(
+            &[],
+            &(0..n).map(|c| -at(r, c)).collect::<Vec<_>>(),
+        ));
+    }
+    for a in 1..=(n * n) as i32 {
+        for b in a + 1..=(n * n) as i32 {
+            let (r1, c1, r2, c2) = (
+                (a - 1) / n as i32,
+                (a - 1) % n as i32,
+                (b - 1) / n as i32,
+                (b - 1) % n as i32,
+            );
+            if r1 == r2 || c1 == c2 || r1 + c2 == r2 + c1 || r1 - c1 == r2 - c2 {
+                p.rules.push(Rule::normal(&[], &[a, b]));
+            }
+        }
+    }
+    if cr {
+        let appl = p.new_atom();
+        p.rules.push(Rule::choice(&[appl], &[]));
+        p.rules.push(Rule::normal(&[1], &[appl as i32]));
+        p.cr_rules.push(CrRule {
+            appl,
+            label: "r".into(),
+        });
+    }
+    if minimize {
+        p.minimize.push(Minimize {
+            priority: 0,
+            lits: (0..n).map(|c| (at(0, c), c as i64)).collect(),
+        });
+    }
+    p
+}
+
+/// Calls a solver 10,000 times with changing assumptions and checks that the engine's
+/// variables, weight constraints, level-0 assignments and clauses stay bounded: each call's
+/// guard and auxiliary variables are recycled, its weight constraints removed, and the learnt
+/// clauses kept within the per-call limit.
+fn stays_bounded(p: &GroundProgram, config: Config) {
+    let mut s = Solver::new(p, config);
+    let before = s.engine_size();
+    let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut peak = before;
+    for _ in 0..10_000 {
+        let mut a = Vec::new();
+        for _ in 0..2 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let atom = (x % 25) as i32 + 1;
+            a.push(if x >> 40 & 1 == 0 { atom } else { -atom });
+        }
+        s.solve_with(&a);
+        let now = s.engine_size();
+        peak.vars = peak.vars.max(now.vars);
+        peak.weights = peak.weights.max(now.weights);
+        peak.level0 = peak.level0.max(now.level0);
+        peak.clauses = peak.clauses.max(now.clauses);
+        peak.learnts = peak.learnts.max(now.learnts);
+    }
+    // Variables: the program's, plus those retired and not yet freed (at most a quarter of
+    // the variables plus 256 before a pass frees them), plus one call's own.
+    assert!(
+        peak.vars <= before.vars + 256 + before.vars / 2 + 64,
+        "{before:?} -> {peak:?}"
+    );
+    assert!(peak.weights <= before.weights + 8, "{before:?} -> {peak:?}");
+    assert!(
+        peak.level0 <= before.level0 + 256 + before.vars / 2 + 64,
+        "{before:?} -> {peak:?}"
+    );
+    // Clauses: the program's (level-0 simplification only removes some), learnt binary ones
+    // (counted here) and the guarded ones of calls not yet swept.
+    assert!(
+        peak.clauses <= 2 * before.clauses + 2000,
+        "{before:?} -> {peak:?}"
+    );
+    assert!(peak.learnts <= 2000, "{before:?} -> {peak:?}");
+}
+
+#[test]
+fn many_calls_leave_nothing_behind() {
+    let one = Config::default();
+    stays_bounded(&queens(5, false, false), one.clone());
+    stays_bounded(&queens(5, true, false), one.clone());
+    stays_bounded(&queens(5, false, true), one.clone());
+    stays_bounded(
+        &queens(5, true, false),
+        Config {
+            cr_mode: CrMode::Subset,
+            ..one.clone()
+        },
+    );
+    stays_bounded(&queens(5, false, false), Config::all_models());
+}

@@ -76,6 +76,10 @@ pub struct Builder<'o> {
     memo: HashMap<Term, (Vec<NodeId>, HashSet<Term>)>,
     /// Subtree size of each node (nodes to its leaves, itself included).
     size: Vec<usize>,
+    /// The lowest path position a cycle cut (or the depth limit, as position 0) referred to
+    /// during the current expansion: a result that depends on the path above a literal is not
+    /// memoized.
+    lowest_cut: usize,
 }
 
 impl<'o> Builder<'o> {
@@ -90,6 +94,7 @@ impl<'o> Builder<'o> {
             path: Vec::new(),
             memo: HashMap::new(),
             size: Vec::new(),
+            lowest_cut: usize::MAX,
         }
     }
 
@@ -127,6 +132,7 @@ impl<'o> Builder<'o> {
     /// empty if no support survives the loop and depth checks.
     fn expand(&mut self, literal: &Term, depth: usize) -> Vec<NodeId> {
         if depth >= MAX_DEPTH {
+            self.lowest_cut = 0;
             return Vec::new();
         }
         if let Some((alts, used)) = self.memo.get(literal) {
@@ -141,6 +147,8 @@ impl<'o> Builder<'o> {
             .filter(|r| self.body_holds(r))
             .collect();
         supports.sort_by_key(|r| (self.rank(r), !self.mentions_root(r)));
+        let position = self.path.len();
+        let outer_cut = std::mem::replace(&mut self.lowest_cut, usize::MAX);
         self.path.push(literal.clone());
         let mut alts: Vec<(NodeId, u8, bool, usize)> = Vec::new();
         for (order, rule) in supports.into_iter().enumerate() {
@@ -163,12 +171,17 @@ impl<'o> Builder<'o> {
             (rank, not_mentions, self.size[id.index()], order)
         });
         let alts: Vec<NodeId> = alts.into_iter().map(|a| a.0).collect();
-        let mut used = HashSet::new();
-        let mut seen = HashSet::new();
-        for a in &alts {
-            self.collect_literals(*a, &mut used, &mut seen);
+        // Memoize only a result that no cut above this literal shaped.
+        let context_free = self.lowest_cut >= position;
+        self.lowest_cut = self.lowest_cut.min(outer_cut);
+        if context_free {
+            let mut used = HashSet::new();
+            let mut seen = HashSet::new();
+            for a in &alts {
+                self.collect_literals(*a, &mut used, &mut seen);
+            }
+            self.memo.insert(literal.clone(), (alts.clone(), used));
         }
-        self.memo.insert(literal.clone(), (alts.clone(), used));
         alts
     }
 
@@ -191,7 +204,12 @@ impl<'o> Builder<'o> {
             return Some(self.add(Node::supported(literal.clone(), kind, rule)));
         }
         let body: Vec<Term> = rule.positive().cloned().collect();
-        if body.iter().any(|b| self.path.contains(b)) {
+        if let Some(p) = body
+            .iter()
+            .filter_map(|b| self.path.iter().position(|x| x == b))
+            .min()
+        {
+            self.lowest_cut = self.lowest_cut.min(p);
             return None;
         }
         let mut per_literal: Vec<Vec<NodeId>> = Vec::new();

@@ -692,3 +692,46 @@ fn prefix(note: Option<String>, text: String) -> String {
 fn tidy(s: &str) -> String {
     s.replace("  ", " ").replace(" .", ".")
 }
+
+impl Answer {
+    /// The answer as `--outf=2` JSON: `type`, `answer` (the English), `literals` (program
+    /// syntax) and, when the answer used one, `tree` (nodes children first, roots, path).
+    pub fn to_json(&self) -> serde_json::Value {
+        let mut obj = serde_json::json!({
+            "type": self.kind,
+            "answer": self.text,
+            "literals": self.literals.iter().map(Term::to_string).collect::<Vec<_>>(),
+        });
+        if let Some(tree) = &self.tree {
+            obj["tree"] = tree_json(tree);
+        }
+        obj
+    }
+}
+
+/// A proof tree as JSON: `nodes` (index order, children before parents) with `literal`,
+/// `step`, `holds`, `kind`, `rule` (the ground rule instance, as text), `children`, `blocked`
+/// and `no_evidence`; `roots`; `path`.
+pub fn tree_json(tree: &ProofTree) -> serde_json::Value {
+    let nodes: Vec<serde_json::Value> = tree
+        .nodes
+        .iter()
+        .map(|n| {
+            serde_json::json!({
+                "literal": n.literal.to_string(),
+                "step": n.step,
+                "holds": n.holds,
+                "kind": n.kind.words(),
+                "rule": n.rule.as_ref().map(|r| r.to_string()),
+                "children": n.children.iter().map(|c| c.0).collect::<Vec<_>>(),
+                "blocked": n.blocked.iter().map(|r| r.to_string()).collect::<Vec<_>>(),
+                "no_evidence": n.no_evidence.iter().map(Term::to_string).collect::<Vec<_>>(),
+            })
+        })
+        .collect();
+    serde_json::json!({
+        "nodes": nodes,
+        "roots": tree.roots.iter().map(|r| r.0).collect::<Vec<_>>(),
+        "path": tree.path.iter().map(|r| r.0).collect::<Vec<_>>(),
+    })
+}

@@ -15,6 +15,12 @@
 //! - `values[l.code()]` is 1 when `l` is true, -1 when false, 0 when unassigned, and
 //!   `values[(!l).code()] == -values[l.code()]`.
 //! - Assumptions occupy decision levels `1..=assumptions.len()` during `search`.
+//! - Variables are recycled: `retire_vars` marks variables nothing will mention again (a
+//!   finished call's guard, the auxiliary variables of its bounds); they are never decided, and
+//!   the next level-0 `simplify` deletes every clause and loop formula mentioning one (learnt or
+//!   not), drops their level-0 assignments and puts them on the free list that `new_var` takes
+//!   from first. A free variable occurs in no clause, watch list, weight constraint or trail.
+//!   Removed weight constraints leave their slot to the next `add_weight`.
 
 mod loops;
 
@@ -123,6 +129,22 @@ fn prefetch<T>(p: *const T) {
 
 /// How many trail positions ahead of the propagation queue head watch lists are prefetched.
 const PREFETCH_AHEAD: usize = 4;
+
+/// The size of an engine's contents (`Engine::size`), for tests that check that repeated calls
+/// leave nothing behind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct EngineSize {
+    /// Variables, free ones for reuse included.
+    pub vars: usize,
+    /// Problem clauses (long ones) plus binary clauses (problem and learnt).
+    pub clauses: usize,
+    /// Learnt long clauses and loop formulas.
+    pub learnts: usize,
+    /// Weight constraints attached.
+    pub weights: usize,
+    /// Assignments at decision level 0.
+    pub level0: usize,
+}
 
 /// Answer of a search.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -324,6 +346,16 @@ pub struct Engine {
     pub restart_blocking: bool,
     /// Trail length at the last conflict, before backjumping.
     conflict_trail: usize,
+    /// Per variable: retired by `retire_vars` and not yet reusable.
+    retired: Vec<bool>,
+    /// Variables retired since the last level-0 simplification; that pass deletes every
+    /// clause, learnt or not, that mentions one, and then frees them.
+    dead_vars: Vec<Var>,
+    /// Variables free for reuse by `new_var` (no clause, watch, weight constraint or
+    /// assignment mentions them).
+    free_vars: Vec<Var>,
+    /// Slots of removed weight constraints, reused by `add_weight`.
+    free_weights: Vec<u32>,
 }
 
 impl Default for Engine {
@@ -413,6 +445,10 @@ impl Engine {
             restart_blocking: false,
             conflict_trail: 0,
             conflict_limit: None,
+            retired: Vec::new(),
+            dead_vars: Vec::new(),
+            free_vars: Vec::new(),
+            free_weights: Vec::new(),
         }
     }
 
@@ -430,6 +466,50 @@ impl Engine {
     /// Number of learnt constraints kept: long clauses and shared loop formulas.
     pub fn num_learnts(&self) -> usize {
         self.learnts.len() + self.loops.live
+    }
+
+    /// Between two solve calls: reduces the learnt clause database (as a search does, worst
+    /// half first, glue and locked clauses kept) until it holds at most `cap` learnt
+    /// constraints or a reduction deletes nothing. clasp likewise starts every solve call with
+    /// a database limit set from the problem size, so that what many calls learnt does not
+    /// make every later propagation slower.
+    pub fn limit_learnts(&mut self, cap: usize) {
+        self.backtrack(0);
+        loop {
+            let before = self.learnts.len() + self.loops.clauses;
+            if before <= cap {
+                return;
+            }
+            self.reduce_db();
+            if self.learnts.len() + self.loops.clauses >= before {
+                return;
+            }
+        }
+    }
+
+    /// What the engine holds now (a pass over the clauses and watch lists).
+    pub fn size(&self) -> EngineSize {
+        let mut clauses = 0;
+        let mut pos = 0usize;
+        while pos < self.arena.len() {
+            let len = self.arena[pos] as usize;
+            if self.arena[pos + 1] & (FLAG_DELETED | FLAG_LEARNT) == 0 {
+                clauses += 1;
+            }
+            pos += HEADER + len;
+        }
+        let binary: usize = self
+            .watches
+            .iter()
+            .map(|ws| ws.iter().filter(|w| w.cref == u32::MAX).count())
+            .sum();
+        EngineSize {
+            vars: self.num_vars(),
+            clauses: clauses + binary / 2,
+            learnts: self.num_learnts(),
+            weights: self.weights.iter().filter(|c| !c.removed).count(),
+            level0: self.trail_lim.first().copied().unwrap_or(self.trail.len()),
+        }
     }
 
     /// Reserves room for `additional` more variables in every per-variable (and per-literal)
@@ -451,9 +531,33 @@ impl Engine {
         self.heap.reserve(additional);
     }
 
-    /// Creates a new variable, decidable by default.
+    /// Creates a new variable, decidable by default; a variable freed by `retire_vars` is
+    /// reused when there is one.
     pub fn new_var(&mut self) -> Var {
+        if let Some(v) = self.free_vars.pop() {
+            let i = v.index();
+            debug_assert!(self.values[v.positive().code()] == 0);
+            debug_assert!(self.watches[v.positive().code()].is_empty());
+            debug_assert!(self.watches[v.negative().code()].is_empty());
+            self.retired[i] = false;
+            self.level[i] = 0;
+            self.reason[i] = Reason::Decision;
+            self.phase[i] = self.default_phase;
+            self.phase_saved[i] = false;
+            self.occ[i] = 0;
+            self.seen[i] = 0;
+            self.uf_relevant[i] = false;
+            self.activity[i] = 0.0;
+            self.decidable[i] = true;
+            if self.heap_pos[i] == NO_SLOT {
+                self.heap_insert(v);
+            } else {
+                self.heap_down(self.heap_pos[i] as usize);
+            }
+            return v;
+        }
         let v = Var::new(self.level.len());
+        self.retired.push(false);
         self.values.push(0);
         self.values.push(0);
         self.level.push(0);
@@ -487,6 +591,24 @@ impl Engine {
         self.decidable[v.index()] = decidable;
         if decidable {
             self.heap_insert(v);
+        }
+    }
+
+    /// Retires variables that nothing will mention again (the guard of a finished call and
+    /// the auxiliary variables of its constraints, whose weight constraints the caller removed).
+    /// They stop being decided at once; the next level-0 simplification deletes every clause
+    /// that mentions one, learnt clauses included, drops their level-0 assignments, and makes
+    /// them free for `new_var`. Sound because each such variable either only occurs negated
+    /// in clauses that hold for one call (a guard, false from now on), or was defined by a
+    /// constraint the caller removed (a definition extends the program conservatively, so what
+    /// was learnt without mentioning the variable stays a consequence of the rest).
+    pub fn retire_vars(&mut self, vars: &[Var]) {
+        for &v in vars {
+            if !self.retired[v.index()] {
+                self.retired[v.index()] = true;
+                self.decidable[v.index()] = false;
+                self.dead_vars.push(v);
+            }
         }
     }
 
@@ -797,7 +919,10 @@ impl Engine {
             self.inconsistent = true;
             return false;
         }
-        let id = self.weights.len() as u32;
+        let id = match self.free_weights.last() {
+            Some(&id) => id,
+            None => self.weights.len() as u32,
+        };
         let (mut sum_true, mut sum_false) = (0u64, 0u64);
         for &(l, w) in &norm {
             let slot = self.weight_slot_of(l.var());
@@ -820,7 +945,7 @@ impl Engine {
         });
         let total = norm.iter().map(|&(_, w)| w).sum();
         let max_weight = norm.iter().map(|&(_, w)| w).max().unwrap_or(0);
-        self.weights.push(WeightConstraint {
+        let c = WeightConstraint {
             sum_true,
             sum_false,
             total,
@@ -829,7 +954,13 @@ impl Engine {
             lits: norm,
             bound,
             removed: false,
-        });
+        };
+        if id as usize == self.weights.len() {
+            self.weights.push(c);
+        } else {
+            self.free_weights.pop();
+            self.weights[id as usize] = c;
+        }
         self.num_clauses += 1;
         if self.propagate_weight(id as usize) || self.propagate().is_some() {
             self.inconsistent = true;
@@ -853,13 +984,20 @@ impl Engine {
     /// `head`), so callers may retire auxiliary bounds this way once nothing reads `head`.
     pub fn remove_weight(&mut self, head: Lit) {
         self.backtrack(0);
-        let Some(id) = self
-            .weights
+        // The constraint is found through its head's occurrence (weight 0, which no body
+        // literal has); its slot is reused by a later `add_weight`.
+        let slot = self.weight_slot[head.var().index()];
+        if slot == NO_SLOT {
+            return;
+        }
+        let Some(id) = self.weight_watch[slot as usize]
             .iter()
-            .position(|c| !c.removed && c.head == head)
+            .find(|w| w.weight == 0 && w.lit == head && !self.weights[w.id as usize].removed)
+            .map(|w| w.id as usize)
         else {
             return;
         };
+        self.free_weights.push(id as u32);
         let c = &mut self.weights[id];
         c.removed = true;
         let lits = std::mem::take(&mut c.lits);
@@ -1555,7 +1693,7 @@ impl Engine {
         {
             let k = (self.next_random() % self.heap.len() as u64) as usize;
             let v = self.heap[k];
-            if self.val(v.positive()) == 0 {
+            if self.val(v.positive()) == 0 && self.decidable[v.index()] {
                 return Some(Lit::new(v, self.decision_sign(v)));
             }
         }
@@ -1756,13 +1894,16 @@ impl Engine {
         }
         // Binary clauses with an assigned literal are satisfied at level 0 (a false literal
         // forced its partner true).
+        // Clauses mentioning a retired variable go too (`retire_vars`).
         for code in 0..self.watches.len() {
-            if self.values[code] != 0 {
+            if self.values[code] != 0 || self.retired[code >> 1] {
                 self.watches[code].clear();
                 continue;
             }
-            let values = &self.values;
-            self.watches[code].retain(|w| w.cref == u32::MAX && values[w.other.code()] == 0);
+            let (values, retired) = (&self.values, &self.retired);
+            self.watches[code].retain(|w| {
+                w.cref == u32::MAX && values[w.other.code()] == 0 && !retired[w.other.var().index()]
+            });
         }
         // In place (see `collect_garbage`): a clause only shrinks or goes, so the write
         // position never passes the read position, and a clause's literals are read before
@@ -1784,6 +1925,10 @@ impl Engine {
             let mut satisfied = false;
             for k in pos + HEADER..next {
                 let l = Lit::from_code(self.arena[k]);
+                if self.retired[l.var().index()] {
+                    satisfied = true;
+                    break;
+                }
                 match self.values[l.code()] {
                     1 => {
                         satisfied = true;
@@ -1825,16 +1970,51 @@ impl Engine {
         self.learnts = learnts;
         self.wasted = 0;
         self.simplify_loops();
+        self.free_dead_vars();
         self.simp_assigns = self.trail.len();
         self.simp_props = self.propagations + self.arena.len() as u64;
     }
 
+    /// The end of `simplify`, once no clause mentions a retired variable: drops their level-0
+    /// assignments (facts derived through them stay: see `retire_vars`) and frees them.
+    fn free_dead_vars(&mut self) {
+        if self.dead_vars.is_empty() {
+            return;
+        }
+        let retired = &self.retired;
+        if self.trail.iter().any(|l| retired[l.var().index()]) {
+            let mut kept = Vec::with_capacity(self.trail.len());
+            for &l in &self.trail {
+                if self.retired[l.var().index()] {
+                    self.values[l.code()] = 0;
+                    self.values[(!l).code()] = 0;
+                } else {
+                    kept.push(l);
+                }
+            }
+            self.trail = kept;
+            self.qhead = self.trail.len();
+            self.pf_head = self.qhead;
+            self.uf_clean_upto = self.uf_clean_upto.min(self.trail.len());
+        }
+        for v in std::mem::take(&mut self.dead_vars) {
+            let slot = self.weight_slot[v.index()];
+            debug_assert!(
+                slot == NO_SLOT || self.weight_watch[slot as usize].is_empty(),
+                "a retired variable is in no weight constraint"
+            );
+            self.free_vars.push(v);
+        }
+    }
+
     /// Runs `simplify` when new level-0 facts exist and enough propagation work was done since
-    /// the last run to pay for a pass over the arena.
+    /// the last run to pay for a pass over the arena, or when many variables wait to be freed
+    /// (a pass per quarter of the variables retired keeps their number bounded, at a cost per
+    /// retired variable of about the clauses per variable).
     fn maybe_simplify(&mut self) {
         if self.decision_level() == 0
-            && self.trail.len() > self.simp_assigns
-            && self.propagations >= self.simp_props
+            && ((self.trail.len() > self.simp_assigns && self.propagations >= self.simp_props)
+                || self.dead_vars.len() > 256 + self.num_vars() / 4)
         {
             self.simplify();
         }

@@ -15,6 +15,13 @@
 //! - Constraints that hold for one call only (blocking clauses, cost bounds, CR bounds) carry a
 //!   guard literal that is assumed during the call and fixed false afterwards, so later calls
 //!   are unaffected while learnt clauses stay valid (they mention the guard when they used it).
+//!   A guard owns the auxiliary variables and weight constraints made for its constraints
+//!   (`Scope`); retiring it removes the weight constraints and retires the variables, which the
+//!   engine then deletes every clause of and reuses (`Engine::retire_vars`). Nothing of a call
+//!   outlives it but learnt clauses that mention none of its variables, so the engine's size
+//!   and the cost per call stay flat over any number of calls (tests/solve_multishot.rs,
+//!   benches/multishot.rs). Between calls the learnt clauses are reduced to a limit set by the
+//!   problem size, as clasp does at the start of each solve call.
 //! - Enumeration blocks each model by the negation of its decisions (sound because every
 //!   propagation is a consequence of the program), or by its projection with `--project` and
 //!   for CR programs (where answer sets are compared on their non-CR atoms).
@@ -31,7 +38,7 @@
 
 use super::config::{Config, CrMode, EnumMode, OptMode, RestartPolicy, SearchProfile};
 use super::engine::{Engine, Restarts, SearchResult};
-use super::lit::Lit;
+use super::lit::{Lit, Var};
 use super::result::{Model, Outcome, SolveResult, Stats, StopReason};
 use super::translate::{max_atom, Translation};
 use crate::ground::program::{BodyRef, ExternalValue, GroundProgram, HeadKind, Rule};
@@ -82,9 +89,25 @@ pub struct Solver {
     minimality_checks: u64,
     /// Costs of the best model of the last branch-and-bound run.
     best: Option<Vec<i64>>,
-    /// Weight constraints made for a cost bound, by guard: detached when the guard retires,
-    /// so that dead bounds of earlier models are not propagated.
-    bound_weights: Vec<(Lit, Vec<Lit>)>,
+    /// The guards in use, each with the auxiliary variables and weight constraints made for
+    /// it; all of them are retired with the guard (`retire`).
+    scopes: Vec<Scope>,
+    /// Problem constraints (clauses and weight constraints) after the last step, for the
+    /// learnt clause limit of each call.
+    problem_size: usize,
+    /// Solve calls so far.
+    calls: u64,
+}
+
+/// What one guard owns: variables defined for the constraints it guards (cost and CR bounds,
+/// their conjunctions), and which of them head a weight constraint.
+struct Scope {
+    /// The guard.
+    guard: Lit,
+    /// Auxiliary variables.
+    aux: Vec<Var>,
+    /// Heads of the weight constraints defining some of `aux`.
+    weights: Vec<Lit>,
 }
 
 /// Mutable state of one call.
@@ -188,6 +211,8 @@ impl Solver {
         for c in &prog.cr_rules {
             is_cr[c.appl as usize] = true;
         }
+        let size = engine.size();
+        let problem_size = size.clauses + size.weights;
         Solver {
             prog,
             config,
@@ -197,7 +222,9 @@ impl Solver {
             is_cr,
             minimality_checks: 0,
             best: None,
-            bound_weights: Vec::new(),
+            scopes: Vec::new(),
+            problem_size,
+            calls: 0,
         }
     }
 
@@ -358,6 +385,9 @@ impl Solver {
             first,
             pos_occ_before,
         );
+        // The step's rules and minimize statements stand for its constraints (counting its
+        // clauses would cost a pass over the engine).
+        self.problem_size += delta.rules.len() + delta.minimize.len();
         Ok(())
     }
 
@@ -461,6 +491,13 @@ impl Solver {
         );
         self.engine.deadline = self.config.deadline;
         self.engine.interrupt = self.config.interrupt.clone();
+        if self.calls > 0 {
+            // What earlier calls learnt is kept up to a limit set by the problem size, as clasp
+            // sets it at the start of every solve call (`--del-init=3.0,200,40000`).
+            let cap = (self.problem_size / 3).clamp(200, 40_000);
+            self.engine.limit_learnts(cap);
+        }
+        self.calls += 1;
         let mut assume: Vec<Lit> = self.tr.assumptions.clone();
         assume.extend(assumptions.iter().map(|&l| self.lit_of(l)));
         let call_guard = self.new_guard();
@@ -535,29 +572,89 @@ impl Solver {
         }
     }
 
+    /// What the engine holds now: variables, clauses, learnt clauses, weight constraints
+    /// (for tests and benchmarks that check that calls leave nothing behind).
+    pub fn engine_size(&self) -> super::engine::EngineSize {
+        self.engine.size()
+    }
+
     /// Number of minimality checks done for non-head-cycle-free programs.
     pub fn minimality_checks(&self) -> u64 {
         self.minimality_checks
     }
 
+    /// A fresh guard literal (never decided; assumed while its constraints hold).
     fn new_guard(&mut self) -> Lit {
         self.engine.backtrack(0);
         let g = self.engine.new_var();
         self.engine.set_decidable(g, false);
+        self.scopes.push(Scope {
+            guard: g.positive(),
+            aux: Vec::new(),
+            weights: Vec::new(),
+        });
         g.positive()
     }
 
-    fn retire(&mut self, guard: Lit) {
-        self.engine.add_clause(&[!guard]);
-        if let Some(k) = self.bound_weights.iter().position(|(g, _)| *g == guard) {
-            let (_, heads) = self.bound_weights.swap_remove(k);
-            // The bound's variables stop being functions of the atoms: take them out of the
-            // decisions too, so that decision-based blocking still enumerates atom sets.
-            for h in heads {
-                self.engine.remove_weight(h);
-                self.engine.set_decidable(h.var(), false);
+    /// The scope of `guard`.
+    fn scope(&mut self, guard: Lit) -> &mut Scope {
+        self.scopes
+            .iter_mut()
+            .rev()
+            .find(|s| s.guard == guard)
+            .expect("the guard is in use")
+    }
+
+    /// A fresh variable owned by `guard`, retired with it.
+    fn aux_var(&mut self, guard: Lit) -> Lit {
+        let v = self.engine.new_var();
+        self.scope(guard).aux.push(v);
+        v.positive()
+    }
+
+    /// A fresh literal owned by `guard` standing for `sum(w * l) >= bound`.
+    fn aux_weight(&mut self, guard: Lit, lits: &[(Lit, i64)], bound: i64) -> Lit {
+        let h = self.aux_var(guard);
+        self.engine.add_weight(h, lits, bound);
+        self.scope(guard).weights.push(h);
+        h
+    }
+
+    /// A fresh literal owned by `guard` equivalent to the conjunction of `lits` (not entered in
+    /// the translation's table of conjunctions, which outlives the guard).
+    fn aux_conjunction(&mut self, guard: Lit, lits: &[Lit]) -> Lit {
+        match lits {
+            [] => self.tr.true_lit(),
+            [l] => *l,
+            _ => {
+                let x = self.aux_var(guard);
+                let mut big = vec![x];
+                for &l in lits {
+                    self.engine.add_clause(&[!x, l]);
+                    big.push(!l);
+                }
+                self.engine.add_clause(&big);
+                x
             }
         }
+    }
+
+    /// Ends the life of `guard`: it is fixed false, the weight constraints of its scope are
+    /// removed, and its variables are retired (the engine deletes every clause that mentions
+    /// them at its next level-0 simplification and reuses the variables), so that a call
+    /// leaves nothing behind.
+    fn retire(&mut self, guard: Lit) {
+        self.engine.add_clause(&[!guard]);
+        let Some(k) = self.scopes.iter().rposition(|s| s.guard == guard) else {
+            return;
+        };
+        let scope = self.scopes.swap_remove(k);
+        for &h in &scope.weights {
+            self.engine.remove_weight(h);
+        }
+        let mut vars = scope.aux;
+        vars.push(guard.var());
+        self.engine.retire_vars(&vars);
     }
 
     // ------------------------------------------------------------------ search primitives
@@ -935,31 +1032,19 @@ impl Solver {
         for (i, lits) in levels.iter().enumerate() {
             let neg: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (l, -w)).collect();
             // sum <= c  <=>  -sum >= -c.
-            let a = self.engine.new_var().positive();
-            self.engine.add_weight(a, &neg, bound[i].saturating_neg());
-            let b = self.engine.new_var().positive();
-            self.engine
-                .add_weight(b, &neg, bound[i].saturating_sub(1).saturating_neg());
+            let a = self.aux_weight(guard, &neg, bound[i].saturating_neg());
+            let b = self.aux_weight(guard, &neg, bound[i].saturating_sub(1).saturating_neg());
             at_most.push(a);
             below.push(b);
         }
-        let heads = at_most.iter().chain(&below).copied().collect();
-        self.bound_weights.push((guard, heads));
-        let mut conj_vars = Vec::new();
         let mut big = vec![!guard];
         for i in 0..k {
             // g_i <-> a_0 and ... and a_{i-1} and b_i; a full equivalence keeps every auxiliary
             // variable a function of the atoms, which decision-based blocking relies on.
             let mut conj = at_most[..i].to_vec();
             conj.push(below[i]);
-            let g = self.tr.conjunction(&mut self.engine, &conj);
+            let g = self.aux_conjunction(guard, &conj);
             big.push(g);
-            if conj.len() > 1 {
-                conj_vars.push(g);
-            }
-        }
-        if let Some(entry) = self.bound_weights.last_mut() {
-            entry.1.extend(conj_vars);
         }
         self.engine.add_clause(&big);
     }
@@ -1204,8 +1289,7 @@ impl Solver {
                     let g = self.new_guard();
                     let neg: Vec<(Lit, i64)> = cr.iter().map(|&(l, _)| (l, -1)).collect();
                     // guard -> count <= k - 1.
-                    let b = self.engine.new_var().positive();
-                    self.engine.add_weight(b, &neg, -(k - 1));
+                    let b = self.aux_weight(g, &neg, -(k - 1));
                     self.engine.add_clause(&[!g, b]);
                     bound_guard = Some(g);
                 }
@@ -1221,8 +1305,7 @@ impl Solver {
         // guard -> count <= k, for the rest of this call.
         self.engine.backtrack(0);
         let neg: Vec<(Lit, i64)> = cr.iter().map(|&(l, _)| (l, -1)).collect();
-        let b = self.engine.new_var().positive();
-        self.engine.add_weight(b, &neg, -k);
+        let b = self.aux_weight(guard, &neg, -k);
         self.engine.add_clause(&[!guard, b]);
         self.run_main(call, assume, guard);
     }
@@ -1326,7 +1409,7 @@ impl Solver {
                 .enumerate()
                 .map(|(i, &l)| if x[i] { l } else { !l })
                 .collect();
-            let c = self.tr.conjunction(&mut self.engine, &conj);
+            let c = self.aux_conjunction(guard, &conj);
             big.push(c);
         }
         self.engine.add_clause(&big);

@@ -1155,10 +1155,13 @@ impl<'a> Parser<'a> {
         Ok(lhs)
     }
 
-    /// Comparisons joined by `and` or `,`.
+    /// Comparisons joined by `and`, or by `,` when a variable or `not` follows (otherwise the
+    /// `,` ends the record, which may be an argument of another record).
     fn record_conjunction(&mut self) -> PResult<RecordCondition> {
         let mut lhs = self.record_condition_primary()?;
-        while self.at(T::Comma) || (self.at(T::Ident) && self.cur() == "and") {
+        while (self.at(T::Comma) && matches!(self.peek().kind, T::Variable | T::Not))
+            || (self.at(T::Ident) && self.cur() == "and")
+        {
             self.bump();
             let rhs = self.record_condition_primary()?;
             lhs = RecordCondition::And(Box::new(lhs), Box::new(rhs));

@@ -476,7 +476,9 @@ impl Engine {
                 .copied()
                 .filter(|&a| self.val(a) != -1)
                 .collect();
-            let satisfied = ext.iter().any(|&l| self.val(l) == 1);
+            // A formula mentioning a retired variable goes, as a clause would (`retire_vars`).
+            let satisfied = ext.iter().any(|&l| self.val(l) == 1)
+                || f.lits.iter().any(|&l| self.retired[l.var().index()]);
             // Put the formula back so that `remove` accounts for it.
             self.loops.items[id as usize] = f;
             if satisfied || atoms.is_empty() {
