@@ -13,6 +13,7 @@ pub mod sim;
 pub mod solve;
 pub mod control;
 pub mod action;
+pub mod plan;
 pub mod syntax;
 pub mod learn;
 

@@ -154,3 +154,160 @@ fn json_output() {
     assert_eq!(nodes[last]["kind"], "observation");
     insta::assert_snapshot!(serde_json::to_string_pretty(&json).unwrap());
 }
+
+/// Random questions (words of the vocabulary, scene objects, numbers, junk, in random order and
+/// in the shapes of real questions with random parts) never panic: each is either answered or
+/// gets a reply that names what was not understood.
+#[test]
+fn random_questions_never_panic() {
+    let lex = Lexicon::ra();
+    let parser = Parser::new(&lex, SCENE);
+    let (oracle, plan) = paper();
+    let scn = Scenario::ra(&oracle, plan, vec![t("relation(on,pitcher,red_block)")], 6);
+    let words = [
+        "why",
+        "did",
+        "you",
+        "not",
+        "didn't",
+        "pick",
+        "up",
+        "put",
+        "down",
+        "on",
+        "the",
+        "a",
+        "white",
+        "block",
+        "green",
+        "can",
+        "mug",
+        "pitcher",
+        "pig",
+        "at",
+        "step",
+        "time",
+        "in",
+        "initial",
+        "state",
+        "believe",
+        "that",
+        "was",
+        "below",
+        "above",
+        "in",
+        "your",
+        "hand",
+        "unstable",
+        "occluded",
+        "zero",
+        "five",
+        "99",
+        "4294967296",
+        "what",
+        "if",
+        "had",
+        "plan",
+        "describe",
+        "please",
+        "and",
+        "of",
+        "top",
+        "front",
+        "left",
+        "right",
+        "flibber",
+        "?",
+        ",",
+        "level",
+        "small",
+        "irregular",
+        "surface",
+        "instead",
+        "there",
+        "no",
+    ];
+    let shapes = [
+        "why did you {V} the {O} at step {N}",
+        "why didn't you {V} the {O} on the {O} at time step {N}",
+        "why did you believe that the {O} was {R} the {O} at step {N}",
+        "why was the {O} {P} at step {N}",
+        "what if you had {V} the {O} at step {N}",
+    ];
+    let verbs = ["pick up", "put", "grab", "place", "take", "lift", "set"];
+    let objects = [
+        "white block",
+        "green can",
+        "mug",
+        "pig",
+        "red block",
+        "table",
+        "blue block",
+    ];
+    let rels = [
+        "on",
+        "below",
+        "above",
+        "in front of",
+        "to the left of",
+        "touching",
+    ];
+    let props = [
+        "unstable",
+        "stable",
+        "occluded",
+        "in your hand",
+        "at level 3",
+        "small",
+    ];
+    let mut seed: u64 = 7;
+    let mut next = |n: usize| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((seed >> 33) as usize) % n
+    };
+    let (mut answered, mut replied) = (0, 0);
+    for i in 0..2000 {
+        let text = if i % 2 == 0 {
+            let len = 1 + next(12);
+            (0..len)
+                .map(|_| words[next(words.len())])
+                .collect::<Vec<_>>()
+                .join(" ")
+        } else {
+            let mut s = shapes[next(shapes.len())].to_string();
+            while let Some(k) = s.find('{') {
+                let hole = &s[k..k + 3];
+                let fill = match hole {
+                    "{V}" => verbs[next(verbs.len())].to_string(),
+                    "{O}" => objects[next(objects.len())].to_string(),
+                    "{R}" => rels[next(rels.len())].to_string(),
+                    "{P}" => props[next(props.len())].to_string(),
+                    _ => next(9).to_string(),
+                };
+                s.replace_range(k..k + 3, &fill);
+            }
+            s
+        };
+        let mut session = Session::default();
+        match parser.parse(&text) {
+            Ok(q) => match answer(&scn, &lex, &q, Mode::Full, &mut session) {
+                Ok(a) => {
+                    assert!(!a.text.is_empty(), "{text}");
+                    answered += 1;
+                }
+                Err(AnswerError::NeedsSolver) => answered += 1,
+                Err(e) => panic!("{text}: {e}"),
+            },
+            Err(e) => {
+                assert!(!e.reply(&lex).is_empty());
+                replied += 1;
+            }
+        }
+    }
+    assert!(
+        answered > 300 && replied > 300,
+        "{answered} answered, {replied} replied"
+    );
+}

@@ -14,6 +14,7 @@ pub mod action;
 pub mod demo;
 pub mod input;
 pub mod options;
+pub mod plan;
 pub mod report;
 
 use std::io::{Read, Write};
@@ -106,6 +107,7 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     match args.first().map(String::as_str) {
         Some("demo") => return demo::run(&args[1..], io.out, io.err),
         Some("translate") => return action::run_translate(&args[1..], io.out, io.err),
+        Some("plan") => return plan::run_plan(&args[1..], io.out, io.err),
         #[cfg(feature = "sim")]
         Some("sim") => return Ok(sim::run_with(&args[1..], io.out, io.err)),
         #[cfg(not(feature = "sim"))]
@@ -116,7 +118,7 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
             )?;
             return Ok(EXIT_UNAVAILABLE);
         }
-        Some(verb @ ("plan" | "explain" | "learn" | "experiment")) => {
+        Some(verb @ ("explain" | "learn" | "experiment")) => {
             writeln!(
                 io.err,
                 "*** ERROR: (lucent): `lucent {verb}` is not part of this build yet; \

@@ -834,6 +834,37 @@ impl Engine {
         }
     }
 
+    /// Adds a clause that the current (total) assignment falsifies, such as the clause blocking
+    /// an enumerated model's decisions, without leaving the search: backtracks only to the
+    /// second-highest level of its literals, where the clause is unit and implies its
+    /// highest-level literal's complement, so that `search_from(.., true)` goes on from there
+    /// (clasp's enumeration likewise backtracks instead of starting over; starting each model
+    /// from level 0 made 10-queens' 724 models cost 3x clasp's choices). Falls back to
+    /// [`Engine::add_clause`] (level 0) when the clause is not of that shape. Returns false when
+    /// the problem became inconsistent.
+    pub fn add_clause_resuming(&mut self, lits: &[Lit]) -> bool {
+        let mut c: Vec<Lit> = lits.to_vec();
+        c.sort();
+        c.dedup();
+        let all_false = c.iter().all(|&l| self.val(l) == -1);
+        let distinct = c.windows(2).all(|w| w[0] != !w[1]);
+        if !all_false || !distinct || c.len() < 2 || self.decision_level() == 0 {
+            return self.add_clause(lits);
+        }
+        c.sort_by_key(|&l| std::cmp::Reverse(self.level[l.var().index()]));
+        let top = self.level[c[0].var().index()];
+        let second = self.level[c[1].var().index()];
+        if top == second || second == 0 {
+            return self.add_clause(lits);
+        }
+        self.backtrack(second);
+        self.num_clauses += 1;
+        // Now c[0] is unassigned and the rest false: the clause is asserting, never conflicting.
+        let conflicting = self.add_clause_in_search(&mut c, false);
+        debug_assert!(!conflicting);
+        true
+    }
+
     /// Adds a clause while a search is in progress (loop nogoods): watches are chosen so that
     /// the clause is propagating or conflicting as appropriate. Returns true when the clause is
     /// conflicting under the current assignment (the conflict is then in `self.conflict`).
@@ -2146,16 +2177,25 @@ impl Engine {
     /// Searches for a total assignment extending `assumptions`. On `Sat` the assignment stays
     /// on the trail until the next `backtrack`/`add_clause`.
     pub fn search(&mut self, assumptions: &[Lit]) -> SearchResult {
+        self.search_from(assumptions, false)
+    }
+
+    /// [`Engine::search`]; with `resume`, goes on from the current assignment instead of level
+    /// 0 (after [`Engine::add_clause_resuming`], with the same assumptions as the search that
+    /// made this assignment).
+    pub fn search_from(&mut self, assumptions: &[Lit], resume: bool) -> SearchResult {
         self.interrupted = false;
         if self.inconsistent {
             return SearchResult::Unsat;
         }
-        self.backtrack(0);
-        if self.propagate().is_some() {
-            self.inconsistent = true;
-            return SearchResult::Unsat;
+        if !resume || self.decision_level() == 0 {
+            self.backtrack(0);
+            if self.propagate().is_some() {
+                self.inconsistent = true;
+                return SearchResult::Unsat;
+            }
+            self.maybe_simplify();
         }
-        self.maybe_simplify();
         if self.init_moms {
             self.init_moms = false;
             self.seed_activities();

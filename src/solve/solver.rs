@@ -661,8 +661,15 @@ impl Solver {
 
     /// Finds the next answer set under `assume`.
     fn next(&mut self, assume: &[Lit]) -> Next {
+        self.next_from(assume, false)
+    }
+
+    /// [`Solver::next`]; with `resume`, the first search goes on from the current assignment
+    /// (after `block` added the clause excluding the last model's decisions in search).
+    fn next_from(&mut self, assume: &[Lit], resume: bool) -> Next {
+        let mut resume = resume;
         loop {
-            match self.engine.search(assume) {
+            match self.engine.search_from(assume, std::mem::take(&mut resume)) {
                 SearchResult::Unsat => return Next::Exhausted,
                 SearchResult::Unknown => return Next::Stopped,
                 SearchResult::Sat => {
@@ -984,8 +991,10 @@ impl Solver {
         None
     }
 
-    /// Adds the clause excluding the current model (under `guard`).
-    fn block(&mut self, guard: Lit, projection: &Option<Vec<Lit>>) {
+    /// Adds the clause excluding the current model (under `guard`). Returns true when the
+    /// search may resume from the assignment this leaves (decision-based blocking, added by
+    /// backtracking only to the clause's second-highest level), false when it restarted.
+    fn block(&mut self, guard: Lit, projection: &Option<Vec<Lit>>) -> bool {
         let mut c = vec![!guard];
         match projection {
             Some(lits) => {
@@ -1003,9 +1012,11 @@ impl Solver {
                         c.push(!d);
                     }
                 }
+                return self.engine.add_clause_resuming(&c);
             }
         }
         self.engine.add_clause(&c);
+        false
     }
 
     /// Adds `guard -> costs <lex bound` (or `<=lex` when `inclusive`), comparing the first
@@ -1107,8 +1118,9 @@ impl Solver {
         optimal: bool,
     ) -> bool {
         let projection = self.projection();
+        let mut resume = false;
         loop {
-            match self.next(assume) {
+            match self.next_from(assume, std::mem::take(&mut resume)) {
                 Next::Exhausted => {
                     call.exhausted = true;
                     return true;
@@ -1123,13 +1135,16 @@ impl Solver {
                     // stops the enumeration here, as clasp reports it.
                     let unique = self.engine.decision_level() as usize <= assume.len();
                     let go = self.report(call, optimal, dedup);
-                    self.block(guard, &projection);
+                    let resumable = self.block(guard, &projection);
                     if !go {
+                        // The next call starts over from level 0.
+                        self.engine.backtrack(0);
                         if unique {
                             call.exhausted = true;
                         }
                         return unique;
                     }
+                    resume = resumable;
                 }
             }
         }

@@ -1,0 +1,64 @@
+//! `lucent plan` on the command line: the tabletop task as text and as JSON, `--all`, and the
+//! error paths (horizon budget too small, malformed file, missing file) with their exit codes.
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
+    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+    let mut out = Vec::new();
+    let mut err = Vec::new();
+    let code = lucent::cli::run(&args, &mut std::io::empty(), &mut out, &mut err);
+    (
+        code,
+        String::from_utf8(out).unwrap(),
+        String::from_utf8(err).unwrap(),
+    )
+}
+
+const TABLETOP: &str = "domains/ra/scenes/tabletop_task.ald";
+
+#[test]
+fn plan_prints_json_with_all_minimal_plans() {
+    let (code, out, err) = run(&["plan", TABLETOP, "--all", "--outf=2", "--max-horizon", "4"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["length"], 3);
+    assert_eq!(v["cr_applied"], 0);
+    let plans = v["plans"].as_array().unwrap();
+    assert_eq!(plans.len(), 4);
+    for p in plans {
+        let p = p.as_array().unwrap();
+        assert_eq!(p[0], "pickup(rob1,pitcher)");
+        assert_eq!(p[2], "pickup(rob1,red_cube_large)");
+    }
+}
+
+#[test]
+fn plan_prints_one_plan_as_text() {
+    let (code, out, err) = run(&["plan", TABLETOP]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.matches("Plan: ").count(), 1, "{out}");
+    assert!(out.contains("Length: 3"), "{out}");
+}
+
+#[test]
+fn plan_reports_no_plan_within_the_budget() {
+    let (code, out, err) = run(&["plan", TABLETOP, "--max-horizon=2"]);
+    assert_eq!(code, 20);
+    assert!(out.is_empty());
+    assert!(err.contains("no_plan_within(2)"), "{err}");
+}
+
+#[test]
+fn plan_rejects_bad_files() {
+    let dir = std::env::temp_dir().join(format!("lucent_plan_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad.ald");
+    std::fs::write(&bad, "sort s = {a}.\ngoal f(a.\n").unwrap();
+    let (code, _, err) = run(&["plan", bad.to_str().unwrap()]);
+    assert_eq!(code, 65, "{err}");
+    assert!(err.contains("bad.ald:"), "{err}");
+    let (code, _, err) = run(&["plan", "no/such/file.ald"]);
+    assert_eq!(code, 65, "{err}");
+    assert!(err.contains("no/such/file.ald"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

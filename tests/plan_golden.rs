@@ -1,0 +1,99 @@
+//! The golden tests of DOMAIN.md 4.5 through the planner (`lucent::plan`), on the scenes of
+//! `domains/ra/scenes` under KB_full: the iterative horizon finds the minimal length itself.
+//!
+//! - tabletop task: length 3 and exactly the four plans (the pitcher to the table or to the
+//!   green, yellow or white large cube, then the red cube picked up);
+//! - execution example: length 6, the paper's plan among the minimal plans;
+//! - exception goal: every minimal plan applies D1's exception exactly once, at the goal step;
+//! - a too-small horizon budget is `no_plan_within(H)`.
+
+use std::path::Path;
+
+use lucent::action::{self, ast::Description};
+use lucent::base::SourceMap;
+use lucent::plan::{plan, PlanConfig, PlanError, Plans};
+
+fn load(scene: &str) -> (Description, SourceMap) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("domains/ra/scenes")
+        .join(scene);
+    let mut sources = SourceMap::new();
+    let text = std::fs::read_to_string(&path).unwrap();
+    let file = sources.add(path.to_string_lossy().into_owned(), text);
+    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let parsed = action::load(&mut sources, file, &mut read);
+    assert!(!parsed.has_errors(), "{:?}", parsed.diagnostics);
+    (parsed.description, sources)
+}
+
+fn run(scene: &str, max_horizon: usize) -> Result<Plans, PlanError> {
+    let (desc, sources) = load(scene);
+    let config = PlanConfig {
+        max_horizon,
+        ..PlanConfig::default()
+    };
+    plan(&desc, &sources, &config)
+}
+
+#[test]
+fn tabletop_task_has_length_3_and_exactly_four_plans() {
+    let found = run("tabletop_task.ald", 4).unwrap();
+    assert_eq!(found.length, 3);
+    assert_eq!(found.cr_applied, 0);
+    let texts: Vec<String> = found.plans.iter().map(|p| p.to_text()).collect();
+    let expected: Vec<String> = [
+        "green_cube_large",
+        "table",
+        "white_cube_large",
+        "yellow_cube_large",
+    ]
+    .iter()
+    .map(|l| {
+        format!(
+            "pickup(rob1,pitcher)@0; putdown(rob1,pitcher,{l})@1; pickup(rob1,red_cube_large)@2"
+        )
+    })
+    .collect();
+    assert_eq!(texts, expected);
+}
+
+#[test]
+fn tabletop_task_within_two_steps_is_no_plan() {
+    assert_eq!(
+        run("tabletop_task.ald", 2).unwrap_err(),
+        PlanError::NoPlanWithin(2)
+    );
+}
+
+#[test]
+fn execution_example_has_length_6_with_the_papers_plan() {
+    let found = run("execution_example.ald", 6).unwrap();
+    assert_eq!(found.length, 6);
+    let paper = "pickup(rob1,green_can)@0; putdown(rob1,green_can,table)@1; \
+                 pickup(rob1,white_block)@2; putdown(rob1,white_block,green_can)@3; \
+                 pickup(rob1,pitcher)@4; putdown(rob1,pitcher,red_block)@5";
+    let texts: Vec<String> = found.plans.iter().map(|p| p.to_text()).collect();
+    assert!(texts.iter().any(|t| t == paper), "{texts:#?}");
+    for p in &found.plans {
+        assert_eq!(p.actions.len(), 6);
+    }
+}
+
+#[test]
+fn exception_goal_applies_d1_once_at_the_goal_step() {
+    let found = run("exception_goal.ald", 3).unwrap();
+    assert_eq!(found.length, 2);
+    assert_eq!(found.cr_applied, 1);
+    assert!(!found.plans.is_empty());
+    for p in &found.plans {
+        assert_eq!(p.actions.len(), 2);
+        let placed = p.actions[0].args()[1].to_string();
+        assert!(
+            p.actions[1].to_string().ends_with(",white_can_small)"),
+            "{}",
+            p.to_text()
+        );
+        assert_eq!(p.cr_applied.len(), 1);
+        assert_eq!(p.cr_applied[0].to_string(), format!("d1x({placed},2)"));
+    }
+}
