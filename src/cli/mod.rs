@@ -12,6 +12,7 @@
 pub mod sim;
 pub mod action;
 pub mod demo;
+pub mod learn;
 pub mod input;
 pub mod options;
 pub mod plan;
@@ -118,7 +119,9 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
             )?;
             return Ok(EXIT_UNAVAILABLE);
         }
-        Some(verb @ ("explain" | "learn" | "experiment")) => {
+        Some("learn") => return learn::run_learn(&args[1..], io.out, io.err),
+        Some("experiment") => return learn::run_experiment(&args[1..], io.out, io.err),
+        Some(verb @ "explain") => {
             writeln!(
                 io.err,
                 "*** ERROR: (lucent): `lucent {verb}` is not part of this build yet; \

@@ -124,17 +124,25 @@ struct TrialData {
     relevant: Vec<Literal>,
 }
 
-/// Runs one trial: the oracle and the learner on the same state and action.
+/// Runs one trial: the learner and the oracle on the same state and action. With
+/// `skip_uninformative` (collection under `informative_only`), a trial the learner already
+/// forbids cannot give a sample, so the oracle is not asked and the outcome is "no surprise,
+/// not executable by the learner" (which every dataset declines).
 fn trial(
     oracle: &mut dyn World,
     learner: &mut dyn World,
     s: &OneStep,
     robot: &str,
+    skip_uninformative: bool,
 ) -> (Outcome, TrialData) {
     let facts = s.facts(robot);
-    let o = oracle.step(&facts, &s.action);
     let l = learner.step(&facts, &s.action);
-    let outcome = classify(&l.before, l.after.as_deref(), o.after.as_deref());
+    let outcome = if skip_uninformative && l.after.is_none() {
+        Outcome::default()
+    } else {
+        let o = oracle.step(&facts, &s.action);
+        classify(&l.before, l.after.as_deref(), o.after.as_deref())
+    };
     let data = TrialData {
         action: s.action.clone(),
         unexpected: outcome.unexpected.clone(),
@@ -188,7 +196,7 @@ pub fn run(
                 ActionType::Putdown
             };
             let s = generate(&config.pools, ty, &mut rng);
-            let (outcome, data) = trial(oracle, learner, &s, &robot);
+            let (outcome, data) = trial(oracle, learner, &s, &robot, false);
             report.trials += 1;
             if outcome.surprising() {
                 ep.detected_at = Some(t);
@@ -212,7 +220,8 @@ pub fn run(
             && since_last < config.stall_trials
         {
             let s = generate(&config.pools, ty, &mut rng);
-            let (outcome, data) = trial(oracle, learner, &s, &robot);
+            let (outcome, data) =
+                trial(oracle, learner, &s, &robot, config.collect.informative_only);
             report.trials += 1;
             trials.push(data);
             if collector.offer(t, &outcome).is_empty() {
@@ -333,8 +342,72 @@ fn induce(
             row
         })
         .collect();
+    let (features, rows) = dedupe_columns(&lifter.features, rows, &config.algebra);
     let table = Table::new(rows, labels);
     let target = Target { kind, action };
-    let learned = ensemble::learn(&table, &lifter.features, &target, &config.ensemble, seed);
+    let learned = ensemble::learn(&table, &features, &target, &config.ensemble, seed);
     Some((learned.kept, lifted))
+}
+
+/// Keeps one feature of each group of identical columns [ours]: the trees cannot tell them
+/// apart, and a seeded tie-break between them would split the vote between two spellings of
+/// one fact (`below(O1, O2)` and `on(O2, O1)` when every covered object has its cover directly
+/// on it). The kept one is the lowest by [`Algebra::rank`], then the first created.
+pub fn dedupe_columns(
+    features: &[Literal],
+    rows: Vec<Vec<bool>>,
+    algebra: &Algebra,
+) -> (Vec<Literal>, Vec<Vec<bool>>) {
+    let column = |f: usize| -> Vec<bool> { rows.iter().map(|r| r[f]).collect() };
+    let mut best: std::collections::HashMap<Vec<bool>, usize> = std::collections::HashMap::new();
+    for f in 0..features.len() {
+        let col = column(f);
+        let entry = best.entry(col).or_insert(f);
+        if algebra.rank(&features[f]) < algebra.rank(&features[*entry]) {
+            *entry = f;
+        }
+    }
+    let mut keep: Vec<usize> = best.into_values().collect();
+    keep.sort_unstable();
+    let kept_features = keep.iter().map(|&f| features[f].clone()).collect();
+    let kept_rows = rows
+        .iter()
+        .map(|r| keep.iter().map(|&f| r[f]).collect())
+        .collect();
+    (kept_features, kept_rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::term::{in_hand, o, r, rel};
+    use super::*;
+
+    /// Columns: below(O1, O2) and on(O2, O1) identical, -in_hand(R1, O1) and above(O1, O3)
+    /// identical, touch(O1, O4) alone. Kept: below (positional before composed), -in_hand (the
+    /// hand before relations), touch.
+    #[test]
+    fn identical_columns_keep_the_preferred_spelling() {
+        let features = vec![
+            rel("on", o(2), o(1)),
+            rel("below", o(1), o(2)),
+            rel("above", o(1), o(3)),
+            in_hand(false, r(1), o(1)),
+            rel("touch", o(1), o(4)),
+        ];
+        let rows = vec![
+            vec![true, true, false, false, true],
+            vec![false, false, true, true, true],
+            vec![true, true, true, true, false],
+        ];
+        let (f, rows) = dedupe_columns(&features, rows, &Algebra::ra());
+        assert_eq!(
+            f,
+            vec![
+                rel("below", o(1), o(2)),
+                in_hand(false, r(1), o(1)),
+                rel("touch", o(1), o(4))
+            ]
+        );
+        assert_eq!(rows[0], vec![true, false, true]);
+    }
 }

@@ -52,6 +52,8 @@ pub struct Algebra {
     pub converse: Vec<(String, String)>,
     /// Symmetric relations: `rel(S, A, B)` iff `rel(S, B, A)`.
     pub symmetric: Vec<String>,
+    /// Composed relations (`on` = above + touch), the most specific spelling of a fact.
+    pub composed: Vec<String>,
 }
 
 impl Algebra {
@@ -66,6 +68,29 @@ impl Algebra {
                 .iter()
                 .map(|s| s.to_string())
                 .collect(),
+            composed: vec!["on".to_string()],
+        }
+    }
+
+    /// The preference among features that no sample tells apart (lower is kept) [ours]: the
+    /// hand fluent, then positional relations, then distance relations, then composed ones
+    /// (`on(B, A)` says more than `below(A, B)`; when the data cannot tell them apart, the
+    /// weaker statement is the one they support).
+    pub fn rank(&self, lit: &Literal) -> u8 {
+        if lit.name == IN_HAND {
+            return 0;
+        }
+        let Some(Term::Const(name)) = lit.args.first().filter(|_| lit.name == RELATION) else {
+            return 4;
+        };
+        if self.converse.iter().any(|(a, b)| a == name || b == name) {
+            1
+        } else if self.symmetric.contains(name) {
+            2
+        } else if self.composed.contains(name) {
+            3
+        } else {
+            4
         }
     }
 

@@ -18,3 +18,5 @@ pub mod state;
 pub mod surprise;
 pub mod strength;
 pub mod episode;
+pub mod kb;
+pub mod h1;

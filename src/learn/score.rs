@@ -91,6 +91,7 @@ pub struct Counts {
     /// Found axioms matching no target.
     pub fp: usize,
     /// Targets matched by no found axiom.
+    #[serde(rename = "fn")]
     pub fn_: usize,
 }
 

@@ -1,0 +1,377 @@
+//! `lucent learn` (one learning run, DOMAIN.md 5.2) and `lucent experiment h1` (the H1
+//! experiment, 7.3): the knowledge base is read here, everything else is `learn`.
+//!
+//! Invariants: files are read and written only here; bad AL_d input is a gringo-style
+//! diagnostic and exit code 65, a bad command line exit code 1; the results are functions of
+//! the seed (the progress bar goes to standard error, and only on a terminal).
+
+use std::io::{IsTerminal, Write};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+use crate::action;
+use crate::base::SourceMap;
+use crate::learn::episode::LearnConfig;
+use crate::learn::h1;
+use crate::learn::kb::KbSpec;
+
+const HELP_LEARN: &str = "\
+usage: lucent learn [--kb FILE.ald] [--seed N] [--episodes N] [-o FILE] [--outf=0|2]
+
+One axiom-learning run (DOMAIN.md section 5): random one-step trials against the oracle
+(KB_full with the learner's switches), a learner knowledge base with the `learner` profile,
+and after each surprise a 100-tree ensemble whose kept axioms join the learner at once.
+Prints what was learned, when and from which surprise; -o writes the learned axioms as an
+AL_d file with their strengths. --kb defaults to domains/ra/scenes/h1.ald.
+  --code-balance   store capped inconsistent trials with label 0, as the authors' code does
+  --code-samples   take samples from every trial, as the authors' code does
+";
+
+const HELP_EXPERIMENT: &str = "\
+usage: lucent experiment h1 [--kb FILE.ald] [--seed N] [--runs N] [--outf=0|2]
+
+The H1 experiment (DOMAIN.md 7.3): independent learning runs (20 by default), scored strictly
+and relaxed against the five target axioms (5.10) and shown beside the paper's Table 1.
+--outf=2 prints JSON with `strict` and `relaxed`, each with `precision` and `recall` in percent.
+";
+
+struct Args {
+    kb: String,
+    seed: u64,
+    runs: usize,
+    episodes: Option<usize>,
+    output: Option<String>,
+    json: bool,
+    code_balance: bool,
+    code_samples: bool,
+    help: bool,
+}
+
+fn parse(args: &[String]) -> Result<Args, String> {
+    let mut out = Args {
+        kb: "domains/ra/scenes/h1.ald".into(),
+        seed: 0,
+        runs: 20,
+        episodes: None,
+        output: None,
+        json: false,
+        code_balance: false,
+        code_samples: false,
+        help: false,
+    };
+    let mut i = 0;
+    while i < args.len() {
+        let a = args[i].as_str();
+        let (name, inline) = match a.split_once('=') {
+            Some((n, v)) => (n, Some(v.to_string())),
+            None => (a, None),
+        };
+        let value = |i: &mut usize| -> Result<String, String> {
+            if let Some(v) = &inline {
+                return Ok(v.clone());
+            }
+            *i += 1;
+            args.get(*i)
+                .cloned()
+                .ok_or_else(|| format!("'{name}' needs a value"))
+        };
+        let number = |v: String| {
+            v.parse::<u64>()
+                .map_err(|_| format!("'{name}': '{v}' is not a number"))
+        };
+        match name {
+            "--help" | "-h" => out.help = true,
+            "--kb" => out.kb = value(&mut i)?,
+            "--seed" => out.seed = number(value(&mut i)?)?,
+            "--runs" => out.runs = number(value(&mut i)?)? as usize,
+            "--episodes" => out.episodes = Some(number(value(&mut i)?)? as usize),
+            "-o" | "--output" => out.output = Some(value(&mut i)?),
+            "--outf" => out.json = value(&mut i)? == "2",
+            "--code-balance" => out.code_balance = true,
+            "--code-samples" => out.code_samples = true,
+            _ => return Err(format!("unknown option '{a}'")),
+        }
+        i += 1;
+    }
+    Ok(out)
+}
+
+fn config(args: &Args) -> LearnConfig {
+    let mut c = LearnConfig::default();
+    if let Some(e) = args.episodes {
+        c.episodes = e;
+    }
+    c.collect.balance_fix = !args.code_balance;
+    c.collect.informative_only = !args.code_samples;
+    c
+}
+
+/// Reads and parses the knowledge base; diagnostics go to `err`.
+fn load(path: &str, err: &mut dyn Write) -> std::io::Result<Option<KbSpec>> {
+    let text = match std::fs::read_to_string(path) {
+        Ok(t) => t,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {path}: {e}")?;
+            return Ok(None);
+        }
+    };
+    let mut sources = SourceMap::new();
+    let file = sources.add(path.to_string(), text);
+    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let parsed = action::load(&mut sources, file, &mut read);
+    if parsed.has_errors() {
+        let mut diags = crate::base::Diagnostics::default();
+        diags.extend(parsed.diagnostics);
+        write!(err, "{}", diags.render(&sources))?;
+        return Ok(None);
+    }
+    Ok(Some(KbSpec {
+        description: parsed.description,
+        options: h1::learner_options(),
+        sources,
+    }))
+}
+
+/// `lucent learn`.
+pub fn run_learn(
+    args: &[String],
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<i32> {
+    let args = match parse(args) {
+        Ok(a) => a,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(super::EXIT_USAGE);
+        }
+    };
+    if args.help {
+        write!(out, "{HELP_LEARN}")?;
+        return Ok(0);
+    }
+    let Some(spec) = load(&args.kb, err)? else {
+        return Ok(super::EXIT_INPUT);
+    };
+    let start = Instant::now();
+    let report = match h1::one_run(&spec, &config(&args), h1::run_seed(args.seed, 0)) {
+        Ok(r) => r,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    };
+    let found = report.store.current();
+    let targets = h1::targets();
+    let s = crate::learn::score::strict(&found, &targets);
+    let x = crate::learn::score::relaxed(&found, &targets);
+    if args.json {
+        let episodes: Vec<serde_json::Value> = report
+            .episodes
+            .iter()
+            .map(|e| {
+                serde_json::json!({
+                    "episode": e.episode,
+                    "detected_at": e.detected_at,
+                    "surprise": e.surprise,
+                    "dataset": e.dataset.map(|d| format!("{d:?}")),
+                    "samples": e.samples.0,
+                    "positives": e.samples.1,
+                    "collect_trials": e.collect_trials,
+                    "learned": e.learned.iter().map(|(a, v, new)| serde_json::json!({"axiom": a, "votes": v, "new": new})).collect::<Vec<_>>(),
+                    "removed": e.removed,
+                })
+            })
+            .collect();
+        let json = serde_json::json!({
+            "seed": args.seed,
+            "episodes": episodes,
+            "learned": report.store.axioms.iter().map(|l| serde_json::json!({
+                "label": l.label, "axiom": l.axiom.short(), "ald": l.axiom.to_ald(),
+                "strength": l.strength, "votes": l.votes, "episode": l.origin.episode,
+                "surprise": l.origin.surprise,
+            })).collect::<Vec<_>>(),
+            "trials": report.trials,
+            "strict": {"precision": s.precision(), "recall": s.recall()},
+            "relaxed": {"precision": x.precision(), "recall": x.recall()},
+        });
+        writeln!(
+            out,
+            "{}",
+            serde_json::to_string_pretty(&json).unwrap_or_default()
+        )?;
+    } else {
+        writeln!(
+            out,
+            "Learning run (seed {}): {} trials",
+            args.seed, report.trials
+        )?;
+        for e in &report.episodes {
+            match e.detected_at {
+                None => writeln!(
+                    out,
+                    "episode {}: no surprise in 100 trials; the run ends",
+                    e.episode
+                )?,
+                Some(t) => {
+                    writeln!(
+                        out,
+                        "episode {}: surprise at trial {t}: {}",
+                        e.episode, e.surprise
+                    )?;
+                    if let Some(d) = e.dataset {
+                        writeln!(
+                            out,
+                            "  {d:?} dataset: {} samples ({} positive) from {} trials",
+                            e.samples.0, e.samples.1, e.collect_trials
+                        )?;
+                    } else {
+                        writeln!(out, "  no dataset filled in {} trials", e.collect_trials)?;
+                    }
+                    for (a, votes, new) in &e.learned {
+                        let what = if *new { "learned" } else { "relearned" };
+                        writeln!(out, "  {what}: {a}  ({votes} of 100 trees)")?;
+                    }
+                    for l in &e.removed {
+                        writeln!(out, "  removed {l} (strength below 0.1)")?;
+                    }
+                }
+            }
+        }
+        writeln!(out, "Learned axioms:")?;
+        for l in &report.store.axioms {
+            writeln!(
+                out,
+                "  {}: {}  (strength {:.3})",
+                l.label,
+                l.axiom.short(),
+                l.strength
+            )?;
+        }
+        writeln!(
+            out,
+            "Against the H1 targets: strict P {:.1}% R {:.1}%, relaxed P {:.1}% R {:.1}%",
+            s.precision(),
+            s.recall(),
+            x.precision(),
+            x.recall()
+        )?;
+        writeln!(out, "Time: {:.2}s", start.elapsed().as_secs_f64())?;
+    }
+    if let Some(path) = &args.output {
+        if let Err(e) = std::fs::write(path, report.store.to_ald()) {
+            writeln!(err, "*** ERROR: (lucent): {path}: {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    }
+    Ok(0)
+}
+
+/// `lucent experiment h1`.
+pub fn run_experiment(
+    args: &[String],
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<i32> {
+    match args.first().map(String::as_str) {
+        Some("h1") => {}
+        Some("--help" | "-h") | None => {
+            write!(out, "{HELP_EXPERIMENT}")?;
+            return Ok(if args.is_empty() {
+                super::EXIT_USAGE
+            } else {
+                0
+            });
+        }
+        Some(other) => {
+            writeln!(
+                err,
+                "*** ERROR: (lucent): unknown experiment '{other}' (this build has h1)"
+            )?;
+            return Ok(super::EXIT_USAGE);
+        }
+    }
+    let args = match parse(&args[1..]) {
+        Ok(a) => a,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(super::EXIT_USAGE);
+        }
+    };
+    if args.help {
+        write!(out, "{HELP_EXPERIMENT}")?;
+        return Ok(0);
+    }
+    let Some(spec) = load(&args.kb, err)? else {
+        return Ok(super::EXIT_INPUT);
+    };
+    let start = Instant::now();
+    let done = AtomicUsize::new(0);
+    let terminal = std::io::stderr().is_terminal();
+    let total = args.runs;
+    let progress = || {
+        let k = done.fetch_add(1, Ordering::SeqCst) + 1;
+        if terminal {
+            let width = 30;
+            let filled = width * k / total.max(1);
+            eprint!(
+                "\r[{}{}] {k}/{total} runs",
+                "#".repeat(filled),
+                " ".repeat(width - filled)
+            );
+            if k == total {
+                eprintln!();
+            }
+        }
+    };
+    let result = match h1::experiment(&spec, &config(&args), args.seed, args.runs, &progress) {
+        Ok(r) => r,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    };
+    let secs = start.elapsed().as_secs_f64();
+    if args.json {
+        let mut json = serde_json::to_value(&result).unwrap_or_default();
+        json["seed"] = args.seed.into();
+        json["time"] = secs.into();
+        writeln!(
+            out,
+            "{}",
+            serde_json::to_string_pretty(&json).unwrap_or_default()
+        )?;
+    } else {
+        writeln!(out, "H1: {} runs, seed {}", result.runs.len(), args.seed)?;
+        for r in &result.runs {
+            writeln!(
+                out,
+                "run {:2}: {} trials, found {}",
+                r.run,
+                r.trials,
+                r.found.join("; ")
+            )?;
+        }
+        writeln!(
+            out,
+            "              precision  recall   (paper: precision  recall)"
+        )?;
+        writeln!(
+            out,
+            "strict        {:8.1}% {:6.1}%             {:5.1}%  {:5.1}%",
+            result.strict.precision,
+            result.strict.recall,
+            h1::PAPER.strict.precision,
+            h1::PAPER.strict.recall
+        )?;
+        writeln!(
+            out,
+            "relaxed       {:8.1}% {:6.1}%             {:5.1}%  {:5.1}%",
+            result.relaxed.precision,
+            result.relaxed.recall,
+            h1::PAPER.relaxed.precision,
+            h1::PAPER.relaxed.recall
+        )?;
+        writeln!(out, "Time: {secs:.2}s")?;
+    }
+    Ok(0)
+}

@@ -1,0 +1,253 @@
+//! One-step worlds over AL_d knowledge bases, through the front door (`control::Control`): the
+//! oracle (KB_full) and the learner's knowledge base (the `learner` profile plus the learned
+//! axioms, rendered as AL_d statements).
+//!
+//! The description is translated once per set of learned axioms and grounded once, with the
+//! step-0 observations `obs(relation(on, X, L), true, 0)`, `obs(in_hand(R, X), true, 0)` and the
+//! action record `hpd(A, 0)` declared external; a trial is one solve under assumptions. The
+//! state read back is the observable vocabulary (`relation` and `in_hand`, both signs) at steps
+//! 0 and 1, through atom numbers looked up once.
+//!
+//! Invariants: the program a trial solves is exactly the translation of the description (plus
+//! the external declarations); a trial never re-grounds; the model read is the last (optimal)
+//! one of the call, so CR rules are applied cardinality-minimally as in DOMAIN.md 3.4.
+
+use crate::action::{self, ast::Description, Options};
+use crate::base::SourceMap;
+use crate::control::{AtomId, Control, ControlConfig, Part, SolveOptions, Symbol, TruthValue};
+
+use super::episode::{LearnerKb, States, World};
+use super::term::{Axiom, Literal, Term, IN_HAND, RELATION};
+
+/// The external declarations added to the translated program.
+const EXTERNALS: &str = "\
+#external obs(relation(on, X, Y), true, 0) : object(X), location(Y).
+#external obs(in_hand(R, X), true, 0) : robot(R), object(X).
+#external hpd(A, 0) : action(A).
+";
+
+/// A knowledge base to run trials against.
+#[derive(Clone, Debug)]
+pub struct KbSpec {
+    /// The loaded description (includes resolved).
+    pub description: Description,
+    /// Profile and switches.
+    pub options: Options,
+    /// The sources, for parsing learned axioms and rendering diagnostics.
+    pub sources: SourceMap,
+}
+
+/// Why a knowledge base could not be built.
+#[derive(Clone, Debug, thiserror::Error)]
+pub enum KbError {
+    /// The description (with the learned axioms) did not translate.
+    #[error("the description does not translate: {0}")]
+    Translate(String),
+    /// Grounding failed.
+    #[error("grounding failed: {0}")]
+    Ground(String),
+}
+
+/// A one-step world over a knowledge base.
+pub struct KbWorld {
+    /// The knowledge base's description and options.
+    spec: KbSpec,
+    /// The grounded program.
+    ctl: Control,
+    /// Observable literals: atom, literal, step.
+    observables: Vec<(AtomId, Literal, u8)>,
+    /// Solve calls so far.
+    pub solves: usize,
+    /// Whether [`World::step`] computes the step-0 state when the action is not executable
+    /// (the learner needs it for relevant literals; the oracle does not).
+    pub need_before: bool,
+}
+
+/// `Symbol` to the learner's literal (constants and numbers only).
+pub fn literal_of(sym: &Symbol) -> Option<Literal> {
+    let name = sym.name()?.to_string();
+    let args = sym
+        .args()
+        .iter()
+        .map(|a| match a {
+            Symbol::Function { name, args, .. } if args.is_empty() => {
+                Some(Term::Const(name.clone()))
+            }
+            Symbol::Number(n) => Some(Term::Const(n.to_string())),
+            _ => None,
+        })
+        .collect::<Option<Vec<Term>>>()?;
+    Some(Literal {
+        positive: !sym.is_negative(),
+        name,
+        args,
+    })
+}
+
+/// The learner's ground literal as a `Symbol` (its sign ignored).
+pub fn symbol_of(lit: &Literal) -> Symbol {
+    Symbol::function(
+        lit.name.clone(),
+        lit.args
+            .iter()
+            .map(|t| match t {
+                Term::Const(c) => Symbol::constant(c.clone()),
+                Term::Var(v) => Symbol::constant(v.to_string()),
+            })
+            .collect(),
+    )
+}
+
+impl KbWorld {
+    /// Translates and grounds the knowledge base with these learned axioms.
+    pub fn new(spec: KbSpec, learned: &[(String, Axiom)]) -> Result<KbWorld, KbError> {
+        let mut sources = spec.sources.clone();
+        let mut description = spec.description.clone();
+        if !learned.is_empty() {
+            let text: String = learned
+                .iter()
+                .map(|(label, a)| format!("{label}: {}.\n", a.to_ald()))
+                .collect();
+            let file = sources.add("<learned>".to_string(), text.clone());
+            let parsed = action::parse(file, &text);
+            if parsed.has_errors() {
+                return Err(KbError::Translate(format!(
+                    "learned axioms: {:?}",
+                    parsed.diagnostics
+                )));
+            }
+            description.statements.extend(parsed.description.statements);
+        }
+        let translation = action::translate(&description, &spec.options);
+        if translation.has_errors() {
+            return Err(KbError::Translate(format!("{:?}", translation.diagnostics)));
+        }
+        let mut config = ControlConfig::default();
+        config.solve.models = 0;
+        let mut ctl = Control::with_sources(config, sources);
+        ctl.add_program(translation.program)
+            .map_err(|e| KbError::Ground(e.message))?;
+        ctl.add("<learn externals>", EXTERNALS)
+            .map_err(|e| KbError::Ground(e.message))?;
+        ctl.ground(&[Part::base()])
+            .map_err(|e| KbError::Ground(e.message))?;
+        let mut observables = Vec::new();
+        for a in ctl.symbolic_atoms() {
+            let s = &a.symbol;
+            if s.name() != Some("holds") || s.args().len() != 2 {
+                continue;
+            }
+            let Some(step) = s.args()[1].as_number() else {
+                continue;
+            };
+            let Some(mut lit) = literal_of(&s.args()[0]) else {
+                continue;
+            };
+            if lit.name != RELATION && lit.name != IN_HAND {
+                continue;
+            }
+            lit.positive = !s.is_negative();
+            observables.push((a.atom, lit, step as u8));
+        }
+        Ok(KbWorld {
+            spec,
+            ctl,
+            observables,
+            solves: 0,
+            need_before: true,
+        })
+    }
+
+    /// Solves under the facts (and the action, if any); the last model's observable literals
+    /// at steps 0 and 1, or `None` without an answer set.
+    fn solve(
+        &mut self,
+        facts: &[Literal],
+        action: Option<&Literal>,
+    ) -> Option<(Vec<Literal>, Vec<Literal>)> {
+        let obs = |l: &Literal| {
+            Symbol::function(
+                "obs",
+                vec![symbol_of(l), Symbol::constant("true"), Symbol::number(0)],
+            )
+        };
+        // The trial's facts and action are set as external values for this call and reset
+        // after it. (Assumptions would do the same; at control 6658570 a positive assumption
+        // on an external atom made every call unsatisfiable, so values are assigned.)
+        let mut set: Vec<Symbol> = facts.iter().map(obs).collect();
+        if let Some(a) = action {
+            set.push(Symbol::function(
+                "hpd",
+                vec![symbol_of(a), Symbol::number(0)],
+            ));
+        }
+        for s in &set {
+            self.ctl.assign_external(s, TruthValue::True);
+        }
+        let options = SolveOptions::default();
+        let observables = &self.observables;
+        let mut last: Option<(Vec<Literal>, Vec<Literal>)> = None;
+        self.solves += 1;
+        self.ctl.solve(&options, |m| {
+            let (mut s0, mut s1) = (Vec::new(), Vec::new());
+            for (atom, lit, step) in observables {
+                if m.holds(*atom) {
+                    if *step == 0 {
+                        s0.push(lit.clone());
+                    } else {
+                        s1.push(lit.clone());
+                    }
+                }
+            }
+            last = Some((s0, s1));
+            true
+        });
+        for s in &set {
+            self.ctl.assign_external(s, TruthValue::False);
+        }
+        last
+    }
+
+    /// The knowledge base's spec.
+    pub fn spec(&self) -> &KbSpec {
+        &self.spec
+    }
+}
+
+impl World for KbWorld {
+    fn step(&mut self, facts: &[Literal], action: &Literal) -> States {
+        match self.solve(facts, Some(action)) {
+            Some((before, after)) => States {
+                before,
+                after: Some(after),
+            },
+            None => {
+                let before = if self.need_before {
+                    self.solve(facts, None).map(|(b, _)| b).unwrap_or_default()
+                } else {
+                    Vec::new()
+                };
+                States {
+                    before,
+                    after: None,
+                }
+            }
+        }
+    }
+}
+
+impl LearnerKb for KbWorld {
+    fn set_learned(&mut self, axioms: &[(String, Axiom)]) {
+        let (solves, need_before) = (self.solves, self.need_before);
+        match KbWorld::new(self.spec.clone(), axioms) {
+            Ok(w) => {
+                *self = w;
+                self.solves = solves;
+                self.need_before = need_before;
+            }
+            // The learned axioms are built from the learner's own vocabulary; a failure here is
+            // a bug in rendering, not bad input.
+            Err(e) => panic!("learned axioms do not load: {e}"),
+        }
+    }
+}
