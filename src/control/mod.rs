@@ -666,8 +666,17 @@ impl Control {
     ) -> Result<(), Error> {
         let first = self.groundings == 0;
         let mut statements: Vec<Statement> = Vec::new();
+        // A part without parameters is grounded once: its statements move into the grounding
+        // (and back if it fails) instead of being copied.
+        let take = binding.is_empty();
+        let mut counts = Vec::with_capacity(blocks.len());
         for &b in blocks {
-            statements.extend(self.blocks[b].statements.iter().cloned());
+            counts.push(self.blocks[b].statements.len());
+            if take {
+                statements.append(&mut self.blocks[b].statements);
+            } else {
+                statements.extend(self.blocks[b].statements.iter().cloned());
+            }
         }
         for (b, st) in &self.globals {
             if !blocks.contains(b) {
@@ -709,6 +718,12 @@ impl Control {
         );
         grounding.diagnostics = Diagnostics::new(self.config.message_limit);
         if d.has_errors() {
+            if take {
+                let mut rest = program.statements.into_iter();
+                for (&b, &n) in blocks.iter().zip(&counts) {
+                    self.blocks[b].statements = rest.by_ref().take(n).collect();
+                }
+            }
             return Err(self.error(d));
         }
         self.diags.extend(d.items().iter().cloned());
