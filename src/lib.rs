@@ -5,17 +5,17 @@
 //! (`base` at the bottom of the dependency order, `cli` at the top). See ARCHITECTURE.md.
 
 pub mod base;
-pub mod explain;
-pub mod cli;
+pub mod syntax;
 pub mod ground;
-#[cfg(feature = "sim")]
-pub mod sim;
 pub mod solve;
 pub mod control;
 pub mod action;
+#[cfg(feature = "sim")]
+pub mod sim;
 pub mod plan;
-pub mod syntax;
 pub mod learn;
+pub mod explain;
+pub mod cli;
 
 /// README.md as documentation, so its Rust example runs as a doctest (`cargo test --doc`);
 /// its shell commands are run by `tests/readme.rs`.
