@@ -12,6 +12,7 @@
 pub mod sim;
 pub mod action;
 pub mod demo;
+pub mod explain;
 pub mod learn;
 pub mod input;
 pub mod options;
@@ -121,13 +122,12 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
         }
         Some("learn") => return learn::run_learn(&args[1..], io.out, io.err),
         Some("experiment") => return learn::run_experiment(&args[1..], io.out, io.err),
-        Some(verb @ "explain") => {
-            writeln!(
-                io.err,
-                "*** ERROR: (lucent): `lucent {verb}` is not part of this build yet; \
-                 `lucent demo` runs the planning task end to end"
-            )?;
-            return Ok(EXIT_UNAVAILABLE);
+        Some("explain") => return explain::run_explain(&args[1..], io.out, io.err),
+        Some("ask") => {
+            use std::io::IsTerminal;
+            let echo = !std::io::stdin().is_terminal();
+            let mut input = std::io::BufReader::new(&mut *io.stdin);
+            return explain::run_ask(&args[1..], echo, &mut input, io.out, io.err);
         }
         _ => {}
     }

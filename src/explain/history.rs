@@ -41,8 +41,22 @@ pub enum HistoryError {
     Inconsistent(String),
 }
 
+/// A planning problem as given: the description (initial state and goal included), its
+/// sources, and the settings; what-if and why-no-plan questions solve it again.
+#[derive(Clone, Debug)]
+pub struct Problem {
+    /// The description, without the history's `happened` statements.
+    pub desc: Description,
+    /// Its files.
+    pub sources: SourceMap,
+    /// Profile and switches.
+    pub config: HistoryConfig,
+}
+
 /// A history with its answer set: the program, the plan, the goal.
 pub struct History {
+    /// The problem the history belongs to.
+    pub problem: Problem,
     /// The ground program with provenance and the answer set.
     pub oracle: ProgramOracle,
     /// The actions with their steps.
@@ -100,7 +114,7 @@ pub fn goal_of(desc: &Description) -> Vec<Term> {
 }
 
 /// Splits at commas outside parentheses.
-fn split_top(s: &str) -> Vec<String> {
+pub(crate) fn split_top(s: &str) -> Vec<String> {
     let (mut depth, mut cur, mut out) = (0i32, String::new(), Vec::new());
     for c in s.chars() {
         match c {
@@ -189,6 +203,11 @@ pub fn explain_history(
     actions: &[Symbol],
     config: &HistoryConfig,
 ) -> Result<History, HistoryError> {
+    let problem = Problem {
+        desc: desc.clone(),
+        sources: sources.clone(),
+        config: config.clone(),
+    };
     let mut desc = desc.clone();
     let text: String = actions
         .iter()
@@ -254,6 +273,7 @@ pub fn explain_history(
     let oracle =
         ProgramOracle::new(ctl, model, labels).map_err(|e| HistoryError::Input(e.to_string()))?;
     Ok(History {
+        problem,
         oracle,
         plan: actions
             .iter()

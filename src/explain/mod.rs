@@ -14,6 +14,10 @@
 //! - [`oracle`]: the adapter from a `control::Control` (ground program, provenance, a model)
 //!   to the trees' `Oracle`;
 //! - [`history`]: an AL_d planning problem and its executed actions, solved into an oracle;
+//! - [`counterfactual`]: what if (the history with another action, re-solved) and why no plan
+//!   (a minimal set of goal literals, observations and constraints, by deletion over
+//!   assumptions);
+//! - [`generic`]: why and why-not of an atom of any program's answer set, as text;
 //! - [`draw`]: proof trees as DOT text and as SVG drawn here.
 //!
 //! Invariants: nothing here reads files or the clock (the lexicon is passed as text or built
@@ -29,4 +33,6 @@ pub mod build;
 pub mod questions;
 pub mod oracle;
 pub mod history;
+pub mod generic;
+pub mod counterfactual;
 pub mod draw;

@@ -8,8 +8,8 @@
 //! wording; every proof tree an answer uses passed `tree::recheck` (a failed re-check is an
 //! error, not an answer); questions about steps outside the history or actions that are not
 //! there get an answer that says so, never a panic. Questions that need a new solve (why no
-//! plan, what if) are answered by [`AnswerError::NeedsSolver`]: the caller with a `Control`
-//! runs them.
+//! plan, what if) and goals are answered by [`AnswerError::NeedsSolver`]: the caller with the
+//! planning problem runs them (`explain::counterfactual`, the planner).
 
 use super::build::{normalize, BuildConfig, Builder};
 use super::english::{holds, occurs, Question};
