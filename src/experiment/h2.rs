@@ -239,6 +239,9 @@ fn cell(v: Option<f64>) -> String {
     v.map_or("n/a".into(), |v| format!("{v:.2}"))
 }
 
+/// A table row: its name and how to read its value.
+type Row<T> = (&'static str, fn(&T) -> Option<f64>);
+
 fn tables(out: &mut String, s: &Summary, mode: &str, pick: fn(&PresetSummary) -> &ModeSummary) {
     let (r, m) = (pick(&s.real), pick(&s.simulated));
     out.push_str(&format!(
@@ -247,7 +250,7 @@ fn tables(out: &mut String, s: &Summary, mode: &str, pick: fn(&PresetSummary) ->
         r.ratios.pairs, s.real.pairs, m.ratios.pairs, s.simulated.pairs
     ));
     out.push_str("| measure | real (ours) | real (paper) | simulated (ours) | simulated (paper) |\n|---|---|---|---|---|\n");
-    let rows: [(&str, fn(&Ratios) -> Option<f64>); 3] = [
+    let rows: [Row<Ratios>; 3] = [
         ("Number of steps", |r| r.steps),
         ("Number of plans", |r| r.plans),
         ("Planning time", |r| r.planning_time),
@@ -265,7 +268,7 @@ fn tables(out: &mut String, s: &Summary, mode: &str, pick: fn(&PresetSummary) ->
         "\nTable 3 ({mode}), fraction of plans (ours / paper):\n\n\
          | plans | real w/o | real w/ | sim w/o | sim w/ |\n|---|---|---|---|---|\n"
     ));
-    let rows: [(&str, fn(&Fractions) -> Option<f64>); 3] = [
+    let rows: [Row<Fractions>; 3] = [
         ("Optimal", |f| f.optimal),
         ("Sub-optimal", |f| f.suboptimal),
         ("Incorrect", |f| f.incorrect),

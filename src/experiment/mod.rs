@@ -109,8 +109,10 @@ impl Setup {
 
     /// The learner's configuration.
     pub fn learn_config(&self) -> LearnConfig {
-        let mut c = LearnConfig::default();
-        c.episodes = self.episodes;
+        let mut c = LearnConfig {
+            episodes: self.episodes,
+            ..Default::default()
+        };
         c.collect.balance_fix = !self.code_balance;
         c.collect.informative_only = !self.code_samples;
         c

@@ -13,13 +13,13 @@ use super::{availability, h1, h2, h34, Hypothesis, Record, Setup};
 #[derive(Clone, Debug)]
 pub enum Section {
     /// H1's tables.
-    H1(h1::Summary),
+    H1(Box<h1::Summary>),
     /// H2's tables.
-    H2(h2::Summary),
+    H2(Box<h2::Summary>),
     /// H3's counts.
     H3(h34::H3Summary),
     /// H4's tables.
-    H4(h34::H4Summary),
+    H4(Box<h34::H4Summary>),
     /// Not available in this build, with the reason.
     NotAvailable(Hypothesis, String),
 }
@@ -51,10 +51,10 @@ impl Report {
                 continue;
             }
             sections.push(match h {
-                Hypothesis::H1 => Section::H1(h1::aggregate(&records)?),
-                Hypothesis::H2 => Section::H2(h2::aggregate(&records)?),
+                Hypothesis::H1 => Section::H1(Box::new(h1::aggregate(&records)?)),
+                Hypothesis::H2 => Section::H2(Box::new(h2::aggregate(&records)?)),
                 Hypothesis::H3 => Section::H3(h34::aggregate_h3(&records)?),
-                Hypothesis::H4 => Section::H4(h34::aggregate_h4(&records)?),
+                Hypothesis::H4 => Section::H4(Box::new(h34::aggregate_h4(&records)?)),
             });
         }
         Ok(Report {
