@@ -50,7 +50,12 @@ fn generated_scenes_keep_their_invariants() {
                 assert!(level <= 4, "{}: {a} at level {level}", s.name());
             }
             if preset == ScenePreset::Simulated {
-                assert!((3..=5).contains(&stacked), "{}: {stacked} stacked {:?}", s.name(), s);
+                assert!(
+                    (3..=5).contains(&stacked),
+                    "{}: {stacked} stacked {:?}",
+                    s.name(),
+                    s
+                );
             }
             for (a, b) in &s.behind {
                 assert_ne!(a, b);
@@ -60,7 +65,12 @@ fn generated_scenes_keep_their_invariants() {
             match &s.goal {
                 Goal::On(x, y) => {
                     assert_ne!(x, y);
-                    assert_ne!(s.support(x), Some(y.as_str()), "{}: goal already true", s.name());
+                    assert_ne!(
+                        s.support(x),
+                        Some(y.as_str()),
+                        "{}: goal already true",
+                        s.name()
+                    );
                     if y != "table" {
                         let o = s.object(y).unwrap();
                         assert!(o.surface == "flat" && o.size != "small", "{}", s.name());
@@ -105,7 +115,11 @@ fn the_checks_can_fail() {
     };
     // A good tree: p from q, q observed.
     let mut good = ProofTree::default();
-    let leaf = good.add(Node::supported(t("holds(q,1)"), Kind::Observation, obs.clone()));
+    let leaf = good.add(Node::supported(
+        t("holds(q,1)"),
+        Kind::Observation,
+        obs.clone(),
+    ));
     let mut root = Node::supported(t("holds(p,1)"), axiom(&pq), pq.clone());
     root.children = vec![leaf];
     let r = good.add(root);

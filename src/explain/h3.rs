@@ -267,7 +267,10 @@ pub fn generate(preset: ScenePreset, seed: u64) -> Scene {
     let mut stacked = 0usize;
     // Towers: a base and one to three objects on it, while stacked objects are still wanted.
     while stacked_target.saturating_sub(stacked) >= 2 {
-        let Some(base) = order.iter().copied().find(|&i| !placed[i] && can_carry(&objects[i]))
+        let Some(base) = order
+            .iter()
+            .copied()
+            .find(|&i| !placed[i] && can_carry(&objects[i]))
         else {
             break;
         };
@@ -320,7 +323,10 @@ pub fn generate(preset: ScenePreset, seed: u64) -> Scene {
             .filter(|a| !on.iter().any(|(_, b)| b == a))
             .filter(|a| on.iter().any(|(x, b)| x == a && b != "table"))
             .find(|a| {
-                let o = objects.iter().find(|o| o.name == *a).expect("placed object");
+                let o = objects
+                    .iter()
+                    .find(|o| o.name == *a)
+                    .expect("placed object");
                 can_carry(o) && level_of(&on, a) < 4
             });
         let extra = order.iter().copied().find(|&i| !placed[i]);
@@ -559,7 +565,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
     let mut session = Session::default();
     let ask = |report: &mut TrialReport, q: Question, session: &mut Session| {
         report.questions += 1;
-        match answer(&scn, &lexicon, &q, Mode::Full, session) {
+        match answer(scn, &lexicon, &q, Mode::Full, session) {
             Ok(a) => {
                 if let Some(t) = &a.tree {
                     report.check(&format!("{q}"), t, oracle);
@@ -632,10 +638,19 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
     // A belief related to both: the why-not answer's first literal, else the why answer's.
     let related = why_not
         .as_ref()
-        .and_then(|a| a.literals.iter().find(|l| l.name() == Some("holds")).cloned())
+        .and_then(|a| {
+            a.literals
+                .iter()
+                .find(|l| l.name() == Some("holds"))
+                .cloned()
+        })
         .or_else(|| {
-            why.as_ref()
-                .and_then(|a| a.literals.iter().find(|l| l.name() == Some("holds")).cloned())
+            why.as_ref().and_then(|a| {
+                a.literals
+                    .iter()
+                    .find(|l| l.name() == Some("holds"))
+                    .cloned()
+            })
         });
     if let Some(lit) = related {
         let (fluent, at) = (lit.arg(0).cloned(), lit.arg(1).and_then(Term::num));
@@ -665,7 +680,10 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
         }
         for i in 0..=last {
             let mut found = false;
-            for place in objects.iter().chain(std::iter::once(&Term::constant("table"))) {
+            for place in objects
+                .iter()
+                .chain(std::iter::once(&Term::constant("table")))
+            {
                 let on = holds(&relation("on", obj, place), i);
                 if oracle.holds(&on) {
                     tree_of(&mut report, &on);
@@ -684,7 +702,10 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
                 tree_of(&mut report, &lit);
             }
             for n in 1..=6 {
-                let th = holds(&Term::fun("tower_height", vec![obj.clone(), Term::Num(n)]), i);
+                let th = holds(
+                    &Term::fun("tower_height", vec![obj.clone(), Term::Num(n)]),
+                    i,
+                );
                 if oracle.holds(&th) {
                     tree_of(&mut report, &th);
                 }
