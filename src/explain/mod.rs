@@ -18,7 +18,9 @@
 //!   (a minimal set of goal literals, observations and constraints, by deletion over
 //!   assumptions);
 //! - [`generic`]: why and why-not of an atom of any program's answer set, as text;
-//! - [`draw`]: proof trees as DOT text and as SVG drawn here.
+//! - [`draw`]: proof trees as DOT text and as SVG drawn here;
+//! - [`h3`]: the H3 experiment's pieces: generated scenes (DOMAIN.md 1.6, 7.1), the three
+//!   checks of a proof tree (DOMAIN.md 7.5) and one trial over a history.
 //!
 //! Invariants: nothing here reads files or the clock (the lexicon is passed as text or built
 //! in); user input (questions) never panics, it is answered by a reply that says what was not
@@ -36,3 +38,4 @@ pub mod history;
 pub mod generic;
 pub mod counterfactual;
 pub mod draw;
+pub mod h3;

@@ -19,9 +19,7 @@
 //! - **Truth**: an atom with an aspif number is true when the model has it; an atom without one
 //!   is true when grounding made it a fact, false otherwise.
 //!
-//! Invariants: one grounding only (provenance of later groundings is not kept by `Control`, so
-//! a second grounding is refused by [`ProgramOracle::new`]); every rule instance returned has a
-//! head the caller asked for and a body read off the ground program and provenance, never off
+//! Invariants: every rule instance returned has a head the caller asked for and a body read off the ground program and provenance, never off
 //! a tree; the oracle owns its Control, so it can be kept and queried as long as needed.
 
 use std::collections::{HashMap, HashSet};
@@ -148,7 +146,9 @@ enum Source {
     Dead { index: u32, origin: u32 },
 }
 
-/// An [`Oracle`] over a Control's ground program with provenance and one answer set.
+/// An [`Oracle`] over a Control's ground program with provenance and one answer set (every
+/// grounding's rules: `Control::provenance` numbers statements over all groundings, so labels
+/// must too; `explain` grounds once).
 pub struct ProgramOracle {
     ctl: Control,
     model: solve::Model,
@@ -228,7 +228,10 @@ impl ProgramOracle {
         let mut g_term = Vec::with_capacity(prov.atoms.len());
         let mut term_g = HashMap::new();
         for g in 1..=prov.atoms.len() as GAtom {
-            let t = ctl.provenance_symbol(g).map(|s| term_of(&s));
+            let t = prov
+                .atom(g)
+                .and_then(|r| r.sym)
+                .map(|s| term_of(&ctl.symbol_of_id(s)));
             if let Some(t) = &t {
                 term_g.insert(t.clone(), g);
             }
