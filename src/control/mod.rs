@@ -1311,6 +1311,16 @@ impl Control {
         Some(Symbol::from_table(&self.syms, s))
     }
 
+    /// The symbol of grounder atom `g` of the provenance of [`Control::program`] (the first
+    /// grounding's atom table, `GroundProgram::provenance.atoms`), also for atoms grounding
+    /// proved false or kept as facts without an aspif number; `None` for auxiliary atoms, or
+    /// when provenance is off.
+    pub fn provenance_symbol(&self, g: crate::ground::program::GAtom) -> Option<Symbol> {
+        let record = self.program().provenance.atom(g)?;
+        let s = record.sym?;
+        Some(Symbol::from_table(&self.syms, SymId(s)))
+    }
+
     /// Every atom with a symbol: its number, its symbol, and whether it is a fact and external.
     pub fn symbolic_atoms(&self) -> impl Iterator<Item = SymbolicAtom> + '_ {
         self.atom_sym.iter().enumerate().filter_map(|(i, s)| {
