@@ -25,8 +25,22 @@ def main():
     ap.add_argument("--first-seed", type=int, default=1)
     ap.add_argument("--out", default="target/episodes")
     ap.add_argument("--presets", default="real,simulated")
+    ap.add_argument("--timeout", type=float, default=900.0,
+                    help="seconds an episode may take before it counts as a failure")
     ap.add_argument("extra", nargs="*")
+    ap.add_argument("--summarize", nargs="*", metavar="DIR",
+                    help="only summarize the histories (preset-seed.json) already in DIRs")
     args = ap.parse_args()
+    if args.summarize is not None:
+        rows = []
+        for d in args.summarize:
+            for name in sorted(os.listdir(d)):
+                if name.endswith(".json") and "-" in name:
+                    preset, seed = name[:-5].rsplit("-", 1)
+                    rows.append(row_of(preset, int(seed), os.path.join(d, name), None, 0.0))
+        rows.sort(key=lambda r: (r[0] != "real", r[1]))
+        report(rows, sorted({r[0] for r in rows}, key=lambda p: p != "real"), 0.0)
+        return
     os.makedirs(args.out, exist_ok=True)
     half = args.episodes // 2
     presets = args.presets.split(",")
@@ -40,29 +54,44 @@ def main():
         cmd = [args.lucent, "run", "--preset", preset, "--seed", str(seed),
                "--perception-noise", "0.15", "--actuation-noise", "0.15",
                "--save-history", path] + args.extra
-        proc = subprocess.run(cmd, capture_output=True, text=True)
+        try:
+            proc = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
+        except subprocess.TimeoutExpired:
+            secs = time.time() - t0
+            rows.append((preset, seed, "?", False, 0, 0, f"timed out after {secs:.0f} s", secs))
+            print(f"{preset:9} {seed:3} FAIL timed out", file=sys.stderr, flush=True)
+            continue
         secs = time.time() - t0
         if proc.returncode not in (0, 20) or not os.path.exists(path):
             rows.append((preset, seed, "?", False, 0, 0, f"exit {proc.returncode}: "
                          + proc.stderr.strip().splitlines()[-1:][0] if proc.stderr.strip() else "", secs))
             continue
-        h = json.load(open(path))
-        ok = proc.returncode == 0
-        ending = h["ending"]
-        if isinstance(ending, dict):
-            (k, v), = ending.items()
-            ending = f"{k} {v}"
-        why = ""
-        if not ok:
-            why = f"{ending}; goal in truth: {h['goal_in_truth']}"
-        rows.append((preset, seed, ",".join(h["goal"]), ok, len(h["plans"]) - 1,
-                     len([s for s in h["steps"] if s.get("happened")]), why, secs))
-        print(f"{preset:9} {seed:3} {'ok  ' if ok else 'FAIL'} replans {rows[-1][4]} "
-              f"actions {rows[-1][5]} {secs:6.1f}s {why}", file=sys.stderr, flush=True)
-    total = time.time() - start
+        rows.append(row_of(preset, seed, path, proc.returncode, secs))
+        r = rows[-1]
+        print(f"{preset:9} {seed:3} {'ok  ' if r[3] else 'FAIL'} replans {r[4]} "
+              f"actions {r[5]} {secs:6.1f}s {r[6]}", file=sys.stderr, flush=True)
+    report(rows, presets, time.time() - start)
+
+
+def row_of(preset, seed, path, code, secs):
+    """One table row from a saved history (`code`: the exit code, None to judge by the file)."""
+    h = json.load(open(path))
+    ending = h["ending"]
+    if isinstance(ending, dict):
+        (k, v), = ending.items()
+        ending = f"{k} {v}"
+    ok = ending == "GoalObserved" and h["goal_in_truth"] is not False
+    if code is not None:
+        ok = code == 0
+    why = "" if ok else f"{ending}; goal in truth: {h['goal_in_truth']}"
+    actions = len([s for s in h["steps"] if s.get("happened")])
+    return (preset, seed, ",".join(h["goal"]), ok, max(len(h["plans"]) - 1, 0), actions, why, secs)
+
+
+def report(rows, presets, total):
     n = len(rows)
     ok = sum(1 for r in rows if r[3])
-    print(f"# {n} episodes, {ok} reached the goal ({100.0 * ok / n:.1f}%), "
+    print(f"# {n} episodes, {ok} reached the goal ({100.0 * ok / max(n, 1):.1f}%), "
           f"{total:.0f} s in all")
     for preset in presets:
         sub = [r for r in rows if r[0] == preset]

@@ -250,7 +250,7 @@ mod simulated {
             &format!("generated {} seed {}", preset.name(), run.seed),
             &RunConfig::default(),
             &mut |e| match &e {
-                Event::Perceived { .. } => return,
+                Event::Perceived { .. } => (),
                 Event::Planned(p) => {
                     let steps: Vec<(u32, Term)> = p
                         .actions

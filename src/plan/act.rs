@@ -665,7 +665,7 @@ fn run_steps(
                 step: step - 1,
                 action: action_text,
                 before: texts(&before.closure),
-                predicted: predicted.as_ref().map(|p| texts(p)),
+                predicted: predicted.as_ref().map(texts),
                 observed: texts(&belief.closure),
                 unexpected: texts(unexpected),
                 extra: texts(extra),
