@@ -18,6 +18,11 @@
 //! has no such mode yet, so each horizon is translated and grounded afresh), the fixed-horizon
 //! mode and `initially_unstable` detection.
 
+pub mod act;
+pub mod history;
+#[cfg(feature = "sim")]
+pub mod tabletop;
+
 use std::collections::BTreeMap;
 
 use crate::action::{self, ast::Description, ast::Value, Options};
