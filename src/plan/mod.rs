@@ -10,6 +10,8 @@
 //!   program with the current state as the initial state) and classifies it as optimal,
 //!   sub-optimal or incorrect (4.3), with the minimal length and CR count found by a
 //!   breadth-first search over states, not by the planner's search.
+//! - `act`, `history` and `tabletop` (feature `sim`): the sense-plan-act loop, its record and
+//!   the simulated world it runs in.
 //! - `physics` (feature `sim`) draws planning tasks from generated scenes (DOMAIN.md 7.1) and
 //!   replays plans in the rapier world without noise (actions succeed, goal measured, every
 //!   object stable).
@@ -25,11 +27,15 @@
 //! - Nothing here reads files, prints or reads the clock: bad input is a [`PlanError::Input`]
 //!   with the diagnostics rendered against the caller's sources.
 
+pub mod act;
 pub mod check;
+pub mod history;
 #[cfg(feature = "sim")]
 pub mod physics;
 pub mod scene;
 pub mod search;
+#[cfg(feature = "sim")]
+pub mod tabletop;
 
 use crate::action::{self, ast::Description, ast::Value, Options};
 use crate::base::SourceMap;
