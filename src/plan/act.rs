@@ -601,7 +601,9 @@ fn run_steps(
             let found = match plan(&desc, &sources, &config.plan) {
                 Ok(found) => found,
                 Err(PlanError::NoPlanWithin(h)) => return Ending::NoPlan { horizon: h },
-                Err(PlanError::Inconsistent) => return Ending::Inconsistent,
+                Err(PlanError::Inconsistent | PlanError::InitiallyUnstable(_)) => {
+                    return Ending::Inconsistent
+                }
                 Err(PlanError::Input(m)) => return Ending::Input(m),
             };
             let first = &found.plans[0];
