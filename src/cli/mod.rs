@@ -19,6 +19,8 @@ pub mod input;
 pub mod options;
 pub mod plan;
 pub mod report;
+#[cfg(feature = "sim")]
+pub mod run;
 
 use std::io::{Read, Write};
 use std::time::{Duration, Instant};
@@ -118,6 +120,16 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
             writeln!(
                 io.err,
                 "*** ERROR: (lucent): this build has no simulator (built without the `sim` feature)"
+            )?;
+            return Ok(EXIT_UNAVAILABLE);
+        }
+        #[cfg(feature = "sim")]
+        Some("run") => return run::run_run(&args[1..], io.out, io.err),
+        #[cfg(not(feature = "sim"))]
+        Some("run") => {
+            writeln!(
+                io.err,
+                "*** ERROR: (lucent): `lucent run` needs the simulator (built without the `sim` feature)"
             )?;
             return Ok(EXIT_UNAVAILABLE);
         }
