@@ -443,6 +443,7 @@ fn load_history(
                 max_horizon: a.max_horizon.unwrap_or(10),
                 profile: a.profile.clone(),
                 overrides: overrides.clone(),
+                ..PlanConfig::default()
             };
             match plan(&desc, &sources, &config) {
                 Ok(found) => found.plans[0].actions.clone(),
