@@ -20,6 +20,7 @@ use crate::plan::{plan, PlanConfig};
 const KB_FULL: &str = include_str!("../../domains/ra/kb_full.ald");
 
 /// The tabletop task of DOMAIN.md 4.5 (it includes `../kb_full.ald`).
+const H1_SCENE: &str = include_str!("../../domains/ra/scenes/h1.ald");
 const TABLETOP_TASK: &str = include_str!("../../domains/ra/scenes/tabletop_task.ald");
 
 /// `lucent demo --help`.
@@ -46,6 +47,8 @@ fn plan_only(out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
     let mut read = |p: &std::path::Path| {
         if p.ends_with("kb_full.ald") {
             Ok(KB_FULL.to_string())
+        } else if p.ends_with("h1.ald") {
+            Ok(H1_SCENE.to_string())
         } else {
             Err(format!("{} is not built in", p.display()))
         }
@@ -299,7 +302,12 @@ mod tests {
     fn the_built_in_tabletop_task_has_its_four_plans() {
         let mut out = Vec::new();
         let mut err = Vec::new();
-        assert_eq!(super::plan_only(&mut out, &mut err).unwrap(), 0);
+        assert_eq!(
+            super::plan_only(&mut out, &mut err).unwrap(),
+            0,
+            "{}",
+            String::from_utf8_lossy(&err)
+        );
         let text = String::from_utf8(out).unwrap();
         assert_eq!(text.matches("Plan: ").count(), 4, "{text}");
     }

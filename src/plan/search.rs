@@ -83,7 +83,10 @@ pub(crate) fn plan_of(model: &OwnedModel) -> Plan {
 /// its fewest CR applications).
 pub(crate) fn order(mut plans: Vec<Plan>) -> Vec<Plan> {
     plans.sort_by_cached_key(|p| (p.actions.len(), p.cr_applied.len(), p.to_text()));
-    plans.dedup_by(|later, first| later.actions == first.actions);
+    // Each action sequence once, at its best (first) position: equal sequences need not be
+    // adjacent after the sort (a sequence with more CR applications sorts after other plans).
+    let mut seen = std::collections::HashSet::new();
+    plans.retain(|p| seen.insert(p.to_text()));
     plans
 }
 
