@@ -3,7 +3,9 @@
 //! scripted per test. Checks that a clean run follows its first plan, that a failed action is a
 //! discrepancy followed by a replan from the observed state, that contradictory readings are
 //! doubted (the less confident one) instead of leaving the robot without an answer set, that a
-//! budget ends a run with its reason, and that a recorded discrepancy is what the learner's
+//! budget ends a run with its reason, that a plan blocked by a misreading makes the robot look
+//! again instead of giving up, that an action the current belief makes not executable is replanned
+//! instead of executed, and that a recorded discrepancy is what the learner's
 //! surprise classification (DOMAIN.md 5.1) consumes.
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -45,6 +47,8 @@ struct Blocks {
     executed: usize,
     /// Extra readings of the first perception of step 0: (fluent, confidence).
     phantom: Vec<(String, f64)>,
+    /// Extra readings of one look: (actions executed before it, look, fluent, confidence).
+    misread: Vec<(usize, u32, String, f64)>,
     looks: usize,
 }
 
@@ -59,6 +63,7 @@ impl Blocks {
             slips: BTreeSet::new(),
             executed: 0,
             phantom: Vec::new(),
+            misread: Vec::new(),
             looks: 0,
         }
     }
@@ -72,7 +77,7 @@ impl World for Blocks {
         o
     }
 
-    fn perceive(&mut self, _look: u32) -> Percept {
+    fn perceive(&mut self, look: u32) -> Percept {
         let mut p = Percept::default();
         for o in self.objects() {
             p.statics.push(sym(&format!("has_size({o},large)")));
@@ -94,6 +99,16 @@ impl World for Blocks {
         }
         if self.looks == 0 {
             for (f, c) in &self.phantom {
+                p.fluents.push(Seen {
+                    fluent: sym(f),
+                    value: true,
+                    confidence: *c,
+                    exact: false,
+                });
+            }
+        }
+        for (n, l, f, c) in &self.misread {
+            if *n == self.executed && *l == look {
                 p.fluents.push(Seen {
                     fluent: sym(f),
                     value: true,
@@ -274,4 +289,66 @@ fn budgets_end_a_run_with_their_reason() {
     assert_eq!(h.discrepancies.len(), 3);
     assert_eq!(h.goal_in_truth, Some(false));
     assert!(!h.succeeded());
+}
+
+#[test]
+fn no_plan_from_a_misreading_makes_the_robot_look_again() {
+    // `b` rests on `a`. The first look also sees `c` behind `a` and `b` behind `c`: E8 forbids
+    // picking up an object behind another and E7 one below another, so `c` waits for `a`, `a`
+    // for `b` and `b` for `c`: no action is executable and no plan exists. The second look
+    // (a fresh perception) does not repeat the misreadings.
+    let misread = |w: &mut Blocks| {
+        for (x, y) in [("c", "a"), ("b", "c")] {
+            w.misread
+                .push((0, 0, format!("relation(behind,{x},{y})"), 0.9));
+        }
+    };
+    let mut w = Blocks::new(&[("a", "table"), ("b", "a"), ("c", "table")]);
+    misread(&mut w);
+    let mut config = RunConfig::default();
+    config.plan.max_horizon = 4;
+    let (h, events) = go(&mut w, "in_hand(rob1,c)", &config);
+    assert!(h.succeeded(), "{events:?}");
+    assert!(h.steps[0]
+        .observed
+        .iter()
+        .any(|o| o.fluent == "relation(behind,c,a)"));
+    assert_eq!(h.steps[0].looks, 2, "{events:?}");
+    assert_eq!(h.plans.len(), 1);
+    assert_eq!(
+        h.plans[0].reason,
+        "no_plan_within(4) at step 0, looked again"
+    );
+    assert_eq!(h.actions(), vec!["pickup(rob1,c)"]);
+
+    // Without looking again the run ends where it began.
+    let mut w = Blocks::new(&[("a", "table"), ("b", "a"), ("c", "table")]);
+    misread(&mut w);
+    config.relooks = 0;
+    let (h, events) = go(&mut w, "in_hand(rob1,c)", &config);
+    assert_eq!(h.ending, Some(Ending::NoPlan { horizon: 4 }), "{events:?}");
+    assert!(h.plans.is_empty());
+}
+
+#[test]
+fn an_action_the_belief_makes_not_executable_is_replanned_not_executed() {
+    // Plan: pickup b, putdown b on the table, pickup a, putdown a on c. After the second action
+    // the robot misreads `a` behind `c`: E8 makes `pickup(rob1,a)` not executable in its belief,
+    // while the compared fluents (`on`, `in_hand`) match the prediction, so there is no
+    // discrepancy. The robot replans before acting: `c` must be lifted first.
+    let mut w = Blocks::new(&[("a", "table"), ("b", "a"), ("c", "table")]);
+    w.misread.push((2, 0, "relation(behind,a,c)".into(), 0.9));
+    let (h, events) = go(&mut w, "relation(on,a,c)", &RunConfig::default());
+    assert!(h.succeeded(), "{events:?}");
+    assert_eq!(h.plans.len(), 2, "{events:?}");
+    assert_eq!(h.plans[1].step, 2);
+    assert_eq!(
+        h.plans[1].reason,
+        "pickup(rob1,a) not executable in the belief at step 2"
+    );
+    assert_eq!(h.plans[1].actions[0], "pickup(rob1,c)");
+    // The action was never tried against the belief: no discrepancy, and step 2's action is
+    // the new plan's first.
+    assert!(h.discrepancies.is_empty(), "{:?}", h.discrepancies);
+    assert_eq!(h.steps[2].happened.as_deref(), Some("pickup(rob1,c)"));
 }

@@ -21,6 +21,12 @@
 //! recorded when they differ on `relation(on, X, Y)` (positive) or `in_hand(R, O)`, or when the
 //! world reports a failed action. The discrepancy carries all positive observable literals.
 //!
+//! Two guards before giving up or acting [ours]: when the planner finds no plan from a belief,
+//! the robot looks again (`RunConfig::relooks` times, fresh perceptions) and plans from the new
+//! belief; and before each action of an older plan it checks the action against the current
+//! belief (the one-step prediction is empty when the domain says it is not executable) and
+//! replans instead of executing it.
+//!
 //! Invariants: nothing here reads files, prints or reads the clock (progress goes to the
 //! caller's callback); every plan is made from the belief of the step it starts at; the
 //! history's steps are numbered from 0 with one action at most between two steps; a run is
@@ -83,6 +89,10 @@ pub struct RunConfig {
     pub confirm_goal: bool,
     /// Looks per perception, fused by majority ([`fuse`]); 1 takes each look as it is.
     pub looks: u32,
+    /// When the planner finds no plan (or the belief is inconsistent or unstable), look again
+    /// this many times at the same step, each a fresh perception, before giving up: a noisy
+    /// reading (a cycle of `behind`) can make a reachable goal look unreachable.
+    pub relooks: u32,
 }
 
 impl Default for RunConfig {
@@ -96,6 +106,7 @@ impl Default for RunConfig {
             max_plans: 12,
             confirm_goal: true,
             looks: 1,
+            relooks: 2,
         }
     }
 }
@@ -568,6 +579,8 @@ fn run_steps(
     };
     let mut pending: VecDeque<Symbol> = VecDeque::new();
     let mut reason = Some("initial".to_string());
+    // Looks taken since the last plan because the planner found none.
+    let mut relooks = 0;
     loop {
         if runner.goal_believed(&belief) {
             if !config.confirm_goal {
@@ -600,12 +613,33 @@ fn run_steps(
             };
             let found = match plan(&desc, &sources, &config.plan) {
                 Ok(found) => found,
+                Err(
+                    e @ (PlanError::NoPlanWithin(_)
+                    | PlanError::Inconsistent
+                    | PlanError::InitiallyUnstable(_)),
+                ) if relooks < config.relooks => {
+                    // A noisy reading may be what blocks every plan: look again (fresh noise)
+                    // and plan from the new belief before giving up.
+                    relooks += 1;
+                    let look = history.steps[step as usize].looks;
+                    belief = match observe(runner, world, history, step, look, progress) {
+                        Ok(b) => b,
+                        Err(e) => return e,
+                    };
+                    let why = match e {
+                        PlanError::NoPlanWithin(h) => format!("no_plan_within({h})"),
+                        _ => "no consistent stable state".to_string(),
+                    };
+                    reason = Some(format!("{why} at step {step}, looked again"));
+                    continue;
+                }
                 Err(PlanError::NoPlanWithin(h)) => return Ending::NoPlan { horizon: h },
                 Err(PlanError::Inconsistent | PlanError::InitiallyUnstable(_)) => {
                     return Ending::Inconsistent
                 }
                 Err(PlanError::Input(m)) => return Ending::Input(m),
             };
+            relooks = 0;
             let first = &found.plans[0];
             let record = PlanRecord {
                 step,
@@ -630,6 +664,21 @@ fn run_steps(
             Ok(p) => p,
             Err(e) => return e,
         };
+        let fresh = history
+            .plans
+            .last()
+            .is_some_and(|p| p.step == step && p.actions.len() == pending.len() + 1);
+        if predicted.is_none() && !fresh {
+            // The rest of an older plan is not executable in what the robot now believes
+            // (a reading seen since): replan from the belief instead of acting against it.
+            // A fresh plan's first action is executed even so (the planner and the one-step
+            // prediction share the domain, so this does not happen; the guard stops a loop).
+            pending.clear();
+            reason = Some(format!(
+                "{action} not executable in the belief at step {step}"
+            ));
+            continue;
+        }
         let failure = match world.execute(&action) {
             Ok(f) => f,
             Err(e) => return Ending::WorldError(e),

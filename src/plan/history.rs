@@ -60,7 +60,8 @@ pub struct PlanRecord {
     pub actions: Vec<String>,
     /// The CR rules its answer set applies (`d1x(a,2)`, steps relative to the plan).
     pub cr_applied: Vec<String>,
-    /// Why it was made: `initial` or `discrepancy at step I`.
+    /// Why it was made: `initial`, `discrepancy at step I`, `A not executable in the belief at
+    /// step I`, `no_plan_within(H) at step I, looked again`, `goal not confirmed at step I`.
     pub reason: String,
     /// How many distinct minimal plans there were.
     pub alternatives: usize,
