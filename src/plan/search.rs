@@ -136,7 +136,8 @@ fn diagnose(desc: &Description, sources: &SourceMap, config: &PlanConfig) -> Pla
     }
 }
 
-/// Collects the plans of one solve call (all models, or the first).
+/// The plans of one solve call over `ctl` (all models, or the first): the one place where
+/// models become plans, for every search.
 fn collect(ctl: &mut Control, all: bool) -> Vec<Plan> {
     let mut plans = Vec::new();
     ctl.solve(&SolveOptions::default(), |m| {
@@ -144,6 +145,26 @@ fn collect(ctl: &mut Control, all: bool) -> Vec<Plan> {
         all
     });
     plans
+}
+
+/// The initial state alone, translated afresh (horizon 0, no planning module): `Ok` when it
+/// has an answer set, else why not (see [`diagnose`]).
+fn check_initial(
+    desc: &Description,
+    sources: &SourceMap,
+    config: &PlanConfig,
+) -> Result<(), PlanError> {
+    let initial = solve_fresh(
+        desc,
+        sources,
+        config,
+        &[("horizon", Value::Int(0)), ("planning", Value::Bool(false))],
+        false,
+    )?;
+    if initial.is_empty() {
+        return Err(diagnose(desc, sources, config));
+    }
+    Ok(())
 }
 
 /// The minimal plans found at horizon `length`.
@@ -216,19 +237,20 @@ pub(crate) fn incremental(
     Err(PlanError::NoPlanWithin(max_horizon))
 }
 
-/// The answer sets of `desc` translated with `extra`, grounded and solved afresh.
+/// The plans of `desc` translated with `extra`, grounded and solved afresh (all answer sets'
+/// plans, or the first one's).
 fn solve_fresh(
     desc: &Description,
     sources: &SourceMap,
     config: &PlanConfig,
     extra: &[(&str, Value)],
     all: bool,
-) -> Result<Vec<OwnedModel>, PlanError> {
+) -> Result<Vec<Plan>, PlanError> {
     let t = translate(desc, sources, config, extra)?;
     let mut ctl = control(sources, t.program, if all { 0 } else { 1 })?;
     ctl.ground(&[Part::base()])
         .map_err(|e| PlanError::Input(e.message))?;
-    Ok(ctl.solve_all(&SolveOptions::default()).models)
+    Ok(collect(&mut ctl, all))
 }
 
 /// The reference search: every horizon translated and grounded afresh.
@@ -238,18 +260,9 @@ pub(crate) fn retranslate(
     config: &PlanConfig,
     max_horizon: usize,
 ) -> Result<Plans, PlanError> {
-    let initial = solve_fresh(
-        desc,
-        sources,
-        config,
-        &[("horizon", Value::Int(0)), ("planning", Value::Bool(false))],
-        false,
-    )?;
-    if initial.is_empty() {
-        return Err(diagnose(desc, sources, config));
-    }
+    check_initial(desc, sources, config)?;
     for k in 0..=max_horizon {
-        let models = solve_fresh(
+        let plans = solve_fresh(
             desc,
             sources,
             config,
@@ -259,8 +272,8 @@ pub(crate) fn retranslate(
             ],
             config.all,
         )?;
-        if !models.is_empty() {
-            return Ok(found(models.iter().map(plan_of).collect(), k, k + 1));
+        if !plans.is_empty() {
+            return Ok(found(plans, k, k + 1));
         }
     }
     Err(PlanError::NoPlanWithin(max_horizon))
@@ -273,17 +286,8 @@ pub(crate) fn fixed(
     config: &PlanConfig,
     n: usize,
 ) -> Result<Plans, PlanError> {
-    let initial = solve_fresh(
-        desc,
-        sources,
-        config,
-        &[("horizon", Value::Int(0)), ("planning", Value::Bool(false))],
-        false,
-    )?;
-    if initial.is_empty() {
-        return Err(diagnose(desc, sources, config));
-    }
-    let models = solve_fresh(
+    check_initial(desc, sources, config)?;
+    let plans = solve_fresh(
         desc,
         sources,
         config,
@@ -293,11 +297,11 @@ pub(crate) fn fixed(
         ],
         config.all,
     )?;
-    if models.is_empty() {
+    if plans.is_empty() {
         return Err(PlanError::NoPlanWithin(n));
     }
-    let answer_sets = models.len();
-    let plans = order(models.iter().map(plan_of).collect());
+    let answer_sets = plans.len();
+    let plans = order(plans);
     Ok(Plans {
         length: plans[0].actions.len(),
         cr_applied: plans[0].cr_applied.len(),
