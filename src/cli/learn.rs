@@ -371,6 +371,11 @@ pub fn run_experiment(
             h1::PAPER.relaxed.precision,
             h1::PAPER.relaxed.recall
         )?;
+        writeln!(
+            out,
+            "Solver calls: {} for {} trials ({} of {} world steps answered from the caches)",
+            result.solves, result.trials, result.cache_hits.0, result.cache_hits.1
+        )?;
         writeln!(out, "Time: {secs:.2}s")?;
     }
     Ok(0)

@@ -13,10 +13,10 @@
 //! Invariant: observations are a function of the scene, its seed and its step alone.
 
 use super::object::{Size, Surface};
-use super::rng::SplitMix64;
 use super::scene::{Scene, TABLE};
 use super::truth::{relations, Rel, Relation, TruthConfig};
 use super::world::World;
+use crate::base::rng::SplitMix64;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 
