@@ -15,6 +15,7 @@ pub mod sim;
 pub mod plan;
 pub mod learn;
 pub mod explain;
+pub mod experiment;
 pub mod cli;
 
 /// README.md as documentation, so its Rust example runs as a doctest (`cargo test --doc`);

@@ -10,25 +10,28 @@
 //! - KB_full at a fixed horizon: the tabletop task (length 3, exactly 4 plans), the
 //!   execution-example scene (minimal length 6, the paper's plan among the minimal plans) and
 //!   the exception goal (exactly one D1 application, at the goal step).
+//!
+//! Like every layer above `control`, the tests ground and solve through `control::Control`
+//! and read models as structured `Symbol`s.
 
 use std::collections::BTreeSet;
 use std::path::Path;
 
 use lucent::action::{self, ast::Value, Options};
 use lucent::base::SourceMap;
-use lucent::ground::{ground, GroundConfig};
-use lucent::solve::{self, Config, Outcome, Solver};
+use lucent::control::{Control, ControlConfig, OwnedModel, Part, SolveOptions, Symbol};
+use lucent::solve::{self, Config, Outcome};
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// Answer sets of a scene under a profile and switch overrides: (outcome, models).
-fn solve_scene(
+/// The translation of a scene under a profile and switch overrides, with its sources.
+fn translate_scene(
     scene: &str,
     profile: Option<&str>,
     overrides: &[(&str, Value)],
-) -> (Outcome, Vec<solve::Model>) {
+) -> (SourceMap, action::Translation) {
     let path = root().join("domains/ra/scenes").join(scene);
     let mut sources = SourceMap::new();
     let text = std::fs::read_to_string(&path).unwrap();
@@ -46,37 +49,59 @@ fn solve_scene(
     let t = action::translate(&parsed.description, &options);
     assert!(!t.has_errors(), "{:?}", t.diagnostics);
     assert_eq!(t.program.statements.len(), t.origins.len());
-    let g = ground(&t.program, None, &GroundConfig::default());
-    assert!(!g.diagnostics.has_errors(), "{:?}", g.diagnostics.items());
-    let config = Config {
-        models: 0,
-        check_models: true,
-        ..Config::default()
+    (sources, t)
+}
+
+/// A Control with the translation grounded (`base`).
+fn grounded(sources: SourceMap, t: &action::Translation, provenance: bool) -> Control {
+    let config = ControlConfig {
+        solve: Config {
+            models: 0,
+            check_models: true,
+            ..Config::default()
+        },
+        provenance,
+        ..ControlConfig::default()
     };
-    let mut solver = Solver::new(&g.program, config);
-    let result = solver.solve();
-    for m in &result.models {
-        solve::check::check(&g.program, &m.atoms).expect("a stable model");
+    let mut ctl = Control::with_sources(config, sources);
+    ctl.add_program(t.program.clone())
+        .expect("the translation is kept");
+    ctl.ground(&[Part::base()])
+        .expect("the translation grounds");
+    ctl
+}
+
+/// Answer sets of a scene under a profile and switch overrides: (outcome, models).
+fn solve_scene(
+    scene: &str,
+    profile: Option<&str>,
+    overrides: &[(&str, Value)],
+) -> (Outcome, Vec<OwnedModel>) {
+    let (sources, t) = translate_scene(scene, profile, overrides);
+    let mut ctl = grounded(sources, &t, false);
+    let solved = ctl.solve_all(&SolveOptions::default());
+    for m in &solved.models {
+        solve::check::check(ctl.program(), &m.raw.atoms).expect("a stable model");
     }
-    (result.outcome, result.models)
+    (solved.summary.outcome, solved.models)
 }
 
 /// The plan of a model: `action@step` in step order.
-fn plan(model: &solve::Model) -> Vec<String> {
-    let mut steps: Vec<(i64, String)> = model
-        .symbols
+fn plan(model: &OwnedModel) -> Vec<String> {
+    let mut steps: Vec<(i32, String)> = model
+        .shown
         .iter()
-        .filter_map(|s| {
-            let inner = s.strip_prefix("occurs(")?.strip_suffix(')')?;
-            let comma = inner.rfind(',')?;
-            Some((inner[comma + 1..].parse().ok()?, inner[..comma].to_string()))
+        .filter(|s| s.is("occurs", 2) && !s.is_negative())
+        .map(|s| {
+            let step = s.args()[1].as_number().expect("a step number");
+            (step, s.args()[0].to_string())
         })
         .collect();
     steps.sort();
     steps.into_iter().map(|(i, a)| format!("{a}@{i}")).collect()
 }
 
-fn plans(models: &[solve::Model]) -> BTreeSet<String> {
+fn plans(models: &[OwnedModel]) -> BTreeSet<String> {
     models.iter().map(|m| plan(m).join("; ")).collect()
 }
 
@@ -112,14 +137,15 @@ fn learner_profile_gives_sparcs_answer_set() {
     assert_eq!(models.len(), 1);
     // SPARC's display section: holds(relation(..)), holds(in_hand(..)), -holds(in_hand(..)).
     let shown: BTreeSet<String> = models[0]
-        .symbols
+        .shown
         .iter()
         .filter(|s| {
-            s.starts_with("holds(relation(")
-                || s.starts_with("holds(in_hand(")
-                || s.starts_with("-holds(in_hand(")
+            let fluent = s.args().first();
+            s.name() == Some("holds")
+                && fluent
+                    .is_some_and(|f| f.is("relation", 3) && !s.is_negative() || f.is("in_hand", 2))
         })
-        .cloned()
+        .map(Symbol::to_string)
         .collect();
     assert_eq!(shown, expected("learner.answer"));
 }
@@ -171,7 +197,7 @@ fn kb_full_exception_goal_applies_d1_once_at_the_goal_step() {
             .strip_prefix("pickup(rob1,")
             .and_then(|s| s.strip_suffix(")@0"))
             .unwrap();
-        assert_eq!(m.cr_applied[0], format!("d1x({placed},2)"));
+        assert_eq!(m.cr_applied[0].to_string(), format!("d1x({placed},2)"));
     }
 }
 
@@ -239,52 +265,30 @@ fn kb_full_switches_keep_or_change_the_tabletop_plans() {
 fn supports_cite_the_al_d_axioms() {
     // The chain an explanation follows: an atom's supporting ground rule, its source statement
     // in the translation, and that statement's AL_d origin.
-    let path = root().join("domains/ra/scenes/tabletop_task.ald");
-    let mut sources = SourceMap::new();
-    let file = sources.add(
-        path.to_string_lossy().into_owned(),
-        std::fs::read_to_string(&path).unwrap(),
-    );
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    let options = Options {
-        profile: Some("tabletop".into()),
-        overrides: Vec::new(),
-    };
-    let t = action::translate(&parsed.description, &options);
-    let config = GroundConfig {
-        provenance: true,
-        ..GroundConfig::default()
-    };
-    let g = ground(&t.program, None, &config);
-    let atom_of = |name: &str| {
-        g.atom_names
-            .iter()
-            .position(|n| n.as_deref() == Some(name))
-            .map(|i| i as u32 + 1)
-            .unwrap_or_else(|| panic!("no atom {name}"))
-    };
-    let mut solver = Solver::new(
-        &g.program,
-        Config {
-            models: 0,
-            ..Config::default()
-        },
-    );
-    let result = solver.solve();
-    assert_eq!(result.models.len(), 4);
-    let cite = |model: &solve::Model, name: &str| -> (String, &'static str) {
-        let a = atom_of(name);
-        let k = model.atoms.binary_search(&a).expect("the atom holds");
-        let rule = model.support[k].expect("a supporting rule");
-        let stmt = g.program.provenance.origins(rule)[0]
+    let (sources, t) = translate_scene("tabletop_task.ald", Some("tabletop"), &[]);
+    let mut ctl = grounded(sources, &t, true);
+    let solved = ctl.solve_all(&SolveOptions::default());
+    assert_eq!(solved.models.len(), 4);
+    let cite = |model: &OwnedModel, name: &str| -> (String, &'static str) {
+        let a = ctl
+            .lookup(&Symbol::parse(name).unwrap())
+            .unwrap_or_else(|| panic!("no atom {name}"));
+        let k = model.raw.atoms.binary_search(&a).expect("the atom holds");
+        let rule = model.raw.support[k].expect("a supporting rule");
+        let stmt = ctl.provenance().origins(rule)[0]
             .rule
             .stmt()
-            .expect("a source statement") as usize;
-        let origin = &t.origins[stmt];
+            .expect("a source statement");
+        // One grounding of the whole translation: the Control's statement ids are the
+        // translation's.
+        assert_eq!(
+            ctl.statement(stmt).unwrap().statement.span,
+            t.program.statements[stmt as usize].span
+        );
+        let origin = &t.origins[stmt as usize];
         (origin.label.clone().unwrap_or_default(), origin.kind.name())
     };
-    for m in &result.models {
+    for m in &solved.models {
         assert_eq!(
             cite(m, "holds(in_hand(rob1,red_cube_large),3)"),
             ("C3".to_string(), "causal law")

@@ -2,7 +2,8 @@
 //! against the reference tools:
 //! (a) `lucent --mode=gringo F | clasp` against `gringo F | clasp` (clingo 5.4's gringo and
 //!     clasp 3.3.5), which checks the grounder with the reference solver;
-//! (b) `lucent F` against clingo 5.8.3 (the Python module, REFERENCE.md's semantic reference).
+//! (b) `lucent F` against clingo 5.8.3 (the Python module, REFERENCE.md's semantic reference),
+//! result word included (`SATISFIABLE`, `UNSATISFIABLE`, `OPTIMUM FOUND`).
 //! Every run is `-n 0 --opt-mode=optN --outf=2`.
 //!
 //! clasp (3.3.5, and the clasp inside clingo 5.8.3) is run twice, with its default
@@ -50,11 +51,30 @@ const TIME_LIMIT: &str = "60";
 enum Answer {
     /// An error in the input or during grounding (exit 65 or a JSON-less failure).
     Error,
-    /// The answer sets; with optimization, the optimum and the optimal answer sets only.
+    /// The answer sets; with optimization, the optimum and the optimal answer sets only; and
+    /// the result word (`SATISFIABLE`, `UNSATISFIABLE`, `OPTIMUM FOUND`, `UNKNOWN`).
     Sets {
         optimum: Option<Vec<i64>>,
         sets: Vec<Vec<String>>,
+        result: String,
     },
+}
+
+impl Answer {
+    /// The answer without its result word: `grounder | clasp` pipelines are compared on their
+    /// answer sets only, since whether a grounder writes a minimize statement that every answer
+    /// set pays 0 for (clasp then says `OPTIMUM FOUND`) is its own simplification (see
+    /// `answer_of`); the result word is compared end to end, `lucent` against clingo 5.8.
+    fn sets_only(&self) -> Answer {
+        match self {
+            Answer::Error => Answer::Error,
+            Answer::Sets { optimum, sets, .. } => Answer::Sets {
+                optimum: optimum.clone(),
+                sets: sets.clone(),
+                result: String::new(),
+            },
+        }
+    }
 }
 
 fn env_u64(name: &str, default: u64) -> u64 {
@@ -96,7 +116,7 @@ fn require_tools() {
 /// Normalises (models with their costs) into an `Answer`: with costs, the optimum is the last
 /// model's costs (clasp's optN reports improving models first) and only the optimal models
 /// count; without, the sorted multiset of models.
-fn answer_of(models: Vec<(Vec<String>, Vec<i64>)>) -> Answer {
+fn answer_of(models: Vec<(Vec<String>, Vec<i64>)>, result: &str) -> Answer {
     let optimum = models
         .last()
         .map(|(_, c)| c.clone())
@@ -126,7 +146,11 @@ fn answer_of(models: Vec<(Vec<String>, Vec<i64>)>) -> Answer {
     // other way round elsewhere. A minimize that excludes some answer set still differs from a
     // run without one, since its optimal sets are then fewer.
     let optimum = optimum.filter(|c| c.iter().any(|&x| x != 0));
-    Answer::Sets { optimum, sets }
+    Answer::Sets {
+        optimum,
+        sets,
+        result: result.to_string(),
+    }
 }
 
 /// Parses clingo/clasp `--outf=2` JSON into an `Answer`.
@@ -134,9 +158,10 @@ fn answer_of_json(stdout: &[u8]) -> Answer {
     let Ok(js) = serde_json::from_slice::<Value>(stdout) else {
         return Answer::Error;
     };
-    if js["Result"].as_str().is_none_or(|r| r == "UNKNOWN") {
-        return Answer::Error;
-    }
+    let result = match js["Result"].as_str() {
+        None | Some("UNKNOWN") => return Answer::Error,
+        Some(r) => r,
+    };
     let mut models = Vec::new();
     for call in js["Call"].as_array().into_iter().flatten() {
         for w in call["Witnesses"].as_array().into_iter().flatten() {
@@ -156,7 +181,7 @@ fn answer_of_json(stdout: &[u8]) -> Answer {
             models.push((atoms, costs));
         }
     }
-    answer_of(models)
+    answer_of(models, result)
 }
 
 /// clasp's equivalence preprocessing: on (5 iterations; the same answers as the default on
@@ -169,7 +194,8 @@ const EQ_SETTINGS: [&str; 2] = ["--eq=5", "--eq=0"];
 /// report 72 answer sets by default and 56 with `--eq=0`, while Lucent's aspif gets 56 from clasp
 /// by default, and Lucent's own solver, with every model checked by `--check`, also finds 56.
 fn agree(x: &[Answer; 2], y: &[Answer; 2]) -> bool {
-    x.iter().any(|a| y.contains(a))
+    x.iter()
+        .any(|a| y.iter().any(|b| a.sets_only() == b.sets_only()))
 }
 
 const SOLVE_ARGS: [&str; 4] = ["-n", "0", "--opt-mode=optN", "--outf=2"];
@@ -238,7 +264,9 @@ fn lucent_end_to_end(file: &Path) -> Answer {
 
 /// clingo 5.8.3 (Python) on every file in one process: one JSON line per file and setting of
 /// `EQ_SETTINGS`, either
-/// `{"error": ..}`, `{"too_many": true}` or `{"models": [[atoms, costs], ..]}`.
+/// `{"error": ..}`, `{"too_many": true}` or `{"models": [[atoms, costs], ..], "result": word}`
+/// (the word as clingo's application prints it: `OPTIMUM FOUND` when the search was exhausted
+/// on an optimization problem, as `Model.cost` says).
 const CLINGO_SCRIPT: &str = r#"
 import json, sys, clingo
 limit = int(sys.argv[1])
@@ -253,7 +281,16 @@ for path, eq in ((p, e) for p in sys.argv[2:] for e in ["--eq=5", "--eq=0"]):
                 models.append([sorted(str(s) for s in m.symbols(shown=True)), list(m.cost)])
                 if len(models) > limit:
                     break
-        out = {"too_many": True} if len(models) > limit else {"models": models}
+            res = handle.get()
+        if res.unsatisfiable:
+            word = "UNSATISFIABLE"
+        elif not res.satisfiable:
+            word = "UNKNOWN"
+        elif models and models[-1][1] and res.exhausted:
+            word = "OPTIMUM FOUND"
+        else:
+            word = "SATISFIABLE"
+        out = {"too_many": True} if len(models) > limit else {"models": models, "result": word}
     except RuntimeError as e:
         out = {"error": str(e)}
     print(json.dumps(out), flush=True)
@@ -297,7 +334,7 @@ fn clingo58(files: &[PathBuf]) -> Vec<Option<[Answer; 2]>> {
                     (atoms, costs)
                 })
                 .collect();
-            Some(answer_of(models))
+            Some(answer_of(models, js["result"].as_str().unwrap()))
         })
         .collect();
     answers

@@ -1,12 +1,11 @@
-//! `lucent learn` (one learning run, DOMAIN.md 5.2) and `lucent experiment h1` (the H1
-//! experiment, 7.3): the knowledge base is read here, everything else is `learn`.
+//! `lucent learn` (one learning run, DOMAIN.md 5.2): the knowledge base is read here (also for
+//! `lucent experiment`, `cli::experiment`), everything else is `learn`.
 //!
 //! Invariants: files are read and written only here; bad AL_d input is a gringo-style
 //! diagnostic and exit code 65, a bad command line exit code 1; the results are functions of
 //! the seed (the progress bar goes to standard error, and only on a terminal).
 
-use std::io::{IsTerminal, Write};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::io::Write;
 use std::time::Instant;
 
 use crate::action;
@@ -27,18 +26,9 @@ AL_d file with their strengths. --kb defaults to domains/ra/scenes/h1.ald.
   --code-samples   take samples from every trial, as the authors' code does
 ";
 
-const HELP_EXPERIMENT: &str = "\
-usage: lucent experiment h1 [--kb FILE.ald] [--seed N] [--runs N] [--outf=0|2]
-
-The H1 experiment (DOMAIN.md 7.3): independent learning runs (20 by default), scored strictly
-and relaxed against the five target axioms (5.10) and shown beside the paper's Table 1.
---outf=2 prints JSON with `strict` and `relaxed`, each with `precision` and `recall` in percent.
-";
-
 struct Args {
     kb: String,
     seed: u64,
-    runs: usize,
     episodes: Option<usize>,
     output: Option<String>,
     json: bool,
@@ -51,7 +41,6 @@ fn parse(args: &[String]) -> Result<Args, String> {
     let mut out = Args {
         kb: "domains/ra/scenes/h1.ald".into(),
         seed: 0,
-        runs: 20,
         episodes: None,
         output: None,
         json: false,
@@ -83,7 +72,6 @@ fn parse(args: &[String]) -> Result<Args, String> {
             "--help" | "-h" => out.help = true,
             "--kb" => out.kb = value(&mut i)?,
             "--seed" => out.seed = number(value(&mut i)?)?,
-            "--runs" => out.runs = number(value(&mut i)?)? as usize,
             "--episodes" => out.episodes = Some(number(value(&mut i)?)? as usize),
             "-o" | "--output" => out.output = Some(value(&mut i)?),
             "--outf" => out.json = value(&mut i)? == "2",
@@ -107,7 +95,7 @@ fn config(args: &Args) -> LearnConfig {
 }
 
 /// Reads and parses the knowledge base; diagnostics go to `err`.
-fn load(path: &str, err: &mut dyn Write) -> std::io::Result<Option<KbSpec>> {
+pub(super) fn load(path: &str, err: &mut dyn Write) -> std::io::Result<Option<KbSpec>> {
     let text = match std::fs::read_to_string(path) {
         Ok(t) => t,
         Err(e) => {
@@ -262,121 +250,6 @@ pub fn run_learn(
             writeln!(err, "*** ERROR: (lucent): {path}: {e}")?;
             return Ok(super::EXIT_INPUT);
         }
-    }
-    Ok(0)
-}
-
-/// `lucent experiment h1`.
-pub fn run_experiment(
-    args: &[String],
-    out: &mut dyn Write,
-    err: &mut dyn Write,
-) -> std::io::Result<i32> {
-    match args.first().map(String::as_str) {
-        Some("h1") => {}
-        Some("--help" | "-h") | None => {
-            write!(out, "{HELP_EXPERIMENT}")?;
-            return Ok(if args.is_empty() {
-                super::EXIT_USAGE
-            } else {
-                0
-            });
-        }
-        Some(other) => {
-            writeln!(
-                err,
-                "*** ERROR: (lucent): unknown experiment '{other}' (this build has h1)"
-            )?;
-            return Ok(super::EXIT_USAGE);
-        }
-    }
-    let args = match parse(&args[1..]) {
-        Ok(a) => a,
-        Err(e) => {
-            writeln!(err, "*** ERROR: (lucent): {e}")?;
-            return Ok(super::EXIT_USAGE);
-        }
-    };
-    if args.help {
-        write!(out, "{HELP_EXPERIMENT}")?;
-        return Ok(0);
-    }
-    let Some(spec) = load(&args.kb, err)? else {
-        return Ok(super::EXIT_INPUT);
-    };
-    let start = Instant::now();
-    let done = AtomicUsize::new(0);
-    let terminal = std::io::stderr().is_terminal();
-    let total = args.runs;
-    let progress = || {
-        let k = done.fetch_add(1, Ordering::SeqCst) + 1;
-        if terminal {
-            let width = 30;
-            let filled = width * k / total.max(1);
-            eprint!(
-                "\r[{}{}] {k}/{total} runs",
-                "#".repeat(filled),
-                " ".repeat(width - filled)
-            );
-            if k == total {
-                eprintln!();
-            }
-        }
-    };
-    let result = match h1::experiment(&spec, &config(&args), args.seed, args.runs, &progress) {
-        Ok(r) => r,
-        Err(e) => {
-            writeln!(err, "*** ERROR: (lucent): {e}")?;
-            return Ok(super::EXIT_INPUT);
-        }
-    };
-    let secs = start.elapsed().as_secs_f64();
-    if args.json {
-        let mut json = serde_json::to_value(&result).unwrap_or_default();
-        json["seed"] = args.seed.into();
-        json["time"] = secs.into();
-        writeln!(
-            out,
-            "{}",
-            serde_json::to_string_pretty(&json).unwrap_or_default()
-        )?;
-    } else {
-        writeln!(out, "H1: {} runs, seed {}", result.runs.len(), args.seed)?;
-        for r in &result.runs {
-            writeln!(
-                out,
-                "run {:2}: {} trials, found {}",
-                r.run,
-                r.trials,
-                r.found.join("; ")
-            )?;
-        }
-        writeln!(
-            out,
-            "              precision  recall   (paper: precision  recall)"
-        )?;
-        writeln!(
-            out,
-            "strict        {:8.1}% {:6.1}%             {:5.1}%  {:5.1}%",
-            result.strict.precision,
-            result.strict.recall,
-            h1::PAPER.strict.precision,
-            h1::PAPER.strict.recall
-        )?;
-        writeln!(
-            out,
-            "relaxed       {:8.1}% {:6.1}%             {:5.1}%  {:5.1}%",
-            result.relaxed.precision,
-            result.relaxed.recall,
-            h1::PAPER.relaxed.precision,
-            h1::PAPER.relaxed.recall
-        )?;
-        writeln!(
-            out,
-            "Solver calls: {} for {} trials ({} of {} world steps answered from the caches)",
-            result.solves, result.trials, result.cache_hits.0, result.cache_hits.1
-        )?;
-        writeln!(out, "Time: {secs:.2}s")?;
     }
     Ok(0)
 }

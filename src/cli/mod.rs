@@ -12,6 +12,7 @@
 pub mod sim;
 pub mod action;
 pub mod demo;
+pub mod experiment;
 pub mod learn;
 pub mod input;
 pub mod options;
@@ -120,7 +121,7 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
             return Ok(EXIT_UNAVAILABLE);
         }
         Some("learn") => return learn::run_learn(&args[1..], io.out, io.err),
-        Some("experiment") => return learn::run_experiment(&args[1..], io.out, io.err),
+        Some("experiment") => return experiment::run_experiment(&args[1..], io.out, io.err),
         Some(verb @ "explain") => {
             writeln!(
                 io.err,

@@ -64,7 +64,10 @@ use std::time::Instant;
 use hashbrown::{HashMap, HashSet};
 
 use crate::base::{Diagnostic, Diagnostics, FileId, SourceMap, Span, WarningKind};
-use crate::ground::program::{ExternalValue, GroundProgram, Output};
+use crate::ground::program::{
+    AtomRecord, AtomStatus, DeadReason, ExternalValue, GAtom, GroundProgram, Output, Provenance,
+    RemovedLit, RuleOrigin,
+};
 use crate::ground::symbol::{SymId, Symbols};
 use crate::ground::{self, GroundConfig, Grounding};
 use crate::solve::{self, Solver};
@@ -281,8 +284,6 @@ pub struct Control {
     /// Ground statements not yet handed to the solver (the whole program before the first
     /// solve call, then what later groundings added).
     pending: GroundProgram,
-    /// Set until the solver is built from the first grounding.
-    rebuild: bool,
     /// Externals declared since the solver last took the pending statements.
     new_externals: Vec<AtomId>,
     /// Released externals (false for good).
@@ -290,6 +291,23 @@ pub struct Control {
     solver: Option<Solver>,
     /// The last grounding's tables, for `--text` output (`take_grounding`).
     last: Option<Grounding>,
+    /// With provenance on: the statements grounded so far, by the Control's statement id
+    /// (what the origins of [`Control::provenance`] index).
+    stmts: Vec<GroundedStatement>,
+    /// With provenance on: every atom the grounder made over all groundings, by the Control's
+    /// grounder atom minus one (symbols in the Control's table, aspif numbers its atoms).
+    gatoms: Vec<AtomRecord>,
+    /// Grounder atom of each symbol id in `gatoms`.
+    gatom_of_sym: HashMap<u32, GAtom>,
+}
+
+/// A statement of a grounded part (see [`Control::statement`]).
+#[derive(Clone, Debug)]
+pub struct GroundedStatement {
+    /// The part instance it was grounded in.
+    pub part: Part,
+    /// The statement.
+    pub statement: Statement,
 }
 
 impl Control {
@@ -322,11 +340,13 @@ impl Control {
             externals: HashMap::new(),
             outputs_seen: None,
             pending: GroundProgram::new(),
-            rebuild: false,
             new_externals: Vec::new(),
             released: HashSet::new(),
             solver: None,
             last: None,
+            stmts: Vec::new(),
+            gatoms: Vec::new(),
+            gatom_of_sym: HashMap::new(),
         }
     }
 
@@ -670,8 +690,23 @@ impl Control {
         // (and back if it fails) instead of being copied.
         let take = binding.is_empty();
         let mut counts = Vec::with_capacity(blocks.len());
+        // With provenance on, the part of each statement (the Control's statement table).
+        let mut parts: Vec<Part> = Vec::new();
         for &b in blocks {
             counts.push(self.blocks[b].statements.len());
+            if self.config.provenance {
+                let block = &self.blocks[b];
+                let args = block
+                    .params
+                    .iter()
+                    .map(|p| {
+                        let v = binding.iter().find(|(n, _)| n == p);
+                        v.map(|(_, v)| v.clone()).expect("every parameter is bound")
+                    })
+                    .collect();
+                let part = Part::new(block.name.clone(), args);
+                parts.extend(std::iter::repeat_n(part, block.statements.len()));
+            }
             if take {
                 statements.append(&mut self.blocks[b].statements);
             } else {
@@ -681,8 +716,13 @@ impl Control {
         for (b, st) in &self.globals {
             if !blocks.contains(b) {
                 statements.push(st.clone());
+                if self.config.provenance {
+                    let block = &self.blocks[*b];
+                    parts.push(Part::new(block.name.clone(), Vec::new()));
+                }
             }
         }
+        let own = statements.len();
         if !first {
             self.context(&mut statements);
         }
@@ -728,12 +768,26 @@ impl Control {
         }
         self.diags.extend(d.items().iter().cloned());
         self.groundings += 1;
+        let offset = self.stmts.len() as u32;
+        if self.config.provenance {
+            let statements = program.statements.into_iter().take(own);
+            self.stmts.extend(
+                parts
+                    .into_iter()
+                    .zip(statements)
+                    .map(|(part, statement)| GroundedStatement { part, statement }),
+            );
+        }
         if first {
             self.adopt(grounding);
+            Ok(())
         } else {
-            self.merge(grounding);
+            self.merge(grounding, offset).map_err(|e| {
+                let mut d = self.new_diags();
+                d.push(e);
+                self.error(d)
+            })
         }
-        Ok(())
     }
 
     /// The atoms of earlier groundings as statements: facts as facts, the others as externals.
@@ -781,6 +835,11 @@ impl Control {
         self.syms = std::mem::take(&mut g.symbols);
         self.atom_sym = std::mem::take(&mut g.atom_syms);
         self.atom_sym.resize(program.num_atoms as usize, None);
+        for s in self.atom_sym.iter_mut() {
+            if s.is_some_and(|s| is_internal(&self.syms, s)) {
+                *s = None;
+            }
+        }
         self.flags = vec![0; self.atom_sym.len()];
         self.sym_atom = vec![0; self.syms.len()];
         for (i, s) in self.atom_sym.iter().enumerate() {
@@ -803,8 +862,16 @@ impl Control {
                 self.externals.insert(a, external_value(v));
             }
         }
+        if self.config.provenance {
+            self.gatoms = program.provenance.atoms.clone();
+            self.gatom_of_sym = self
+                .gatoms
+                .iter()
+                .enumerate()
+                .filter_map(|(i, r)| Some((r.sym?, i as GAtom + 1)))
+                .collect();
+        }
         self.pending = program;
-        self.rebuild = true;
         self.last = Some(g);
     }
 
@@ -839,15 +906,23 @@ impl Control {
         a
     }
 
-    /// Merges a later grounding: atoms matched by symbol, new ones numbered after the old.
-    fn merge(&mut self, mut g: Grounding) {
+    /// Merges a later grounding: atoms matched by symbol, new ones numbered after the old,
+    /// origins moved to the Control's statement ids, symbols and grounder atoms. A rule for an
+    /// atom that an earlier solve call completed is gringo's redefinition error: the rules of
+    /// such atoms are dropped (clingo keeps the rest of the step) and the error returned.
+    fn merge(&mut self, mut g: Grounding, stmt_offset: u32) -> Result<(), Diagnostic> {
         let local = std::mem::take(&mut g.program);
         let old_atoms = self.atom_sym.len() as AtomId;
         // Local symbol ids to global ones.
         let mut memo: Vec<u32> = vec![u32::MAX; g.symbols.len()];
         let mut map = vec![0 as AtomId; local.num_atoms as usize + 1];
         for (a, slot) in map.iter_mut().enumerate().skip(1) {
-            let sym = g.atom_syms.get(a - 1).copied().flatten();
+            let sym = g
+                .atom_syms
+                .get(a - 1)
+                .copied()
+                .flatten()
+                .filter(|&s| !is_internal(&g.symbols, s));
             *slot = match sym {
                 Some(s) => {
                     let gs = translate(&g.symbols, s, &mut self.syms, &mut memo);
@@ -868,22 +943,38 @@ impl Control {
                 a
             }
         };
-        for &s in &g.fact_syms {
-            let gs = translate(&g.symbols, s, &mut self.syms, &mut memo);
-            if let Some(a) = self.atom_of_sym(gs) {
-                self.flags[a as usize - 1] |= FACT;
-            }
-        }
+        // Atoms an earlier solve call completed: in the solver and no longer external there,
+        // or released since.
+        let solver_atoms = self.solver.as_ref().map_or(0, |s| s.program().num_atoms);
+        let complete = |a: AtomId, solver: &Option<Solver>, ext: &HashMap<AtomId, _>| {
+            a <= solver_atoms
+                && (solver.as_ref().is_some_and(|s| !s.is_external(a))
+                    || matches!(ext.get(&a), Some(None)))
+        };
+        let was_fact: Vec<bool> = self.flags.iter().map(|f| f & FACT != 0).collect();
+        let old_fact = |a: AtomId| is_old(a) && was_fact[a as usize - 1];
+        let gmap = self.translate_atom_records(&g, &local, &map, &mut memo);
         let mut delta = GroundProgram::new();
         let mut defined_here: HashSet<AtomId> = HashSet::new();
-        for r in local.rules.iter() {
+        let mut redefined: Vec<AtomId> = Vec::new();
+        let mut first_redefinition: Option<usize> = None;
+        let mut kept: Vec<usize> = Vec::new();
+        for (i, r) in local.rules.iter().enumerate() {
             let heads: Vec<AtomId> = r.head.iter().map(|&h| map[h as usize]).collect();
             // A rule whose heads are all old facts adds nothing (the context's facts).
-            if !heads.is_empty()
-                && heads
-                    .iter()
-                    .all(|&h| is_old(h) && self.flags[h as usize - 1] & FACT != 0)
+            if !heads.is_empty() && heads.iter().all(|&h| old_fact(h)) {
+                continue;
+            }
+            if let Some(&h) = heads
+                .iter()
+                .find(|&&h| complete(h, &self.solver, &self.externals))
             {
+                if redefined.is_empty() {
+                    first_redefinition = Some(i);
+                }
+                if !redefined.contains(&h) {
+                    redefined.push(h);
+                }
                 continue;
             }
             let mut rule = r.to_rule();
@@ -896,13 +987,39 @@ impl Control {
             }
             for &h in &rule.head {
                 defined_here.insert(h);
-                self.flags[h as usize - 1] |= DEFINED;
-                if is_old(h) && self.externals.remove(&h).is_some() {
-                    // An external defined by a rule becomes an ordinary atom (the solver
-                    // takes such rules incrementally).
-                }
+                // An external defined by a rule becomes an ordinary atom (the solver takes
+                // such rules incrementally).
+                self.externals.remove(&h);
             }
             delta.rules.push(rule);
+            kept.push(i);
+        }
+        // The rules of a redefined atom are dropped, all of them (clingo's state after the
+        // error).
+        if !redefined.is_empty() {
+            let mut keep_rules = GroundProgram::new();
+            let mut keep_idx = Vec::new();
+            for (r, &i) in delta.rules.iter().zip(&kept) {
+                if r.head.iter().any(|h| redefined.contains(h)) {
+                    continue;
+                }
+                keep_rules.rules.push_ref(r);
+                keep_idx.push(i);
+            }
+            delta.rules = keep_rules.rules;
+            kept = keep_idx;
+            defined_here = delta.rules.iter().flat_map(|r| r.head.to_vec()).collect();
+        }
+        for &h in &defined_here {
+            self.flags[h as usize - 1] |= DEFINED;
+        }
+        for &s in &g.fact_syms {
+            let gs = translate(&g.symbols, s, &mut self.syms, &mut memo);
+            if let Some(a) = self.atom_of_sym(gs) {
+                if !redefined.contains(&a) {
+                    self.flags[a as usize - 1] |= FACT;
+                }
+            }
         }
         for &(a, v) in &local.externals {
             let ga = map[a as usize];
@@ -971,9 +1088,46 @@ impl Control {
                 });
             }
         }
+        if let Some(gmap) = &gmap {
+            let mut prov = ground::program::Provenance::new();
+            for &i in &kept {
+                let origins: Vec<_> = local
+                    .provenance
+                    .origins(i)
+                    .iter()
+                    .filter_map(|o| self.translate_origin(o, &g, gmap, &mut memo, stmt_offset))
+                    .collect();
+                prov.push_rule(origins);
+            }
+            for d in &local.provenance.dead {
+                let why = match d.why {
+                    DeadReason::Literal { positive, atom } => DeadReason::Literal {
+                        positive,
+                        atom: gmap[atom as usize],
+                    },
+                    DeadReason::HeadFact(a) => DeadReason::HeadFact(gmap[a as usize]),
+                    w => w,
+                };
+                prov.dead.push(ground::program::DeadRule {
+                    head: d.head.iter().map(|&h| gmap[h as usize]).collect(),
+                    origins: d
+                        .origins
+                        .iter()
+                        .filter_map(|o| self.translate_origin(o, &g, gmap, &mut memo, stmt_offset))
+                        .collect(),
+                    why,
+                });
+            }
+            prov.set_atoms(self.gatoms.clone());
+            delta.provenance = prov;
+        }
         delta.num_atoms = self.atom_sym.len() as AtomId;
         // Append the delta to what is pending.
         let p = &mut self.pending;
+        if !delta.provenance.is_empty() {
+            p.provenance.resize_rules(p.rules.len());
+            p.provenance.append(std::mem::take(&mut delta.provenance));
+        }
         p.num_atoms = delta.num_atoms;
         p.rules.extend(delta.rules.iter());
         p.minimize.extend(delta.minimize);
@@ -985,6 +1139,141 @@ impl Control {
         p.cr_rules.extend(delta.cr_rules);
         p.prefers.extend(delta.prefers);
         self.last = Some(g);
+        match redefined.first() {
+            None => Ok(()),
+            Some(&a) => {
+                let name = self.symbol(a).map_or_else(String::new, |s| s.to_string());
+                // The statement of the first rule dropped (known with provenance on).
+                let span = first_redefinition
+                    .and_then(|i| {
+                        local
+                            .provenance
+                            .origins(i)
+                            .iter()
+                            .find_map(|o| o.rule.stmt())
+                    })
+                    .and_then(|k| self.stmts.get((k + stmt_offset) as usize))
+                    .map(|st| st.statement.span);
+                let span = span.unwrap_or_else(|| self.no_position());
+                Err(Diagnostic::error(
+                    span,
+                    format!("redefinition of atom <'{name}',{a}>"),
+                ))
+            }
+        }
+    }
+
+    /// A span for errors without a source position (gringo's `<cmd>`-like pseudo files).
+    fn no_position(&mut self) -> Span {
+        let file = self.sources.add("<ground>", "");
+        Span::new(file, 0, 0)
+    }
+
+    /// Moves a later grounding's atom records into the Control's table (by symbol; auxiliary
+    /// atoms are new) and returns the local-to-global grounder atom map (`None` without
+    /// provenance).
+    fn translate_atom_records(
+        &mut self,
+        g: &Grounding,
+        local: &GroundProgram,
+        map: &[AtomId],
+        memo: &mut [u32],
+    ) -> Option<Vec<GAtom>> {
+        if !self.config.provenance || local.provenance.atoms.is_empty() {
+            return None;
+        }
+        let mut gmap = vec![0 as GAtom; local.provenance.atoms.len() + 1];
+        for (i, r) in local.provenance.atoms.iter().enumerate() {
+            let aspif = if r.aspif == 0 {
+                0
+            } else {
+                map[r.aspif as usize]
+            };
+            let sym = r
+                .sym
+                .map(|s| translate(&g.symbols, SymId(s), &mut self.syms, memo).0);
+            let known = sym
+                .filter(|&s| !is_internal(&self.syms, SymId(s)))
+                .and_then(|s| self.gatom_of_sym.get(&s).copied());
+            gmap[i + 1] = match known {
+                Some(ga) => {
+                    let old = &mut self.gatoms[ga as usize - 1];
+                    if r.status != AtomStatus::False && old.status != AtomStatus::Fact {
+                        old.status = r.status;
+                    }
+                    if aspif != 0 {
+                        old.aspif = aspif;
+                    }
+                    ga
+                }
+                None => {
+                    self.gatoms.push(AtomRecord {
+                        sym,
+                        status: r.status,
+                        aspif,
+                    });
+                    let ga = self.gatoms.len() as GAtom;
+                    if let Some(s) = sym {
+                        self.gatom_of_sym.insert(s, ga);
+                    }
+                    ga
+                }
+            };
+        }
+        Some(gmap)
+    }
+
+    /// One origin of a later grounding in the Control's ids: statement ids shifted by the
+    /// grounding's offset, bindings and atoms in the global tables; `None` for the context
+    /// statements (they are no statements of the program).
+    fn translate_origin(
+        &mut self,
+        o: &ground::program::Origin,
+        g: &Grounding,
+        gmap: &[GAtom],
+        memo: &mut [u32],
+        offset: u32,
+    ) -> Option<ground::program::Origin> {
+        let n = self.stmts.len() as u32;
+        let mut bind = |b: &[(u32, u32)], syms: &mut Symbols| -> Vec<(u32, u32)> {
+            b.iter()
+                .map(|&(name, value)| {
+                    let text = g.symbols.names.resolve(crate::base::intern::Sym(name));
+                    let name = syms.names.intern(text).0;
+                    (name, translate(&g.symbols, SymId(value), syms, memo).0)
+                })
+                .collect()
+        };
+        let rule = match &o.rule {
+            RuleOrigin::Statement { stmt, bindings } if stmt + offset < n => {
+                RuleOrigin::Statement {
+                    stmt: stmt + offset,
+                    bindings: bind(bindings, &mut self.syms),
+                }
+            }
+            RuleOrigin::Auxiliary {
+                of_stmt,
+                kind,
+                bindings,
+            } if of_stmt + offset < n => RuleOrigin::Auxiliary {
+                of_stmt: of_stmt + offset,
+                kind: *kind,
+                bindings: bind(bindings, &mut self.syms),
+            },
+            RuleOrigin::Complement => RuleOrigin::Complement,
+            _ => return None,
+        };
+        Some(ground::program::Origin {
+            rule,
+            removed: o
+                .removed
+                .iter()
+                .map(|r| RemovedLit {
+                    positive: r.positive,
+                    atom: gmap[r.atom as usize],
+                })
+                .collect(),
+        })
     }
 
     /// Sets the value of an external atom (clingo's `assign_external`). Atoms that are not
@@ -1064,11 +1353,7 @@ impl Control {
 
     /// Hands pending statements to the solver (building it at the first call).
     fn prepare(&mut self) {
-        // The one-shot grounding's tables are not needed once solving starts.
-        if self.solver.is_none() {
-            self.last = None;
-        }
-        if let (Some(solver), false) = (&mut self.solver, self.rebuild) {
+        if let Some(solver) = &mut self.solver {
             let mut delta = std::mem::take(&mut self.pending);
             delta.num_atoms = self.atom_sym.len() as AtomId;
             delta.externals = std::mem::take(&mut self.new_externals)
@@ -1076,44 +1361,19 @@ impl Control {
                 .filter(|a| self.externals.contains_key(a))
                 .map(|a| (a, ExternalValue::Free))
                 .collect();
-            // Origins of a later grounding index that grounding's statements: not kept.
-            delta.provenance = Default::default();
-            if solver.add_program(&delta).is_ok() {
-                self.release_in_solver();
-                return;
-            }
-            // A later part gave rules to an atom that earlier steps completed (gringo reports
-            // a redefinition): solve the whole program instead.
-            self.pending = delta;
+            solver
+                .add_program(&delta)
+                .expect("grounding dropped the rules of completed atoms (redefinitions)");
+        } else {
+            // The one-shot grounding's tables are not needed once solving starts.
+            self.last = None;
+            let mut program = std::mem::take(&mut self.pending);
+            program.num_atoms = self.atom_sym.len() as AtomId;
+            program.externals = self.free_externals();
+            let config = self.config.solve.clone();
+            self.solver = Some(Solver::from_program(program, config));
+            self.new_externals.clear();
         }
-        // Build from the whole program.
-        let mut program = match self.solver.take() {
-            Some(s) => {
-                let mut full = s.program().clone();
-                let p = std::mem::take(&mut self.pending);
-                full.rules.extend(p.rules.iter());
-                full.minimize.extend(p.minimize);
-                full.projections.extend(p.projections);
-                full.outputs.extend(p.outputs);
-                full.assumptions.extend(p.assumptions);
-                full.heuristics.extend(p.heuristics);
-                full.edges.extend(p.edges);
-                full.cr_rules.extend(p.cr_rules);
-                full.prefers.extend(p.prefers);
-                full
-            }
-            None => std::mem::take(&mut self.pending),
-        };
-        program.num_atoms = self.atom_sym.len() as AtomId;
-        program.externals = self.free_externals();
-        if !program.provenance.is_empty() {
-            // Rules of later groundings have no origins.
-            program.provenance.resize_rules(program.rules.len());
-        }
-        let config = self.config.solve.clone();
-        self.solver = Some(Solver::from_program(program, config));
-        self.rebuild = false;
-        self.new_externals.clear();
         self.release_in_solver();
     }
 
@@ -1232,6 +1492,32 @@ impl Control {
         Solved { models, summary }
     }
 
+    /// With provenance on ([`ControlConfig::provenance`]): statement `id` of the origins in
+    /// [`Control::provenance`] (ids count the statements of every grounding, in order) and
+    /// the part instance it was grounded in. `None` without provenance.
+    pub fn statement(&self, id: u32) -> Option<&GroundedStatement> {
+        self.stmts.get(id as usize)
+    }
+
+    /// The provenance of [`Control::program`]'s rules (empty without provenance): origins
+    /// of every grounding's rules in the Control's statement ids, symbols (bindings) and
+    /// grounder atoms (removed body literals, dead rules); the atom table covers every
+    /// grounding. Rules of groundings made after the last solve call join at the next call.
+    pub fn provenance(&self) -> &Provenance {
+        &self.program().provenance
+    }
+
+    /// The symbol of a symbol id of the provenance tables ([`Control::provenance`]: binding
+    /// values, atom records' symbols).
+    pub fn symbol_of_id(&self, id: u32) -> Symbol {
+        Symbol::from_table(&self.syms, SymId(id))
+    }
+
+    /// The variable name of a binding's name id ([`Control::provenance`]).
+    pub fn name_of_id(&self, id: u32) -> &str {
+        self.syms.names.resolve(crate::base::intern::Sym(id))
+    }
+
     /// The solver, once a solve call built it (for statistics and low-level access).
     pub fn solver(&self) -> Option<&Solver> {
         self.solver.as_ref()
@@ -1257,6 +1543,18 @@ fn external_value(v: ExternalValue) -> Option<TruthValue> {
         ExternalValue::True => Some(TruthValue::True),
         ExternalValue::False => Some(TruthValue::False),
         ExternalValue::Release => None,
+    }
+}
+
+/// Whether `s` names a grounder-made atom (`#projN(..)`): such atoms belong to their
+/// grounding, so a later grounding's `#proj1(1)` is another atom than an earlier one's, and
+/// they are neither looked up nor part of the context.
+fn is_internal(syms: &Symbols, s: SymId) -> bool {
+    match syms.get(s) {
+        crate::ground::symbol::SymData::Fun { name, .. } => {
+            syms.names.resolve(name).starts_with("#proj")
+        }
+        _ => false,
     }
 }
 

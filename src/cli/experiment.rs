@@ -1,0 +1,509 @@
+//! `lucent experiment h1|h2|h3|h4|all`, `lucent experiment trial ID` and `lucent experiment
+//! merge DIR`: the H1-H4 harness of [`crate::experiment`] on the command line, with the result
+//! files, the job list for GNU parallel or a Slurm array, the report files and the progress bar.
+//!
+//! Invariants: files are read and written only here. A run directory holds `run.json` (the
+//! setup, the hypotheses and the knowledge base's absolute path), `results/<id>.json` (one per
+//! trial, written under a temporary name and renamed, so a killed run never leaves half a file),
+//! and the report (`report.md`, `report.json`, the SVG plots). Bad AL_d input is a gringo-style
+//! diagnostic and exit 65, a bad command line exit 1; missing trials in `merge` are named and
+//! exit 65. The progress bar goes to standard error, only on a terminal; one summary line
+//! (trials computed and reused, wall time) always goes to standard error.
+
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde_json::{json, Value};
+
+use crate::experiment::report::Report;
+use crate::experiment::{self, Context, Hypothesis, MemoryStore, Progress, Setup, Store, Trial};
+
+const HELP: &str = "\
+usage: lucent experiment h1|h2|h3|h4|all [OPTIONS]
+       lucent experiment trial ID --out DIR
+       lucent experiment merge DIR [--outf=0|2]
+
+The paper's experiments (DOMAIN.md 7): H1 learning accuracy (Table 1), H2 plan quality
+(Tables 2 and 3), H3 proof-tree checks, H4 explanation precision and recall (Tables 4 and 5).
+Trials run in parallel (rayon); every table is printed beside the paper's. A hypothesis whose
+pieces this build lacks is reported as \"not available: <reason>\".
+  --seed N             the recorded seed (default 0)
+  --runs N             H1 learning runs (default 20)
+  --configurations N   scene configurations per preset for H2-H4 (default 20)
+  --goals N            goals per configuration (default 5)
+  --episodes N         episodes per learning run (default 10)
+  --kb FILE.ald        the H1 knowledge base (default domains/ra/scenes/h1.ald)
+  --code-balance       H1: store capped inconsistent trials with label 0 (the authors' code)
+  --code-samples       H1: take samples from every trial (the authors' code)
+  --out DIR            keep one result file per trial in DIR/results (a rerun reuses them) and
+                       write DIR/report.md, DIR/report.json and the SVG plots
+  --emit-jobs FILE     with --out: write one `lucent experiment trial ID --out DIR` line per trial
+                       to FILE (for `parallel < FILE` or a Slurm array) and run nothing; then
+                       `lucent experiment merge DIR` makes the report
+  --outf=0|2           0: the markdown report (default); 2: JSON, one key per hypothesis
+";
+
+/// The parsed command line.
+struct Args {
+    hypotheses: Vec<Hypothesis>,
+    setup: Setup,
+    kb: String,
+    out: Option<PathBuf>,
+    emit_jobs: Option<PathBuf>,
+    json: bool,
+}
+
+/// What the run directory's `run.json` records.
+fn run_file(setup: &Setup, hypotheses: &[Hypothesis], kb: &str) -> Value {
+    json!({
+        "setup": setup,
+        "hypotheses": hypotheses.iter().map(|h| h.name()).collect::<Vec<_>>(),
+        "kb": kb,
+    })
+}
+
+fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
+    let mut out = Args {
+        hypotheses: Vec::new(),
+        setup: Setup::paper(0),
+        kb: "domains/ra/scenes/h1.ald".into(),
+        out: None,
+        emit_jobs: None,
+        json: false,
+    };
+    let mut positional = Vec::new();
+    let mut i = 0;
+    while i < args.len() {
+        let a = args[i].as_str();
+        let (name, inline) = match a.split_once('=') {
+            Some((n, v)) if n.starts_with('-') => (n, Some(v.to_string())),
+            _ => (a, None),
+        };
+        let value = |i: &mut usize| -> Result<String, String> {
+            if let Some(v) = &inline {
+                return Ok(v.clone());
+            }
+            *i += 1;
+            args.get(*i)
+                .cloned()
+                .ok_or_else(|| format!("'{name}' needs a value"))
+        };
+        let number = |v: String| {
+            v.parse::<u64>()
+                .map_err(|_| format!("'{name}': '{v}' is not a number"))
+        };
+        match name {
+            "--seed" => out.setup.seed = number(value(&mut i)?)?,
+            "--runs" => out.setup.runs = number(value(&mut i)?)? as usize,
+            "--configurations" => out.setup.configurations = number(value(&mut i)?)? as usize,
+            "--goals" => out.setup.goals = number(value(&mut i)?)? as usize,
+            "--episodes" => out.setup.episodes = number(value(&mut i)?)? as usize,
+            "--kb" => out.kb = value(&mut i)?,
+            "--code-balance" => out.setup.code_balance = true,
+            "--code-samples" => out.setup.code_samples = true,
+            "--out" => out.out = Some(PathBuf::from(value(&mut i)?)),
+            "--emit-jobs" => out.emit_jobs = Some(PathBuf::from(value(&mut i)?)),
+            "--outf" => match value(&mut i)?.as_str() {
+                "0" => out.json = false,
+                "2" => out.json = true,
+                v => return Err(format!("'--outf={v}': expected 0 or 2")),
+            },
+            _ if a.starts_with('-') && a.len() > 1 => return Err(format!("unknown option '{a}'")),
+            _ => positional.push(a.to_string()),
+        }
+        i += 1;
+    }
+    Ok((out, positional))
+}
+
+/// Results as files `DIR/results/<id>.json`.
+struct DirStore {
+    dir: PathBuf,
+}
+
+impl DirStore {
+    fn new(run_dir: &Path) -> std::io::Result<DirStore> {
+        let dir = run_dir.join("results");
+        std::fs::create_dir_all(&dir)?;
+        Ok(DirStore { dir })
+    }
+
+    /// Every stored text, by id.
+    fn all(&self) -> std::io::Result<Vec<(String, String)>> {
+        let mut out = Vec::new();
+        for entry in std::fs::read_dir(&self.dir)? {
+            let path = entry?.path();
+            let Some(name) = path.file_name().and_then(|n| n.to_str()) else {
+                continue;
+            };
+            if let Some(id) = name.strip_suffix(".json") {
+                if !id.starts_with('.') {
+                    out.push((id.to_string(), std::fs::read_to_string(&path)?));
+                }
+            }
+        }
+        out.sort();
+        Ok(out)
+    }
+}
+
+impl Store for DirStore {
+    fn load(&self, id: &str) -> Option<String> {
+        std::fs::read_to_string(self.dir.join(format!("{id}.json"))).ok()
+    }
+
+    fn save(&self, id: &str, text: &str) -> Result<(), String> {
+        // A name no other writer uses, then an atomic rename: a killed process leaves at most
+        // a temporary file, and two processes computing the same trial write the same text.
+        let tmp = self.dir.join(format!(
+            ".{id}.{}.{:?}.tmp",
+            std::process::id(),
+            std::thread::current().id()
+        ));
+        let target = self.dir.join(format!("{id}.json"));
+        std::fs::write(&tmp, text)
+            .and_then(|()| std::fs::rename(&tmp, &target))
+            .map_err(|e| format!("{}: {e}", target.display()))
+    }
+}
+
+fn error(err: &mut dyn Write, message: &str, code: i32) -> std::io::Result<i32> {
+    writeln!(err, "*** ERROR: (lucent): {message}")?;
+    Ok(code)
+}
+
+/// `lucent experiment`.
+pub fn run_experiment(
+    args: &[String],
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<i32> {
+    if args.is_empty() || args.iter().any(|a| a == "--help" || a == "-h") {
+        write!(out, "{HELP}")?;
+        return Ok(if args.is_empty() {
+            super::EXIT_USAGE
+        } else {
+            0
+        });
+    }
+    let (mut parsed, positional) = match parse(args) {
+        Ok(p) => p,
+        Err(e) => return error(err, &e, super::EXIT_USAGE),
+    };
+    match positional.first().map(String::as_str) {
+        Some("merge") => {
+            let [_, dir] = positional.as_slice() else {
+                return error(err, "usage: lucent experiment merge DIR", super::EXIT_USAGE);
+            };
+            return merge(Path::new(dir), parsed.json, out, err);
+        }
+        Some("trial") => {
+            let ([_, id], Some(dir)) = (positional.as_slice(), parsed.out.as_deref()) else {
+                return error(
+                    err,
+                    "usage: lucent experiment trial ID --out DIR",
+                    super::EXIT_USAGE,
+                );
+            };
+            return trial(id, dir, err);
+        }
+        _ => {}
+    }
+    for p in &positional {
+        match p.as_str() {
+            "all" => parsed.hypotheses.extend(Hypothesis::ALL),
+            _ => match Hypothesis::parse(p) {
+                Some(h) => parsed.hypotheses.push(h),
+                None => {
+                    return error(
+                        err,
+                        &format!("unknown experiment '{p}' (h1, h2, h3, h4, all, trial, merge)"),
+                        super::EXIT_USAGE,
+                    )
+                }
+            },
+        }
+    }
+    parsed.hypotheses.sort();
+    parsed.hypotheses.dedup();
+    if parsed.hypotheses.is_empty() {
+        return error(
+            err,
+            "which experiment? (h1, h2, h3, h4 or all)",
+            super::EXIT_USAGE,
+        );
+    }
+    let kb_path = std::fs::canonicalize(&parsed.kb)
+        .map(|p| p.display().to_string())
+        .unwrap_or_else(|_| parsed.kb.clone());
+    let Some(kb) = super::learn::load(&kb_path, err)? else {
+        return Ok(super::EXIT_INPUT);
+    };
+    let trials = experiment::trials(&parsed.setup, &parsed.hypotheses);
+    if let Some(dir) = &parsed.out {
+        std::fs::create_dir_all(dir)?;
+        let run = run_file(&parsed.setup, &parsed.hypotheses, &kb_path);
+        std::fs::write(
+            dir.join("run.json"),
+            serde_json::to_string_pretty(&run).unwrap_or_default() + "\n",
+        )?;
+    }
+    if let Some(jobs) = &parsed.emit_jobs {
+        let Some(dir) = &parsed.out else {
+            return error(err, "--emit-jobs needs --out DIR", super::EXIT_USAGE);
+        };
+        return emit_jobs(jobs, dir, &trials, err);
+    }
+    let memory = MemoryStore::default();
+    let dir_store = match &parsed.out {
+        Some(d) => Some(DirStore::new(d)?),
+        None => None,
+    };
+    let store: &dyn Store = match &dir_store {
+        Some(d) => d,
+        None => &memory,
+    };
+    let ctx = Context {
+        setup: parsed.setup.clone(),
+        kb: &kb,
+        store,
+    };
+    let start = Instant::now();
+    let terminal = std::io::stderr().is_terminal();
+    let reused = std::sync::atomic::AtomicUsize::new(0);
+    let progress = |p: Progress| {
+        reused.store(p.reused, std::sync::atomic::Ordering::SeqCst);
+        if terminal {
+            draw_progress(p);
+        }
+    };
+    let records = match experiment::run(&ctx, &trials, &progress) {
+        Ok(r) => r,
+        Err(e) => return error(err, &e.to_string(), super::EXIT_INPUT),
+    };
+    let secs = start.elapsed().as_secs_f64();
+    let reused = reused.into_inner();
+    writeln!(
+        err,
+        "experiment: {} trials, {} computed, {reused} reused, {secs:.1} s",
+        records.len(),
+        records.len() - reused
+    )?;
+    let report = match Report::new(&parsed.setup, &parsed.hypotheses, &records) {
+        Ok(r) => r,
+        Err(e) => return error(err, &e, super::EXIT_INPUT),
+    };
+    finish(&report, parsed.out.as_deref(), parsed.json, Some(secs), out)
+}
+
+/// The progress bar: `[#####     ] 12/40 trials (3 reused)`.
+fn draw_progress(p: Progress) {
+    let width = 30;
+    let filled = width * p.done / p.total.max(1);
+    eprint!(
+        "\r[{}{}] {}/{} trials ({} reused)",
+        "#".repeat(filled),
+        " ".repeat(width - filled),
+        p.done,
+        p.total,
+        p.reused
+    );
+    if p.done == p.total {
+        eprintln!();
+    }
+}
+
+/// Writes the report files (with `dir`) and prints the report.
+fn finish(
+    report: &Report,
+    dir: Option<&Path>,
+    json: bool,
+    secs: Option<f64>,
+    out: &mut dyn Write,
+) -> std::io::Result<i32> {
+    let mut value = report.to_json();
+    // `lucent experiment h1` of issue 15 printed H1's keys at the top: kept for that command.
+    if let [Hypothesis::H1] = report_hypotheses(report).as_slice() {
+        if let Some(Value::Object(h1)) = value.get("h1").cloned() {
+            for (k, v) in h1 {
+                value[k.as_str()] = v;
+            }
+        }
+        value["seed"] = report.setup.seed.into();
+    }
+    if let Some(s) = secs {
+        value["time"] = s.into();
+    }
+    let markdown = report.to_markdown();
+    if let Some(dir) = dir {
+        std::fs::write(dir.join("report.md"), &markdown)?;
+        std::fs::write(
+            dir.join("report.json"),
+            serde_json::to_string_pretty(&value).unwrap_or_default() + "\n",
+        )?;
+        for (name, svg) in report.plots() {
+            std::fs::write(dir.join(name), svg)?;
+        }
+    }
+    if json {
+        writeln!(
+            out,
+            "{}",
+            serde_json::to_string_pretty(&value).unwrap_or_default()
+        )?;
+    } else {
+        write!(out, "{markdown}")?;
+        if let Some(s) = secs {
+            writeln!(out, "Wall time: {s:.1} s")?;
+        }
+    }
+    Ok(0)
+}
+
+fn report_hypotheses(report: &Report) -> Vec<Hypothesis> {
+    use crate::experiment::report::Section;
+    report
+        .sections
+        .iter()
+        .map(|s| match s {
+            Section::H1(_) => Hypothesis::H1,
+            Section::H2(_) => Hypothesis::H2,
+            Section::H3(_) => Hypothesis::H3,
+            Section::H4(_) => Hypothesis::H4,
+            Section::NotAvailable(h, _) => *h,
+        })
+        .collect()
+}
+
+/// Quotes a word for a POSIX shell.
+fn shell_quote(s: &str) -> String {
+    if !s.is_empty()
+        && s.chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_./=:,+@".contains(c))
+    {
+        s.to_string()
+    } else {
+        format!("'{}'", s.replace('\'', "'\\''"))
+    }
+}
+
+/// `--emit-jobs FILE`: one command line per trial, H1 first.
+fn emit_jobs(
+    jobs: &Path,
+    dir: &Path,
+    trials: &[Trial],
+    err: &mut dyn Write,
+) -> std::io::Result<i32> {
+    let exe = std::env::current_exe()?;
+    let dir = std::fs::canonicalize(dir)?;
+    let (exe, dir) = (
+        shell_quote(&exe.display().to_string()),
+        shell_quote(&dir.display().to_string()),
+    );
+    let mut ordered: Vec<&Trial> = trials.iter().collect();
+    ordered.sort_by_key(|t| (t.hypothesis, t.id()));
+    let mut text = String::new();
+    for t in ordered {
+        text.push_str(&format!("{exe} experiment trial {} --out {dir}\n", t.id()));
+    }
+    std::fs::write(jobs, text)?;
+    writeln!(
+        err,
+        "experiment: {} jobs written to {}; run them (e.g. `parallel < {}`), then \
+         `lucent experiment merge {}`",
+        trials.len(),
+        jobs.display(),
+        jobs.display(),
+        dir
+    )?;
+    Ok(0)
+}
+
+/// Reads `DIR/run.json`: setup, hypotheses, knowledge-base path.
+fn read_run(dir: &Path) -> Result<(Setup, Vec<Hypothesis>, String), String> {
+    let path = dir.join("run.json");
+    let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let v: Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    let setup: Setup = serde_json::from_value(v["setup"].clone())
+        .map_err(|e| format!("{}: setup: {e}", path.display()))?;
+    let hypotheses = v["hypotheses"]
+        .as_array()
+        .map(|a| {
+            a.iter()
+                .filter_map(|h| h.as_str().and_then(Hypothesis::parse))
+                .collect()
+        })
+        .unwrap_or_default();
+    let kb = v["kb"].as_str().unwrap_or_default().to_string();
+    Ok((setup, hypotheses, kb))
+}
+
+/// `lucent experiment trial ID --out DIR`: one job of the list.
+fn trial(id: &str, dir: &Path, err: &mut dyn Write) -> std::io::Result<i32> {
+    let Some(trial) = Trial::parse_id(id) else {
+        return error(err, &format!("'{id}' is not a trial id"), super::EXIT_USAGE);
+    };
+    let (setup, _, kb_path) = match read_run(dir) {
+        Ok(r) => r,
+        Err(e) => return error(err, &e, super::EXIT_INPUT),
+    };
+    let Some(kb) = super::learn::load(&kb_path, err)? else {
+        return Ok(super::EXIT_INPUT);
+    };
+    let store = DirStore::new(dir)?;
+    let ctx = Context {
+        setup,
+        kb: &kb,
+        store: &store,
+    };
+    match ctx.record(&trial) {
+        Ok(_) => Ok(0),
+        Err(e) => error(err, &format!("{id}: {e}"), super::EXIT_INPUT),
+    }
+}
+
+/// `lucent experiment merge DIR`: the report from the result files.
+fn merge(dir: &Path, json: bool, out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
+    let (setup, hypotheses, _) = match read_run(dir) {
+        Ok(r) => r,
+        Err(e) => return error(err, &e, super::EXIT_INPUT),
+    };
+    let store = DirStore::new(dir)?;
+    let mut records = Vec::new();
+    for (id, text) in store.all()? {
+        match serde_json::from_str::<experiment::Record>(&text) {
+            Ok(r) if r.id == id && r.setup == setup => records.push(r),
+            Ok(_) => {}
+            Err(e) => return error(err, &format!("results/{id}.json: {e}"), super::EXIT_INPUT),
+        }
+    }
+    let wanted = experiment::trials(&setup, &hypotheses);
+    let missing: Vec<String> = wanted
+        .iter()
+        .map(Trial::id)
+        .filter(|id| !records.iter().any(|r| &r.id == id))
+        .collect();
+    if !missing.is_empty() {
+        let shown: Vec<&str> = missing.iter().take(10).map(String::as_str).collect();
+        return error(
+            err,
+            &format!(
+                "{} of {} trials have no result in {}: {}{}",
+                missing.len(),
+                wanted.len(),
+                dir.join("results").display(),
+                shown.join(", "),
+                if missing.len() > 10 { ", ..." } else { "" }
+            ),
+            super::EXIT_INPUT,
+        );
+    }
+    records.retain(|r| wanted.iter().any(|t| t.id() == r.id));
+    let report = match Report::new(&setup, &hypotheses, &records) {
+        Ok(r) => r,
+        Err(e) => return error(err, &e, super::EXIT_INPUT),
+    };
+    writeln!(err, "experiment: {} trials merged", records.len())?;
+    finish(&report, Some(dir), json, None, out)
+}
