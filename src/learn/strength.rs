@@ -142,7 +142,9 @@ impl Store {
                 continue;
             }
             if let Some(meta) = line.strip_prefix(LEARNED_PREFIX) {
-                let (fields, surprise) = meta.split_once(": ").unwrap_or((meta, ""));
+                // The fields hold no colon; the surprise after the first one may.
+                let (fields, surprise) = meta.split_once(':').unwrap_or((meta, ""));
+                let surprise = surprise.trim();
                 let words: Vec<&str> = fields.split_whitespace().collect();
                 let number = |key: &str| -> Option<&str> {
                     let at = words.iter().position(|w| *w == key)?;

@@ -319,11 +319,11 @@ impl Axiom {
     /// axiom forbidding the action. Distinct variables may take equal constants, as in the
     /// translated rules.
     pub fn fires(&self, action: &Literal, state: &[Literal]) -> bool {
-        let mut binding = BTreeMap::new();
-        if !match_literal(&self.action, action, &mut binding) {
+        let (mut binding, mut added) = (BTreeMap::new(), Vec::new());
+        if !match_literal(&self.action, action, &mut binding, &mut added) {
             return false;
         }
-        match_body(&self.body, state, &mut binding)
+        match_body(&self.body, state, &mut binding, &mut added)
     }
 
     /// Parses the AL_d text [`Axiom::to_ald`] writes (without the final period), e.g.
@@ -350,22 +350,26 @@ impl Axiom {
     }
 }
 
-/// Binds the variables of `pattern` to the constants of `ground`, consistently with `binding`.
-fn match_literal(pattern: &Literal, ground: &Literal, binding: &mut BTreeMap<Var, String>) -> bool {
+/// Binds the variables of `pattern` to the constants of `ground`, consistently with `binding`;
+/// the variables it binds are pushed on `added`. On failure `binding` is left as it was.
+fn match_literal(
+    pattern: &Literal,
+    ground: &Literal,
+    binding: &mut BTreeMap<Var, String>,
+    added: &mut Vec<Var>,
+) -> bool {
     if pattern.positive != ground.positive
         || pattern.name != ground.name
         || pattern.args.len() != ground.args.len()
     {
         return false;
     }
-    let mut added = Vec::new();
+    let mark = added.len();
     for (p, g) in pattern.args.iter().zip(&ground.args) {
-        let Term::Const(c) = g else {
-            return false;
-        };
-        let ok = match p {
-            Term::Const(k) => k == c,
-            Term::Var(v) => match binding.get(v) {
+        let ok = match (p, g) {
+            (_, Term::Var(_)) => false,
+            (Term::Const(k), Term::Const(c)) => k == c,
+            (Term::Var(v), Term::Const(c)) => match binding.get(v) {
                 Some(b) => b == c,
                 None => {
                     binding.insert(*v, c.clone());
@@ -375,26 +379,38 @@ fn match_literal(pattern: &Literal, ground: &Literal, binding: &mut BTreeMap<Var
             },
         };
         if !ok {
-            for v in added {
-                binding.remove(&v);
-            }
+            unbind(binding, added, mark);
             return false;
         }
     }
     true
 }
 
+/// Undoes the bindings pushed on `added` after `mark`.
+fn unbind(binding: &mut BTreeMap<Var, String>, added: &mut Vec<Var>, mark: usize) {
+    for v in added.drain(mark..) {
+        binding.remove(&v);
+    }
+}
+
 /// Backtracking search for a binding that puts every literal of `body` in `state`.
-fn match_body(body: &[Literal], state: &[Literal], binding: &mut BTreeMap<Var, String>) -> bool {
+fn match_body(
+    body: &[Literal],
+    state: &[Literal],
+    binding: &mut BTreeMap<Var, String>,
+    added: &mut Vec<Var>,
+) -> bool {
     let Some((first, rest)) = body.split_first() else {
         return true;
     };
     for g in state {
-        let before = binding.clone();
-        if match_literal(first, g, binding) && match_body(rest, state, binding) {
-            return true;
+        let mark = added.len();
+        if match_literal(first, g, binding, added) {
+            if match_body(rest, state, binding, added) {
+                return true;
+            }
+            unbind(binding, added, mark);
         }
-        *binding = before;
     }
     false
 }
