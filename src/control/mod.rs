@@ -465,8 +465,16 @@ impl Control {
         let wants_incmode = program.statements.len() != before;
         let mut load =
             |path: &std::path::Path| std::fs::read_to_string(path).map_err(|e| e.to_string());
-        let program =
-            ground::include::resolve_includes(&program, &mut self.sources, &mut d, &mut load);
+        // Resolving copies the statements: only when there is an include.
+        let program = if program
+            .statements
+            .iter()
+            .any(|s| matches!(s.kind, StatementKind::Include(_)))
+        {
+            ground::include::resolve_includes(&program, &mut self.sources, &mut d, &mut load)
+        } else {
+            program
+        };
         if d.has_errors() {
             return Err(self.error(d));
         }

@@ -325,6 +325,81 @@ impl Vars {
     }
 }
 
+/// True when unfolding changes nothing in `t`: no pool, no argument-tuple pool
+/// (`f(1,2;3,4)`), no parentheses (unfolding drops them).
+fn pool_free_term(t: &ast::Term) -> bool {
+    match &t.kind {
+        TermKind::Pool(_) | TermKind::Paren(_) => false,
+        TermKind::Function { args, .. } => {
+            args.len() <= 1 && args.iter().flatten().all(pool_free_term)
+        }
+        TermKind::Unary { arg, .. } => pool_free_term(arg),
+        TermKind::Binary { lhs, rhs, .. } => pool_free_term(lhs) && pool_free_term(rhs),
+        TermKind::Interval { lo, hi } => pool_free_term(lo) && pool_free_term(hi),
+        TermKind::ScriptCall { .. } => false,
+        _ => true,
+    }
+}
+
+/// [`pool_free_term`] for a literal.
+fn pool_free_literal(l: &ast::Literal) -> bool {
+    match &l.atom {
+        ast::Atom::Symbolic(a) => a.args.len() <= 1 && a.args.iter().flatten().all(pool_free_term),
+        ast::Atom::Comparison { lhs, rhs, .. } => pool_free_term(lhs) && pool_free_term(rhs),
+        ast::Atom::Boolean(_) => true,
+        ast::Atom::Sort { arg, .. } => pool_free_term(arg),
+    }
+}
+
+/// [`pool_free_term`] for a conditional literal.
+fn pool_free_cond(c: &ast::ConditionalLiteral) -> bool {
+    pool_free_literal(&c.literal) && c.condition.iter().all(pool_free_literal)
+}
+
+/// [`pool_free_term`] for a guard.
+fn pool_free_guard(g: &Option<ast::Guard>) -> bool {
+    g.as_ref().is_none_or(|g| pool_free_term(&g.term))
+}
+
+/// True when [`Rewriter::rule`]'s unfolding would give the rule back unchanged.
+fn pool_free_rule(r: &ast::Rule) -> bool {
+    let head = match &r.head {
+        ast::Head::None => true,
+        ast::Head::Disjunction(es) => es.iter().all(pool_free_cond),
+        ast::Head::Choice(c) => {
+            c.elements.iter().all(pool_free_cond)
+                && pool_free_guard(&c.lower)
+                && pool_free_guard(&c.upper)
+        }
+        ast::Head::Aggregate(h) => {
+            h.elements.iter().all(|e| {
+                e.terms.iter().all(pool_free_term)
+                    && pool_free_literal(&e.literal)
+                    && e.condition.iter().all(pool_free_literal)
+            }) && pool_free_guard(&h.lower)
+                && pool_free_guard(&h.upper)
+        }
+    };
+    let kind = match &r.kind {
+        ast::RuleKind::Normal => true,
+        ast::RuleKind::ConsistencyRestoring { label } => {
+            label.as_ref().is_none_or(|l| pool_free_term(l))
+        }
+    };
+    head && kind
+        && r.body.iter().all(|b| match b {
+            ast::BodyLiteral::Literal(l) => pool_free_literal(l),
+            ast::BodyLiteral::Conditional(c) => pool_free_cond(c),
+            ast::BodyLiteral::Aggregate { aggregate: a, .. } => {
+                a.elements.iter().all(|e| {
+                    e.terms.iter().all(pool_free_term) && e.condition.iter().all(pool_free_literal)
+                }) && a.set_syntax.iter().all(pool_free_cond)
+                    && pool_free_guard(&a.lower)
+                    && pool_free_guard(&a.upper)
+            }
+        })
+}
+
 /// Unfolds the pools of a term: every alternative, pool-free.
 pub fn unpool_term(t: &ast::Term) -> Vec<ast::Term> {
     let mk = |kind| ast::Term { span: t.span, kind };
@@ -1611,6 +1686,11 @@ impl<'a> Rewriter<'a> {
     }
 
     fn rule(&mut self, index: u32, span: Span, r: &ast::Rule) {
+        // Most rules have no pools: no copy then.
+        if pool_free_rule(r) {
+            self.rule_instance(index, span, &r.head, &r.body, &r.kind);
+            return;
+        }
         // Unfold pools of the head and body into separate rules.
         let heads: Vec<ast::Head> = match &r.head {
             // A plain element's alternatives are separate rules; an element written with a

@@ -34,7 +34,9 @@ pub use crate::base::rng::SplitMix64;
 pub use act::{execute, ActConfig, Action, ActionReport, Failure};
 pub use generate::{generate, generate_many, GenerateConfig, Preset};
 pub use object::{Colour, ObjectKind, Size, Surface};
-pub use perceive::{perceive, ErrorModel, FactStyle, Literal, Observation, Percept};
+pub use perceive::{
+    perceive, perceive_look, perceive_world, ErrorModel, FactStyle, Literal, Observation, Percept,
+};
 pub use render::{render_camera, render_top, Image};
 pub use scene::{Camera, ObjectId, Scene, SceneObject, ROBOT, TABLE};
 pub use truth::{measure, GroundTruth, Rel, Relation, TruthConfig};
