@@ -92,13 +92,16 @@ impl SplitMix64 {
 mod tests {
     use super::*;
 
-    /// The first outputs of seed 0, from the reference algorithm (Vigna's splitmix64.c): the
-    /// state after one increment is 0x9E3779B97F4A7C15, mixed to 0xE220A8397B1DCDAF.
+    /// The first outputs of seed 0 under the published definition (Vigna's splitmix64.c),
+    /// computed apart from this code with Python's integers masked to 64 bits:
+    /// `s = (s + 0x9E3779B97F4A7C15) & M; z = s; z = ((z ^ z >> 30) * 0xBF58476D1CE4E5B9) & M;
+    /// z = ((z ^ z >> 27) * 0x94D049BB133111EB) & M; z ^ z >> 31` with `M = 2**64 - 1`.
     #[test]
     fn reference_stream() {
         let mut r = SplitMix64::new(0);
         assert_eq!(r.next_u64(), 0xE220_A839_7B1D_CDAF);
         assert_eq!(r.next_u64(), 0x6E78_9E6A_A1B9_65F4);
+        assert_eq!(r.next_u64(), 0x06C4_5D18_8009_454F);
     }
 
     #[test]
