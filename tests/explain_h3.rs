@@ -7,9 +7,13 @@
 //! Also here: the generator's invariants over many seeds (no solving), and that the checks can
 //! fail (a tree with a repeated literal, a leaf of the wrong kind, a body that does not hold).
 
-use lucent::explain::h3::{check_tree, generate, Goal, ScenePreset};
+#[path = "support/ra_scenes.rs"]
+mod ra_scenes;
+
+use lucent::explain::h3::{check_history, check_tree, generate, Goal, ScenePreset};
 use lucent::explain::term::Term;
 use lucent::explain::tree::{AxiomKind, Kind, ModelOracle, Node, ProofTree, RuleInstance};
+use ra_scenes::{history, load_text, plans};
 
 #[test]
 fn generated_scenes_keep_their_invariants() {
@@ -80,6 +84,53 @@ fn generated_scenes_keep_their_invariants() {
             }
         }
     }
+}
+
+/// Plans one generated scene under KB_full, explains its first minimal plan and checks every
+/// tree. Returns the number of trees.
+fn trial(preset: ScenePreset, seed: u64) -> usize {
+    let scene = generate(preset, seed);
+    let text = scene.to_ald("../kb_full.ald", true);
+    let (desc, mut sources) = load_text("generated.ald", &text);
+    let found =
+        plans(&desc, &sources, None, 10).unwrap_or_else(|e| panic!("{}: {e}", scene.name()));
+    let chosen = &found.plans[0];
+    let h = history(&desc, &mut sources, &chosen.actions, None);
+    let report = check_history(&h.scenario(), &h.objects(), seed);
+    assert!(
+        report.failures.is_empty(),
+        "{} ({}): {:#?}",
+        scene.name(),
+        chosen.to_text(),
+        report.failures
+    );
+    // The trees reach the leaves a history has: observations of the initial state, and the
+    // actions when the plan is not empty.
+    assert!(
+        report.counts.leaves[1] > 0,
+        "{}: no observation leaf",
+        scene.name()
+    );
+    if !chosen.actions.is_empty() {
+        assert!(
+            report.counts.leaves[2] > 0,
+            "{}: no action leaf",
+            scene.name()
+        );
+    }
+    report.trees
+}
+
+#[test]
+fn h3_subset_real() {
+    let trees: usize = (0..2).map(|s| trial(ScenePreset::Real, s)).sum();
+    assert!(trees >= 20, "{trees} trees");
+}
+
+#[test]
+fn h3_subset_simulated() {
+    let trees: usize = (0..2).map(|s| trial(ScenePreset::Simulated, s)).sum();
+    assert!(trees >= 20, "{trees} trees");
 }
 
 fn t(s: &str) -> Term {

@@ -62,3 +62,104 @@ fn plan_rejects_bad_files() {
     assert!(err.contains("no/such/file.ald"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+const DOMAIN: &str = "domains/ra/kb_full.ald";
+const SCENE: &str = "tests/data/plan/scene.lp";
+
+#[test]
+fn plan_takes_a_scene_of_facts_and_a_goal_as_literals_or_english() {
+    let (code, out, err) = run(&[
+        "plan",
+        DOMAIN,
+        "--scene",
+        SCENE,
+        "--goal",
+        "on(mug, white_block)",
+        "--outf=2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["length"], 2);
+    assert_eq!(
+        v["plans"][0],
+        serde_json::json!(["pickup(rob1,mug)", "putdown(rob1,mug,white_block)"])
+    );
+    assert!(v["time"]["total"].as_f64().is_some());
+    // The same goal in controlled English, with the plan checked.
+    let (code, out, err) = run(&[
+        "plan",
+        DOMAIN,
+        "--scene",
+        SCENE,
+        "--goal",
+        "put the mug on the white block",
+        "--check",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("Plan: pickup(rob1,mug)@0; putdown(rob1,mug,white_block)@1"),
+        "{out}"
+    );
+    assert!(out.contains("Check: optimal"), "{out}");
+    // Holding the red block needs the white block moved first: length 3.
+    let (code, out, err) = run(&[
+        "plan",
+        DOMAIN,
+        "--scene",
+        SCENE,
+        "--goal",
+        "pick up the red block",
+        "--all",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("Length: 3"), "{out}");
+}
+
+#[test]
+fn plan_rejects_bad_scenes_and_goals_with_clear_messages() {
+    // An unknown object in the goal.
+    let (code, _, err) = run(&["plan", DOMAIN, "--scene", SCENE, "--goal", "on(ghost, mug)"]);
+    assert_eq!(code, 65, "{err}");
+    assert!(err.contains("`ghost` is not in sort"), "{err}");
+    let (code, _, err) = run(&[
+        "plan",
+        DOMAIN,
+        "--scene",
+        SCENE,
+        "--goal",
+        "put the ghost on the mug",
+    ]);
+    assert_eq!(code, 65, "{err}");
+    assert!(err.contains("ghost"), "{err}");
+    // A malformed scene file: a positioned syntax error.
+    let (code, _, err) = run(&["plan", DOMAIN, "--scene", "tests/data/plan/malformed.lp"]);
+    assert_eq!(code, 65, "{err}");
+    assert!(err.contains("malformed.lp:3:1"), "{err}");
+    // An impossible goal (nothing stays on the mug's irregular top): no plan within H.
+    let (code, _, err) = run(&[
+        "plan",
+        DOMAIN,
+        "--scene",
+        SCENE,
+        "--goal",
+        "on(red_block, mug)",
+        "--max-horizon=4",
+    ]);
+    assert_eq!(code, 20, "{err}");
+    assert!(err.contains("no_plan_within(4)"), "{err}");
+    // An initially unstable scene.
+    let (code, _, err) = run(&[
+        "plan",
+        DOMAIN,
+        "--scene",
+        "tests/data/plan/unstable.lp",
+        "--goal",
+        "in_hand(rob1, red_block)",
+    ]);
+    assert_eq!(code, 20, "{err}");
+    assert!(err.contains("initially_unstable(red_block)"), "{err}");
+    // A missing scene file.
+    let (code, _, err) = run(&["plan", DOMAIN, "--scene", "no/such/scene.lp"]);
+    assert_eq!(code, 65, "{err}");
+    assert!(err.contains("no/such/scene.lp"), "{err}");
+}

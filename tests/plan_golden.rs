@@ -5,18 +5,25 @@
 //!   green, yellow or white large cube, then the red cube picked up);
 //! - execution example: length 6, the paper's plan among the minimal plans;
 //! - exception goal: every minimal plan applies D1's exception exactly once, at the goal step;
-//! - a too-small horizon budget is `no_plan_within(H)`.
+//! - a too-small horizon budget is `no_plan_within(H)`;
+//! - the incremental search (one step part per horizon) gives the same plans as translating
+//!   and grounding every horizon afresh; the first-plan mode returns one of the minimal plans;
+//! - the fixed horizon (the authors' mode) returns plans of several lengths, the minimal ones
+//!   among them.
 
 use std::path::Path;
 
 use lucent::action::{self, ast::Description};
 use lucent::base::SourceMap;
-use lucent::plan::{plan, PlanConfig, PlanError, Plans};
+use lucent::plan::{plan, PlanConfig, PlanError, Plans, Search};
 
 fn load(scene: &str) -> (Description, SourceMap) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("domains/ra/scenes")
-        .join(scene);
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let path = if scene.contains('/') {
+        root.join(scene)
+    } else {
+        root.join("domains/ra/scenes").join(scene)
+    };
     let mut sources = SourceMap::new();
     let text = std::fs::read_to_string(&path).unwrap();
     let file = sources.add(path.to_string_lossy().into_owned(), text);
@@ -27,12 +34,78 @@ fn load(scene: &str) -> (Description, SourceMap) {
 }
 
 fn run(scene: &str, max_horizon: usize) -> Result<Plans, PlanError> {
+    run_with(scene, max_horizon, Search::Incremental, true)
+}
+
+fn run_with(
+    scene: &str,
+    max_horizon: usize,
+    search: Search,
+    all: bool,
+) -> Result<Plans, PlanError> {
     let (desc, sources) = load(scene);
     let config = PlanConfig {
         max_horizon,
+        search,
+        all,
         ..PlanConfig::default()
     };
     plan(&desc, &sources, &config)
+}
+
+fn texts(p: &Plans) -> Vec<String> {
+    p.plans.iter().map(|p| p.to_text()).collect()
+}
+
+#[test]
+fn incremental_and_retranslated_searches_find_the_same_plans() {
+    for (scene, h) in [
+        ("tabletop_task.ald", 4),
+        ("exception_goal.ald", 3),
+        ("execution_example.ald", 6),
+    ] {
+        let inc = run_with(scene, h, Search::Incremental, true).unwrap();
+        let re = run_with(scene, h, Search::Retranslate, true).unwrap();
+        assert_eq!(texts(&inc), texts(&re), "{scene}");
+        assert_eq!(
+            (inc.length, inc.cr_applied),
+            (re.length, re.cr_applied),
+            "{scene}"
+        );
+        let first = run_with(scene, h, Search::Incremental, false).unwrap();
+        assert_eq!(first.plans.len(), 1, "{scene}");
+        assert_eq!(first.length, inc.length, "{scene}");
+        assert_eq!(first.cr_applied, inc.cr_applied, "{scene}");
+        assert!(texts(&inc).contains(&first.plans[0].to_text()), "{scene}");
+    }
+}
+
+#[test]
+fn fixed_horizon_returns_longer_plans_too() {
+    // Holding a takes an odd number of steps: 3, or 5 with a detour.
+    const BLOCKS: &str = "tests/data/plan/three_blocks.ald";
+    let fixed = run_with(BLOCKS, 5, Search::Fixed(5), true).unwrap();
+    let minimal = run(BLOCKS, 5).unwrap();
+    assert_eq!(fixed.length, 3);
+    assert!(
+        fixed.plans.len() > minimal.plans.len(),
+        "{:#?}",
+        texts(&fixed)
+    );
+    assert!(fixed.plans.iter().any(|p| p.actions.len() == 5));
+    assert!(fixed.plans.iter().all(|p| p.actions.len() % 2 == 1));
+    let shortest: Vec<String> = fixed
+        .plans
+        .iter()
+        .filter(|p| p.actions.len() == 3)
+        .map(|p| p.to_text())
+        .collect();
+    assert_eq!(shortest, texts(&minimal));
+    assert!(fixed.answer_sets >= fixed.plans.len());
+    assert_eq!(
+        run_with(BLOCKS, 4, Search::Fixed(2), true).unwrap_err(),
+        PlanError::NoPlanWithin(2)
+    );
 }
 
 #[test]

@@ -15,6 +15,7 @@ pub mod ast;
 pub mod check;
 pub mod fuzzing;
 pub mod parser;
+pub mod parts;
 pub mod translate;
 
 pub use check::{check, Checked, Options};

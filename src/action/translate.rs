@@ -21,6 +21,7 @@ use crate::syntax::ast::{
 
 use super::ast::*;
 use super::check::{check, Checked, Options, Role};
+use super::parts::{self, Time};
 
 /// Where a generated statement came from.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -115,11 +116,22 @@ pub fn translate(desc: &Description, options: &Options) -> Translation {
         c: &checked,
         out: Vec::new(),
         origins: Vec::new(),
+        times: Vec::new(),
+        time: Time::Fixed,
         step: step_variable(desc),
     };
     t.run();
     let diagnostics = checked.diagnostics.clone();
-    let Translator { out, origins, .. } = t;
+    let Translator {
+        mut out,
+        mut origins,
+        times,
+        step,
+        ..
+    } = t;
+    if checked.word("horizon_mode") == Some("incremental") {
+        (out, origins) = parts::split(out, origins, &times, &step);
+    }
     Translation {
         program: Program {
             dialect: Dialect::Clingo,
@@ -414,6 +426,10 @@ struct Translator<'d> {
     c: &'d Checked,
     out: Vec<ast::Statement>,
     origins: Vec<AxiomOrigin>,
+    /// When each statement of `out` applies (for the incremental mode's parts).
+    times: Vec<Time>,
+    /// The time of the statements being emitted.
+    time: Time,
     /// The step variable.
     step: String,
 }
@@ -448,6 +464,7 @@ impl<'d> Translator<'d> {
             span: from.span,
             kind,
         });
+        self.times.push(self.time);
     }
 
     fn rule(&mut self, from: &From, head: Head, body: Vec<BodyLiteral>) {
@@ -572,6 +589,7 @@ impl<'d> Translator<'d> {
 
     /// Sort members, the step range, fluent and action domains.
     fn signature(&mut self) {
+        self.time = Time::Fixed;
         let desc = self.desc;
         let c = self.c;
         let horizon = c.int("horizon").unwrap_or(0);
@@ -590,6 +608,7 @@ impl<'d> Translator<'d> {
             })),
         );
         let sp = Span::default();
+        self.time = Time::StepRange;
         self.rule(
             &none,
             head_of(
@@ -609,6 +628,7 @@ impl<'d> Translator<'d> {
             ),
             Vec::new(),
         );
+        self.time = Time::Fixed;
         for name in &c.sort_order {
             let info = &c.sorts[name];
             let s = &desc.statements[info.statement];
@@ -731,6 +751,7 @@ impl<'d> Translator<'d> {
             span,
         };
         let now = self.step_var(span);
+        self.time = Time::Fixed;
         match &s.kind {
             // h(l, I+1) :- occurs(a, I), h(p1, I), ..., sorts, step(I), I < horizon.
             StatementKind::Causal {
@@ -753,6 +774,7 @@ impl<'d> Translator<'d> {
                 self.sorts(i, span, &mut b);
                 b.push(self.step_atom(span));
                 b.push(self.before_horizon(span));
+                self.time = Time::Before;
                 self.rule(&from(OriginKind::CausalLaw), head, b);
             }
             // h(l, I) :- h(p1, I), ..., sorts, step(I).   (statics: no step)
@@ -763,9 +785,11 @@ impl<'d> Translator<'d> {
                 self.body(body, &now, &mut b);
                 self.sorts(i, span, &mut b);
                 if is_static {
+                    self.time = Time::Fixed;
                     self.rule(&from(OriginKind::Static), h, b);
                 } else {
                     b.push(self.step_atom(span));
+                    self.time = Time::Now;
                     self.rule(&from(OriginKind::StateConstraint), h, b);
                 }
             }
@@ -787,6 +811,7 @@ impl<'d> Translator<'d> {
                 self.body(body, &now, &mut b);
                 self.sorts(i, span, &mut b);
                 b.push(self.step_atom(span));
+                self.time = Time::Before;
                 self.rule(&from(OriginKind::ExecutabilityCondition), h, b);
             }
             // h(l, I) :- h(p1, I), ..., not h(l̄, I), sorts, step(I).
@@ -797,6 +822,7 @@ impl<'d> Translator<'d> {
                 b.push(self.not_complement(head, &now));
                 self.sorts(i, span, &mut b);
                 b.push(self.step_atom(span));
+                self.time = Time::Now;
                 self.rule(&from(OriginKind::Default), h, b);
             }
             // label(Vars, I): h(l̄, I) :+ h(p1, I), ..., sorts, step(I).
@@ -818,6 +844,7 @@ impl<'d> Translator<'d> {
                     .collect();
                 args.push(now.clone());
                 let label = function(span, &name, args);
+                self.time = Time::Now;
                 self.emit(
                     &from(OriginKind::CrException),
                     K::Rule(ast::Rule {
@@ -848,6 +875,7 @@ impl<'d> Translator<'d> {
                     self.sorts(i, span, &mut b);
                     b.push(self.step_atom(span));
                     b.push(self.before_horizon(span));
+                    self.time = Time::Before;
                     self.rule(&from(OriginKind::Never), Head::None, b);
                 }
                 // :- h(l, I), h(p1, I), ..., sorts, step(I).
@@ -860,6 +888,7 @@ impl<'d> Translator<'d> {
                     self.body(body, &now, &mut b);
                     self.sorts(i, span, &mut b);
                     b.push(self.step_atom(span));
+                    self.time = Time::Now;
                     self.rule(&from(OriginKind::Never), Head::None, b);
                 }
             },
@@ -873,6 +902,7 @@ impl<'d> Translator<'d> {
                 self.body(body, &now, &mut b);
                 self.sorts(i, span, &mut b);
                 b.push(self.step_atom(span));
+                self.time = Time::Now;
                 self.rule(&from(OriginKind::Planning), h, b);
             }
             // obs(f, true|false, t).
@@ -936,6 +966,7 @@ impl<'d> Translator<'d> {
             span: sp,
         };
         // holds(F, I+1) :- inertial_fluent(F), holds(F, I), not -holds(F, I+1), I < horizon.
+        self.time = Time::Before;
         for negated in [false, true] {
             let h = head_of(
                 sp,
@@ -950,6 +981,7 @@ impl<'d> Translator<'d> {
             self.rule(&from(OriginKind::Inertia), h, b);
         }
         // -holds(f(X..), I) :- sorts, step(I), not holds(f(X..), I).   (defined fluents with CWA)
+        self.time = Time::Now;
         let c = self.c;
         for name in &c.decl_order {
             let d = &c.decls[name];
@@ -974,6 +1006,7 @@ impl<'d> Translator<'d> {
             );
         }
         // -occurs(A, I) :- action(A), step(I), not occurs(A, I).
+        self.time = Time::Before;
         let h = head_of(sp, atom(sp, true, "occurs", vec![a.clone(), i.clone()]));
         let b = vec![
             pos(sp, false, "action", vec![a.clone()]),
@@ -989,6 +1022,7 @@ impl<'d> Translator<'d> {
             vec![pos(sp, false, "hpd", vec![a.clone(), i.clone()])],
         );
         // :- obs(F, true, I), -holds(F, I).   :- obs(F, false, I), holds(F, I).
+        self.time = Time::Now;
         for (value, negated) in [("true", true), ("false", false)] {
             let b = vec![
                 pos(
@@ -1004,8 +1038,10 @@ impl<'d> Translator<'d> {
         // holds(F, 0) :- obs(F, true, 0).   -holds(F, 0) :- obs(F, false, 0).
         // With observations_as_facts, at every step I instead of 0.
         let when = if c.flag("observations_as_facts") {
+            self.time = Time::Now;
             i.clone()
         } else {
+            self.time = Time::Fixed;
             int(sp, 0)
         };
         for (value, negated) in [("true", false), ("false", true)] {
@@ -1022,6 +1058,7 @@ impl<'d> Translator<'d> {
             self.rule(&from(OriginKind::History), h, b);
         }
         // known0(F) :- obs(F, V, 0).
+        self.time = Time::Fixed;
         let h = head_of(sp, atom(sp, false, "known0", vec![f.clone()]));
         let b = vec![pos(sp, false, "obs", vec![f.clone(), v, int(sp, 0)])];
         self.rule(&from(OriginKind::History), h, b);
@@ -1050,15 +1087,20 @@ impl<'d> Translator<'d> {
             statement: None,
             span: sp,
         };
-        if self.c.word("horizon_mode") == Some("iterative") {
-            // :- not goal(horizon).
+        let mode = self.c.word("horizon_mode").unwrap_or("fixed");
+        // In the transition mode one action occurs at every step before the horizon, goal or not.
+        let transition = mode == "transition";
+        if mode == "iterative" || mode == "incremental" {
+            // :- not goal(horizon).   (incremental: `:- query(t), not goal(t).` in check(t))
+            self.time = Time::Query;
             self.rule(
                 &from,
                 Head::None,
                 vec![neg(sp, false, "goal", vec![constant(sp, "horizon")])],
             );
-        } else {
+        } else if !transition {
             // success :- goal(I).   :- not success.
+            self.time = Time::Fixed;
             self.rule(
                 &from,
                 head_of(sp, atom(sp, false, "success", Vec::new())),
@@ -1081,12 +1123,15 @@ impl<'d> Translator<'d> {
             condition: Vec::new(),
             has_colon: false,
         };
-        let b = vec![
+        let mut b = vec![
             pos(sp, false, "action", vec![a.clone()]),
             self.step_atom(sp),
             self.before_horizon(sp),
-            neg(sp, false, "goal", vec![i.clone()]),
         ];
+        if !transition {
+            b.push(neg(sp, false, "goal", vec![i.clone()]));
+        }
+        self.time = Time::Before;
         self.rule(&from, Head::Disjunction(vec![alt(false), alt(true)]), b);
         // :- occurs(A1, I), occurs(A2, I), A1 != A2.
         let a1 = var(sp, "A1");
@@ -1104,12 +1149,11 @@ impl<'d> Translator<'d> {
             vec![pos(sp, false, "occurs", vec![a, i.clone()])],
         );
         // :- not goal(I), not something_happened(I), step(I), I < horizon.
-        let b = vec![
-            self.step_atom(sp),
-            self.before_horizon(sp),
-            neg(sp, false, "goal", vec![i.clone()]),
-            neg(sp, false, "something_happened", vec![i]),
-        ];
+        let mut b = vec![self.step_atom(sp), self.before_horizon(sp)];
+        if !transition {
+            b.push(neg(sp, false, "goal", vec![i.clone()]));
+        }
+        b.push(neg(sp, false, "something_happened", vec![i]));
         self.rule(&from, Head::None, b);
     }
 }

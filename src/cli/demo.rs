@@ -1,210 +1,314 @@
-//! `lucent demo`: the main job, end to end on built-in data.
+//! `lucent demo`: the robot's main job end to end. A tabletop scene is generated in the physics
+//! world; the robot looks at it (with the paper's 15% perception error), is given a goal, plans
+//! a minimal plan with the AL_d knowledge base KB_full (built in), says the plan in English,
+//! executes it one action at a time in rapier (with 15% manipulation failures), notices
+//! discrepancies, replans, and stops when it sees the goal. Pictures of the camera view before
+//! and after are written as PNG files to a directory the demo names.
 //!
-//! It takes the tabletop domain (`domains/tabletop/tabletop.lp`, compiled into the binary so the
-//! demo runs from any directory), grounds it with Lucent's grounder, solves it with Lucent's
-//! solver under the default CR-Prolog semantics, checks every answer set independently, and
-//! prints the minimal plans as numbered action sequences. Later issues add execution in the
-//! simulated world, learning and explanations here.
-//!
-//! Invariant: the demo is a client of `control::Control` (the library's front door) and of the
-//! independent model check, so it exercises exactly what users of the library get; plans are
-//! read from `occurs(Action, Step)` atoms as structured terms.
+//! Invariants: the demo is a client of the same library paths as `lucent run` (`plan::act`,
+//! `plan::tabletop`, `explain::verbalize`); it is deterministic for its seed; it exits 0 when
+//! the goal was reached, 20 when not, 65 for bad input, 1 for a bad command line. Built without
+//! the `sim` feature it plans the built-in tabletop task of DOMAIN.md 4.5 instead and says so.
 
 use std::io::Write;
-use std::time::Instant;
 
-use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol};
-use crate::solve::{self, Config};
-use crate::syntax::ast::Dialect;
+use crate::action;
+use crate::base::SourceMap;
+use crate::plan::{plan, PlanConfig};
 
-/// The built-in program.
-const TABLETOP: &str = include_str!("../../domains/tabletop/tabletop.lp");
+/// KB_full, built in so that the demo runs from any directory.
+const KB_FULL: &str = include_str!("../../domains/ra/kb_full.ald");
+
+/// The tabletop task of DOMAIN.md 4.5 (it includes `../kb_full.ald`).
+const H1_SCENE: &str = include_str!("../../domains/ra/scenes/h1.ald");
+const TABLETOP_TASK: &str = include_str!("../../domains/ra/scenes/tabletop_task.ald");
 
 /// `lucent demo --help`.
 const HELP: &str = "\
-usage: lucent demo [--program FILE]
+usage: lucent demo [--seed N] [--preset real|simulated] [--goal LITERAL]... [--out DIR]
+                   [--perception-noise P] [--actuation-noise P]
 
-Grounds and solves the built-in tabletop task of the robot-assistant domain: the pitcher stands
-on the red cube and the robot must hold the red cube. Prints the minimal plans (cardinality-
-minimal CR-rule applications, as SPARC computes them), each verified by an independent
-stable-model check. With --program, runs the same on another planning program whose answer
-sets contain occurs(Action, Step) atoms.
+The robot at work in the simulated tabletop world: a generated scene (default: preset real,
+seed 3), a goal (drawn at random unless given), perception with 15% errors, a minimal plan
+from the built-in knowledge base KB_full, the plan in English, execution in the physics world
+with 15% manipulation failures, replanning after every discrepancy, until the robot sees the
+goal. Writes the camera view before and after to DIR (default lucent-demo/) as PNG files.
+For more control (scene files, budgets, histories) use `lucent run`.
 ";
 
-/// One plan: `occurs(Action, Step)` atoms of an answer set, as (step, action) sorted by step.
-fn plan_of(atoms: &[Symbol]) -> Vec<(i64, Symbol)> {
-    let mut steps: Vec<(i64, Symbol)> = atoms
-        .iter()
-        .filter(|a| a.is("occurs", 2) && !a.is_negative())
-        .filter_map(|a| Some((i64::from(a.args()[1].as_number()?), a.args()[0].clone())))
-        .collect();
-    steps.sort();
-    steps
+/// The plans of the built-in tabletop task, for builds without the simulator.
+#[cfg_attr(feature = "sim", allow(dead_code))]
+fn plan_only(out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
+    let mut sources = SourceMap::new();
+    let file = sources.add(
+        "domains/ra/scenes/tabletop_task.ald (built in)".to_string(),
+        TABLETOP_TASK.to_string(),
+    );
+    let mut read = |p: &std::path::Path| {
+        if p.ends_with("kb_full.ald") {
+            Ok(KB_FULL.to_string())
+        } else if p.ends_with("h1.ald") {
+            Ok(H1_SCENE.to_string())
+        } else {
+            Err(format!("{} is not built in", p.display()))
+        }
+    };
+    let parsed = action::load(&mut sources, file, &mut read);
+    writeln!(
+        out,
+        "This build has no simulator (built without the `sim` feature): planning the tabletop \
+         task of DOMAIN.md 4.5 only."
+    )?;
+    match plan(&parsed.description, &sources, &PlanConfig::default()) {
+        Ok(found) => {
+            for p in &found.plans {
+                writeln!(out, "Plan: {}", p.to_text())?;
+            }
+            Ok(0)
+        }
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            Ok(super::EXIT_UNSAT)
+        }
+    }
 }
 
 /// Runs the demo; returns the exit code.
 pub fn run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
-    let mut name = "domains/tabletop/tabletop.lp (built in)".to_string();
-    let mut text = TABLETOP.to_string();
-    let mut i = 0;
-    while i < args.len() {
-        match args[i].as_str() {
-            "--help" | "-h" => {
-                write!(out, "{HELP}")?;
-                return Ok(0);
-            }
-            "--program" if i + 1 < args.len() => {
-                name = args[i + 1].clone();
-                match std::fs::read_to_string(&name) {
-                    Ok(t) => text = t,
-                    Err(e) => {
-                        writeln!(err, "lucent demo: cannot read {name}: {e}")?;
-                        return Ok(super::EXIT_INPUT);
-                    }
-                }
-                i += 1;
-            }
-            other => {
-                writeln!(
-                    err,
-                    "lucent demo: unknown argument `{other}` (try `lucent demo --help`)"
-                )?;
-                return Ok(super::EXIT_USAGE);
-            }
-        }
-        i += 1;
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        write!(out, "{HELP}")?;
+        return Ok(0);
     }
-
-    let start = Instant::now();
-    let config = ControlConfig {
-        solve: Config {
-            models: 0,
-            check_models: true,
-            ..Config::default()
-        },
-        dialect: Some(Dialect::Clingo),
-        ..ControlConfig::default()
-    };
-    let mut control = Control::new(config);
-    let grounded = control
-        .add(&name, &text)
-        .and_then(|()| control.ground(&[Part::base()]));
-    if let Err(e) = grounded {
-        write!(err, "{}", e.message)?;
-        return Ok(super::EXIT_INPUT);
+    #[cfg(feature = "sim")]
+    {
+        simulated::run(args, out, err)
     }
-    write!(
-        err,
-        "{}",
-        control.take_diagnostics().render(control.sources())
-    )?;
-    let ground_time = start.elapsed();
-    let (num_atoms, num_rules, num_cr) = {
-        let p = control.program();
-        (p.num_atoms, p.rules.len(), p.cr_rules.len())
-    };
-    let mut plans: Vec<Vec<(i64, Symbol)>> = Vec::new();
-    let mut models: Vec<(usize, Vec<u32>)> = Vec::new();
-    let result = control.solve(&SolveOptions::default(), |m| {
-        models.push((m.number(), m.raw().atoms.clone()));
-        let plan = plan_of(&m.atoms());
-        if !plans.contains(&plan) {
-            plans.push(plan);
-        }
-        true
-    });
-    let total = start.elapsed();
-    for (number, atoms) in &models {
-        if let Err(why) = solve::check::check(control.program(), atoms) {
+    #[cfg(not(feature = "sim"))]
+    {
+        if let Some(a) = args.first() {
             writeln!(
                 err,
-                "lucent demo: answer set {number} failed the stable-model check: {why}"
+                "*** ERROR: (lucent): `{a}`: this build of the demo takes no options"
             )?;
-            return Ok(super::EXIT_UNAVAILABLE);
+            return Ok(super::EXIT_USAGE);
         }
+        plan_only(out, err)
     }
-    plans.sort();
-
-    writeln!(out, "Lucent demo: the robot-assistant tabletop task")?;
-    writeln!(out, "  program : {name}")?;
-    writeln!(
-        out,
-        "  task    : the pitcher stands on the red cube; the robot must hold the red cube"
-    )?;
-    writeln!(
-        out,
-        "  ground  : {} atoms, {} rules, {} CR rule instances ({:.3}s)",
-        num_atoms,
-        num_rules,
-        num_cr,
-        ground_time.as_secs_f64()
-    )?;
-    match result.outcome {
-        solve::Outcome::Unsatisfiable => writeln!(out, "\nNo plan within the horizon.")?,
-        solve::Outcome::Unknown => writeln!(out, "\nThe search stopped before an answer.")?,
-        _ => {
-            let len = plans.first().map_or(0, Vec::len);
-            writeln!(
-                out,
-                "\n{} minimal plan(s) of {} step(s), each answer set checked independently:",
-                plans.len(),
-                len
-            )?;
-            for (k, plan) in plans.iter().enumerate() {
-                let steps: Vec<String> = plan.iter().map(|(i, a)| format!("{i}: {a}")).collect();
-                writeln!(out, "  plan {}: {}", k + 1, steps.join("; "))?;
-            }
-        }
-    }
-    writeln!(
-        out,
-        "\nsolved in {:.3}s ({} conflicts, {} choices); answer sets: {}{}",
-        total.as_secs_f64(),
-        result.stats.conflicts,
-        result.stats.choices,
-        result.models,
-        if result.exhausted { "" } else { "+" }
-    )?;
-    Ok(demo_exit_code(result.outcome, plans.len()))
 }
 
-/// The demo is a job, not a solver call: it exits 0 when it printed at least one plan, so a shell
-/// or `cargo run` treats the main job's success as success. Without a plan it answers with
-/// clingo's codes: 20 when the horizon has no plan, 1 (interrupted) when the search stopped
-/// before an answer.
-fn demo_exit_code(outcome: solve::Outcome, plans: usize) -> i32 {
-    match outcome {
-        solve::Outcome::Unknown if plans == 0 => super::EXIT_INTERRUPTED,
-        _ if plans == 0 => super::EXIT_UNSAT,
-        _ => 0,
+#[cfg(feature = "sim")]
+mod simulated {
+    use std::io::Write;
+    use std::path::Path;
+    use std::time::Instant;
+
+    use crate::cli::run::{describe, goal_of, load_domain, RunArgs};
+    use crate::control::Symbol;
+    use crate::explain::lexicon::Lexicon;
+    use crate::explain::term::Term;
+    use crate::explain::verbalize::{Tense, Verbalizer};
+    use crate::plan::act::{self, Event, RunConfig};
+    use crate::plan::tabletop::{act_config, SimWorld};
+    use crate::sim::{self, GenerateConfig, Preset};
+
+    /// The demo's scene seed: a real-preset scene where the first plan meets a discrepancy.
+    const SEED: u64 = 3;
+
+    fn picture(scene: &sim::Scene, path: &Path) -> Result<(), String> {
+        let png = sim::render_camera(scene, 640, 480)
+            .to_png()
+            .map_err(|e| e.to_string())?;
+        std::fs::write(path, png).map_err(|e| format!("cannot write {}: {e}", path.display()))
+    }
+
+    pub fn run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
+        let mut run = RunArgs {
+            seed: SEED,
+            perception: 0.15,
+            actuation: 0.15,
+            threshold: 0.5,
+            ..RunArgs::default()
+        };
+        let mut dir = "lucent-demo".to_string();
+        let mut i = 0;
+        while i < args.len() {
+            let a = args[i].as_str();
+            let (name, inline) = match a.split_once('=') {
+                Some((n, v)) => (n, Some(v.to_string())),
+                None => (a, None),
+            };
+            let value = inline.or_else(|| {
+                i += 1;
+                args.get(i).cloned()
+            });
+            let Some(value) = value else {
+                writeln!(err, "*** ERROR: (lucent): {name} needs a value")?;
+                return Ok(super::super::EXIT_USAGE);
+            };
+            let bad = |what: &str| format!("{name} needs {what}, got `{value}`");
+            let probability = |v: &str| v.parse::<f64>().ok().filter(|p| (0.0..=1.0).contains(p));
+            let parsed: Result<(), String> = match name {
+                "--seed" => value
+                    .parse()
+                    .map(|s| run.seed = s)
+                    .map_err(|_| bad("a number")),
+                "--preset" => {
+                    run.preset = Some(value.clone());
+                    Ok(())
+                }
+                "--goal" => {
+                    run.goals.push(value.clone());
+                    Ok(())
+                }
+                "--out" => {
+                    dir = value.clone();
+                    Ok(())
+                }
+                "--perception-noise" => probability(&value)
+                    .map(|p| run.perception = p)
+                    .ok_or_else(|| bad("a probability")),
+                "--actuation-noise" => probability(&value)
+                    .map(|p| run.actuation = p)
+                    .ok_or_else(|| bad("a probability")),
+                _ => Err(format!("unknown argument `{a}` (try `lucent demo --help`)")),
+            };
+            if let Err(m) = parsed {
+                writeln!(err, "*** ERROR: (lucent): {m}")?;
+                return Ok(super::super::EXIT_USAGE);
+            }
+            i += 1;
+        }
+        let start = Instant::now();
+        let input = |err: &mut dyn Write, m: String| -> std::io::Result<i32> {
+            writeln!(err, "*** ERROR: (lucent): {m}")?;
+            Ok(super::super::EXIT_INPUT)
+        };
+        let domain = load_domain(None).expect("the built-in KB_full is valid");
+        let preset = match Preset::parse(run.preset.as_deref().unwrap_or("real")) {
+            Ok(p) => p,
+            Err(e) => return input(err, e.to_string()),
+        };
+        let scene = match sim::generate(&GenerateConfig::new(preset, run.seed)) {
+            Ok(s) => s,
+            Err(e) => return input(err, e.to_string()),
+        };
+        let mut world = SimWorld::new(scene, act_config(run.perception, run.actuation, 0.5));
+        let goal = match goal_of(&run, &mut world) {
+            Ok(g) => g,
+            Err(m) => return input(err, m),
+        };
+        if let Err(e) = std::fs::create_dir_all(&dir) {
+            return input(err, format!("cannot create {dir}: {e}"));
+        }
+        let before = Path::new(&dir).join("before.png");
+        let after = Path::new(&dir).join("after.png");
+        if let Err(m) = picture(&world.scene, &before) {
+            return input(err, m);
+        }
+        let lexicon = Lexicon::ra();
+        let v = Verbalizer::new(&lexicon);
+        let say = |text: &str, tense: Tense| {
+            Term::parse(text).map_or(text.to_string(), |t| v.fluent(&t, tense))
+        };
+
+        writeln!(out, "Lucent demo: the robot assistant at the table")?;
+        writeln!(
+            out,
+            "Scene   : {} objects ({} preset, seed {}): {}",
+            world.scene.objects.len(),
+            preset.name(),
+            run.seed,
+            world
+                .scene
+                .objects
+                .iter()
+                .map(|o| o.name.as_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        )?;
+        writeln!(
+            out,
+            "Picture : {} (the camera view before)",
+            before.display()
+        )?;
+        let goal_text: Vec<String> = goal.iter().map(Symbol::to_string).collect();
+        let goal_words: Vec<String> = goal_text.iter().map(|g| say(g, Tense::Future)).collect();
+        writeln!(
+            out,
+            "Goal    : {} ({})",
+            goal_text.join(", "),
+            goal_words.join("; ")
+        )?;
+        writeln!(
+            out,
+            "Noise   : {:.0}% perception errors, {:.0}% manipulation failures\n",
+            100.0 * run.perception,
+            100.0 * run.actuation
+        )?;
+        let mut lines: Vec<String> = Vec::new();
+        let history = act::run(
+            &domain,
+            &mut world,
+            &goal,
+            &format!("generated {} seed {}", preset.name(), run.seed),
+            &RunConfig::default(),
+            &mut |e| match &e {
+                Event::Perceived { .. } => (),
+                Event::Planned(p) => {
+                    let steps: Vec<(u32, Term)> = p
+                        .actions
+                        .iter()
+                        .enumerate()
+                        .filter_map(|(k, a)| Some((k as u32, Term::parse(a).ok()?)))
+                        .collect();
+                    lines.push(describe(&e));
+                    lines.push(format!("          In English: {}", v.plan(&steps, false)));
+                }
+                _ => lines.push(describe(&e)),
+            },
+        );
+        for l in &lines {
+            writeln!(out, "{l}")?;
+        }
+        if let Err(m) = picture(&world.scene, &after) {
+            return input(err, m);
+        }
+        let done: Vec<(u32, Term)> = history
+            .steps
+            .iter()
+            .filter(|s| s.failure.is_none())
+            .filter_map(|s| Some((s.step, Term::parse(s.happened.as_deref()?).ok()?)))
+            .collect();
+        writeln!(out)?;
+        writeln!(out, "What I did: {}", v.plan(&done, true))?;
+        write!(out, "{}", super::super::run::summary(&history))?;
+        writeln!(out, "Picture : {} (the camera view after)", after.display())?;
+        writeln!(
+            out,
+            "Time    : {:.1}s. Try `lucent run --help` for scene files, budgets and saved histories.",
+            start.elapsed().as_secs_f64()
+        )?;
+        Ok(if history.succeeded() {
+            0
+        } else {
+            super::super::EXIT_UNSAT
+        })
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-
     #[test]
-    fn plans_are_read_from_occurs_atoms() {
-        let atoms: Vec<Symbol> = [
-            "occurs(pickup(rob1,a),1)",
-            "occurs(putdown(rob1,b,table),0)",
-            "-occurs(pickup(rob1,b),0)",
-            "goal(3)",
-        ]
-        .iter()
-        .map(|s| Symbol::parse(s).unwrap())
-        .collect();
-        let plan: Vec<(i64, String)> = plan_of(&atoms)
-            .into_iter()
-            .map(|(i, a)| (i, a.to_string()))
-            .collect();
+    fn the_built_in_tabletop_task_has_its_four_plans() {
+        let mut out = Vec::new();
+        let mut err = Vec::new();
         assert_eq!(
-            plan,
-            vec![
-                (0, "putdown(rob1,b,table)".to_string()),
-                (1, "pickup(rob1,a)".to_string())
-            ]
+            super::plan_only(&mut out, &mut err).unwrap(),
+            0,
+            "{}",
+            String::from_utf8_lossy(&err)
         );
+        let text = String::from_utf8(out).unwrap();
+        assert_eq!(text.matches("Plan: ").count(), 4, "{text}");
     }
 }

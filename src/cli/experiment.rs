@@ -3,8 +3,9 @@
 //! files, the job list for GNU parallel or a Slurm array, the report files and the progress bar.
 //!
 //! Invariants: files are read and written only here. A run directory holds `run.json` (the
-//! setup, the hypotheses and the knowledge base's absolute path), `results/<id>.json` (one per
-//! trial, written under a temporary name and renamed, so a killed run never leaves half a file),
+//! setup, the hypotheses, and the absolute paths of the H1 knowledge base and the H2-H4
+//! domain), `results/<id>.json` (one per trial, written under a temporary name and renamed, so
+//! a killed run never leaves half a file),
 //! and the report (`report.md`, `report.json`, the SVG plots). Bad AL_d input is a gringo-style
 //! diagnostic and exit 65, a bad command line exit 1; missing trials in `merge` are named and
 //! exit 65. The progress bar goes to standard error, only on a terminal; one summary line
@@ -17,7 +18,9 @@ use std::time::Instant;
 use serde_json::{json, Value};
 
 use crate::experiment::report::Report;
-use crate::experiment::{self, Context, Hypothesis, MemoryStore, Progress, Setup, Store, Trial};
+use crate::experiment::{
+    self, Context, Domain, Hypothesis, MemoryStore, Progress, Setup, Store, Trial,
+};
 
 const HELP: &str = "\
 usage: lucent experiment h1|h2|h3|h4|all [OPTIONS]
@@ -34,6 +37,8 @@ pieces this build lacks is reported as \"not available: <reason>\".
   --goals N            goals per configuration (default 5)
   --episodes N         episodes per learning run (default 10)
   --kb FILE.ald        the H1 knowledge base (default domains/ra/scenes/h1.ald)
+  --domain FILE.ald    the H2-H4 domain that generated scenes include (default
+                       domains/ra/kb_full.ald)
   --code-balance       H1: store capped inconsistent trials with label 0 (the authors' code)
   --code-samples       H1: take samples from every trial (the authors' code)
   --out DIR            keep one result file per trial in DIR/results (a rerun reuses them) and
@@ -49,18 +54,41 @@ struct Args {
     hypotheses: Vec<Hypothesis>,
     setup: Setup,
     kb: String,
+    domain: String,
     out: Option<PathBuf>,
     emit_jobs: Option<PathBuf>,
     json: bool,
 }
 
 /// What the run directory's `run.json` records.
-fn run_file(setup: &Setup, hypotheses: &[Hypothesis], kb: &str) -> Value {
+fn run_file(setup: &Setup, hypotheses: &[Hypothesis], kb: &str, domain: &str) -> Value {
     json!({
         "setup": setup,
         "hypotheses": hypotheses.iter().map(|h| h.name()).collect::<Vec<_>>(),
         "kb": kb,
+        "domain": domain,
     })
+}
+
+/// The absolute form of `path` when it exists (job lines run from any directory).
+fn absolute(path: &str) -> String {
+    std::fs::canonicalize(path)
+        .map(|p| p.display().to_string())
+        .unwrap_or_else(|_| path.to_string())
+}
+
+/// Reads the H2-H4 domain.
+fn read_domain(path: &str, err: &mut dyn Write) -> std::io::Result<Option<Domain>> {
+    match std::fs::read_to_string(path) {
+        Ok(text) => Ok(Some(Domain {
+            path: path.to_string(),
+            text,
+        })),
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {path}: {e}")?;
+            Ok(None)
+        }
+    }
 }
 
 fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
@@ -68,6 +96,7 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
         hypotheses: Vec::new(),
         setup: Setup::paper(0),
         kb: "domains/ra/scenes/h1.ald".into(),
+        domain: "domains/ra/kb_full.ald".into(),
         out: None,
         emit_jobs: None,
         json: false,
@@ -100,6 +129,7 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
             "--goals" => out.setup.goals = number(value(&mut i)?)? as usize,
             "--episodes" => out.setup.episodes = number(value(&mut i)?)? as usize,
             "--kb" => out.kb = value(&mut i)?,
+            "--domain" => out.domain = value(&mut i)?,
             "--code-balance" => out.setup.code_balance = true,
             "--code-samples" => out.setup.code_samples = true,
             "--out" => out.out = Some(PathBuf::from(value(&mut i)?)),
@@ -234,16 +264,18 @@ pub fn run_experiment(
             super::EXIT_USAGE,
         );
     }
-    let kb_path = std::fs::canonicalize(&parsed.kb)
-        .map(|p| p.display().to_string())
-        .unwrap_or_else(|_| parsed.kb.clone());
+    let kb_path = absolute(&parsed.kb);
     let Some(kb) = super::learn::load(&kb_path, err)? else {
+        return Ok(super::EXIT_INPUT);
+    };
+    let domain_path = absolute(&parsed.domain);
+    let Some(domain) = read_domain(&domain_path, err)? else {
         return Ok(super::EXIT_INPUT);
     };
     let trials = experiment::trials(&parsed.setup, &parsed.hypotheses);
     if let Some(dir) = &parsed.out {
         std::fs::create_dir_all(dir)?;
-        let run = run_file(&parsed.setup, &parsed.hypotheses, &kb_path);
+        let run = run_file(&parsed.setup, &parsed.hypotheses, &kb_path, &domain_path);
         std::fs::write(
             dir.join("run.json"),
             serde_json::to_string_pretty(&run).unwrap_or_default() + "\n",
@@ -267,6 +299,7 @@ pub fn run_experiment(
     let ctx = Context {
         setup: parsed.setup.clone(),
         kb: &kb,
+        domain: &domain,
         store,
     };
     let start = Instant::now();
@@ -420,8 +453,8 @@ fn emit_jobs(
     Ok(0)
 }
 
-/// Reads `DIR/run.json`: setup, hypotheses, knowledge-base path.
-fn read_run(dir: &Path) -> Result<(Setup, Vec<Hypothesis>, String), String> {
+/// Reads `DIR/run.json`: setup, hypotheses, knowledge-base and domain paths.
+fn read_run(dir: &Path) -> Result<(Setup, Vec<Hypothesis>, String, String), String> {
     let path = dir.join("run.json");
     let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
     let v: Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
@@ -436,7 +469,8 @@ fn read_run(dir: &Path) -> Result<(Setup, Vec<Hypothesis>, String), String> {
         })
         .unwrap_or_default();
     let kb = v["kb"].as_str().unwrap_or_default().to_string();
-    Ok((setup, hypotheses, kb))
+    let domain = v["domain"].as_str().unwrap_or_default().to_string();
+    Ok((setup, hypotheses, kb, domain))
 }
 
 /// `lucent experiment trial ID --out DIR`: one job of the list.
@@ -444,17 +478,21 @@ fn trial(id: &str, dir: &Path, err: &mut dyn Write) -> std::io::Result<i32> {
     let Some(trial) = Trial::parse_id(id) else {
         return error(err, &format!("'{id}' is not a trial id"), super::EXIT_USAGE);
     };
-    let (setup, _, kb_path) = match read_run(dir) {
+    let (setup, _, kb_path, domain_path) = match read_run(dir) {
         Ok(r) => r,
         Err(e) => return error(err, &e, super::EXIT_INPUT),
     };
     let Some(kb) = super::learn::load(&kb_path, err)? else {
         return Ok(super::EXIT_INPUT);
     };
+    let Some(domain) = read_domain(&domain_path, err)? else {
+        return Ok(super::EXIT_INPUT);
+    };
     let store = DirStore::new(dir)?;
     let ctx = Context {
         setup,
         kb: &kb,
+        domain: &domain,
         store: &store,
     };
     match ctx.record(&trial) {
@@ -465,7 +503,7 @@ fn trial(id: &str, dir: &Path, err: &mut dyn Write) -> std::io::Result<i32> {
 
 /// `lucent experiment merge DIR`: the report from the result files.
 fn merge(dir: &Path, json: bool, out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
-    let (setup, hypotheses, _) = match read_run(dir) {
+    let (setup, hypotheses, _, _) = match read_run(dir) {
         Ok(r) => r,
         Err(e) => return error(err, &e, super::EXIT_INPUT),
     };

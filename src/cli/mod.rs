@@ -13,11 +13,14 @@ pub mod sim;
 pub mod action;
 pub mod demo;
 pub mod experiment;
+pub mod explain;
 pub mod learn;
 pub mod input;
 pub mod options;
 pub mod plan;
 pub mod report;
+#[cfg(feature = "sim")]
+pub mod run;
 
 use std::io::{Read, Write};
 use std::time::{Duration, Instant};
@@ -120,15 +123,24 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
             )?;
             return Ok(EXIT_UNAVAILABLE);
         }
-        Some("learn") => return learn::run_learn(&args[1..], io.out, io.err),
-        Some("experiment") => return experiment::run_experiment(&args[1..], io.out, io.err),
-        Some(verb @ "explain") => {
+        #[cfg(feature = "sim")]
+        Some("run") => return run::run_run(&args[1..], io.out, io.err),
+        #[cfg(not(feature = "sim"))]
+        Some("run") => {
             writeln!(
                 io.err,
-                "*** ERROR: (lucent): `lucent {verb}` is not part of this build yet; \
-                 `lucent demo` runs the planning task end to end"
+                "*** ERROR: (lucent): `lucent run` needs the simulator (built without the `sim` feature)"
             )?;
             return Ok(EXIT_UNAVAILABLE);
+        }
+        Some("learn") => return learn::run_learn(&args[1..], io.out, io.err),
+        Some("experiment") => return experiment::run_experiment(&args[1..], io.out, io.err),
+        Some("explain") => return explain::run_explain(&args[1..], io.out, io.err),
+        Some("ask") => {
+            use std::io::IsTerminal;
+            let echo = !std::io::stdin().is_terminal();
+            let mut input = std::io::BufReader::new(&mut *io.stdin);
+            return explain::run_ask(&args[1..], echo, &mut input, io.out, io.err);
         }
         _ => {}
     }

@@ -1,109 +1,236 @@
-//! `lucent plan FILE.ald [--all] [--max-horizon H] [--profile P] [-c name=value] [--outf=2]`:
-//! the planner of [`crate::plan`] on an AL_d planning problem (description, initial state and
-//! goal), printing the minimal plan (or all distinct minimal plans with `--all`) as text or,
-//! with `--outf=2`, as JSON `{"plans": [["pickup(rob1,a)", ...]], "length": N, "cr_applied": N}`.
+//! `lucent plan FILE.ald [--scene S] [--goal G] [--all] [--max-horizon H] [--fixed N]
+//! [--search S] [--check] [--profile P] [-c name=value] [--outf=2]`: the planner of
+//! [`crate::plan`] on an AL_d planning problem. FILE is a whole problem (description, initial
+//! state and goal) or, with `--scene`, a domain to which the scene's objects and initial state
+//! are added: a simulator scene (`.json`, feature `sim`) or facts in the domain's vocabulary
+//! (`domains/ra/README.md`, "Scenes as facts"). `--goal` gives the goal as AL_d literals
+//! (`on(a, b)`) or in controlled English ("put the pitcher on the red block"). Output: the
+//! minimal plan (all distinct minimal plans with `--all`) as text or, with `--outf=2`, JSON
+//! `{"plans": [["pickup(rob1,a)", ...]], "length": N, "cr_applied": N, "time": {..}, ..}`.
 //!
-//! Invariants: files are read here only; bad input is reported with positions and exit code
-//! 65; no plan within the horizon budget and an inconsistent scene are a message and exit 20
-//! (clingo's code for unsatisfiable); a plan found is exit 0.
+//! Invariants: files are read here only; bad input (a malformed file, scene or goal, an
+//! unknown object) is reported with positions and exit code 65; no plan within the horizon
+//! budget and an inconsistent or unstable initial scene are a message and exit 20 (clingo's
+//! code for unsatisfiable); a plan found is exit 0.
 
 use std::io::Write;
+use std::time::Instant;
 
 use crate::action;
-use crate::base::SourceMap;
-use crate::plan::{plan, PlanConfig, PlanError};
+use crate::base::{Diagnostics, SourceMap};
+use crate::plan::scene::add_statements;
+use crate::plan::{plan, PlanConfig, PlanError, Search};
 
 /// `lucent plan --help`.
 const HELP: &str = "\
-usage: lucent plan FILE.ald [--all] [--max-horizon H] [--profile NAME] [-c NAME=VALUE]... [--outf=2]
+usage: lucent plan FILE.ald [--scene FILE] [--goal GOAL] [--all] [--max-horizon H] [--fixed N]
+                   [--search incremental|retranslate] [--check] [--profile NAME]
+                   [-c NAME=VALUE]... [--outf=2]
 
 Finds a minimal plan for the goal of an AL_d planning problem (DOMAIN.md 4.1-4.2): horizons
-0, 1, ..., H are tried in turn (default H = 10); plans are ordered by length, then by CR rule
-applications. --all prints every distinct minimal plan; --outf=2 prints JSON.
+0, 1, ..., H are tried in turn (default H = max(9, 2 * objects + 2)) on one multi-shot solver;
+plans are ordered by length, then by CR rule applications.
+
+  --scene FILE   the objects and initial state: a simulator scene (.json) or facts such as
+                 object(a). has_size(a, small). on(a, b). (domains/ra/README.md); FILE is then
+                 the domain (e.g. domains/ra/kb_full.ald)
+  --goal GOAL    the goal as AL_d literals (\"on(a, b), in_hand(rob1, c)\") or in controlled
+                 English (\"put the pitcher on the red block\"); replaces FILE's goal
+  --all          print every distinct minimal plan
+  --fixed N      the authors' fixed horizon N: every plan reaching the goal by step N
+  --check        classify each printed plan (optimal, sub-optimal, incorrect; DOMAIN.md 4.3)
+  --outf=2       JSON output
+  --emit-problem print the problem (FILE with the scene and goal added) as one AL_d file
 ";
 
 /// Exit code when there is no plan (clingo's code for unsatisfiable).
 const EXIT_NO_PLAN: i32 = 20;
 
-/// `lucent plan`.
-pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
-    let mut file = None;
-    let mut all = false;
-    let mut json = false;
-    let mut config = PlanConfig::default();
+/// Parsed options of `lucent plan`.
+#[derive(Default)]
+struct Args {
+    file: Option<String>,
+    scene: Option<String>,
+    goal: Option<String>,
+    all: bool,
+    json: bool,
+    check: bool,
+    emit: bool,
+    max_horizon: Option<usize>,
+    config: PlanConfig,
+}
+
+/// Reads the options; `Err(code)` after printing a usage error or the help.
+fn parse_args(
+    args: &[String],
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<Result<Args, i32>> {
+    let mut a = Args::default();
     let mut i = 0;
     while i < args.len() {
-        let a = args[i].as_str();
+        let arg = args[i].as_str();
         let value = |i: &mut usize, prefix: &str| -> Option<String> {
-            if a.len() > prefix.len() {
-                Some(a[prefix.len()..].trim_start_matches('=').to_string())
+            if arg.len() > prefix.len() {
+                Some(arg[prefix.len()..].trim_start_matches('=').to_string())
             } else {
                 *i += 1;
                 args.get(*i).cloned()
             }
         };
-        if a == "--help" || a == "-h" {
+        let usage = |err: &mut dyn Write, m: String| -> std::io::Result<Result<Args, i32>> {
+            writeln!(err, "*** ERROR: (lucent): {m}")?;
+            Ok(Err(super::EXIT_USAGE))
+        };
+        if arg == "--help" || arg == "-h" {
             write!(out, "{HELP}")?;
-            return Ok(0);
-        } else if a == "--all" {
-            all = true;
-        } else if a.starts_with("--outf") {
+            return Ok(Err(0));
+        } else if arg == "--all" {
+            a.all = true;
+        } else if arg == "--check" {
+            a.check = true;
+        } else if arg == "--emit-problem" {
+            a.emit = true;
+        } else if arg.starts_with("--outf") {
             match value(&mut i, "--outf").as_deref() {
-                Some("2") => json = true,
-                Some("0") => json = false,
+                Some("2") => a.json = true,
+                Some("0") => a.json = false,
                 v => {
-                    writeln!(
+                    return usage(
                         err,
-                        "*** ERROR: (lucent): '--outf={}': expected 0 or 2",
-                        v.unwrap_or("")
-                    )?;
-                    return Ok(super::EXIT_USAGE);
+                        format!("'--outf={}': expected 0 or 2", v.unwrap_or("")),
+                    )
                 }
             }
-        } else if a.starts_with("--max-horizon") {
+        } else if arg.starts_with("--max-horizon") {
             match value(&mut i, "--max-horizon").and_then(|v| v.parse().ok()) {
-                Some(h) => config.max_horizon = h,
-                None => {
-                    writeln!(
+                Some(h) => a.max_horizon = Some(h),
+                None => return usage(err, format!("'{arg}': expected --max-horizon H (a number)")),
+            }
+        } else if arg.starts_with("--fixed") {
+            match value(&mut i, "--fixed").and_then(|v| v.parse().ok()) {
+                Some(n) => a.config.search = Search::Fixed(n),
+                None => return usage(err, format!("'{arg}': expected --fixed N (a number)")),
+            }
+        } else if arg.starts_with("--search") {
+            match value(&mut i, "--search").as_deref() {
+                Some("incremental") => a.config.search = Search::Incremental,
+                Some("retranslate") => a.config.search = Search::Retranslate,
+                _ => {
+                    return usage(
                         err,
-                        "*** ERROR: (lucent): '{a}': expected --max-horizon H (a number)"
-                    )?;
-                    return Ok(super::EXIT_USAGE);
+                        format!("'{arg}': expected --search incremental or retranslate"),
+                    )
                 }
             }
-        } else if a.starts_with("--profile") {
-            config.profile = value(&mut i, "--profile");
-        } else if a.starts_with("-c") {
+        } else if arg.starts_with("--scene") {
+            a.scene = value(&mut i, "--scene");
+        } else if arg.starts_with("--goal") {
+            a.goal = value(&mut i, "--goal");
+        } else if arg.starts_with("--profile") {
+            a.config.profile = value(&mut i, "--profile");
+        } else if arg.starts_with("-c") {
             match value(&mut i, "-c").and_then(|v| {
                 v.split_once('=')
                     .map(|(n, v)| (n.trim().to_string(), super::action::value_of(v.trim())))
             }) {
-                Some(c) => config.overrides.push(c),
-                None => {
-                    writeln!(err, "*** ERROR: (lucent): '{a}': expected -c NAME=VALUE")?;
-                    return Ok(super::EXIT_USAGE);
-                }
+                Some(c) => a.config.overrides.push(c),
+                None => return usage(err, format!("'{arg}': expected -c NAME=VALUE")),
             }
-        } else if a.starts_with('-') {
-            writeln!(
+        } else if arg.starts_with('-') {
+            return usage(
                 err,
-                "*** ERROR: (lucent): '{a}': unknown option of `lucent plan` (try --help)"
-            )?;
-            return Ok(super::EXIT_USAGE);
-        } else if file.is_none() {
-            file = Some(a.to_string());
+                format!("'{arg}': unknown option of `lucent plan` (try --help)"),
+            );
+        } else if a.file.is_none() {
+            a.file = Some(arg.to_string());
         } else {
-            writeln!(err, "*** ERROR: (lucent): `lucent plan` takes one file")?;
-            return Ok(super::EXIT_USAGE);
+            return usage(err, "`lucent plan` takes one file".into());
         }
         i += 1;
     }
-    let Some(name) = file else {
+    if a.file.is_none() {
         writeln!(
             err,
             "*** ERROR: (lucent): `lucent plan` needs a file (try --help)"
         )?;
-        return Ok(super::EXIT_USAGE);
+        return Ok(Err(super::EXIT_USAGE));
+    }
+    Ok(Ok(a))
+}
+
+/// The scene file as AL_d text: a simulator scene (`.json`) or facts.
+fn scene_text(sources: &mut SourceMap, name: &str, text: String) -> Result<String, String> {
+    if name.ends_with(".json") {
+        #[cfg(feature = "sim")]
+        {
+            return crate::sim::Scene::from_json(&text)
+                .map(|s| crate::plan::SceneFacts::from_sim(&s).to_ald())
+                .map_err(|e| format!("{name}: {e}"));
+        }
+        #[cfg(not(feature = "sim"))]
+        return Err(format!("{name}: simulator scenes need the `sim` feature"));
+    }
+    let file = sources.add(name.to_string(), text.clone());
+    crate::plan::SceneFacts::parse(file, &text)
+        .map(|s| s.to_ald())
+        .map_err(|errors| {
+            let mut d = Diagnostics::default();
+            d.extend(errors);
+            d.render(sources)
+        })
+}
+
+/// The goal as an AL_d statement: literals, or controlled English over the scene's objects.
+fn goal_text(goal: &str, desc: &action::ast::Description) -> Result<String, String> {
+    if let Some(g) = crate::plan::goal_statement(goal) {
+        return Ok(g);
+    }
+    let lexicon = crate::explain::lexicon::Lexicon::ra();
+    let checked = action::check(desc, &action::Options::default());
+    let objects: Vec<&str> = ["movable", "object"]
+        .iter()
+        .find_map(|s| checked.sorts.get(*s))
+        .map(|s| {
+            s.members
+                .iter()
+                .filter_map(|m| match m {
+                    action::check::Member::Sym(n) => Some(n.as_str()),
+                    action::check::Member::Int(_) => None,
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    match crate::explain::english::Parser::new(&lexicon, &objects).parse(goal) {
+        Ok(crate::explain::english::Question::Goal { literals }) => Ok(format!(
+            "goal {}.",
+            literals
+                .iter()
+                .map(|l| l.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        )),
+        Ok(q) => Err(format!("`{goal}` is a {} question, not a goal", q.kind())),
+        Err(e) => Err(format!("`{goal}`: {}", e.reply(&lexicon))),
+    }
+}
+
+/// `lucent plan`.
+pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
+    let a = match parse_args(args, out, err)? {
+        Ok(a) => a,
+        Err(code) => return Ok(code),
+    };
+    let name = a.file.clone().unwrap_or_default();
+    let bad = |err: &mut dyn Write, m: &str| -> std::io::Result<i32> {
+        if !m.is_empty() {
+            writeln!(err, "{}", m.trim_end())?;
+        }
+        writeln!(
+            err,
+            "*** ERROR: (lucent): {name}: not a valid AL_d planning problem"
+        )?;
+        Ok(super::EXIT_INPUT)
     };
     let text = match std::fs::read_to_string(&name) {
         Ok(t) => t,
@@ -118,36 +245,122 @@ pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> st
         |path: &std::path::Path| std::fs::read_to_string(path).map_err(|e| e.to_string());
     let parsed = action::load(&mut sources, id, &mut read);
     if parsed.has_errors() {
-        let mut d = crate::base::Diagnostics::default();
+        let mut d = Diagnostics::default();
         d.extend(parsed.diagnostics);
-        write!(err, "{}", d.render(&sources))?;
-        writeln!(
-            err,
-            "*** ERROR: (lucent): {name}: not a valid AL_d planning problem"
-        )?;
-        return Ok(super::EXIT_INPUT);
+        return bad(err, &d.render(&sources));
     }
-    match plan(&parsed.description, &sources, &config) {
+    let mut desc = parsed.description;
+    if let Some(scene) = &a.scene {
+        let text = match std::fs::read_to_string(scene) {
+            Ok(t) => t,
+            Err(e) => {
+                writeln!(err, "*** ERROR: (lucent): {scene}: {e}")?;
+                return Ok(super::EXIT_INPUT);
+            }
+        };
+        let ald = match scene_text(&mut sources, scene, text) {
+            Ok(t) => t,
+            Err(m) => return bad(err, &m),
+        };
+        if let Err(m) = add_statements(&mut desc, &mut sources, &format!("<scene {scene}>"), ald) {
+            return bad(err, &m);
+        }
+    }
+    if let Some(goal) = &a.goal {
+        let statement = match goal_text(goal, &desc) {
+            Ok(s) => s,
+            Err(m) => return bad(err, &format!("*** ERROR: (lucent): goal {m}")),
+        };
+        desc.statements
+            .retain(|s| !matches!(s.kind, action::ast::StatementKind::Goal { .. }));
+        if let Err(m) = add_statements(&mut desc, &mut sources, "<goal>", statement) {
+            return bad(err, &m);
+        }
+    }
+    if a.emit {
+        let path = std::fs::canonicalize(&name).unwrap_or_else(|_| name.clone().into());
+        writeln!(out, "include \"{}\".", path.display())?;
+        for i in 0..sources.len() {
+            let f = sources.get(crate::base::FileId(i as u32));
+            if f.name.starts_with('<') {
+                writeln!(out, "% {}\n{}", f.name, f.text)?;
+            }
+        }
+        return Ok(0);
+    }
+    let mut config = a.config.clone();
+    config.all = a.all || matches!(config.search, Search::Fixed(_));
+    config.max_horizon = a
+        .max_horizon
+        .unwrap_or_else(|| crate::plan::default_max_horizon(&desc, &config));
+    let start = Instant::now();
+    let result = plan(&desc, &sources, &config);
+    let seconds = start.elapsed().as_secs_f64();
+    match result {
         Ok(found) => {
-            let shown = if all {
+            let shown = if a.all {
                 &found.plans[..]
             } else {
                 &found.plans[..1]
             };
-            if json {
+            let verdicts: Vec<Option<crate::plan::Verdict>> = shown
+                .iter()
+                .map(|p| {
+                    a.check.then(|| {
+                        crate::plan::classify(&desc, &sources, &config, &p.actions, 200_000).ok()
+                    })?
+                })
+                .collect();
+            if a.json {
                 let plans: Vec<Vec<String>> = shown
                     .iter()
                     .map(|p| p.actions.iter().map(|a| a.to_string()).collect())
                     .collect();
-                let value = serde_json::json!({
+                let mut value = serde_json::json!({
                     "plans": plans,
                     "length": found.length,
                     "cr_applied": found.cr_applied,
+                    "cr_rules": shown.iter().map(|p| p.cr_applied.iter().map(|c| c.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                    "minimal_plans": found.plans.len(),
+                    "answer_sets": found.answer_sets,
+                    "horizons_tried": found.horizons_tried,
+                    "max_horizon": config.max_horizon,
+                    "search": match config.search { Search::Incremental => "incremental".to_string(), Search::Retranslate => "retranslate".to_string(), Search::Fixed(n) => format!("fixed({n})") },
+                    "time": { "total": seconds },
                 });
+                if a.check {
+                    value["check"] = verdicts
+                        .iter()
+                        .map(|v| match v {
+                            Some(v) => serde_json::json!({
+                                "quality": v.quality.name(),
+                                "minimal_length": v.minimal.map(|m| m.0),
+                                "minimal_cr": v.minimal.map(|m| m.1),
+                                "reason": v.reason,
+                            }),
+                            None => serde_json::Value::Null,
+                        })
+                        .collect();
+                }
                 writeln!(out, "{value}")?;
             } else {
-                for p in shown {
+                for (p, v) in shown.iter().zip(&verdicts) {
                     writeln!(out, "Plan: {}", p.to_text())?;
+                    if !p.cr_applied.is_empty() {
+                        let cr: Vec<String> = p.cr_applied.iter().map(|c| c.to_string()).collect();
+                        writeln!(out, "  CR rules: {}", cr.join(" "))?;
+                    }
+                    if let Some(v) = v {
+                        writeln!(
+                            out,
+                            "  Check: {}{}",
+                            v.quality.name(),
+                            v.reason
+                                .as_ref()
+                                .map(|r| format!(" ({r})"))
+                                .unwrap_or_default()
+                        )?;
+                    }
                 }
                 writeln!(out, "Length: {}", found.length)?;
                 writeln!(out, "CR applied: {}", found.cr_applied)?;
@@ -157,17 +370,11 @@ pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> st
                     shown.len(),
                     found.plans.len()
                 )?;
+                writeln!(out, "Time: {seconds:.3}s")?;
             }
             Ok(0)
         }
-        Err(PlanError::Input(m)) => {
-            writeln!(err, "{}", m.trim_end())?;
-            writeln!(
-                err,
-                "*** ERROR: (lucent): {name}: not a valid AL_d planning problem"
-            )?;
-            Ok(super::EXIT_INPUT)
-        }
+        Err(PlanError::Input(m)) => bad(err, &m),
         Err(e) => {
             writeln!(err, "*** ERROR: (lucent): {name}: {e}")?;
             Ok(EXIT_NO_PLAN)

@@ -273,12 +273,23 @@ pub enum TrialError {
     NotAvailable(String),
 }
 
+/// The planning domain of H2-H4 as `cli` read it: scenes are AL_d files that include it.
+#[derive(Clone, Debug)]
+pub struct Domain {
+    /// Its absolute path (`domains/ra/kb_full.ald` by default).
+    pub path: String,
+    /// Its text.
+    pub text: String,
+}
+
 /// What trials read: the setup, the inputs loaded by `cli`, and the store.
 pub struct Context<'a> {
     /// The setup.
     pub setup: Setup,
     /// The H1 knowledge base (`domains/ra/scenes/h1.ald` by default).
     pub kb: &'a KbSpec,
+    /// The planning domain of H2-H4 (KB_full).
+    pub domain: &'a Domain,
     /// The results.
     pub store: &'a dyn Store,
 }

@@ -80,6 +80,8 @@ pub struct Builder<'o> {
     /// during the current expansion: a result that depends on the path above a literal is not
     /// memoized.
     lowest_cut: usize,
+    /// Literals known to be (or not to be) sort guards.
+    sort_cache: std::cell::RefCell<HashMap<Term, bool>>,
 }
 
 impl<'o> Builder<'o> {
@@ -95,6 +97,7 @@ impl<'o> Builder<'o> {
             memo: HashMap::new(),
             size: Vec::new(),
             lowest_cut: usize::MAX,
+            sort_cache: Default::default(),
         }
     }
 
@@ -265,7 +268,7 @@ impl<'o> Builder<'o> {
         match rule.kind {
             AxiomKind::Fact if is_action => Kind::Action,
             AxiomKind::Fact if is_holds => Kind::Observation,
-            AxiomKind::Fact => Kind::Static,
+            AxiomKind::Fact | AxiomKind::Sort => Kind::Static,
             AxiomKind::History if is_action => Kind::Action,
             AxiomKind::History if rule.negative().next().is_some() => Kind::ClosedWorld,
             AxiomKind::History => Kind::Observation,
@@ -283,7 +286,11 @@ impl<'o> Builder<'o> {
     /// The preference rank of a support (DOMAIN.md 6.2, path choice).
     fn rank(&self, rule: &RuleInstance) -> u8 {
         match rule.kind {
-            AxiomKind::Fact | AxiomKind::History if rule.negative().next().is_none() => 0,
+            AxiomKind::Fact | AxiomKind::Sort | AxiomKind::History
+                if rule.negative().next().is_none() =>
+            {
+                0
+            }
             _ if self.is_spatial(rule) => 1,
             AxiomKind::Inertia => 3,
             AxiomKind::ClosedWorld | AxiomKind::History => 4,
@@ -303,12 +310,25 @@ impl<'o> Builder<'o> {
     /// not count.
     fn mentions_root(&self, rule: &RuleInstance) -> bool {
         rule.positive().any(|t| {
-            !self
-                .root_inner
-                .as_ref()
-                .is_some_and(|inner| contains(t, inner))
+            !self.is_sort(t)
+                && !self
+                    .root_inner
+                    .as_ref()
+                    .is_some_and(|inner| contains(t, inner))
                 && constants(t).iter().any(|c| self.root_objects.contains(c))
         })
+    }
+
+    /// Whether every rule for a literal is a sort declaration (a guard that names the root's
+    /// objects without saying anything about them).
+    fn is_sort(&self, t: &Term) -> bool {
+        if let Some(&b) = self.sort_cache.borrow().get(t) {
+            return b;
+        }
+        let rules = self.oracle.rules_for(t);
+        let b = !rules.is_empty() && rules.iter().all(|r| r.kind == AxiomKind::Sort);
+        self.sort_cache.borrow_mut().insert(t.clone(), b);
+        b
     }
 
     /// The node of a literal that does not hold: each of its rules with its first blocking body

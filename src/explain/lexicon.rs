@@ -47,6 +47,13 @@ pub const TEMPLATES: &[(&str, &[&str])] = &[
     ("no_reason", &[]),
     ("step", &["step"]),
     ("initial_state", &[]),
+    ("what_if", &["action", "step", "later", "literals", "old"]),
+    ("what_if_same", &["action", "step"]),
+    ("what_if_impossible", &["action", "step", "reason"]),
+    ("what_if_stuck", &["next"]),
+    ("no_plan", &["horizon", "reasons"]),
+    ("no_plan_always", &["horizon"]),
+    ("plan_exists", &["horizon"]),
 ];
 
 /// The JSON shape of a lexicon file.

@@ -11,6 +11,13 @@
 //!   re-check against the ground program and the model;
 //! - [`build`]: proof trees built over a ground program and an answer set (DOMAIN.md 6.2);
 //! - [`questions`]: the four questions of DOMAIN.md 6.3-6.6 over a program, answer set and plan;
+//! - [`oracle`]: the adapter from a `control::Control` (ground program, provenance, a model)
+//!   to the trees' `Oracle`;
+//! - [`history`]: an AL_d planning problem and its executed actions, solved into an oracle;
+//! - [`counterfactual`]: what if (the history with another action, re-solved) and why no plan
+//!   (a minimal set of goal literals, observations and constraints, by deletion over
+//!   assumptions);
+//! - [`generic`]: why and why-not of an atom of any program's answer set, as text;
 //! - [`draw`]: proof trees as DOT text and as SVG drawn here;
 //! - [`h3`]: the H3 experiment's pieces: generated scenes (DOMAIN.md 1.6, 7.1), the three
 //!   checks of a proof tree (DOMAIN.md 7.5) and one trial over a history.
@@ -26,5 +33,9 @@ pub mod verbalize;
 pub mod tree;
 pub mod build;
 pub mod questions;
+pub mod oracle;
+pub mod history;
+pub mod generic;
+pub mod counterfactual;
 pub mod draw;
 pub mod h3;

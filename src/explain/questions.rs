@@ -8,8 +8,8 @@
 //! wording; every proof tree an answer uses passed `tree::recheck` (a failed re-check is an
 //! error, not an answer); questions about steps outside the history or actions that are not
 //! there get an answer that says so, never a panic. Questions that need a new solve (why no
-//! plan, what if) are answered by [`AnswerError::NeedsSolver`]: the caller with a `Control`
-//! runs them.
+//! plan, what if) and goals are answered by [`AnswerError::NeedsSolver`]: the caller with the
+//! planning problem runs them (`explain::counterfactual`, the planner).
 
 use super::build::{normalize, BuildConfig, Builder};
 use super::english::{holds, occurs, Question};
@@ -416,6 +416,7 @@ impl Answering<'_, '_> {
                 // not a reason.
                 if seen.contains(&child.literal)
                     || inner.as_ref().is_some_and(|i| contains(&child.literal, i))
+                    || is_sort(child)
                 {
                     continue;
                 }
@@ -591,9 +592,8 @@ impl Answering<'_, '_> {
         let stop =
             !is_fluent || self.scn.inertial.iter().any(|x| x == name) || n.children.is_empty();
         if stop {
-            // Statics and sort guards: statics are said; sort atoms (no step, not a lexicon
-            // property) are said too, as the program's own literals.
-            if !out.contains(&n.literal) {
+            // Statics are said; sort guards are not.
+            if !is_sort(n) && !out.contains(&n.literal) {
                 out.push(n.literal.clone());
             }
             return;
@@ -607,6 +607,11 @@ impl Answering<'_, '_> {
             self.frontier(tree, *c, out, seen);
         }
     }
+}
+
+/// Whether a node is a sort guard (`object(a)`, `action(pickup(rob1,a))`).
+fn is_sort(n: &super::tree::Node) -> bool {
+    n.rule.as_ref().is_some_and(|r| r.kind == AxiomKind::Sort)
 }
 
 /// The object argument of an action (its second argument: the first is the robot).

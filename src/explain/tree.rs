@@ -59,8 +59,11 @@ pub enum AxiomKind {
     ClosedWorld,
     /// History: observations, happened actions, initial-state defaults.
     History,
-    /// A fact of the program (statics, sorts).
+    /// A fact of the program (statics).
     Fact,
+    /// Sort membership and the domains of fluents and actions (`object(a)`,
+    /// `action(pickup(rob1,a))`): guards of every rule, static leaves never said in answers.
+    Sort,
     /// The planning module.
     Planning,
     /// A rule of a program that is not an action description (the generic `--why`).
@@ -80,6 +83,7 @@ impl AxiomKind {
             AxiomKind::ClosedWorld => "closed world",
             AxiomKind::History => "history",
             AxiomKind::Fact => "fact",
+            AxiomKind::Sort => "sort",
             AxiomKind::Planning => "planning",
             AxiomKind::Rule => "rule",
         }
@@ -479,7 +483,9 @@ fn check_support(tree: &ProofTree, oracle: &dyn Oracle, node: &Node) -> Result<(
                     AxiomKind::Fact | AxiomKind::History | AxiomKind::Planning
                 )
         }
-        Kind::Static => node.step.is_none() && rule.kind == AxiomKind::Fact,
+        Kind::Static => {
+            node.step.is_none() && matches!(rule.kind, AxiomKind::Fact | AxiomKind::Sort)
+        }
         Kind::Assumption => rule.kind == AxiomKind::CrRule && oracle.applied(rule),
         // The CWAs, and the initial-state default D0 (a history rule with `not`).
         Kind::ClosedWorld => {

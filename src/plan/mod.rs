@@ -1,38 +1,75 @@
-//! The planner (DOMAIN.md 4.1-4.2): a client of [`crate::control::Control`] and
-//! [`crate::action::translate`]. It searches the iterative horizon k = 0, 1, ..., H_max: at
-//! each k the description is translated with `horizon = k` and `horizon_mode = iterative`
-//! (`:- not goal(k)`), grounded and solved; the first satisfiable k is the minimal plan length.
+//! The planner (DOMAIN.md 4): a client of [`crate::control::Control`] and
+//! [`crate::action::translate`].
+//!
+//! - [`plan`] finds the minimal plans of an AL_d planning problem (a description with an
+//!   initial state and a goal): `search` grounds one new step part per horizon on one
+//!   multi-shot Control (clingo's incmode), or reproduces the authors' fixed horizon.
+//! - `scene` reads initial states written as facts (or simulator scenes) and goals as
+//!   literals, as AL_d statements for a domain description.
+//! - `check` replays a plan one transition at a time against the domain (the one-step
+//!   program with the current state as the initial state) and classifies it as optimal,
+//!   sub-optimal or incorrect (4.3), with the minimal length and CR count found by a
+//!   breadth-first search over states, not by the planner's search.
+//! - `act`, `history` and `tabletop` (feature `sim`): the sense-plan-act loop, its record and
+//!   the simulated world it runs in.
+//! - `physics` (feature `sim`) draws planning tasks from generated scenes (DOMAIN.md 7.1) and
+//!   replays plans in the rapier world without noise (actions succeed, goal measured, every
+//!   object stable).
 //!
 //! Invariants:
-//! - Plans are ordered by length, then by the number of CR rules applied (4.2): only plans of
-//!   the least length k, and among them only those with the fewest CR applications, are
-//!   returned; each distinct action sequence once, sorted by its text.
-//! - A plan is the sequence of action terms `a` of `occurs(a, i)` for i = 0..k-1 (the step is
-//!   dropped); answer sets that differ only in other atoms give one plan.
-//! - Before searching, the scene is solved without the planning module at horizon 0: an
-//!   inconsistent scene is [`PlanError::Inconsistent`], not "no plan".
-//! - Nothing here reads files or prints: bad input is a [`PlanError::Input`] with the
-//!   diagnostics rendered against the caller's sources.
-//!
-//! Not yet here: one Control grounding a `#program step(t)` part per horizon (the translator
-//! has no such mode yet, so each horizon is translated and grounded afresh), the fixed-horizon
-//! mode and `initially_unstable` detection.
+//! - Plans are ordered by length, then by the number of CR rules applied (4.2): in the
+//!   iterative modes only plans of the least length k, and among them only those with the
+//!   fewest CR applications, are returned; each distinct action sequence once.
+//! - A plan is the sequence of action terms `a` of `occurs(a, i)` for i = 0..k-1; answer sets
+//!   that differ only in other atoms give one plan.
+//! - An initial state without answer set is an error, not "no plan":
+//!   [`PlanError::InitiallyUnstable`] or [`PlanError::Inconsistent`].
+//! - Nothing here reads files, prints or reads the clock: bad input is a [`PlanError::Input`]
+//!   with the diagnostics rendered against the caller's sources.
 
-use std::collections::BTreeMap;
+pub mod act;
+pub mod check;
+pub mod history;
+#[cfg(feature = "sim")]
+pub mod physics;
+pub mod scene;
+pub mod search;
+#[cfg(feature = "sim")]
+pub mod tabletop;
 
 use crate::action::{self, ast::Description, ast::Value, Options};
-use crate::base::{Diagnostics, SourceMap};
-use crate::control::{Control, ControlConfig, Part, Symbol};
+use crate::base::SourceMap;
+use crate::control::Symbol;
+
+pub use check::{classify, replay, Quality, Replay, StateSearch, Verdict};
+pub use scene::{goal_statement, SceneFacts};
+
+/// How the horizon is searched.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Search {
+    /// Horizons 0, 1, ... on one Control, one `step(k)` part each (default).
+    #[default]
+    Incremental,
+    /// Horizons 0, 1, ..., each translated and grounded afresh (the reference).
+    Retranslate,
+    /// The authors' fixed horizon n (DOMAIN.md 4.1, 7.4): every plan reaching the goal by step
+    /// n, lengths not minimized.
+    Fixed(usize),
+}
 
 /// What the planner is asked.
 #[derive(Clone, Debug)]
 pub struct PlanConfig {
-    /// The largest horizon tried (H_max).
+    /// The largest horizon tried (H_max); see [`default_max_horizon`].
     pub max_horizon: usize,
     /// A profile of the description (`tabletop`, ...).
     pub profile: Option<String>,
     /// Switch overrides (`horizon` and `horizon_mode` are set by the planner).
     pub overrides: Vec<(String, Value)>,
+    /// How the horizon is searched.
+    pub search: Search,
+    /// All distinct minimal plans (true) or the first one found.
+    pub all: bool,
 }
 
 impl Default for PlanConfig {
@@ -41,6 +78,8 @@ impl Default for PlanConfig {
             max_horizon: 10,
             profile: None,
             overrides: Vec::new(),
+            search: Search::Incremental,
+            all: true,
         }
     }
 }
@@ -66,17 +105,20 @@ impl Plan {
     }
 }
 
-/// The planner's answer: the minimal plans.
+/// The planner's answer.
 #[derive(Clone, Debug)]
 pub struct Plans {
-    /// The distinct minimal plans (at least one), sorted by their text.
+    /// The distinct plans (at least one), by length, CR applications and text; in the
+    /// iterative modes all of them minimal.
     pub plans: Vec<Plan>,
-    /// Their length (the least horizon with a plan).
+    /// The length of the first plan (in the iterative modes, the least horizon with a plan).
     pub length: usize,
-    /// The number of CR applications of each of them.
+    /// The number of CR applications of the first plan.
     pub cr_applied: usize,
-    /// The horizons tried (0..=length).
+    /// The horizons solved.
     pub horizons_tried: usize,
+    /// The answer sets behind the plans (the fixed mode's "number of plans", DOMAIN.md 7.4).
+    pub answer_sets: usize,
 }
 
 /// Why no plan was returned.
@@ -86,6 +128,8 @@ pub enum PlanError {
     NoPlanWithin(usize),
     /// The initial state (with the history) has no answer set.
     Inconsistent,
+    /// The initial state has unstable objects (DOMAIN.md 2.5), named here.
+    InitiallyUnstable(Vec<String>),
     /// The description is not a valid planning problem; the rendered diagnostics.
     Input(String),
 }
@@ -100,6 +144,12 @@ impl std::fmt::Display for PlanError {
                 f,
                 "the scene is inconsistent: its initial state has no answer set"
             ),
+            PlanError::InitiallyUnstable(objects) => write!(
+                f,
+                "initially_unstable({}): the initial scene has unstable objects, so no plan \
+                 can keep every object stable",
+                objects.join(", ")
+            ),
             PlanError::Input(m) => write!(f, "{}", m.trim_end()),
         }
     }
@@ -107,91 +157,34 @@ impl std::fmt::Display for PlanError {
 
 impl std::error::Error for PlanError {}
 
-/// The answer sets of `desc` at `horizon` with the switches `extra` (on top of the config's).
-fn solve_at(
-    desc: &Description,
-    sources: &SourceMap,
-    config: &PlanConfig,
-    extra: &[(&str, Value)],
-) -> Result<Vec<crate::control::OwnedModel>, PlanError> {
-    let mut overrides = config.overrides.clone();
-    overrides.extend(extra.iter().map(|(n, v)| (n.to_string(), v.clone())));
-    let options = Options {
-        profile: config.profile.clone(),
-        overrides,
-    };
-    let t = action::translate(desc, &options);
-    if t.has_errors() {
-        let mut d = Diagnostics::default();
-        d.extend(t.diagnostics);
-        return Err(PlanError::Input(d.render(sources)));
-    }
-    let mut ctl = Control::with_sources(ControlConfig::default(), sources.clone());
-    ctl.add_program(t.program)
-        .map_err(|e| PlanError::Input(e.message))?;
-    ctl.ground(&[Part::base()])
-        .map_err(|e| PlanError::Input(e.message))?;
-    Ok(ctl.solve_all(&Default::default()).models)
+/// DOMAIN.md 4.1's default H_max: max(9, 2·|object| + 2), the objects being the members of the
+/// sort `object` (or `movable` when there is no `object` sort) under `config`'s switches.
+pub fn default_max_horizon(desc: &Description, config: &PlanConfig) -> usize {
+    let checked = action::check(
+        desc,
+        &Options {
+            profile: config.profile.clone(),
+            overrides: config.overrides.clone(),
+        },
+    );
+    let objects = ["object", "movable"]
+        .iter()
+        .find_map(|s| checked.sorts.get(*s))
+        .map_or(0, |s| s.members.len());
+    (2 * objects + 2).max(9)
 }
 
-/// The plan of one answer set: the actions of `occurs(a, i)` in step order.
-fn plan_of(model: &crate::control::OwnedModel) -> Plan {
-    let mut steps = BTreeMap::new();
-    for s in &model.atoms {
-        if s.is("occurs", 2) && !s.is_negative() {
-            if let Some(i) = s.args()[1].as_number() {
-                steps.insert(i, s.args()[0].clone());
-            }
-        }
-    }
-    let mut cr_applied = model.cr_applied.clone();
-    cr_applied.sort();
-    Plan {
-        actions: steps.into_values().collect(),
-        cr_applied,
-    }
-}
-
-/// Finds the minimal plans of the planning problem `desc` (a description with a history and a
-/// goal), trying horizons 0..=`config.max_horizon`. `sources` are used to render diagnostics.
+/// Finds the minimal plans of the planning problem `desc` (a description with an initial state
+/// and a goal), trying horizons 0..=`config.max_horizon` (or, in [`Search::Fixed`], the plans
+/// of the fixed horizon). `sources` are used to render diagnostics.
 pub fn plan(
     desc: &Description,
     sources: &SourceMap,
     config: &PlanConfig,
 ) -> Result<Plans, PlanError> {
-    let consistent = solve_at(
-        desc,
-        sources,
-        config,
-        &[("horizon", Value::Int(0)), ("planning", Value::Bool(false))],
-    )?;
-    if consistent.is_empty() {
-        return Err(PlanError::Inconsistent);
+    match config.search {
+        Search::Incremental => search::incremental(desc, sources, config, config.max_horizon),
+        Search::Retranslate => search::retranslate(desc, sources, config, config.max_horizon),
+        Search::Fixed(n) => search::fixed(desc, sources, config, n),
     }
-    for k in 0..=config.max_horizon {
-        let models = solve_at(
-            desc,
-            sources,
-            config,
-            &[
-                ("horizon", Value::Int(k as i64)),
-                ("horizon_mode", Value::Word("iterative".into())),
-            ],
-        )?;
-        if models.is_empty() {
-            continue;
-        }
-        let mut plans: Vec<Plan> = models.iter().map(plan_of).collect();
-        let least = plans.iter().map(|p| p.cr_applied.len()).min().unwrap_or(0);
-        plans.retain(|p| p.cr_applied.len() == least);
-        plans.sort_by_key(Plan::to_text);
-        plans.dedup_by(|a, b| a.actions == b.actions);
-        return Ok(Plans {
-            plans,
-            length: k,
-            cr_applied: least,
-            horizons_tried: k + 1,
-        });
-    }
-    Err(PlanError::NoPlanWithin(config.max_horizon))
 }

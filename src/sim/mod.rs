@@ -34,7 +34,9 @@ pub mod world;
 pub use act::{execute, ActConfig, Action, ActionReport, Failure};
 pub use generate::{generate, generate_many, GenerateConfig, Preset};
 pub use object::{Colour, ObjectKind, Size, Surface};
-pub use perceive::{perceive, ErrorModel, FactStyle, Literal, Observation, Percept};
+pub use perceive::{
+    perceive, perceive_look, perceive_world, ErrorModel, FactStyle, Literal, Observation, Percept,
+};
 pub use render::{render_camera, render_top, Image};
 pub use rng::SplitMix64;
 pub use scene::{Camera, ObjectId, Scene, SceneObject, ROBOT, TABLE};

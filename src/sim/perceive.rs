@@ -10,7 +10,8 @@
 //! wrong ones; those at or above `threshold` become facts (the paper's "perceptions with high
 //! probability become certain literals").
 //!
-//! Invariant: observations are a function of the scene, its seed and its step alone.
+//! Invariant: observations are a function of the scene, its seed, its step and the look number
+//! alone (look 0 unless the robot looks again at the same step).
 
 use super::object::{Size, Surface};
 use super::rng::SplitMix64;
@@ -186,7 +187,21 @@ pub fn perceive_world(
     model: &ErrorModel,
     truth: &TruthConfig,
 ) -> Percept {
-    let mut rng = SplitMix64::new(scene.seed).fork(PERCEPTION_STREAM ^ ((scene.step as u64) << 32));
+    perceive_look(scene, world, model, truth, 0)
+}
+
+/// Perceives a scene whose world is already built, the `look`-th time at this step: each look
+/// draws its own errors (look 0 is [`perceive_world`]), so a robot that looks again sees
+/// independent noise of the same state.
+pub fn perceive_look(
+    scene: &Scene,
+    world: &World,
+    model: &ErrorModel,
+    truth: &TruthConfig,
+    look: u32,
+) -> Percept {
+    let mut rng = SplitMix64::new(scene.seed)
+        .fork(PERCEPTION_STREAM ^ ((scene.step as u64) << 32) ^ ((look as u64) << 16));
     let mut errors = ErrorCounts::default();
     let mut observations: Vec<Observation> = Vec::new();
     let mut emit = |literal: Literal, value: bool, erroneous: bool, rng: &mut SplitMix64| {

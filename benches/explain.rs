@@ -1,0 +1,121 @@
+//! Explanation benchmarks (criterion): the four question types of DOMAIN.md 6.3-6.6 on the
+//! golden scenes of `domains/ra` under KB_full (the paper's execution example after its six
+//! actions; the tabletop task after its first minimal plan), each question parsed, answered and
+//! its proof tree built and re-checked. The history (translation, grounding with provenance,
+//! solve, oracle) is made once, outside the measurement. Besides criterion's estimates, the
+//! p99 over 200 timed runs of each question is printed (`p99 <question>: <ms>`), the figure
+//! issue 14 asks for (aim: under 10 ms).
+
+use std::path::Path;
+use std::time::Instant;
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use lucent::action;
+use lucent::base::SourceMap;
+use lucent::explain::english::Parser;
+use lucent::explain::history::{explain_history, parse_actions, History, HistoryConfig};
+use lucent::explain::lexicon::Lexicon;
+use lucent::explain::questions::{answer, Mode, Session};
+
+fn history(scene: &str, plan: &str) -> History {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("domains/ra/scenes")
+        .join(scene);
+    let mut sources = SourceMap::new();
+    let text = std::fs::read_to_string(&path).unwrap();
+    let file = sources.add(path.to_string_lossy().into_owned(), text);
+    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let parsed = action::load(&mut sources, file, &mut read);
+    let actions = parse_actions(plan).unwrap();
+    explain_history(
+        &parsed.description,
+        &mut sources,
+        &actions,
+        &HistoryConfig::default(),
+    )
+    .unwrap()
+}
+
+fn ask(h: &History, lexicon: &Lexicon, q: &str) -> usize {
+    let objects = h.objects();
+    let names: Vec<&str> = objects.iter().map(String::as_str).collect();
+    let parser = Parser::new(lexicon, &names);
+    let question = parser.parse(q).unwrap();
+    let a = answer(
+        &h.scenario(),
+        lexicon,
+        &question,
+        Mode::Concise,
+        &mut Session::default(),
+    )
+    .unwrap();
+    a.literals.len() + a.tree.map_or(0, |t| t.nodes.len())
+}
+
+fn bench(c: &mut Criterion) {
+    let lexicon = Lexicon::ra();
+    let example = history(
+        "execution_example.ald",
+        "pickup(rob1,green_can); putdown(rob1,green_can,table); pickup(rob1,white_block); \
+         putdown(rob1,white_block,green_can); pickup(rob1,pitcher); \
+         putdown(rob1,pitcher,red_block)",
+    );
+    let tabletop = history(
+        "tabletop_task.ald",
+        "pickup(rob1,pitcher); putdown(rob1,pitcher,table); pickup(rob1,red_cube_large)",
+    );
+    let cases: Vec<(&str, &History, &str)> = vec![
+        ("example/plan", &example, "Please describe the plan."),
+        (
+            "example/why",
+            &example,
+            "Why did you pick up the green can at step 0?",
+        ),
+        (
+            "example/why_not",
+            &example,
+            "Why did you not pick up the white block at step 0?",
+        ),
+        (
+            "example/belief",
+            &example,
+            "Why did you believe the white block was on the green can at step 5?",
+        ),
+        ("tabletop/plan", &tabletop, "Describe the plan."),
+        (
+            "tabletop/why",
+            &tabletop,
+            "Why did you pick up the pitcher at step 0?",
+        ),
+        (
+            "tabletop/why_not",
+            &tabletop,
+            "Why did you not pick up the red cube at step 0?",
+        ),
+        (
+            "tabletop/belief",
+            &tabletop,
+            "Why did you believe the pitcher was on the table at step 3?",
+        ),
+    ];
+    for (name, h, q) in &cases {
+        let mut times: Vec<f64> = (0..200)
+            .map(|_| {
+                let t = Instant::now();
+                std::hint::black_box(ask(h, &lexicon, q));
+                t.elapsed().as_secs_f64() * 1e3
+            })
+            .collect();
+        times.sort_by(f64::total_cmp);
+        println!(
+            "p99 {name}: {:.3} ms (median {:.3} ms)",
+            times[197], times[100]
+        );
+        c.bench_function(&format!("explain/{name}"), |b| {
+            b.iter(|| ask(h, &lexicon, q))
+        });
+    }
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# The paper's experiments H1-H4 at the paper's sizes (DOMAIN.md 7), in process, into
+# docs/experiments/: report.md (our tables beside the paper's), report.json, the SVG plots, the
+# per-trial results (results/, reused when the script is run again: an interrupted run resumes),
+# and command.txt with the command line, the machine and the wall time.
+#
+# usage: scripts/experiment_full.sh [SEED] [extra `lucent experiment` options...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seed="${1:-0}"
+shift || true
+out=docs/experiments
+cargo build --release --quiet
+mkdir -p "$out"
+cmd=(target/release/lucent experiment all --seed "$seed" --out "$out" "$@")
+start=$(date +%s%N)
+"${cmd[@]}" >/dev/null
+end=$(date +%s%N)
+ms=$(( (end - start) / 1000000 ))
+wall="$((ms / 1000)).$(printf %03d $((ms % 1000)))"
+{
+  echo "command: ${cmd[*]}"
+  echo "machine: $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "wall time: ${wall} s"
+  echo "trials reused from an earlier run: see the 'experiment:' line on standard error"
+} > "$out/command.txt"
+cat "$out/command.txt"

@@ -1,0 +1,592 @@
+//! `lucent explain` and `lucent ask`: the robot's explanations (DOMAIN.md section 6) on the
+//! command line, and `--why`/`--why-not` for any clingo program.
+//!
+//! - `lucent explain SCENE.ald... [--happened PLAN] [--goal LITS] -q QUESTION`: one question
+//!   about a history: the description and scene files (AL_d; a scene usually includes the
+//!   domain), the goal (the scene's `goal`, or `--goal`), and either an executed plan
+//!   (`--happened "a@0; b@1"`, need not be minimal) or the first minimal plan the planner finds.
+//! - `lucent explain PROGRAM.lp --why ATOM` / `--why-not ATOM`: the proof (or the blocked rules)
+//!   of an atom in the program's first answer set.
+//! - `lucent ask SCENE.ald... [--happened PLAN]`: questions read line by line (line editing and
+//!   history on a terminal), each answered in turn; follow-up questions take their step from
+//!   the previous one.
+//!
+//! Output: the English answer, or with `--outf=2` JSON `{type, answer, literals, tree}`;
+//! `--dot FILE` / `--svg FILE` write the proof tree with the answer's path highlighted.
+//!
+//! Invariants: files are read and written here only; bad input files are positioned diagnostics
+//! and exit 65; a question that is not understood gets the reply that says what was not
+//! understood and what can be asked (exit 65 for `explain`, the session goes on for `ask`);
+//! nothing the user types panics.
+
+use std::io::{BufRead, Write};
+
+use crate::action::{self, ast::Value};
+use crate::base::SourceMap;
+use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol};
+use crate::explain::counterfactual::{what_if, why_no_plan};
+use crate::explain::draw;
+use crate::explain::english::{Parser, Question};
+use crate::explain::generic;
+use crate::explain::history::{explain_history, parse_actions, History, HistoryConfig};
+use crate::explain::lexicon::Lexicon;
+use crate::explain::oracle::{Labels, ProgramOracle};
+use crate::explain::questions::{answer, Answer, AnswerError, Mode, Session};
+use crate::explain::term::Term;
+use crate::plan::{plan, PlanConfig};
+
+/// `lucent explain --help`.
+const HELP: &str = "\
+usage: lucent explain SCENE.ald... [--happened PLAN] [--goal LITERALS] -q QUESTION [options]
+       lucent explain PROGRAM.lp (--why ATOM | --why-not ATOM) [options]
+       lucent ask SCENE.ald... [--happened PLAN] [--goal LITERALS] [options]
+
+Answers questions about a history of the robot (DOMAIN.md 6): plan description, why did you
+X, why did you not X, why did you believe Y. The history is the scene (AL_d files, usually a
+scene that includes domains/ra/kb_full.ald) with an executed plan (--happened \"a@0; b@1\" or
+one action per `;`), or else the first minimal plan the planner finds for the goal.
+With --why/--why-not, explains an atom of the first answer set of any clingo program.
+
+Options:
+  -q, --question TEXT   the question (explain)
+  --happened PLAN       the executed actions, in step order
+  --goal LITERALS       a goal (AL_d literals, `relation(on, a, b), in_hand(rob1, c)`)
+  --profile NAME        the description's profile
+  -c NAME=VALUE         a switch of the description (or a constant of a clingo program)
+  --max-horizon H       the planner's horizon budget (default 10)
+  --full                full mode: every reason, not only the first
+  --outf=2              JSON: {\"type\", \"answer\", \"literals\", \"tree\"}
+  --dot FILE            the proof tree as Graphviz DOT
+  --svg FILE            the proof tree as SVG
+";
+
+/// The parsed command line.
+#[derive(Default)]
+struct Args {
+    files: Vec<String>,
+    question: Option<String>,
+    happened: Option<String>,
+    goal: Option<String>,
+    profile: Option<String>,
+    overrides: Vec<(String, String)>,
+    max_horizon: Option<usize>,
+    full: bool,
+    json: bool,
+    dot: Option<String>,
+    svg: Option<String>,
+    why: Option<String>,
+    why_not: Option<String>,
+}
+
+fn usage(err: &mut dyn Write, verb: &str, msg: &str) -> std::io::Result<i32> {
+    writeln!(
+        err,
+        "*** ERROR: (lucent): {msg} (try `lucent {verb} --help`)"
+    )?;
+    Ok(super::EXIT_USAGE)
+}
+
+fn parse_args(args: &[String]) -> Result<Args, String> {
+    let mut a = Args::default();
+    let mut i = 0;
+    while i < args.len() {
+        let arg = args[i].as_str();
+        let (name, inline) = match arg.split_once('=') {
+            Some((n, v)) if n.starts_with("--") => (n, Some(v.to_string())),
+            _ => (arg, None),
+        };
+        let value = |i: &mut usize| -> Result<String, String> {
+            if let Some(v) = inline.clone() {
+                return Ok(v);
+            }
+            *i += 1;
+            args.get(*i)
+                .cloned()
+                .ok_or_else(|| format!("'{name}' needs a value"))
+        };
+        match name {
+            "-q" | "--question" => a.question = Some(value(&mut i)?),
+            "--happened" => a.happened = Some(value(&mut i)?),
+            "--goal" => a.goal = Some(value(&mut i)?),
+            "--profile" => a.profile = Some(value(&mut i)?),
+            "--max-horizon" => {
+                let v = value(&mut i)?;
+                a.max_horizon = Some(
+                    v.parse()
+                        .map_err(|_| format!("'--max-horizon {v}': expected a number"))?,
+                );
+            }
+            "--full" => a.full = true,
+            "--outf" => match value(&mut i)?.as_str() {
+                "2" => a.json = true,
+                "0" => a.json = false,
+                v => return Err(format!("'--outf={v}': expected 0 or 2")),
+            },
+            "--dot" => a.dot = Some(value(&mut i)?),
+            "--svg" => a.svg = Some(value(&mut i)?),
+            "--why" => a.why = Some(value(&mut i)?),
+            "--why-not" => a.why_not = Some(value(&mut i)?),
+            "-c" => {
+                let v = value(&mut i)?;
+                let (n, v) = v
+                    .split_once('=')
+                    .ok_or_else(|| format!("'-c {v}': expected -c NAME=VALUE"))?;
+                a.overrides
+                    .push((n.trim().to_string(), v.trim().to_string()));
+            }
+            _ if arg.starts_with("-c") && arg.len() > 2 => {
+                let v = &arg[2..];
+                let (n, v) = v
+                    .split_once('=')
+                    .ok_or_else(|| format!("'{arg}': expected -c NAME=VALUE"))?;
+                a.overrides
+                    .push((n.trim().to_string(), v.trim().to_string()));
+            }
+            _ if arg.starts_with('-') && arg != "-" => {
+                return Err(format!("'{arg}': unknown option"));
+            }
+            _ => a.files.push(arg.to_string()),
+        }
+        i += 1;
+    }
+    Ok(a)
+}
+
+/// `lucent explain`.
+pub fn run_explain(
+    args: &[String],
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<i32> {
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        write!(out, "{HELP}")?;
+        return Ok(0);
+    }
+    let a = match parse_args(args) {
+        Ok(a) => a,
+        Err(m) => return usage(err, "explain", &m),
+    };
+    if a.files.is_empty() {
+        return usage(err, "explain", "`lucent explain` needs a file");
+    }
+    if a.why.is_some() || a.why_not.is_some() {
+        return run_generic(&a, out, err);
+    }
+    let Some(question) = a.question.clone() else {
+        return usage(
+            err,
+            "explain",
+            "`lucent explain` needs a question (-q TEXT)",
+        );
+    };
+    let (history, no_plan) = match load_history(&a, err)? {
+        Ok(h) => h,
+        Err(code) => return Ok(code),
+    };
+    let lexicon = Lexicon::ra();
+    let mut session = Session::default();
+    let reply = respond(&history, no_plan, &lexicon, &question, &a, &mut session);
+    emit(&reply, &a, out, err)?;
+    Ok(if reply.understood {
+        0
+    } else {
+        super::EXIT_INPUT
+    })
+}
+
+/// `lucent ask`: one question per line of standard input (line editing on a terminal).
+pub fn run_ask(
+    args: &[String],
+    echo: bool,
+    input: &mut dyn BufRead,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<i32> {
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        write!(out, "{HELP}")?;
+        return Ok(0);
+    }
+    let a = match parse_args(args) {
+        Ok(a) => a,
+        Err(m) => return usage(err, "ask", &m),
+    };
+    if a.files.is_empty() {
+        return usage(err, "ask", "`lucent ask` needs a scene file");
+    }
+    let (history, no_plan) = match load_history(&a, err)? {
+        Ok(h) => h,
+        Err(code) => return Ok(code),
+    };
+    let lexicon = Lexicon::ra();
+    let mut session = Session::default();
+    let plan: Vec<String> = history
+        .plan
+        .iter()
+        .map(|(i, x)| format!("{x}@{i}"))
+        .collect();
+    if !a.json {
+        writeln!(out, "History: {}", plan.join("; "))?;
+        writeln!(out, "Ask me about it (an empty line or `quit` ends).")?;
+    }
+    let mut line = String::new();
+    loop {
+        line.clear();
+        if !a.json {
+            write!(out, "> ")?;
+            out.flush()?;
+        }
+        if input.read_line(&mut line)? == 0 {
+            break;
+        }
+        let q = line.trim();
+        if q.is_empty() || q == "quit" || q == "exit" {
+            break;
+        }
+        if !a.json && echo {
+            writeln!(out, "{q}")?;
+        }
+        let reply = respond(&history, no_plan, &lexicon, q, &a, &mut session);
+        emit(&reply, &a, out, err)?;
+    }
+    Ok(0)
+}
+
+/// One reply: the answer (or the reply to a question not understood).
+struct Reply {
+    answer: Answer,
+    understood: bool,
+}
+
+fn respond(
+    history: &History,
+    no_plan: Option<usize>,
+    lexicon: &Lexicon,
+    question: &str,
+    a: &Args,
+    session: &mut Session,
+) -> Reply {
+    let objects = history.objects();
+    let names: Vec<&str> = objects.iter().map(String::as_str).collect();
+    let parser = Parser::new(lexicon, &names);
+    let q = match parser.parse(question) {
+        Ok(q) => q,
+        Err(e) => {
+            return Reply {
+                answer: Answer {
+                    kind: "not_understood",
+                    text: e.reply(lexicon),
+                    literals: Vec::new(),
+                    tree: None,
+                },
+                understood: false,
+            }
+        }
+    };
+    let horizon = a.max_horizon.unwrap_or(10);
+    match &q {
+        Question::WhyNoPlan { goal } => {
+            let answer = match why_no_plan(&history.problem, lexicon, goal, horizon) {
+                Ok(x) => x,
+                Err(e) => Answer {
+                    kind: "no_plan",
+                    text: e.to_string(),
+                    literals: Vec::new(),
+                    tree: None,
+                },
+            };
+            return Reply {
+                answer,
+                understood: true,
+            };
+        }
+        Question::WhatIf { action, step } => {
+            return Reply {
+                answer: what_if(history, lexicon, action, *step, session),
+                understood: true,
+            };
+        }
+        _ => {}
+    }
+    if let Some(h) = no_plan {
+        return Reply {
+            answer: Answer {
+                kind: q.kind(),
+                text: format!(
+                    "I found no plan of at most {h} steps, so I have no history to explain. \
+                     You can ask: why is there no plan?"
+                ),
+                literals: Vec::new(),
+                tree: None,
+            },
+            understood: true,
+        };
+    }
+    let scn = history.scenario();
+    let mode = if a.full { Mode::Full } else { Mode::Concise };
+    match answer(&scn, lexicon, &q, mode, session) {
+        Ok(answer) => Reply {
+            answer,
+            understood: true,
+        },
+        Err(AnswerError::NeedsSolver) => Reply {
+            answer: Answer {
+                kind: q.kind(),
+                text: match q.kind() {
+                    "goal" => "That is a task, not a question about my history: \
+                               `lucent plan` plans it."
+                        .into(),
+                    _ => "I cannot answer that kind of question.".into(),
+                },
+                literals: Vec::new(),
+                tree: None,
+            },
+            understood: true,
+        },
+        Err(AnswerError::Recheck(e)) => Reply {
+            answer: Answer {
+                kind: q.kind(),
+                text: format!("My explanation failed its own check ({e}); I will not give it."),
+                literals: Vec::new(),
+                tree: None,
+            },
+            understood: true,
+        },
+    }
+}
+
+fn emit(reply: &Reply, a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<()> {
+    if a.json {
+        writeln!(out, "{}", reply.answer.to_json())?;
+    } else {
+        writeln!(out, "{}", reply.answer.text)?;
+    }
+    write_pictures(&reply.answer, a, err)
+}
+
+fn write_pictures(answer: &Answer, a: &Args, err: &mut dyn Write) -> std::io::Result<()> {
+    for (file, svg) in [(&a.dot, false), (&a.svg, true)] {
+        let Some(file) = file else { continue };
+        let Some(tree) = &answer.tree else {
+            writeln!(
+                err,
+                "lucent: this answer has no proof tree; {file} not written"
+            )?;
+            continue;
+        };
+        let text = if svg {
+            draw::svg(tree)
+        } else {
+            draw::dot(tree)
+        };
+        if let Err(e) = std::fs::write(file, text) {
+            writeln!(err, "*** ERROR: (lucent): {file}: {e}")?;
+        }
+    }
+    Ok(())
+}
+
+/// Reads the AL_d files, adds `--goal`, and makes the history (the executed plan, or the first
+/// minimal plan). `Err(code)` after the error was written.
+fn load_history(
+    a: &Args,
+    err: &mut dyn Write,
+) -> std::io::Result<Result<(History, Option<usize>), i32>> {
+    let mut sources = SourceMap::new();
+    let mut desc = action::ast::Description::default();
+    let mut read =
+        |path: &std::path::Path| std::fs::read_to_string(path).map_err(|e| e.to_string());
+    let mut diags = crate::base::Diagnostics::default();
+    for name in &a.files {
+        let text = match std::fs::read_to_string(name) {
+            Ok(t) => t,
+            Err(e) => {
+                writeln!(err, "*** ERROR: (lucent): {name}: {e}")?;
+                return Ok(Err(super::EXIT_INPUT));
+            }
+        };
+        let id = sources.add(name.clone(), text);
+        let parsed = action::load(&mut sources, id, &mut read);
+        diags.extend(parsed.diagnostics);
+        desc.statements.extend(parsed.description.statements);
+    }
+    if let Some(goal) = &a.goal {
+        let text = format!("goal {goal}.\n");
+        let id = sources.add("<goal>", text.clone());
+        let parsed = action::parse(id, &text);
+        diags.extend(parsed.diagnostics);
+        // The command line's goal replaces the scene's.
+        desc.statements
+            .retain(|s| !matches!(s.kind, action::ast::StatementKind::Goal { .. }));
+        desc.statements.extend(parsed.description.statements);
+    }
+    if diags.has_errors() {
+        write!(err, "{}", diags.render(&sources))?;
+        writeln!(err, "*** ERROR: (lucent): not a valid AL_d description")?;
+        return Ok(Err(super::EXIT_INPUT));
+    }
+    let overrides: Vec<(String, Value)> = a
+        .overrides
+        .iter()
+        .map(|(n, v)| (n.clone(), super::action::value_of(v)))
+        .collect();
+    let mut no_plan = None;
+    let actions: Vec<Symbol> = match &a.happened {
+        Some(text) => match parse_actions(text) {
+            Ok(x) => x,
+            Err(m) => {
+                writeln!(err, "*** ERROR: (lucent): --happened: {m}")?;
+                return Ok(Err(super::EXIT_INPUT));
+            }
+        },
+        None => {
+            let config = PlanConfig {
+                max_horizon: a.max_horizon.unwrap_or(10),
+                profile: a.profile.clone(),
+                overrides: overrides.clone(),
+                ..PlanConfig::default()
+            };
+            match plan(&desc, &sources, &config) {
+                Ok(found) => found.plans[0].actions.clone(),
+                Err(crate::plan::PlanError::NoPlanWithin(h)) => {
+                    // No history: the initial state alone, for "why is there no plan?".
+                    no_plan = Some(h);
+                    Vec::new()
+                }
+                Err(e) => {
+                    writeln!(err, "*** ERROR: (lucent): {e}")?;
+                    return Ok(Err(match e {
+                        crate::plan::PlanError::Input(_) => super::EXIT_INPUT,
+                        _ => super::EXIT_UNSAT,
+                    }));
+                }
+            }
+        }
+    };
+    let config = HistoryConfig {
+        profile: a.profile.clone(),
+        overrides,
+    };
+    match explain_history(&desc, &mut sources, &actions, &config) {
+        Ok(h) => Ok(Ok((h, no_plan))),
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {}", e.to_string().trim_end())?;
+            Ok(Err(match e {
+                crate::explain::history::HistoryError::Input(_) => super::EXIT_INPUT,
+                crate::explain::history::HistoryError::Inconsistent(_) => super::EXIT_UNSAT,
+            }))
+        }
+    }
+}
+
+/// `--why ATOM` / `--why-not ATOM` over any clingo program.
+fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
+    let (atom_text, negative) = match (&a.why, &a.why_not) {
+        (Some(x), None) => (x.clone(), false),
+        (None, Some(x)) => (x.clone(), true),
+        _ => return usage(err, "explain", "give one of --why and --why-not"),
+    };
+    let atom = match Term::parse(&atom_text) {
+        Ok(t) if t.is_ground() && t.name().is_some_and(|n| !n.is_empty()) => t,
+        _ => {
+            writeln!(
+                err,
+                "*** ERROR: (lucent): '{atom_text}': expected a ground atom such as p(1,a)"
+            )?;
+            return Ok(super::EXIT_INPUT);
+        }
+    };
+    let mut sources = SourceMap::new();
+    let mut program = crate::syntax::ast::Program::default();
+    let mut diags = crate::base::Diagnostics::default();
+    for name in &a.files {
+        let text = match std::fs::read_to_string(name) {
+            Ok(t) => t,
+            Err(e) => {
+                writeln!(err, "*** ERROR: (lucent): {name}: {e}")?;
+                return Ok(super::EXIT_INPUT);
+            }
+        };
+        let dialect = if name.ends_with(".sp") {
+            crate::syntax::ast::Dialect::Sparc
+        } else {
+            crate::syntax::ast::Dialect::Clingo
+        };
+        let id = sources.add(name.clone(), text.clone());
+        let parse = crate::syntax::parse(id, &text, dialect);
+        diags.extend(parse.diagnostics);
+        program.dialect = parse.program.dialect;
+        program.statements.extend(parse.program.statements);
+    }
+    if diags.has_errors() {
+        write!(err, "{}", diags.render(&sources))?;
+        writeln!(err, "*** ERROR: (lucent): parsing failed")?;
+        return Ok(super::EXIT_INPUT);
+    }
+    let labels = Labels::from_program(&program, &|s| sources.location(s.span));
+    let mut consts = Vec::new();
+    for (n, v) in &a.overrides {
+        match crate::control::const_term(v) {
+            Some(t) => consts.push((n.clone(), t)),
+            None => {
+                writeln!(
+                    err,
+                    "*** ERROR: (lucent): '-c {n}={v}': not a constant value"
+                )?;
+                return Ok(super::EXIT_USAGE);
+            }
+        }
+    }
+    let config = ControlConfig {
+        provenance: true,
+        consts,
+        ..ControlConfig::default()
+    };
+    let mut ctl = Control::with_sources(config, sources.clone());
+    let grounded = ctl
+        .add_program(program)
+        .and_then(|()| ctl.ground(&[Part::base()]));
+    if let Err(e) = grounded {
+        writeln!(err, "{}", e.message.trim_end())?;
+        writeln!(err, "*** ERROR: (lucent): grounding stopped")?;
+        return Ok(super::EXIT_INPUT);
+    }
+    let mut model = None;
+    ctl.solve(&SolveOptions::default(), |m| {
+        model = Some(m.raw().clone());
+        false
+    });
+    let Some(model) = model else {
+        writeln!(
+            out,
+            "UNSATISFIABLE: the program has no answer set to explain."
+        )?;
+        return Ok(super::EXIT_UNSAT);
+    };
+    let oracle = match ProgramOracle::new(ctl, model, labels) {
+        Ok(o) => o,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(super::EXIT_UNAVAILABLE);
+        }
+    };
+    let result = if negative {
+        generic::why_not(&oracle, &atom)
+    } else {
+        generic::why(&oracle, &atom)
+    };
+    let answer = match result {
+        Ok(x) => x,
+        Err(e) => Answer {
+            kind: if negative { "why_not" } else { "why" },
+            text: format!("The explanation failed its own check ({e}); it is not given."),
+            literals: Vec::new(),
+            tree: None,
+        },
+    };
+    let reply = Reply {
+        answer,
+        understood: true,
+    };
+    emit(&reply, a, out, err)?;
+    Ok(0)
+}

@@ -1,0 +1,413 @@
+//! `lucent run`: the sense-plan-act loop of [`crate::plan::act`] in the simulated tabletop
+//! world, on a scene file or a generated scene (preset and seed), towards a goal given as
+//! literals or drawn at random (DOMAIN.md 7.1). A progress line per event goes to standard
+//! error (and to `--log FILE`); the summary goes to standard output, as text or, with
+//! `--outf=2`, as the run's history in JSON (the `--save-history` format).
+//!
+//! Invariants: files are read and written and the clock is read only here; a bad command line
+//! is exit 1, bad input (an unreadable or malformed scene or domain, a goal naming an unknown
+//! object) a message and exit 65, never a panic; a run that reaches the goal (observed, and true
+//! in the simulator's ground truth) exits 0, any other ending 20 (clingo's "no answer").
+
+use std::io::Write;
+use std::time::Instant;
+
+use crate::action;
+use crate::base::SourceMap;
+use crate::control::Symbol;
+use crate::plan::act::{self, Domain, Event, RunConfig};
+use crate::plan::history::History;
+use crate::plan::tabletop::{act_config, random_goal, SimWorld};
+use crate::sim::{self, GenerateConfig, Preset, Scene};
+
+/// KB_full, built in so that `lucent run` and `lucent demo` work from any directory.
+pub const KB_FULL: &str = include_str!("../../domains/ra/kb_full.ald");
+
+/// Exit code of a run that did not reach its goal.
+const EXIT_NOT_REACHED: i32 = 20;
+
+const HELP: &str = "\
+usage: lucent run [DOMAIN.ald] (--scene FILE.json | --preset NAME --seed N) [--goal LITERAL]...
+                  [options]
+
+Runs the sense-plan-act loop (DOMAIN.md 4.4) in the simulated tabletop world: perceive (with
+noise), doubt what is inconsistent, plan a minimal plan, execute one action at a time in the
+physics world, perceive again, compare the prediction with the observation, and replan after a
+discrepancy or a failed action, until the goal is observed (and confirmed by a second look) or
+a budget runs out. DOMAIN.ald defaults to the built-in KB_full (domains/ra/kb_full.ald).
+
+  --scene FILE            a scene file (lucent sim generate -o FILE writes one)
+  --preset NAME           generate a scene: real, simulated or h1 (default real)
+  --seed N                the scene's seed (default 0); it also seeds noise and failures
+  --goal LITERAL          a goal literal: on(X,Y), relation(S,X,Y) or in_hand(rob1,X);
+                          repeat for a conjunction; without it a goal is drawn (DOMAIN.md 7.1)
+  --goal-seed N           the seed of the drawn goal (default: the scene's seed)
+  --perception-noise P    probability that a perceived relation is wrong (default 0.15)
+  --actuation-noise P     probability that an action slips (default 0.15)
+  --threshold T           confidence from which a reading is taken (default 0.5)
+  --max-actions N         action budget (default 24)
+  --max-plans N           planning budget, the first plan included (default 12)
+  --max-horizon H         the planner's horizon budget (default 12)
+  --looks N               looks per perception, fused by majority (default 1)
+  --no-confirm            stop at the first observation of the goal, without looking again
+  --log FILE              write the progress lines and the summary to FILE
+  --save-history FILE     write the run's history as JSON (domains/ra/README.md)
+  --outf=2                print the history as JSON instead of the text summary
+
+Exit code: 0 when the goal was reached, 20 when not, 65 for bad input, 1 for a bad command line.
+";
+
+/// The parsed command line.
+#[derive(Debug, Default)]
+pub struct RunArgs {
+    /// The domain file; `None` for the built-in KB_full.
+    pub domain: Option<String>,
+    /// A scene file.
+    pub scene: Option<String>,
+    /// The preset of a generated scene.
+    pub preset: Option<String>,
+    /// The seed.
+    pub seed: u64,
+    /// The goal literals as given.
+    pub goals: Vec<String>,
+    /// The goal seed.
+    pub goal_seed: Option<u64>,
+    /// Perception noise.
+    pub perception: f64,
+    /// Actuation noise.
+    pub actuation: f64,
+    /// Confidence threshold.
+    pub threshold: f64,
+    /// The loop's configuration.
+    pub config: RunConfig,
+    /// `--log FILE`.
+    pub log: Option<String>,
+    /// `--save-history FILE`.
+    pub save: Option<String>,
+    /// `--outf=2`.
+    pub json: bool,
+    /// `--help`.
+    pub help: bool,
+}
+
+fn parse(args: &[String]) -> Result<RunArgs, String> {
+    let mut out = RunArgs {
+        perception: 0.15,
+        actuation: 0.15,
+        threshold: 0.5,
+        ..RunArgs::default()
+    };
+    let mut i = 0;
+    while i < args.len() {
+        let arg = args[i].as_str();
+        let (name, inline) = match arg.split_once('=') {
+            Some((n, v)) if n.starts_with("--") => (n, Some(v.to_string())),
+            _ => (arg, None),
+        };
+        let value = |i: &mut usize| -> Result<String, String> {
+            if let Some(v) = inline.clone() {
+                return Ok(v);
+            }
+            *i += 1;
+            args.get(*i)
+                .cloned()
+                .ok_or_else(|| format!("{name} needs a value"))
+        };
+        fn number<T: std::str::FromStr>(name: &str, v: String) -> Result<T, String> {
+            v.parse()
+                .map_err(|_| format!("{name} needs a number, got `{v}`"))
+        }
+        fn probability(name: &str, v: String) -> Result<f64, String> {
+            let p: f64 = number(name, v)?;
+            if (0.0..=1.0).contains(&p) {
+                Ok(p)
+            } else {
+                Err(format!("{name} needs a probability in [0, 1], got {p}"))
+            }
+        }
+        match name {
+            "--help" | "-h" => out.help = true,
+            "--scene" => out.scene = Some(value(&mut i)?),
+            "--preset" => out.preset = Some(value(&mut i)?),
+            "--seed" => out.seed = number(name, value(&mut i)?)?,
+            "--goal" => out.goals.push(value(&mut i)?),
+            "--goal-seed" => out.goal_seed = Some(number(name, value(&mut i)?)?),
+            "--perception-noise" => out.perception = probability(name, value(&mut i)?)?,
+            "--actuation-noise" => out.actuation = probability(name, value(&mut i)?)?,
+            "--threshold" => out.threshold = probability(name, value(&mut i)?)?,
+            "--max-actions" => out.config.max_actions = number(name, value(&mut i)?)?,
+            "--max-plans" => out.config.max_plans = number(name, value(&mut i)?)?,
+            "--max-horizon" => out.config.plan.max_horizon = number(name, value(&mut i)?)?,
+            "--no-confirm" => out.config.confirm_goal = false,
+            "--looks" => out.config.looks = number(name, value(&mut i)?)?,
+            "--log" => out.log = Some(value(&mut i)?),
+            "--save-history" => out.save = Some(value(&mut i)?),
+            "--outf" => match value(&mut i)?.as_str() {
+                "2" => out.json = true,
+                "0" => out.json = false,
+                v => return Err(format!("--outf={v}: expected 0 or 2")),
+            },
+            a if a.starts_with('-') && a.len() > 1 => {
+                return Err(format!("unknown option `{a}` of `lucent run` (try --help)"))
+            }
+            _ if out.domain.is_none() => out.domain = Some(arg.to_string()),
+            _ => {
+                return Err(format!(
+                    "`lucent run` takes one domain file, not also `{arg}`"
+                ))
+            }
+        }
+        i += 1;
+    }
+    if out.scene.is_some() && out.preset.is_some() {
+        return Err("--scene and --preset exclude each other".into());
+    }
+    Ok(out)
+}
+
+/// Loads the domain: the file (with its includes) or the built-in KB_full.
+pub fn load_domain(path: Option<&str>) -> Result<Domain, String> {
+    let mut sources = SourceMap::new();
+    let file = match path {
+        Some(p) => {
+            let text = std::fs::read_to_string(p).map_err(|e| format!("{p}: {e}"))?;
+            sources.add(p.to_string(), text)
+        }
+        None => sources.add(
+            "domains/ra/kb_full.ald (built in)".to_string(),
+            KB_FULL.to_string(),
+        ),
+    };
+    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let parsed = action::load(&mut sources, file, &mut read);
+    if parsed.has_errors() {
+        let mut d = crate::base::Diagnostics::default();
+        d.extend(parsed.diagnostics);
+        return Err(format!("{}not a valid AL_d domain", d.render(&sources)));
+    }
+    Ok(Domain {
+        description: parsed.description,
+        sources,
+    })
+}
+
+/// The scene: read from a file or generated.
+pub fn load_scene(args: &RunArgs) -> Result<(Scene, String), String> {
+    if let Some(path) = &args.scene {
+        let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
+        let scene = Scene::from_json(&text).map_err(|e| format!("{path}: {e}"))?;
+        return Ok((scene, path.clone()));
+    }
+    let preset =
+        Preset::parse(args.preset.as_deref().unwrap_or("real")).map_err(|e| e.to_string())?;
+    let scene =
+        sim::generate(&GenerateConfig::new(preset, args.seed)).map_err(|e| e.to_string())?;
+    Ok((
+        scene,
+        format!("generated {} seed {}", preset.name(), args.seed),
+    ))
+}
+
+/// The goal: parsed from the command line, every constant an object of the scene, the table or
+/// the robot; or drawn at random.
+pub fn goal_of(args: &RunArgs, world: &mut SimWorld) -> Result<Vec<Symbol>, String> {
+    if args.goals.is_empty() {
+        let seed = args.goal_seed.unwrap_or(args.seed);
+        return random_goal(world, seed)
+            .map(|g| vec![g])
+            .ok_or_else(|| "the scene admits no goal to draw".to_string());
+    }
+    let mut known: Vec<String> = world.scene.objects.iter().map(|o| o.name.clone()).collect();
+    known.push(sim::TABLE.to_string());
+    known.push(world.scene.robot.clone());
+    let mut goal = Vec::new();
+    for text in &args.goals {
+        let g = act::goal_literal(text)?;
+        let args_of = g.args();
+        let names = if g.is("relation", 3) {
+            &args_of[1..]
+        } else {
+            args_of
+        };
+        for a in names {
+            let n = a.to_string();
+            if !known.contains(&n) {
+                return Err(format!(
+                    "goal `{text}`: `{n}` is no object of the scene (objects: {})",
+                    known[..known.len() - 2].join(", ")
+                ));
+            }
+        }
+        goal.push(g);
+    }
+    Ok(goal)
+}
+
+/// One progress line for an event.
+pub fn describe(event: &Event) -> String {
+    match event {
+        Event::Perceived {
+            step,
+            look,
+            doubted,
+        } => {
+            let again = if *look > 0 { " (looked again)" } else { "" };
+            format!("[step {step}] perceived{again}; {doubted} observation(s) doubted")
+        }
+        Event::Planned(p) => format!(
+            "[step {}] plan {} ({}): {}",
+            p.step,
+            p.actions.len(),
+            p.reason,
+            if p.actions.is_empty() {
+                "nothing to do".to_string()
+            } else {
+                p.actions.join("; ")
+            }
+        ),
+        Event::Acted {
+            step,
+            action,
+            failure,
+        } => match failure {
+            None => format!("[step {step}] executed {action}"),
+            Some(f) => format!("[step {step}] executed {action}: FAILED, {f}"),
+        },
+        Event::Discrepancy(d) => {
+            let mut parts = Vec::new();
+            if let Some(f) = &d.failure {
+                parts.push(format!("failure: {f}"));
+            }
+            if !d.unexpected.is_empty() {
+                parts.push(format!("unexpected {}", d.unexpected.join(", ")));
+            }
+            if !d.extra.is_empty() {
+                parts.push(format!("missing {}", d.extra.join(", ")));
+            }
+            format!(
+                "[step {}] discrepancy after {}: {}; replanning",
+                d.step + 1,
+                d.action,
+                parts.join("; ")
+            )
+        }
+    }
+}
+
+/// The text summary of a run.
+pub fn summary(history: &History) -> String {
+    let mut out = String::new();
+    out.push_str(&format!("Scene: {}\n", history.scene));
+    out.push_str(&format!("Goal: {}\n", history.goal.join(", ")));
+    out.push_str(&format!("Executed: {}\n", history.actions().join("; ")));
+    out.push_str(&format!(
+        "Plans: {} ({} replan(s)); discrepancies: {}\n",
+        history.plans.len(),
+        history.replans(),
+        history.discrepancies.len()
+    ));
+    let ending = history
+        .ending
+        .as_ref()
+        .map_or("unfinished".to_string(), |e| e.to_string());
+    let truth = match history.goal_in_truth {
+        Some(true) => "holds in the world",
+        Some(false) => "does NOT hold in the world",
+        None => "cannot be checked in the world",
+    };
+    out.push_str(&format!("Ending: {ending}; the goal {truth}\n"));
+    out.push_str(&format!(
+        "Result: {}\n",
+        if history.succeeded() {
+            "GOAL REACHED"
+        } else {
+            "GOAL NOT REACHED"
+        }
+    ));
+    out
+}
+
+/// `lucent run`.
+pub fn run_run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
+    let args = match parse(args) {
+        Ok(a) => a,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(super::EXIT_USAGE);
+        }
+    };
+    if args.help {
+        write!(out, "{HELP}")?;
+        return Ok(0);
+    }
+    let input_error = |err: &mut dyn Write, m: String| -> std::io::Result<i32> {
+        writeln!(err, "*** ERROR: (lucent): {}", m.trim_end())?;
+        Ok(super::EXIT_INPUT)
+    };
+    let domain = match load_domain(args.domain.as_deref()) {
+        Ok(d) => d,
+        Err(m) => return input_error(err, m),
+    };
+    let (scene, name) = match load_scene(&args) {
+        Ok(s) => s,
+        Err(m) => return input_error(err, m),
+    };
+    let mut world = SimWorld::new(
+        scene,
+        act_config(args.perception, args.actuation, args.threshold),
+    );
+    let goal = match goal_of(&args, &mut world) {
+        Ok(g) => g,
+        Err(m) => return input_error(err, m),
+    };
+    let mut log = match &args.log {
+        Some(path) => match std::fs::File::create(path) {
+            Ok(f) => Some(f),
+            Err(e) => return input_error(err, format!("cannot write {path}: {e}")),
+        },
+        None => None,
+    };
+    let start = Instant::now();
+    let goal_text: Vec<String> = goal.iter().map(Symbol::to_string).collect();
+    let head = format!("lucent run: {name}; goal {}", goal_text.join(", "));
+    writeln!(err, "{head}")?;
+    if let Some(f) = log.as_mut() {
+        writeln!(f, "{head}")?;
+    }
+    let mut io_error = None;
+    let history = act::run(&domain, &mut world, &goal, &name, &args.config, &mut |e| {
+        let line = format!("{:7.2}s {}", start.elapsed().as_secs_f64(), describe(&e));
+        let mut write = || -> std::io::Result<()> {
+            writeln!(err, "{line}")?;
+            if let Some(f) = log.as_mut() {
+                writeln!(f, "{line}")?;
+            }
+            Ok(())
+        };
+        if let Err(e) = write() {
+            io_error.get_or_insert(e);
+        }
+    });
+    if let Some(e) = io_error {
+        return Err(e);
+    }
+    if let Some(path) = &args.save {
+        if let Err(e) = std::fs::write(path, history.to_json()) {
+            return input_error(err, format!("cannot write {path}: {e}"));
+        }
+    }
+    let text = summary(&history);
+    if let Some(f) = log.as_mut() {
+        write!(f, "{text}")?;
+    }
+    if args.json {
+        writeln!(out, "{}", history.to_json())?;
+    } else {
+        write!(out, "{text}")?;
+    }
+    Ok(if history.succeeded() {
+        0
+    } else {
+        EXIT_NOT_REACHED
+    })
+}

@@ -1,0 +1,401 @@
+//! The two questions beyond the paper, which need new solves (DOMAIN.md 6 extended by issue 14):
+//!
+//! - **What if** ⟨action X at step I⟩: the history with X at step I instead of the plan's
+//!   action, the later actions kept; if they cannot all be executed any more, the history cut
+//!   after X. Re-solved (`history::explain_history`), and the first step at which the beliefs
+//!   differ is named: the `on` relations and `in_hand` literals that would have held, instead of
+//!   those that did. If X itself could not have been executed, the answer says so and why
+//!   (the why-not answer over the original history).
+//! - **Why no plan**: the planning problem at horizon H with each goal literal, each
+//!   initial-state fact and each `never` constraint behind an assumption (an external atom that
+//!   switches it on); unsatisfiable with all of them on, the set is shrunk one assumption at a
+//!   time (deletion: an element stays only if the problem becomes solvable without it), so the
+//!   answer is a *minimal* set of goal literals, observations and constraints that together make
+//!   the task impossible. One grounding, one solve call per assumption tried (the assumptions
+//!   are external atoms whose values each call sets; the solver has no unsat-core API yet, so
+//!   the core is found by deletion rather than read off a failed solve).
+//!
+//! Invariants: nothing here reads files; every answer comes from solves of the problem, never
+//! from the question's wording; a problem that does not translate is a [`HistoryError`].
+
+use super::history::{explain_history, History, HistoryError, Problem};
+use super::lexicon::Lexicon;
+use super::oracle::symbol_of;
+use super::questions::{answer, Answer, Mode, Session};
+use super::term::Term;
+use super::verbalize::{ActionForm, Tense, Verbalizer};
+use crate::action::{self, ast::Value, AxiomOrigin, Options, OriginKind};
+use crate::base::{Diagnostics, SourceMap};
+use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol, TruthValue};
+use crate::syntax::ast;
+
+/// What if the robot had done `action` at `step` (default: the step of the plan's action with
+/// the same name and object, else step 0)?
+pub fn what_if(
+    h: &History,
+    lexicon: &Lexicon,
+    action: &Term,
+    step: Option<u32>,
+    session: &mut Session,
+) -> Answer {
+    let v = Verbalizer::new(lexicon);
+    let simple = |text: String| Answer {
+        kind: "what_if",
+        text,
+        literals: Vec::new(),
+        tree: None,
+    };
+    let step = step.unwrap_or_else(|| {
+        h.plan
+            .iter()
+            .find(|(_, a)| a.name() == action.name() && a.arg(1) == action.arg(1))
+            .map_or(0, |(i, _)| *i)
+    });
+    if step > h.last_step {
+        return simple(v.template(
+            "outside_history",
+            &[
+                ("step", &step.to_string()),
+                ("last", &h.last_step.to_string()),
+            ],
+        ));
+    }
+    session.last_step = Some(step);
+    let Some(x) = symbol_of(action) else {
+        return simple(v.template("no_reason", &[]));
+    };
+    let words = v.action(action, ActionForm::Past);
+    let at = v.step(i64::from(step));
+    let actions: Vec<Symbol> = h.plan.iter().filter_map(|(_, a)| symbol_of(a)).collect();
+    let i = step as usize;
+    let mut tried: Vec<Vec<Symbol>> = Vec::new();
+    let mut with_rest = actions[..i.min(actions.len())].to_vec();
+    with_rest.push(x.clone());
+    let cut = with_rest.clone();
+    if i + 1 < actions.len() {
+        with_rest.extend_from_slice(&actions[i + 1..]);
+        tried.push(with_rest);
+    }
+    tried.push(cut);
+    let mut problem = h.problem.clone();
+    let mut found = None;
+    for (k, acts) in tried.iter().enumerate() {
+        if let Ok(new) = explain_history(&problem.desc, &mut problem.sources, acts, &problem.config)
+        {
+            found = Some((new, k + 1 < tried.len() || tried.len() == 1));
+            break;
+        }
+    }
+    let Some((new, kept_rest)) = found else {
+        // X itself cannot be executed there: say why, from the original history.
+        let q = super::english::Question::WhyNotAction {
+            action: action.clone(),
+            step: Some(step),
+        };
+        let reason = answer(
+            &h.scenario(),
+            lexicon,
+            &q,
+            Mode::Concise,
+            &mut Session::default(),
+        )
+        .map(|a| a.text)
+        .unwrap_or_default();
+        let mut a = simple(v.template(
+            "what_if_impossible",
+            &[
+                ("action", &v.action(action, ActionForm::Base)),
+                ("step", &at),
+                ("reason", &reason),
+            ],
+        ));
+        a.literals = vec![super::english::occurs(action, step)
+            .complement()
+            .expect("occurs has a sign")];
+        return a;
+    };
+    // The first step after `step` whose `on` and `in_hand` beliefs differ.
+    let shown = |t: &Term| -> bool {
+        let Some(f) = t.arg(0) else { return false };
+        t.name() == Some("holds")
+            && !t.is_neg()
+            && (f.name() == Some("in_hand")
+                || (f.name() == Some("relation") && f.arg(0).and_then(Term::name) == Some("on")))
+    };
+    let last = new.last_step.min(h.last_step);
+    let old_lits = h.oracle.true_literals();
+    let new_lits = new.oracle.true_literals();
+    for s in step + 1..=new.last_step.max(step + 1) {
+        let at_s = |lits: &[Term]| -> Vec<Term> {
+            let mut v: Vec<Term> = lits
+                .iter()
+                .filter(|t| shown(t) && super::tree::step_of(t) == Some(s))
+                .cloned()
+                .collect();
+            v.sort();
+            v
+        };
+        let old = at_s(&old_lits);
+        let now = at_s(&new_lits);
+        let added: Vec<Term> = now.iter().filter(|t| !old.contains(t)).cloned().collect();
+        let removed: Vec<Term> = old.iter().filter(|t| !now.contains(t)).cloned().collect();
+        if added.is_empty() && removed.is_empty() && s < last {
+            continue;
+        }
+        if added.is_empty() && removed.is_empty() {
+            break;
+        }
+        let mut text = v.template(
+            "what_if",
+            &[
+                ("action", &words),
+                ("step", &at),
+                ("later", &v.step(i64::from(s))),
+                ("literals", &v.join(&added, Tense::Past)),
+                ("old", &v.join(&removed, Tense::Past)),
+            ],
+        );
+        text = text.replace(", instead of .", ".");
+        if !kept_rest {
+            if let Some((_, next)) = h.plan.iter().find(|(j, _)| *j == step + 1) {
+                text.push(' ');
+                text.push_str(&v.template(
+                    "what_if_stuck",
+                    &[("next", &v.action(next, ActionForm::Base))],
+                ));
+            }
+        }
+        let mut literals = vec![super::english::occurs(action, step)];
+        literals.extend(added);
+        return Answer {
+            kind: "what_if",
+            text,
+            literals,
+            tree: None,
+        };
+    }
+    let mut a = simple(v.template("what_if_same", &[("action", &words), ("step", &at)]));
+    a.literals = vec![super::english::occurs(action, step)];
+    a
+}
+
+/// One assumption of the why-no-plan problem.
+#[derive(Clone, Debug)]
+enum Hyp {
+    /// A goal literal (a fluent).
+    Goal(Term),
+    /// An initial-state fact (`holds(f, 0)` or `hpd`/`obs`), with its statement text.
+    Observation(Term),
+    /// A `never` constraint: its label and one-line text.
+    Constraint(String),
+}
+
+/// The assumption atom of hypothesis `k`.
+const HYP: &str = "lucent_hyp";
+
+/// Why is there no plan of at most `horizon` steps for the problem (with `goal` instead of the
+/// description's goal when it is not empty)? A minimal set of goal literals, observations and
+/// constraints that cannot all hold together.
+pub fn why_no_plan(
+    problem: &Problem,
+    lexicon: &Lexicon,
+    goal: &[Term],
+    horizon: usize,
+) -> Result<Answer, HistoryError> {
+    let v = Verbalizer::new(lexicon);
+    let mut desc = problem.desc.clone();
+    let mut sources: SourceMap = problem.sources.clone();
+    if !goal.is_empty() {
+        desc.statements
+            .retain(|s| !matches!(s.kind, action::ast::StatementKind::Goal { .. }));
+        let text: String = goal.iter().map(|g| format!("goal {g}.\n")).collect();
+        let file = sources.add("<question goal>", text.clone());
+        desc.statements
+            .extend(action::parse(file, &text).description.statements);
+    }
+    let mut overrides = problem.config.overrides.clone();
+    overrides.push(("horizon".into(), Value::Int(horizon as i64)));
+    overrides.push(("horizon_mode".into(), Value::Word("iterative".into())));
+    overrides.push(("planning".into(), Value::Bool(true)));
+    let options = Options {
+        profile: problem.config.profile.clone(),
+        overrides,
+    };
+    let t = action::translate(&desc, &options);
+    if t.has_errors() {
+        let mut d = Diagnostics::default();
+        d.extend(t.diagnostics);
+        return Err(HistoryError::Input(d.render(&sources)));
+    }
+    let mut program = t.program;
+    let hyps = gate(&mut program, &t.origins, &mut sources);
+    let mut ctl = Control::with_sources(ControlConfig::default(), sources.clone());
+    ctl.add_program(program)
+        .map_err(|e| HistoryError::Input(e.message))?;
+    ctl.ground(&[Part::base()])
+        .map_err(|e| HistoryError::Input(e.message))?;
+    let atom = |k: usize| Symbol::function(HYP, vec![Symbol::number(k as i32)]);
+    // The assumption atoms are externals: each call sets their values (a value that the
+    // Control also assumed from the declaration would contradict an assumption).
+    let solvable = |on: &[usize], ctl: &mut Control| -> bool {
+        for k in 0..hyps.len() {
+            let value = if on.contains(&k) {
+                TruthValue::True
+            } else {
+                TruthValue::False
+            };
+            ctl.assign_external(&atom(k), value);
+        }
+        let mut sat = false;
+        ctl.solve(&SolveOptions::default(), |_| {
+            sat = true;
+            false
+        });
+        sat
+    };
+    let all: Vec<usize> = (0..hyps.len()).collect();
+    let h = horizon.to_string();
+    if solvable(&all, &mut ctl) {
+        return Ok(Answer {
+            kind: "no_plan",
+            text: v.template("plan_exists", &[("horizon", &h)]),
+            literals: Vec::new(),
+            tree: None,
+        });
+    }
+    if !solvable(&[], &mut ctl) {
+        return Ok(Answer {
+            kind: "no_plan",
+            text: v.template("no_plan_always", &[("horizon", &h)]),
+            literals: Vec::new(),
+            tree: None,
+        });
+    }
+    // Deletion: observations first, then constraints, then goal literals, so the answer keeps
+    // the goal when it can.
+    let mut core = all.clone();
+    let order: Vec<usize> = all
+        .iter()
+        .copied()
+        .filter(|k| matches!(hyps[*k], Hyp::Observation(_)))
+        .chain(
+            all.iter()
+                .copied()
+                .filter(|k| matches!(hyps[*k], Hyp::Constraint(_))),
+        )
+        .chain(
+            all.iter()
+                .copied()
+                .filter(|k| matches!(hyps[*k], Hyp::Goal(_))),
+        )
+        .collect();
+    for k in order {
+        let without: Vec<usize> = core.iter().copied().filter(|x| *x != k).collect();
+        if !solvable(&without, &mut ctl) {
+            core = without;
+        }
+    }
+    let mut reasons = Vec::new();
+    let mut literals = Vec::new();
+    for &k in &core {
+        match &hyps[k] {
+            Hyp::Goal(g) => {
+                reasons.push(format!("the goal that {}", v.fluent(g, Tense::Present)));
+                literals.push(g.clone());
+            }
+            Hyp::Observation(o) => {
+                reasons.push(format!("my observation that {}", v.clause(o, Tense::Past)));
+                literals.push(o.clone());
+            }
+            Hyp::Constraint(text) => reasons.push(format!("the constraint {text}")),
+        }
+    }
+    Ok(Answer {
+        kind: "no_plan",
+        text: v.template(
+            "no_plan",
+            &[
+                ("horizon", &h),
+                ("reasons", &super::english::join_and(&reasons)),
+            ],
+        ),
+        literals,
+        tree: None,
+    })
+}
+
+/// Puts the goal literals, the initial-state facts and the `never` constraints of a translated
+/// planning problem behind assumption atoms `lucent_hyp(k)`.
+fn gate(program: &mut ast::Program, origins: &[AxiomOrigin], sources: &mut SourceMap) -> Vec<Hyp> {
+    let mut hyps = Vec::new();
+    let mut extra = String::new();
+    for (k, st) in program.statements.iter_mut().enumerate() {
+        let Some(o) = origins.get(k) else { continue };
+        let mut text = String::new();
+        crate::syntax::printer::statement(&mut text, &st.kind);
+        let text = text.trim().trim_end_matches('.').to_string();
+        let replaced = match o.kind {
+            OriginKind::History if !text.contains(":-") && text.ends_with(", 0)") => {
+                let Ok(t) = Term::parse(&text) else { continue };
+                let n = hyps.len();
+                hyps.push(Hyp::Observation(t));
+                format!("{text} :- {HYP}({n}).")
+            }
+            OriginKind::Never => {
+                let n = hyps.len();
+                hyps.push(Hyp::Constraint(match &o.label {
+                    Some(l) => format!("{l} ({})", o.text),
+                    None => o.text.clone(),
+                }));
+                format!("{text}, {HYP}({n}).")
+            }
+            OriginKind::Planning if text.starts_with("goal(") => {
+                let Some((head, body)) = text.split_once(":-") else {
+                    continue;
+                };
+                let var = head
+                    .trim()
+                    .trim_start_matches("goal(")
+                    .trim_end_matches(')')
+                    .to_string();
+                let mut parts = Vec::new();
+                for lit in super::history::split_top(body) {
+                    let is_fluent = lit.starts_with("holds(") || lit.starts_with("-holds(");
+                    let fluent = is_fluent
+                        .then(|| Term::parse(&lit.replace(&format!(", {var})"), ", 0)")).ok())
+                        .flatten()
+                        .and_then(|t| t.arg(0).cloned().map(|f| (t.is_neg(), f)));
+                    match fluent {
+                        Some((neg, f)) => {
+                            let n = hyps.len();
+                            let f = if neg { f.complement().unwrap_or(f) } else { f };
+                            hyps.push(Hyp::Goal(f));
+                            extra.push_str(&format!(
+                                "lucent_goal_ok({n}, {var}) :- {lit}, step({var}).\n\
+                                 lucent_goal_ok({n}, {var}) :- step({var}), not {HYP}({n}).\n"
+                            ));
+                            parts.push(format!("lucent_goal_ok({n}, {var})"));
+                        }
+                        None => parts.push(lit),
+                    }
+                }
+                format!("{head}:- {}.", parts.join(", "))
+            }
+            _ => continue,
+        };
+        let file = sources.add(format!("<why-no-plan {k}>"), replaced.clone());
+        let parse = crate::syntax::parse(file, &replaced, ast::Dialect::Clingo);
+        if let Some(new) = parse.program.statements.into_iter().next() {
+            if !parse.diagnostics.iter().any(|d| d.is_error()) {
+                st.kind = new.kind;
+            }
+        }
+    }
+    for k in 0..hyps.len() {
+        extra.push_str(&format!("#external {HYP}({k}).\n"));
+    }
+    let file = sources.add("<why-no-plan>", extra.clone());
+    let parse = crate::syntax::parse(file, &extra, ast::Dialect::Clingo);
+    program.statements.extend(parse.program.statements);
+    hyps
+}

@@ -1,0 +1,319 @@
+//! Histories to explain (DOMAIN.md 6.1, "Program Analyzer"): an AL_d planning problem (a
+//! description with its initial state and goal) and the actions that were executed (or are
+//! planned), turned into the program the questions are answered over: the description's
+//! translation with the actions as `happened` statements, the planning module off, the
+//! explanation-only axioms on (`explanation_rule_base`, when the description declares it), at
+//! horizon = the number of actions; grounded once with provenance through a [`Control`] and
+//! solved for one answer set (CR rules applied minimally, as the solver does).
+//!
+//! Invariants: nothing here reads files (the caller parsed the description into `sources`);
+//! an executed plan need not be minimal, nor reach the goal; a history without an answer set
+//! (an action that is not executable, an inconsistent scene) is [`HistoryError::Inconsistent`],
+//! never a panic.
+
+use super::oracle::{symbol_of, term_of, Labels, ProgramOracle};
+use super::questions::Scenario;
+use super::term::Term;
+use crate::action::{self, ast::Description, ast::StatementKind, ast::Value, Options};
+use crate::action::{AxiomOrigin, OriginKind};
+use crate::base::{Diagnostics, SourceMap};
+use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol, TruthValue};
+use crate::syntax::ast;
+
+/// How the history's program is made.
+#[derive(Clone, Debug, Default)]
+pub struct HistoryConfig {
+    /// The description's profile (`tabletop`, `learner`, ...).
+    pub profile: Option<String>,
+    /// Switch overrides (`horizon` and `planning` are set here).
+    pub overrides: Vec<(String, Value)>,
+}
+
+/// Why a history could not be explained.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum HistoryError {
+    /// The description does not translate or ground; the rendered diagnostics.
+    #[error("{0}")]
+    Input(String),
+    /// The history has no answer set (an action that cannot be executed there, or an
+    /// inconsistent initial state).
+    #[error("the history has no answer set: {0}")]
+    Inconsistent(String),
+}
+
+/// A planning problem as given: the description (initial state and goal included), its
+/// sources, and the settings; what-if and why-no-plan questions solve it again.
+#[derive(Clone, Debug)]
+pub struct Problem {
+    /// The description, without the history's `happened` statements.
+    pub desc: Description,
+    /// Its files.
+    pub sources: SourceMap,
+    /// Profile and switches.
+    pub config: HistoryConfig,
+}
+
+/// A history with its answer set: the program, the plan, the goal.
+pub struct History {
+    /// The problem the history belongs to.
+    pub problem: Problem,
+    /// The ground program with provenance and the answer set.
+    pub oracle: ProgramOracle,
+    /// The actions with their steps.
+    pub plan: Vec<(u32, Term)>,
+    /// The goal fluents (`relation(on,pitcher,red_block)`), from the description's `goal`.
+    pub goal: Vec<Term>,
+    /// The last step (the number of actions).
+    pub last_step: u32,
+}
+
+impl History {
+    /// The RA scenario of the questions over this history (executed: past tense).
+    pub fn scenario(&self) -> Scenario<'_> {
+        Scenario::ra(
+            &self.oracle,
+            self.plan.clone(),
+            self.goal.clone(),
+            self.last_step,
+        )
+    }
+
+    /// The objects the history mentions (for the question parser): the constant arguments of
+    /// the true `holds` and `occurs` literals and statics.
+    pub fn objects(&self) -> Vec<String> {
+        let mut out: Vec<String> = Vec::new();
+        for lit in self.oracle.true_literals() {
+            if let Some("has_size" | "has_surface" | "object") = lit.name() {
+                if let Some(Term::Fun { name, args, .. }) = lit.arg(0) {
+                    if args.is_empty() && !out.contains(name) {
+                        out.push(name.clone());
+                    }
+                }
+            }
+        }
+        out.sort();
+        out
+    }
+}
+
+/// The goal fluents of a description: the literals of its `goal` statements.
+pub fn goal_of(desc: &Description) -> Vec<Term> {
+    let mut out = Vec::new();
+    for s in &desc.statements {
+        if let StatementKind::Goal { .. } = &s.kind {
+            let text = action::translate::show_statement(&s.kind);
+            let text = text.strip_prefix("goal ").unwrap_or(&text);
+            for part in split_top(text) {
+                if let Ok(t) = Term::parse(&part) {
+                    out.push(t);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Splits at commas outside parentheses.
+pub(crate) fn split_top(s: &str) -> Vec<String> {
+    let (mut depth, mut cur, mut out) = (0i32, String::new(), Vec::new());
+    for c in s.chars() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ',' if depth == 0 => {
+                out.push(cur.trim().to_string());
+                cur.clear();
+                continue;
+            }
+            _ => {}
+        }
+        cur.push(c);
+    }
+    if !cur.trim().is_empty() {
+        out.push(cur.trim().to_string());
+    }
+    out
+}
+
+/// The atom that gates the history's facts: an external assigned true, hidden by the oracle.
+pub const HISTORY_GATE: &str = "lucent_history_given";
+
+/// The history's facts (`hpd(a,i).`, `holds(f,0).` of `initially`, `obs(...)`) get the body
+/// [`HISTORY_GATE`], an external assigned true that the oracle hides (`Labels::hidden`), so they
+/// read as facts in proofs. Grounding then decides nothing about the trajectory: a literal that
+/// every rule instance would make a fact keeps all its rule instances (the grounder keeps only
+/// the fact's rule when a head is a fact, and with the others would go supports a proof tree
+/// needs, such as E7 next to E5). For the same reason every `hpd(a, i)` is external (false
+/// unless it happened). Statement ids do not change; the declarations are appended.
+fn gate_history(
+    program: &mut ast::Program,
+    origins: &[AxiomOrigin],
+    labels: &mut Labels,
+    sources: &mut SourceMap,
+) {
+    let gate = Term::constant(HISTORY_GATE);
+    for (k, st) in program.statements.iter_mut().enumerate() {
+        let Some(o) = origins.get(k) else { continue };
+        if o.kind != OriginKind::History {
+            continue;
+        }
+        let ast::StatementKind::Rule(rule) = &mut st.kind else {
+            continue;
+        };
+        if !rule.body.is_empty()
+            || rule.kind != ast::RuleKind::Normal
+            || !matches!(&rule.head, ast::Head::Disjunction(h) if h.len() == 1)
+        {
+            continue;
+        }
+        rule.body.push(ast::BodyLiteral::Literal(ast::Literal {
+            span: st.span,
+            sign: ast::Sign::Positive,
+            atom: ast::Atom::Symbolic(ast::SymbolicAtom {
+                span: st.span,
+                negated: false,
+                name: HISTORY_GATE.into(),
+                args: vec![Vec::new()],
+            }),
+        }));
+    }
+    // The gate, and every action at every step as a possible happening (false unless it
+    // happened), so that the action CWA is not a fact and E7 keeps its instances beside it.
+    let text =
+        format!("#external {HISTORY_GATE}.\n#external hpd(A, I) : action(A), step(I). [false]\n");
+    let file = sources.add("<history gate>", text.clone());
+    let parse = crate::syntax::parse(file, &text, ast::Dialect::Clingo);
+    program.statements.extend(parse.program.statements);
+    labels.hidden.push(gate);
+}
+
+/// Whether the description declares a switch.
+fn declares_switch(desc: &Description, name: &str) -> bool {
+    desc.statements
+        .iter()
+        .any(|s| matches!(&s.kind, StatementKind::Switch { name: n, .. } if n.text == name))
+}
+
+/// The history of `desc` with `actions` (one per step, from step 0) executed, explained.
+/// `sources` holds the description's files; the happened statements are added to it as
+/// `<history>`.
+pub fn explain_history(
+    desc: &Description,
+    sources: &mut SourceMap,
+    actions: &[Symbol],
+    config: &HistoryConfig,
+) -> Result<History, HistoryError> {
+    let problem = Problem {
+        desc: desc.clone(),
+        sources: sources.clone(),
+        config: config.clone(),
+    };
+    let mut desc = desc.clone();
+    let text: String = actions
+        .iter()
+        .enumerate()
+        .map(|(i, a)| format!("happened {a} at {i}.\n"))
+        .collect();
+    if !text.is_empty() {
+        let file = sources.add("<history>", text.clone());
+        let parse = action::parse(file, &text);
+        if parse.diagnostics.iter().any(|d| d.is_error()) {
+            let mut d = Diagnostics::default();
+            d.extend(parse.diagnostics);
+            return Err(HistoryError::Input(d.render(sources)));
+        }
+        desc.statements.extend(parse.description.statements);
+    }
+    let mut overrides = config.overrides.clone();
+    overrides.push(("horizon".into(), Value::Int(actions.len() as i64)));
+    overrides.push(("planning".into(), Value::Bool(false)));
+    if declares_switch(&desc, "explanation_rule_base") {
+        overrides.push(("explanation_rule_base".into(), Value::Bool(true)));
+    }
+    let options = Options {
+        profile: config.profile.clone(),
+        overrides,
+    };
+    let t = action::translate(&desc, &options);
+    if t.has_errors() {
+        let mut d = Diagnostics::default();
+        d.extend(t.diagnostics);
+        return Err(HistoryError::Input(d.render(sources)));
+    }
+    let mut labels = Labels::from_origins(&t.origins);
+    let mut program = t.program;
+    gate_history(&mut program, &t.origins, &mut labels, sources);
+    let ctl_config = ControlConfig {
+        provenance: true,
+        ..ControlConfig::default()
+    };
+    let mut ctl = Control::with_sources(ctl_config, sources.clone());
+    ctl.add_program(program)
+        .map_err(|e| HistoryError::Input(e.message))?;
+    ctl.ground(&[Part::base()])
+        .map_err(|e| HistoryError::Input(e.message))?;
+    ctl.assign_external(&Symbol::constant(HISTORY_GATE), TruthValue::True);
+    let mut model = None;
+    ctl.solve(&SolveOptions::default(), |m| {
+        model = Some(m.raw().clone());
+        false
+    });
+    let Some(model) = model else {
+        let plan: Vec<String> = actions
+            .iter()
+            .enumerate()
+            .map(|(i, a)| format!("{a}@{i}"))
+            .collect();
+        return Err(HistoryError::Inconsistent(if plan.is_empty() {
+            "the initial state is inconsistent".into()
+        } else {
+            format!("the actions {} cannot all be executed", plan.join("; "))
+        }));
+    };
+    let oracle =
+        ProgramOracle::new(ctl, model, labels).map_err(|e| HistoryError::Input(e.to_string()))?;
+    Ok(History {
+        problem,
+        oracle,
+        plan: actions
+            .iter()
+            .enumerate()
+            .map(|(i, a)| (i as u32, term_of(a)))
+            .collect(),
+        goal: goal_of(&desc),
+        last_step: actions.len() as u32,
+    })
+}
+
+/// Parses actions written `a@0; b@1` or one per line or `;` (`pickup(rob1,a)`), in step order;
+/// an explicit `@i` must be the action's position.
+pub fn parse_actions(text: &str) -> Result<Vec<Symbol>, String> {
+    let mut out = Vec::new();
+    for (k, part) in text
+        .split([';', '\n'])
+        .map(str::trim)
+        .filter(|p| !p.is_empty())
+        .enumerate()
+    {
+        let (a, step) = match part.rsplit_once('@') {
+            Some((a, s)) => (a.trim(), Some(s.trim())),
+            None => (part, None),
+        };
+        let sym = Term::parse(a)
+            .ok()
+            .and_then(|t| symbol_of(&t))
+            .ok_or_else(|| format!("`{part}` is not an action term"))?;
+        if let Some(s) = step {
+            match s.parse::<usize>() {
+                Ok(i) if i == k => {}
+                _ => {
+                    return Err(format!(
+                        "`{part}`: actions must be given for steps 0, 1, ... in order"
+                    ))
+                }
+            }
+        }
+        out.push(sym);
+    }
+    Ok(out)
+}

@@ -1,0 +1,525 @@
+//! The adapter from the front door to proof trees: a [`ProgramOracle`] answers the
+//! [`Oracle`] questions of `explain::tree` from a [`Control`] that grounded its program once
+//! with provenance on, and one of its answer sets.
+//!
+//! What it gives the tree builder and the re-check:
+//! - **Rule instances** with their body literals in program syntax. A ground rule has one
+//!   instance per origin (`Provenance::origins`): its ground body plus the body literals that
+//!   grounding decided and removed for that origin (facts, `not a` with `a` false), put back so
+//!   a proof reaches the facts (E10's `has_surface(mug,irregular)`, the sort atoms). A CR rule
+//!   `h :- b, appl.` is shown as `h :- b.` of kind [`AxiomKind::CrRule`], applied when its
+//!   application atom is true. Auxiliary atoms (aggregates, conditions) are named
+//!   `#aux(N)` with N the aspif atom, so their rules can be followed too.
+//! - **Atoms grounding proved false** stay nameable: `rules_for` also returns the removed
+//!   instances (`Provenance::dead_rules_for`), each with the body literal that killed it (and
+//!   its origin's removed literals), so "why not" trees explain them.
+//! - **Labels and kinds** per statement id from the caller ([`Labels`]): for an AL_d
+//!   translation, from `action::AxiomOrigin` ([`Labels::from_origins`]); for any program, the
+//!   statement's source location ([`Labels::from_program`]).
+//! - **Truth**: an atom with an aspif number is true when the model has it; an atom without one
+//!   is true when grounding made it a fact, false otherwise.
+//!
+//! Invariants: every rule instance returned has a head the caller asked for and a body read off the ground program and provenance, never off
+//! a tree; the oracle owns its Control, so it can be kept and queried as long as needed.
+
+use std::collections::{HashMap, HashSet};
+
+use super::term::Term;
+use super::tree::{AxiomKind, BodyLiteral, Oracle, RuleInstance};
+use crate::action::{AxiomOrigin, OriginKind};
+use crate::control::{Control, Symbol};
+use crate::ground::program::{AuxKind, BodyRef, DeadReason, GAtom, HeadKind, RuleOrigin};
+use crate::solve;
+use crate::syntax::ast;
+
+/// A statement's label and kind, indexed by statement id (the index of the statement in the
+/// program the Control grounded).
+#[derive(Clone, Debug, Default)]
+pub struct Labels {
+    /// `(label, kind)` per statement id.
+    pub by_statement: Vec<(String, AxiomKind)>,
+    /// Body atoms the caller added to its program and that proofs do not show (the gate of
+    /// the history's facts, see `explain::history`).
+    pub hidden: Vec<Term>,
+}
+
+impl Labels {
+    /// Labels of an AL_d translation: the statement's label (`E7`) or, for schemas without
+    /// one, the schema's name (`inertia`, `CWA`); kinds from the origin's kind.
+    pub fn from_origins(origins: &[AxiomOrigin]) -> Labels {
+        let by_statement = origins
+            .iter()
+            .map(|o| {
+                let kind = match o.kind {
+                    OriginKind::Signature => AxiomKind::Sort,
+                    OriginKind::Static => AxiomKind::Fact,
+                    OriginKind::CausalLaw => AxiomKind::CausalLaw,
+                    OriginKind::StateConstraint => AxiomKind::StateConstraint,
+                    OriginKind::ExecutabilityCondition => AxiomKind::Executability,
+                    OriginKind::Default => AxiomKind::Default,
+                    OriginKind::CrException => AxiomKind::CrRule,
+                    OriginKind::Never => AxiomKind::StateConstraint,
+                    OriginKind::Inertia => AxiomKind::Inertia,
+                    OriginKind::Cwa => AxiomKind::ClosedWorld,
+                    OriginKind::History => AxiomKind::History,
+                    OriginKind::Planning => AxiomKind::Planning,
+                };
+                let label = match (&o.label, o.kind) {
+                    (Some(l), _) => l.clone(),
+                    (None, OriginKind::Cwa) if o.statement.is_none() => "action CWA".into(),
+                    (None, k) => match o.text.split(':').next() {
+                        Some(t) if !t.trim().is_empty() && t.len() < 24 => t.trim().to_string(),
+                        _ => k.name().to_string(),
+                    },
+                };
+                (label, kind)
+            })
+            .collect();
+        Labels {
+            by_statement,
+            hidden: Vec::new(),
+        }
+    }
+
+    /// Labels of any program: each statement's source location (`file:line:col`, from
+    /// `locate`), kind [`AxiomKind::Fact`] for a fact (a rule without body) and
+    /// [`AxiomKind::Rule`] otherwise.
+    pub fn from_program(
+        program: &ast::Program,
+        locate: &dyn Fn(&ast::Statement) -> String,
+    ) -> Self {
+        let by_statement = program
+            .statements
+            .iter()
+            .map(|s| {
+                let fact = matches!(&s.kind, ast::StatementKind::Rule(r) if r.body.is_empty()
+                    && matches!(r.kind, ast::RuleKind::Normal)
+                    && matches!(&r.head, ast::Head::Disjunction(h) if h.len() == 1));
+                let kind = if fact {
+                    AxiomKind::Fact
+                } else {
+                    AxiomKind::Rule
+                };
+                (locate(s), kind)
+            })
+            .collect();
+        Labels {
+            by_statement,
+            hidden: Vec::new(),
+        }
+    }
+
+    fn get(&self, origin: &RuleOrigin) -> (String, AxiomKind) {
+        match origin {
+            RuleOrigin::Statement { stmt, .. } => self
+                .by_statement
+                .get(*stmt as usize)
+                .cloned()
+                .unwrap_or_else(|| (format!("statement {stmt}"), AxiomKind::Rule)),
+            RuleOrigin::Auxiliary { of_stmt, kind, .. } => {
+                let (label, k) = self
+                    .by_statement
+                    .get(*of_stmt as usize)
+                    .cloned()
+                    .unwrap_or_else(|| (format!("statement {of_stmt}"), AxiomKind::Rule));
+                (format!("{label} ({})", kind.name()), k)
+            }
+            RuleOrigin::Complement => ("complement".into(), AxiomKind::Rule),
+        }
+    }
+}
+
+/// Why an oracle could not be made.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum OracleError {
+    /// The Control was grounded without provenance.
+    #[error("the program was grounded without provenance")]
+    NoProvenance,
+}
+
+/// Where a rule instance comes from.
+#[derive(Clone, Copy, Debug)]
+enum Source {
+    /// Ground rule `rule`, its origin number `origin` (or the rule without origins).
+    Ground { rule: u32, origin: u32 },
+    /// Dead rule `index` of the provenance, its origin `origin`.
+    Dead { index: u32, origin: u32 },
+}
+
+/// An [`Oracle`] over a Control's ground program with provenance and one answer set (every
+/// grounding's rules: `Control::provenance` numbers statements over all groundings, so labels
+/// must too; `explain` grounds once).
+pub struct ProgramOracle {
+    ctl: Control,
+    model: solve::Model,
+    labels: Labels,
+    /// Term of each aspif atom (index = atom); auxiliary atoms get `#aux(N)`.
+    atom_term: Vec<Option<Term>>,
+    /// Aspif atom of each term.
+    term_atom: HashMap<Term, u32>,
+    /// Term of each grounder atom (index = g - 1); `None` for auxiliaries.
+    g_term: Vec<Option<Term>>,
+    /// Grounder atom of each term.
+    term_g: HashMap<Term, GAtom>,
+    /// Rule instances by head term.
+    heads: HashMap<Term, Vec<Source>>,
+    /// The application atom of each CR rule (by rule index).
+    cr_appl: HashMap<u32, u32>,
+    /// The labels of the applied CR rules.
+    applied_labels: Vec<Symbol>,
+}
+
+/// The term of a symbol.
+pub fn term_of(s: &Symbol) -> Term {
+    match s {
+        Symbol::Number(n) => Term::Num(*n),
+        Symbol::String(t) => Term::Str(t.clone()),
+        Symbol::Function {
+            name,
+            args,
+            negative,
+        } => Term::Fun {
+            name: name.clone(),
+            args: args.iter().map(term_of).collect(),
+            neg: *negative,
+        },
+        Symbol::Inf => Term::constant("#inf"),
+        Symbol::Sup => Term::constant("#sup"),
+    }
+}
+
+/// The symbol of a ground term (`None` for a pattern with variables).
+pub fn symbol_of(t: &Term) -> Option<Symbol> {
+    Some(match t {
+        Term::Num(n) => Symbol::Number(*n),
+        Term::Str(s) => Symbol::String(s.clone()),
+        Term::Fun { name, args, neg } => Symbol::Function {
+            name: name.clone(),
+            args: args.iter().map(symbol_of).collect::<Option<Vec<_>>>()?,
+            negative: *neg,
+        },
+        Term::Var(_) => return None,
+    })
+}
+
+fn aux_term(atom: u32) -> Term {
+    Term::fun("#aux", vec![Term::Num(atom as i32)])
+}
+
+impl ProgramOracle {
+    /// An oracle over `ctl` (grounded once, with provenance) and `model`, one of its answer
+    /// sets, with the statements' labels.
+    pub fn new(ctl: Control, model: solve::Model, labels: Labels) -> Result<Self, OracleError> {
+        let prog = ctl.program();
+        let prov = &prog.provenance;
+        if prov.is_empty() {
+            return Err(OracleError::NoProvenance);
+        }
+        let num_atoms = prog.num_atoms.max(ctl.num_atoms()) as usize;
+        let mut atom_term: Vec<Option<Term>> = vec![None; num_atoms + 1];
+        let mut term_atom = HashMap::new();
+        for a in ctl.symbolic_atoms() {
+            let t = term_of(&a.symbol);
+            if let Some(slot) = atom_term.get_mut(a.atom as usize) {
+                *slot = Some(t.clone());
+            }
+            term_atom.insert(t, a.atom);
+        }
+        let mut g_term = Vec::with_capacity(prov.atoms.len());
+        let mut term_g = HashMap::new();
+        for g in 1..=prov.atoms.len() as GAtom {
+            let t = prov
+                .atom(g)
+                .and_then(|r| r.sym)
+                .map(|s| term_of(&ctl.symbol_of_id(s)));
+            if let Some(t) = &t {
+                term_g.insert(t.clone(), g);
+            }
+            g_term.push(t);
+        }
+        let cr_atoms: HashSet<u32> = prog.cr_rules.iter().map(|c| c.appl).collect();
+        let mut heads: HashMap<Term, Vec<Source>> = HashMap::new();
+        let mut cr_appl = HashMap::new();
+        for (i, r) in prog.rules.iter().enumerate() {
+            if r.head.is_empty() {
+                continue;
+            }
+            if let BodyRef::Normal(lits) = r.body {
+                if let Some(&l) = lits
+                    .iter()
+                    .find(|&&l| l > 0 && cr_atoms.contains(&(l as u32)))
+                {
+                    cr_appl.insert(i as u32, l as u32);
+                }
+            }
+            let n = prov.origins(i).len().max(1) as u32;
+            for &h in r.head {
+                if cr_atoms.contains(&h) {
+                    continue;
+                }
+                let t = atom_term
+                    .get(h as usize)
+                    .cloned()
+                    .flatten()
+                    .unwrap_or_else(|| aux_term(h));
+                let e = heads.entry(t).or_default();
+                for origin in 0..n {
+                    e.push(Source::Ground {
+                        rule: i as u32,
+                        origin,
+                    });
+                }
+            }
+        }
+        for (i, d) in prov.dead.iter().enumerate() {
+            if matches!(d.why, DeadReason::Literal { .. }) {
+                for &h in &d.head {
+                    if let Some(Some(t)) = g_term.get(h as usize - 1) {
+                        let e = heads.entry(t.clone()).or_default();
+                        for origin in 0..d.origins.len().max(1) as u32 {
+                            e.push(Source::Dead {
+                                index: i as u32,
+                                origin,
+                            });
+                        }
+                    }
+                }
+            }
+        }
+        let applied_labels = model
+            .cr_applied
+            .iter()
+            .map(|l| Symbol::parse(l).unwrap_or_else(|_| Symbol::String(l.clone())))
+            .collect();
+        Ok(ProgramOracle {
+            ctl,
+            model,
+            labels,
+            atom_term,
+            term_atom,
+            g_term,
+            term_g,
+            heads,
+            cr_appl,
+            applied_labels,
+        })
+    }
+
+    /// The Control (its program and provenance).
+    pub fn control(&self) -> &Control {
+        &self.ctl
+    }
+
+    /// The answer set.
+    pub fn model(&self) -> &solve::Model {
+        &self.model
+    }
+
+    /// Every true literal with a name (the answer set as terms).
+    pub fn true_literals(&self) -> Vec<Term> {
+        let mut out: Vec<Term> = self
+            .model
+            .atoms
+            .iter()
+            .filter_map(|&a| self.atom_term.get(a as usize).cloned().flatten())
+            .collect();
+        out.extend(self.g_facts_without_atom());
+        out
+    }
+
+    fn g_facts_without_atom(&self) -> impl Iterator<Item = Term> + '_ {
+        let prov = &self.ctl.program().provenance;
+        prov.atoms.iter().enumerate().filter_map(|(i, r)| {
+            (r.aspif == 0 && r.status == crate::ground::program::AtomStatus::Fact)
+                .then(|| self.g_term[i].clone())
+                .flatten()
+        })
+    }
+
+    /// The labels of the applied CR rules (`d1x(mug,2)`).
+    pub fn applied_labels(&self) -> &[Symbol] {
+        &self.applied_labels
+    }
+
+    fn g_literal(&self, positive: bool, g: GAtom) -> Option<BodyLiteral> {
+        let t = self.g_term.get((g as usize).checked_sub(1)?)?.clone()?;
+        Some(if positive {
+            BodyLiteral::Pos(t)
+        } else {
+            BodyLiteral::Not(t)
+        })
+    }
+
+    fn atom_literal(&self, lit: i32) -> BodyLiteral {
+        let a = lit.unsigned_abs();
+        let t = self
+            .atom_term
+            .get(a as usize)
+            .cloned()
+            .flatten()
+            .unwrap_or_else(|| aux_term(a));
+        if lit > 0 {
+            BodyLiteral::Pos(t)
+        } else {
+            BodyLiteral::Not(t)
+        }
+    }
+
+    fn instance(&self, head: &Term, src: Source) -> Option<RuleInstance> {
+        let prog = self.ctl.program();
+        let prov = &prog.provenance;
+        match src {
+            Source::Ground { rule, origin } => {
+                let r = prog.rules.get(rule as usize);
+                let origins = prov.origins(rule as usize);
+                let o = origins.get(origin as usize);
+                // The choice rule `{appl}.` of a CR rule is never a support of a named atom.
+                if let Some(o) = o {
+                    if matches!(
+                        o.rule,
+                        RuleOrigin::Auxiliary {
+                            kind: AuxKind::CrApplication,
+                            ..
+                        }
+                    ) {
+                        return None;
+                    }
+                }
+                let appl = self.cr_appl.get(&rule).copied();
+                let mut body: Vec<BodyLiteral> = Vec::new();
+                match r.body {
+                    BodyRef::Normal(lits) => {
+                        for &l in lits {
+                            if appl == Some(l.unsigned_abs()) && l > 0 {
+                                continue;
+                            }
+                            body.push(self.atom_literal(l));
+                        }
+                    }
+                    BodyRef::Weight { lower, lits } => {
+                        let text: Vec<String> = lits
+                            .iter()
+                            .map(|&(l, w)| {
+                                let b = self.atom_literal(l);
+                                let s = match b {
+                                    BodyLiteral::Pos(t) => t.to_string(),
+                                    BodyLiteral::Not(t) => format!("not {t}"),
+                                    BodyLiteral::Test(s) => s,
+                                };
+                                format!("{w}:{s}")
+                            })
+                            .collect();
+                        body.push(BodyLiteral::Test(format!(
+                            "#sum{{{}}} >= {lower}",
+                            text.join("; ")
+                        )));
+                    }
+                }
+                if let Some(o) = o {
+                    for rl in &o.removed {
+                        if let Some(b) = self.g_literal(rl.positive, rl.atom) {
+                            if !body.contains(&b) {
+                                body.push(b);
+                            }
+                        }
+                    }
+                }
+                body.retain(
+                    |b| !matches!(b, BodyLiteral::Pos(t) if self.labels.hidden.contains(t)),
+                );
+                let (label, mut kind) = match o {
+                    Some(o) => self.labels.get(&o.rule),
+                    None => ("rule".into(), AxiomKind::Rule),
+                };
+                if appl.is_some() {
+                    kind = AxiomKind::CrRule;
+                }
+                if r.head_kind == HeadKind::Choice
+                    && matches!(kind, AxiomKind::Fact | AxiomKind::Sort)
+                {
+                    kind = AxiomKind::Rule;
+                }
+                Some(RuleInstance {
+                    label,
+                    kind,
+                    rule: Some(rule),
+                    head: head.clone(),
+                    body,
+                })
+            }
+            Source::Dead { index, origin } => {
+                let d = prov.dead.get(index as usize)?;
+                let DeadReason::Literal { positive, atom } = d.why else {
+                    return None;
+                };
+                let mut body = vec![self.g_literal(positive, atom)?];
+                let o = d.origins.get(origin as usize);
+                if let Some(o) = o {
+                    for rl in &o.removed {
+                        if let Some(b) = self.g_literal(rl.positive, rl.atom) {
+                            if !body.contains(&b) {
+                                body.push(b);
+                            }
+                        }
+                    }
+                }
+                let (label, kind) = match o {
+                    Some(o) => self.labels.get(&o.rule),
+                    None => ("rule".into(), AxiomKind::Rule),
+                };
+                Some(RuleInstance {
+                    label,
+                    kind,
+                    rule: None,
+                    head: head.clone(),
+                    body,
+                })
+            }
+        }
+    }
+}
+
+impl Oracle for ProgramOracle {
+    fn holds(&self, literal: &Term) -> bool {
+        if let Some(&a) = self.term_atom.get(literal) {
+            return self.model.holds(a);
+        }
+        if literal.name() == Some("#aux") {
+            if let Some(n) = literal.arg(0).and_then(Term::num) {
+                return self.model.holds(n as u32);
+            }
+        }
+        match self.term_g.get(literal) {
+            Some(&g) => self
+                .ctl
+                .program()
+                .provenance
+                .atom(g)
+                .is_some_and(|r| r.status == crate::ground::program::AtomStatus::Fact),
+            None => false,
+        }
+    }
+
+    fn rules_for(&self, head: &Term) -> Vec<RuleInstance> {
+        let Some(srcs) = self.heads.get(head) else {
+            return Vec::new();
+        };
+        let mut out: Vec<RuleInstance> = Vec::new();
+        for &s in srcs {
+            if let Some(r) = self.instance(head, s) {
+                if !out.contains(&r) {
+                    out.push(r);
+                }
+            }
+        }
+        out
+    }
+
+    fn applied(&self, rule: &RuleInstance) -> bool {
+        rule.kind == AxiomKind::CrRule
+            && rule
+                .rule
+                .and_then(|r| self.cr_appl.get(&r))
+                .is_some_and(|&a| self.model.holds(a))
+    }
+}

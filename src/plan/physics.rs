@@ -1,0 +1,155 @@
+//! Plans against the physics world (feature `sim`): generated planning tasks (a simulator
+//! scene and a goal drawn as DOMAIN.md 7.1 describes) and the replay of a plan in rapier
+//! without noise, checking that every action succeeds, the goal holds at the end as the
+//! simulator measures it, and every object is stable.
+//!
+//! Goal generation [ours, DOMAIN.md 7.1]: with probability 0.2 `in_hand(rob1, X)`, otherwise
+//! `on(X, Y)` with X a movable object and Y a location (an object or the table) other than X
+//! whose top is flat and which is not small, the goal not already true in the scene.
+//!
+//! Invariants: a seed determines the task; the replay executes on a copy of the scene with
+//! action failures and perception errors switched off, so its outcome is a function of the
+//! scene and the plan.
+
+use crate::control::Symbol;
+use crate::sim::truth::{relations, stability, TruthConfig};
+use crate::sim::{execute, ActConfig, Action, ErrorModel, Preset, Scene, SplitMix64, World};
+use crate::sim::{GenerateConfig, Size, Surface};
+
+/// A goal literal of a generated task.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Goal {
+    /// `relation(on, X, Y)`.
+    On(String, String),
+    /// `in_hand(rob1, X)`.
+    InHand(String),
+}
+
+impl Goal {
+    /// The goal as an AL_d literal.
+    pub fn to_ald(&self) -> String {
+        match self {
+            Goal::On(x, y) => format!("relation(on, {x}, {y})"),
+            Goal::InHand(x) => format!("in_hand(rob1, {x})"),
+        }
+    }
+
+    /// True when the goal holds in the scene (measured, without noise).
+    pub fn holds(&self, scene: &Scene) -> bool {
+        match self {
+            Goal::InHand(x) => scene.in_hand.as_deref() == Some(x.as_str()),
+            Goal::On(x, y) => {
+                let world = World::build(scene);
+                relations(scene, &world, &TruthConfig::default())
+                    .iter()
+                    .any(|r| r.rel.name() == "on" && &r.a == x && &r.b == y)
+            }
+        }
+    }
+}
+
+/// Draws a goal for `scene` from `seed` (see the module docs); `None` when no location fits.
+pub fn generate_goal(scene: &Scene, seed: u64) -> Option<Goal> {
+    let mut rng = SplitMix64::new(seed).fork(0x474f_414c);
+    let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
+    if names.is_empty() {
+        return None;
+    }
+    if rng.chance(0.2) {
+        let free: Vec<&String> = names
+            .iter()
+            .filter(|n| scene.in_hand.as_deref() != Some(n.as_str()))
+            .collect();
+        let x = free[rng.range_usize(0, free.len() - 1)];
+        return Some(Goal::InHand(x.clone()));
+    }
+    let mut supports: Vec<String> = scene
+        .objects
+        .iter()
+        .filter(|o| o.surface() == Surface::Flat && o.size != Size::Small)
+        .map(|o| o.name.clone())
+        .collect();
+    supports.push(crate::sim::TABLE.to_string());
+    let mut candidates = Vec::new();
+    for x in &names {
+        for y in &supports {
+            let g = Goal::On(x.clone(), y.clone());
+            if x != y && !g.holds(scene) {
+                candidates.push(g);
+            }
+        }
+    }
+    if candidates.is_empty() {
+        return None;
+    }
+    let k = rng.range_usize(0, candidates.len() - 1);
+    Some(candidates.swap_remove(k))
+}
+
+/// A generated task: the scene of `(preset, seed)` and a goal for it.
+pub fn generate_task(preset: Preset, seed: u64) -> Option<(Scene, Goal)> {
+    let scene = crate::sim::generate(&GenerateConfig::new(preset, seed)).ok()?;
+    let goal = generate_goal(&scene, seed)?;
+    Some((scene, goal))
+}
+
+/// What executing a plan in the physics world showed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PhysicsReplay {
+    /// The first action that failed or could not be executed, with the reason.
+    pub failed: Option<(usize, String)>,
+    /// True when the goal holds after the plan.
+    pub goal: bool,
+    /// The objects that moved in the stability test after the plan.
+    pub unstable: Vec<String>,
+}
+
+impl PhysicsReplay {
+    /// Every action succeeded, the goal holds and every object is stable.
+    pub fn ok(&self) -> bool {
+        self.failed.is_none() && self.goal && self.unstable.is_empty()
+    }
+}
+
+/// Executes `plan` on a copy of `scene` without action failures or perception noise.
+pub fn replay_physics(scene: &Scene, plan: &[Symbol], goal: &Goal) -> PhysicsReplay {
+    let mut scene = scene.clone();
+    let config = ActConfig {
+        failure_rate: 0.0,
+        perception: ErrorModel::exact(),
+        ..ActConfig::default()
+    };
+    let mut out = PhysicsReplay {
+        failed: None,
+        goal: false,
+        unstable: Vec::new(),
+    };
+    for (i, a) in plan.iter().enumerate() {
+        let action = match Action::parse(&a.to_string()) {
+            Ok(a) => a,
+            Err(e) => {
+                out.failed = Some((i, e.to_string()));
+                return out;
+            }
+        };
+        match execute(&mut scene, &action, &config) {
+            Ok(r) => {
+                if let Some(f) = r.failure {
+                    out.failed = Some((i, format!("{action} failed: {f}")));
+                    return out;
+                }
+            }
+            Err(e) => {
+                out.failed = Some((i, format!("{action}: {e}")));
+                return out;
+            }
+        }
+    }
+    out.goal = goal.holds(&scene);
+    out.unstable = stability(&scene, &TruthConfig::default())
+        .into_iter()
+        .filter(|s| !s.stable)
+        .map(|s| s.name)
+        .collect();
+    out
+}

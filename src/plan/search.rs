@@ -1,0 +1,346 @@
+//! The planner's search (DOMAIN.md 4.1-4.2) over one multi-shot [`Control`].
+//!
+//! - [`Search::Incremental`] (default): the description is translated once with
+//!   `horizon_mode = incremental` ([`crate::action::parts`]); `base` and `check(0)` are
+//!   grounded, then for k = 1, 2, ... one `step(k)` and `check(k)` part each, with only the
+//!   external `query(k)` true, so each horizon adds one step to the same solver.
+//! - [`Search::Retranslate`]: the description is translated, grounded and solved afresh with
+//!   `horizon = k`, `horizon_mode = iterative` for each k (the reference the incremental search
+//!   is tested against).
+//! - [`Search::Fixed`]: the authors' behaviour (DOMAIN.md 4.1, 7.4): one program at horizon n
+//!   with `success` and `:- not success`; every trajectory reaching the goal by step n is an
+//!   answer set, lengths are not minimized, only CR applications are.
+//!
+//! Invariants: the first satisfiable horizon is the minimal length, and the solver's
+//! cardinality-minimal CR semantics makes its answer sets CR-minimal at that length; plans are
+//! action sequences, each once, sorted by length, then CR applications, then text. Before any
+//! horizon the initial state is solved alone: no answer set is [`PlanError::InitiallyUnstable`]
+//! when dropping the stability constraint restores one (the objects named), else
+//! [`PlanError::Inconsistent`].
+
+use std::collections::BTreeMap;
+
+use super::{Plan, PlanConfig, PlanError, Plans};
+use crate::action::{self, ast::Description, ast::Value, Options};
+use crate::base::{Diagnostics, SourceMap};
+use crate::control::{Control, ControlConfig, OwnedModel, Part, SolveOptions, Symbol, TruthValue};
+
+/// Translates `desc` with the config's switches plus `extra`; bad input is `PlanError::Input`.
+pub(crate) fn translate(
+    desc: &Description,
+    sources: &SourceMap,
+    config: &PlanConfig,
+    extra: &[(&str, Value)],
+) -> Result<action::Translation, PlanError> {
+    let mut overrides = config.overrides.clone();
+    overrides.extend(extra.iter().map(|(n, v)| (n.to_string(), v.clone())));
+    let options = Options {
+        profile: config.profile.clone(),
+        overrides,
+    };
+    let t = action::translate(desc, &options);
+    if t.has_errors() {
+        let mut d = Diagnostics::default();
+        d.extend(t.diagnostics);
+        return Err(PlanError::Input(d.render(sources)));
+    }
+    Ok(t)
+}
+
+/// A Control holding `program`, with `models` models per call (0: all).
+pub(crate) fn control(
+    sources: &SourceMap,
+    program: crate::syntax::ast::Program,
+    models: usize,
+) -> Result<Control, PlanError> {
+    let mut cc = ControlConfig::default();
+    cc.solve.models = models;
+    let mut ctl = Control::with_sources(cc, sources.clone());
+    ctl.add_program(program)
+        .map_err(|e| PlanError::Input(e.message))?;
+    Ok(ctl)
+}
+
+/// The plan of one answer set: the actions of `occurs(a, i)` in step order, and its CR rules.
+pub(crate) fn plan_of(model: &OwnedModel) -> Plan {
+    let mut steps = BTreeMap::new();
+    for s in &model.atoms {
+        if s.is("occurs", 2) && !s.is_negative() {
+            if let Some(i) = s.args()[1].as_number() {
+                steps.insert(i, s.args()[0].clone());
+            }
+        }
+    }
+    let mut cr_applied = model.cr_applied.clone();
+    cr_applied.sort();
+    Plan {
+        actions: steps.into_values().collect(),
+        cr_applied,
+    }
+}
+
+/// Orders plans by length, CR applications and text; keeps each action sequence once (with
+/// its fewest CR applications).
+pub(crate) fn order(mut plans: Vec<Plan>) -> Vec<Plan> {
+    plans.sort_by_cached_key(|p| (p.actions.len(), p.cr_applied.len(), p.to_text()));
+    // Each action sequence once, at its best (first) position: equal sequences need not be
+    // adjacent after the sort (a sequence with more CR applications sorts after other plans).
+    let mut seen = std::collections::HashSet::new();
+    plans.retain(|p| seen.insert(p.to_text()));
+    plans
+}
+
+fn query(k: usize) -> Symbol {
+    Symbol::function("query", vec![Symbol::number(k as i32)])
+}
+
+/// Why the initial state has no answer set: the objects unstable at step 0 when the stability
+/// constraint is dropped, or plain inconsistency.
+fn diagnose(desc: &Description, sources: &SourceMap, config: &PlanConfig) -> PlanError {
+    let Ok(t) = translate(
+        desc,
+        sources,
+        config,
+        &[
+            ("horizon", Value::Int(0)),
+            ("planning", Value::Bool(false)),
+            ("stability_constraint", Value::Word("off".into())),
+        ],
+    ) else {
+        return PlanError::Inconsistent;
+    };
+    let Ok(mut ctl) = control(sources, t.program, 1) else {
+        return PlanError::Inconsistent;
+    };
+    if ctl.ground(&[Part::base()]).is_err() {
+        return PlanError::Inconsistent;
+    }
+    let solved = ctl.solve_all(&SolveOptions::default());
+    let Some(m) = solved.models.first() else {
+        return PlanError::Inconsistent;
+    };
+    // -holds(stable(A), 0)
+    let mut unstable: Vec<String> = m
+        .atoms
+        .iter()
+        .filter(|s| s.is_negative() && s.is("holds", 2))
+        .filter(|s| s.args()[1].as_number() == Some(0) && s.args()[0].is("stable", 1))
+        .map(|s| s.args()[0].args()[0].to_string())
+        .collect();
+    unstable.sort();
+    unstable.dedup();
+    if unstable.is_empty() {
+        PlanError::Inconsistent
+    } else {
+        PlanError::InitiallyUnstable(unstable)
+    }
+}
+
+/// Collects the plans of one solve call (all models, or the first).
+fn collect(ctl: &mut Control, all: bool) -> Vec<Plan> {
+    let mut plans = Vec::new();
+    ctl.solve(&SolveOptions::default(), |m| {
+        plans.push(plan_of(&m.to_owned_model()));
+        all
+    });
+    plans
+}
+
+/// The minimal plans found at horizon `length`.
+fn found(plans: Vec<Plan>, length: usize, horizons_tried: usize) -> Plans {
+    let answer_sets = plans.len();
+    let plans = order(plans);
+    let least = plans.iter().map(|p| p.cr_applied.len()).min().unwrap_or(0);
+    let plans: Vec<Plan> = plans
+        .into_iter()
+        .filter(|p| p.cr_applied.len() == least)
+        .collect();
+    Plans {
+        plans,
+        length,
+        cr_applied: least,
+        horizons_tried,
+        answer_sets,
+    }
+}
+
+/// The incremental search: one Control, one new step part per horizon.
+pub(crate) fn incremental(
+    desc: &Description,
+    sources: &SourceMap,
+    config: &PlanConfig,
+    max_horizon: usize,
+) -> Result<Plans, PlanError> {
+    let t = translate(
+        desc,
+        sources,
+        config,
+        &[("horizon_mode", Value::Word("incremental".into()))],
+    )?;
+    let mut ctl = control(sources, t.program, if config.all { 0 } else { 1 })?;
+    let ground = |ctl: &mut Control, parts: &[Part]| {
+        ctl.ground(parts).map_err(|e| PlanError::Input(e.message))
+    };
+    ground(
+        &mut ctl,
+        &[
+            Part::base(),
+            Part::new("check", vec![query(0).args()[0].clone()]),
+        ],
+    )?;
+    // The initial state alone (query(0) false: no goal required).
+    if !ctl
+        .solve(&SolveOptions::default(), |_| false)
+        .is_satisfiable()
+    {
+        return Err(diagnose(desc, sources, config));
+    }
+    for k in 0..=max_horizon {
+        if k > 0 {
+            ctl.release_external(&query(k - 1));
+            let t = Symbol::number(k as i32);
+            ground(
+                &mut ctl,
+                &[
+                    Part::new("step", vec![t.clone()]),
+                    Part::new("check", vec![t]),
+                ],
+            )?;
+        }
+        ctl.assign_external(&query(k), TruthValue::True);
+        let plans = collect(&mut ctl, config.all);
+        if !plans.is_empty() {
+            return Ok(found(plans, k, k + 1));
+        }
+    }
+    Err(PlanError::NoPlanWithin(max_horizon))
+}
+
+/// The answer sets of `desc` translated with `extra`, grounded and solved afresh.
+fn solve_fresh(
+    desc: &Description,
+    sources: &SourceMap,
+    config: &PlanConfig,
+    extra: &[(&str, Value)],
+    all: bool,
+) -> Result<Vec<OwnedModel>, PlanError> {
+    let t = translate(desc, sources, config, extra)?;
+    let mut ctl = control(sources, t.program, if all { 0 } else { 1 })?;
+    ctl.ground(&[Part::base()])
+        .map_err(|e| PlanError::Input(e.message))?;
+    Ok(ctl.solve_all(&SolveOptions::default()).models)
+}
+
+/// The reference search: every horizon translated and grounded afresh.
+pub(crate) fn retranslate(
+    desc: &Description,
+    sources: &SourceMap,
+    config: &PlanConfig,
+    max_horizon: usize,
+) -> Result<Plans, PlanError> {
+    let initial = solve_fresh(
+        desc,
+        sources,
+        config,
+        &[("horizon", Value::Int(0)), ("planning", Value::Bool(false))],
+        false,
+    )?;
+    if initial.is_empty() {
+        return Err(diagnose(desc, sources, config));
+    }
+    for k in 0..=max_horizon {
+        let models = solve_fresh(
+            desc,
+            sources,
+            config,
+            &[
+                ("horizon", Value::Int(k as i64)),
+                ("horizon_mode", Value::Word("iterative".into())),
+            ],
+            config.all,
+        )?;
+        if !models.is_empty() {
+            return Ok(found(models.iter().map(plan_of).collect(), k, k + 1));
+        }
+    }
+    Err(PlanError::NoPlanWithin(max_horizon))
+}
+
+/// The authors' fixed horizon: every plan reaching the goal by step `n` (CR-minimal).
+pub(crate) fn fixed(
+    desc: &Description,
+    sources: &SourceMap,
+    config: &PlanConfig,
+    n: usize,
+) -> Result<Plans, PlanError> {
+    let initial = solve_fresh(
+        desc,
+        sources,
+        config,
+        &[("horizon", Value::Int(0)), ("planning", Value::Bool(false))],
+        false,
+    )?;
+    if initial.is_empty() {
+        return Err(diagnose(desc, sources, config));
+    }
+    let models = solve_fresh(
+        desc,
+        sources,
+        config,
+        &[
+            ("horizon", Value::Int(n as i64)),
+            ("horizon_mode", Value::Word("fixed".into())),
+        ],
+        config.all,
+    )?;
+    if models.is_empty() {
+        return Err(PlanError::NoPlanWithin(n));
+    }
+    let answer_sets = models.len();
+    let plans = order(models.iter().map(plan_of).collect());
+    Ok(Plans {
+        length: plans[0].actions.len(),
+        cr_applied: plans[0].cr_applied.len(),
+        horizons_tried: 1,
+        answer_sets,
+        plans,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::control::Symbol;
+
+    fn plan(actions: &[&str], cr: usize) -> Plan {
+        Plan {
+            actions: actions.iter().map(|a| Symbol::parse(a).unwrap()).collect(),
+            cr_applied: (0..cr)
+                .map(|i| Symbol::parse(&format!("d1x(a,{i})")).unwrap())
+                .collect(),
+        }
+    }
+
+    #[test]
+    fn plans_are_ordered_by_length_then_cr_then_text_each_once() {
+        let ordered = order(vec![
+            plan(&["b", "c"], 0),
+            plan(&["a"], 1),
+            plan(&["b"], 0),
+            plan(&["a"], 0),
+            plan(&["b", "c"], 1),
+        ]);
+        let texts: Vec<(String, usize)> = ordered
+            .iter()
+            .map(|p| (p.to_text(), p.cr_applied.len()))
+            .collect();
+        assert_eq!(
+            texts,
+            vec![
+                ("a@0".to_string(), 0),
+                ("b@0".to_string(), 0),
+                ("b@0; c@1".to_string(), 0)
+            ]
+        );
+    }
+}

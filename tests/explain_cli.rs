@@ -1,0 +1,227 @@
+//! `lucent explain` and `lucent ask` on the command line (insta snapshots): questions about the
+//! paper's execution example (KB_full, the paper's six actions given as happened) and about a
+//! plan the planner makes itself; JSON with `type`, `answer`, `literals` and `tree`; DOT and SVG
+//! pictures; `--why`/`--why-not` on a clingo program of our own (`tests/data/explain/reach.lp`);
+//! and the replies to questions that are not understood or out of range.
+
+fn run_with(args: &[&str], stdin: &str) -> (i32, String, String) {
+    std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
+    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+    let mut out = Vec::new();
+    let mut err = Vec::new();
+    let mut input = stdin.as_bytes();
+    let code = lucent::cli::run(&args, &mut input, &mut out, &mut err);
+    (
+        code,
+        String::from_utf8(out).unwrap(),
+        String::from_utf8(err).unwrap(),
+    )
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    run_with(args, "")
+}
+
+const EXAMPLE: &str = "domains/ra/scenes/execution_example.ald";
+const TABLETOP: &str = "domains/ra/scenes/tabletop_task.ald";
+const PAPER_PLAN: &str = "pickup(rob1,green_can)@0; putdown(rob1,green_can,table)@1; \
+    pickup(rob1,white_block)@2; putdown(rob1,white_block,green_can)@3; \
+    pickup(rob1,pitcher)@4; putdown(rob1,pitcher,red_block)@5";
+
+fn ask_example(question: &str, extra: &[&str]) -> (i32, String, String) {
+    let mut args = vec!["explain", EXAMPLE, "--happened", PAPER_PLAN, "-q", question];
+    args.extend_from_slice(extra);
+    run(&args)
+}
+
+#[test]
+fn why_not_as_json_has_type_answer_literals_and_a_tree() {
+    let (code, out, err) = ask_example(
+        "Why did you not pick up the white block at step 0?",
+        &["--outf=2"],
+    );
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["type"], "why_not");
+    assert_eq!(
+        v["literals"],
+        serde_json::json!(["holds(relation(on,green_can,white_block),0)"])
+    );
+    let tree = &v["tree"];
+    assert!(!tree["path"].as_array().unwrap().is_empty());
+    insta::assert_snapshot!(v["answer"].as_str().unwrap());
+}
+
+#[test]
+fn the_papers_questions_as_text() {
+    let mut transcript = String::new();
+    for q in [
+        "Please describe the plan.",
+        "Why did you pick up the green can at step 0?",
+        "Why did you not put the white block on the mug?",
+        "Why did you believe that the white block was below the green can in the initial state?",
+        "Why did you not pick up the green can at step 5?",
+    ] {
+        let (code, out, err) = ask_example(q, &[]);
+        assert_eq!(code, 0, "{q}: {err}");
+        transcript.push_str(&format!("> {q}\n{out}"));
+    }
+    insta::assert_snapshot!(transcript);
+}
+
+#[test]
+fn ask_takes_follow_up_steps_from_the_previous_question() {
+    let questions = "Why did you not pick up the green can at step 5?\n\
+                     Why did you believe the white block was on the green can?\n\
+                     Why did you grab the zebra?\n\
+                     Why did you pick up the green can at step 9?\n\
+                     quit\n";
+    let (code, out, err) = run_with(&["ask", EXAMPLE, "--happened", PAPER_PLAN], questions);
+    assert_eq!(code, 0, "{err}");
+    insta::assert_snapshot!(out);
+}
+
+#[test]
+fn explain_plans_by_itself_when_no_plan_is_given() {
+    let (code, out, err) = run(&["explain", TABLETOP, "-q", "describe the plan"]);
+    assert_eq!(code, 0, "{err}");
+    insta::assert_snapshot!(out);
+}
+
+#[test]
+fn pictures_highlight_the_answers_path() {
+    let dir = std::env::temp_dir().join(format!("lucent-explain-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let dot = dir.join("tree.dot");
+    let svg = dir.join("tree.svg");
+    let (code, _, err) = ask_example(
+        "Why did you not pick up the white block at step 0?",
+        &[
+            "--dot",
+            dot.to_str().unwrap(),
+            "--svg",
+            svg.to_str().unwrap(),
+        ],
+    );
+    assert_eq!(code, 0, "{err}");
+    let dot = std::fs::read_to_string(dot).unwrap();
+    let svg = std::fs::read_to_string(svg).unwrap();
+    assert!(dot.starts_with("digraph proof"), "{dot}");
+    assert!(dot.contains("holds(relation(on,green_can,white_block),0)"));
+    assert!(dot.contains("#2e7d32"), "the path is drawn in green");
+    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"), "{svg}");
+    assert!(svg.contains("#2e7d32"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn questions_not_understood_get_a_reply_and_exit_65() {
+    let (code, out, _) = ask_example("Why did you frobnicate the green can?", &[]);
+    assert_eq!(code, 65);
+    insta::assert_snapshot!("unknown_word", out);
+    let (code, out, _) = ask_example("Why did you pick up the purple elephant?", &[]);
+    assert_eq!(code, 65);
+    insta::assert_snapshot!("unknown_object", out);
+    let (code, out, _) = ask_example("Why did you pick up the green can at step 12?", &[]);
+    assert_eq!(code, 0);
+    insta::assert_snapshot!("out_of_range", out);
+}
+
+#[test]
+fn bad_input_is_exit_65_or_usage() {
+    let (code, _, err) = run(&["explain", "no/such/file.ald", "-q", "describe the plan"]);
+    assert_eq!(code, 65, "{err}");
+    let (code, _, err) = ask_example("describe the plan", &["--bogus"]);
+    assert_eq!(code, 1, "{err}");
+    let (code, _, err) = run(&[
+        "explain",
+        EXAMPLE,
+        "--happened",
+        "pickup(rob1,white_block)",
+        "-q",
+        "describe the plan",
+    ]);
+    assert_eq!(code, 20, "an action that cannot happen: {err}");
+    assert!(err.contains("cannot all be executed"), "{err}");
+    let (code, _, err) = run(&["explain", EXAMPLE, "--happened", "pickup(rob1", "-q", "x"]);
+    assert_eq!(code, 65, "{err}");
+}
+
+#[test]
+fn why_and_why_not_on_any_program() {
+    let file = "tests/data/explain/reach.lp";
+    let (code, out, err) = run(&["explain", file, "--why", "reach(c)"]);
+    assert_eq!(code, 0, "{err}");
+    insta::assert_snapshot!("why_reach_c", out);
+    let (code, out, err) = run(&["explain", file, "--why-not", "reach(d)"]);
+    assert_eq!(code, 0, "{err}");
+    insta::assert_snapshot!("why_not_reach_d", out);
+    let (code, out, err) = run(&["explain", file, "--why-not", "reach(zebra)", "--outf=2"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["type"], "why_not");
+    assert!(v["answer"].as_str().unwrap().contains("No rule"), "{out}");
+    let (code, _, err) = run(&["explain", file, "--why", "reach(X"]);
+    assert_eq!(code, 65, "{err}");
+}
+
+#[test]
+fn what_if_resolves_the_history_with_another_action() {
+    let (code, out, err) = ask_example(
+        "What if you had put the white block on the table at step 3?",
+        &["--outf=2"],
+    );
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["type"], "what_if");
+    assert_eq!(
+        v["literals"],
+        serde_json::json!([
+            "occurs(putdown(rob1,white_block,table),3)",
+            "holds(relation(on,white_block,table),4)"
+        ]),
+        "{out}"
+    );
+    let (code, out, err) = ask_example(
+        "What if you had put the green can on the mug at step 1?",
+        &[],
+    );
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        out.trim(),
+        "I could not have put the green can on the mug at step 1. \
+         Because the mug has an irregular surface."
+    );
+}
+
+#[test]
+fn why_no_plan_names_a_minimal_set_of_goals_and_constraints() {
+    // The plan of the execution example exists: nothing to blame.
+    let (code, out, err) = ask_example("Why is there no plan?", &["--max-horizon", "6"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("There is a plan of at most 6 steps"), "{out}");
+    // Holding the white block while the green can stands on it cannot be a goal state; no
+    // plan exists, so the history is the initial state alone.
+    let (code, out, err) = run(&[
+        "explain",
+        EXAMPLE,
+        "--goal",
+        "relation(on, green_can, white_block), in_hand(rob1, white_block)",
+        "--max-horizon",
+        "3",
+        "-q",
+        "Why is there no plan?",
+        "--outf=2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["type"], "no_plan");
+    assert_eq!(
+        v["literals"],
+        serde_json::json!([
+            "relation(on,green_can,white_block)",
+            "in_hand(rob1,white_block)"
+        ]),
+        "{out}"
+    );
+}

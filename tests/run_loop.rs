@@ -1,0 +1,277 @@
+//! The sense-plan-act loop (`lucent::plan::act`) against a scripted world double (no physics,
+//! so it runs without the `sim` feature): a three-block table whose perception and actions are
+//! scripted per test. Checks that a clean run follows its first plan, that a failed action is a
+//! discrepancy followed by a replan from the observed state, that contradictory readings are
+//! doubted (the less confident one) instead of leaving the robot without an answer set, that a
+//! budget ends a run with its reason, and that a recorded discrepancy is what the learner's
+//! surprise classification (DOMAIN.md 5.1) consumes.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use lucent::action;
+use lucent::base::SourceMap;
+use lucent::control::Symbol;
+use lucent::learn::surprise::classify;
+use lucent::learn::term::Literal;
+use lucent::plan::act::{run, Domain, Event, Percept, RunConfig, Seen, World};
+use lucent::plan::history::{Ending, History};
+
+fn domain() -> Domain {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("domains/ra/kb_full.ald");
+    let mut sources = SourceMap::new();
+    let file = sources.add(
+        path.to_string_lossy().into_owned(),
+        std::fs::read_to_string(&path).unwrap(),
+    );
+    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let parsed = action::load(&mut sources, file, &mut read);
+    assert!(!parsed.has_errors());
+    Domain {
+        description: parsed.description,
+        sources,
+    }
+}
+
+fn sym(text: &str) -> Symbol {
+    Symbol::parse(text).unwrap()
+}
+
+/// A table with blocks: `on[x]` is x's support; one hand.
+struct Blocks {
+    on: BTreeMap<String, String>,
+    held: Option<String>,
+    /// Actions (by their index among executed actions) that slip: the world does nothing.
+    slips: BTreeSet<usize>,
+    executed: usize,
+    /// Extra readings of the first perception of step 0: (fluent, confidence).
+    phantom: Vec<(String, f64)>,
+    looks: usize,
+}
+
+impl Blocks {
+    fn new(on: &[(&str, &str)]) -> Blocks {
+        Blocks {
+            on: on
+                .iter()
+                .map(|(a, b)| (a.to_string(), b.to_string()))
+                .collect(),
+            held: None,
+            slips: BTreeSet::new(),
+            executed: 0,
+            phantom: Vec::new(),
+            looks: 0,
+        }
+    }
+}
+
+impl World for Blocks {
+    fn objects(&self) -> Vec<String> {
+        let mut o: Vec<String> = self.on.keys().cloned().collect();
+        o.extend(self.held.clone());
+        o.sort();
+        o
+    }
+
+    fn perceive(&mut self, _look: u32) -> Percept {
+        let mut p = Percept::default();
+        for o in self.objects() {
+            p.statics.push(sym(&format!("has_size({o},large)")));
+            p.statics.push(sym(&format!("has_surface({o},flat)")));
+            p.fluents.push(Seen {
+                fluent: sym(&format!("in_hand(rob1,{o})")),
+                value: self.held.as_deref() == Some(o.as_str()),
+                confidence: 1.0,
+                exact: true,
+            });
+        }
+        for (a, b) in &self.on {
+            p.fluents.push(Seen {
+                fluent: sym(&format!("relation(on,{a},{b})")),
+                value: true,
+                confidence: 0.9,
+                exact: false,
+            });
+        }
+        if self.looks == 0 {
+            for (f, c) in &self.phantom {
+                p.fluents.push(Seen {
+                    fluent: sym(f),
+                    value: true,
+                    confidence: *c,
+                    exact: false,
+                });
+            }
+        }
+        self.looks += 1;
+        p
+    }
+
+    fn execute(&mut self, action: &Symbol) -> Result<Option<String>, String> {
+        let n = self.executed;
+        self.executed += 1;
+        let args: Vec<String> = action.args().iter().map(|a| a.to_string()).collect();
+        if self.slips.contains(&n) {
+            return Ok(Some("the grasp slipped".into()));
+        }
+        if action.is("pickup", 2) {
+            let o = &args[1];
+            if self.held.is_some() || self.on.values().any(|s| s == o) {
+                return Ok(Some("blocked".into()));
+            }
+            self.on.remove(o);
+            self.held = Some(o.clone());
+        } else if action.is("putdown", 3) {
+            if self.held.as_deref() != Some(args[1].as_str()) {
+                return Ok(Some("not held".into()));
+            }
+            self.held = None;
+            self.on.insert(args[1].clone(), args[2].clone());
+        } else {
+            return Err(format!("unknown action {action}"));
+        }
+        Ok(None)
+    }
+
+    fn holds_in_truth(&mut self, literal: &Symbol) -> Option<bool> {
+        let args: Vec<String> = literal.args().iter().map(|a| a.to_string()).collect();
+        if literal.is("relation", 3) && args[0] == "on" {
+            return Some(self.on.get(&args[1]) == Some(&args[2]));
+        }
+        if literal.is("in_hand", 2) {
+            return Some(self.held.as_deref() == Some(args[1].as_str()));
+        }
+        None
+    }
+}
+
+fn go(world: &mut Blocks, goal: &str, config: &RunConfig) -> (History, Vec<String>) {
+    let mut events = Vec::new();
+    let h = run(&domain(), world, &[sym(goal)], "blocks", config, &mut |e| {
+        events.push(match e {
+            Event::Perceived { step, look, .. } => format!("perceived {step}/{look}"),
+            Event::Planned(p) => format!("planned {}", p.actions.join(";")),
+            Event::Acted { action, .. } => format!("acted {action}"),
+            Event::Discrepancy(d) => format!("discrepancy {}", d.step),
+        })
+    });
+    (h, events)
+}
+
+#[test]
+fn a_clean_run_follows_its_first_plan_and_confirms_the_goal() {
+    let mut w = Blocks::new(&[("a", "table"), ("b", "a"), ("c", "table")]);
+    let (h, events) = go(&mut w, "relation(on,a,c)", &RunConfig::default());
+    assert_eq!(h.ending, Some(Ending::GoalObserved), "{events:?}");
+    assert_eq!(h.goal_in_truth, Some(true));
+    assert!(h.succeeded());
+    assert_eq!(h.plans.len(), 1);
+    assert!(h.discrepancies.is_empty());
+    assert_eq!(h.plans[0].actions.len(), 4);
+    assert_eq!(h.actions(), h.plans[0].actions);
+    assert_eq!(h.steps.len(), 5);
+    // The goal was seen twice at the last step: the first look and the confirming one.
+    assert_eq!(h.steps[4].looks, 2);
+    assert!(h.steps[4].belief.contains(&"relation(on,a,c)".to_string()));
+    let back = History::from_json(&h.to_json()).unwrap();
+    assert_eq!(back, h);
+    assert!(h.to_ald().contains("happened pickup(rob1,b) at 0."));
+}
+
+#[test]
+fn a_failed_action_is_a_discrepancy_and_the_robot_replans_from_what_it_sees() {
+    let mut w = Blocks::new(&[("a", "table"), ("b", "table")]);
+    w.slips.insert(0);
+    let (h, events) = go(&mut w, "relation(on,a,b)", &RunConfig::default());
+    assert!(h.succeeded(), "{events:?}");
+    assert_eq!(h.discrepancies.len(), 1);
+    let d = &h.discrepancies[0];
+    assert_eq!(d.step, 0);
+    assert_eq!(d.action, "pickup(rob1,a)");
+    assert_eq!(d.failure.as_deref(), Some("the grasp slipped"));
+    assert_eq!(d.extra, vec!["in_hand(rob1,a)".to_string()]);
+    assert_eq!(h.plans.len(), 2);
+    assert_eq!(h.plans[1].step, 1);
+    assert_eq!(h.plans[1].reason, "discrepancy at step 0");
+    assert_eq!(
+        h.actions(),
+        vec!["pickup(rob1,a)", "pickup(rob1,a)", "putdown(rob1,a,b)"]
+    );
+
+    // The learner's classification consumes the discrepancy as it is: the hand was predicted
+    // full and observed empty, a literal predicted but not observed (DOMAIN.md 5.1).
+    let lit = |t: &str| {
+        let s = sym(t);
+        let a: Vec<String> = s.args().iter().map(|a| a.to_string()).collect();
+        let a: Vec<&str> = a.iter().map(String::as_str).collect();
+        Literal::ground(s.name().unwrap(), &a)
+    };
+    let before: Vec<Literal> = d.before.iter().map(|t| lit(t)).collect();
+    let predicted: Vec<Literal> = d
+        .predicted
+        .as_ref()
+        .unwrap()
+        .iter()
+        .map(|t| lit(t))
+        .collect();
+    let observed: Vec<Literal> = d.observed.iter().map(|t| lit(t)).collect();
+    let outcome = classify(&before, Some(&predicted), Some(&observed));
+    assert!(outcome.surprising());
+    assert!(outcome.extra.contains(&lit("in_hand(rob1,a)")));
+}
+
+#[test]
+fn contradictory_readings_are_doubted_not_fatal() {
+    // The camera also reports `a` on `b` and `b` on `a` with little confidence: an object rests
+    // on one thing at most, and two objects never rest on each other.
+    let mut w = Blocks::new(&[("a", "table"), ("b", "table"), ("c", "table")]);
+    w.phantom = vec![
+        ("relation(on,a,b)".into(), 0.55),
+        ("relation(on,b,a)".into(), 0.6),
+    ];
+    let (h, events) = go(&mut w, "relation(on,c,a)", &RunConfig::default());
+    assert!(h.succeeded(), "{events:?}");
+    let mut doubted = h.steps[0].doubted.clone();
+    doubted.sort();
+    assert_eq!(
+        doubted,
+        vec![
+            "relation(on,a,b)".to_string(),
+            "relation(on,b,a)".to_string()
+        ]
+    );
+    assert!(h.steps[0]
+        .belief
+        .contains(&"relation(on,a,table)".to_string()));
+    assert_eq!(h.actions(), vec!["pickup(rob1,c)", "putdown(rob1,c,a)"]);
+}
+
+#[test]
+fn the_less_confident_of_two_readings_is_the_one_doubted() {
+    // `c` is seen on the table (0.9) and on `a` (0.95): one must go, and it is the table.
+    let mut w = Blocks::new(&[("a", "table"), ("b", "table"), ("c", "table")]);
+    w.phantom = vec![("relation(on,c,a)".into(), 0.95)];
+    let config = RunConfig {
+        max_actions: 0,
+        ..RunConfig::default()
+    };
+    let (h, _) = go(&mut w, "relation(on,a,b)", &config);
+    assert_eq!(h.steps[0].doubted, vec!["relation(on,c,table)".to_string()]);
+    assert_eq!(h.ending, Some(Ending::ActionBudget));
+    assert!(!h.succeeded());
+}
+
+#[test]
+fn budgets_end_a_run_with_their_reason() {
+    let mut w = Blocks::new(&[("a", "table"), ("b", "table")]);
+    w.slips = (0..10).collect();
+    let config = RunConfig {
+        max_plans: 3,
+        ..RunConfig::default()
+    };
+    let (h, _) = go(&mut w, "in_hand(rob1,a)", &config);
+    assert_eq!(h.ending, Some(Ending::ReplanBudget));
+    assert_eq!(h.plans.len(), 3);
+    assert_eq!(h.discrepancies.len(), 3);
+    assert_eq!(h.goal_in_truth, Some(false));
+    assert!(!h.succeeded());
+}
