@@ -95,7 +95,7 @@ pub struct Config {
     /// Bump the variables of loop nogoods when they are learnt (clasp `--score-other=all`).
     /// Learn an unfounded set as one shared loop formula (`engine/loops.rs`) instead of one
     /// clause per atom. Off by default: it halves the peak memory on labyrinth but raised the
-    /// conflict counts (ARCHITECTURE.md, "Loop nogoods").
+    /// conflict counts (docs/design/solver.md, "Loop nogoods").
     pub shared_loops: bool,
     pub score_other: bool,
     /// Decide variables without a saved phase with the polarity that occurs more often in
@@ -106,7 +106,7 @@ pub struct Config {
     pub restart_blocking: bool,
     /// Merge atoms equivalent to a literal or to a rule body by their completion before search
     /// (clasp `--eq`, on in all of clasp's configurations; see `translate::equivalences`). On
-    /// by default: over the benchmark pairs it lowers conflicts and CPU time (ARCHITECTURE.md,
+    /// by default: over the benchmark pairs it lowers conflicts and CPU time (docs/design/solver.md,
     /// "Search settings"). Atoms that a later step may still close a positive cycle through
     /// (they depend on an external atom) are not merged.
     pub eq: bool,
