@@ -9,10 +9,7 @@
 //! Format of `tests/data/h4/NAME.questions` (NAME.ald is the scene): `plan: a@0; b@1; ...` (the
 //! plan KB_full's planner must return first, checked by hand to be minimal), then one question
 //! per line, `TYPE | English | lit; lit; ... | why these literals` (`-` for no literals), with
-//! `#` comments; `TYPE!` marks a question whose hand-derived truth the code does not meet yet
-//! because of a known code bug (named in a comment beside it): it is scored and listed, and
-//! left out of the exactness requirement until the bug is fixed. Answers
-//! are asked in full mode (DOMAIN.md 6.9: the truth lists every condition). Matching
+//! `#` comments. Answers are asked in full mode (DOMAIN.md 6.9: the truth lists every condition). Matching
 //! canonicalizes converse relations (`below(A,B)` is `above(B,A)`, `behind`/`front`,
 //! `left`/`right`). An empty answer has precision 100% when the truth is empty too, else 0%; an
 //! empty truth has recall 100%.
@@ -32,8 +29,6 @@ use lucent::explain::term::Term;
 /// One curated question.
 struct Item {
     kind: String,
-    /// A known code bug keeps this answer from the truth (`TYPE!`).
-    known_bug: bool,
     text: String,
     truth: BTreeSet<String>,
     line: usize,
@@ -82,8 +77,7 @@ fn load_sets() -> Vec<SceneSet> {
                 assert_eq!(parts.len(), 4, "{name}.questions:{}: four fields", i + 1);
                 let kind = parts[0].trim();
                 items.push(Item {
-                    known_bug: kind.ends_with('!'),
-                    kind: kind.trim_end_matches('!').to_string(),
+                    kind: kind.to_string(),
                     text: parts[1].trim().to_string(),
                     truth: parts[2]
                         .split(';')
@@ -263,18 +257,12 @@ fn h4_kb_full_answers_exactly_the_hand_derived_literals() {
     }
     let mut rows = Vec::new();
     let mut wrong = Vec::new();
-    let mut known = Vec::new();
     for set in &sets {
         let (h, _) = history(set, None);
         for (item, (text, got)) in set.items.iter().zip(ask(set, &h)) {
             let (p, r) = score(&got, &item.truth);
             if p < 1.0 || r < 1.0 {
-                let list = if item.known_bug {
-                    &mut known
-                } else {
-                    &mut wrong
-                };
-                list.push(format!(
+                wrong.push(format!(
                     "{}.questions:{}: {}\n  answer: {text}\n  got:    {got:?}\n  truth:  {:?}",
                     set.name, item.line, item.text, item.truth
                 ));
@@ -283,7 +271,6 @@ fn h4_kb_full_answers_exactly_the_hand_derived_literals() {
         }
     }
     println!("KB_full\n{}", render(&table(&rows)));
-    println!("known code bugs ({}):\n{}", known.len(), known.join("\n"));
     assert!(
         wrong.is_empty(),
         "{} wrong:\n{}",

@@ -459,13 +459,18 @@ fn collect_constants(t: &Term, out: &mut Vec<Term>) {
 /// The literal a relation literal normalizes to (DOMAIN.md 6.2): follow spatial-algebra supports
 /// down the preferred path from `start` to the first literal whose own support is not spatial
 /// algebra. Returns that node.
+///
+/// Only *rewrites* are followed: spatial supports with one fluent body literal (SR1b
+/// `above(A,B)` from `on(A,B)`, SR1c, SR2, SR3), which restate a literal as an equivalent one.
+/// A spatial support with several fluent body literals (SR1a: `on(A,B)` from `above(A,B)` and
+/// `touch(A,B)`) is a conjunction, not a restatement: the literal it supports is already
+/// normal (at a step after 0, `on(C,B)` from E1 is such a literal: SR1a outranks its inertia
+/// support, and following SR1a would name `touch(C,B)` instead of `on(C,B)`).
 pub fn normalize(tree: &ProofTree, start: NodeId, spatial_labels: &[String]) -> NodeId {
     let mut at = start;
     loop {
         let n = tree.node(at);
-        let spatial = matches!(&n.kind, Kind::Axiom { label, .. }
-            if spatial_labels.iter().any(|p| label.starts_with(p.as_str())));
-        if !spatial {
+        if !is_spatial_node(n, spatial_labels) || fluent_body_literals(tree, at) != 1 {
             return at;
         }
         // Follow the path if it continues from here, else the first fluent child.
@@ -486,4 +491,48 @@ pub fn normalize(tree: &ProofTree, start: NodeId, spatial_labels: &[String]) -> 
             None => return at,
         }
     }
+}
+
+/// Whether a node's support is a spatial-algebra axiom (a label of `spatial_labels`).
+pub fn is_spatial_node(n: &Node, spatial_labels: &[String]) -> bool {
+    matches!(&n.kind, Kind::Axiom { label, .. }
+        if spatial_labels.iter().any(|p| label.starts_with(p.as_str())))
+}
+
+/// The number of distinct fluent or action literals (literals with a step) among a node's
+/// children: the body literals of its support that are traced.
+fn fluent_body_literals(tree: &ProofTree, id: NodeId) -> usize {
+    let mut seen: Vec<&Term> = Vec::new();
+    for c in &tree.node(id).children {
+        let child = tree.node(*c);
+        if child.step.is_some() && !seen.contains(&&child.literal) {
+            seen.push(&child.literal);
+        }
+    }
+    seen.len()
+}
+
+/// Among the alternatives `parent` has for the literal of `chosen` (its children with that
+/// literal), the one to show on the answer's path: `chosen` unless it is a spatial conjunction
+/// (SR1a) and a support that is not spatial algebra (an observation, a causal law, inertia)
+/// is there, which then says where the literal came from.
+pub fn origin_alternative(
+    tree: &ProofTree,
+    parent: NodeId,
+    chosen: NodeId,
+    spatial_labels: &[String],
+) -> NodeId {
+    let lit = &tree.node(chosen).literal;
+    if !is_spatial_node(tree.node(chosen), spatial_labels) {
+        return chosen;
+    }
+    tree.node(parent)
+        .children
+        .iter()
+        .copied()
+        .find(|c| {
+            let n = tree.node(*c);
+            n.literal == *lit && !is_spatial_node(n, spatial_labels)
+        })
+        .unwrap_or(chosen)
 }

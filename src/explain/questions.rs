@@ -11,7 +11,7 @@
 //! plan, what if) and goals are answered by [`AnswerError::NeedsSolver`]: the caller with the
 //! planning problem runs them (`explain::counterfactual`, the planner).
 
-use super::build::{normalize, BuildConfig, Builder};
+use super::build::{normalize, origin_alternative, BuildConfig, Builder};
 use super::english::{holds, occurs, Question};
 use super::lexicon::Lexicon;
 use super::term::Term;
@@ -421,10 +421,23 @@ impl Answering<'_, '_> {
                     continue;
                 }
                 seen.push(child.literal.clone());
-                let normal = normalize(&tree, *c, &self.scn.build.spatial_labels);
+                let labels = &self.scn.build.spatial_labels;
+                let normal = normalize(&tree, *c, labels);
+                let mut steps = spatial_path(&tree, *c, normal);
+                // The normal literal's node on the path: its origin (inertia, a causal law)
+                // rather than a spatial conjunction that restates it.
+                let parent = if steps.len() >= 2 {
+                    steps[steps.len() - 2]
+                } else {
+                    *cond
+                };
+                let normal = origin_alternative(&tree, parent, normal, labels);
+                if let Some(last) = steps.last_mut() {
+                    *last = normal;
+                }
                 let n = tree.node(normal);
                 if k == 0 && path.len() == 1 && child.step.is_some() {
-                    path.extend(spatial_path(&tree, *c, normal));
+                    path.extend(steps);
                 }
                 if n.kind == Kind::Observation && n.step == Some(step) && chosen.len() == 1 {
                     observed.get_or_insert((n.literal.clone(), step));
