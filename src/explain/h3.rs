@@ -34,7 +34,7 @@ use super::lexicon::Lexicon;
 use super::questions::{answer, Mode, Scenario, Session};
 use super::term::Term;
 use super::tree::{recheck, BodyLiteral, Kind, NodeId, Oracle, ProofTree};
-use crate::learn::rng::SplitMix64;
+use crate::base::rng::SplitMix64;
 
 /// A family of scenes (DOMAIN.md 1.6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
