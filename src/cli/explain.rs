@@ -32,7 +32,6 @@ use crate::explain::history::{explain_history, parse_actions, History, HistoryCo
 use crate::explain::lexicon::Lexicon;
 use crate::explain::oracle::{Labels, ProgramOracle};
 use crate::explain::questions::{answer, Answer, AnswerError, Mode, Session};
-use crate::explain::term::Term;
 use crate::plan::{plan, PlanConfig};
 
 /// `lucent explain --help`.
@@ -485,8 +484,8 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
         (None, Some(x)) => (x.clone(), true),
         _ => return usage(err, "explain", "give one of --why and --why-not"),
     };
-    let atom = match Term::parse(&atom_text) {
-        Ok(t) if t.is_ground() && t.name().is_some_and(|n| !n.is_empty()) => t,
+    let atom = match Symbol::parse(&atom_text) {
+        Ok(t) if t.name().is_some_and(|n| !n.is_empty()) => t,
         _ => {
             writeln!(
                 err,

@@ -11,9 +11,9 @@
 //! (an action that is not executable, an inconsistent scene) is [`HistoryError::Inconsistent`],
 //! never a panic.
 
-use super::oracle::{symbol_of, term_of, Labels, ProgramOracle};
+use super::oracle::{Labels, ProgramOracle};
+use super::pattern::SymbolExt;
 use super::questions::Scenario;
-use super::term::Term;
 use crate::action::{self, ast::Description, ast::StatementKind, ast::Value, Options};
 use crate::action::{AxiomOrigin, OriginKind};
 use crate::base::{Diagnostics, SourceMap};
@@ -60,9 +60,9 @@ pub struct History {
     /// The ground program with provenance and the answer set.
     pub oracle: ProgramOracle,
     /// The actions with their steps.
-    pub plan: Vec<(u32, Term)>,
+    pub plan: Vec<(u32, Symbol)>,
     /// The goal fluents (`relation(on,pitcher,red_block)`), from the description's `goal`.
-    pub goal: Vec<Term>,
+    pub goal: Vec<Symbol>,
     /// The last step (the number of actions).
     pub last_step: u32,
 }
@@ -84,7 +84,7 @@ impl History {
         let mut out: Vec<String> = Vec::new();
         for lit in self.oracle.true_literals() {
             if let Some("has_size" | "has_surface" | "object") = lit.name() {
-                if let Some(Term::Fun { name, args, .. }) = lit.arg(0) {
+                if let Some(Symbol::Function { name, args, .. }) = lit.arg(0) {
                     if args.is_empty() && !out.contains(name) {
                         out.push(name.clone());
                     }
@@ -97,14 +97,14 @@ impl History {
 }
 
 /// The goal fluents of a description: the literals of its `goal` statements.
-pub fn goal_of(desc: &Description) -> Vec<Term> {
+pub fn goal_of(desc: &Description) -> Vec<Symbol> {
     let mut out = Vec::new();
     for s in &desc.statements {
         if let StatementKind::Goal { .. } = &s.kind {
             let text = action::translate::show_statement(&s.kind);
             let text = text.strip_prefix("goal ").unwrap_or(&text);
             for part in split_top(text) {
-                if let Ok(t) = Term::parse(&part) {
+                if let Ok(t) = Symbol::parse(&part) {
                     out.push(t);
                 }
             }
@@ -151,7 +151,7 @@ fn gate_history(
     labels: &mut Labels,
     sources: &mut SourceMap,
 ) {
-    let gate = Term::constant(HISTORY_GATE);
+    let gate = Symbol::constant(HISTORY_GATE);
     for (k, st) in program.statements.iter_mut().enumerate() {
         let Some(o) = origins.get(k) else { continue };
         if o.kind != OriginKind::History {
@@ -278,7 +278,7 @@ pub fn explain_history(
         plan: actions
             .iter()
             .enumerate()
-            .map(|(i, a)| (i as u32, term_of(a)))
+            .map(|(i, a)| (i as u32, a.clone()))
             .collect(),
         goal: goal_of(&desc),
         last_step: actions.len() as u32,
@@ -299,9 +299,8 @@ pub fn parse_actions(text: &str) -> Result<Vec<Symbol>, String> {
             Some((a, s)) => (a.trim(), Some(s.trim())),
             None => (part, None),
         };
-        let sym = Term::parse(a)
+        let sym = Symbol::parse(a)
             .ok()
-            .and_then(|t| symbol_of(&t))
             .ok_or_else(|| format!("`{part}` is not an action term"))?;
         if let Some(s) = step {
             match s.parse::<usize>() {
