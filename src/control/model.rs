@@ -1,0 +1,140 @@
+//! Models as the robot layers read them: shown symbols, the whole answer set as [`Symbol`]s,
+//! membership by symbol or atom, costs, applied CR rules and supporting rules; [`OwnedModel`]
+//! keeps one after its solve call.
+//!
+//! Invariant: a [`Model`] borrows the Control's atom tables for the duration of the callback,
+//! so reading it never copies the program.
+
+use super::*;
+
+/// The atom tables a model reads its symbols from.
+pub(super) struct Names<'a> {
+    pub(super) syms: &'a Symbols,
+    pub(super) atom_sym: &'a [Option<SymId>],
+    pub(super) sym_atom: &'a [AtomId],
+}
+
+/// One answer set, as the callback of [`Control::solve`] sees it.
+pub struct Model<'a> {
+    pub(super) raw: &'a solve::Model,
+    pub(super) names: &'a Names<'a>,
+}
+
+impl Model<'_> {
+    /// The model's number in its call (1-based).
+    pub fn number(&self) -> usize {
+        self.raw.number
+    }
+
+    /// The shown symbols (`#show`), in output order, without duplicates.
+    pub fn symbols(&self) -> Vec<Symbol> {
+        self.raw
+            .symbols
+            .iter()
+            .filter_map(|s| Symbol::parse(s).ok())
+            .collect()
+    }
+
+    /// Every true atom with a symbol: the whole answer set (shown or not), in atom order.
+    pub fn atoms(&self) -> Vec<Symbol> {
+        self.raw
+            .atoms
+            .iter()
+            .filter_map(|&a| {
+                let s = (*self.names.atom_sym.get(a as usize - 1)?)?;
+                Some(Symbol::from_table(self.names.syms, s))
+            })
+            .collect()
+    }
+
+    /// Whether the atom of `symbol` is true.
+    pub fn contains(&self, symbol: &Symbol) -> bool {
+        let Some(id) = symbol.find_in(self.names.syms) else {
+            return false;
+        };
+        match self.names.sym_atom.get(id.0 as usize) {
+            Some(&a) if a != 0 => self.raw.holds(a),
+            _ => false,
+        }
+    }
+
+    /// Whether atom `atom` is true.
+    pub fn holds(&self, atom: AtomId) -> bool {
+        self.raw.holds(atom)
+    }
+
+    /// The costs, one per priority level, highest first (empty without optimization).
+    pub fn costs(&self) -> &[i64] {
+        &self.raw.costs
+    }
+
+    /// True when the model is known to be optimal.
+    pub fn optimal(&self) -> bool {
+        self.raw.optimal
+    }
+
+    /// The labels of the applied consistency-restoring rules.
+    pub fn cr_applied(&self) -> Vec<Symbol> {
+        self.raw
+            .cr_applied
+            .iter()
+            .map(|l| Symbol::parse(l).unwrap_or_else(|_| Symbol::String(l.clone())))
+            .collect()
+    }
+
+    /// For every true atom, the index of one rule of [`Control::program`] that supports it
+    /// (`None` for externals and assumptions without a rule).
+    pub fn supports(&self) -> impl Iterator<Item = (AtomId, Option<usize>)> + '_ {
+        self.raw
+            .atoms
+            .iter()
+            .copied()
+            .zip(self.raw.support.iter().copied())
+    }
+
+    /// The solver's form of the model (true atoms as numbers, shown symbols as text).
+    pub fn raw(&self) -> &solve::Model {
+        self.raw
+    }
+
+    /// An owned copy, with the whole answer set as symbols.
+    pub fn to_owned_model(&self) -> OwnedModel {
+        let mut atoms = self.atoms();
+        atoms.sort();
+        OwnedModel {
+            number: self.number(),
+            shown: self.symbols(),
+            atoms,
+            costs: self.raw.costs.clone(),
+            cr_applied: self.cr_applied(),
+            optimal: self.raw.optimal,
+            raw: self.raw.clone(),
+        }
+    }
+}
+
+/// A model kept after its solve call (see [`Control::solve_all`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct OwnedModel {
+    /// Its number in its call.
+    pub number: usize,
+    /// The shown symbols.
+    pub shown: Vec<Symbol>,
+    /// Every true atom with a symbol, in clingo's order.
+    pub atoms: Vec<Symbol>,
+    /// The costs, highest priority first.
+    pub costs: Vec<i64>,
+    /// The labels of the applied CR rules.
+    pub cr_applied: Vec<Symbol>,
+    /// True when known to be optimal.
+    pub optimal: bool,
+    /// The solver's form.
+    pub raw: solve::Model,
+}
+
+impl OwnedModel {
+    /// Whether `symbol` is a true atom.
+    pub fn contains(&self, symbol: &Symbol) -> bool {
+        self.atoms.binary_search(symbol).is_ok()
+    }
+}
