@@ -617,7 +617,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
     let objects: Vec<Symbol> = objects
         .iter()
         .filter(|o| o.as_str() != "table")
-        .map(|o| Symbol::constant(o))
+        .map(Symbol::constant)
         .collect();
     let mut changed = action.clone();
     if let Symbol::Function { args, .. } = &mut changed {
