@@ -11,8 +11,8 @@
 
 use linfa::prelude::*;
 use linfa_trees::{DecisionTree, SplitQuality};
+use lucent::base::rng::SplitMix64;
 use lucent::learn::cart::{best_splits, split_entropy, CartParams, NodeKind, Table, Tree};
-use lucent::learn::rng::SplitMix64;
 use ndarray::{Array1, Array2};
 
 /// A random table: `n` samples, 10 features with varied densities, features 8 and 9 copies of 0

@@ -10,8 +10,9 @@
 use std::collections::BTreeSet;
 
 use lucent::learn::episode::{run, LearnConfig, LearnerKb, States, World};
+use lucent::learn::h1;
 use lucent::learn::score::{relaxed, strict, Counts};
-use lucent::learn::term::{in_hand, o, r, rel, Axiom, AxiomKind, Literal, Term, IN_HAND, RELATION};
+use lucent::learn::term::{Axiom, Literal, Term, IN_HAND, RELATION};
 
 const ROBOT: &str = "rob1";
 
@@ -262,42 +263,6 @@ impl LearnerKb for Double {
     }
 }
 
-fn targets() -> Vec<Axiom> {
-    let pickup = Literal::new("pickup", vec![r(1), o(1)]);
-    let putdown = Literal::new("putdown", vec![r(1), o(1), o(2)]);
-    vec![
-        Axiom::new(
-            AxiomKind::Executability,
-            pickup.clone(),
-            vec![rel("below", o(1), o(2))],
-        ),
-        Axiom::new(
-            AxiomKind::Executability,
-            pickup.clone(),
-            vec![in_hand(true, r(1), o(2))],
-        ),
-        Axiom::new(
-            AxiomKind::Executability,
-            putdown.clone(),
-            vec![in_hand(false, r(1), o(1))],
-        ),
-        Axiom::new(
-            AxiomKind::Causal {
-                head: in_hand(true, r(1), o(1)),
-            },
-            pickup,
-            vec![],
-        ),
-        Axiom::new(
-            AxiomKind::Causal {
-                head: in_hand(false, r(1), o(1)),
-            },
-            putdown,
-            vec![],
-        ),
-    ]
-}
-
 #[test]
 fn learning_loop_over_the_double() {
     let config = LearnConfig::default();
@@ -317,8 +282,8 @@ fn learning_loop_over_the_double() {
         for f in &found {
             eprintln!("seed {seed} found {}", f.short());
         }
-        s.add(strict(&found, &targets()));
-        x.add(relaxed(&found, &targets()));
+        s.add(strict(&found, &h1::targets()));
+        x.add(relaxed(&found, &h1::targets()));
         // Something was learned, and it made the learner agree more: the first episode
         // detected a surprise and kept at least one axiom.
         assert!(report.episodes[0].detected_at.is_some());

@@ -5,6 +5,7 @@
 
 pub mod diag;
 pub mod intern;
+pub mod rng;
 pub mod source;
 pub mod span;
 

@@ -32,9 +32,9 @@ use std::time::Instant;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+use crate::base::rng::SplitMix64;
 use crate::learn::episode::LearnConfig;
 use crate::learn::kb::KbSpec;
-use crate::learn::rng::SplitMix64;
 
 /// The paper's four hypotheses (DOMAIN.md 7.1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]

@@ -34,8 +34,8 @@ use super::lexicon::Lexicon;
 use super::pattern::{Pattern, SymbolExt};
 use super::questions::{answer, Mode, Scenario, Session};
 use super::tree::{recheck, BodyLiteral, Kind, NodeId, Oracle, ProofTree};
+use crate::base::rng::SplitMix64;
 use crate::control::Symbol;
-use crate::learn::rng::SplitMix64;
 
 /// A family of scenes (DOMAIN.md 1.6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -12,7 +12,7 @@
 //! children with the parent's class ratio and only lengthens the paths the learner turns into
 //! candidate axioms, so we stop there).
 
-use super::rng::SplitMix64;
+use crate::base::rng::SplitMix64;
 
 /// Tree-growing parameters.
 #[derive(Clone, Debug, PartialEq)]

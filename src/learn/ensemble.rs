@@ -18,8 +18,8 @@ use std::collections::{BTreeMap, BTreeSet};
 use rayon::prelude::*;
 
 use super::cart::{CartParams, Table, Test, Tree};
-use super::rng::SplitMix64;
 use super::term::{Axiom, AxiomKind, Literal};
+use crate::base::rng::SplitMix64;
 
 /// Ensemble parameters (defaults: DOMAIN.md 5.6-5.8).
 #[derive(Clone, Debug, PartialEq)]

@@ -6,7 +6,8 @@
 //! every trial agrees the run ends. Otherwise the same action type is repeated to collect
 //! samples (5.4) until a dataset holds T; the samples are lifted (5.5), the ensemble votes
 //! (5.6-5.8), and the kept axioms join the learner's knowledge base at once, with a strength
-//! (5.9).
+//! (5.9) that decays after every episode and is refreshed when the axiom is learned again or
+//! applies in a trial's answer set (the learner acts on it).
 //!
 //! Two rules of ours keep an episode finite and informative: collection also ends after
 //! `stall_trials` consecutive trials that add no sample (then a dataset whose positives reached
@@ -18,13 +19,13 @@
 use super::cart::Table;
 use super::ensemble::{self, EnsembleParams, Target};
 use super::lift::{choose_head, relevant, Algebra, Lifted, Lifter, Signature};
-use super::rng::SplitMix64;
 use super::state::{
     generate, ActionType, CollectConfig, Collector, Dataset, OneStep, Outcome, Pools,
 };
 use super::strength::{Added, Origin, Store};
 use super::surprise::classify;
 use super::term::{Axiom, AxiomKind, Literal};
+use crate::base::rng::SplitMix64;
 
 /// What a world says about one action from one state.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -114,6 +115,8 @@ pub struct RunReport {
     pub episodes: Vec<EpisodeReport>,
     /// Trials run in all.
     pub trials: usize,
+    /// Solver calls of the worlds, when the caller counts them (0 otherwise).
+    pub solves: usize,
 }
 
 /// The data of one trial that went into a dataset.
@@ -128,15 +131,22 @@ struct TrialData {
 /// `skip_uninformative` (collection under `informative_only`), a trial the learner already
 /// forbids cannot give a sample, so the oracle is not asked and the outcome is "no surprise,
 /// not executable by the learner" (which every dataset declines).
+///
+/// The learner acts on its answer set when it has one: the learned axioms that apply there
+/// are refreshed (5.9, refresh on use).
 fn trial(
     oracle: &mut dyn World,
     learner: &mut dyn World,
+    store: &mut Store,
     s: &OneStep,
     robot: &str,
     skip_uninformative: bool,
 ) -> (Outcome, TrialData) {
     let facts = s.facts(robot);
     let l = learner.step(&facts, &s.action);
+    if l.after.is_some() && !store.axioms.is_empty() {
+        store.used_in(&s.action, &l.before);
+    }
     let outcome = if skip_uninformative && l.after.is_none() {
         Outcome::default()
     } else {
@@ -196,7 +206,7 @@ pub fn run(
                 ActionType::Putdown
             };
             let s = generate(&config.pools, ty, &mut rng);
-            let (outcome, data) = trial(oracle, learner, &s, &robot, false);
+            let (outcome, data) = trial(oracle, learner, &mut report.store, &s, &robot, false);
             report.trials += 1;
             if outcome.surprising() {
                 ep.detected_at = Some(t);
@@ -220,8 +230,14 @@ pub fn run(
             && since_last < config.stall_trials
         {
             let s = generate(&config.pools, ty, &mut rng);
-            let (outcome, data) =
-                trial(oracle, learner, &s, &robot, config.collect.informative_only);
+            let (outcome, data) = trial(
+                oracle,
+                learner,
+                &mut report.store,
+                &s,
+                &robot,
+                config.collect.informative_only,
+            );
             report.trials += 1;
             trials.push(data);
             if collector.offer(t, &outcome).is_empty() {

@@ -2,9 +2,14 @@
 //! knowledge base against the KB_full oracle, scored strictly and relaxed against the five
 //! targets (5.10).
 //!
+//! Runs share two answer caches ([`Caches`]): the oracle is one program, and the learner's
+//! knowledge bases repeat across runs (every run starts from the same one).
+//!
 //! Invariants: run `i` uses the seed `SplitMix64::new(seed).fork(i)`, so a run's result does
 //! not depend on how many runs there are or on the thread count; runs go in parallel with rayon
 //! and their results are reported in run order.
+
+use std::sync::Arc;
 
 use rayon::prelude::*;
 use serde::Serialize;
@@ -13,10 +18,10 @@ use crate::action::ast::Value;
 use crate::action::Options;
 
 use super::episode::{run, LearnConfig, RunReport};
-use super::kb::{KbError, KbSpec, KbWorld};
-use super::rng::SplitMix64;
+use super::kb::{Cache, KbError, KbSpec, KbWorld};
 use super::score::{relaxed, strict, Counts};
 use super::term::{in_hand, o, r, rel, Axiom, AxiomKind, Literal};
+use crate::base::rng::SplitMix64;
 
 /// The five H1 targets in lifted form (DOMAIN.md 2.2-2.3, ★T1-★T5: E7, E5, E2, C3, C2).
 pub fn targets() -> Vec<Axiom> {
@@ -92,6 +97,8 @@ pub struct RunResult {
     pub trials: usize,
     /// Episodes run.
     pub episodes: usize,
+    /// Solver calls of the oracle and the learner (answers found in the caches need none).
+    pub solves: usize,
 }
 
 /// Precision and recall in percent.
@@ -125,6 +132,12 @@ pub struct H1Result {
     pub relaxed_counts: Counts,
     /// The paper's Table 1, for comparison.
     pub paper: PaperH1,
+    /// Solver calls over all runs.
+    pub solves: usize,
+    /// Trials over all runs.
+    pub trials: usize,
+    /// World steps answered from the caches, and world steps in all.
+    pub cache_hits: (usize, usize),
     /// Per run.
     pub runs: Vec<RunResult>,
 }
@@ -155,8 +168,27 @@ pub fn run_seed(seed: u64, i: usize) -> u64 {
     SplitMix64::new(seed).fork(i as u64).next_u64()
 }
 
+/// The answer caches runs share: one for the oracle, one for the learner's knowledge bases.
+#[derive(Clone, Debug, Default)]
+pub struct Caches {
+    /// The oracle's answers.
+    pub oracle: Arc<Cache>,
+    /// The learner's answers, per set of learned axioms.
+    pub learner: Arc<Cache>,
+}
+
 /// One run against KB_full, with its report.
 pub fn one_run(spec: &KbSpec, config: &LearnConfig, seed: u64) -> Result<RunReport, KbError> {
+    one_run_cached(spec, config, seed, &Caches::default())
+}
+
+/// One run against KB_full sharing answers through `caches`.
+pub fn one_run_cached(
+    spec: &KbSpec,
+    config: &LearnConfig,
+    seed: u64,
+    caches: &Caches,
+) -> Result<RunReport, KbError> {
     let mut oracle = KbWorld::new(
         KbSpec {
             options: oracle_options(),
@@ -165,6 +197,7 @@ pub fn one_run(spec: &KbSpec, config: &LearnConfig, seed: u64) -> Result<RunRepo
         &[],
     )?;
     oracle.need_before = false;
+    oracle.use_cache(caches.oracle.clone());
     let mut learner = KbWorld::new(
         KbSpec {
             options: learner_options(),
@@ -175,7 +208,10 @@ pub fn one_run(spec: &KbSpec, config: &LearnConfig, seed: u64) -> Result<RunRepo
     // Under `informative_only` no sample comes from a trial the learner forbids, so its step-0
     // state is never needed there.
     learner.need_before = !config.collect.informative_only;
-    Ok(run(&mut oracle, &mut learner, config, seed))
+    learner.use_cache(caches.learner.clone());
+    let mut report = run(&mut oracle, &mut learner, config, seed);
+    report.solves = oracle.solves + learner.solves;
+    Ok(report)
 }
 
 /// Runs the experiment; `progress` is called after each finished run.
@@ -187,10 +223,11 @@ pub fn experiment(
     progress: &(dyn Fn() + Sync),
 ) -> Result<H1Result, KbError> {
     let targets = targets();
+    let caches = Caches::default();
     let results: Vec<Result<RunResult, KbError>> = (0..runs)
         .into_par_iter()
         .map(|i| {
-            let report = one_run(spec, config, run_seed(seed, i))?;
+            let report = one_run_cached(spec, config, run_seed(seed, i), &caches)?;
             let found = report.store.current();
             let r = RunResult {
                 run: i,
@@ -199,6 +236,7 @@ pub fn experiment(
                 relaxed: relaxed(&found, &targets),
                 trials: report.trials,
                 episodes: report.episodes.len(),
+                solves: report.solves,
             };
             progress();
             Ok(r)
@@ -216,6 +254,12 @@ pub fn experiment(
         strict_counts: s,
         relaxed_counts: x,
         paper: PAPER,
+        solves: runs.iter().map(|r| r.solves).sum(),
+        trials: runs.iter().map(|r| r.trials).sum(),
+        cache_hits: {
+            let (a, b) = (caches.oracle.hits(), caches.learner.hits());
+            (a.0 + b.0, a.1 + b.1)
+        },
         runs,
     })
 }

@@ -8,9 +8,20 @@
 //! state read back is the observable vocabulary (`relation` and `in_hand`, both signs) at steps
 //! 0 and 1, through atom numbers looked up once.
 //!
+//! A trial asks for one answer set (the solver stops at the first cardinality-minimal one) and
+//! the program shows no atoms (`#show.`): the observables are read by atom number, so no model
+//! is rendered as text. A [`Cache`] shared between runs remembers answers by (knowledge base,
+//! step-0 facts, action); the H1 runs share one for the oracle and one for the learner.
+//!
 //! Invariants: the program a trial solves is exactly the translation of the description (plus
-//! the external declarations); a trial never re-grounds; the model read is the last (optimal)
-//! one of the call, so CR rules are applied cardinality-minimally as in DOMAIN.md 3.4.
+//! the external declarations); a trial never re-grounds; CR rules are applied
+//! cardinality-minimally as in DOMAIN.md 3.4. The cache assumes what these programs guarantee: a
+//! complete step-0 state and deterministic laws give at most one answer set, so an answer is a
+//! function of the program text, the facts and the action (observed: no solve of the 4341 of
+//! seed 0's run had a second model; docs/bench/h1.md).
+
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
 
 use crate::action::{self, ast::Description, Options};
 use crate::base::SourceMap;
@@ -24,6 +35,7 @@ const EXTERNALS: &str = "\
 #external obs(relation(on, X, Y), true, 0) : object(X), location(Y).
 #external obs(in_hand(R, X), true, 0) : robot(R), object(X).
 #external hpd(A, 0) : action(A).
+#show.
 ";
 
 /// A knowledge base to run trials against.
@@ -48,6 +60,97 @@ pub enum KbError {
     Ground(String),
 }
 
+/// Answers of one-step worlds over knowledge bases, shared between runs and threads: literals
+/// are interned, an answer is kept as literal numbers.
+#[derive(Debug, Default)]
+pub struct Cache {
+    /// The tables, behind one lock (two threads contend rarely: a lookup is short).
+    inner: Mutex<CacheTables>,
+}
+
+/// A cached answer: the step-0 literals and, if executable, the step-1 literals.
+type Answer = (Vec<u32>, Option<Vec<u32>>);
+
+#[derive(Debug, Default)]
+struct CacheTables {
+    /// Interned literals.
+    lits: Vec<Literal>,
+    /// Literal to its number.
+    ids: HashMap<Literal, u32>,
+    /// Knowledge-base keys (program text and reading mode) to their numbers.
+    kbs: HashMap<String, u32>,
+    /// (knowledge base, sorted facts, action) to the answer.
+    answers: HashMap<(u32, Vec<u32>, u32), Answer>,
+    /// Lookups that found an answer, and lookups in all.
+    hits: usize,
+    lookups: usize,
+}
+
+impl CacheTables {
+    fn intern(&mut self, lit: &Literal) -> u32 {
+        if let Some(&i) = self.ids.get(lit) {
+            return i;
+        }
+        let i = self.lits.len() as u32;
+        self.lits.push(lit.clone());
+        self.ids.insert(lit.clone(), i);
+        i
+    }
+
+    fn key(&mut self, kb: u32, facts: &[Literal], action: &Literal) -> (u32, Vec<u32>, u32) {
+        let mut f: Vec<u32> = facts.iter().map(|l| self.intern(l)).collect();
+        f.sort_unstable();
+        (kb, f, self.intern(action))
+    }
+}
+
+impl Cache {
+    /// An empty cache.
+    pub fn new() -> Arc<Cache> {
+        Arc::new(Cache::default())
+    }
+
+    /// The number of a knowledge base given by its key text.
+    fn kb(&self, key: String) -> u32 {
+        let mut t = self.inner.lock().expect("cache lock");
+        let n = t.kbs.len() as u32;
+        *t.kbs.entry(key).or_insert(n)
+    }
+
+    fn get(&self, kb: u32, facts: &[Literal], action: &Literal) -> Option<States> {
+        let mut t = self.inner.lock().expect("cache lock");
+        t.lookups += 1;
+        let key = t.key(kb, facts, action);
+        let (before, after) = t.answers.get(&key)?;
+        let lits = |ids: &[u32]| -> Vec<Literal> {
+            ids.iter().map(|&i| t.lits[i as usize].clone()).collect()
+        };
+        let states = States {
+            before: lits(before),
+            after: after.as_deref().map(lits),
+        };
+        t.hits += 1;
+        Some(states)
+    }
+
+    fn put(&self, kb: u32, facts: &[Literal], action: &Literal, states: &States) {
+        let mut t = self.inner.lock().expect("cache lock");
+        let key = t.key(kb, facts, action);
+        let before = states.before.iter().map(|l| t.intern(l)).collect();
+        let after = states
+            .after
+            .as_ref()
+            .map(|a| a.iter().map(|l| t.intern(l)).collect());
+        t.answers.insert(key, (before, after));
+    }
+
+    /// Lookups that found an answer, and lookups in all.
+    pub fn hits(&self) -> (usize, usize) {
+        let t = self.inner.lock().expect("cache lock");
+        (t.hits, t.lookups)
+    }
+}
+
 /// A one-step world over a knowledge base.
 pub struct KbWorld {
     /// The knowledge base's description and options.
@@ -61,6 +164,10 @@ pub struct KbWorld {
     /// Whether [`World::step`] computes the step-0 state when the action is not executable
     /// (the learner needs it for relevant literals; the oracle does not).
     pub need_before: bool,
+    /// The shared cache and this knowledge base's number in it.
+    cache: Option<(Arc<Cache>, u32)>,
+    /// The learned axioms' text, part of the cache key.
+    learned_text: String,
 }
 
 /// `Symbol` to the learner's literal (constants and numbers only).
@@ -103,11 +210,11 @@ impl KbWorld {
     pub fn new(spec: KbSpec, learned: &[(String, Axiom)]) -> Result<KbWorld, KbError> {
         let mut sources = spec.sources.clone();
         let mut description = spec.description.clone();
+        let text: String = learned
+            .iter()
+            .map(|(label, a)| format!("{label}: {}.\n", a.to_ald()))
+            .collect();
         if !learned.is_empty() {
-            let text: String = learned
-                .iter()
-                .map(|(label, a)| format!("{label}: {}.\n", a.to_ald()))
-                .collect();
             let file = sources.add("<learned>".to_string(), text.clone());
             let parsed = action::parse(file, &text);
             if parsed.has_errors() {
@@ -123,7 +230,7 @@ impl KbWorld {
             return Err(KbError::Translate(format!("{:?}", translation.diagnostics)));
         }
         let mut config = ControlConfig::default();
-        config.solve.models = 0;
+        config.solve.models = 1;
         let mut ctl = Control::with_sources(config, sources);
         ctl.add_program(translation.program)
             .map_err(|e| KbError::Ground(e.message))?;
@@ -155,7 +262,22 @@ impl KbWorld {
             observables,
             solves: 0,
             need_before: true,
+            cache: None,
+            learned_text: text,
         })
+    }
+
+    /// Shares answers through `cache` from now on (also after [`LearnerKb::set_learned`]).
+    pub fn use_cache(&mut self, cache: Arc<Cache>) {
+        // The key: everything the answers depend on. The description is the same for every
+        // world sharing a cache (one experiment); options, learned axioms and the reading mode
+        // tell the knowledge bases apart.
+        let key = format!(
+            "{:?}|{}|{}",
+            self.spec.options, self.need_before, self.learned_text
+        );
+        let n = cache.kb(key);
+        self.cache = Some((cache, n));
     }
 
     /// Solves under the facts (and the action, if any); the last model's observable literals
@@ -216,6 +338,22 @@ impl KbWorld {
 
 impl World for KbWorld {
     fn step(&mut self, facts: &[Literal], action: &Literal) -> States {
+        if let Some((cache, kb)) = &self.cache {
+            if let Some(s) = cache.get(*kb, facts, action) {
+                return s;
+            }
+        }
+        let states = self.step_uncached(facts, action);
+        if let Some((cache, kb)) = &self.cache {
+            cache.put(*kb, facts, action, &states);
+        }
+        states
+    }
+}
+
+impl KbWorld {
+    /// [`World::step`] by solving.
+    fn step_uncached(&mut self, facts: &[Literal], action: &Literal) -> States {
         match self.solve(facts, Some(action)) {
             Some((before, after)) => States {
                 before,
@@ -239,11 +377,15 @@ impl World for KbWorld {
 impl LearnerKb for KbWorld {
     fn set_learned(&mut self, axioms: &[(String, Axiom)]) {
         let (solves, need_before) = (self.solves, self.need_before);
+        let cache = self.cache.take();
         match KbWorld::new(self.spec.clone(), axioms) {
             Ok(w) => {
                 *self = w;
                 self.solves = solves;
                 self.need_before = need_before;
+                if let Some((c, _)) = cache {
+                    self.use_cache(c);
+                }
             }
             // The learned axioms are built from the learner's own vocabulary; a failure here is
             // a bug in rendering, not bad input.

@@ -8,7 +8,6 @@
 //! `score` compares what was found with the targets. Literals and axioms are structured terms
 //! (`term`), never strings.
 
-pub mod rng;
 pub mod cart;
 pub mod term;
 pub mod lift;

@@ -16,8 +16,8 @@
 //! Invariants: a state is a function of the generator's seed; the collector's decisions depend
 //! only on the trials offered to it, in order.
 
-use super::rng::SplitMix64;
 use super::term::{Literal, IN_HAND};
+use crate::base::rng::SplitMix64;
 
 /// The pools of the generator.
 #[derive(Clone, Debug, PartialEq)]

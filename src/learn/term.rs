@@ -311,6 +311,174 @@ impl Axiom {
     }
 }
 
+impl Axiom {
+    /// Whether a ground instance of the axiom applies to `action` in the complete `state`
+    /// (literals of both signs): the lifted action matches the ground one and some binding of
+    /// the remaining variables puts every body literal in the state. For a causal law this is
+    /// the axiom supporting its head at the next step; for an executability condition, the
+    /// axiom forbidding the action. Distinct variables may take equal constants, as in the
+    /// translated rules.
+    pub fn fires(&self, action: &Literal, state: &[Literal]) -> bool {
+        let (mut binding, mut added) = (BTreeMap::new(), Vec::new());
+        if !match_literal(&self.action, action, &mut binding, &mut added) {
+            return false;
+        }
+        match_body(&self.body, state, &mut binding, &mut added)
+    }
+
+    /// Parses the AL_d text [`Axiom::to_ald`] writes (without the final period), e.g.
+    /// `impossible pickup(R1, O1) if relation(below, O1, O2)` or
+    /// `putdown(R1, O1, O2) causes -in_hand(R1, O1)`. Variables are `R` or `O` and an index.
+    pub fn parse_ald(text: &str) -> Option<Axiom> {
+        let text = text.trim();
+        let (main, body) = match text.split_once(" if ") {
+            Some((m, b)) => (m, parse_literals(b)?),
+            None => (text, Vec::new()),
+        };
+        if let Some(action) = main.strip_prefix("impossible ") {
+            let action = parse_literal(action)?;
+            return Some(Axiom::new(AxiomKind::Executability, action, body));
+        }
+        let (action, head) = main.split_once(" causes ")?;
+        Some(Axiom::new(
+            AxiomKind::Causal {
+                head: parse_literal(head)?,
+            },
+            parse_literal(action)?,
+            body,
+        ))
+    }
+}
+
+/// Binds the variables of `pattern` to the constants of `ground`, consistently with `binding`;
+/// the variables it binds are pushed on `added`. On failure `binding` is left as it was.
+fn match_literal(
+    pattern: &Literal,
+    ground: &Literal,
+    binding: &mut BTreeMap<Var, String>,
+    added: &mut Vec<Var>,
+) -> bool {
+    if pattern.positive != ground.positive
+        || pattern.name != ground.name
+        || pattern.args.len() != ground.args.len()
+    {
+        return false;
+    }
+    let mark = added.len();
+    for (p, g) in pattern.args.iter().zip(&ground.args) {
+        let ok = match (p, g) {
+            (_, Term::Var(_)) => false,
+            (Term::Const(k), Term::Const(c)) => k == c,
+            (Term::Var(v), Term::Const(c)) => match binding.get(v) {
+                Some(b) => b == c,
+                None => {
+                    binding.insert(*v, c.clone());
+                    added.push(*v);
+                    true
+                }
+            },
+        };
+        if !ok {
+            unbind(binding, added, mark);
+            return false;
+        }
+    }
+    true
+}
+
+/// Undoes the bindings pushed on `added` after `mark`.
+fn unbind(binding: &mut BTreeMap<Var, String>, added: &mut Vec<Var>, mark: usize) {
+    for v in added.drain(mark..) {
+        binding.remove(&v);
+    }
+}
+
+/// Backtracking search for a binding that puts every literal of `body` in `state`.
+fn match_body(
+    body: &[Literal],
+    state: &[Literal],
+    binding: &mut BTreeMap<Var, String>,
+    added: &mut Vec<Var>,
+) -> bool {
+    let Some((first, rest)) = body.split_first() else {
+        return true;
+    };
+    for g in state {
+        let mark = added.len();
+        if match_literal(first, g, binding, added) {
+            if match_body(rest, state, binding, added) {
+                return true;
+            }
+            unbind(binding, added, mark);
+        }
+    }
+    false
+}
+
+/// Splits `a(x, y), -b(z)` at the commas outside parentheses.
+fn parse_literals(text: &str) -> Option<Vec<Literal>> {
+    let mut out = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    for (i, ch) in text.char_indices() {
+        match ch {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            ',' if depth == 0 => {
+                out.push(parse_literal(&text[start..i])?);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    out.push(parse_literal(&text[start..])?);
+    Some(out)
+}
+
+/// Parses `-name(arg, ...)` with constant and variable arguments.
+fn parse_literal(text: &str) -> Option<Literal> {
+    let text = text.trim();
+    let (positive, text) = match text.strip_prefix('-') {
+        Some(t) => (false, t),
+        None => (true, text),
+    };
+    let (name, args) = match text.split_once('(') {
+        Some((n, rest)) => (n, rest.strip_suffix(')')?),
+        None => (text, ""),
+    };
+    if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return None;
+    }
+    let args = if args.is_empty() {
+        Vec::new()
+    } else {
+        args.split(',')
+            .map(|a| parse_term(a.trim()))
+            .collect::<Option<_>>()?
+    };
+    Some(Literal {
+        positive,
+        name: name.to_string(),
+        args,
+    })
+}
+
+fn parse_term(text: &str) -> Option<Term> {
+    let mut chars = text.chars();
+    let first = chars.next()?;
+    let sort = match first {
+        'R' => Some(Sort::Robot),
+        'O' => Some(Sort::Object),
+        _ => None,
+    };
+    if let (Some(sort), Ok(index)) = (sort, chars.as_str().parse::<u32>()) {
+        return Some(Term::Var(Var { sort, index }));
+    }
+    if first.is_ascii_lowercase() || first.is_ascii_digit() {
+        return Some(Term::constant(text));
+    }
+    None
+}
+
 impl fmt::Display for Axiom {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.short())
@@ -419,6 +587,72 @@ mod tests {
 
     fn pickup() -> Literal {
         Literal::new("pickup", vec![r(1), o(1)])
+    }
+
+    /// E7 as learned: `impossible pickup(R1, O1) if below(O1, O2)`. In a state where the duck
+    /// stands on the red cube, it forbids picking up the cube (O2 = duck) and not the duck.
+    #[test]
+    fn fires_binds_the_action_then_searches_the_body() {
+        let e7 = Axiom::new(
+            AxiomKind::Executability,
+            pickup(),
+            vec![rel("below", o(1), o(2))],
+        );
+        let state = vec![
+            Literal::relation("below", "red_cube_large", "yellow_duck"),
+            Literal::relation("on", "yellow_duck", "red_cube_large"),
+            Literal::ground(IN_HAND, &["rob1", "pitcher"]).with_sign(false),
+        ];
+        let pick = |o: &str| Literal::ground("pickup", &["rob1", o]);
+        assert!(e7.fires(&pick("red_cube_large"), &state));
+        assert!(!e7.fires(&pick("yellow_duck"), &state));
+        // The body's sign counts: -in_hand(R1, O1) holds for the pitcher only.
+        let e2 = Axiom::new(
+            AxiomKind::Executability,
+            Literal::new("putdown", vec![r(1), o(1), o(2)]),
+            vec![in_hand(false, r(1), o(1))],
+        );
+        let put = |o: &str| Literal::ground("putdown", &["rob1", o, "table"]);
+        assert!(e2.fires(&put("pitcher"), &state));
+        assert!(!e2.fires(&put("yellow_duck"), &state));
+        // An unconditional causal law fires whenever its action matches; another action never.
+        let c3 = Axiom::new(
+            AxiomKind::Causal {
+                head: in_hand(true, r(1), o(1)),
+            },
+            pickup(),
+            vec![],
+        );
+        assert!(c3.fires(&pick("yellow_duck"), &[]));
+        assert!(!c3.fires(&put("yellow_duck"), &state));
+    }
+
+    #[test]
+    fn parse_ald_reads_what_to_ald_writes() {
+        let axioms = [
+            Axiom::new(
+                AxiomKind::Executability,
+                pickup(),
+                vec![rel("below", o(1), o(2)), in_hand(true, r(1), o(3))],
+            ),
+            Axiom::new(
+                AxiomKind::Causal {
+                    head: in_hand(false, r(1), o(1)),
+                },
+                Literal::new("putdown", vec![r(1), o(1), o(2)]),
+                vec![],
+            ),
+        ];
+        for a in axioms {
+            assert_eq!(Axiom::parse_ald(&a.to_ald()), Some(a.clone()), "{a}");
+        }
+        assert_eq!(
+            Axiom::parse_ald("impossible pickup(R1, O1) if relation(below, O1, O2)")
+                .map(|a| a.body),
+            Some(vec![rel("below", o(1), o(2))])
+        );
+        assert_eq!(Axiom::parse_ald("pickup(R1, O1) if in_hand(R1, O2)"), None);
+        assert_eq!(Axiom::parse_ald("impossible pickup(R1, O1) if (("), None);
     }
 
     #[test]

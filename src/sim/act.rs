@@ -14,11 +14,11 @@
 //! seed and its step.
 
 use super::perceive::{perceive_world, ErrorModel, Percept};
-use super::rng::SplitMix64;
 use super::scene::{Scene, TABLE};
 use super::truth::{relations, Rel, TruthConfig};
 use super::world::World;
 use super::{ObjectId, SimError};
+use crate::base::rng::SplitMix64;
 use parry3d::math::{Pose, Rot3, Vector};
 use serde::{Deserialize, Serialize};
 use std::fmt;

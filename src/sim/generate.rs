@@ -8,10 +8,10 @@
 //! decides the final poses: settling may still topple something, and the result is kept.
 
 use super::object::{Colour, ObjectKind, Size};
-use super::rng::SplitMix64;
 use super::scene::{Scene, SceneObject};
 use super::world::World;
 use super::SimError;
+use crate::base::rng::SplitMix64;
 use parry3d::math::Rot3;
 
 /// A family of scenes.
@@ -216,7 +216,7 @@ fn drafts(preset: Preset, count: usize, rng: &mut SplitMix64) -> Vec<Draft> {
             let flat = rng.range_usize(4, (count - 1).min(5));
             let mut out: Vec<Draft> = (0..flat).map(|_| free(pick(rng, supports), rng)).collect();
             let mut pool = others.to_vec();
-            rng.shuffle(&mut pool);
+            rng.shuffle_modulo(&mut pool);
             for i in 0..count - flat {
                 out.push(free(pool[i % pool.len()], rng));
             }
@@ -271,7 +271,7 @@ pub fn generate(config: &GenerateConfig) -> Result<Scene, SimError> {
     let mut flat: Vec<usize> = (0..n)
         .filter(|&i| drafts[i].kind.surface() == super::Surface::Flat)
         .collect();
-    rng.shuffle(&mut flat);
+    rng.shuffle_modulo(&mut flat);
     let mut stacked = rng.range_usize(3, 5).min(n - 1);
     let mut heights = tower_heights(stacked, &mut rng);
     // Each tower needs height - 1 supports; shrink the plan if the scene lacks them.
@@ -286,7 +286,7 @@ pub fn generate(config: &GenerateConfig) -> Result<Scene, SimError> {
         // stacked), then supports at least as large as it, widest at the bottom, as in the
         // paper's stacked scenes. Physics still decides whether the tower stands.
         let mut candidates: Vec<usize> = (0..n).filter(|&i| !used[i]).collect();
-        rng.shuffle(&mut candidates);
+        rng.shuffle_modulo(&mut candidates);
         candidates.sort_by_key(|&i| drafts[i].kind.surface() == super::Surface::Flat);
         let free_flat = |used: &[bool]| flat.iter().filter(|&&i| !used[i]).count();
         let top = candidates

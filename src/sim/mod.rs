@@ -26,11 +26,11 @@ pub mod generate;
 pub mod object;
 pub mod perceive;
 pub mod render;
-pub mod rng;
 pub mod scene;
 pub mod truth;
 pub mod world;
 
+pub use crate::base::rng::SplitMix64;
 pub use act::{execute, ActConfig, Action, ActionReport, Failure};
 pub use generate::{generate, generate_many, GenerateConfig, Preset};
 pub use object::{Colour, ObjectKind, Size, Surface};
@@ -38,7 +38,6 @@ pub use perceive::{
     perceive, perceive_look, perceive_world, ErrorModel, FactStyle, Literal, Observation, Percept,
 };
 pub use render::{render_camera, render_top, Image};
-pub use rng::SplitMix64;
 pub use scene::{Camera, ObjectId, Scene, SceneObject, ROBOT, TABLE};
 pub use truth::{measure, GroundTruth, Rel, Relation, TruthConfig};
 pub use world::World;

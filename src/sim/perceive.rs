@@ -14,10 +14,10 @@
 //! alone (look 0 unless the robot looks again at the same step).
 
 use super::object::{Size, Surface};
-use super::rng::SplitMix64;
 use super::scene::{Scene, TABLE};
 use super::truth::{relations, Rel, Relation, TruthConfig};
 use super::world::World;
+use crate::base::rng::SplitMix64;
 use serde::{Deserialize, Serialize};
 use std::fmt::Write;
 
