@@ -194,6 +194,59 @@ fn declares_switch(desc: &Description, name: &str) -> bool {
         .any(|s| matches!(&s.kind, StatementKind::Switch { name: n, .. } if n.text == name))
 }
 
+/// A run saved by `lucent run` (its `--save-history` file, the JSON `--outf=2` prints) as the
+/// planning problem it started from and the actions it executed: AL_d scene text (the movable
+/// objects as `sort movable`, the statics as facts, what was perceived at step 0 and not doubted
+/// as `initially` statements, the goal) for a description that provides the domain, and the
+/// executed actions in order. An action the world reported as failed is left out (the robot's
+/// model says what an action does; a failed one did not do it), so the explained steps count
+/// the actions that succeeded. `Err` names what the run lacks.
+pub fn scene_of_run(run: &crate::plan::history::History) -> Result<(String, Vec<Symbol>), String> {
+    let first = run
+        .steps
+        .first()
+        .ok_or("the run has no step: nothing was perceived")?;
+    let mut text = format!(
+        "% The run on {} saved by `lucent run`: step 0 as perceived, the goal.\n\
+         sort movable = {{{}}}.\nsort unknown = {{}}.\n",
+        run.scene,
+        run.objects.join(", ")
+    );
+    let parse = |what: &str, t: &str| {
+        Symbol::parse(t).map_err(|e| format!("the run's {what} `{t}` is not a ground term: {e}"))
+    };
+    for st in &run.statics {
+        text.push_str(&format!("{}.\n", parse("static", st)?));
+    }
+    let mut seen = Vec::new();
+    for o in first.observed.iter().filter(|o| o.value) {
+        if first.doubted.contains(&o.fluent) || seen.contains(&o.fluent) {
+            continue;
+        }
+        seen.push(o.fluent.clone());
+        text.push_str(&format!(
+            "initially {}.\n",
+            parse("observation", &o.fluent)?
+        ));
+    }
+    if !run.goal.is_empty() {
+        let goal: Vec<String> = run
+            .goal
+            .iter()
+            .map(|g| parse("goal", g).map(|s| s.to_string()))
+            .collect::<Result<_, _>>()?;
+        text.push_str(&format!("goal {}.\n", goal.join(", ")));
+    }
+    let actions = run
+        .steps
+        .iter()
+        .filter(|s| s.failure.is_none())
+        .filter_map(|s| s.happened.as_deref())
+        .map(|a| parse("action", a))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok((text, actions))
+}
+
 /// The history of `desc` with `actions` (one per step, from step 0) executed, explained.
 /// `sources` holds the description's files; the happened statements are added to it as
 /// `<history>`.
