@@ -544,6 +544,9 @@ pub struct TrialReport {
     pub counts: TreeCounts,
     /// Each failure: the literal or question, and what failed.
     pub failures: Vec<String>,
+    /// The questions asked, in order (the first four are DOMAIN.md 7.5's: the plan, why X,
+    /// why not X with one argument changed, a related belief; H4 asks them again elsewhere).
+    pub asked: Vec<Question>,
 }
 
 impl TrialReport {
@@ -571,6 +574,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
     let mut session = Session::default();
     let ask = |report: &mut TrialReport, q: Question, session: &mut Session| {
         report.questions += 1;
+        report.asked.push(q.clone());
         match answer(scn, &lexicon, &q, Mode::Full, session) {
             Ok(a) => {
                 if let Some(t) = &a.tree {
