@@ -364,3 +364,27 @@ fn assumptions_on_externals_as_clingo() {
         assert_eq!(got, want, "{text} {assign:?} {assumptions:?}");
     }
 }
+
+#[test]
+fn a_one_shot_grounding_taken_out_prints_its_provenance_as_the_grounder_does() {
+    // `lucent --text --provenance` goes through `Control::take_grounding`; the bindings and
+    // removed literals of the text index the grounding's symbol table, which the control had
+    // taken over (this panicked in `Interner::resolve` / `Symbols::get`).
+    let src = "q(1..3).\np(1).\np(X) :- q(X), not r(X).\n{r(1..3)}.\n";
+    let mut ctl = Control::new(with_provenance());
+    ctl.add("t.lp", src).unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let g = ctl.take_grounding();
+    let got = lucent::ground::text::write_text(&g, Some(ctl.sources()));
+    let mut sources = lucent::base::SourceMap::new();
+    let id = sources.add("t.lp", src);
+    let parsed = lucent::syntax::parse(id, src, lucent::syntax::ast::Dialect::Clingo);
+    let config = lucent::ground::GroundConfig {
+        provenance: true,
+        ..Default::default()
+    };
+    let direct = lucent::ground::ground(&parsed.program, Some(&sources), &config);
+    let want = lucent::ground::text::write_text(&direct, Some(&sources));
+    assert!(want.contains("with X=2; grounding proved q(2)"), "{want}");
+    assert_eq!(got, want);
+}
