@@ -122,7 +122,7 @@ fn provenance_keeps_the_ground_program_and_its_invariants_over_the_corpus() {
             off.program,
             "{name}: provenance changed the ground program"
         );
-        assert_eq!(on.atom_names, off.atom_names, "{name}");
+        assert_eq!(on.atom_names(), off.atom_names(), "{name}");
         check_invariants(&name, &on);
     }
 }
@@ -138,7 +138,7 @@ fn duplicate_instances_keep_all_their_origins_and_removed_facts() {
         .iter()
         .position(|r| {
             r.head.len() == 1 && r.body.is_empty_normal() && {
-                g.atom_names[r.head[0] as usize - 1].as_deref() == Some("p")
+                g.atom_name(r.head[0]).as_deref() == Some("p")
             }
         })
         .expect("p.");

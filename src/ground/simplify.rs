@@ -26,7 +26,7 @@ use super::program::{
     Lit, Minimize, Origin, Output, Prefer, Provenance, RemovedLit, Rule, RuleOrigin, Rules, Weight,
 };
 use super::rewrite::Compiled;
-use super::symbol::SymId;
+use super::symbol::{SymData, SymId};
 
 /// Truth status of an atom after propagation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -43,14 +43,10 @@ pub enum Status {
 pub struct Finished {
     /// The aspif program.
     pub program: GroundProgram,
-    /// Printed name of each aspif atom (`names[a - 1]`), `None` for auxiliary atoms.
-    pub names: Vec<Option<String>>,
-    /// Every fact atom's symbol text (also those simplified away from bodies).
-    pub facts: Vec<String>,
-    /// Symbol of each aspif atom (`atom_syms[a - 1]`, parallel to `names`), `None` for
-    /// auxiliary atoms.
+    /// Symbol of each aspif atom (`atom_syms[a - 1]`), `None` for auxiliary atoms. (Names are
+    /// rendered only when asked for: `Grounding::atom_name`.)
     pub atom_syms: Vec<Option<SymId>>,
-    /// Symbol of every fact atom (parallel to `facts`).
+    /// Symbol of every fact atom (also those simplified away from bodies).
     pub fact_syms: Vec<SymId>,
 }
 
@@ -484,14 +480,12 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     // (each rule's heads before its body), then those only in minimize statements, externals
     // and shown atoms, in creation order. The solver's initial variable order follows it.
     let mut number = vec![0u32; n + 1];
-    let mut names: Vec<Option<String>> = Vec::new();
     let mut atom_syms: Vec<Option<SymId>> = Vec::new();
     let mut next = 0u32;
     let mut assign = |a: usize, number: &mut Vec<u32>| {
         if number[a] == 0 {
             next += 1;
             number[a] = next;
-            names.push(g.atoms[a - 1].sym.map(|s| g.syms.show(s)));
             atom_syms.push(g.atoms[a - 1].sym);
         }
     };
@@ -574,13 +568,11 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         })
         .collect();
     // Outputs: shown atoms, facts with an empty condition.
-    let mut facts = Vec::new();
     let mut fact_syms = Vec::new();
     for a in 1..=n {
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };
         if status[a - 1] == Status::Fact {
-            facts.push(g.syms.show(sym));
             fact_syms.push(sym);
         }
         if info.in_domain && status[a - 1] != Status::False && shown_pred(g, info.pred) {
@@ -687,7 +679,13 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             continue;
         }
         let args = g.syms.args(sym);
-        if args.len() != 2 || g.syms.show(sym).split('(').next() != Some("prefer") {
+        let prefer = match g.syms.get(sym) {
+            SymData::Fun {
+                name, neg: false, ..
+            } => g.syms.names.resolve(name) == "prefer",
+            _ => false,
+        };
+        if args.len() != 2 || !prefer {
             continue;
         }
         let (l1, l2) = (g.syms.show(args[0]), g.syms.show(args[1]));
@@ -702,8 +700,6 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     }
     Finished {
         program: out,
-        names,
-        facts,
         atom_syms,
         fact_syms,
     }
