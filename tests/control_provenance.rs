@@ -388,3 +388,40 @@ fn a_one_shot_grounding_taken_out_prints_its_provenance_as_the_grounder_does() {
     assert!(want.contains("with X=2; grounding proved q(2)"), "{want}");
     assert_eq!(got, want);
 }
+
+#[test]
+fn a_later_rule_for_an_old_fact_keeps_its_origin() {
+    // p(1) is a fact of base; step(1)'s instance `p(1) :- q(1), c.` adds nothing to it (the
+    // solver never sees it) but keeps its statement, part and bindings for the explainer.
+    let mut ctl = Control::new(with_provenance());
+    ctl.add(
+        "f.lp",
+        "#program base. p(1). q(1..2). {c}.\n#program step(t). p(X) :- q(X), c.\n",
+    )
+    .unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    ctl.ground(&[step(1)]).unwrap();
+    let prov = ctl.provenance();
+    let g = prov
+        .of_aspif(ctl.lookup(&sym("p(1)")).unwrap())
+        .expect("p(1) is in the atom table");
+    let removed: Vec<String> = prov
+        .dead_rules_for(g)
+        .flat_map(|d| d.origins.iter())
+        .map(|o| {
+            let st = ctl.statement(o.rule.stmt().unwrap()).unwrap();
+            let binds: Vec<String> = o
+                .rule
+                .bindings()
+                .iter()
+                .map(|&(n, v)| format!("{}={}", ctl.name_of_id(n), ctl.symbol_of_id(v)))
+                .collect();
+            format!("{}{:?} {}", st.part.name, st.part.args, binds.join(","))
+        })
+        .collect();
+    assert_eq!(removed, ["step[Number(1)] X=1"]);
+    assert_eq!(
+        origins_of(&ctl, "p(2)"),
+        ["p(X) :- q(X), c. in step(1) with [X=2] removed [q(2)]"]
+    );
+}

@@ -192,16 +192,18 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut lits: Vec<Lit> = Vec::new();
     let mut ordered: Vec<Lit> = Vec::new();
     let mut wlits: Vec<(Lit, Weight)> = Vec::new();
-    // Records a removed rule that headed a false atom (provenance).
+    // Records a removed rule that headed a false atom, or that a fact among its heads
+    // satisfied (provenance: every rule instance keeps its origin).
     let mut bury = |ri: usize,
                     head: &[AtomId],
                     reason: DeadReason,
                     status: &[Status],
                     take: &mut dyn FnMut(usize) -> Vec<Origin>| {
         if prov
-            && head
-                .iter()
-                .any(|&h| status[h as usize - 1] == Status::False)
+            && (matches!(reason, DeadReason::HeadFact(_))
+                || head
+                    .iter()
+                    .any(|&h| status[h as usize - 1] == Status::False))
         {
             dead_rules.push(DeadRule {
                 head: head.to_vec(),
@@ -304,6 +306,20 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         } else {
             head.retain(|&h| status[h as usize - 1] == Status::Unknown || external[h as usize]);
             if head.is_empty() {
+                // A choice among facts (and false atoms): kept as satisfied by a fact.
+                if let Some(&f) = r
+                    .head
+                    .iter()
+                    .find(|&&h| status[h as usize - 1] == Status::Fact)
+                {
+                    bury(
+                        ri,
+                        r.head,
+                        DeadReason::HeadFact(f),
+                        &status,
+                        &mut take_origins,
+                    );
+                }
                 continue;
             }
         }
@@ -537,8 +553,9 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 .collect(),
         );
         // Instances dropped during instantiation are kept only when they headed a false atom
-        // and the literal that stopped them is still decided that way (one that failed in an
-        // early round of a recursive component may have been derived later).
+        // (or were satisfied by a fact among their heads) and the literal that stopped them is
+        // still decided that way (one that failed in an early round of a recursive component
+        // may have been derived later).
         dead_rules.retain(|d| {
             let decided = match d.why {
                 DeadReason::Literal { positive, atom } => {
@@ -553,9 +570,10 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 DeadReason::Contradictory | DeadReason::Unreachable => true,
             };
             decided
-                && d.head
-                    .iter()
-                    .any(|&h| status[h as usize - 1] == Status::False)
+                && (matches!(d.why, DeadReason::HeadFact(_))
+                    || d.head
+                        .iter()
+                        .any(|&h| status[h as usize - 1] == Status::False))
         });
         p.dead = dead_rules;
         out.provenance = p;
