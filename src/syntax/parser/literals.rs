@@ -169,7 +169,11 @@ impl<'a> Parser<'a> {
     }
 
     /// `#f { terms : literal : condition ; ... } [upper]` in a head.
-    pub(super) fn head_aggregate(&mut self, start: u32, lower: Option<Guard>) -> PResult<HeadAggregate> {
+    pub(super) fn head_aggregate(
+        &mut self,
+        start: u32,
+        lower: Option<Guard>,
+    ) -> PResult<HeadAggregate> {
         self.enter()?;
         let function = aggregate_function(self.tok.kind, self.cur()).expect("at an aggregate");
         self.bump();
@@ -325,7 +329,11 @@ impl<'a> Parser<'a> {
     }
 
     /// A body aggregate after its optional lower guard.
-    pub(super) fn body_aggregate(&mut self, start: u32, lower: Option<Guard>) -> PResult<BodyAggregate> {
+    pub(super) fn body_aggregate(
+        &mut self,
+        start: u32,
+        lower: Option<Guard>,
+    ) -> PResult<BodyAggregate> {
         self.enter()?;
         let (function, elements, set_syntax) = if self.at(T::LBrace) {
             let set = self.conditional_set()?;
@@ -406,7 +414,12 @@ impl<'a> Parser<'a> {
     }
 
     /// `#true`, `#false` or a SPARC sort atom `#s(t)`.
-    pub(super) fn atom_literal(&mut self, start: u32, sign: Sign, out: &mut Vec<Literal>) -> PResult<()> {
+    pub(super) fn atom_literal(
+        &mut self,
+        start: u32,
+        sign: Sign,
+        out: &mut Vec<Literal>,
+    ) -> PResult<()> {
         let tok = self.bump();
         let atom = match self.word(tok) {
             "#true" => Atom::Boolean(true),
