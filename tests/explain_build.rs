@@ -5,8 +5,8 @@
 
 use std::collections::HashSet;
 
+use lucent::control::Symbol;
 use lucent::explain::build::{normalize, BuildConfig, Builder};
-use lucent::explain::term::Term;
 use lucent::explain::tree::{recheck, AxiomKind::*, Kind, ModelOracle, ProofTree, MAX_BRANCHES};
 
 #[path = "support/ra_oracle.rs"]
@@ -123,7 +123,7 @@ fn cycles_are_cut_and_preference_follows_facts_first() {
         rule("R1", StateConstraint, "h(a,0) :- h(b,0)"),
         rule("R2", StateConstraint, "h(b,0) :- h(a,0)"),
     ];
-    let model: HashSet<Term> = [t("holds(a,0)"), t("holds(b,0)")].into_iter().collect();
+    let model: HashSet<Symbol> = [t("holds(a,0)"), t("holds(b,0)")].into_iter().collect();
     let o = ModelOracle { rules, model };
     let tree = build(&o, "holds(a,0)");
     let kinds: Vec<Kind> = tree
@@ -142,7 +142,7 @@ fn cycles_are_cut_and_preference_follows_facts_first() {
 #[test]
 fn at_most_sixteen_branches() {
     let mut rules = Vec::new();
-    let mut model: HashSet<Term> = HashSet::new();
+    let mut model: HashSet<Symbol> = HashSet::new();
     model.insert(t("holds(goal,0)"));
     for k in 0..40 {
         rules.push(rule("fact", Fact, &format!("h(p({k}),0)")));

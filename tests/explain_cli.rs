@@ -225,3 +225,59 @@ fn why_no_plan_names_a_minimal_set_of_goals_and_constraints() {
         "{out}"
     );
 }
+
+#[test]
+fn ask_keeps_a_history_of_its_questions() {
+    let questions = "history\n\
+                     Why did you pick up the green can at step 0?\n\
+                     Why did you not pick up the green can at step 5?\n\
+                     history\n\
+                     !1\n\
+                     !!\n\
+                     !9\n\
+                     !x\n\
+                     quit\n";
+    let (code, out, err) = run_with(&["ask", EXAMPLE, "--happened", PAPER_PLAN], questions);
+    assert_eq!(code, 0, "{err}");
+    insta::assert_snapshot!(out);
+}
+
+/// `tests/data/explain/run.json` is a run of the paper's execution example written by hand in
+/// the format `lucent run --save-history` writes (`plan::history::History`): the step-0
+/// perception with one doubted reading (`on(mug,pitcher)`, not taken as a belief), the paper's
+/// six actions plus a failed `pickup(rob1,pitcher)` at step 4 that the robot repeated, and the
+/// goal. Explained over the built-in KB_full, the failed action is left out, so the questions
+/// are the paper's and so are the answers.
+#[test]
+fn ask_over_a_saved_run() {
+    let questions = "Please describe the plan.\n\
+                     Why did you not pick up the white block at step 0?\n\
+                     Why did you believe the white block was on the green can at step 5?\n\
+                     Why did you believe that the mug was on the pitcher in the initial state?\n";
+    let (code, out, err) = run_with(&["ask", "--run", "tests/data/explain/run.json"], questions);
+    assert_eq!(code, 0, "{err}");
+    insta::assert_snapshot!(out);
+    let (code, out, err) = run(&[
+        "explain",
+        "--run",
+        "tests/data/explain/run.json",
+        "-q",
+        "Why did you pick up the green can at step 0?",
+        "--outf=2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        v["literals"],
+        serde_json::json!([
+            "holds(relation(below,white_block,green_can),0)",
+            "occurs(pickup(rob1,white_block),2)"
+        ])
+    );
+    let (code, _, err) = run(&["ask", "--run", "tests/data/explain/missing.json"]);
+    assert_eq!(code, 65);
+    assert!(err.contains("missing.json"), "{err}");
+    let (code, _, err) = run(&["ask", "--run", "tests/data/explain/reach.lp"]);
+    assert_eq!(code, 65);
+    assert!(err.contains("reach.lp"), "{err}");
+}

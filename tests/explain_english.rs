@@ -2,9 +2,10 @@
 //! pattern, synonyms, contractions, number words, step phrases, and the replies to questions
 //! that are not understood. Snapshots list `question => parse`.
 
+use lucent::control::Symbol;
 use lucent::explain::english::{NotUnderstood, Parser, Question};
 use lucent::explain::lexicon::Lexicon;
-use lucent::explain::term::Term;
+use lucent::explain::pattern::Pattern;
 
 /// The execution-example scene of DOMAIN.md 1.6.
 const SCENE: &[&str] = &["red_block", "white_block", "green_can", "pitcher", "mug"];
@@ -23,8 +24,8 @@ fn run(objects: &[&str], questions: &[&str]) -> String {
     out
 }
 
-fn t(s: &str) -> Term {
-    Term::parse(s).unwrap()
+fn t(s: &str) -> Symbol {
+    Symbol::parse(s).unwrap()
 }
 
 #[test]
@@ -181,14 +182,14 @@ fn structured_results() {
     assert_eq!(
         parser.parse("Why did you pick up the green can at step 0?"),
         Ok(Question::WhyAction {
-            action: t("pickup(rob1,green_can)"),
+            action: Pattern::from(&t("pickup(rob1,green_can)")),
             step: Some(0)
         })
     );
     assert_eq!(
         parser.parse("Why did you not put the white block on the mug?"),
         Ok(Question::WhyNotAction {
-            action: t("putdown(rob1,white_block,mug)"),
+            action: Pattern::from(&t("putdown(rob1,white_block,mug)")),
             step: None
         })
     );

@@ -20,7 +20,6 @@ use lucent::explain::english::Parser;
 use lucent::explain::history::{parse_actions, History};
 use lucent::explain::lexicon::Lexicon;
 use lucent::explain::questions::{answer, Answer, Mode, Session};
-use lucent::explain::term::Term;
 
 const PAPER_PLAN: &str = "pickup(rob1,green_can); putdown(rob1,green_can,table); \
     pickup(rob1,white_block); putdown(rob1,white_block,green_can); pickup(rob1,pitcher); \
@@ -46,7 +45,7 @@ fn dialogue(h: &History, questions: &[&str], mode: Mode) -> (Vec<Answer>, String
         let question = parser.parse(q).unwrap_or_else(|e| panic!("{q}: {e:?}"));
         let a = answer(&scn, &lex, &question, mode, &mut session)
             .unwrap_or_else(|e| panic!("{q}: {e}"));
-        let lits: Vec<String> = a.literals.iter().map(Term::to_string).collect();
+        let lits: Vec<String> = a.literals.iter().map(Symbol::to_string).collect();
         out.push_str(&format!(
             "Q: {q}\nA: {}\n   [{}] {}\n",
             a.text,
@@ -59,7 +58,7 @@ fn dialogue(h: &History, questions: &[&str], mode: Mode) -> (Vec<Answer>, String
 }
 
 fn set(a: &Answer) -> BTreeSet<String> {
-    a.literals.iter().map(Term::to_string).collect()
+    a.literals.iter().map(Symbol::to_string).collect()
 }
 
 fn expect(lits: &[&str]) -> BTreeSet<String> {

@@ -10,8 +10,8 @@
 #[path = "support/ra_scenes.rs"]
 mod ra_scenes;
 
+use lucent::control::Symbol;
 use lucent::explain::h3::{check_history, check_tree, generate, Goal, ScenePreset};
-use lucent::explain::term::Term;
 use lucent::explain::tree::{AxiomKind, Kind, ModelOracle, Node, ProofTree, RuleInstance};
 use ra_scenes::{history, load_text, plans};
 
@@ -133,8 +133,8 @@ fn h3_subset_simulated() {
     assert!(trees >= 20, "{trees} trees");
 }
 
-fn t(s: &str) -> Term {
-    Term::parse(s).unwrap()
+fn t(s: &str) -> Symbol {
+    Symbol::parse(s).unwrap()
 }
 
 fn rule(kind: AxiomKind, head: &str, body: &[&str]) -> RuleInstance {

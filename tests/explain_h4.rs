@@ -20,11 +20,12 @@ mod ra_scenes;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
+use lucent::control::Symbol;
 use lucent::explain::english::Parser;
 use lucent::explain::history::{parse_actions, History};
 use lucent::explain::lexicon::Lexicon;
+use lucent::explain::pattern::SymbolExt;
 use lucent::explain::questions::{answer, Mode, Session};
-use lucent::explain::term::Term;
 
 /// One curated question.
 struct Item {
@@ -84,7 +85,7 @@ fn load_sets() -> Vec<SceneSet> {
                         .map(str::trim)
                         .filter(|s| !s.is_empty() && *s != "-")
                         .map(|s| {
-                            canonical(&Term::parse(s).unwrap_or_else(|e| {
+                            canonical(&Symbol::parse(s).unwrap_or_else(|e| {
                                 panic!("{name}.questions:{}: {s}: {e:?}", i + 1)
                             }))
                         })
@@ -106,9 +107,9 @@ fn load_sets() -> Vec<SceneSet> {
 
 /// The converse-canonical text of a literal: `relation(below,A,B)` as `relation(above,B,A)`,
 /// likewise `behind` as `front` and `right` as `left`, inside `holds`.
-fn canonical(t: &Term) -> String {
-    fn flip(f: &Term) -> Term {
-        if let (Some("relation"), [Term::Fun { name, .. }, a, b]) = (f.name(), f.args()) {
+fn canonical(t: &Symbol) -> String {
+    fn flip(f: &Symbol) -> Symbol {
+        if let (Some("relation"), [Symbol::Function { name, .. }, a, b]) = (f.name(), f.args()) {
             let to = match name.as_str() {
                 "below" => Some("above"),
                 "behind" => Some("front"),
@@ -116,15 +117,18 @@ fn canonical(t: &Term) -> String {
                 _ => None,
             };
             if let Some(to) = to {
-                return Term::fun("relation", vec![Term::constant(to), b.clone(), a.clone()]);
+                return Symbol::function(
+                    "relation",
+                    vec![Symbol::constant(to), b.clone(), a.clone()],
+                );
             }
         }
         f.clone()
     }
     let out = match (t.name(), t.args()) {
         (Some("holds"), [f, i]) => {
-            let mut h = Term::fun("holds", vec![flip(f), i.clone()]);
-            if t.is_neg() {
+            let mut h = Symbol::function("holds", vec![flip(f), i.clone()]);
+            if t.is_negative() {
                 h = h.complement().unwrap();
             }
             h
@@ -305,7 +309,7 @@ fn h4_learner_profile_is_reported() {
 
 #[test]
 fn scoring_matches_converses_and_counts_misses() {
-    let t = |s: &str| canonical(&Term::parse(s).unwrap());
+    let t = |s: &str| canonical(&Symbol::parse(s).unwrap());
     assert_eq!(
         t("holds(relation(below,a,b),0)"),
         t("holds(relation(above,b,a),0)")

@@ -13,7 +13,6 @@ use lucent::explain::english::Parser;
 use lucent::explain::history::{explain_history, parse_actions, HistoryConfig};
 use lucent::explain::lexicon::Lexicon;
 use lucent::explain::questions::{answer, Mode, Session};
-use lucent::explain::term::Term;
 use lucent::explain::tree::{recheck, Kind, Oracle};
 
 fn load(scene: &str) -> (Description, SourceMap) {
@@ -39,8 +38,8 @@ fn paper() -> lucent::explain::history::History {
     explain_history(&desc, &mut sources, &actions, &HistoryConfig::default()).unwrap()
 }
 
-fn t(s: &str) -> Term {
-    Term::parse(s).unwrap()
+fn t(s: &str) -> Symbol {
+    Symbol::parse(s).unwrap()
 }
 
 #[test]
@@ -122,7 +121,7 @@ fn the_papers_questions_over_the_real_program() {
         if let Some(tree) = &a.tree {
             recheck(tree, scn.oracle).unwrap();
         }
-        let lits: Vec<String> = a.literals.iter().map(Term::to_string).collect();
+        let lits: Vec<String> = a.literals.iter().map(Symbol::to_string).collect();
         (a.text, lits)
     };
     let (text, lits) = ask("Please describe the plan.", Mode::Concise);

@@ -3,10 +3,10 @@
 //! the paper's examples 1-3 (DOMAIN.md 6.8), the missing-step rule, follow-up steps, concise and
 //! full modes, and questions outside the history. Every proof tree is re-checked by `answer`.
 
+use lucent::control::Symbol;
 use lucent::explain::english::Parser;
 use lucent::explain::lexicon::Lexicon;
 use lucent::explain::questions::{answer, AnswerError, Mode, Scenario, Session};
-use lucent::explain::term::Term;
 
 #[path = "support/ra_oracle.rs"]
 mod ra_oracle;
@@ -32,7 +32,7 @@ fn dialogue(questions: &[&str], mode: Mode) -> String {
     for q in questions {
         let question = parser.parse(q).unwrap_or_else(|e| panic!("{q}: {e:?}"));
         let a = answer(&scn, &lex, &question, mode, &mut session).unwrap();
-        let lits: Vec<String> = a.literals.iter().map(Term::to_string).collect();
+        let lits: Vec<String> = a.literals.iter().map(Symbol::to_string).collect();
         out.push_str(&format!(
             "Q: {q}\nA: {}\n   [{}] {}\n",
             a.text,

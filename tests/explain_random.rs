@@ -6,8 +6,8 @@
 
 use std::collections::HashSet;
 
+use lucent::control::Symbol;
 use lucent::explain::build::{BuildConfig, Builder};
-use lucent::explain::term::Term;
 use lucent::explain::tree::{recheck, AxiomKind, BodyLiteral, ModelOracle, RuleInstance};
 
 /// A small deterministic generator (64-bit LCG, Knuth's constants).
@@ -26,8 +26,8 @@ impl Rng {
     }
 }
 
-fn atom(k: u64) -> Term {
-    Term::parse(&format!("holds(p({k}),{})", k % 3)).unwrap()
+fn atom(k: u64) -> Symbol {
+    Symbol::parse(&format!("holds(p({k}),{})", k % 3)).unwrap()
 }
 
 fn program(seed: u64) -> ModelOracle {
@@ -86,7 +86,7 @@ fn program(seed: u64) -> ModelOracle {
         });
     }
     // The least model, negation read against the fixed base.
-    let mut model: HashSet<Term> = HashSet::new();
+    let mut model: HashSet<Symbol> = HashSet::new();
     loop {
         let before = model.len();
         for r in &rules {
@@ -111,7 +111,7 @@ fn every_tree_passes_the_recheck() {
     let (mut trees, mut false_trees, mut nodes) = (0, 0, 0);
     for seed in 0..300 {
         let o = program(seed);
-        let atoms: HashSet<Term> = o
+        let atoms: HashSet<Symbol> = o
             .rules
             .iter()
             .flat_map(|r| {
@@ -121,7 +121,7 @@ fn every_tree_passes_the_recheck() {
                 }))
             })
             .collect();
-        let mut atoms: Vec<Term> = atoms.into_iter().collect();
+        let mut atoms: Vec<Symbol> = atoms.into_iter().collect();
         atoms.sort();
         for a in &atoms {
             let tree = Builder::new(&o, BuildConfig::default()).build(a);

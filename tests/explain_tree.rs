@@ -7,14 +7,14 @@
 
 use std::collections::HashSet;
 
+use lucent::control::Symbol;
 use lucent::explain::draw;
-use lucent::explain::term::Term;
 use lucent::explain::tree::{
     recheck, AxiomKind, BodyLiteral, Kind, ModelOracle, Node, NodeId, ProofTree, RuleInstance,
 };
 
-fn t(s: &str) -> Term {
-    Term::parse(s).unwrap()
+fn t(s: &str) -> Symbol {
+    Symbol::parse(s).unwrap()
 }
 
 fn rule(label: &str, kind: AxiomKind, head: &str, body: &[&str]) -> RuleInstance {
@@ -64,7 +64,7 @@ fn oracle() -> ModelOracle {
     rules.push(rule("fact", AxiomKind::Fact, COMPLEMENT, &[]));
     rules.push(rule("fact", AxiomKind::Fact, OBS, &[]));
     rules.push(rule("history", AxiomKind::History, OCCURS, &[HPD]));
-    let model: HashSet<Term> = [ROOT, BELOW, ABOVE, ON, OBS, ACTION, COMPLEMENT]
+    let model: HashSet<Symbol> = [ROOT, BELOW, ABOVE, ON, OBS, ACTION, COMPLEMENT]
         .iter()
         .map(|s| t(s))
         .collect();

@@ -2,12 +2,12 @@
 //! every literal kind in each tense, merging, the plan and the paper's answers (DOMAIN.md 6.8)
 //! from their literals.
 
+use lucent::control::Symbol;
 use lucent::explain::lexicon::Lexicon;
-use lucent::explain::term::Term;
 use lucent::explain::verbalize::{Tense, Verbalizer};
 
-fn t(s: &str) -> Term {
-    Term::parse(s).unwrap()
+fn t(s: &str) -> Symbol {
+    Symbol::parse(s).unwrap()
 }
 
 #[test]
@@ -87,7 +87,7 @@ fn constants_in_words() {
 fn merging_literals_with_the_same_predicate_and_first_argument() {
     let lex = Lexicon::ra();
     let v = Verbalizer::new(&lex);
-    let lits: Vec<Term> = [
+    let lits: Vec<Symbol> = [
         "holds(relation(below,red_block,white_block),0)",
         "holds(relation(below,red_block,green_can),0)",
         "holds(relation(on,pitcher,table),0)",
@@ -117,7 +117,7 @@ fn merging_literals_with_the_same_predicate_and_first_argument() {
 fn the_papers_answers() {
     let lex = Lexicon::ra();
     let v = Verbalizer::new(&lex);
-    let plan: Vec<(u32, Term)> = [
+    let plan: Vec<(u32, Symbol)> = [
         (0, "pickup(rob1,green_can)"),
         (1, "putdown(rob1,green_can,table)"),
         (2, "pickup(rob1,white_block)"),

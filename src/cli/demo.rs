@@ -105,7 +105,6 @@ mod simulated {
     use crate::cli::run::{describe, goal_of, load_domain, RunArgs};
     use crate::control::Symbol;
     use crate::explain::lexicon::Lexicon;
-    use crate::explain::term::Term;
     use crate::explain::verbalize::{Tense, Verbalizer};
     use crate::plan::act::{self, Event, RunConfig};
     use crate::plan::tabletop::{act_config, SimWorld};
@@ -208,7 +207,7 @@ mod simulated {
         let lexicon = Lexicon::ra();
         let v = Verbalizer::new(&lexicon);
         let say = |text: &str, tense: Tense| {
-            Term::parse(text).map_or(text.to_string(), |t| v.fluent(&t, tense))
+            Symbol::parse(text).map_or(text.to_string(), |t| v.fluent(&t, tense))
         };
 
         writeln!(out, "Lucent demo: the robot assistant at the table")?;
@@ -255,11 +254,11 @@ mod simulated {
             &mut |e| match &e {
                 Event::Perceived { .. } => (),
                 Event::Planned(p) => {
-                    let steps: Vec<(u32, Term)> = p
+                    let steps: Vec<(u32, Symbol)> = p
                         .actions
                         .iter()
                         .enumerate()
-                        .filter_map(|(k, a)| Some((k as u32, Term::parse(a).ok()?)))
+                        .filter_map(|(k, a)| Some((k as u32, Symbol::parse(a).ok()?)))
                         .collect();
                     lines.push(describe(&e));
                     lines.push(format!("          In English: {}", v.plan(&steps, false)));
@@ -273,11 +272,11 @@ mod simulated {
         if let Err(m) = picture(&world.scene, &after) {
             return input(err, m);
         }
-        let done: Vec<(u32, Term)> = history
+        let done: Vec<(u32, Symbol)> = history
             .steps
             .iter()
             .filter(|s| s.failure.is_none())
-            .filter_map(|s| Some((s.step, Term::parse(s.happened.as_deref()?).ok()?)))
+            .filter_map(|s| Some((s.step, Symbol::parse(s.happened.as_deref()?).ok()?)))
             .collect();
         writeln!(out)?;
         writeln!(out, "What I did: {}", v.plan(&done, true))?;

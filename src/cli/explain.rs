@@ -7,9 +7,15 @@
 //!   (`--happened "a@0; b@1"`, need not be minimal) or the first minimal plan the planner finds.
 //! - `lucent explain PROGRAM.lp --why ATOM` / `--why-not ATOM`: the proof (or the blocked rules)
 //!   of an atom in the program's first answer set.
-//! - `lucent ask SCENE.ald... [--happened PLAN]`: questions read line by line (line editing and
-//!   history on a terminal), each answered in turn; follow-up questions take their step from
-//!   the previous one.
+//! - `lucent ask SCENE.ald... [--happened PLAN]` or `lucent ask --run RUN.json [DOMAIN.ald]`:
+//!   questions read line by line, each answered in turn; follow-up questions take their step
+//!   from the previous one. The session keeps its questions: `history` lists them, `!N` asks
+//!   question N again and `!!` the last one. Line editing is the terminal's own (no line-editor
+//!   dependency: a history command covers re-asking, and the session also reads piped input).
+//! - `--run RUN.json` (both verbs): a run `lucent run` saved (`--save-history`, or its `--outf=2`
+//!   output) instead of a scene: its step-0 perception, statics, goal and executed actions
+//!   (`explain::history::scene_of_run`), over the domain files given (default: the built-in
+//!   KB_full).
 //!
 //! Output: the English answer, or with `--outf=2` JSON `{type, answer, literals, tree}`;
 //! `--dot FILE` / `--svg FILE` write the proof tree with the answer's path highlighted.
@@ -32,7 +38,6 @@ use crate::explain::history::{explain_history, parse_actions, History, HistoryCo
 use crate::explain::lexicon::Lexicon;
 use crate::explain::oracle::{Labels, ProgramOracle};
 use crate::explain::questions::{answer, Answer, AnswerError, Mode, Session};
-use crate::explain::term::Term;
 use crate::plan::{plan, PlanConfig};
 
 /// `lucent explain --help`.
@@ -40,16 +45,22 @@ const HELP: &str = "\
 usage: lucent explain SCENE.ald... [--happened PLAN] [--goal LITERALS] -q QUESTION [options]
        lucent explain PROGRAM.lp (--why ATOM | --why-not ATOM) [options]
        lucent ask SCENE.ald... [--happened PLAN] [--goal LITERALS] [options]
+       lucent ask --run RUN.json [DOMAIN.ald] [options]
 
 Answers questions about a history of the robot (DOMAIN.md 6): plan description, why did you
 X, why did you not X, why did you believe Y. The history is the scene (AL_d files, usually a
 scene that includes domains/ra/kb_full.ald) with an executed plan (--happened \"a@0; b@1\" or
 one action per `;`), or else the first minimal plan the planner finds for the goal.
-With --why/--why-not, explains an atom of the first answer set of any clingo program.
+With --run, the history is a run saved by `lucent run` (--save-history FILE or its --outf=2
+output) over the domain files given (default: the built-in KB_full); actions the world
+reported as failed are left out. With --why/--why-not, explains an atom of the first answer set
+of any clingo program. In `ask`, `history` lists the questions asked so far, `!N` asks question
+N again, `!!` the last one; an empty line or `quit` ends the session.
 
 Options:
   -q, --question TEXT   the question (explain)
   --happened PLAN       the executed actions, in step order
+  --run FILE            a run saved by `lucent run` (JSON) instead of a scene
   --goal LITERALS       a goal (AL_d literals, `relation(on, a, b), in_hand(rob1, c)`)
   --profile NAME        the description's profile
   -c NAME=VALUE         a switch of the description (or a constant of a clingo program)
@@ -76,6 +87,7 @@ struct Args {
     svg: Option<String>,
     why: Option<String>,
     why_not: Option<String>,
+    run: Option<String>,
 }
 
 fn usage(err: &mut dyn Write, verb: &str, msg: &str) -> std::io::Result<i32> {
@@ -107,6 +119,7 @@ fn parse_args(args: &[String]) -> Result<Args, String> {
         match name {
             "-q" | "--question" => a.question = Some(value(&mut i)?),
             "--happened" => a.happened = Some(value(&mut i)?),
+            "--run" => a.run = Some(value(&mut i)?),
             "--goal" => a.goal = Some(value(&mut i)?),
             "--profile" => a.profile = Some(value(&mut i)?),
             "--max-horizon" => {
@@ -166,7 +179,7 @@ pub fn run_explain(
         Ok(a) => a,
         Err(m) => return usage(err, "explain", &m),
     };
-    if a.files.is_empty() {
+    if a.files.is_empty() && a.run.is_none() {
         return usage(err, "explain", "`lucent explain` needs a file");
     }
     if a.why.is_some() || a.why_not.is_some() {
@@ -210,8 +223,12 @@ pub fn run_ask(
         Ok(a) => a,
         Err(m) => return usage(err, "ask", &m),
     };
-    if a.files.is_empty() {
-        return usage(err, "ask", "`lucent ask` needs a scene file");
+    if a.files.is_empty() && a.run.is_none() {
+        return usage(
+            err,
+            "ask",
+            "`lucent ask` needs a scene file or --run RUN.json",
+        );
     }
     let (history, no_plan) = match load_history(&a, err)? {
         Ok(h) => h,
@@ -226,8 +243,13 @@ pub fn run_ask(
         .collect();
     if !a.json {
         writeln!(out, "History: {}", plan.join("; "))?;
-        writeln!(out, "Ask me about it (an empty line or `quit` ends).")?;
+        writeln!(
+            out,
+            "Ask me about it (`history` lists your questions, `!N` asks one again; an empty \
+             line or `quit` ends)."
+        )?;
     }
+    let mut asked: Vec<String> = Vec::new();
     let mut line = String::new();
     loop {
         line.clear();
@@ -238,17 +260,73 @@ pub fn run_ask(
         if input.read_line(&mut line)? == 0 {
             break;
         }
-        let q = line.trim();
-        if q.is_empty() || q == "quit" || q == "exit" {
+        let typed = line.trim();
+        if typed.is_empty() || typed == "quit" || typed == "exit" {
             break;
         }
         if !a.json && echo {
-            writeln!(out, "{q}")?;
+            writeln!(out, "{typed}")?;
         }
-        let reply = respond(&history, no_plan, &lexicon, q, &a, &mut session);
+        if typed == "history" {
+            if asked.is_empty() {
+                writeln!(out, "No questions yet.")?;
+            }
+            for (k, q) in asked.iter().enumerate() {
+                writeln!(out, "{:>3}  {q}", k + 1)?;
+            }
+            continue;
+        }
+        let q = match recall(typed, &asked) {
+            Recall::Question(q) => q,
+            Recall::Again(q) => {
+                if !a.json {
+                    writeln!(out, "{q}")?;
+                }
+                q
+            }
+            Recall::Missing(n) => {
+                writeln!(
+                    out,
+                    "There is no question {n} in this session: `history` lists them."
+                )?;
+                continue;
+            }
+        };
+        let reply = respond(&history, no_plan, &lexicon, &q, &a, &mut session);
         emit(&reply, &a, out, err)?;
+        asked.push(q);
     }
     Ok(0)
+}
+
+/// What a typed line asks for in a session.
+#[derive(Debug, PartialEq)]
+enum Recall {
+    /// A new question.
+    Question(String),
+    /// An earlier question, asked again (`!N`, `!!`).
+    Again(String),
+    /// `!N` for a question the session does not have.
+    Missing(String),
+}
+
+/// Reads `!!` (the last question) and `!N` (question N, from 1); anything else is a question.
+fn recall(typed: &str, asked: &[String]) -> Recall {
+    let Some(rest) = typed.strip_prefix('!') else {
+        return Recall::Question(typed.to_string());
+    };
+    let found = match rest.trim() {
+        "!" => asked.last(),
+        n => n
+            .parse::<usize>()
+            .ok()
+            .and_then(|k| k.checked_sub(1))
+            .and_then(|k| asked.get(k)),
+    };
+    match found {
+        Some(q) => Recall::Again(q.clone()),
+        None => Recall::Missing(typed.to_string()),
+    }
 }
 
 /// One reply: the answer (or the reply to a question not understood).
@@ -396,8 +474,32 @@ fn load_history(
     let mut read =
         |path: &std::path::Path| std::fs::read_to_string(path).map_err(|e| e.to_string());
     let mut diags = crate::base::Diagnostics::default();
-    for name in &a.files {
-        let text = match std::fs::read_to_string(name) {
+    let mut files: Vec<(String, Option<String>)> =
+        a.files.iter().map(|f| (f.clone(), None)).collect();
+    let mut run_actions = None;
+    if let Some(path) = &a.run {
+        let loaded = std::fs::read_to_string(path)
+            .map_err(|e| e.to_string())
+            .and_then(|t| crate::plan::history::History::from_json(&t))
+            .and_then(|run| crate::explain::history::scene_of_run(&run));
+        let (scene, actions) = match loaded {
+            Ok(x) => x,
+            Err(e) => {
+                writeln!(err, "*** ERROR: (lucent): {path}: {e}")?;
+                return Ok(Err(super::EXIT_INPUT));
+            }
+        };
+        if files.is_empty() {
+            files.push((
+                "domains/ra/kb_full.ald (built in)".into(),
+                Some(super::run::KB_FULL.to_string()),
+            ));
+        }
+        files.push((format!("{path} (as AL_d)"), Some(scene)));
+        run_actions = Some(actions);
+    }
+    for (name, given) in files {
+        let text = match given.map_or_else(|| std::fs::read_to_string(&name), Ok) {
             Ok(t) => t,
             Err(e) => {
                 writeln!(err, "*** ERROR: (lucent): {name}: {e}")?;
@@ -430,15 +532,16 @@ fn load_history(
         .map(|(n, v)| (n.clone(), super::action::value_of(v)))
         .collect();
     let mut no_plan = None;
-    let actions: Vec<Symbol> = match &a.happened {
-        Some(text) => match parse_actions(text) {
+    let actions: Vec<Symbol> = match (&a.happened, run_actions) {
+        (Some(text), _) => match parse_actions(text) {
             Ok(x) => x,
             Err(m) => {
                 writeln!(err, "*** ERROR: (lucent): --happened: {m}")?;
                 return Ok(Err(super::EXIT_INPUT));
             }
         },
-        None => {
+        (None, Some(actions)) => actions,
+        (None, None) => {
             let config = PlanConfig {
                 max_horizon: a.max_horizon.unwrap_or(10),
                 profile: a.profile.clone(),
@@ -485,8 +588,8 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
         (None, Some(x)) => (x.clone(), true),
         _ => return usage(err, "explain", "give one of --why and --why-not"),
     };
-    let atom = match Term::parse(&atom_text) {
-        Ok(t) if t.is_ground() && t.name().is_some_and(|n| !n.is_empty()) => t,
+    let atom = match Symbol::parse(&atom_text) {
+        Ok(t) if t.name().is_some_and(|n| !n.is_empty()) => t,
         _ => {
             writeln!(
                 err,

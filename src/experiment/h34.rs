@@ -1,44 +1,325 @@
 //! H3, proof-tree checks, and H4, explanation precision and recall (DOMAIN.md 7.5, the paper's
-//! Tables 4 and 5). A trial is one (scene, goal) pair of a preset: H3 builds the proof trees of
-//! the pair's plan and questions and counts what the checks of 7.5 find; H4 asks the four
-//! questions of 7.5 under both knowledge-base conditions and scores each answer's literals
-//! against the truth (6.9).
+//! Tables 4 and 5). A trial is one (scene, goal) pair of a preset, drawn by
+//! `explain::h3::generate` from the trial's seed (so each trial has its own configuration and
+//! goal: the paper's 20 configurations with 5 goals each become 100 independent draws per
+//! preset), planned under KB_full and executed as a history (`explain::history`).
+//! - H3 asks the questions and beliefs of `explain::h3::check_history` over that history and
+//!   counts what the checks of 7.5 find (re-check, repeats on a path, leaf kinds).
+//! - H4 draws the four questions of 7.5 over KB_full's history (the first four
+//!   `check_history` asks), takes KB_full's full-mode answers as the truth (6.9: "generated in
+//!   full mode from KB_full"), and asks the same questions over the learner profile's own run
+//!   (without) and over the learner profile plus the axioms H1 run `index mod runs` learned
+//!   (with: `RunResult::ald`), scoring each answer's literals against the truth.
 //!
 //! Invariants: H4's precision and recall are averaged per question type (6.9), per preset and
 //! condition, over the questions asked; H3 reports counts, and a failure is listed by trial, so
-//! a reader can open it.
+//! a reader can open it. The domain is read from the context (`cli` loaded it), never from a
+//! file; a scene KB_full cannot plan within the budget is counted, not failed.
+
+use std::collections::BTreeSet;
+use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
 use super::svg;
-use super::{Context, Hypothesis, Record, Trial, TrialError};
+use super::{Context, Hypothesis, Record, Trial, TrialError, H1_CONFIG};
+use crate::action::{self, ast::Description, ast::Value};
+use crate::base::SourceMap;
+use crate::control::Symbol;
+use crate::explain::english::Question;
+use crate::explain::h3::{check_history, generate, ScenePreset};
+use crate::explain::history::{explain_history, History, HistoryConfig};
+use crate::explain::lexicon::Lexicon;
+use crate::explain::pattern::SymbolExt;
+use crate::explain::questions::{answer, Mode, Session};
+use crate::plan::{plan, PlanConfig, PlanError};
 
-/// Why H3 or H4 cannot run in this build, if it cannot.
-pub fn availability(h: Hypothesis) -> Result<(), String> {
-    match h {
-        Hypothesis::H3 => Err("the H3 checks over generated (scene, goal, plan) triples \
-                               (explain's Control adapter and the questions' triple generator) \
-                               are not on main yet"
-            .into()),
-        _ => Err(
-            "the H4 question generator and literal scoring over generated scenes \
-                  (explain's Control adapter and the questions helper's functions) are not on \
-                  main yet"
-                .into(),
-        ),
+/// Why H3 or H4 cannot run in this build, if it cannot (both can).
+pub fn availability(_h: Hypothesis) -> Result<(), String> {
+    Ok(())
+}
+
+/// The planner's horizon budget for the generated scenes (DOMAIN.md 7.1 scenes need at most 8).
+const MAX_HORIZON: usize = 10;
+
+/// The scene of a trial, loaded against the domain: the generated scene (`h3::generate` with the
+/// trial's seed: each trial draws its own configuration and goal) as AL_d text that includes
+/// the domain, which is read from the context, never from a file.
+fn load_scene(
+    ctx: &Context,
+    preset: ScenePreset,
+    seed: u64,
+) -> Result<(Description, SourceMap), TrialError> {
+    let scene = generate(preset, seed);
+    let domain = Path::new(&ctx.domain.path);
+    let dir = domain.parent().unwrap_or(Path::new("."));
+    let text = scene.to_ald(&ctx.domain.path, true);
+    let mut sources = SourceMap::new();
+    let file = sources.add(
+        dir.join(format!("{}.ald", scene.name()))
+            .to_string_lossy()
+            .into_owned(),
+        text,
+    );
+    let mut read = |p: &Path| {
+        if p == domain {
+            Ok(ctx.domain.text.clone())
+        } else {
+            Err(format!(
+                "{}: only the domain can be included here",
+                p.display()
+            ))
+        }
+    };
+    let parsed = action::load(&mut sources, file, &mut read);
+    if parsed.has_errors() {
+        return Err(TrialError::Input(render(parsed.diagnostics, &sources)));
+    }
+    Ok((parsed.description, sources))
+}
+
+/// A planned and executed history under a profile (`None`: KB_full): the planner's first
+/// minimal plan; when the profile finds none within the budget, the robot did nothing (the
+/// history is the initial state alone). `Ok(None)` when KB_full itself has no plan.
+fn run_history(
+    desc: &Description,
+    sources: &SourceMap,
+    profile: Option<&str>,
+) -> Result<Option<History>, TrialError> {
+    let mut config = PlanConfig {
+        max_horizon: MAX_HORIZON,
+        profile: profile.map(str::to_string),
+        ..PlanConfig::default()
+    };
+    if profile.is_some() {
+        // The learner profile turns the planning module off; the planner needs it.
+        config
+            .overrides
+            .push(("planning".into(), Value::Bool(true)));
+    }
+    let actions = match plan(desc, sources, &config) {
+        Ok(found) => found.plans[0].actions.clone(),
+        Err(PlanError::NoPlanWithin(_)) if profile.is_none() => return Ok(None),
+        Err(PlanError::Input(m)) => return Err(TrialError::Input(m)),
+        Err(_) if profile.is_some() => Vec::new(),
+        Err(e) => return Err(TrialError::Input(e.to_string())),
+    };
+    let hconfig = HistoryConfig {
+        profile: profile.map(str::to_string),
+        ..HistoryConfig::default()
+    };
+    let mut sources = sources.clone();
+    match explain_history(desc, &mut sources, &actions, &hconfig) {
+        Ok(h) => Ok(Some(h)),
+        Err(e) => Err(TrialError::Input(format!("history: {e}"))),
+    }
+}
+
+/// Diagnostics as gringo renders them.
+fn render(diagnostics: Vec<crate::base::diag::Diagnostic>, sources: &SourceMap) -> String {
+    let mut d = crate::base::Diagnostics::default();
+    d.extend(diagnostics);
+    d.render(sources).trim_end().to_string()
+}
+
+fn preset_of(trial: &Trial) -> Result<ScenePreset, TrialError> {
+    match trial.config.as_str() {
+        "real" => Ok(ScenePreset::Real),
+        "simulated" => Ok(ScenePreset::Simulated),
+        other => Err(TrialError::Input(format!("unknown preset '{other}'"))),
     }
 }
 
 /// Runs one trial of H3 or H4.
 pub fn run_trial(
-    _ctx: &Context,
+    ctx: &Context,
     h: Hypothesis,
-    _trial: &Trial,
-    _seed: u64,
+    trial: &Trial,
+    seed: u64,
 ) -> Result<serde_json::Value, TrialError> {
-    Err(TrialError::NotAvailable(
-        availability(h).err().unwrap_or_default(),
-    ))
+    let preset = preset_of(trial)?;
+    let (desc, sources) = load_scene(ctx, preset, seed)?;
+    let full = run_history(&desc, &sources, None)?;
+    let value = match h {
+        Hypothesis::H3 => serde_json::to_value(h3_trial(trial, full.as_ref(), seed)),
+        _ => serde_json::to_value(h4_trial(ctx, trial, &desc, &sources, full.as_ref(), seed)?),
+    };
+    value.map_err(|e| TrialError::Store(e.to_string()))
+}
+
+/// H3: the questions and beliefs of `h3::check_history` over KB_full's history, every proof
+/// tree checked.
+fn h3_trial(trial: &Trial, full: Option<&History>, seed: u64) -> H3Trial {
+    let mut t = H3Trial {
+        preset: trial.config.clone(),
+        ..H3Trial::default()
+    };
+    let Some(h) = full else {
+        t.no_plan = 1;
+        return t;
+    };
+    let report = check_history(&h.scenario(), &h.objects(), seed);
+    t.trees = report.trees;
+    // `check_tree` names the check that failed first in its message.
+    let count = |needle: &str| {
+        report
+            .failures
+            .iter()
+            .filter(|f| f.contains(needle))
+            .count()
+    };
+    t.rechecked = report.trees - count("recheck:");
+    t.repeats = count("repeats on a path");
+    t.bad_leaves = count("not one of DOMAIN.md 6.2");
+    t.failures = report.failures;
+    t
+}
+
+/// The answer literals of `questions` asked in order (one session) over a history, converse
+/// relations canonicalized (DOMAIN.md 6.9); an answer that fails is the empty set.
+fn literal_sets(h: &History, questions: &[Question]) -> Vec<BTreeSet<String>> {
+    let lexicon = Lexicon::ra();
+    let scn = h.scenario();
+    let mut session = Session::default();
+    questions
+        .iter()
+        .map(
+            |q| match answer(&scn, &lexicon, q, Mode::Full, &mut session) {
+                Ok(a) => a.literals.iter().map(canonical).collect(),
+                Err(_) => BTreeSet::new(),
+            },
+        )
+        .collect()
+}
+
+/// H4: the four questions of DOMAIN.md 7.5 (those `h3::check_history` asks first: the plan, why
+/// X for a random plan action, why not X with one argument changed, a related belief) drawn
+/// over KB_full's history; the truth is KB_full's full-mode answer (6.9); the same questions
+/// are asked over the learner profile's own history (without) and over the learner profile
+/// plus the axioms H1 run `index mod runs` learned (with), and each answer scored.
+fn h4_trial(
+    ctx: &Context,
+    trial: &Trial,
+    desc: &Description,
+    sources: &SourceMap,
+    full: Option<&History>,
+    seed: u64,
+) -> Result<H4Trial, TrialError> {
+    let mut t = H4Trial {
+        preset: trial.config.clone(),
+        without: Vec::new(),
+        with: Vec::new(),
+    };
+    let Some(full) = full else {
+        return Ok(t);
+    };
+    let report = check_history(&full.scenario(), &full.objects(), seed);
+    let questions: Vec<Question> = report.asked.into_iter().take(4).collect();
+    let truth = literal_sets(full, &questions);
+    let learned = learned_axioms(ctx, trial)?;
+    for with in [false, true] {
+        let mut d = desc.clone();
+        let mut s = sources.clone();
+        if with {
+            let file = s.add("<learned axioms>".to_string(), learned.clone());
+            let parsed = action::parse(file, &learned);
+            if parsed.has_errors() {
+                return Err(TrialError::Input(render(parsed.diagnostics, &s)));
+            }
+            d.statements.extend(parsed.description.statements);
+        }
+        let Some(h) = run_history(&d, &s, Some("learner"))? else {
+            continue;
+        };
+        let got = literal_sets(&h, &questions);
+        let scores = questions
+            .iter()
+            .zip(got.iter().zip(&truth))
+            .map(|(q, (a, t))| {
+                let (p, r) = score(a, t);
+                QuestionScore {
+                    kind: q.kind().to_string(),
+                    question: q.to_string(),
+                    precision: 100.0 * p,
+                    recall: 100.0 * r,
+                }
+            })
+            .collect();
+        if with {
+            t.with = scores;
+        } else {
+            t.without = scores;
+        }
+    }
+    Ok(t)
+}
+
+/// The AL_d text of the axioms H1 run `trial.index mod runs` learned (computed now when the
+/// store does not have it: same seed, same result).
+fn learned_axioms(ctx: &Context, trial: &Trial) -> Result<String, TrialError> {
+    let h1 = Trial {
+        hypothesis: Hypothesis::H1,
+        config: H1_CONFIG.into(),
+        index: trial.index % ctx.setup.runs.max(1),
+    };
+    let (record, _) = ctx.record(&h1)?;
+    record
+        .result
+        .get("ald")
+        .and_then(serde_json::Value::as_str)
+        .map(str::to_string)
+        .ok_or_else(|| TrialError::Input(format!("{}: no learned axioms", h1.id())))
+}
+
+/// The converse-canonical text of a literal (DOMAIN.md 6.9): inside `holds`,
+/// `relation(below,A,B)` is `relation(above,B,A)`, `behind` is `front` and `right` is `left`.
+pub fn canonical(t: &Symbol) -> String {
+    let flip = |f: &Symbol| -> Symbol {
+        if let (Some("relation"), [rel, a, b]) = (f.name(), f.args()) {
+            let to = match rel.name() {
+                Some("below") => Some("above"),
+                Some("behind") => Some("front"),
+                Some("right") => Some("left"),
+                _ => None,
+            };
+            if let Some(to) = to {
+                return Symbol::function(
+                    "relation",
+                    vec![Symbol::constant(to), b.clone(), a.clone()],
+                );
+            }
+        }
+        f.clone()
+    };
+    match (t.name(), t.args()) {
+        (Some("holds"), [f, i]) => {
+            let h = Symbol::function("holds", vec![flip(f), i.clone()]);
+            if t.is_negative() {
+                h.complement().unwrap_or(h)
+            } else {
+                h
+            }
+            .to_string()
+        }
+        _ => t.to_string(),
+    }
+}
+
+/// Precision and recall of an answer's literals against the truth (DOMAIN.md 6.9): an empty
+/// answer has precision 1 when the truth is empty too, else 0; an empty truth has recall 1.
+pub fn score(answer: &BTreeSet<String>, truth: &BTreeSet<String>) -> (f64, f64) {
+    let hit = answer.intersection(truth).count() as f64;
+    let p = match (answer.is_empty(), truth.is_empty()) {
+        (true, true) => 1.0,
+        (true, false) => 0.0,
+        _ => hit / answer.len() as f64,
+    };
+    let r = if truth.is_empty() {
+        1.0
+    } else {
+        hit / truth.len() as f64
+    };
+    (p, r)
 }
 
 /// The four question types of DOMAIN.md 6.3-6.6, in the tables' order.
@@ -84,6 +365,9 @@ pub struct H3Trial {
     pub repeats: usize,
     /// Trees with a leaf of a kind DOMAIN.md 6.2 does not list.
     pub bad_leaves: usize,
+    /// Trials whose scene KB_full cannot plan within the horizon budget (no trees).
+    #[serde(default)]
+    pub no_plan: usize,
     /// What failed, one line each.
     pub failures: Vec<String>,
 }
@@ -186,6 +470,7 @@ pub fn aggregate_h3(records: &[Record]) -> Result<H3Summary, String> {
         sum.rechecked += t.rechecked;
         sum.repeats += t.repeats;
         sum.bad_leaves += t.bad_leaves;
+        sum.no_plan += t.no_plan;
         sum.failures
             .extend(t.failures.iter().map(|f| format!("{}: {f}", r.id)));
     }
@@ -202,12 +487,12 @@ pub fn markdown_h3(s: &H3Summary) -> String {
     out.push_str(
         "The paper shows H3 through its execution traces; our checks (DOMAIN.md 7.5): every \
          tree passes the independent re-check, no literal repeats on a path, every leaf is of a \
-         kind 6.2 lists.\n\n| preset | trees | re-check passed | repeats on a path | bad leaves |\n|---|---|---|---|---|\n",
+         kind 6.2 lists.\n\n| preset | trees | re-check passed | repeats on a path | bad leaves | scenes without a plan |\n|---|---|---|---|---|---|\n",
     );
     for p in &s.presets {
         out.push_str(&format!(
-            "| {} | {} | {} | {} | {} |\n",
-            p.preset, p.trees, p.rechecked, p.repeats, p.bad_leaves
+            "| {} | {} | {} | {} | {} | {} |\n",
+            p.preset, p.trees, p.rechecked, p.repeats, p.bad_leaves, p.no_plan
         ));
     }
     let failures: Vec<&String> = s.presets.iter().flat_map(|p| &p.failures).collect();

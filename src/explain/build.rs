@@ -33,10 +33,11 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::term::Term;
+use super::pattern::SymbolExt;
 use super::tree::{
     AxiomKind, Kind, Node, NodeId, Oracle, ProofTree, RuleInstance, MAX_BRANCHES, MAX_DEPTH,
 };
+use crate::control::Symbol;
 
 /// Settings of the tree builder.
 #[derive(Clone, Debug)]
@@ -48,7 +49,7 @@ pub struct BuildConfig {
     pub node_budget: usize,
     /// Constants that do not count as the root's objects when breaking ties (the robot: every
     /// action and `in_hand` mentions `rob1`).
-    pub agents: Vec<Term>,
+    pub agents: Vec<Symbol>,
 }
 
 impl Default for BuildConfig {
@@ -67,13 +68,13 @@ pub struct Builder<'o> {
     config: BuildConfig,
     tree: ProofTree,
     /// Object constants of the root literal (for tie-breaking).
-    root_objects: Vec<Term>,
+    root_objects: Vec<Symbol>,
     /// The root's action or fluent (the first argument of `occurs`/`holds`).
-    root_inner: Option<Term>,
+    root_inner: Option<Symbol>,
     /// Literals on the current path.
-    path: Vec<Term>,
+    path: Vec<Symbol>,
     /// Finished expansions: literal -> (alternatives, literals used in their subtrees).
-    memo: HashMap<Term, (Vec<NodeId>, HashSet<Term>)>,
+    memo: HashMap<Symbol, (Vec<NodeId>, HashSet<Symbol>)>,
     /// Subtree size of each node (nodes to its leaves, itself included).
     size: Vec<usize>,
     /// The lowest path position a cycle cut (or the depth limit, as position 0) referred to
@@ -81,7 +82,7 @@ pub struct Builder<'o> {
     /// memoized.
     lowest_cut: usize,
     /// Literals known to be (or not to be) sort guards.
-    sort_cache: std::cell::RefCell<HashMap<Term, bool>>,
+    sort_cache: std::cell::RefCell<HashMap<Symbol, bool>>,
 }
 
 impl<'o> Builder<'o> {
@@ -102,7 +103,7 @@ impl<'o> Builder<'o> {
     }
 
     /// The proof tree of a literal: why it holds, or why it does not.
-    pub fn build(mut self, literal: &Term) -> ProofTree {
+    pub fn build(mut self, literal: &Symbol) -> ProofTree {
         self.root_objects = constants(literal);
         self.root_objects
             .retain(|c| !self.config.agents.contains(c));
@@ -133,7 +134,7 @@ impl<'o> Builder<'o> {
 
     /// The alternatives (one node per support, preferred first) for a literal that holds;
     /// empty if no support survives the loop and depth checks.
-    fn expand(&mut self, literal: &Term, depth: usize) -> Vec<NodeId> {
+    fn expand(&mut self, literal: &Symbol, depth: usize) -> Vec<NodeId> {
         if depth >= MAX_DEPTH {
             self.lowest_cut = 0;
             return Vec::new();
@@ -189,7 +190,7 @@ impl<'o> Builder<'o> {
     }
 
     /// The literals of a subtree, each node visited once.
-    fn collect_literals(&self, id: NodeId, out: &mut HashSet<Term>, seen: &mut HashSet<NodeId>) {
+    fn collect_literals(&self, id: NodeId, out: &mut HashSet<Symbol>, seen: &mut HashSet<NodeId>) {
         if !seen.insert(id) {
             return;
         }
@@ -201,12 +202,12 @@ impl<'o> Builder<'o> {
     }
 
     /// One support as a node, or `None` if its branch is dropped.
-    fn support(&mut self, literal: &Term, rule: RuleInstance, depth: usize) -> Option<NodeId> {
+    fn support(&mut self, literal: &Symbol, rule: RuleInstance, depth: usize) -> Option<NodeId> {
         let kind = self.classify(literal, &rule);
         if kind.is_leaf_kind() {
             return Some(self.add(Node::supported(literal.clone(), kind, rule)));
         }
-        let body: Vec<Term> = rule.positive().cloned().collect();
+        let body: Vec<Symbol> = rule.positive().cloned().collect();
         if let Some(p) = body
             .iter()
             .filter_map(|b| self.path.iter().position(|x| x == b))
@@ -244,7 +245,7 @@ impl<'o> Builder<'o> {
             }
         }
         // Keep each literal's alternatives together, in body order.
-        let order: Vec<&Term> = body.iter().collect();
+        let order: Vec<&Symbol> = body.iter().collect();
         children.sort_by_key(|c| {
             let lit = &self.tree.node(*c).literal;
             order.iter().position(|b| *b == lit).unwrap_or(usize::MAX)
@@ -262,8 +263,8 @@ impl<'o> Builder<'o> {
     }
 
     /// The node kind of a support.
-    fn classify(&self, literal: &Term, rule: &RuleInstance) -> Kind {
-        let is_action = literal.name() == Some("occurs") && !literal.is_neg();
+    fn classify(&self, literal: &Symbol, rule: &RuleInstance) -> Kind {
+        let is_action = literal.name() == Some("occurs") && !literal.is_negative();
         let is_holds = literal.name() == Some("holds");
         match rule.kind {
             AxiomKind::Fact if is_action => Kind::Action,
@@ -321,7 +322,7 @@ impl<'o> Builder<'o> {
 
     /// Whether every rule for a literal is a sort declaration (a guard that names the root's
     /// objects without saying anything about them).
-    fn is_sort(&self, t: &Term) -> bool {
+    fn is_sort(&self, t: &Symbol) -> bool {
         if let Some(&b) = self.sort_cache.borrow().get(t) {
             return b;
         }
@@ -333,7 +334,7 @@ impl<'o> Builder<'o> {
 
     /// The node of a literal that does not hold: each of its rules with its first blocking body
     /// literal. `None` if a blocking literal cannot be explained within the limits.
-    fn unsupported(&mut self, literal: &Term, depth: usize) -> Option<NodeId> {
+    fn unsupported(&mut self, literal: &Symbol, depth: usize) -> Option<NodeId> {
         if depth >= MAX_DEPTH {
             return None;
         }
@@ -404,7 +405,7 @@ impl<'o> Builder<'o> {
     fn preferred_child(&self, id: NodeId) -> Option<NodeId> {
         let n = self.tree.node(id);
         // The first alternative of each body literal, in body order.
-        let mut seen: Vec<&Term> = Vec::new();
+        let mut seen: Vec<&Symbol> = Vec::new();
         let mut firsts: Vec<NodeId> = Vec::new();
         for c in &n.children {
             let lit = &self.tree.node(*c).literal;
@@ -425,24 +426,24 @@ impl<'o> Builder<'o> {
 }
 
 /// Builds the proof tree of a literal with the default settings.
-pub fn proof_tree(oracle: &dyn Oracle, literal: &Term) -> ProofTree {
+pub fn proof_tree(oracle: &dyn Oracle, literal: &Symbol) -> ProofTree {
     Builder::new(oracle, BuildConfig::default()).build(literal)
 }
 
 /// Whether `inner` occurs in `t` (as `t` itself or a subterm).
-fn contains(t: &Term, inner: &Term) -> bool {
+fn contains(t: &Symbol, inner: &Symbol) -> bool {
     t == inner || t.args().iter().any(|a| contains(a, inner))
 }
 
 /// The constants inside a term that are objects (not relation names, not numbers): the
 /// arguments of `relation/3` after the first, and every constant argument elsewhere.
-fn constants(t: &Term) -> Vec<Term> {
+fn constants(t: &Symbol) -> Vec<Symbol> {
     let mut out = Vec::new();
     collect_constants(t, &mut out);
     out
 }
 
-fn collect_constants(t: &Term, out: &mut Vec<Term>) {
+fn collect_constants(t: &Symbol, out: &mut Vec<Symbol>) {
     let args = t.args();
     let skip = usize::from(t.name() == Some("relation"));
     for a in args.iter().skip(skip) {
@@ -502,7 +503,7 @@ pub fn is_spatial_node(n: &Node, spatial_labels: &[String]) -> bool {
 /// The number of distinct fluent or action literals (literals with a step) among a node's
 /// children: the body literals of its support that are traced.
 fn fluent_body_literals(tree: &ProofTree, id: NodeId) -> usize {
-    let mut seen: Vec<&Term> = Vec::new();
+    let mut seen: Vec<&Symbol> = Vec::new();
     for c in &tree.node(id).children {
         let child = tree.node(*c);
         if child.step.is_some() && !seen.contains(&&child.literal) {

@@ -20,9 +20,8 @@
 
 use super::history::{explain_history, History, HistoryError, Problem};
 use super::lexicon::Lexicon;
-use super::oracle::symbol_of;
+use super::pattern::{Pattern, SymbolExt};
 use super::questions::{answer, Answer, Mode, Session};
-use super::term::Term;
 use super::verbalize::{ActionForm, Tense, Verbalizer};
 use crate::action::{self, ast::Value, AxiomOrigin, Options, OriginKind};
 use crate::base::{Diagnostics, SourceMap};
@@ -34,7 +33,7 @@ use crate::syntax::ast;
 pub fn what_if(
     h: &History,
     lexicon: &Lexicon,
-    action: &Term,
+    action: &Pattern,
     step: Option<u32>,
     session: &mut Session,
 ) -> Answer {
@@ -48,7 +47,9 @@ pub fn what_if(
     let step = step.unwrap_or_else(|| {
         h.plan
             .iter()
-            .find(|(_, a)| a.name() == action.name() && a.arg(1) == action.arg(1))
+            .find(|(_, a)| {
+                a.name() == action.name() && a.arg(1).map(Pattern::from).as_ref() == action.arg(1)
+            })
             .map_or(0, |(i, _)| *i)
     });
     if step > h.last_step {
@@ -61,12 +62,13 @@ pub fn what_if(
         ));
     }
     session.last_step = Some(step);
-    let Some(x) = symbol_of(action) else {
+    let Some(x) = action.to_symbol() else {
         return simple(v.template("no_reason", &[]));
     };
+    let action = &x;
     let words = v.action(action, ActionForm::Past);
     let at = v.step(i64::from(step));
-    let actions: Vec<Symbol> = h.plan.iter().filter_map(|(_, a)| symbol_of(a)).collect();
+    let actions: Vec<Symbol> = h.plan.iter().map(|(_, a)| a.clone()).collect();
     let i = step as usize;
     let mut tried: Vec<Vec<Symbol>> = Vec::new();
     let mut with_rest = actions[..i.min(actions.len())].to_vec();
@@ -89,7 +91,7 @@ pub fn what_if(
     let Some((new, kept_rest)) = found else {
         // X itself cannot be executed there: say why, from the original history.
         let q = super::english::Question::WhyNotAction {
-            action: action.clone(),
+            action: Pattern::from(action),
             step: Some(step),
         };
         let reason = answer(
@@ -115,19 +117,19 @@ pub fn what_if(
         return a;
     };
     // The first step after `step` whose `on` and `in_hand` beliefs differ.
-    let shown = |t: &Term| -> bool {
+    let shown = |t: &Symbol| -> bool {
         let Some(f) = t.arg(0) else { return false };
         t.name() == Some("holds")
-            && !t.is_neg()
+            && !t.is_negative()
             && (f.name() == Some("in_hand")
-                || (f.name() == Some("relation") && f.arg(0).and_then(Term::name) == Some("on")))
+                || (f.name() == Some("relation") && f.arg(0).and_then(Symbol::name) == Some("on")))
     };
     let last = new.last_step.min(h.last_step);
     let old_lits = h.oracle.true_literals();
     let new_lits = new.oracle.true_literals();
     for s in step + 1..=new.last_step.max(step + 1) {
-        let at_s = |lits: &[Term]| -> Vec<Term> {
-            let mut v: Vec<Term> = lits
+        let at_s = |lits: &[Symbol]| -> Vec<Symbol> {
+            let mut v: Vec<Symbol> = lits
                 .iter()
                 .filter(|t| shown(t) && super::tree::step_of(t) == Some(s))
                 .cloned()
@@ -137,8 +139,8 @@ pub fn what_if(
         };
         let old = at_s(&old_lits);
         let now = at_s(&new_lits);
-        let added: Vec<Term> = now.iter().filter(|t| !old.contains(t)).cloned().collect();
-        let removed: Vec<Term> = old.iter().filter(|t| !now.contains(t)).cloned().collect();
+        let added: Vec<Symbol> = now.iter().filter(|t| !old.contains(t)).cloned().collect();
+        let removed: Vec<Symbol> = old.iter().filter(|t| !now.contains(t)).cloned().collect();
         if added.is_empty() && removed.is_empty() && s < last {
             continue;
         }
@@ -183,9 +185,9 @@ pub fn what_if(
 #[derive(Clone, Debug)]
 enum Hyp {
     /// A goal literal (a fluent).
-    Goal(Term),
+    Goal(Symbol),
     /// An initial-state fact (`holds(f, 0)` or `hpd`/`obs`), with its statement text.
-    Observation(Term),
+    Observation(Symbol),
     /// A `never` constraint: its label and one-line text.
     Constraint(String),
 }
@@ -199,7 +201,7 @@ const HYP: &str = "lucent_hyp";
 pub fn why_no_plan(
     problem: &Problem,
     lexicon: &Lexicon,
-    goal: &[Term],
+    goal: &[Symbol],
     horizon: usize,
 ) -> Result<Answer, HistoryError> {
     let v = Verbalizer::new(lexicon);
@@ -336,7 +338,9 @@ fn gate(program: &mut ast::Program, origins: &[AxiomOrigin], sources: &mut Sourc
         let text = text.trim().trim_end_matches('.').to_string();
         let replaced = match o.kind {
             OriginKind::History if !text.contains(":-") && text.ends_with(", 0)") => {
-                let Ok(t) = Term::parse(&text) else { continue };
+                let Ok(t) = Symbol::parse(&text) else {
+                    continue;
+                };
                 let n = hyps.len();
                 hyps.push(Hyp::Observation(t));
                 format!("{text} :- {HYP}({n}).")
@@ -362,9 +366,9 @@ fn gate(program: &mut ast::Program, origins: &[AxiomOrigin], sources: &mut Sourc
                 for lit in super::history::split_top(body) {
                     let is_fluent = lit.starts_with("holds(") || lit.starts_with("-holds(");
                     let fluent = is_fluent
-                        .then(|| Term::parse(&lit.replace(&format!(", {var})"), ", 0)")).ok())
+                        .then(|| Symbol::parse(&lit.replace(&format!(", {var})"), ", 0)")).ok())
                         .flatten()
-                        .and_then(|t| t.arg(0).cloned().map(|f| (t.is_neg(), f)));
+                        .and_then(|t| t.arg(0).cloned().map(|f| (t.is_negative(), f)));
                     match fluent {
                         Some((neg, f)) => {
                             let n = hyps.len();

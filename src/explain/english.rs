@@ -30,7 +30,8 @@
 use std::fmt;
 
 use super::lexicon::{Lexicon, Token};
-use super::term::Term;
+use super::pattern::{Pattern, SymbolExt};
+use crate::control::Symbol;
 
 /// A request or question, with its literals as structured terms in the program's syntax.
 /// Fluents are given without `holds` and step (`relation(on,pitcher,red_block)`,
@@ -41,28 +42,28 @@ pub enum Question {
     /// A task for the planner: reach a state where all these fluents hold.
     Goal {
         /// The goal fluents (`relation(on,X,Y)`, `in_hand(rob1,X)`).
-        literals: Vec<Term>,
+        literals: Vec<Symbol>,
     },
     /// "Describe the plan."
     DescribePlan,
     /// "Why did you ⟨action⟩ [at step N]?"
     WhyAction {
         /// The action pattern.
-        action: Term,
+        action: Pattern,
         /// The step, if named.
         step: Option<u32>,
     },
     /// "Why did you not ⟨action⟩ [at step N]?"
     WhyNotAction {
         /// The action pattern.
-        action: Term,
+        action: Pattern,
         /// The step, if named.
         step: Option<u32>,
     },
     /// "Why did you believe that ⟨literal⟩ [at step N]?"
     Belief {
         /// The fluent or static literal, possibly classically negated (`-stable(a)`).
-        literal: Term,
+        literal: Symbol,
         /// Whether the literal is a static (no step).
         is_static: bool,
         /// The step, if named.
@@ -71,12 +72,12 @@ pub enum Question {
     /// "Why is there no plan?" or "Why can you not ⟨goal⟩?"
     WhyNoPlan {
         /// The goal fluents named in the question (empty: the current task's goal).
-        goal: Vec<Term>,
+        goal: Vec<Symbol>,
     },
     /// "What if you had ⟨action⟩ [at step N] (instead)?"
     WhatIf {
         /// The action pattern.
-        action: Term,
+        action: Pattern,
         /// The step, if named.
         step: Option<u32>,
     },
@@ -111,18 +112,22 @@ impl Question {
 
 /// The program literal of a fluent literal at a step: `holds(F, I)`, or `-holds(F, I)` when the
 /// fluent is classically negated (`-stable(a)` at 2 is `-holds(stable(a),2)`).
-pub fn holds(fluent: &Term, step: u32) -> Term {
+pub fn holds(fluent: &Symbol, step: u32) -> Symbol {
     let positive = fluent.positive();
-    let mut t = Term::fun("holds", vec![positive, Term::Num(step as i32)]);
-    if fluent.is_neg() {
+    let mut t = Symbol::function("holds", vec![positive, Symbol::Number(step as i32)]);
+    if fluent.is_negative() {
         t = t.complement().expect("holds/2 has a sign");
     }
     t
 }
 
+/// The constant an object phrase that names no object of the scene stands for while the rest
+/// of the question is matched (the question is then not understood, whatever it built).
+const UNRESOLVED: &str = "unresolved_object";
+
 /// The program literal `occurs(A, I)`.
-pub fn occurs(action: &Term, step: u32) -> Term {
-    Term::fun("occurs", vec![action.clone(), Term::Num(step as i32)])
+pub fn occurs(action: &Symbol, step: u32) -> Symbol {
+    Symbol::function("occurs", vec![action.clone(), Symbol::Number(step as i32)])
 }
 
 impl fmt::Display for Question {
@@ -131,9 +136,9 @@ impl fmt::Display for Question {
             Some(n) => n.to_string(),
             None => "?".to_string(),
         };
-        let list = |ts: &[Term]| {
+        let list = |ts: &[Symbol]| {
             ts.iter()
-                .map(Term::to_string)
+                .map(Symbol::to_string)
                 .collect::<Vec<_>>()
                 .join(", ")
         };
@@ -389,7 +394,7 @@ impl<'a> Parser<'a> {
     }
 
     /// Resolves object words to one scene constant.
-    fn resolve(&self, words: &[&Token]) -> Result<Term, NotUnderstood> {
+    fn resolve(&self, words: &[&Token]) -> Result<Symbol, NotUnderstood> {
         let phrase = format!(
             "the {}",
             words
@@ -420,7 +425,7 @@ impl<'a> Parser<'a> {
             if let Some(s) = size {
                 name = format!("{name}_{s}");
             }
-            return Ok(Term::constant(&name));
+            return Ok(Symbol::constant(&name));
         }
         let size_fits = |o: &SceneObject| match (&size, &o.size) {
             (Some(a), Some(b)) => a == b,
@@ -442,7 +447,7 @@ impl<'a> Parser<'a> {
             exact
         };
         match candidates.as_slice() {
-            [one] => Ok(Term::constant(&one.constant)),
+            [one] => Ok(Symbol::constant(&one.constant)),
             [] => Err(NotUnderstood::UnknownObject {
                 phrase,
                 known: self.known_objects(),
@@ -611,7 +616,7 @@ impl Matcher<'_, '_, '_> {
     }
 
     /// relation object -> `relation(S, subject, object)`.
-    fn relation_literal(&mut self, subject: &Term) -> Step<(Term, bool)> {
+    fn relation_literal(&mut self, subject: &Symbol) -> Step<(Symbol, bool)> {
         let lex = self.p.lexicon;
         let name = lex
             .relations
@@ -624,34 +629,34 @@ impl Matcher<'_, '_, '_> {
         self.pos += len;
         let object = self.object()?;
         Some((
-            Term::fun(
+            Symbol::function(
                 "relation",
-                vec![Term::constant(&name), subject.clone(), object],
+                vec![Symbol::constant(&name), subject.clone(), object],
             ),
             false,
         ))
     }
 
     /// A property phrase, with its `{Y}` object and `{N}` number.
-    fn property_literal(&mut self, subject: &Term) -> Step<(Term, bool)> {
+    fn property_literal(&mut self, subject: &Symbol) -> Step<(Symbol, bool)> {
         let lex = self.p.lexicon;
-        let robot = Term::constant(&lex.robot);
+        let robot = Pattern::from(&Symbol::constant(&lex.robot));
         for prop in &lex.properties {
             for phrase in &prop.hear {
                 let found = self.attempt(|m| {
                     let mut bindings = vec![
-                        ("X".to_string(), subject.clone()),
+                        ("X".to_string(), Pattern::from(subject)),
                         ("R".to_string(), robot.clone()),
                     ];
                     for w in phrase {
                         match w.as_str() {
                             "{Y}" => {
                                 let y = m.object()?;
-                                bindings.push(("Y".to_string(), y));
+                                bindings.push(("Y".to_string(), Pattern::from(&y)));
                             }
                             "{N}" => {
                                 let n = m.number()?;
-                                bindings.push(("N".to_string(), Term::Num(n as i32)));
+                                bindings.push(("N".to_string(), Pattern::Num(n as i32)));
                             }
                             w => {
                                 if !m.eat(w) {
@@ -667,8 +672,7 @@ impl Matcher<'_, '_, '_> {
                     step_follows.then_some(bindings)
                 });
                 if let Some(bindings) = found {
-                    let literal = prop.literal.substitute(&bindings);
-                    if literal.is_ground() {
+                    if let Some(literal) = prop.literal.substitute(&bindings).to_symbol() {
                         return Some((literal, prop.is_static));
                     }
                 }
@@ -736,7 +740,7 @@ impl Matcher<'_, '_, '_> {
     }
 
     /// goal ("and" (goal | object on object))*
-    fn goals(&mut self) -> Step<Vec<Term>> {
+    fn goals(&mut self) -> Step<Vec<Symbol>> {
         let mut goals = vec![self.goal()?];
         while self.eat("and") {
             let g = self
@@ -748,33 +752,36 @@ impl Matcher<'_, '_, '_> {
     }
 
     /// A goal: "put X on Y" -> `relation(on,X,Y)`; "pick up X" -> `in_hand(rob1,X)`.
-    fn goal(&mut self) -> Step<Term> {
+    fn goal(&mut self) -> Step<Symbol> {
         let action = self.action()?;
         match action.name()? {
             "putdown" => {
-                let (x, y) = (action.arg(1)?, action.arg(2)?);
-                if !y.is_ground() {
-                    return None;
-                }
-                Some(Term::fun(
+                let (x, y) = (action.arg(1)?.to_symbol()?, action.arg(2)?.to_symbol()?);
+                Some(Symbol::function(
                     "relation",
-                    vec![Term::constant("on"), x.clone(), y.clone()],
+                    vec![Symbol::constant("on"), x, y],
                 ))
             }
-            "pickup" => Some(Term::fun(
+            "pickup" => Some(Symbol::function(
                 "in_hand",
-                vec![Term::constant(&self.lex().robot), action.arg(1)?.clone()],
+                vec![
+                    Symbol::constant(&self.lex().robot),
+                    action.arg(1)?.to_symbol()?,
+                ],
             )),
             _ => None,
         }
     }
 
     /// "X on Y" after "and" in a goal list.
-    fn placement(&mut self) -> Step<Term> {
+    fn placement(&mut self) -> Step<Symbol> {
         let x = self.object()?;
         self.on_phrase()?;
         let y = self.object()?;
-        Some(Term::fun("relation", vec![Term::constant("on"), x, y]))
+        Some(Symbol::function(
+            "relation",
+            vec![Symbol::constant("on"), x, y],
+        ))
     }
 
     /// A phrase of the relation `on` ("on", "on top of").
@@ -790,7 +797,7 @@ impl Matcher<'_, '_, '_> {
     }
 
     /// verb [particle] object [particle] [on-phrase object], over the lexicon's verbs.
-    fn action(&mut self) -> Step<Term> {
+    fn action(&mut self) -> Step<Pattern> {
         let lex = self.p.lexicon;
         for verb in &lex.verbs {
             let found = self.attempt(|m| {
@@ -805,22 +812,23 @@ impl Matcher<'_, '_, '_> {
                 particle(m);
                 let x = m.object()?;
                 particle(m);
-                let wants_target = verb
-                    .action
-                    .args()
-                    .iter()
-                    .any(|a| *a == Term::Var("Y".into()));
+                let wants_target = verb.action.args().iter().any(|a| a.is_var("Y"));
                 let mut bindings = vec![
-                    ("R".to_string(), Term::constant(&lex.robot)),
-                    ("X".to_string(), x),
+                    (
+                        "R".to_string(),
+                        Pattern::from(&Symbol::constant(&lex.robot)),
+                    ),
+                    ("X".to_string(), Pattern::from(&x)),
                 ];
                 if wants_target {
+                    // A target that is not named stays a variable: "why did you not put the
+                    // white block down" asks about every target.
                     let y = m
                         .attempt(|m| {
                             m.on_phrase()?;
                             m.object()
                         })
-                        .unwrap_or_else(|| Term::Var("_".into()));
+                        .map_or_else(|| Pattern::Var("_".into()), |y| Pattern::from(&y));
                     bindings.push(("Y".to_string(), y));
                 }
                 Some(verb.action.substitute(&bindings))
@@ -835,7 +843,7 @@ impl Matcher<'_, '_, '_> {
     /// ["the"|"a"|"an"|"your"|"my"] object-word+, resolved against the scene. A phrase that
     /// does not resolve records the error (the first one) and still matches, so the question's
     /// shape is recognized and the reply can name the object.
-    fn object(&mut self) -> Step<Term> {
+    fn object(&mut self) -> Step<Symbol> {
         for det in ["the", "a", "an", "your", "my"] {
             if self.eat(det) {
                 break;
@@ -860,7 +868,8 @@ impl Matcher<'_, '_, '_> {
                 if self.error.is_none() {
                     self.error = Some(e);
                 }
-                Some(Term::Var("_".into()))
+                // A stand-in: with the error recorded, the parse fails whatever it builds.
+                Some(Symbol::constant(UNRESOLVED))
             }
         }
     }

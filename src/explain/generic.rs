@@ -11,11 +11,11 @@
 
 use super::build::{BuildConfig, Builder};
 use super::questions::{Answer, AnswerError};
-use super::term::Term;
 use super::tree::{recheck, Kind, NodeId, Oracle, ProofTree};
+use crate::control::Symbol;
 
 /// Explains why `atom` holds (or, if it does not, why not) in the oracle's answer set.
-pub fn why(oracle: &dyn Oracle, atom: &Term) -> Result<Answer, AnswerError> {
+pub fn why(oracle: &dyn Oracle, atom: &Symbol) -> Result<Answer, AnswerError> {
     let tree = Builder::new(oracle, BuildConfig::default()).build(atom);
     recheck(&tree, oracle)?;
     let holds = oracle.holds(atom);
@@ -45,7 +45,7 @@ pub fn why(oracle: &dyn Oracle, atom: &Term) -> Result<Answer, AnswerError> {
 }
 
 /// Explains why `atom` does not hold (or, if it does, says so and explains why it does).
-pub fn why_not(oracle: &dyn Oracle, atom: &Term) -> Result<Answer, AnswerError> {
+pub fn why_not(oracle: &dyn Oracle, atom: &Symbol) -> Result<Answer, AnswerError> {
     if oracle.holds(atom) {
         let mut a = why(oracle, atom)?;
         a.kind = "why_not";
@@ -57,7 +57,11 @@ pub fn why_not(oracle: &dyn Oracle, atom: &Term) -> Result<Answer, AnswerError> 
     why_not_text(oracle, atom, tree)
 }
 
-fn why_not_text(oracle: &dyn Oracle, atom: &Term, tree: ProofTree) -> Result<Answer, AnswerError> {
+fn why_not_text(
+    oracle: &dyn Oracle,
+    atom: &Symbol,
+    tree: ProofTree,
+) -> Result<Answer, AnswerError> {
     let mut text = format!("{atom} does not hold.");
     let mut literals = Vec::new();
     let rules = oracle.rules_for(atom);
@@ -96,8 +100,8 @@ fn proof(
     id: NodeId,
     depth: usize,
     out: &mut String,
-    leaves: &mut Vec<Term>,
-    seen: &mut Vec<Term>,
+    leaves: &mut Vec<Symbol>,
+    seen: &mut Vec<Symbol>,
 ) {
     let n = tree.node(id);
     let pad = "  ".repeat(depth);

@@ -31,10 +31,11 @@ use std::collections::HashSet;
 use super::build::Builder;
 use super::english::{holds, occurs, Question};
 use super::lexicon::Lexicon;
+use super::pattern::{Pattern, SymbolExt};
 use super::questions::{answer, Mode, Scenario, Session};
-use super::term::Term;
 use super::tree::{recheck, BodyLiteral, Kind, NodeId, Oracle, ProofTree};
 use crate::base::rng::SplitMix64;
+use crate::control::Symbol;
 
 /// A family of scenes (DOMAIN.md 1.6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -121,15 +122,20 @@ pub enum Goal {
 
 impl Goal {
     /// The goal fluent in the program's syntax (`relation(on,a,b)`, `in_hand(rob1,a)`).
-    pub fn fluent(&self) -> Term {
+    pub fn fluent(&self) -> Symbol {
         match self {
-            Goal::On(x, y) => Term::fun(
+            Goal::On(x, y) => Symbol::function(
                 "relation",
-                vec![Term::constant("on"), Term::constant(x), Term::constant(y)],
+                vec![
+                    Symbol::constant("on"),
+                    Symbol::constant(x),
+                    Symbol::constant(y),
+                ],
             ),
-            Goal::InHand(x) => {
-                Term::fun("in_hand", vec![Term::constant("rob1"), Term::constant(x)])
-            }
+            Goal::InHand(x) => Symbol::function(
+                "in_hand",
+                vec![Symbol::constant("rob1"), Symbol::constant(x)],
+            ),
         }
     }
 }
@@ -477,7 +483,7 @@ pub fn check_tree(tree: &ProofTree, oracle: &dyn Oracle) -> Result<TreeCounts, S
         }
     }
     // Paths: walked from every root, each literal at most once per path.
-    let mut stack: Vec<(NodeId, Vec<(Term, bool)>)> =
+    let mut stack: Vec<(NodeId, Vec<(Symbol, bool)>)> =
         tree.roots.iter().map(|r| (*r, Vec::new())).collect();
     let mut walked = 0usize;
     while let Some((id, mut path)) = stack.pop() {
@@ -523,7 +529,7 @@ pub fn check_tree(tree: &ProofTree, oracle: &dyn Oracle) -> Result<TreeCounts, S
 }
 
 /// The distinct literals of a tree (for reports).
-pub fn literals(tree: &ProofTree) -> HashSet<Term> {
+pub fn literals(tree: &ProofTree) -> HashSet<Symbol> {
     tree.nodes.iter().map(|n| n.literal.clone()).collect()
 }
 
@@ -538,6 +544,9 @@ pub struct TrialReport {
     pub counts: TreeCounts,
     /// Each failure: the literal or question, and what failed.
     pub failures: Vec<String>,
+    /// The questions asked, in order (the first four are DOMAIN.md 7.5's: the plan, why X,
+    /// why not X with one argument changed, a related belief; H4 asks them again elsewhere).
+    pub asked: Vec<Question>,
 }
 
 impl TrialReport {
@@ -565,6 +574,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
     let mut session = Session::default();
     let ask = |report: &mut TrialReport, q: Question, session: &mut Session| {
         report.questions += 1;
+        report.asked.push(q.clone());
         match answer(scn, &lexicon, &q, Mode::Full, session) {
             Ok(a) => {
                 if let Some(t) = &a.tree {
@@ -579,7 +589,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
         }
     };
     ask(&mut report, Question::DescribePlan, &mut session);
-    let tree_of = |report: &mut TrialReport, lit: &Term| {
+    let tree_of = |report: &mut TrialReport, lit: &Symbol| {
         let tree = Builder::new(oracle, scn.build.clone()).build(lit);
         report.check(&lit.to_string(), &tree, oracle);
     };
@@ -595,7 +605,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
     let why = ask(
         &mut report,
         Question::WhyAction {
-            action: action.clone(),
+            action: Pattern::from(&action),
             step: Some(step),
         },
         &mut session,
@@ -608,18 +618,18 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
         }
     }
     // Why not: one argument of X changed (the object, or the target of a putdown).
-    let objects: Vec<Term> = objects
+    let objects: Vec<Symbol> = objects
         .iter()
         .filter(|o| o.as_str() != "table")
-        .map(|o| Term::constant(o))
+        .map(Symbol::constant)
         .collect();
     let mut changed = action.clone();
-    if let Term::Fun { args, .. } = &mut changed {
+    if let Symbol::Function { args, .. } = &mut changed {
         let k = 1 + rng.below(args.len().saturating_sub(1).max(1) as u64) as usize;
         if k < args.len() {
-            let mut choices: Vec<Term> = objects.clone();
+            let mut choices: Vec<Symbol> = objects.clone();
             if k == 2 {
-                choices.push(Term::constant("table"));
+                choices.push(Symbol::constant("table"));
             }
             choices.retain(|c| *c != args[k] && Some(c) != args.get(3 - k));
             if !choices.is_empty() {
@@ -630,7 +640,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
     let why_not = ask(
         &mut report,
         Question::WhyNotAction {
-            action: changed.clone(),
+            action: Pattern::from(&changed),
             step: Some(step),
         },
         &mut session,
@@ -653,9 +663,9 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
             })
         });
     if let Some(lit) = related {
-        let (fluent, at) = (lit.arg(0).cloned(), lit.arg(1).and_then(Term::num));
+        let (fluent, at) = (lit.arg(0).cloned(), lit.arg(1).and_then(Symbol::as_number));
         if let (Some(f), Some(at)) = (fluent, at) {
-            let f = if lit.is_neg() {
+            let f = if lit.is_negative() {
                 f.complement().unwrap_or(f)
             } else {
                 f
@@ -673,7 +683,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
     }
     // More beliefs about the chosen action's objects at every step: where each stood (the
     // relations that hold with it first), whether it was held, and a relation that did not hold.
-    let robot = Term::constant("rob1");
+    let robot = Symbol::constant("rob1");
     for obj in action.args().iter().skip(1) {
         if obj.name() == Some("table") {
             continue;
@@ -682,7 +692,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
             let mut found = false;
             for place in objects
                 .iter()
-                .chain(std::iter::once(&Term::constant("table")))
+                .chain(std::iter::once(&Symbol::constant("table")))
             {
                 let on = holds(&relation("on", obj, place), i);
                 if oracle.holds(&on) {
@@ -692,7 +702,10 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
                     tree_of(&mut report, &on);
                 }
             }
-            let held = holds(&Term::fun("in_hand", vec![robot.clone(), obj.clone()]), i);
+            let held = holds(
+                &Symbol::function("in_hand", vec![robot.clone(), obj.clone()]),
+                i,
+            );
             let lit = if oracle.holds(&held) {
                 held
             } else {
@@ -703,7 +716,7 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
             }
             for n in 1..=6 {
                 let th = holds(
-                    &Term::fun("tower_height", vec![obj.clone(), Term::Num(n)]),
+                    &Symbol::function("tower_height", vec![obj.clone(), Symbol::Number(n)]),
                     i,
                 );
                 if oracle.holds(&th) {
@@ -718,6 +731,6 @@ pub fn check_history(scn: &Scenario<'_>, objects: &[String], seed: u64) -> Trial
 }
 
 /// `relation(s, a, b)`.
-fn relation(s: &str, a: &Term, b: &Term) -> Term {
-    Term::fun("relation", vec![Term::constant(s), a.clone(), b.clone()])
+fn relation(s: &str, a: &Symbol, b: &Symbol) -> Symbol {
+    Symbol::function("relation", vec![Symbol::constant(s), a.clone(), b.clone()])
 }

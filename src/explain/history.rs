@@ -11,9 +11,9 @@
 //! (an action that is not executable, an inconsistent scene) is [`HistoryError::Inconsistent`],
 //! never a panic.
 
-use super::oracle::{symbol_of, term_of, Labels, ProgramOracle};
+use super::oracle::{Labels, ProgramOracle};
+use super::pattern::SymbolExt;
 use super::questions::Scenario;
-use super::term::Term;
 use crate::action::{self, ast::Description, ast::StatementKind, ast::Value, Options};
 use crate::action::{AxiomOrigin, OriginKind};
 use crate::base::{Diagnostics, SourceMap};
@@ -60,9 +60,9 @@ pub struct History {
     /// The ground program with provenance and the answer set.
     pub oracle: ProgramOracle,
     /// The actions with their steps.
-    pub plan: Vec<(u32, Term)>,
+    pub plan: Vec<(u32, Symbol)>,
     /// The goal fluents (`relation(on,pitcher,red_block)`), from the description's `goal`.
-    pub goal: Vec<Term>,
+    pub goal: Vec<Symbol>,
     /// The last step (the number of actions).
     pub last_step: u32,
 }
@@ -84,7 +84,7 @@ impl History {
         let mut out: Vec<String> = Vec::new();
         for lit in self.oracle.true_literals() {
             if let Some("has_size" | "has_surface" | "object") = lit.name() {
-                if let Some(Term::Fun { name, args, .. }) = lit.arg(0) {
+                if let Some(Symbol::Function { name, args, .. }) = lit.arg(0) {
                     if args.is_empty() && !out.contains(name) {
                         out.push(name.clone());
                     }
@@ -97,14 +97,14 @@ impl History {
 }
 
 /// The goal fluents of a description: the literals of its `goal` statements.
-pub fn goal_of(desc: &Description) -> Vec<Term> {
+pub fn goal_of(desc: &Description) -> Vec<Symbol> {
     let mut out = Vec::new();
     for s in &desc.statements {
         if let StatementKind::Goal { .. } = &s.kind {
             let text = action::translate::show_statement(&s.kind);
             let text = text.strip_prefix("goal ").unwrap_or(&text);
             for part in split_top(text) {
-                if let Ok(t) = Term::parse(&part) {
+                if let Ok(t) = Symbol::parse(&part) {
                     out.push(t);
                 }
             }
@@ -151,7 +151,7 @@ fn gate_history(
     labels: &mut Labels,
     sources: &mut SourceMap,
 ) {
-    let gate = Term::constant(HISTORY_GATE);
+    let gate = Symbol::constant(HISTORY_GATE);
     for (k, st) in program.statements.iter_mut().enumerate() {
         let Some(o) = origins.get(k) else { continue };
         if o.kind != OriginKind::History {
@@ -192,6 +192,59 @@ fn declares_switch(desc: &Description, name: &str) -> bool {
     desc.statements
         .iter()
         .any(|s| matches!(&s.kind, StatementKind::Switch { name: n, .. } if n.text == name))
+}
+
+/// A run saved by `lucent run` (its `--save-history` file, the JSON `--outf=2` prints) as the
+/// planning problem it started from and the actions it executed: AL_d scene text (the movable
+/// objects as `sort movable`, the statics as facts, what was perceived at step 0 and not doubted
+/// as `initially` statements, the goal) for a description that provides the domain, and the
+/// executed actions in order. An action the world reported as failed is left out (the robot's
+/// model says what an action does; a failed one did not do it), so the explained steps count
+/// the actions that succeeded. `Err` names what the run lacks.
+pub fn scene_of_run(run: &crate::plan::history::History) -> Result<(String, Vec<Symbol>), String> {
+    let first = run
+        .steps
+        .first()
+        .ok_or("the run has no step: nothing was perceived")?;
+    let mut text = format!(
+        "% The run on {} saved by `lucent run`: step 0 as perceived, the goal.\n\
+         sort movable = {{{}}}.\nsort unknown = {{}}.\n",
+        run.scene,
+        run.objects.join(", ")
+    );
+    let parse = |what: &str, t: &str| {
+        Symbol::parse(t).map_err(|e| format!("the run's {what} `{t}` is not a ground term: {e}"))
+    };
+    for st in &run.statics {
+        text.push_str(&format!("{}.\n", parse("static", st)?));
+    }
+    let mut seen = Vec::new();
+    for o in first.observed.iter().filter(|o| o.value) {
+        if first.doubted.contains(&o.fluent) || seen.contains(&o.fluent) {
+            continue;
+        }
+        seen.push(o.fluent.clone());
+        text.push_str(&format!(
+            "initially {}.\n",
+            parse("observation", &o.fluent)?
+        ));
+    }
+    if !run.goal.is_empty() {
+        let goal: Vec<String> = run
+            .goal
+            .iter()
+            .map(|g| parse("goal", g).map(|s| s.to_string()))
+            .collect::<Result<_, _>>()?;
+        text.push_str(&format!("goal {}.\n", goal.join(", ")));
+    }
+    let actions = run
+        .steps
+        .iter()
+        .filter(|s| s.failure.is_none())
+        .filter_map(|s| s.happened.as_deref())
+        .map(|a| parse("action", a))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok((text, actions))
 }
 
 /// The history of `desc` with `actions` (one per step, from step 0) executed, explained.
@@ -278,7 +331,7 @@ pub fn explain_history(
         plan: actions
             .iter()
             .enumerate()
-            .map(|(i, a)| (i as u32, term_of(a)))
+            .map(|(i, a)| (i as u32, a.clone()))
             .collect(),
         goal: goal_of(&desc),
         last_step: actions.len() as u32,
@@ -299,9 +352,8 @@ pub fn parse_actions(text: &str) -> Result<Vec<Symbol>, String> {
             Some((a, s)) => (a.trim(), Some(s.trim())),
             None => (part, None),
         };
-        let sym = Term::parse(a)
+        let sym = Symbol::parse(a)
             .ok()
-            .and_then(|t| symbol_of(&t))
             .ok_or_else(|| format!("`{part}` is not an action term"))?;
         if let Some(s) = step {
             match s.parse::<usize>() {

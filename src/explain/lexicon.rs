@@ -6,14 +6,14 @@
 //! same pipeline questions go through (lower case, contractions expanded, number words read,
 //! lemmas, then synonyms), so data may be written in plain English ("what was your plan"
 //! matches "What's your plan?" as "what be your plan"); every literal and action pattern has
-//! been parsed as a [`Term`]; no English phrase is written in code apart from the grammar's
+//! been parsed as a [`Pattern`]; no English phrase is written in code apart from the grammar's
 //! function words ([`GRAMMAR_WORDS`]) and the tense forms of the template verbs.
 
 use std::collections::{HashMap, HashSet};
 
 use serde::Deserialize;
 
-use super::term::Term;
+use super::pattern::{Pattern, PatternError};
 
 /// The function words the grammar of `explain::english` itself uses; they are known words even
 /// when no lexicon phrase contains them.
@@ -131,7 +131,7 @@ pub enum LexiconError {
         /// The pattern's text.
         text: String,
         /// Why it could not be read.
-        error: super::term::TermError,
+        error: PatternError,
     },
     /// An entry is inconsistent (a template without its placeholder, an empty phrase).
     #[error("lexicon: {0}")]
@@ -153,7 +153,7 @@ pub struct Token {
 #[derive(Clone, Debug)]
 pub struct Verb {
     /// The action pattern over `R` (the robot), `X` (the object) and `Y` (the target).
-    pub action: Term,
+    pub action: Pattern,
     /// The normalized verb ("pick", "put").
     pub verb: String,
     /// The optional particle ("up", "down").
@@ -180,7 +180,7 @@ pub struct Relation {
 pub struct Property {
     /// The literal pattern over `X` (subject), `Y` (second object), `N` (number), `R` (robot);
     /// classically negated for properties heard positively of a negative literal ("unstable").
-    pub literal: Term,
+    pub literal: Pattern,
     /// Whether the literal is a static (no step, said in the present tense).
     pub is_static: bool,
     /// Normalized phrases, longest first; `{Y}` and `{N}` are words of their own.
@@ -316,7 +316,7 @@ impl Lexicon {
         lex.colours = file.colours.iter().map(|w| lex.word(w)).collect();
         lex.sizes = file.sizes.iter().map(|w| lex.word(w)).collect();
         for v in &file.verbs {
-            let action = Term::parse(&v.action).map_err(|error| LexiconError::Term {
+            let action = Pattern::parse(&v.action).map_err(|error| LexiconError::Term {
                 what: "action",
                 text: v.action.clone(),
                 error,
@@ -344,7 +344,7 @@ impl Lexicon {
             });
         }
         for p in &file.properties {
-            let literal = Term::parse(&p.literal).map_err(|error| LexiconError::Term {
+            let literal = Pattern::parse(&p.literal).map_err(|error| LexiconError::Term {
                 what: "literal",
                 text: p.literal.clone(),
                 error,

@@ -3,7 +3,9 @@
 //! that produced them.
 //!
 //! Parts, in dependency order:
-//! - [`term`]: structured ground terms and patterns (the explainer's view of atoms);
+//! - [`pattern`]: terms with variables (the lexicon's entries, a question's action whose
+//!   target was not named) and the literal helpers on `control::Symbol`, the one form of
+//!   ground data here (atoms cross the front door as structured symbols, never as text);
 //! - [`lexicon`]: the controlled vocabulary, data read from `domains/ra/lexicon.json`;
 //! - [`english`]: questions in controlled English parsed into a [`english::Question`];
 //! - [`verbalize`]: literals, actions and the answer templates of DOMAIN.md 6.7 in English;
@@ -26,7 +28,7 @@
 //! in); user input (questions) never panics, it is answered by a reply that says what was not
 //! understood.
 
-pub mod term;
+pub mod pattern;
 pub mod lexicon;
 pub mod english;
 pub mod verbalize;

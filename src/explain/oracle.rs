@@ -24,7 +24,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::term::Term;
+use super::pattern::SymbolExt;
 use super::tree::{AxiomKind, BodyLiteral, Oracle, RuleInstance};
 use crate::action::{AxiomOrigin, OriginKind};
 use crate::control::{Control, Symbol};
@@ -40,7 +40,7 @@ pub struct Labels {
     pub by_statement: Vec<(String, AxiomKind)>,
     /// Body atoms the caller added to its program and that proofs do not show (the gate of
     /// the history's facts, see `explain::history`).
-    pub hidden: Vec<Term>,
+    pub hidden: Vec<Symbol>,
 }
 
 impl Labels {
@@ -153,57 +153,24 @@ pub struct ProgramOracle {
     ctl: Control,
     model: solve::Model,
     labels: Labels,
-    /// Term of each aspif atom (index = atom); auxiliary atoms get `#aux(N)`.
-    atom_term: Vec<Option<Term>>,
+    /// Symbol of each aspif atom (index = atom); auxiliary atoms get `#aux(N)`.
+    atom_term: Vec<Option<Symbol>>,
     /// Aspif atom of each term.
-    term_atom: HashMap<Term, u32>,
-    /// Term of each grounder atom (index = g - 1); `None` for auxiliaries.
-    g_term: Vec<Option<Term>>,
+    term_atom: HashMap<Symbol, u32>,
+    /// Symbol of each grounder atom (index = g - 1); `None` for auxiliaries.
+    g_term: Vec<Option<Symbol>>,
     /// Grounder atom of each term.
-    term_g: HashMap<Term, GAtom>,
+    term_g: HashMap<Symbol, GAtom>,
     /// Rule instances by head term.
-    heads: HashMap<Term, Vec<Source>>,
+    heads: HashMap<Symbol, Vec<Source>>,
     /// The application atom of each CR rule (by rule index).
     cr_appl: HashMap<u32, u32>,
     /// The labels of the applied CR rules.
     applied_labels: Vec<Symbol>,
 }
 
-/// The term of a symbol.
-pub fn term_of(s: &Symbol) -> Term {
-    match s {
-        Symbol::Number(n) => Term::Num(*n),
-        Symbol::String(t) => Term::Str(t.clone()),
-        Symbol::Function {
-            name,
-            args,
-            negative,
-        } => Term::Fun {
-            name: name.clone(),
-            args: args.iter().map(term_of).collect(),
-            neg: *negative,
-        },
-        Symbol::Inf => Term::constant("#inf"),
-        Symbol::Sup => Term::constant("#sup"),
-    }
-}
-
-/// The symbol of a ground term (`None` for a pattern with variables).
-pub fn symbol_of(t: &Term) -> Option<Symbol> {
-    Some(match t {
-        Term::Num(n) => Symbol::Number(*n),
-        Term::Str(s) => Symbol::String(s.clone()),
-        Term::Fun { name, args, neg } => Symbol::Function {
-            name: name.clone(),
-            args: args.iter().map(symbol_of).collect::<Option<Vec<_>>>()?,
-            negative: *neg,
-        },
-        Term::Var(_) => return None,
-    })
-}
-
-fn aux_term(atom: u32) -> Term {
-    Term::fun("#aux", vec![Term::Num(atom as i32)])
+fn aux_term(atom: u32) -> Symbol {
+    Symbol::function("#aux", vec![Symbol::Number(atom as i32)])
 }
 
 impl ProgramOracle {
@@ -216,10 +183,10 @@ impl ProgramOracle {
             return Err(OracleError::NoProvenance);
         }
         let num_atoms = prog.num_atoms.max(ctl.num_atoms()) as usize;
-        let mut atom_term: Vec<Option<Term>> = vec![None; num_atoms + 1];
+        let mut atom_term: Vec<Option<Symbol>> = vec![None; num_atoms + 1];
         let mut term_atom = HashMap::new();
         for a in ctl.symbolic_atoms() {
-            let t = term_of(&a.symbol);
+            let t = a.symbol.clone();
             if let Some(slot) = atom_term.get_mut(a.atom as usize) {
                 *slot = Some(t.clone());
             }
@@ -231,14 +198,14 @@ impl ProgramOracle {
             let t = prov
                 .atom(g)
                 .and_then(|r| r.sym)
-                .map(|s| term_of(&ctl.symbol_of_id(s)));
+                .map(|s| ctl.symbol_of_id(s));
             if let Some(t) = &t {
                 term_g.insert(t.clone(), g);
             }
             g_term.push(t);
         }
         let cr_atoms: HashSet<u32> = prog.cr_rules.iter().map(|c| c.appl).collect();
-        let mut heads: HashMap<Term, Vec<Source>> = HashMap::new();
+        let mut heads: HashMap<Symbol, Vec<Source>> = HashMap::new();
         let mut cr_appl = HashMap::new();
         for (i, r) in prog.rules.iter().enumerate() {
             if r.head.is_empty() {
@@ -316,8 +283,8 @@ impl ProgramOracle {
     }
 
     /// Every true literal with a name (the answer set as terms).
-    pub fn true_literals(&self) -> Vec<Term> {
-        let mut out: Vec<Term> = self
+    pub fn true_literals(&self) -> Vec<Symbol> {
+        let mut out: Vec<Symbol> = self
             .model
             .atoms
             .iter()
@@ -327,7 +294,7 @@ impl ProgramOracle {
         out
     }
 
-    fn g_facts_without_atom(&self) -> impl Iterator<Item = Term> + '_ {
+    fn g_facts_without_atom(&self) -> impl Iterator<Item = Symbol> + '_ {
         let prov = &self.ctl.program().provenance;
         prov.atoms.iter().enumerate().filter_map(|(i, r)| {
             (r.aspif == 0 && r.status == crate::ground::program::AtomStatus::Fact)
@@ -365,7 +332,7 @@ impl ProgramOracle {
         }
     }
 
-    fn instance(&self, head: &Term, src: Source) -> Option<RuleInstance> {
+    fn instance(&self, head: &Symbol, src: Source) -> Option<RuleInstance> {
         let prog = self.ctl.program();
         let prov = &prog.provenance;
         match src {
@@ -480,12 +447,12 @@ impl ProgramOracle {
 }
 
 impl Oracle for ProgramOracle {
-    fn holds(&self, literal: &Term) -> bool {
+    fn holds(&self, literal: &Symbol) -> bool {
         if let Some(&a) = self.term_atom.get(literal) {
             return self.model.holds(a);
         }
         if literal.name() == Some("#aux") {
-            if let Some(n) = literal.arg(0).and_then(Term::num) {
+            if let Some(n) = literal.arg(0).and_then(Symbol::as_number) {
                 return self.model.holds(n as u32);
             }
         }
@@ -500,7 +467,7 @@ impl Oracle for ProgramOracle {
         }
     }
 
-    fn rules_for(&self, head: &Term) -> Vec<RuleInstance> {
+    fn rules_for(&self, head: &Symbol) -> Vec<RuleInstance> {
         let Some(srcs) = self.heads.get(head) else {
             return Vec::new();
         };

@@ -14,9 +14,10 @@
 use super::build::{normalize, origin_alternative, BuildConfig, Builder};
 use super::english::{holds, occurs, Question};
 use super::lexicon::Lexicon;
-use super::term::Term;
+use super::pattern::{Pattern, SymbolExt};
 use super::tree::{recheck, AxiomKind, Kind, NodeId, Oracle, ProofTree, RecheckError};
 use super::verbalize::{Tense, Verbalizer};
+use crate::control::Symbol;
 
 /// How much an answer says.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -33,15 +34,15 @@ pub struct Scenario<'a> {
     /// The ground program (with the explanation-only axioms) and the answer set.
     pub oracle: &'a dyn Oracle,
     /// The plan's actions with their steps.
-    pub plan: Vec<(u32, Term)>,
+    pub plan: Vec<(u32, Symbol)>,
     /// The goal fluents (`relation(on,pitcher,red_block)`).
-    pub goal: Vec<Term>,
+    pub goal: Vec<Symbol>,
     /// The last step of the history.
     pub last_step: u32,
     /// Whether the plan was executed (past tense) or not yet (future tense).
     pub executed: bool,
     /// The robot constant.
-    pub robot: Term,
+    pub robot: Symbol,
     /// Fluent names that are inertial (their beliefs are traced to an origin; the others are
     /// expanded to a frontier of inertial literals and statics).
     pub inertial: Vec<String>,
@@ -54,11 +55,11 @@ impl<'a> Scenario<'a> {
     /// `in_hand`, `partially_occluded`, `absent`, `partially_stable`.
     pub fn ra(
         oracle: &'a dyn Oracle,
-        plan: Vec<(u32, Term)>,
-        goal: Vec<Term>,
+        plan: Vec<(u32, Symbol)>,
+        goal: Vec<Symbol>,
         last_step: u32,
     ) -> Self {
-        let robot = Term::constant("rob1");
+        let robot = Symbol::constant("rob1");
         Scenario {
             oracle,
             plan,
@@ -99,7 +100,7 @@ pub struct Answer {
     /// The English answer.
     pub text: String,
     /// The answer's ground literals in the program's syntax (DOMAIN.md 6.9).
-    pub literals: Vec<Term>,
+    pub literals: Vec<Symbol>,
     /// The proof tree the answer used, with the answer's path.
     pub tree: Option<ProofTree>,
 }
@@ -165,7 +166,7 @@ impl Answering<'_, '_> {
     }
 
     /// A checked proof tree.
-    fn tree(&self, literal: &Term) -> Result<ProofTree, AnswerError> {
+    fn tree(&self, literal: &Symbol) -> Result<ProofTree, AnswerError> {
         let tree = Builder::new(self.scn.oracle, self.scn.build.clone()).build(literal);
         recheck(&tree, self.scn.oracle)?;
         Ok(tree)
@@ -198,13 +199,17 @@ impl Answering<'_, '_> {
 
     /// The missing-step rule: the plan's actions with the same name and first object (the
     /// robot aside) as the pattern; `(step, note)` with a note when there were several.
-    fn missing_step(&self, action: &Term) -> Option<(u32, Option<String>)> {
-        let key = |a: &Term| (a.name().map(str::to_string), object_arg(a).cloned());
+    fn missing_step(&self, action: &Pattern) -> Option<(u32, Option<String>)> {
+        let key = |a: &Symbol| (a.name().map(str::to_string), object_arg(a).cloned());
+        let wanted = (
+            action.name().map(str::to_string),
+            action.arg(1).and_then(Pattern::to_symbol),
+        );
         let mut steps: Vec<u32> = self
             .scn
             .plan
             .iter()
-            .filter(|(_, a)| key(a) == key(action))
+            .filter(|(_, a)| key(a) == wanted)
             .map(|(i, _)| *i)
             .collect();
         steps.sort_unstable();
@@ -220,7 +225,7 @@ impl Answering<'_, '_> {
     }
 
     /// The plan's action at a step matching the pattern.
-    fn planned(&self, action: &Term, step: u32) -> Option<&Term> {
+    fn planned(&self, action: &Pattern, step: u32) -> Option<&Symbol> {
         self.scn.plan.iter().find_map(|(i, a)| {
             let mut b = Vec::new();
             (*i == step && action.matches(a, &mut b)).then_some(a)
@@ -230,7 +235,7 @@ impl Answering<'_, '_> {
     /// DOMAIN.md 6.4.
     fn why(
         &self,
-        action: &Term,
+        action: &Pattern,
         step: Option<u32>,
         session: &mut Session,
     ) -> Result<Answer, AnswerError> {
@@ -244,7 +249,9 @@ impl Answering<'_, '_> {
                         &[
                             (
                                 "action",
-                                &self.v.action(action, super::verbalize::ActionForm::Base),
+                                &self
+                                    .v
+                                    .action_pattern(action, super::verbalize::ActionForm::Base),
                             ),
                             ("step", ""),
                         ],
@@ -263,7 +270,9 @@ impl Answering<'_, '_> {
                 &[
                     (
                         "action",
-                        &self.v.action(action, super::verbalize::ActionForm::Base),
+                        &self
+                            .v
+                            .action_pattern(action, super::verbalize::ActionForm::Base),
                     ),
                     ("step", &self.v.step(i64::from(step))),
                 ],
@@ -273,7 +282,7 @@ impl Answering<'_, '_> {
         // 1-3: for each later action a_j, its executability conditions grounded at `step`;
         // a body fluent literal that holds at `step` and not at `step + 1` is a reason; the
         // furthest a_j wins.
-        let mut best: Option<(u32, Term, Term)> = None;
+        let mut best: Option<(u32, Symbol, Symbol)> = None;
         for (j, later) in &self.scn.plan {
             if *j <= step {
                 continue;
@@ -305,7 +314,7 @@ impl Answering<'_, '_> {
             None => {
                 // 5: the action achieves a goal literal directly.
                 let last = self.scn.last_step;
-                let goal: Vec<Term> = self.scn.goal.iter().map(|g| holds(g, last)).collect();
+                let goal: Vec<Symbol> = self.scn.goal.iter().map(|g| holds(g, last)).collect();
                 (self.v.why_goal(&goal), goal)
             }
         };
@@ -320,7 +329,7 @@ impl Answering<'_, '_> {
     /// DOMAIN.md 6.5.
     fn why_not(
         &self,
-        action: &Term,
+        action: &Pattern,
         step: Option<u32>,
         session: &mut Session,
     ) -> Result<Answer, AnswerError> {
@@ -335,7 +344,7 @@ impl Answering<'_, '_> {
             return Ok(a);
         }
         session.last_step = Some(step);
-        if !action.is_ground() {
+        let Some(action) = action.to_symbol() else {
             // A target that was not named: the planned action at that step, if it matches.
             let Some(a) = self.planned(action, step).cloned() else {
                 return Ok(Self::simple("why_not", self.v.template("no_reason", &[])));
@@ -346,7 +355,8 @@ impl Answering<'_, '_> {
                 literals: vec![occurs(&a, step)],
                 tree: None,
             });
-        }
+        };
+        let action = &action;
         // 6: the action did occur.
         if self.scn.oracle.holds(&occurs(action, step)) {
             return Ok(Answer {
@@ -378,7 +388,7 @@ impl Answering<'_, '_> {
             .collect();
         if conditions.is_empty() {
             // 5: only the action CWA.
-            let objects: Vec<&Term> = action
+            let objects: Vec<&Symbol> = action
                 .args()
                 .iter()
                 .skip(1)
@@ -404,8 +414,8 @@ impl Answering<'_, '_> {
             Mode::Full => conditions.clone(),
         };
         let inner = root.arg(0).cloned();
-        let mut said: Vec<Term> = Vec::new();
-        let mut observed: Option<(Term, u32)> = None;
+        let mut said: Vec<Symbol> = Vec::new();
+        let mut observed: Option<(Symbol, u32)> = None;
         let mut path = vec![chosen[0]];
         for (k, cond) in chosen.iter().enumerate() {
             let node = tree.node(*cond).clone();
@@ -463,7 +473,7 @@ impl Answering<'_, '_> {
     /// DOMAIN.md 6.6.
     fn belief(
         &self,
-        literal: &Term,
+        literal: &Symbol,
         is_static: bool,
         step: Option<u32>,
         session: &mut Session,
@@ -523,9 +533,9 @@ impl Answering<'_, '_> {
         self.explain_belief(&lit, step)
     }
 
-    fn explain_belief(&self, lit: &Term, step: u32) -> Result<Answer, AnswerError> {
+    fn explain_belief(&self, lit: &Symbol, step: u32) -> Result<Answer, AnswerError> {
         let tree = self.tree(lit)?;
-        let fluent_name = lit.arg(0).and_then(Term::name).unwrap_or("");
+        let fluent_name = lit.arg(0).and_then(Symbol::name).unwrap_or("");
         let inertial = self.scn.inertial.iter().any(|n| n == fluent_name);
         let path = tree.path.clone();
         let Some(&leaf) = path.last() else {
@@ -546,7 +556,11 @@ impl Answering<'_, '_> {
             let leaf_node = tree.node(leaf);
             let (text, literals) = match &leaf_node.kind {
                 Kind::Action => {
-                    let action = leaf_node.literal.arg(0).cloned().unwrap_or(Term::Num(0));
+                    let action = leaf_node
+                        .literal
+                        .arg(0)
+                        .cloned()
+                        .unwrap_or(Symbol::Number(0));
                     let j = leaf_node.step.unwrap_or(0);
                     (
                         self.v.belief_action(&action, i64::from(j)),
@@ -598,9 +612,15 @@ impl Answering<'_, '_> {
         })
     }
 
-    fn frontier(&self, tree: &ProofTree, id: NodeId, out: &mut Vec<Term>, seen: &mut Vec<Term>) {
+    fn frontier(
+        &self,
+        tree: &ProofTree,
+        id: NodeId,
+        out: &mut Vec<Symbol>,
+        seen: &mut Vec<Symbol>,
+    ) {
         let n = tree.node(id);
-        let name = n.literal.arg(0).and_then(Term::name).unwrap_or("");
+        let name = n.literal.arg(0).and_then(Symbol::name).unwrap_or("");
         let is_fluent = n.literal.name() == Some("holds");
         let stop =
             !is_fluent || self.scn.inertial.iter().any(|x| x == name) || n.children.is_empty();
@@ -628,26 +648,26 @@ fn is_sort(n: &super::tree::Node) -> bool {
 }
 
 /// The object argument of an action (its second argument: the first is the robot).
-fn object_arg(action: &Term) -> Option<&Term> {
+fn object_arg(action: &Symbol) -> Option<&Symbol> {
     action.arg(1)
 }
 
 /// The same `holds`/`occurs` literal at another step.
-fn at_step(lit: &Term, step: u32) -> Term {
+fn at_step(lit: &Symbol, step: u32) -> Symbol {
     let mut t = lit.clone();
-    if let Term::Fun { args, .. } = &mut t {
+    if let Symbol::Function { args, .. } = &mut t {
         if let Some(last) = args.last_mut() {
-            *last = Term::Num(step as i32);
+            *last = Symbol::Number(step as i32);
         }
     }
     t
 }
 
-fn mentions(t: &Term, c: &Term) -> bool {
+fn mentions(t: &Symbol, c: &Symbol) -> bool {
     t == c || t.args().iter().any(|a| mentions(a, c))
 }
 
-fn contains(t: &Term, inner: &Term) -> bool {
+fn contains(t: &Symbol, inner: &Symbol) -> bool {
     t == inner || t.args().iter().any(|a| contains(a, inner))
 }
 
@@ -718,7 +738,7 @@ impl Answer {
         let mut obj = serde_json::json!({
             "type": self.kind,
             "answer": self.text,
-            "literals": self.literals.iter().map(Term::to_string).collect::<Vec<_>>(),
+            "literals": self.literals.iter().map(Symbol::to_string).collect::<Vec<_>>(),
         });
         if let Some(tree) = &self.tree {
             obj["tree"] = tree_json(tree);
@@ -743,7 +763,7 @@ pub fn tree_json(tree: &ProofTree) -> serde_json::Value {
                 "rule": n.rule.as_ref().map(|r| r.to_string()),
                 "children": n.children.iter().map(|c| c.0).collect::<Vec<_>>(),
                 "blocked": n.blocked.iter().map(|r| r.to_string()).collect::<Vec<_>>(),
-                "no_evidence": n.no_evidence.iter().map(Term::to_string).collect::<Vec<_>>(),
+                "no_evidence": n.no_evidence.iter().map(Symbol::to_string).collect::<Vec<_>>(),
             })
         })
         .collect();

@@ -22,7 +22,7 @@
 
 use std::fmt;
 
-use super::term::Term;
+use crate::control::Symbol;
 
 /// Maximum depth of a tree (DOMAIN.md 6.2).
 pub const MAX_DEPTH: usize = 50;
@@ -94,9 +94,9 @@ impl AxiomKind {
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum BodyLiteral {
     /// A positive literal, true when the body holds.
-    Pos(Term),
+    Pos(Symbol),
     /// A default-negated literal `not l`, false when the body holds.
-    Not(Term),
+    Not(Symbol),
     /// A comparison or other built-in test of the non-ground rule, true in every ground
     /// instance (grounding evaluated it); kept for the answer's wording.
     Test(String),
@@ -112,14 +112,14 @@ pub struct RuleInstance {
     /// The ground rule's number in the ground program, when known.
     pub rule: Option<u32>,
     /// The head literal.
-    pub head: Term,
+    pub head: Symbol,
     /// The body.
     pub body: Vec<BodyLiteral>,
 }
 
 impl RuleInstance {
     /// The positive body literals.
-    pub fn positive(&self) -> impl Iterator<Item = &Term> {
+    pub fn positive(&self) -> impl Iterator<Item = &Symbol> {
         self.body.iter().filter_map(|b| match b {
             BodyLiteral::Pos(t) => Some(t),
             _ => None,
@@ -127,7 +127,7 @@ impl RuleInstance {
     }
 
     /// The default-negated body literals.
-    pub fn negative(&self) -> impl Iterator<Item = &Term> {
+    pub fn negative(&self) -> impl Iterator<Item = &Symbol> {
         self.body.iter().filter_map(|b| match b {
             BodyLiteral::Not(t) => Some(t),
             _ => None,
@@ -204,7 +204,7 @@ impl Kind {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Node {
     /// The ground literal in the program's syntax (`holds(relation(on,a,b),0)`).
-    pub literal: Term,
+    pub literal: Symbol,
     /// The step of the literal (last argument of `holds`/`occurs`), `None` for statics.
     pub step: Option<u32>,
     /// Whether the literal is in the answer set.
@@ -218,12 +218,12 @@ pub struct Node {
     /// For [`Kind::Unsupported`]: the rule each child blocks, parallel to `children`.
     pub blocked: Vec<RuleInstance>,
     /// Default-negated body literals of `rule`, said as "no evidence of …", never expanded.
-    pub no_evidence: Vec<Term>,
+    pub no_evidence: Vec<Symbol>,
 }
 
 impl Node {
     /// A node for a literal that holds, with its support; the step is read off the literal.
-    pub fn supported(literal: Term, kind: Kind, rule: RuleInstance) -> Node {
+    pub fn supported(literal: Symbol, kind: Kind, rule: RuleInstance) -> Node {
         let no_evidence = rule.negative().cloned().collect();
         Node {
             step: step_of(&literal),
@@ -238,7 +238,7 @@ impl Node {
     }
 
     /// A node for a literal that does not hold.
-    pub fn unsupported(literal: Term) -> Node {
+    pub fn unsupported(literal: Symbol) -> Node {
         Node {
             step: step_of(&literal),
             literal,
@@ -253,9 +253,9 @@ impl Node {
 }
 
 /// The step of a program literal: the last argument of `holds/2` and `occurs/2` (either sign).
-pub fn step_of(literal: &Term) -> Option<u32> {
+pub fn step_of(literal: &Symbol) -> Option<u32> {
     match (literal.name(), literal.args()) {
-        (Some("holds" | "occurs"), [_, Term::Num(n)]) if *n >= 0 => Some(*n as u32),
+        (Some("holds" | "occurs"), [_, Symbol::Number(n)]) if *n >= 0 => Some(*n as u32),
         _ => None,
     }
 }
@@ -350,9 +350,9 @@ impl ProofTree {
 /// their own data (the ground rules with provenance, the model's atoms), not from the tree.
 pub trait Oracle {
     /// Whether the ground literal is in the answer set.
-    fn holds(&self, literal: &Term) -> bool;
+    fn holds(&self, literal: &Symbol) -> bool;
     /// The ground program's rule instances with this head (with their labels and kinds).
-    fn rules_for(&self, head: &Term) -> Vec<RuleInstance>;
+    fn rules_for(&self, head: &Symbol) -> Vec<RuleInstance>;
     /// Whether a CR rule instance is applied in the answer set.
     fn applied(&self, rule: &RuleInstance) -> bool;
 }
@@ -477,7 +477,7 @@ fn check_support(tree: &ProofTree, oracle: &dyn Oracle, node: &Node) -> Result<(
     let kind_fits = match &node.kind {
         Kind::Action => {
             matches!(node.literal.name(), Some("occurs"))
-                && !node.literal.is_neg()
+                && !node.literal.is_negative()
                 && matches!(
                     rule.kind,
                     AxiomKind::Fact | AxiomKind::History | AxiomKind::Planning
@@ -605,15 +605,15 @@ pub struct ModelOracle {
     /// The ground rule instances.
     pub rules: Vec<RuleInstance>,
     /// The literals of the answer set.
-    pub model: std::collections::HashSet<Term>,
+    pub model: std::collections::HashSet<Symbol>,
 }
 
 impl Oracle for ModelOracle {
-    fn holds(&self, literal: &Term) -> bool {
+    fn holds(&self, literal: &Symbol) -> bool {
         self.model.contains(literal)
     }
 
-    fn rules_for(&self, head: &Term) -> Vec<RuleInstance> {
+    fn rules_for(&self, head: &Symbol) -> Vec<RuleInstance> {
         self.rules
             .iter()
             .filter(|r| r.head == *head)

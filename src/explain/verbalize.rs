@@ -14,7 +14,8 @@
 
 use super::english::join_and;
 use super::lexicon::Lexicon;
-use super::term::Term;
+use super::pattern::{Pattern, SymbolExt};
+use crate::control::Symbol;
 
 /// The tense of a clause.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -50,13 +51,13 @@ pub struct Verbalizer<'a> {
 enum Said<'t> {
     /// A fluent (from `holds`) or a static, with its sign and step.
     Fluent {
-        fluent: &'t Term,
+        fluent: &'t Symbol,
         negated: bool,
         step: Option<i32>,
         is_static: bool,
     },
     /// An action (from `occurs`), with its sign and step.
-    Action { action: &'t Term, negated: bool },
+    Action { action: &'t Symbol, negated: bool },
 }
 
 impl<'a> Verbalizer<'a> {
@@ -69,11 +70,11 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// A constant in words: "the green can", "the table", "me"; numbers as digits.
-    pub fn object(&self, t: &Term) -> String {
+    pub fn object(&self, t: &Symbol) -> String {
         match t {
-            Term::Num(n) => n.to_string(),
-            Term::Str(s) => s.clone(),
-            Term::Fun { name, args, .. } if args.is_empty() && !name.is_empty() => {
+            Symbol::Number(n) => n.to_string(),
+            Symbol::String(s) => s.clone(),
+            Symbol::Function { name, args, .. } if args.is_empty() && !name.is_empty() => {
                 if let Some(words) = self.lexicon.names.get(name) {
                     return words.clone();
                 }
@@ -99,17 +100,27 @@ impl<'a> Verbalizer<'a> {
 
     /// An action phrase ("picked up the green can"); an action the lexicon has no verb for is
     /// said in the program's syntax.
-    pub fn action(&self, action: &Term, form: ActionForm) -> String {
+    pub fn action(&self, action: &Symbol, form: ActionForm) -> String {
+        self.action_pattern(&Pattern::from(action), form)
+    }
+
+    /// An action pattern as a phrase: a question's action whose target was not named
+    /// (`putdown(rob1,a,_)`) says the variable as it is written.
+    pub fn action_pattern(&self, action: &Pattern, form: ActionForm) -> String {
         for verb in &self.lexicon.verbs {
             let mut bindings = Vec::new();
-            if verb.action.matches(action, &mut bindings) {
+            if verb.action.subsumes(action, &mut bindings) {
                 let template = match form {
                     ActionForm::Past => &verb.past,
                     ActionForm::Base | ActionForm::Future => &verb.base,
                 };
                 let mut out = template.clone();
                 for (var, value) in &bindings {
-                    out = out.replace(&format!("{{{var}}}"), &self.object(value));
+                    let words = match value.to_symbol() {
+                        Some(s) => self.object(&s),
+                        None => value.to_string(),
+                    };
+                    out = out.replace(&format!("{{{var}}}"), &words);
                 }
                 if form == ActionForm::Future {
                     out = format!("will {out}");
@@ -125,18 +136,18 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// Takes the program wrapper off a literal.
-    fn unwrap<'t>(&self, lit: &'t Term) -> Said<'t> {
-        let step = lit.arg(1).and_then(Term::num);
+    fn unwrap<'t>(&self, lit: &'t Symbol) -> Said<'t> {
+        let step = lit.arg(1).and_then(Symbol::as_number);
         match (lit.name(), lit.args().len()) {
             (Some("holds"), 2) => Said::Fluent {
                 fluent: &lit.args()[0],
-                negated: lit.is_neg(),
+                negated: lit.is_negative(),
                 step,
                 is_static: false,
             },
             (Some("occurs"), 2) => Said::Action {
                 action: &lit.args()[0],
-                negated: lit.is_neg(),
+                negated: lit.is_negative(),
             },
             _ => Said::Fluent {
                 fluent: lit,
@@ -150,12 +161,12 @@ impl<'a> Verbalizer<'a> {
     /// A program literal as a clause: `holds(relation(on,a,b),0)` -> "the a was on the b";
     /// `-occurs(pickup(rob1,a),2)` -> "I did not pick up the a"; statics in the present tense.
     /// The step is not said.
-    pub fn clause(&self, lit: &Term, tense: Tense) -> String {
+    pub fn clause(&self, lit: &Symbol, tense: Tense) -> String {
         self.clause_with(lit, tense, None, None)
     }
 
     /// A fluent literal without its `holds` wrapper (`relation(on,a,b)`, `-stable(a)`).
-    pub fn fluent(&self, fluent: &Term, tense: Tense) -> String {
+    pub fn fluent(&self, fluent: &Symbol, tense: Tense) -> String {
         let (template, bindings) = self.fluent_template(fluent, false);
         let tense = if self.is_static(fluent) {
             Tense::Present
@@ -168,7 +179,7 @@ impl<'a> Verbalizer<'a> {
     /// A literal as a small clause without its verb, for "I observed ⟨…⟩": "the green can on
     /// the white block"; a literal whose phrase has no `{be}` becomes "that" plus its past
     /// clause.
-    pub fn bare(&self, lit: &Term) -> String {
+    pub fn bare(&self, lit: &Symbol) -> String {
         match self.unwrap(lit) {
             Said::Fluent {
                 fluent,
@@ -189,7 +200,7 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// Whether a fluent or static term is a static of the lexicon.
-    fn is_static(&self, fluent: &Term) -> bool {
+    fn is_static(&self, fluent: &Symbol) -> bool {
         self.lexicon.properties.iter().any(|p| {
             let mut b = Vec::new();
             p.is_static && p.literal.positive().matches(&fluent.positive(), &mut b)
@@ -197,8 +208,8 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// The clause template of a fluent (sign folded in) and its bindings.
-    fn fluent_template(&self, fluent: &Term, negated: bool) -> (String, Vec<(String, Term)>) {
-        let negated = negated ^ fluent.is_neg();
+    fn fluent_template(&self, fluent: &Symbol, negated: bool) -> (String, Vec<(String, Symbol)>) {
+        let negated = negated ^ fluent.is_negative();
         let positive = fluent.positive();
         if positive.name() == Some("relation") && positive.args().len() == 3 {
             let args = positive.args();
@@ -247,7 +258,7 @@ impl<'a> Verbalizer<'a> {
         let verb = if negated { "{hold_not}" } else { "{hold}" };
         (
             format!("{{X}} {verb}"),
-            vec![("X".to_string(), Term::Str(positive.to_string()))],
+            vec![("X".to_string(), Symbol::String(positive.to_string()))],
         )
     }
 
@@ -257,7 +268,7 @@ impl<'a> Verbalizer<'a> {
     fn fill(
         &self,
         template: &str,
-        bindings: &[(String, Term)],
+        bindings: &[(String, Symbol)],
         tense: Tense,
         subject: Option<&str>,
         last: Option<&str>,
@@ -289,7 +300,7 @@ impl<'a> Verbalizer<'a> {
     /// A program literal as a clause with an optional subject word ("it").
     fn clause_with(
         &self,
-        lit: &Term,
+        lit: &Symbol,
         tense: Tense,
         subject: Option<&str>,
         last: Option<&str>,
@@ -334,8 +345,8 @@ impl<'a> Verbalizer<'a> {
     /// Literals as clauses, merging those that share sign, predicate (the relation for
     /// `relation/3`), first argument and step and differ only in their last object: "the red
     /// block was below the white block and the green can". Order of first appearance.
-    pub fn clauses(&self, lits: &[Term], tense: Tense) -> Vec<String> {
-        let mut groups: Vec<(String, Vec<&Term>)> = Vec::new();
+    pub fn clauses(&self, lits: &[Symbol], tense: Tense) -> Vec<String> {
+        let mut groups: Vec<(String, Vec<&Symbol>)> = Vec::new();
         for lit in lits {
             let key = self.merge_key(lit);
             match groups.iter_mut().find(|(k, _)| *k == key) {
@@ -363,13 +374,13 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// Literals merged and joined: "a", "a and b", "a, b, and c".
-    pub fn join(&self, lits: &[Term], tense: Tense) -> String {
+    pub fn join(&self, lits: &[Symbol], tense: Tense) -> String {
         join_and(&self.clauses(lits, tense))
     }
 
     /// The grouping key of a literal for merging: the literal with its last object argument
     /// blanked; literals without such an argument get a key of their own.
-    fn merge_key(&self, lit: &Term) -> String {
+    fn merge_key(&self, lit: &Symbol) -> String {
         match self.unwrap(lit) {
             Said::Fluent {
                 fluent,
@@ -384,10 +395,10 @@ impl<'a> Verbalizer<'a> {
                 if fluent.args().is_empty() || last.is_none() || last.as_deref() == Some("X") {
                     return lit.to_string();
                 }
-                let mut blank = fluent.clone();
-                if let Term::Fun { args, .. } = &mut blank {
+                let mut blank = Pattern::from(fluent);
+                if let Pattern::Fun { args, .. } = &mut blank {
                     let n = args.len();
-                    args[n - 1] = Term::Var("_".into());
+                    args[n - 1] = Pattern::Var("_".into());
                 }
                 format!("{negated}|{blank}|{step:?}")
             }
@@ -406,8 +417,8 @@ impl<'a> Verbalizer<'a> {
 
     /// A plan: one sentence per action, in step order ("I picked up the green can. I put the
     /// green can on the table."), past tense after execution, future tense before.
-    pub fn plan(&self, actions: &[(u32, Term)], executed: bool) -> String {
-        let mut sorted: Vec<&(u32, Term)> = actions.iter().collect();
+    pub fn plan(&self, actions: &[(u32, Symbol)], executed: bool) -> String {
+        let mut sorted: Vec<&(u32, Symbol)> = actions.iter().collect();
         sorted.sort_by_key(|(step, _)| *step);
         let form = if executed {
             ActionForm::Past
@@ -423,7 +434,7 @@ impl<'a> Verbalizer<'a> {
 
     /// Why-X (DOMAIN.md 6.4): "Because I had to ⟨a_j⟩, and ⟨ℓ⟩." with "it" for ℓ's subject when
     /// it is `a_j`'s object.
-    pub fn why_action(&self, later: &Term, reason: &Term, tense: Tense) -> String {
+    pub fn why_action(&self, later: &Symbol, reason: &Symbol, tense: Tense) -> String {
         let object = later.arg(1);
         let subject = reason_subject(reason);
         let it = (object.is_some() && subject == object).then_some("it");
@@ -438,18 +449,18 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// Why-X when the action achieves a goal literal directly: "Because I had to get ⟨goal⟩."
-    pub fn why_goal(&self, goal: &[Term]) -> String {
+    pub fn why_goal(&self, goal: &[Symbol]) -> String {
         let parts: Vec<String> = goal.iter().map(|g| self.bare(g)).collect();
         self.template("why_goal", &[("goal", &join_and(&parts))])
     }
 
     /// Why-not (DOMAIN.md 6.5): "Because ⟨ℓ1⟩[, and ⟨ℓ2⟩]."
-    pub fn why_not(&self, lits: &[Term], tense: Tense) -> String {
+    pub fn why_not(&self, lits: &[Symbol], tense: Tense) -> String {
         self.template("why_not", &[("literals", &self.join(lits, tense))])
     }
 
     /// Why-not with an observation: "Because I observed ⟨ℓ⟩ at step I."
-    pub fn why_not_observed(&self, lit: &Term, step: i64) -> String {
+    pub fn why_not_observed(&self, lit: &Symbol, step: i64) -> String {
         self.template(
             "why_not_observed",
             &[("literal", &self.bare(lit)), ("step", &self.step(step))],
@@ -457,7 +468,7 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// Why-not fallback: "Because ⟨A⟩ is not related to the goal."
-    pub fn why_not_unrelated(&self, object: &Term) -> String {
+    pub fn why_not_unrelated(&self, object: &Symbol) -> String {
         self.template("why_not_unrelated", &[("object", &self.object(object))])
     }
 
@@ -467,7 +478,7 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// The action did occur: "I did ⟨X⟩ at step I."
-    pub fn did_it(&self, action: &Term, step: i64) -> String {
+    pub fn did_it(&self, action: &Symbol, step: i64) -> String {
         self.template(
             "did_it",
             &[
@@ -478,7 +489,7 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// Belief with an action origin: "Because I ⟨past action⟩ at step J."
-    pub fn belief_action(&self, action: &Term, step: i64) -> String {
+    pub fn belief_action(&self, action: &Symbol, step: i64) -> String {
         self.template(
             "belief_action",
             &[
@@ -489,7 +500,7 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// Belief with an observation origin: "Because I observed ⟨ℓ⟩ at step J."
-    pub fn belief_observed(&self, lit: &Term, step: i64) -> String {
+    pub fn belief_observed(&self, lit: &Symbol, step: i64) -> String {
         self.template(
             "belief_observed",
             &[("literal", &self.bare(lit)), ("step", &self.step(step))],
@@ -502,13 +513,13 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// Belief in a defined fluent: "Because ⟨ℓ1⟩, …, and ⟨ℓk⟩."
-    pub fn belief_frontier(&self, lits: &[Term], tense: Tense) -> String {
+    pub fn belief_frontier(&self, lits: &[Symbol], tense: Tense) -> String {
         self.template("belief_frontier", &[("literals", &self.join(lits, tense))])
     }
 
     /// Belief from an applied CR rule: "Because I assumed that ⟨ℓ⟩, as an exception to the
     /// default that ⟨default⟩; otherwise the goal could not be achieved."
-    pub fn belief_assumed(&self, assumed: &Term, default: &Term, tense: Tense) -> String {
+    pub fn belief_assumed(&self, assumed: &Symbol, default: &Symbol, tense: Tense) -> String {
         self.template(
             "belief_assumed",
             &[
@@ -519,7 +530,7 @@ impl<'a> Verbalizer<'a> {
     }
 
     /// The literal is not in the answer set: "I did not believe that ⟨Y⟩ at step I."
-    pub fn not_believed(&self, lit: &Term, step: i64, tense: Tense) -> String {
+    pub fn not_believed(&self, lit: &Symbol, step: i64, tense: Tense) -> String {
         self.template(
             "not_believed",
             &[
@@ -588,7 +599,7 @@ fn last_placeholder(template: &str) -> Option<String> {
 }
 
 /// The last argument of a literal's fluent (the object a merge lists).
-fn last_object(lit: &Term) -> Option<&Term> {
+fn last_object(lit: &Symbol) -> Option<&Symbol> {
     let fluent = if lit.name() == Some("holds") {
         lit.arg(0)?
     } else {
@@ -599,7 +610,7 @@ fn last_object(lit: &Term) -> Option<&Term> {
 
 /// The subject object of a literal (`A` of `relation(S, A, B)`, `A` of `in_hand(R, A)`, the
 /// first argument otherwise).
-fn reason_subject(lit: &Term) -> Option<&Term> {
+fn reason_subject(lit: &Symbol) -> Option<&Symbol> {
     let fluent = if lit.name() == Some("holds") {
         lit.arg(0)?
     } else {

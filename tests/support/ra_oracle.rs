@@ -4,12 +4,12 @@
 
 use std::collections::HashSet;
 
-use lucent::explain::term::Term;
+use lucent::control::Symbol;
 use lucent::explain::tree::AxiomKind::{self, *};
 use lucent::explain::tree::{BodyLiteral, ModelOracle, RuleInstance};
 
-pub fn t(s: &str) -> Term {
-    Term::parse(s).unwrap()
+pub fn t(s: &str) -> Symbol {
+    Symbol::parse(s).unwrap()
 }
 
 /// Splits at top-level commas.
@@ -91,7 +91,7 @@ pub fn example3() -> ModelOracle {
         rule("SB", StateConstraint, &format!("h(small_base(white_block),4) :- {}, has_size(green_can,small)", above(4))),
         rule("fact", Fact, "has_size(green_can,small)"),
     ];
-    let mut model: HashSet<Term> = HashSet::new();
+    let mut model: HashSet<Symbol> = HashSet::new();
     for r in &rules {
         if matches!(
             r.head.name(),
@@ -123,7 +123,7 @@ pub fn example3() -> ModelOracle {
 /// The execution example of DOMAIN.md 6.8 in small: the rules the paper's questions touch at
 /// steps 0 to 5 (observation of the stack at step 0, E7 and E2 grounded at step 0, E10 for the
 /// mug at step 3), on top of [`example3`]. Plan: the paper's six actions.
-pub fn paper() -> (ModelOracle, Vec<(u32, Term)>) {
+pub fn paper() -> (ModelOracle, Vec<(u32, Symbol)>) {
     let mut o = example3();
     let on0 = "h(relation(on,green_can,white_block),0)";
     let above0 = "h(relation(above,green_can,white_block),0)";
@@ -188,6 +188,6 @@ pub fn paper() -> (ModelOracle, Vec<(u32, Term)>) {
 }
 
 /// The set of terms, for models.
-pub fn terms(lits: &[&str]) -> HashSet<Term> {
+pub fn terms(lits: &[&str]) -> HashSet<Symbol> {
     lits.iter().map(|s| t(s)).collect()
 }

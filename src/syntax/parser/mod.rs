@@ -1,0 +1,821 @@
+//! The parser: tokens to the syntax tree of [`super::ast`], by hand-written recursive descent
+//! with precedence climbing for terms and sort expressions.
+//!
+//! Role: reads the clingo dialect (with CR rules `[label:] head :+ body.`) and SPARC sorted
+//! programs. The grammar it implements is `grammar/asp.ebnf` and `grammar/sparc.ebnf`.
+//!
+//! Invariants:
+//! - Parsing never fails and never panics: every statement either parses or becomes a
+//!   [`StatementKind::Error`] after one diagnostic worded as gringo words it (`syntax error,
+//!   unexpected X[, expecting ...]`); the parser then skips to the `.` that ends the statement
+//!   and goes on.
+//! - Every loop consumes a token per iteration or stops; the statement loop asserts progress.
+//! - Nesting (parentheses, unary operators, operator chains, aggregates) is capped at
+//!   [`MAX_DEPTH`] levels, so hostile input cannot overflow the stack.
+//! - Embedded scripts (`#script`, `@f(...)`) are parsed and kept, and reported once per file
+//!   with a single "unsupported" error.
+//! - Memory is proportional to the input: tokens are produced on demand (one token of
+//!   lookahead beyond the current one), and the tree owns its strings.
+
+use crate::base::{Diagnostic, FileId, Span};
+
+use super::ast::*;
+use super::lexer::{describe, Lexer, Token, TokenKind as T};
+
+mod directives;
+mod literals;
+mod sparc;
+mod terms;
+
+/// Deepest nesting of terms, aggregates and sort expressions the parser accepts. 256 levels
+/// keep the parser, the printer and the span walk well inside a 2 MiB thread stack (the size of
+/// test threads) even in unoptimized builds, where one level costs about 5 KiB of stack.
+pub const MAX_DEPTH: u32 = 256;
+
+/// The message of the single diagnostic reported for embedded scripts.
+pub const UNSUPPORTED_SCRIPT: &str =
+    "embedded scripts (#script, @f(...)) are not supported by lucent";
+
+/// The result of parsing one file: the tree and every diagnostic.
+#[derive(Clone, Debug)]
+pub struct Parse {
+    /// The statements that were read (failed ones as [`StatementKind::Error`]).
+    pub program: Program,
+    /// Lexer and syntax errors, in source order.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+impl Parse {
+    /// True when some diagnostic is an error.
+    pub fn has_errors(&self) -> bool {
+        self.diagnostics.iter().any(|d| d.is_error())
+    }
+}
+
+/// Parses `text` (the contents of `file`) as `dialect`.
+pub fn parse(file: FileId, text: &str, dialect: Dialect) -> Parse {
+    if text.len() >= u32::MAX as usize {
+        return Parse {
+            program: Program {
+                dialect,
+                statements: Vec::new(),
+            },
+            diagnostics: vec![Diagnostic::error(
+                Span::new(file, 0, 0),
+                "input too large: files of 4 GiB or more are not supported",
+            )],
+        };
+    }
+    let mut parser = Parser::new(file, text, dialect);
+    parser.program();
+    Parse {
+        program: Program {
+            dialect,
+            statements: parser.statements,
+        },
+        diagnostics: parser.diags,
+    }
+}
+
+/// Parses `text`, choosing the dialect with [`detect_dialect`].
+pub fn parse_auto(file: FileId, text: &str) -> Parse {
+    parse(file, text, detect_dialect(text))
+}
+
+/// SPARC when the first token after comments and leading `#const` and `#maxint` statements is the section
+/// keyword `sorts`; the clingo dialect otherwise.
+pub fn detect_dialect(text: &str) -> Dialect {
+    let mut lexer = Lexer::new(FileId(0), text, Dialect::Sparc);
+    let mut sink = Vec::new();
+    loop {
+        let tok = lexer.next_token(&mut sink);
+        sink.clear();
+        let word = &text[tok.start as usize..tok.end as usize];
+        match tok.kind {
+            T::Hash if word == "#const" || word == "#maxint" => loop {
+                let t = lexer.next_token(&mut sink);
+                sink.clear();
+                if matches!(t.kind, T::Dot | T::Eof) {
+                    break;
+                }
+            },
+            T::Ident if word == "sorts" => {
+                let next = lexer.next_token(&mut sink);
+                let next_word = &text[next.start as usize..next.end as usize];
+                let sparc = matches!(next.kind, T::Hash | T::Eof)
+                    || (next.kind == T::Ident && next_word == "predicates");
+                return if sparc {
+                    Dialect::Sparc
+                } else {
+                    Dialect::Clingo
+                };
+            }
+            _ => return Dialect::Clingo,
+        }
+    }
+}
+
+/// Marks a statement that failed; its diagnostic has been reported.
+struct Failed;
+
+/// Result of a parsing step.
+type PResult<T> = Result<T, Failed>;
+
+/// Which kind of statement context a literal is parsed in.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Ctx {
+    /// Comparison chains are allowed (bodies and conditions).
+    Chain,
+    /// One comparison at most (heads, display items).
+    Single,
+}
+
+/// The parser state for one file.
+struct Parser<'a> {
+    /// The token source.
+    lexer: Lexer<'a>,
+    /// The text, for token contents.
+    text: &'a str,
+    /// The file spans point into.
+    file: FileId,
+    /// The surface language.
+    dialect: Dialect,
+    /// The current token.
+    tok: Token,
+    /// The token after the current one, once looked at.
+    peeked: Option<Token>,
+    /// End of the last consumed token.
+    prev_end: u32,
+    /// Diagnostics so far.
+    diags: Vec<Diagnostic>,
+    /// Statements so far.
+    statements: Vec<Statement>,
+    /// Current nesting depth.
+    depth: u32,
+    /// True once the unsupported-script diagnostic was reported.
+    script_reported: bool,
+    /// The current SPARC section, if any.
+    section: Option<Section>,
+    /// SPARC sort names defined so far (with `#`): a defined sort may be named like a clingo
+    /// directive (`#program`), and is then read as a sort.
+    sort_names: std::collections::HashSet<String>,
+    /// What gringo lists as expected after the last body element (its LALR states differ by
+    /// the kind of element), used when the closing `.` is missing.
+    body_end: &'static [&'static str],
+}
+
+/// Expected after a body aggregate.
+const AFTER_AGGREGATE: &[&str] = &["\",\"", ".", ";"];
+/// Expected after a comparison or a Boolean constant.
+const AFTER_BUILTIN: &[&str] = &[":", "\",\"", ".", ";"];
+/// Expected after a condition ending in a comparison.
+const AFTER_CONDITION: &[&str] = &[".", ";"];
+
+/// Aggregate function of a token, if it is `#count`, `#sum`, `#sum+`, `#min` or `#max`.
+fn aggregate_function(kind: T, word: &str) -> Option<AggregateFunction> {
+    match (kind, word) {
+        (T::SumPlus, _) => Some(AggregateFunction::SumPlus),
+        (T::Hash, "#count") => Some(AggregateFunction::Count),
+        (T::Hash, "#sum") => Some(AggregateFunction::Sum),
+        (T::Hash, "#min") => Some(AggregateFunction::Min),
+        (T::Hash, "#max") => Some(AggregateFunction::Max),
+        _ => None,
+    }
+}
+
+/// Comparison operator of a token.
+fn cmp_op(kind: T) -> Option<CmpOp> {
+    Some(match kind {
+        T::Eq => CmpOp::Eq,
+        T::Ne => CmpOp::Ne,
+        T::Lt => CmpOp::Lt,
+        T::Le => CmpOp::Le,
+        T::Gt => CmpOp::Gt,
+        T::Ge => CmpOp::Ge,
+        _ => return None,
+    })
+}
+
+/// `#name`s that are clingo keywords rather than SPARC sort names.
+fn is_keyword_hash(word: &str) -> bool {
+    matches!(
+        word,
+        "#count"
+            | "#sum"
+            | "#min"
+            | "#max"
+            | "#true"
+            | "#false"
+            | "#inf"
+            | "#sup"
+            | "#infimum"
+            | "#supremum"
+            | "#const"
+            | "#show"
+            | "#minimize"
+            | "#maximize"
+            | "#minimise"
+            | "#maximise"
+            | "#defined"
+            | "#project"
+            | "#external"
+            | "#heuristic"
+            | "#edge"
+            | "#include"
+            | "#program"
+            | "#script"
+            | "#end"
+            | "#maxint"
+    )
+}
+
+/// The SPARC section named by `word`.
+fn section_of(word: &str) -> Option<Section> {
+    Some(match word {
+        "sorts" => Section::Sorts,
+        "predicates" => Section::Predicates,
+        "rules" => Section::Rules,
+        "display" => Section::Display,
+        _ => return None,
+    })
+}
+
+/// Position of a section in the fixed order of SPARC sections.
+fn section_rank(section: Option<Section>) -> u8 {
+    match section {
+        None => 0,
+        Some(Section::Sorts) => 1,
+        Some(Section::Predicates) => 2,
+        Some(Section::Rules) => 3,
+        Some(Section::Display) => 4,
+    }
+}
+
+/// The symbolic atom a term denotes, if it has the shape of one: `p`, `p(...)`, `-p(...)`.
+/// Takes the term by value so names and arguments move instead of being copied; a term of
+/// another shape is handed back.
+pub(crate) fn term_to_atom(term: Term) -> Result<SymbolicAtom, Term> {
+    let is_atom = |t: &Term| match &t.kind {
+        TermKind::Constant(_) => true,
+        TermKind::Function { name, .. } => !name.is_empty(),
+        _ => false,
+    };
+    let shaped = match &term.kind {
+        TermKind::Unary {
+            op: UnaryOp::Minus,
+            arg,
+        } => is_atom(arg),
+        _ => is_atom(&term),
+    };
+    if !shaped {
+        return Err(term);
+    }
+    let span = term.span;
+    let (negated, inner) = match term.kind {
+        TermKind::Unary { arg, .. } => (true, *arg),
+        kind => (false, Term { span, kind }),
+    };
+    let (name, args) = match inner.kind {
+        TermKind::Constant(name) => (name, vec![Vec::new()]),
+        TermKind::Function { name, args, .. } => (name, args),
+        _ => unreachable!("checked to be an atom's shape above"),
+    };
+    Ok(SymbolicAtom {
+        span,
+        negated,
+        name,
+        args,
+    })
+}
+
+/// The signature a term denotes, if it has the shape `name/n` or `-name/n`.
+fn term_to_signature(term: &Term) -> Option<Signature> {
+    let TermKind::Binary {
+        op: BinaryOp::Div,
+        lhs,
+        rhs,
+    } = &term.kind
+    else {
+        return None;
+    };
+    let TermKind::Integer(arity) = rhs.kind else {
+        return None;
+    };
+    let (negated, name) = match &lhs.kind {
+        TermKind::Constant(name) => (false, name),
+        TermKind::Unary {
+            op: UnaryOp::Minus,
+            arg,
+        } => match &arg.kind {
+            TermKind::Constant(name) => (true, name),
+            _ => return None,
+        },
+        _ => return None,
+    };
+    Some(Signature {
+        negated,
+        name: name.clone(),
+        arity: u32::try_from(arity).ok()?,
+    })
+}
+
+impl<'a> Parser<'a> {
+    /// A parser at the start of `text`.
+    fn new(file: FileId, text: &'a str, dialect: Dialect) -> Parser<'a> {
+        let mut lexer = Lexer::new(file, text, dialect);
+        let mut diags = Vec::new();
+        let tok = lexer.next_token(&mut diags);
+        Parser {
+            lexer,
+            text,
+            file,
+            dialect,
+            tok,
+            peeked: None,
+            prev_end: 0,
+            diags,
+            statements: Vec::new(),
+            depth: 0,
+            script_reported: false,
+            section: None,
+            sort_names: std::collections::HashSet::new(),
+            body_end: &[],
+        }
+    }
+
+    // ----- token plumbing -----
+
+    /// The text of a token.
+    fn word(&self, tok: Token) -> &'a str {
+        &self.text[tok.start as usize..tok.end as usize]
+    }
+
+    /// The text of the current token.
+    fn cur(&self) -> &'a str {
+        self.word(self.tok)
+    }
+
+    /// A span in this file.
+    fn span(&self, start: u32, end: u32) -> Span {
+        Span::new(self.file, start, end.max(start))
+    }
+
+    /// The span from `start` to the end of the last consumed token.
+    fn span_from(&self, start: u32) -> Span {
+        self.span(start, self.prev_end)
+    }
+
+    /// Consumes the current token and returns it.
+    fn bump(&mut self) -> Token {
+        let tok = self.tok;
+        self.prev_end = tok.end;
+        self.tok = match self.peeked.take() {
+            Some(t) => t,
+            None => self.lexer.next_token(&mut self.diags),
+        };
+        tok
+    }
+
+    /// The token after the current one.
+    fn peek(&mut self) -> Token {
+        if let Some(t) = self.peeked {
+            return t;
+        }
+        let t = self.lexer.next_token(&mut self.diags);
+        self.peeked = Some(t);
+        t
+    }
+
+    /// True when the current token is `kind`.
+    fn at(&self, kind: T) -> bool {
+        self.tok.kind == kind
+    }
+
+    /// Consumes the current token when it is `kind`.
+    fn eat(&mut self, kind: T) -> bool {
+        if self.at(kind) {
+            self.bump();
+            true
+        } else {
+            false
+        }
+    }
+
+    /// Reports `syntax error, unexpected X[, expecting a or b]` at the current token.
+    fn unexpected(&mut self, expecting: &[&str]) -> Failed {
+        let mut msg = format!(
+            "syntax error, unexpected {}",
+            describe(self.tok.kind, self.cur())
+        );
+        if !expecting.is_empty() {
+            msg.push_str(", expecting ");
+            msg.push_str(&expecting.join(" or "));
+        }
+        let span = self.span(self.tok.start, self.tok.end);
+        self.diags.push(Diagnostic::error(span, msg));
+        Failed
+    }
+
+    /// Consumes a token of kind `kind` or reports it missing.
+    fn expect(&mut self, kind: T, expecting: &[&str]) -> PResult<Token> {
+        if self.at(kind) {
+            Ok(self.bump())
+        } else {
+            Err(self.unexpected(expecting))
+        }
+    }
+
+    /// Enters one nesting level; reports when the cap is exceeded.
+    fn enter(&mut self) -> PResult<()> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            let span = self.span(self.tok.start, self.tok.end);
+            self.diags.push(Diagnostic::error(
+                span,
+                format!("syntax error, nesting deeper than {MAX_DEPTH} levels"),
+            ));
+            return Err(Failed);
+        }
+        Ok(())
+    }
+
+    /// Leaves one nesting level.
+    fn leave(&mut self) {
+        self.depth -= 1;
+    }
+
+    /// Reports embedded scripts once per file.
+    fn report_script(&mut self, span: Span) {
+        if !self.script_reported {
+            self.script_reported = true;
+            self.diags.push(Diagnostic::error(span, UNSUPPORTED_SCRIPT));
+        }
+    }
+
+    /// True when the current token is an aggregate function keyword.
+    fn at_aggregate(&self) -> bool {
+        aggregate_function(self.tok.kind, self.cur()).is_some()
+    }
+
+    /// True when the current token is a SPARC sort name `#s`: not a clingo keyword, or a
+    /// sort defined under a keyword's name.
+    fn at_sort_name(&self) -> bool {
+        self.dialect == Dialect::Sparc
+            && self.at(T::Hash)
+            && (!is_keyword_hash(self.cur()) || self.sort_names.contains(self.cur()))
+    }
+
+    /// True when the token can start a term.
+    fn starts_term(&self, tok: Token) -> bool {
+        match tok.kind {
+            T::Ident | T::Variable | T::Anonymous | T::Number | T::String | T::LParen => true,
+            T::Minus | T::Tilde | T::At | T::Bar => true,
+            T::Hash => matches!(self.word(tok), "#inf" | "#sup" | "#infimum" | "#supremum"),
+            _ => false,
+        }
+    }
+
+    /// True when the current token can start a literal (so a condition is not empty).
+    fn starts_literal(&self) -> bool {
+        match self.tok.kind {
+            T::Not => true,
+            T::Bar => false,
+            T::Hash => {
+                matches!(self.cur(), "#true" | "#false") || self.at_sort_name() || {
+                    self.starts_term(self.tok)
+                }
+            }
+            _ => self.starts_term(self.tok),
+        }
+    }
+
+    // ----- statements -----
+
+    /// Parses every statement of the file.
+    fn program(&mut self) {
+        while !self.at(T::Eof) {
+            let start = self.tok.start;
+            let before = self.lexer.pos();
+            self.depth = 0;
+            let kind = match self.statement() {
+                Ok(kind) => kind,
+                Err(Failed) => {
+                    self.recover();
+                    StatementKind::Error
+                }
+            };
+            let span = self.span_from(start);
+            self.statements.push(Statement { span, kind });
+            debug_assert!(
+                self.lexer.pos() > before || self.at(T::Eof),
+                "the parser made no progress"
+            );
+        }
+    }
+
+    /// Skips to just after the next `.` (or to the end of input).
+    fn recover(&mut self) {
+        while !self.at(T::Eof) {
+            if self.bump().kind == T::Dot {
+                return;
+            }
+        }
+    }
+
+    /// One statement.
+    fn statement(&mut self) -> PResult<StatementKind> {
+        if self.dialect == Dialect::Sparc {
+            if let Some(kind) = self.sparc_statement()? {
+                return Ok(kind);
+            }
+        }
+        match self.tok.kind {
+            T::If => {
+                self.bump();
+                let body = self.body()?;
+                self.end_of_body()?;
+                Ok(StatementKind::Rule(Rule {
+                    head: Head::None,
+                    body,
+                    kind: RuleKind::Normal,
+                }))
+            }
+            T::CrIf => {
+                self.bump();
+                let body = self.body()?;
+                self.end_of_body()?;
+                Ok(StatementKind::Rule(Rule {
+                    head: Head::None,
+                    body,
+                    kind: RuleKind::ConsistencyRestoring { label: None },
+                }))
+            }
+            T::WeakIf => self.weak_constraint(),
+            T::Hash => match self.cur() {
+                "#minimize" | "#minimise" => self.optimize(false),
+                "#maximize" | "#maximise" => self.optimize(true),
+                "#show" => self.show(),
+                "#defined" => {
+                    self.bump();
+                    let sig = self.signature()?;
+                    self.expect(T::Dot, &["."])?;
+                    Ok(StatementKind::Defined(sig))
+                }
+                "#project" => self.project(),
+                "#const" => self.const_def(),
+                "#external" => self.external(),
+                "#heuristic" => self.heuristic(),
+                "#edge" => self.edge(),
+                "#include" => self.include(),
+                "#program" => self.program_part(),
+                "#script" => self.script(),
+                "#count" | "#sum" | "#min" | "#max" | "#true" | "#false" | "#inf" | "#sup"
+                | "#infimum" | "#supremum" => self.rule(),
+                _ => Err(self.unexpected(&[])),
+            },
+            _ => self.rule(),
+        }
+    }
+
+    /// SPARC statements that differ from the clingo dialect: section headers, sort
+    /// definitions, predicate declarations and display items. `None` for ordinary statements.
+    fn sparc_statement(&mut self) -> PResult<Option<StatementKind>> {
+        if self.at(T::Ident) {
+            if let Some(section) = section_of(self.cur()) {
+                if section_rank(Some(section)) > section_rank(self.section) {
+                    self.bump();
+                    self.section = Some(section);
+                    return Ok(Some(StatementKind::Section(section)));
+                }
+            }
+        }
+        if self.at(T::Hash) && self.cur() == "#const" {
+            return Ok(None);
+        }
+        if self.at(T::Hash)
+            && self.cur() == "#maxint"
+            && matches!(self.section, None | Some(Section::Sorts))
+        {
+            self.bump();
+            self.expect(T::Eq, &["="])?;
+            let value = self.term()?;
+            self.expect(T::Dot, &["."])?;
+            return Ok(Some(StatementKind::MaxInt(Box::new(value))));
+        }
+        match self.section {
+            Some(Section::Sorts) => self.sort_def().map(Some),
+            Some(Section::Predicates) => self.predicate_decl().map(Some),
+            Some(Section::Rules) if self.at_sort_name() => self.rule().map(Some),
+            Some(Section::Display) => {
+                if self.at_sort_name() && self.peek().kind == T::Dot {
+                    let tok = self.bump();
+                    self.bump();
+                    return Ok(Some(StatementKind::DisplaySort(
+                        self.word(tok)[1..].to_string(),
+                    )));
+                }
+                let mut lits = Vec::with_capacity(1);
+                self.literal(Ctx::Single, &mut lits)?;
+                self.expect(T::Dot, &["."])?;
+                Ok(Some(StatementKind::Display(Box::new(lits.remove(0)))))
+            }
+            None if self.at_sort_name() => self.sort_def().map(Some),
+            _ => Ok(None),
+        }
+    }
+
+    /// A fact, rule or CR rule.
+    fn rule(&mut self) -> PResult<StatementKind> {
+        let (head, first_term) = self.head()?;
+        match self.tok.kind {
+            T::Dot => {
+                self.bump();
+                Ok(StatementKind::Rule(Rule {
+                    head,
+                    body: Vec::new(),
+                    kind: RuleKind::Normal,
+                }))
+            }
+            T::If => {
+                self.bump();
+                let body = self.body()?;
+                self.end_of_body()?;
+                Ok(StatementKind::Rule(Rule {
+                    head,
+                    body,
+                    kind: RuleKind::Normal,
+                }))
+            }
+            T::CrIf => {
+                self.bump();
+                let body = self.body()?;
+                self.end_of_body()?;
+                let (head, label) = split_label(head, first_term);
+                Ok(StatementKind::Rule(Rule {
+                    head,
+                    body,
+                    kind: RuleKind::ConsistencyRestoring {
+                        label: label.map(Box::new),
+                    },
+                }))
+            }
+            _ => {
+                let expecting: &[&str] = match head {
+                    Head::Choice(_) | Head::Aggregate(_) => &[".", ":-"],
+                    _ => &[],
+                };
+                Err(self.unexpected(expecting))
+            }
+        }
+    }
+
+    /// Expects the `.` that ends a body, with gringo's wording when it is missing.
+    fn end_of_body(&mut self) -> PResult<()> {
+        let expecting = self.body_end;
+        self.expect(T::Dot, expecting)?;
+        Ok(())
+    }
+}
+
+/// For a CR rule written `label: head :+ body.`, the head was read as a disjunction whose first
+/// element is `label : head_literal`; this splits the label off. Without that shape the rule has
+/// no label.
+fn split_label(head: Head, first_term: Option<Term>) -> (Head, Option<Term>) {
+    let Head::Disjunction(mut elements) = head else {
+        return (head, None);
+    };
+    // `label : :+ body.`: the label was read as a head literal with an empty condition.
+    let label_only = first_term.is_some()
+        && elements.len() == 1
+        && elements[0].has_colon
+        && elements[0].condition.is_empty()
+        && elements[0].literal.sign == Sign::Positive;
+    if label_only {
+        return (Head::None, first_term);
+    }
+    let splittable = first_term.is_some()
+        && elements.first().is_some_and(|e| {
+            e.has_colon && e.condition.len() == 1 && e.literal.sign == Sign::Positive
+        });
+    if !splittable {
+        return (Head::Disjunction(elements), None);
+    }
+    let first = elements.remove(0);
+    let literal = first.condition.into_iter().next().expect("one literal");
+    let element = ConditionalLiteral {
+        span: literal.span,
+        literal,
+        condition: Vec::new(),
+        has_colon: false,
+    };
+    elements.insert(0, element);
+    (Head::Disjunction(elements), first_term)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ok(text: &str) -> Program {
+        let p = parse(FileId(0), text, Dialect::Clingo);
+        assert!(p.diagnostics.is_empty(), "{text}: {:?}", p.diagnostics);
+        p.program
+    }
+
+    fn first_error(text: &str) -> String {
+        let p = parse(FileId(0), text, Dialect::Clingo);
+        p.diagnostics
+            .first()
+            .map(|d| format!("{}-{}: {}", d.span.start, d.span.end, d.message))
+            .unwrap_or_default()
+    }
+
+    #[test]
+    fn facts_and_rules() {
+        let p = ok("p(1,2). q(X) :- p(X,_), not r(X). :- q(1).");
+        assert_eq!(p.statements.len(), 3);
+    }
+
+    #[test]
+    fn gringo_wording() {
+        assert_eq!(
+            first_error("a b."),
+            "2-3: syntax error, unexpected <IDENTIFIER>"
+        );
+        assert_eq!(
+            first_error("p(1."),
+            "3-4: syntax error, unexpected ., expecting ) or ;"
+        );
+        assert_eq!(first_error("p(\"abc)."), "2-3: lexer error, unexpected \"");
+    }
+
+    #[test]
+    fn cr_rule_with_label() {
+        let p = ok("r(X): p(X) :+ q(X).");
+        let StatementKind::Rule(rule) = &p.statements[0].kind else {
+            panic!("not a rule")
+        };
+        let RuleKind::ConsistencyRestoring { label: Some(label) } = &rule.kind else {
+            panic!("no label")
+        };
+        assert!(matches!(&label.kind, TermKind::Function { name, .. } if name == "r"));
+    }
+
+    #[test]
+    fn recovery_keeps_later_statements() {
+        let p = parse(FileId(0), "a b. c. d(.", Dialect::Clingo);
+        assert_eq!(p.program.statements.len(), 3);
+        assert!(matches!(
+            p.program.statements[1].kind,
+            StatementKind::Rule(_)
+        ));
+        assert_eq!(p.diagnostics.len(), 2);
+    }
+
+    #[test]
+    fn detects_sparc() {
+        assert_eq!(
+            detect_dialect("% c\n#const n = 3.\nsorts\n#s = 1..n."),
+            Dialect::Sparc
+        );
+        assert_eq!(
+            detect_dialect("#maxint = 10.\n#const n = 3.\nsorts\n#s = 1..n."),
+            Dialect::Sparc
+        );
+        assert_eq!(detect_dialect("sorts."), Dialect::Clingo);
+        assert_eq!(detect_dialect("a :- b."), Dialect::Clingo);
+    }
+
+    #[test]
+    fn labelled_cr_rule_without_head() {
+        let p = ok("r1: :+ p(c).");
+        let StatementKind::Rule(rule) = &p.statements[0].kind else {
+            panic!("not a rule")
+        };
+        assert!(matches!(rule.head, Head::None));
+        let RuleKind::ConsistencyRestoring { label: Some(label) } = &rule.kind else {
+            panic!("no label")
+        };
+        assert!(matches!(&label.kind,
+            TermKind::Constant(n) | TermKind::Function { name: n, .. } if n == "r1"));
+    }
+
+    #[test]
+    fn sorts_may_take_the_names_of_directives() {
+        let text = "sorts\n#program = {a}.\npredicates\np(#program).\nrules\np(X) :- #program(X).\ndisplay\n#program.\n";
+        let p = parse(FileId(0), text, Dialect::Sparc);
+        assert!(p.diagnostics.is_empty(), "{:?}", p.diagnostics);
+        assert!(
+            matches!(&p.program.statements[1].kind, StatementKind::SortDef(d) if d.name == "program")
+        );
+        assert!(
+            matches!(&p.program.statements.last().unwrap().kind, StatementKind::DisplaySort(s) if s == "program")
+        );
+        // Before its definition, `#program` is still the directive.
+        let p = parse(FileId(0), "#program base.\n", Dialect::Sparc);
+        assert!(matches!(
+            &p.program.statements[0].kind,
+            StatementKind::ProgramPart(_)
+        ));
+    }
+}

@@ -1,0 +1,302 @@
+//! Terms: precedence climbing over the binary operators, unary operators, primaries (numbers,
+//! strings, constants, functions, tuples, pools, intervals), integers and string escapes.
+//!
+//! Invariant: term nesting is capped at [`super::MAX_DEPTH`]; integers out of range are
+//! reported, never wrapped silently.
+
+use super::*;
+
+impl<'a> Parser<'a> {
+    // ----- terms -----
+
+    /// A term, intervals included.
+    pub(super) fn term(&mut self) -> PResult<Term> {
+        self.binary(0)
+    }
+
+    /// A term whose binary operators bind at least as tightly as `min_level`.
+    /// Levels: `..` 0, `^` 1, `?` 2, `&` 3, `+ -` 4, `* / \` 5, `**` 6 (right-associative).
+    pub(super) fn binary(&mut self, min_level: u8) -> PResult<Term> {
+        self.enter()?;
+        let mut lhs = self.unary()?;
+        let mut folds = 0;
+        loop {
+            let (level, op) = match self.tok.kind {
+                T::Dots => (0, None),
+                T::Caret => (1, Some(BinaryOp::BitXor)),
+                T::Question => (2, Some(BinaryOp::BitOr)),
+                T::Amp => (3, Some(BinaryOp::BitAnd)),
+                T::Plus => (4, Some(BinaryOp::Add)),
+                T::Minus => (4, Some(BinaryOp::Sub)),
+                T::Star => (5, Some(BinaryOp::Mul)),
+                T::Slash => (5, Some(BinaryOp::Div)),
+                T::Backslash => (5, Some(BinaryOp::Mod)),
+                T::Pow => (6, Some(BinaryOp::Pow)),
+                _ => break,
+            };
+            if level < min_level {
+                break;
+            }
+            self.bump();
+            let next_min = if op == Some(BinaryOp::Pow) {
+                level
+            } else {
+                level + 1
+            };
+            let rhs = self.binary(next_min)?;
+            let span = lhs.span.to(rhs.span);
+            let kind = match op {
+                None => TermKind::Interval {
+                    lo: Box::new(lhs),
+                    hi: Box::new(rhs),
+                },
+                Some(op) => TermKind::Binary {
+                    op,
+                    lhs: Box::new(lhs),
+                    rhs: Box::new(rhs),
+                },
+            };
+            lhs = Term { span, kind };
+            // A left-associative chain nests the tree one level per operator, and every later
+            // stage (printer, span walk, drop) recurses over it, so it counts as nesting.
+            self.enter()?;
+            folds += 1;
+        }
+        self.depth -= folds;
+        self.leave();
+        Ok(lhs)
+    }
+
+    /// A term with prefix operators `-` and `~`.
+    pub(super) fn unary(&mut self) -> PResult<Term> {
+        let op = match self.tok.kind {
+            T::Minus => UnaryOp::Minus,
+            T::Tilde => UnaryOp::BitNot,
+            _ => return self.primary(),
+        };
+        self.enter()?;
+        let start = self.bump().start;
+        let arg = self.unary()?;
+        self.leave();
+        Ok(Term {
+            span: self.span_from(start),
+            kind: TermKind::Unary {
+                op,
+                arg: Box::new(arg),
+            },
+        })
+    }
+
+    /// A term without operators: constants, numbers, strings, variables, functions, tuples,
+    /// pools, `|t|`, `#inf`, `#sup`, `@f(...)`.
+    pub(super) fn primary(&mut self) -> PResult<Term> {
+        let start = self.tok.start;
+        let kind = match self.tok.kind {
+            T::Number => {
+                let tok = self.bump();
+                TermKind::Integer(self.integer(tok))
+            }
+            T::String => {
+                let tok = self.bump();
+                TermKind::String(self.unescape(tok))
+            }
+            T::Variable => {
+                let tok = self.bump();
+                TermKind::Variable(self.word(tok).to_string())
+            }
+            T::Anonymous => {
+                self.bump();
+                TermKind::Anonymous
+            }
+            T::Ident => {
+                let tok = self.bump();
+                let name = self.word(tok).to_string();
+                if self.at(T::LParen) {
+                    let args = self.arguments()?;
+                    TermKind::Function {
+                        name,
+                        args,
+                        trailing_comma: false,
+                    }
+                } else {
+                    TermKind::Constant(name)
+                }
+            }
+            T::Hash => match self.cur() {
+                "#inf" | "#infimum" => {
+                    self.bump();
+                    TermKind::Infimum
+                }
+                "#sup" | "#supremum" => {
+                    self.bump();
+                    TermKind::Supremum
+                }
+                _ => return Err(self.unexpected(&[])),
+            },
+            T::At => {
+                let at = self.bump();
+                self.report_script(self.span(at.start, self.tok.end.max(at.end)));
+                let name = self.expect(T::Ident, &["<IDENTIFIER>"])?;
+                let name = self.word(name).to_string();
+                let mut args = Vec::new();
+                if self.eat(T::LParen) {
+                    if !self.at(T::RParen) {
+                        loop {
+                            args.push(self.term()?);
+                            if !self.eat(T::Comma) {
+                                break;
+                            }
+                        }
+                    }
+                    self.expect(T::RParen, &[")", "\",\""])?;
+                }
+                TermKind::ScriptCall { name, args }
+            }
+            T::Bar => {
+                self.bump();
+                let arg = self.term()?;
+                self.expect(T::Bar, &["|"])?;
+                TermKind::Unary {
+                    op: UnaryOp::Abs,
+                    arg: Box::new(arg),
+                }
+            }
+            T::LParen => self.parenthesized()?,
+            _ => return Err(self.unexpected(&[])),
+        };
+        Ok(Term {
+            span: self.span_from(start),
+            kind,
+        })
+    }
+
+    /// `( alternatives )` of a function: pools `f(1,2;3)`; `f()` is one empty list.
+    pub(super) fn arguments(&mut self) -> PResult<Vec<Vec<Term>>> {
+        self.bump();
+        let mut alts = Vec::with_capacity(1);
+        if self.eat(T::RParen) {
+            return Ok(vec![Vec::new()]);
+        }
+        loop {
+            let mut terms = Vec::with_capacity(2);
+            loop {
+                terms.push(self.term()?);
+                if !self.eat(T::Comma) {
+                    break;
+                }
+            }
+            alts.push(terms);
+            if self.eat(T::Semi) {
+                continue;
+            }
+            self.expect(T::RParen, &[")", ";"])?;
+            break;
+        }
+        Ok(alts)
+    }
+
+    /// A parenthesized term: `(t)`, a tuple `()`, `(a,)`, `(a,b)`, or a pool `(a;b)`.
+    pub(super) fn parenthesized(&mut self) -> PResult<TermKind> {
+        self.bump();
+        if self.eat(T::RParen) {
+            return Ok(TermKind::Function {
+                name: String::new(),
+                args: vec![Vec::new()],
+                trailing_comma: false,
+            });
+        }
+        let mut alts: Vec<(u32, Vec<Term>, bool)> = Vec::new();
+        loop {
+            let alt_start = self.tok.start;
+            let mut terms = vec![self.term()?];
+            let mut trailing = false;
+            while self.eat(T::Comma) {
+                if self.at(T::RParen) || self.at(T::Semi) {
+                    trailing = true;
+                    break;
+                }
+                terms.push(self.term()?);
+            }
+            alts.push((alt_start, terms, trailing));
+            if self.eat(T::Semi) {
+                continue;
+            }
+            self.expect(T::RParen, &[")", ";"])?;
+            break;
+        }
+        if alts.len() == 1 {
+            let (_, mut terms, trailing) = alts.pop().expect("one alternative");
+            if terms.len() == 1 && !trailing {
+                return Ok(TermKind::Paren(Box::new(terms.pop().expect("one term"))));
+            }
+            return Ok(TermKind::Function {
+                name: String::new(),
+                args: vec![terms],
+                trailing_comma: trailing,
+            });
+        }
+        let file = self.file;
+        let alternatives = alts
+            .into_iter()
+            .map(|(alt_start, mut terms, trailing)| {
+                if terms.len() == 1 && !trailing {
+                    terms.pop().expect("one term")
+                } else {
+                    let end = terms.last().map_or(alt_start, |t| t.span.end);
+                    Term {
+                        span: Span::new(file, alt_start, end),
+                        kind: TermKind::Function {
+                            name: String::new(),
+                            args: vec![terms],
+                            trailing_comma: trailing,
+                        },
+                    }
+                }
+            })
+            .collect();
+        Ok(TermKind::Pool(alternatives))
+    }
+
+    /// The value of a number token; out-of-range literals are reported.
+    pub(super) fn integer(&mut self, tok: Token) -> i64 {
+        let word = self.word(tok);
+        let (digits, radix) = match word.get(..2) {
+            Some("0x") | Some("0X") => (&word[2..], 16),
+            Some("0o") | Some("0O") => (&word[2..], 8),
+            Some("0b") | Some("0B") => (&word[2..], 2),
+            _ => (word, 10),
+        };
+        match i64::from_str_radix(digits, radix) {
+            Ok(v) => v,
+            Err(_) => {
+                self.diags.push(Diagnostic::error(
+                    self.span(tok.start, tok.end),
+                    "integer literal out of range",
+                ));
+                i64::MAX
+            }
+        }
+    }
+
+    /// The contents of a string token with escapes resolved (the lexer checked them).
+    pub(super) fn unescape(&self, tok: Token) -> String {
+        let raw = &self.text[tok.start as usize + 1..tok.end as usize - 1];
+        if !raw.contains('\\') {
+            return raw.to_string();
+        }
+        let mut out = String::with_capacity(raw.len());
+        let mut chars = raw.chars();
+        while let Some(c) = chars.next() {
+            if c == '\\' {
+                match chars.next() {
+                    Some('n') => out.push('\n'),
+                    Some(other) => out.push(other),
+                    None => {}
+                }
+            } else {
+                out.push(c);
+            }
+        }
+        out
+    }
+}
