@@ -65,6 +65,8 @@ pub struct History {
     pub goal: Vec<Symbol>,
     /// The last step (the number of actions).
     pub last_step: u32,
+    /// The objects, computed once from the answer set (see [`History::objects`]).
+    objects: Vec<String>,
 }
 
 impl History {
@@ -79,10 +81,16 @@ impl History {
     }
 
     /// The objects the history mentions (for the question parser): the constant arguments of
-    /// the true `holds` and `occurs` literals and statics.
+    /// the true `holds` and `occurs` literals and statics. Computed once, when the history is
+    /// made (walking the answer set per question was most of a plan description's time).
     pub fn objects(&self) -> Vec<String> {
+        self.objects.clone()
+    }
+
+    /// The objects of an answer set (see [`History::objects`]).
+    fn objects_of(oracle: &ProgramOracle) -> Vec<String> {
         let mut out: Vec<String> = Vec::new();
-        for lit in self.oracle.true_literals() {
+        for lit in oracle.true_literals() {
             if let Some("has_size" | "has_surface" | "object") = lit.name() {
                 if let Some(Symbol::Function { name, args, .. }) = lit.arg(0) {
                     if args.is_empty() && !out.contains(name) {
@@ -327,6 +335,7 @@ pub fn explain_history(
         ProgramOracle::new(ctl, model, labels).map_err(|e| HistoryError::Input(e.to_string()))?;
     Ok(History {
         problem,
+        objects: History::objects_of(&oracle),
         oracle,
         plan: actions
             .iter()
