@@ -364,3 +364,64 @@ fn assumptions_on_externals_as_clingo() {
         assert_eq!(got, want, "{text} {assign:?} {assumptions:?}");
     }
 }
+
+#[test]
+fn a_one_shot_grounding_taken_out_prints_its_provenance_as_the_grounder_does() {
+    // `lucent --text --provenance` goes through `Control::take_grounding`; the bindings and
+    // removed literals of the text index the grounding's symbol table, which the control had
+    // taken over (this panicked in `Interner::resolve` / `Symbols::get`).
+    let src = "q(1..3).\np(1).\np(X) :- q(X), not r(X).\n{r(1..3)}.\n";
+    let mut ctl = Control::new(with_provenance());
+    ctl.add("t.lp", src).unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let g = ctl.take_grounding();
+    let got = lucent::ground::text::write_text(&g, Some(ctl.sources()));
+    let mut sources = lucent::base::SourceMap::new();
+    let id = sources.add("t.lp", src);
+    let parsed = lucent::syntax::parse(id, src, lucent::syntax::ast::Dialect::Clingo);
+    let config = lucent::ground::GroundConfig {
+        provenance: true,
+        ..Default::default()
+    };
+    let direct = lucent::ground::ground(&parsed.program, Some(&sources), &config);
+    let want = lucent::ground::text::write_text(&direct, Some(&sources));
+    assert!(want.contains("with X=2; grounding proved q(2)"), "{want}");
+    assert_eq!(got, want);
+}
+
+#[test]
+fn a_later_rule_for_an_old_fact_keeps_its_origin() {
+    // p(1) is a fact of base; step(1)'s instance `p(1) :- q(1), c.` adds nothing to it (the
+    // solver never sees it) but keeps its statement, part and bindings for the explainer.
+    let mut ctl = Control::new(with_provenance());
+    ctl.add(
+        "f.lp",
+        "#program base. p(1). q(1..2). {c}.\n#program step(t). p(X) :- q(X), c.\n",
+    )
+    .unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    ctl.ground(&[step(1)]).unwrap();
+    let prov = ctl.provenance();
+    let g = prov
+        .of_aspif(ctl.lookup(&sym("p(1)")).unwrap())
+        .expect("p(1) is in the atom table");
+    let removed: Vec<String> = prov
+        .dead_rules_for(g)
+        .flat_map(|d| d.origins.iter())
+        .map(|o| {
+            let st = ctl.statement(o.rule.stmt().unwrap()).unwrap();
+            let binds: Vec<String> = o
+                .rule
+                .bindings()
+                .iter()
+                .map(|&(n, v)| format!("{}={}", ctl.name_of_id(n), ctl.symbol_of_id(v)))
+                .collect();
+            format!("{}{:?} {}", st.part.name, st.part.args, binds.join(","))
+        })
+        .collect();
+    assert_eq!(removed, ["step[Number(1)] X=1"]);
+    assert_eq!(
+        origins_of(&ctl, "p(2)"),
+        ["p(X) :- q(X), c. in step(1) with [X=2] removed [q(2)]"]
+    );
+}

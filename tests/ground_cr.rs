@@ -79,7 +79,7 @@ fn provenance_is_parallel_and_printed() {
     );
     assert!(out.contains("{p(1)}."), "{out}");
     // Facts stay queryable after simplification.
-    assert!(g.facts.contains(&"n(1)".to_string()));
+    assert!(g.facts().contains(&"n(1)".to_string()));
 }
 
 #[test]

@@ -80,11 +80,18 @@ fn check_invariants(name: &str, g: &Grounding) {
         }
     }
     for d in &p.dead {
+        let satisfied = match d.why {
+            DeadReason::HeadFact(f) => {
+                d.head.contains(&f) && p.atom(f).is_some_and(|r| r.status == AtomStatus::Fact)
+            }
+            _ => false,
+        };
         assert!(
-            d.head
-                .iter()
-                .any(|&h| p.atom(h).is_some_and(|r| r.status == AtomStatus::False)),
-            "{name}: dead rule {d:?} heads no false atom"
+            satisfied
+                || d.head
+                    .iter()
+                    .any(|&h| p.atom(h).is_some_and(|r| r.status == AtomStatus::False)),
+            "{name}: dead rule {d:?} heads no false atom and no fact satisfies it"
         );
         assert!(!d.origins.is_empty(), "{name}: dead rule without origin");
     }
@@ -122,7 +129,7 @@ fn provenance_keeps_the_ground_program_and_its_invariants_over_the_corpus() {
             off.program,
             "{name}: provenance changed the ground program"
         );
-        assert_eq!(on.atom_names, off.atom_names, "{name}");
+        assert_eq!(on.atom_names(), off.atom_names(), "{name}");
         check_invariants(&name, &on);
     }
 }
@@ -138,7 +145,7 @@ fn duplicate_instances_keep_all_their_origins_and_removed_facts() {
         .iter()
         .position(|r| {
             r.head.len() == 1 && r.body.is_empty_normal() && {
-                g.atom_names[r.head[0] as usize - 1].as_deref() == Some("p")
+                g.atom_name(r.head[0]).as_deref() == Some("p")
             }
         })
         .expect("p.");
@@ -286,4 +293,64 @@ fn text_conditions_and_negations() {
     insta::assert_snapshot!(text_of(
         "d(1..2).\n{ x(1..2) }.\nall :- x(X) : d(X).\nsome :- not not x(1).\nnone :- not x(_).\ne(X) : x(X) :- all.\n-x(2) :- some.\n"
     ));
+}
+
+/// Every rule instance with `head` among its heads, kept or removed, as `statement bindings`
+/// (the kept rules' origins, then the removed instances').
+fn instances_of(g: &Grounding, head: &str) -> Vec<String> {
+    let p = &g.program.provenance;
+    let atom = g.find_atom(head).expect(head);
+    let aspif = p.atom(atom).expect("in the table").aspif;
+    let show = |o: &lucent::ground::program::Origin| {
+        let stmt = match o.rule {
+            RuleOrigin::Statement { stmt, .. } => stmt.to_string(),
+            RuleOrigin::Auxiliary { of_stmt, kind, .. } => format!("{} of {of_stmt}", kind.name()),
+            RuleOrigin::Complement => "complement".into(),
+        };
+        format!("{stmt} {}", g.bindings_text(o.rule.bindings()))
+            .trim_end()
+            .to_string()
+    };
+    let mut out: Vec<String> = Vec::new();
+    for (i, r) in g.program.rules.iter().enumerate() {
+        if aspif != 0 && r.head.contains(&aspif) {
+            out.extend(p.origins(i).iter().map(show));
+        }
+    }
+    for d in &p.dead {
+        if d.head.contains(&atom) {
+            out.extend(d.origins.iter().map(|o| format!("{} (removed)", show(o))));
+        }
+    }
+    out
+}
+
+#[test]
+fn rule_instances_of_an_atom_that_is_a_fact_keep_their_origins() {
+    // `a :- c.` and `p(X) :- q(X).` cannot add anything to facts: the grounder drops them (as
+    // gringo does), but their instances keep their statement and bindings as removed rules
+    // satisfied by the fact (the explainer may cite them). `r :- s.` is grounded before `r`
+    // is known to be a fact (simplification removes it), `u` after.
+    let src = "a.\na :- c.\n{c}.\np(1..2).\np(X) :- q(X).\n{q(1..3)}.\n\
+               r :- s.\n{s}.\nr :- w.\nw :- not x.\n{u}.\nu :- r.\n";
+    let (g, _) = run("-", src, true);
+    check_invariants("-", &g);
+    assert_eq!(instances_of(&g, "a"), ["0", "1 (removed)"]);
+    assert_eq!(instances_of(&g, "p(1)"), ["3", "4 X=1 (removed)"]);
+    assert_eq!(instances_of(&g, "p(2)"), ["3", "4 X=2 (removed)"]);
+    assert_eq!(instances_of(&g, "p(3)"), ["4 X=3"]);
+    assert_eq!(instances_of(&g, "r"), ["8", "6 (removed)"]);
+    assert_eq!(instances_of(&g, "u"), ["11", "10 (removed)"]);
+    let p = &g.program.provenance;
+    for d in p
+        .dead
+        .iter()
+        .filter(|d| matches!(d.why, DeadReason::HeadFact(_)))
+    {
+        let DeadReason::HeadFact(f) = d.why else {
+            unreachable!()
+        };
+        assert!(d.head.contains(&f));
+        assert_eq!(p.atom(f).map(|r| r.status), Some(AtomStatus::Fact));
+    }
 }

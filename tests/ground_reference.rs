@@ -93,7 +93,7 @@ proptest! {
         let expected: BTreeSet<String> = perfect_model(&rules, PREDS).iter().map(show).collect();
         let result = ground(&to_ast(&rules), None, &GroundConfig::default());
         prop_assert!(!result.diagnostics.has_errors(), "{:?}", result.diagnostics.items());
-        let facts: BTreeSet<String> = result.facts.iter().cloned().collect();
+        let facts: BTreeSet<String> = result.facts().into_iter().collect();
         prop_assert_eq!(&facts, &expected);
         // Every remaining rule is a fact rule.
         for r in &result.program.rules {

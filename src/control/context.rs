@@ -55,7 +55,9 @@ impl Control {
     pub(super) fn adopt(&mut self, mut g: Grounding) {
         let program = std::mem::take(&mut g.program);
         self.syms = std::mem::take(&mut g.symbols);
-        self.atom_sym = std::mem::take(&mut g.atom_syms);
+        // Copied, not taken: `take_grounding` hands the grounding back for text output,
+        // which renders its atom names from these symbols.
+        self.atom_sym = g.atom_syms.clone();
         self.atom_sym.resize(program.num_atoms as usize, None);
         for s in self.atom_sym.iter_mut() {
             if s.is_some_and(|s| is_internal(&self.syms, s)) {

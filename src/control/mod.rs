@@ -486,14 +486,17 @@ impl Control {
     }
 
     /// Takes the grounding of a one-shot control (one grounding, no solve call yet) with its
-    /// program, for output as aspif or text. Panics when used otherwise.
+    /// program and its symbol table (which provenance bindings and atom records index), for
+    /// output as aspif or text; the control is spent afterwards. Panics when used otherwise.
     pub fn take_grounding(&mut self) -> Grounding {
         assert!(
-            self.groundings == 1 && self.solver.is_none(),
+            self.groundings == 1 && self.solver.is_none() && self.last.is_some(),
             "take_grounding needs exactly one grounding and no solve call"
         );
         let mut g = self.last.take().expect("one grounding was done");
         g.program = std::mem::take(&mut self.pending);
+        // `adopt` moved the grounding's symbols into the control.
+        g.symbols = std::mem::take(&mut self.syms);
         g
     }
 

@@ -2341,8 +2341,18 @@ impl<'a> Grounder<'a> {
                     |g| g.origin(stmt, ctx),
                 );
             }
+            let facts = (self.provenance && !self.naive).then(|| head.clone());
             head.retain(|&a| !self.info(a).fact);
             if head.is_empty() {
+                // A choice among facts: satisfied (with provenance, kept as removed).
+                if let Some((f, facts)) = facts.and_then(|h| Some((*h.first()?, h))) {
+                    let origin = self.origin(stmt, ctx);
+                    self.dead.push(DeadRule {
+                        head: facts,
+                        origins: vec![origin],
+                        why: DeadReason::HeadFact(f),
+                    });
+                }
                 return;
             }
             for &a in &head {

@@ -50,14 +50,12 @@ pub struct Grounding {
     pub program: GroundProgram,
     /// Errors and warnings.
     pub diagnostics: Diagnostics,
-    /// Printed name of each aspif atom (`atom_names[a - 1]`), `None` for auxiliary atoms.
-    pub atom_names: Vec<Option<String>>,
-    /// Every atom known to be true (facts), including those simplified away from bodies.
-    pub facts: Vec<String>,
-    /// Symbol of each aspif atom (`atom_syms[a - 1]`, parallel to `atom_names`), `None` for
-    /// auxiliary atoms: ids into `symbols`.
+    /// Symbol of each aspif atom (`atom_syms[a - 1]`), `None` for auxiliary atoms: ids into
+    /// `symbols`. Their text is rendered only on demand ([`Grounding::atom_name`]): a library
+    /// client reading symbols never pays for strings.
     pub atom_syms: Vec<Option<symbol::SymId>>,
-    /// Symbol of every fact atom (parallel to `facts`), ids into `symbols`.
+    /// Symbol of every atom known to be true (facts), including those simplified away from
+    /// bodies, ids into `symbols` ([`Grounding::facts`] renders them).
     pub fact_syms: Vec<symbol::SymId>,
     /// Span of each source statement, by statement index (what `RuleOrigin` statement ids
     /// index).
@@ -70,6 +68,29 @@ pub struct Grounding {
 }
 
 impl Grounding {
+    /// The printed name of aspif atom `a`, `None` for an auxiliary atom (or one out of range).
+    pub fn atom_name(&self, a: program::Atom) -> Option<String> {
+        let s = (*self.atom_syms.get((a as usize).checked_sub(1)?)?)?;
+        Some(self.symbols.show(s))
+    }
+
+    /// The printed name of every aspif atom (`[a - 1]`), `None` for auxiliary atoms.
+    pub fn atom_names(&self) -> Vec<Option<String>> {
+        self.atom_syms
+            .iter()
+            .map(|s| s.map(|s| self.symbols.show(s)))
+            .collect()
+    }
+
+    /// The text of every atom known to be true (facts), including those simplified away from
+    /// bodies.
+    pub fn facts(&self) -> Vec<String> {
+        self.fact_syms
+            .iter()
+            .map(|&s| self.symbols.show(s))
+            .collect()
+    }
+
     /// `X=1,Y=a` for bindings (an origin's).
     pub fn bindings_text(&self, bindings: &[(u32, u32)]) -> String {
         bindings
@@ -138,8 +159,6 @@ pub fn ground(
         return Grounding {
             program: GroundProgram::new(),
             diagnostics: diags,
-            atom_names: Vec::new(),
-            facts: Vec::new(),
             atom_syms: Vec::new(),
             fact_syms: Vec::new(),
             statement_spans,
@@ -180,8 +199,6 @@ pub fn ground(
             fin.program
         },
         diagnostics: diags,
-        atom_names: if error { Vec::new() } else { fin.names },
-        facts: fin.facts,
         atom_syms: if error { Vec::new() } else { fin.atom_syms },
         fact_syms: fin.fact_syms,
         statement_spans,

@@ -664,7 +664,8 @@ pub enum DeadReason {
         /// The atom.
         atom: GAtom,
     },
-    /// A disjunctive rule with this fact among its heads: satisfied, it supports no other head.
+    /// A rule with this fact among its heads: satisfied, it supports no other head (and adds
+    /// nothing to the fact; a choice whose heads are all facts is dropped the same way).
     HeadFact(GAtom),
     /// The body holds a literal and its complement.
     Contradictory,
@@ -672,8 +673,9 @@ pub enum DeadReason {
     Unreachable,
 }
 
-/// A ground rule instance that simplification removed, kept because one of its head atoms
-/// ended up false: the rule instances (possibly none) that could have derived a false atom.
+/// A ground rule instance that grounding removed, kept because one of its head atoms ended up
+/// false (the rule instances, possibly none, that could have derived a false atom) or because
+/// a fact among its heads satisfied it (`DeadReason::HeadFact`).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct DeadRule {
     /// Its head atoms.
@@ -700,7 +702,9 @@ pub struct Provenance {
     pub atoms: Vec<AtomRecord>,
     by_aspif: Vec<GAtom>,
     by_sym: Vec<(u32, GAtom)>,
-    /// The removed rule instances whose heads hold an atom that ended up false.
+    /// The removed rule instances whose heads hold an atom that ended up false, and those
+    /// removed because a fact among their heads satisfies them (`DeadReason::HeadFact`), so
+    /// that every rule instance keeps its origin.
     pub dead: Vec<DeadRule>,
 }
 

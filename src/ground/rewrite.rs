@@ -918,9 +918,9 @@ impl<'a> Rewriter<'a> {
         vars: &mut Vars,
         extra: &mut Vec<NLit>,
     ) -> Option<NAtom> {
-        let list = a.args.first().cloned().unwrap_or_default();
+        let list: &[ast::Term] = a.args.first().map_or(&[], Vec::as_slice);
         let mut args = Vec::with_capacity(list.len());
-        for t in &list {
+        for t in list {
             args.push(self.term(t, vars, extra)?);
         }
         let pred = self.pred(&a.name, args.len() as u32, a.negated);

@@ -26,7 +26,7 @@ use super::program::{
     Lit, Minimize, Origin, Output, Prefer, Provenance, RemovedLit, Rule, RuleOrigin, Rules, Weight,
 };
 use super::rewrite::Compiled;
-use super::symbol::SymId;
+use super::symbol::{SymData, SymId};
 
 /// Truth status of an atom after propagation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -43,14 +43,10 @@ pub enum Status {
 pub struct Finished {
     /// The aspif program.
     pub program: GroundProgram,
-    /// Printed name of each aspif atom (`names[a - 1]`), `None` for auxiliary atoms.
-    pub names: Vec<Option<String>>,
-    /// Every fact atom's symbol text (also those simplified away from bodies).
-    pub facts: Vec<String>,
-    /// Symbol of each aspif atom (`atom_syms[a - 1]`, parallel to `names`), `None` for
-    /// auxiliary atoms.
+    /// Symbol of each aspif atom (`atom_syms[a - 1]`), `None` for auxiliary atoms. (Names are
+    /// rendered only when asked for: `Grounding::atom_name`.)
     pub atom_syms: Vec<Option<SymId>>,
-    /// Symbol of every fact atom (parallel to `facts`).
+    /// Symbol of every fact atom (also those simplified away from bodies).
     pub fact_syms: Vec<SymId>,
 }
 
@@ -196,16 +192,18 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     let mut lits: Vec<Lit> = Vec::new();
     let mut ordered: Vec<Lit> = Vec::new();
     let mut wlits: Vec<(Lit, Weight)> = Vec::new();
-    // Records a removed rule that headed a false atom (provenance).
+    // Records a removed rule that headed a false atom, or that a fact among its heads
+    // satisfied (provenance: every rule instance keeps its origin).
     let mut bury = |ri: usize,
                     head: &[AtomId],
                     reason: DeadReason,
                     status: &[Status],
                     take: &mut dyn FnMut(usize) -> Vec<Origin>| {
         if prov
-            && head
-                .iter()
-                .any(|&h| status[h as usize - 1] == Status::False)
+            && (matches!(reason, DeadReason::HeadFact(_))
+                || head
+                    .iter()
+                    .any(|&h| status[h as usize - 1] == Status::False))
         {
             dead_rules.push(DeadRule {
                 head: head.to_vec(),
@@ -308,6 +306,20 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         } else {
             head.retain(|&h| status[h as usize - 1] == Status::Unknown || external[h as usize]);
             if head.is_empty() {
+                // A choice among facts (and false atoms): kept as satisfied by a fact.
+                if let Some(&f) = r
+                    .head
+                    .iter()
+                    .find(|&&h| status[h as usize - 1] == Status::Fact)
+                {
+                    bury(
+                        ri,
+                        r.head,
+                        DeadReason::HeadFact(f),
+                        &status,
+                        &mut take_origins,
+                    );
+                }
                 continue;
             }
         }
@@ -484,14 +496,12 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     // (each rule's heads before its body), then those only in minimize statements, externals
     // and shown atoms, in creation order. The solver's initial variable order follows it.
     let mut number = vec![0u32; n + 1];
-    let mut names: Vec<Option<String>> = Vec::new();
     let mut atom_syms: Vec<Option<SymId>> = Vec::new();
     let mut next = 0u32;
     let mut assign = |a: usize, number: &mut Vec<u32>| {
         if number[a] == 0 {
             next += 1;
             number[a] = next;
-            names.push(g.atoms[a - 1].sym.map(|s| g.syms.show(s)));
             atom_syms.push(g.atoms[a - 1].sym);
         }
     };
@@ -543,8 +553,9 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 .collect(),
         );
         // Instances dropped during instantiation are kept only when they headed a false atom
-        // and the literal that stopped them is still decided that way (one that failed in an
-        // early round of a recursive component may have been derived later).
+        // (or were satisfied by a fact among their heads) and the literal that stopped them is
+        // still decided that way (one that failed in an early round of a recursive component
+        // may have been derived later).
         dead_rules.retain(|d| {
             let decided = match d.why {
                 DeadReason::Literal { positive, atom } => {
@@ -559,9 +570,10 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                 DeadReason::Contradictory | DeadReason::Unreachable => true,
             };
             decided
-                && d.head
-                    .iter()
-                    .any(|&h| status[h as usize - 1] == Status::False)
+                && (matches!(d.why, DeadReason::HeadFact(_))
+                    || d.head
+                        .iter()
+                        .any(|&h| status[h as usize - 1] == Status::False))
         });
         p.dead = dead_rules;
         out.provenance = p;
@@ -574,13 +586,11 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         })
         .collect();
     // Outputs: shown atoms, facts with an empty condition.
-    let mut facts = Vec::new();
     let mut fact_syms = Vec::new();
     for a in 1..=n {
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };
         if status[a - 1] == Status::Fact {
-            facts.push(g.syms.show(sym));
             fact_syms.push(sym);
         }
         if info.in_domain && status[a - 1] != Status::False && shown_pred(g, info.pred) {
@@ -687,7 +697,13 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             continue;
         }
         let args = g.syms.args(sym);
-        if args.len() != 2 || g.syms.show(sym).split('(').next() != Some("prefer") {
+        let prefer = match g.syms.get(sym) {
+            SymData::Fun {
+                name, neg: false, ..
+            } => g.syms.names.resolve(name) == "prefer",
+            _ => false,
+        };
+        if args.len() != 2 || !prefer {
             continue;
         }
         let (l1, l2) = (g.syms.show(args[0]), g.syms.show(args[1]));
@@ -702,8 +718,6 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     }
     Finished {
         program: out,
-        names,
-        facts,
         atom_syms,
         fact_syms,
     }

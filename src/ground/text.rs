@@ -14,18 +14,21 @@ use super::program::{AtomStatus, BodyRef, DeadReason, GAtom, HeadKind, Lit, Orig
 use super::Grounding;
 use crate::base::SourceMap;
 
-fn atom(g: &Grounding, a: u32) -> String {
-    match g.atom_names.get(a as usize - 1).and_then(|n| n.clone()) {
+/// The printed names of the aspif atoms (`[a - 1]`), rendered once per text.
+type Names = [Option<String>];
+
+fn atom(names: &Names, a: u32) -> String {
+    match names.get(a as usize - 1).and_then(|n| n.clone()) {
         Some(n) => n,
         None => format!("#aux({a})"),
     }
 }
 
-fn lit(g: &Grounding, l: Lit) -> String {
+fn lit(names: &Names, l: Lit) -> String {
     if l > 0 {
-        atom(g, l as u32)
+        atom(names, l as u32)
     } else {
-        format!("not {}", atom(g, (-l) as u32))
+        format!("not {}", atom(names, (-l) as u32))
     }
 }
 
@@ -144,6 +147,7 @@ pub fn write_text_to(
     w: &mut dyn std::io::Write,
 ) -> std::io::Result<()> {
     let p = &g.program;
+    let names = g.atom_names();
     let mut out = String::new();
     for (i, r) in p.rules.iter().enumerate() {
         spill(&mut out, w)?;
@@ -152,7 +156,7 @@ pub fn write_text_to(
                 let _ = writeln!(out, "% {}", origin_text(g, src, o));
             }
         }
-        let head: Vec<String> = r.head.iter().map(|&a| atom(g, a)).collect();
+        let head: Vec<String> = r.head.iter().map(|&a| atom(&names, a)).collect();
         match r.head_kind {
             HeadKind::Choice => {
                 let _ = write!(out, "{{{}}}", head.join(";"));
@@ -160,12 +164,12 @@ pub fn write_text_to(
             HeadKind::Disjunction => out.push_str(&head.join("|")),
         }
         let body: Vec<String> = match r.body {
-            BodyRef::Normal(ls) => ls.iter().map(|&l| lit(g, l)).collect(),
+            BodyRef::Normal(ls) => ls.iter().map(|&l| lit(&names, l)).collect(),
             BodyRef::Weight { lower, lits } => {
                 let elems: Vec<String> = lits
                     .iter()
                     .enumerate()
-                    .map(|(i, &(l, w))| format!("{w},{i}:{}", lit(g, l)))
+                    .map(|(i, &(l, w))| format!("{w},{i}:{}", lit(&names, l)))
                     .collect();
                 vec![format!("{lower}<=#sum{{{}}}", elems.join(";"))]
             }
@@ -183,7 +187,7 @@ pub fn write_text_to(
             .lits
             .iter()
             .enumerate()
-            .map(|(i, &(l, w))| format!("{w}@{},{i}:{}", m.priority, lit(g, l)))
+            .map(|(i, &(l, w))| format!("{w}@{},{i}:{}", m.priority, lit(&names, l)))
             .collect();
         let _ = writeln!(out, "#minimize{{{}}}.", elems.join(";"));
     }
@@ -191,24 +195,25 @@ pub fn write_text_to(
         let _ = writeln!(
             out,
             "#external {}. [{}]",
-            atom(g, a),
+            atom(&names, a),
             format!("{v:?}").to_lowercase()
         );
     }
     // The facts as a set: one look-up per output (a list search made 200,000 shown facts take
     // 40 s).
-    let facts: std::collections::HashSet<&str> = g.facts.iter().map(String::as_str).collect();
+    let facts = g.facts();
+    let facts: std::collections::HashSet<&str> = facts.iter().map(String::as_str).collect();
     for o in &p.outputs {
         let named = o.condition.len() == 1
             && o.condition[0] > 0
-            && g.atom_names
+            && names
                 .get(o.condition[0] as usize - 1)
                 .and_then(|n| n.as_deref())
                 == Some(o.symbol.as_str());
         if named || (o.condition.is_empty() && facts.contains(o.symbol.as_str())) {
             continue;
         }
-        let cond: Vec<String> = o.condition.iter().map(|&l| lit(g, l)).collect();
+        let cond: Vec<String> = o.condition.iter().map(|&l| lit(&names, l)).collect();
         if cond.is_empty() {
             let _ = writeln!(out, "#show {}.", o.symbol);
         } else {
