@@ -4,33 +4,430 @@
 //! `configuration mod runs`), in the authors' fixed-horizon mode and with our iterative planner,
 //! every plan classified optimal, sub-optimal or incorrect against KB_full (4.3).
 //!
+//! A pair is [`pair`]: configuration `c` of a preset is `explain::h3::generate(preset, s)` with
+//! `s` derived from the setup's seed, the preset and `c`; its goal 0 is the generated one and
+//! goals 1.. are drawn from the same scene by 7.1's rule ([`draw_goal`]), so the five goals of a
+//! configuration share one initial state. Both conditions plan with the `learner` profile's
+//! switches (`table_is_object`, `sticky_support_fluents`) and the planning module on; the
+//! ground truth is KB_full under the same two switches, the H1 oracle's. Plans are judged by
+//! `plan::check`: a replay per distinct plan and one breadth-first search per pair for L* and
+//! E* (4.3).
+//!
 //! Invariants: Table 2's ratios are with/without per pair, averaged over the pairs where both
 //! conditions found a plan (the others are counted, not dropped silently); Table 3's fractions
-//! are per trial, averaged over the trials of a condition that found at least one plan.
+//! are per trial, averaged over the trials of a condition that found at least one plan. The
+//! fixed-horizon mode keeps at most [`FIXED_CAP`] answer sets per solve (the enumeration order
+//! is the solver's, deterministic per program); a capped count says so (`capped`).
+
+use std::collections::BTreeSet;
+use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
 
 use super::svg;
-use super::{Context, Record, Trial, TrialError};
+use super::{Context, Domain, Record, Trial, TrialError};
+use crate::action::{self, ast::Description, ast::Value, Options};
+use crate::base::rng::SplitMix64;
+use crate::base::SourceMap;
+use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol};
+use crate::explain::h3::{generate, Goal, Scene, ScenePreset};
+use crate::plan::{self, replay, PlanConfig, Search, StateSearch};
+
+/// The authors' horizon (DOMAIN.md 7.4: 9 by default).
+pub const FIXED_HORIZON: usize = 9;
+
+/// Answer sets kept per fixed-horizon solve.
+pub const FIXED_CAP: usize = 50;
+
+/// States the breadth-first search for L* and E* may expand per pair.
+pub const SEARCH_STATES: usize = 2_000;
 
 /// Why H2 cannot run in this build, if it cannot.
 pub fn availability() -> Result<(), String> {
-    Err(
-        "the planner's fixed-horizon mode, plan::check (optimal/sub-optimal/incorrect) and \
-         the (scene, goal) generator of DOMAIN.md 7.1 are not on main yet"
-            .into(),
-    )
+    Ok(())
+}
+
+/// The preset of a trial config.
+fn preset_of(config: &str) -> Option<ScenePreset> {
+    ScenePreset::ALL.into_iter().find(|p| p.name() == config)
+}
+
+/// The seed of configuration `configuration` of `preset` under the setup's seed.
+fn configuration_seed(seed: u64, preset: ScenePreset, configuration: usize) -> u64 {
+    let purpose = ((preset as u64 + 1) << 32) | configuration as u64;
+    SplitMix64::new(seed ^ 0x4832_5041_4952_5300)
+        .fork(purpose)
+        .next_u64()
+}
+
+/// The height of `x` in `scene`'s initial state (1 on the table).
+fn level(scene: &Scene, x: &str) -> usize {
+    let mut n = 0;
+    let mut at = x.to_string();
+    while at != "table" && n <= scene.objects.len() {
+        n += 1;
+        at = scene.support(&at).unwrap_or("table").to_string();
+    }
+    n
+}
+
+/// A goal for `scene` by DOMAIN.md 7.1's rule: with probability 0.2 `in_hand(rob1, X)`, else
+/// `on(X, Y)` with X movable, Y the table or an object with a flat top that is not small,
+/// Y != X, not already true, and Y's tower low enough that X would stand at level 4 at most.
+pub fn draw_goal(scene: &Scene, rng: &mut SplitMix64) -> Goal {
+    let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
+    if rng.chance(0.2) {
+        return Goal::InHand(rng.pick(&names).clone());
+    }
+    let mut pairs: Vec<(String, String)> = Vec::new();
+    for x in &names {
+        let mut places = vec!["table".to_string()];
+        places.extend(
+            scene
+                .objects
+                .iter()
+                .filter(|o| o.surface == "flat" && o.size != "small" && o.name != *x)
+                .map(|o| o.name.clone()),
+        );
+        for y in places {
+            let already = scene.support(x) == Some(y.as_str());
+            let high = y != "table" && level(scene, &y) + 1 > 4;
+            if !already && !high {
+                pairs.push((x.clone(), y));
+            }
+        }
+    }
+    let (x, y) = rng.pick(&pairs).clone();
+    Goal::On(x, y)
+}
+
+/// The (scene, goal) pair of `preset`, configuration `configuration`, goal `goal`: goal 0 is
+/// the generated scene's own; later goals are drawn by [`draw_goal`], each different from the
+/// earlier ones when the scene allows it.
+pub fn pair(preset: ScenePreset, seed: u64, configuration: usize, goal: usize) -> Scene {
+    let cseed = configuration_seed(seed, preset, configuration);
+    let mut scene = generate(preset, cseed);
+    let mut goals = vec![scene.goal.clone()];
+    let mut rng = SplitMix64::new(cseed).fork(0x474f_414c);
+    while goals.len() <= goal {
+        let mut g = draw_goal(&scene, &mut rng);
+        for _ in 0..20 {
+            if !goals.contains(&g) {
+                break;
+            }
+            g = draw_goal(&scene, &mut rng);
+        }
+        goals.push(g);
+    }
+    scene.goal = goals.swap_remove(goal);
+    scene
+}
+
+/// The switches both conditions and the ground truth share: the `learner` profile's sorts and
+/// sticky support fluents, the planning module on.
+fn shared_overrides() -> Vec<(String, Value)> {
+    vec![
+        ("table_is_object".into(), Value::Bool(true)),
+        ("sticky_support_fluents".into(), Value::Bool(true)),
+        ("planning".into(), Value::Bool(true)),
+    ]
+}
+
+/// Loads `text` (a scene including the domain) as a description.
+fn load(domain: &Domain, name: &str, text: &str) -> Result<(Description, SourceMap), TrialError> {
+    let mut sources = SourceMap::new();
+    let file = sources.add(name.to_string(), text.to_string());
+    let mut read = |p: &std::path::Path| {
+        if p == std::path::Path::new(&domain.path) {
+            Ok(domain.text.clone())
+        } else {
+            Err(format!("only the domain {} can be included", domain.path))
+        }
+    };
+    let parsed = action::load(&mut sources, file, &mut read);
+    if parsed.has_errors() {
+        let mut d = crate::base::Diagnostics::default();
+        d.extend(parsed.diagnostics);
+        return Err(TrialError::Input(d.render(&sources)));
+    }
+    Ok((parsed.description, sources))
+}
+
+/// A plan as action terms, from a model's `occurs(a, i)` atoms in step order.
+fn plan_of(atoms: &[Symbol]) -> Vec<Symbol> {
+    let mut steps: Vec<(i32, Symbol)> = atoms
+        .iter()
+        .filter(|s| s.is("occurs", 2) && !s.is_negative())
+        .filter_map(|s| Some((s.args()[1].as_number()?, s.args()[0].clone())))
+        .collect();
+    steps.sort();
+    steps.into_iter().map(|(_, a)| a).collect()
+}
+
+/// The authors' fixed horizon: the first [`FIXED_CAP`] answer sets at horizon `n` (CR-minimal),
+/// their plans, and whether the cap cut the enumeration.
+fn fixed_plans(
+    desc: &Description,
+    sources: &SourceMap,
+    options: &Options,
+    n: usize,
+) -> Result<(usize, Vec<Vec<Symbol>>, bool), String> {
+    let mut options = options.clone();
+    options
+        .overrides
+        .push(("horizon".into(), Value::Int(n as i64)));
+    options
+        .overrides
+        .push(("horizon_mode".into(), Value::Word("fixed".into())));
+    let t = action::translate(desc, &options);
+    if t.has_errors() {
+        let mut d = crate::base::Diagnostics::default();
+        d.extend(t.diagnostics);
+        return Err(d.render(sources));
+    }
+    let mut cc = ControlConfig::default();
+    cc.solve.models = 0;
+    let mut ctl = Control::with_sources(cc, sources.clone());
+    ctl.add_program(t.program).map_err(|e| e.message)?;
+    ctl.ground(&[Part::base()]).map_err(|e| e.message)?;
+    let mut plans = Vec::new();
+    let mut count = 0;
+    let summary = ctl.solve(&SolveOptions::default(), |m| {
+        count += 1;
+        plans.push(plan_of(&m.atoms()));
+        count < FIXED_CAP
+    });
+    let capped = count >= FIXED_CAP && !summary.exhausted;
+    Ok((count, plans, capped))
+}
+
+/// Judges plans against the ground truth (KB_full): each plan replayed by `plan::check`; L*
+/// and E* found once per pair, by `plan::check`'s breadth-first search within
+/// [`SEARCH_STATES`] states, else by the iterative planner over KB_full (its least length and
+/// least CR count).
+struct Judge<'a> {
+    /// The transition program of the truth.
+    truth: StateSearch,
+    /// The truth as a planning problem (for the planner's fallback).
+    desc: &'a Description,
+    sources: &'a SourceMap,
+    /// L* and E*, once known, and how they were found.
+    minimal: Option<(Option<(usize, usize)>, MinimalBy)>,
+}
+
+/// How L* and E* were found.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MinimalBy {
+    /// No correct plan needed them.
+    #[default]
+    NotNeeded,
+    /// `plan::check`'s breadth-first search over states.
+    Search,
+    /// The search ran out of states; the iterative planner over KB_full.
+    Planner,
+}
+
+impl Judge<'_> {
+    fn minimal(&mut self, depth: usize) -> Option<(usize, usize)> {
+        if let Some((m, _)) = self.minimal {
+            return m;
+        }
+        // A correct plan of length `depth` exists, so L* <= depth: the search to that depth
+        // finds L* unless its state budget runs out.
+        let found = match self.truth.minimal(depth, SEARCH_STATES) {
+            Some(m) => (Some(m), MinimalBy::Search),
+            None => {
+                let config = PlanConfig {
+                    max_horizon: depth,
+                    overrides: shared_overrides(),
+                    all: true,
+                    ..PlanConfig::default()
+                };
+                let m = plan::plan(self.desc, self.sources, &config)
+                    .ok()
+                    .map(|p| (p.length, p.cr_applied));
+                (m, MinimalBy::Planner)
+            }
+        };
+        self.minimal = Some(found);
+        found.0
+    }
+
+    fn quality(&mut self, plan: &[Symbol]) -> plan::Quality {
+        let r = replay(&mut self.truth, plan);
+        if r.failed.is_some() || !r.goal {
+            return plan::Quality::Incorrect;
+        }
+        match self.minimal(plan.len()) {
+            Some((l, e)) if l == plan.len() && e == r.cr_applied => plan::Quality::Optimal,
+            _ => plan::Quality::SubOptimal,
+        }
+    }
+}
+
+/// Plans one condition in one mode and classifies its distinct plans.
+fn run_mode(
+    desc: &Description,
+    sources: &SourceMap,
+    options: &Options,
+    mode: Search,
+    judge: &mut Judge,
+) -> ModeResult {
+    let start = Instant::now();
+    let (answer_sets, plans, capped, error) = match mode {
+        Search::Fixed(n) => match fixed_plans(desc, sources, options, n) {
+            Ok((count, plans, capped)) => (count, plans, capped, None),
+            Err(e) => (0, Vec::new(), false, Some(e)),
+        },
+        _ => {
+            let config = PlanConfig {
+                max_horizon: plan::default_max_horizon(
+                    desc,
+                    &PlanConfig {
+                        profile: options.profile.clone(),
+                        overrides: options.overrides.clone(),
+                        ..PlanConfig::default()
+                    },
+                ),
+                profile: options.profile.clone(),
+                overrides: options.overrides.clone(),
+                search: mode,
+                all: true,
+            };
+            match plan::plan(desc, sources, &config) {
+                Ok(p) => {
+                    let actions: Vec<Vec<Symbol>> =
+                        p.plans.iter().map(|p| p.actions.clone()).collect();
+                    (actions.len(), actions, false, None)
+                }
+                Err(e) => (0, Vec::new(), false, Some(e.to_string())),
+            }
+        }
+    };
+    let time = start.elapsed().as_secs_f64();
+    let distinct: BTreeSet<Vec<Symbol>> = plans.into_iter().collect();
+    let mut out = ModeResult {
+        plans: answer_sets,
+        steps: 0.0,
+        time,
+        capped,
+        error,
+        ..ModeResult::default()
+    };
+    if distinct.is_empty() {
+        out.plans = 0;
+        return out;
+    }
+    let mut steps = 0usize;
+    for p in &distinct {
+        steps += p.len();
+        match judge.quality(p) {
+            plan::Quality::Optimal => out.optimal += 1,
+            plan::Quality::SubOptimal => out.suboptimal += 1,
+            plan::Quality::Incorrect => {
+                out.incorrect += 1;
+                if out.example_incorrect.is_none() {
+                    out.example_incorrect = Some(
+                        p.iter()
+                            .enumerate()
+                            .map(|(i, a)| format!("{a}@{i}"))
+                            .collect::<Vec<_>>()
+                            .join("; "),
+                    );
+                }
+            }
+        }
+    }
+    out.steps = steps as f64 / distinct.len() as f64;
+    out
+}
+
+/// Plans `scene` (with its goal) under both conditions, without and with `learned` (an AL_d
+/// text, the learned-axiom file of an H1 run), with the iterative planner and, when `fixed`,
+/// in the authors' fixed-horizon mode; every distinct plan is classified against KB_full.
+/// `name` names the scene in diagnostics.
+pub fn plan_pair(
+    domain: &Domain,
+    name: &str,
+    scene: &Scene,
+    learned: &str,
+    fixed: bool,
+) -> Result<PairResult, TrialError> {
+    let text = scene.to_ald(&domain.path, true);
+    let (plain, sources) = load(domain, name, &text)?;
+    let (taught, taught_sources) = load(domain, name, &format!("{text}\n{learned}"))?;
+    let truth_config = PlanConfig {
+        overrides: shared_overrides(),
+        ..PlanConfig::default()
+    };
+    let truth = StateSearch::new(&plain, &sources, &truth_config)
+        .map_err(|e| TrialError::Input(format!("{name}: ground truth: {e}")))?;
+    let mut judge = Judge {
+        truth,
+        desc: &plain,
+        sources: &sources,
+        minimal: None,
+    };
+    let learner = Options {
+        profile: Some("learner".into()),
+        overrides: shared_overrides(),
+    };
+    let mut condition = |desc: &Description, sources: &SourceMap| Condition {
+        fixed: if fixed {
+            run_mode(
+                desc,
+                sources,
+                &learner,
+                Search::Fixed(FIXED_HORIZON),
+                &mut judge,
+            )
+        } else {
+            ModeResult::default()
+        },
+        iterative: run_mode(desc, sources, &learner, Search::Incremental, &mut judge),
+    };
+    let without = condition(&plain, &sources);
+    let with = condition(&taught, &taught_sources);
+    Ok(PairResult {
+        preset: scene.preset.name().into(),
+        configuration: 0,
+        goal: 0,
+        objects: scene.objects.len(),
+        goal_text: match &scene.goal {
+            Goal::On(x, y) => format!("relation(on, {x}, {y})"),
+            Goal::InHand(x) => format!("in_hand(rob1, {x})"),
+        },
+        min_length: judge.minimal.and_then(|(m, _)| m).map(|(l, _)| l),
+        min_cr: judge.minimal.and_then(|(m, _)| m).map(|(_, e)| e),
+        min_by: judge.minimal.map(|(_, by)| by).unwrap_or_default(),
+        without,
+        with,
+    })
 }
 
 /// Runs one (scene, goal) pair.
 pub fn run_trial(
-    _ctx: &Context,
-    _trial: &Trial,
+    ctx: &Context,
+    trial: &Trial,
     _seed: u64,
 ) -> Result<serde_json::Value, TrialError> {
-    Err(TrialError::NotAvailable(
-        availability().err().unwrap_or_default(),
-    ))
+    let preset = preset_of(&trial.config)
+        .ok_or_else(|| TrialError::Input(format!("unknown preset '{}'", trial.config)))?;
+    let goals = ctx.setup.goals.max(1);
+    let (configuration, goal) = (trial.index / goals, trial.index % goals);
+    if ctx.setup.runs == 0 {
+        return Err(TrialError::Input(
+            "H2 plans with the axioms of an H1 run: it needs --runs 1 or more".into(),
+        ));
+    }
+    let learned = super::h1::learned_axioms(ctx, configuration % ctx.setup.runs)?;
+    let scene = pair(preset, ctx.setup.seed, configuration, goal);
+    let name = format!("<h2 {}>", trial.id());
+    let mut result = plan_pair(ctx.domain, &name, &scene, &learned, true)?;
+    result.configuration = configuration;
+    result.goal = goal;
+    serde_json::to_value(result).map_err(|e| TrialError::Store(e.to_string()))
 }
 
 /// One planning mode's outcome for one condition.
@@ -49,6 +446,15 @@ pub struct ModeResult {
     pub suboptimal: usize,
     /// Plans classified incorrect.
     pub incorrect: usize,
+    /// Fixed mode: the enumeration stopped at [`FIXED_CAP`] answer sets.
+    #[serde(default)]
+    pub capped: bool,
+    /// Why no plan was returned (no plan within the horizon, an inconsistent scene).
+    #[serde(default)]
+    pub error: Option<String>,
+    /// One incorrect plan, for the reader.
+    #[serde(default)]
+    pub example_incorrect: Option<String>,
 }
 
 /// One condition (without or with the learned axioms).
@@ -73,8 +479,14 @@ pub struct PairResult {
     pub objects: usize,
     /// The goal, as AL_d literals.
     pub goal_text: String,
-    /// The minimal plan length L* found by the independent check.
+    /// The minimal plan length L* (when a correct plan needed it).
     pub min_length: Option<usize>,
+    /// The least CR count E* among plans of length L*.
+    #[serde(default)]
+    pub min_cr: Option<usize>,
+    /// How L* and E* were found.
+    #[serde(default)]
+    pub min_by: MinimalBy,
     /// Without the learned axioms.
     pub without: Condition,
     /// With them.
@@ -347,6 +759,7 @@ mod tests {
             optimal: o,
             suboptimal: s,
             incorrect: i,
+            ..ModeResult::default()
         }
     }
 

@@ -13,7 +13,7 @@
 //! - Aggregation is a pure function of the results (sorted by id): the in-process run, a resumed
 //!   run and `merge` over files written by GNU parallel give the same tables. Timings are the
 //!   only values that differ between runs; they sit under keys named `time` or `seconds`, or
-//!   ending in `_time`.
+//!   ending in `_time`, and in the markdown only in H2's `| Planning time |` rows.
 //! - A hypothesis whose pieces are missing is reported as the string `"not available: <reason>"`
 //!   and has no trials; nothing here invents a number for it.
 //! - Nothing here reads or writes files or prints: `cli` implements [`Store`] over a directory

@@ -20,7 +20,9 @@
 //! function of the program text, the facts and the action (observed: no solve of the 4341 of
 //! seed 0's run had a second model; docs/bench/h1.md).
 
-use std::collections::HashMap;
+// hashbrown's default hasher (foldhash) rather than std's SipHash: interning the ~1000
+// literals of each answer was 10% of a learning run's time (docs/bench/h1.md).
+use hashbrown::HashMap;
 use std::sync::{Arc, Mutex};
 
 use crate::action::{self, ast::Description, Options};
