@@ -65,7 +65,10 @@ fn report(dir: &Path) -> (Value, String, Vec<(String, String)>) {
         serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap();
     strip_times(&mut json);
     let mut markdown = String::new();
-    for line in std::fs::read_to_string(dir.join("report.md")).unwrap().lines() {
+    for line in std::fs::read_to_string(dir.join("report.md"))
+        .unwrap()
+        .lines()
+    {
         if !line.starts_with("| Planning time |") {
             markdown.push_str(line);
             markdown.push('\n');

@@ -16,8 +16,7 @@ use crate::action;
 use crate::base::SourceMap;
 use crate::plan::{plan, PlanConfig};
 
-/// KB_full, built in so that the demo runs from any directory.
-const KB_FULL: &str = include_str!("../../domains/ra/kb_full.ald");
+use super::KB_FULL;
 
 /// The tabletop task of DOMAIN.md 4.5 (it includes `../kb_full.ald`).
 const H1_SCENE: &str = include_str!("../../domains/ra/scenes/h1.ald");

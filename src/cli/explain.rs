@@ -492,7 +492,7 @@ fn load_history(
         if files.is_empty() {
             files.push((
                 "domains/ra/kb_full.ald (built in)".into(),
-                Some(super::run::KB_FULL.to_string()),
+                Some(super::KB_FULL.to_string()),
             ));
         }
         files.push((format!("{path} (as AL_d)"), Some(scene)));

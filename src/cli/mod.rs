@@ -22,6 +22,10 @@ pub mod report;
 #[cfg(feature = "sim")]
 pub mod run;
 
+/// KB_full (`domains/ra/kb_full.ald`), built in so that `run`, `demo`, `explain` and `ask` work
+/// from any directory, with or without the `sim` feature.
+pub const KB_FULL: &str = include_str!("../../domains/ra/kb_full.ald");
+
 use std::io::{Read, Write};
 use std::time::{Duration, Instant};
 

@@ -20,8 +20,7 @@ use crate::plan::history::History;
 use crate::plan::tabletop::{act_config, random_goal, SimWorld};
 use crate::sim::{self, GenerateConfig, Preset, Scene};
 
-/// KB_full, built in so that `lucent run` and `lucent demo` work from any directory.
-pub const KB_FULL: &str = include_str!("../../domains/ra/kb_full.ald");
+use super::KB_FULL;
 
 /// Exit code of a run that did not reach its goal.
 const EXIT_NOT_REACHED: i32 = 20;
