@@ -119,7 +119,19 @@ fn rule_terms(rule: &mut Rule, f: &mut dyn FnMut(&mut Term)) {
         match b {
             BodyLiteral::Literal(l) => atom(&mut l.atom, f),
             BodyLiteral::Conditional(c) => cond(c, f),
-            BodyLiteral::Aggregate { .. } => {}
+            BodyLiteral::Aggregate { aggregate, .. } => {
+                let g = aggregate.as_mut();
+                for guard in [&mut g.lower, &mut g.upper].into_iter().flatten() {
+                    f(&mut guard.term);
+                }
+                for e in &mut g.elements {
+                    e.terms.iter_mut().for_each(&mut *f);
+                    for l in &mut e.condition {
+                        atom(&mut l.atom, f);
+                    }
+                }
+                g.set_syntax.iter_mut().for_each(|c| cond(c, f));
+            }
         }
     }
     if let RuleKind::ConsistencyRestoring { label: Some(l) } = &mut rule.kind {

@@ -18,12 +18,12 @@
 //! when dropping the stability constraint restores one (the objects named), else
 //! [`PlanError::Inconsistent`].
 
-use std::collections::BTreeMap;
-
 use super::{Plan, PlanConfig, PlanError, Plans};
 use crate::action::{self, ast::Description, ast::Value, Options};
 use crate::base::{Diagnostics, SourceMap};
-use crate::control::{Control, ControlConfig, OwnedModel, Part, SolveOptions, Symbol, TruthValue};
+use crate::control::{
+    AtomId, Control, ControlConfig, Model, Part, SolveOptions, Symbol, TruthValue,
+};
 
 /// Translates `desc` with the config's switches plus `extra`; bad input is `PlanError::Input`.
 pub(crate) fn translate(
@@ -61,21 +61,66 @@ pub(crate) fn control(
     Ok(ctl)
 }
 
-/// The plan of one answer set: the actions of `occurs(a, i)` in step order, and its CR rules.
-pub(crate) fn plan_of(model: &OwnedModel) -> Plan {
-    let mut steps = BTreeMap::new();
-    for s in &model.atoms {
-        if s.is("occurs", 2) && !s.is_negative() {
-            if let Some(i) = s.args()[1].as_number() {
-                steps.insert(i, s.args()[0].clone());
-            }
+/// The `occurs(a, i)` atoms of a Control, looked up by symbol (never by scanning the answer
+/// set): a model's plan is read from them alone, which keeps reading a model independent of
+/// its size (converting a whole answer set to symbols took as long as solving).
+#[derive(Default)]
+pub(crate) struct Occurs {
+    /// The action terms (the arguments of the `action/1` atoms).
+    actions: Vec<Symbol>,
+    /// Per step, the atoms `occurs(a, i)` that grounding produced, with the action's index.
+    steps: Vec<Vec<(AtomId, usize)>>,
+}
+
+impl Occurs {
+    /// The actions of `ctl` (read once, after the part that defines `action/1` is grounded).
+    pub(crate) fn new(ctl: &Control) -> Occurs {
+        let mut actions: Vec<Symbol> = ctl
+            .symbolic_atoms()
+            .filter(|a| a.symbol.is("action", 1) && !a.symbol.is_negative())
+            .map(|a| a.symbol.args()[0].clone())
+            .collect();
+        actions.sort();
+        actions.dedup();
+        Occurs {
+            actions,
+            steps: Vec::new(),
         }
     }
-    let mut cr_applied = model.cr_applied.clone();
-    cr_applied.sort();
-    Plan {
-        actions: steps.into_values().collect(),
-        cr_applied,
+
+    /// Looks up the atoms `occurs(a, i)` of the steps not yet known, up to step `upto - 1`.
+    pub(crate) fn extend(&mut self, ctl: &Control, upto: usize) {
+        while self.steps.len() < upto {
+            let i = Symbol::number(self.steps.len() as i32);
+            let atoms = self
+                .actions
+                .iter()
+                .enumerate()
+                .filter_map(|(k, a)| {
+                    let s = Symbol::function("occurs", vec![a.clone(), i.clone()]);
+                    ctl.lookup(&s).map(|atom| (atom, k))
+                })
+                .collect();
+            self.steps.push(atoms);
+        }
+    }
+
+    /// The plan of one answer set: the action occurring at each step, in step order (a step
+    /// without an action ends the plan), and the applied CR rules.
+    pub(crate) fn plan_of(&self, model: &Model<'_>) -> Plan {
+        let mut actions = Vec::new();
+        for step in &self.steps {
+            match step.iter().find(|&&(atom, _)| model.holds(atom)) {
+                Some(&(_, k)) => actions.push(self.actions[k].clone()),
+                None => break,
+            }
+        }
+        let mut cr_applied = model.cr_applied();
+        cr_applied.sort();
+        Plan {
+            actions,
+            cr_applied,
+        }
     }
 }
 
@@ -138,10 +183,10 @@ fn diagnose(desc: &Description, sources: &SourceMap, config: &PlanConfig) -> Pla
 
 /// The plans of one solve call over `ctl` (all models, or the first): the one place where
 /// models become plans, for every search.
-fn collect(ctl: &mut Control, all: bool) -> Vec<Plan> {
+fn collect(ctl: &mut Control, occurs: &Occurs, all: bool) -> Vec<Plan> {
     let mut plans = Vec::new();
     ctl.solve(&SolveOptions::default(), |m| {
-        plans.push(plan_of(&m.to_owned_model()));
+        plans.push(occurs.plan_of(m));
         all
     });
     plans
@@ -159,6 +204,7 @@ fn check_initial(
         sources,
         config,
         &[("horizon", Value::Int(0)), ("planning", Value::Bool(false))],
+        0,
         false,
     )?;
     if initial.is_empty() {
@@ -209,6 +255,7 @@ pub(crate) fn incremental(
             Part::new("check", vec![query(0).args()[0].clone()]),
         ],
     )?;
+    let mut occurs = Occurs::new(&ctl);
     // The initial state alone (query(0) false: no goal required).
     if !ctl
         .solve(&SolveOptions::default(), |_| false)
@@ -227,9 +274,10 @@ pub(crate) fn incremental(
                     Part::new("check", vec![t]),
                 ],
             )?;
+            occurs.extend(&ctl, k);
         }
         ctl.assign_external(&query(k), TruthValue::True);
-        let plans = collect(&mut ctl, config.all);
+        let plans = collect(&mut ctl, &occurs, config.all);
         if !plans.is_empty() {
             return Ok(found(plans, k, k + 1));
         }
@@ -237,20 +285,23 @@ pub(crate) fn incremental(
     Err(PlanError::NoPlanWithin(max_horizon))
 }
 
-/// The plans of `desc` translated with `extra`, grounded and solved afresh (all answer sets'
-/// plans, or the first one's).
+/// The plans of `desc` translated with `extra` (horizon `horizon`), grounded and solved afresh
+/// (all answer sets' plans, or the first one's).
 fn solve_fresh(
     desc: &Description,
     sources: &SourceMap,
     config: &PlanConfig,
     extra: &[(&str, Value)],
+    horizon: usize,
     all: bool,
 ) -> Result<Vec<Plan>, PlanError> {
     let t = translate(desc, sources, config, extra)?;
     let mut ctl = control(sources, t.program, if all { 0 } else { 1 })?;
     ctl.ground(&[Part::base()])
         .map_err(|e| PlanError::Input(e.message))?;
-    Ok(collect(&mut ctl, all))
+    let mut occurs = Occurs::new(&ctl);
+    occurs.extend(&ctl, horizon);
+    Ok(collect(&mut ctl, &occurs, all))
 }
 
 /// The reference search: every horizon translated and grounded afresh.
@@ -270,6 +321,7 @@ pub(crate) fn retranslate(
                 ("horizon", Value::Int(k as i64)),
                 ("horizon_mode", Value::Word("iterative".into())),
             ],
+            k,
             config.all,
         )?;
         if !plans.is_empty() {
@@ -295,6 +347,7 @@ pub(crate) fn fixed(
             ("horizon", Value::Int(n as i64)),
             ("horizon_mode", Value::Word("fixed".into())),
         ],
+        n,
         config.all,
     )?;
     if plans.is_empty() {
