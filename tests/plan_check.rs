@@ -7,36 +7,15 @@
 //! - a plan with an action that is not executable, or that misses the goal, is incorrect,
 //!   with the failing step named.
 
-use std::path::Path;
+#[path = "support/plan.rs"]
+mod plan_support;
 
-use lucent::action::{self, ast::Description};
-use lucent::base::SourceMap;
-use lucent::control::Symbol;
 use lucent::plan::{classify, plan, PlanConfig, Quality};
-
-fn load(scene: &str) -> (Description, SourceMap) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(scene);
-    let mut sources = SourceMap::new();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let file = sources.add(path.to_string_lossy().into_owned(), text);
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(!parsed.has_errors(), "{:?}", parsed.diagnostics);
-    (parsed.description, sources)
-}
-
-fn actions(text: &[&str]) -> Vec<Symbol> {
-    text.iter().map(|a| Symbol::parse(a).unwrap()).collect()
-}
-
-const TABLETOP: &str = "domains/ra/scenes/tabletop_task.ald";
+use plan_support::{actions, load, EXCEPTION_GOAL, TABLETOP};
 
 #[test]
 fn minimal_plans_of_the_golden_scenes_are_optimal() {
-    for (scene, expected) in [
-        (TABLETOP, (3, 0)),
-        ("domains/ra/scenes/exception_goal.ald", (2, 1)),
-    ] {
+    for (scene, expected) in [(TABLETOP, (3, 0)), (EXCEPTION_GOAL, (2, 1))] {
         let (desc, sources) = load(scene);
         let config = PlanConfig {
             max_horizon: 4,

@@ -1,20 +1,10 @@
 //! `lucent plan` on the command line: the tabletop task as text and as JSON, `--all`, and the
 //! error paths (horizon budget too small, malformed file, missing file) with their exit codes.
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
-    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
-    let mut out = Vec::new();
-    let mut err = Vec::new();
-    let code = lucent::cli::run(&args, &mut std::io::empty(), &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
-}
+#[path = "support/plan.rs"]
+mod plan_support;
 
-const TABLETOP: &str = "domains/ra/scenes/tabletop_task.ald";
+use plan_support::{lucent as run, DOMAIN, SCENE, TABLETOP};
 
 #[test]
 fn plan_prints_json_with_all_minimal_plans() {
@@ -62,9 +52,6 @@ fn plan_rejects_bad_files() {
     assert!(err.contains("no/such/file.ald"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
-
-const DOMAIN: &str = "domains/ra/kb_full.ald";
-const SCENE: &str = "tests/data/plan/scene.lp";
 
 #[test]
 fn plan_takes_a_scene_of_facts_and_a_goal_as_literals_or_english() {
@@ -147,6 +134,17 @@ fn plan_rejects_bad_scenes_and_goals_with_clear_messages() {
     ]);
     assert_eq!(code, 20, "{err}");
     assert!(err.contains("no_plan_within(4)"), "{err}");
+    // The same without a budget: the default H = max(9, 2 * 3 + 2), no hang.
+    let (code, _, err) = run(&[
+        "plan",
+        DOMAIN,
+        "--scene",
+        SCENE,
+        "--goal",
+        "on(red_block, mug)",
+    ]);
+    assert_eq!(code, 20, "{err}");
+    assert!(err.contains("no_plan_within(9)"), "{err}");
     // An initially unstable scene.
     let (code, _, err) = run(&[
         "plan",

@@ -8,32 +8,22 @@
 //! seed 1 was not at rest when posed (a rocking capsicum), and is settled before planning.
 #![cfg(feature = "sim")]
 
-use std::path::Path;
+#[path = "support/plan.rs"]
+mod plan_support;
 
-use lucent::action;
-use lucent::base::SourceMap;
 use lucent::plan::physics::{
     generate_task, replay_physics, settle_to_rest, unstable_objects, Skip,
 };
-use lucent::plan::scene::add_statements;
 use lucent::plan::{default_max_horizon, plan, replay, PlanConfig, SceneFacts, StateSearch};
 use lucent::sim::{generate, GenerateConfig, Preset};
 
 /// Plans the task of `(preset, seed)` and checks every minimal plan; returns the plan count.
 fn check_task(preset: Preset, seed: u64) -> usize {
     let (scene, goal) = generate_task(preset, seed).unwrap();
-    let domain = Path::new(env!("CARGO_MANIFEST_DIR")).join("domains/ra/kb_full.ald");
-    let mut sources = SourceMap::new();
-    let file = sources.add(
-        domain.to_string_lossy().into_owned(),
-        std::fs::read_to_string(&domain).unwrap(),
+    let (desc, sources) = plan_support::problem(
+        SceneFacts::from_sim(&scene).to_ald(),
+        format!("goal {}.", goal.to_ald()),
     );
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let mut desc = action::load(&mut sources, file, &mut read).description;
-    let facts = SceneFacts::from_sim(&scene).to_ald();
-    add_statements(&mut desc, &mut sources, "<scene>", facts).unwrap();
-    let goal_text = format!("goal {}.", goal.to_ald());
-    add_statements(&mut desc, &mut sources, "<goal>", goal_text).unwrap();
     let mut config = PlanConfig::default();
     config.max_horizon = default_max_horizon(&desc, &config);
     let found = plan(&desc, &sources, &config).unwrap();

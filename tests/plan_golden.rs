@@ -11,27 +11,11 @@
 //! - the fixed horizon (the authors' mode) returns plans of several lengths, the minimal ones
 //!   among them.
 
-use std::path::Path;
+#[path = "support/plan.rs"]
+mod plan_support;
 
-use lucent::action::{self, ast::Description};
-use lucent::base::SourceMap;
 use lucent::plan::{plan, PlanConfig, PlanError, Plans, Search};
-
-fn load(scene: &str) -> (Description, SourceMap) {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let path = if scene.contains('/') {
-        root.join(scene)
-    } else {
-        root.join("domains/ra/scenes").join(scene)
-    };
-    let mut sources = SourceMap::new();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let file = sources.add(path.to_string_lossy().into_owned(), text);
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(!parsed.has_errors(), "{:?}", parsed.diagnostics);
-    (parsed.description, sources)
-}
+use plan_support::load;
 
 fn run(scene: &str, max_horizon: usize) -> Result<Plans, PlanError> {
     run_with(scene, max_horizon, Search::Incremental, true)

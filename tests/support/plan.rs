@@ -1,0 +1,65 @@
+//! Set-up shared by the planner's tests (`tests/plan_*.rs`, included with
+//! `#[path = "support/plan.rs"] mod plan_support;`): loading an AL_d problem of the repository,
+//! adding a scene and a goal to a domain, action lists, and `lucent` run in-process.
+#![allow(dead_code)]
+
+use std::path::Path;
+
+use lucent::action::{self, ast::Description};
+use lucent::base::SourceMap;
+use lucent::control::Symbol;
+use lucent::plan::scene::add_statements;
+
+/// The golden scenes of DOMAIN.md 4.5.
+pub const TABLETOP: &str = "domains/ra/scenes/tabletop_task.ald";
+pub const EXCEPTION_GOAL: &str = "domains/ra/scenes/exception_goal.ald";
+/// KB_full, the domain the scenes of facts are added to.
+pub const DOMAIN: &str = "domains/ra/kb_full.ald";
+/// A scene of facts (`domains/ra/README.md`, "Scenes as facts").
+pub const SCENE: &str = "tests/data/plan/scene.lp";
+
+/// Loads an AL_d file: a path relative to the repository, or a file name of
+/// `domains/ra/scenes`; its includes resolve from its directory. Panics on a parse error.
+pub fn load(file: &str) -> (Description, SourceMap) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let path = if file.contains('/') {
+        root.join(file)
+    } else {
+        root.join("domains/ra/scenes").join(file)
+    };
+    let mut sources = SourceMap::new();
+    let text = std::fs::read_to_string(&path).unwrap();
+    let id = sources.add(path.to_string_lossy().into_owned(), text);
+    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let parsed = action::load(&mut sources, id, &mut read);
+    assert!(!parsed.has_errors(), "{file}: {:?}", parsed.diagnostics);
+    (parsed.description, sources)
+}
+
+/// KB_full with a scene (AL_d statements, e.g. `SceneFacts::to_ald`) and a goal statement
+/// (`goal relation(on, a, b).`) added.
+pub fn problem(scene_ald: String, goal: String) -> (Description, SourceMap) {
+    let (mut desc, mut sources) = load(DOMAIN);
+    add_statements(&mut desc, &mut sources, "<scene>", scene_ald).unwrap();
+    add_statements(&mut desc, &mut sources, "<goal>", goal).unwrap();
+    (desc, sources)
+}
+
+/// Action terms from their text (`pickup(rob1,a)`).
+pub fn actions(text: &[&str]) -> Vec<Symbol> {
+    text.iter().map(|a| Symbol::parse(a).unwrap()).collect()
+}
+
+/// `lucent ARGS` in-process from the repository's root: exit code, stdout, stderr.
+pub fn lucent(args: &[&str]) -> (i32, String, String) {
+    std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
+    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+    let mut out = Vec::new();
+    let mut err = Vec::new();
+    let code = lucent::cli::run(&args, &mut std::io::empty(), &mut out, &mut err);
+    (
+        code,
+        String::from_utf8(out).unwrap(),
+        String::from_utf8(err).unwrap(),
+    )
+}
