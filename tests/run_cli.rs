@@ -1,7 +1,8 @@
 //! `lucent run` from the command line: a noise-free run on a generated scene reaches its goal
 //! (exit 0), saves a history that loads back and prints it with `--outf=2`; bad input (an
 //! unknown object in the goal, a malformed goal, a malformed scene file, an unknown option)
-//! gets a message and a non-zero exit, never a panic.
+//! gets a message and a non-zero exit, never a panic; an impossible goal and a horizon budget
+//! too small end the run with `no_plan_within(H)` and exit 20.
 #![cfg(feature = "sim")]
 
 use std::process::Command;
@@ -111,6 +112,36 @@ fn bad_input_is_a_message_and_a_non_zero_exit() {
     let (code, _, err) = lucent(&["run", "--perception-noise", "2"]);
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("probability"), "{err}");
+
+    // A goal no plan reaches (nothing stays on the capsicum's irregular top), and a horizon
+    // budget too small for a reachable goal (red_cube_2 stands on red_cube): the run ends
+    // without acting, exit 20, the budget named.
+    for (goal, budget) in [
+        ("on(red_cube,red_capsicum)", "4"),
+        ("on(red_cube_3,red_cube)", "1"),
+    ] {
+        let (code, out, err) = lucent(&[
+            "run",
+            "--preset",
+            "real",
+            "--seed",
+            "1",
+            "--perception-noise",
+            "0",
+            "--actuation-noise",
+            "0",
+            "--goal",
+            goal,
+            "--max-horizon",
+            budget,
+        ]);
+        assert_eq!(code, 20, "{goal}: {out}{err}");
+        assert!(
+            out.contains(&format!("no_plan_within({budget})")),
+            "{goal}: {out}"
+        );
+        assert!(out.contains("GOAL NOT REACHED"), "{goal}: {out}");
+    }
 
     let (code, out, _) = lucent(&["run", "--help"]);
     assert_eq!(code, 0);
