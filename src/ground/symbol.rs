@@ -196,8 +196,9 @@ impl Symbols {
             let id = self.intern_key(KeyRef::Num(n));
             if self.small.len() <= i {
                 // Powers of two from 64: a one-shot table of a small program allocates little
-                // (the whole range would be 136 KiB per table).
-                self.small.resize((i + 1).next_power_of_two().max(64), u32::MAX);
+                // (the whole range would be 68 KiB per table).
+                self.small
+                    .resize((i + 1).next_power_of_two().max(64), u32::MAX);
             }
             self.small[i] = id.0;
             return id;
