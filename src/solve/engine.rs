@@ -252,6 +252,10 @@ pub struct Engine {
     cla_inc: f64,
     /// True once a conflict at level 0 was found.
     inconsistent: bool,
+    /// After a search that answered `Unsat` under assumptions: the assumptions (true on the
+    /// trail, as assumed) that imply the failed one's complement, the failed one first; empty
+    /// when no assumption took part (a level-0 conflict).
+    failed: Vec<Lit>,
     /// Literals of the last conflict (all false).
     conflict: Vec<Lit>,
     /// Unfounded-set propagator for non-tight programs (install with `set_unfounded`).
@@ -397,6 +401,7 @@ impl Engine {
             var_decay: 0.95,
             cla_inc: 1.0,
             inconsistent: false,
+            failed: Vec::new(),
             conflict: Vec::new(),
             unfounded: None,
             uf_relevant: Vec::new(),
@@ -642,6 +647,55 @@ impl Engine {
     /// Whether a conflict at level 0 was derived: no more models under any assumption.
     pub fn is_inconsistent(&self) -> bool {
         self.inconsistent
+    }
+
+    /// After a search that answered [`SearchResult::Unsat`]: a subset of its assumptions that
+    /// the constraints refute together (MiniSat's `analyzeFinal`), the one found false first;
+    /// empty when the constraints alone are unsatisfiable. Meaningless after other answers.
+    pub fn failed_assumptions(&self) -> &[Lit] {
+        &self.failed
+    }
+
+    /// Fills `failed` when assumption `a` is found false at decision level
+    /// `<= assumptions.len()`: walks the implication graph of `!a` back to the assumption
+    /// decisions it rests on (every decision at these levels is an assumption).
+    fn analyze_final(&mut self, a: Lit) {
+        self.failed.clear();
+        self.failed.push(a);
+        let v0 = a.var();
+        if self.level[v0.index()] == 0 {
+            return;
+        }
+        let Some(&start) = self.trail_lim.first() else {
+            return;
+        };
+        let mut marked: Vec<Var> = vec![v0];
+        self.seen[v0.index()] = 1;
+        let mut reason = Vec::new();
+        for i in (start..self.trail.len()).rev() {
+            let x = self.trail[i];
+            let v = x.var();
+            if self.seen[v.index()] == 0 {
+                continue;
+            }
+            if matches!(self.reason[v.index()], Reason::Decision) {
+                // An assumption (`!a` itself when both `a` and `!a` were assumed).
+                self.failed.push(x);
+                continue;
+            }
+            reason.clear();
+            self.reason_lits(v, &mut reason);
+            for &q in &reason {
+                let w = q.var();
+                if self.seen[w.index()] == 0 && self.level[w.index()] > 0 {
+                    self.seen[w.index()] = 1;
+                    marked.push(w);
+                }
+            }
+        }
+        for v in marked {
+            self.seen[v.index()] = 0;
+        }
     }
 
     /// The value of a literal: `Some(true)`, `Some(false)` or `None`.
@@ -2185,6 +2239,7 @@ impl Engine {
     /// made this assignment).
     pub fn search_from(&mut self, assumptions: &[Lit], resume: bool) -> SearchResult {
         self.interrupted = false;
+        self.failed.clear();
         if self.inconsistent {
             return SearchResult::Unsat;
         }
@@ -2286,6 +2341,7 @@ impl Engine {
                         continue;
                     }
                     -1 => {
+                        self.analyze_final(a);
                         self.backtrack(0);
                         return SearchResult::Unsat;
                     }
@@ -2316,6 +2372,35 @@ mod tests {
     fn luby_sequence() {
         let got: Vec<u64> = (0..7).map(Engine::luby).collect();
         assert_eq!(got, vec![1, 1, 2, 1, 1, 2, 4]);
+    }
+
+    #[test]
+    fn failed_assumptions_are_the_ones_the_refutation_uses() {
+        // x -> y, y -> -z; w is unrelated. Assuming w, x, z fails on z, because of x.
+        let mut e = Engine::new();
+        let v = lits(&mut e, 4);
+        let (x, y, z, w) = (v[0], v[1], v[2], v[3]);
+        e.add_clause(&[x.negative(), y.positive()]);
+        e.add_clause(&[y.negative(), z.negative()]);
+        let assumptions = [w.positive(), x.positive(), z.positive()];
+        assert_eq!(e.search(&assumptions), SearchResult::Unsat);
+        let mut failed = e.failed_assumptions().to_vec();
+        assert_eq!(failed[0], z.positive(), "the failed assumption comes first");
+        failed.sort_by_key(|l| l.code());
+        let mut expected = vec![z.positive(), x.positive()];
+        expected.sort_by_key(|l| l.code());
+        assert_eq!(failed, expected);
+        // The core alone is refuted; without x the rest is satisfiable.
+        assert_eq!(e.search(&[x.positive(), z.positive()]), SearchResult::Unsat);
+        assert_eq!(e.search(&[w.positive(), z.positive()]), SearchResult::Sat);
+        // Contradictory assumptions are a core of two; a fact false at level 0 one of one.
+        assert_eq!(e.search(&[w.positive(), w.negative()]), SearchResult::Unsat);
+        let mut failed = e.failed_assumptions().to_vec();
+        failed.sort_by_key(|l| l.code());
+        assert_eq!(failed, vec![w.positive(), w.negative()]);
+        e.add_clause(&[y.negative()]);
+        assert_eq!(e.search(&[w.positive(), y.positive()]), SearchResult::Unsat);
+        assert_eq!(e.failed_assumptions(), &[y.positive()]);
     }
 
     #[test]
