@@ -103,47 +103,35 @@ fn usage(err: &mut dyn Write, verb: &str, msg: &str) -> std::io::Result<i32> {
 
 fn parse_args(args: &[String]) -> Result<Args, String> {
     let mut a = Args::default();
-    let mut i = 0;
-    while i < args.len() {
-        let arg = args[i].as_str();
-        let (name, inline) = match arg.split_once('=') {
-            Some((n, v)) if n.starts_with("--") => (n, Some(v.to_string())),
-            _ => (arg, None),
-        };
-        let value = |i: &mut usize| -> Result<String, String> {
-            if let Some(v) = inline.clone() {
-                return Ok(v);
-            }
-            *i += 1;
-            args.get(*i)
-                .cloned()
-                .ok_or_else(|| format!("'{name}' needs a value"))
-        };
+    let mut words = super::options::VerbArgs::new(args);
+    while let Some(w) = words.next_arg() {
+        let (arg, name) = (w.word, w.name);
+        let mut value = || words.value(&w);
         match name {
-            "-q" | "--question" => a.question = Some(value(&mut i)?),
-            "--happened" => a.happened = Some(value(&mut i)?),
-            "--run" => a.run = Some(value(&mut i)?),
-            "--goal" => a.goal = Some(value(&mut i)?),
-            "--profile" => a.profile = Some(value(&mut i)?),
+            "-q" | "--question" => a.question = Some(value()?),
+            "--happened" => a.happened = Some(value()?),
+            "--run" => a.run = Some(value()?),
+            "--goal" => a.goal = Some(value()?),
+            "--profile" => a.profile = Some(value()?),
             "--max-horizon" => {
-                let v = value(&mut i)?;
+                let v = value()?;
                 a.max_horizon = Some(
                     v.parse()
                         .map_err(|_| format!("'--max-horizon {v}': expected a number"))?,
                 );
             }
             "--full" => a.full = true,
-            "--outf" => match value(&mut i)?.as_str() {
+            "--outf" => match value()?.as_str() {
                 "2" => a.json = true,
                 "0" => a.json = false,
                 v => return Err(format!("'--outf={v}': expected 0 or 2")),
             },
-            "--dot" => a.dot = Some(value(&mut i)?),
-            "--svg" => a.svg = Some(value(&mut i)?),
-            "--why" => a.why = Some(value(&mut i)?),
-            "--why-not" => a.why_not = Some(value(&mut i)?),
+            "--dot" => a.dot = Some(value()?),
+            "--svg" => a.svg = Some(value()?),
+            "--why" => a.why = Some(value()?),
+            "--why-not" => a.why_not = Some(value()?),
             "-c" => {
-                let v = value(&mut i)?;
+                let v = value()?;
                 let (n, v) = v
                     .split_once('=')
                     .ok_or_else(|| format!("'-c {v}': expected -c NAME=VALUE"))?;
@@ -163,7 +151,6 @@ fn parse_args(args: &[String]) -> Result<Args, String> {
             }
             _ => a.files.push(arg.to_string()),
         }
-        i += 1;
     }
     Ok(a)
 }
