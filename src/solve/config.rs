@@ -106,9 +106,9 @@ pub struct Config {
     pub restart_blocking: bool,
     /// Merge atoms equivalent to a literal or to a rule body by their completion before search
     /// (clasp `--eq`, on in all of clasp's configurations; see `translate::equivalences`). On
-    /// by default: over the benchmark pairs it lowers conflicts and CPU time (docs/design/solver.md,
-    /// "Search settings"). Atoms that a later step may still close a positive cycle through
-    /// (they depend on an external atom) are not merged.
+    /// by default: over the benchmark pairs it lowers conflicts and CPU time
+    /// (docs/design/solver.md, "Search settings"). Atoms that a later step may still close a
+    /// positive cycle through (they depend on an external atom) are not merged.
     pub eq: bool,
     /// Check every model with an independent stable-model test before reporting it (debug aid).
     pub check_models: bool,
@@ -123,10 +123,10 @@ pub enum SearchProfile {
     /// for programs with positive loops (an unfounded-set propagator is installed) and no
     /// `#minimize`: these get clasp's `tweety` values instead (decay 0.92, Luby restarts with
     /// unit 60, save-progress 160, and clasp's sign score from learnt-clause occurrences for
-    /// variables without a saved phase). An empirical choice, measured in conflicts over the benchmark pairs: the tweety
-    /// values cut the conflicts on the labyrinth instances by 5 to 13 times, but cost 2 to 4
-    /// times more on tight programs (pigeon, color, hanoi) and up to 15 times more on the
-    /// non-tight optimization problem tsp.
+    /// variables without a saved phase). An empirical choice, measured in conflicts over the
+    /// benchmark pairs: the tweety values cut the conflicts on the labyrinth instances by 5 to
+    /// 13 times, but cost 2 to 4 times more on tight programs (pigeon, color, hanoi) and up to
+    /// 15 times more on the non-tight optimization problem tsp.
     #[default]
     Auto,
     /// The configured values for every program.

@@ -3,10 +3,10 @@
 //! weight constraints for weight bodies, and the positive dependency graph that decides which
 //! atoms need unfounded-set propagation and whether the program is head-cycle-free.
 //!
-//! With `Config::eq`, before translation, atoms equivalent by completion to a literal (`a :- l.` as their only
-//! rule) or to a conjunctive body (`a :- B.` as their only rule) are merged with it, as clasp's
-//! `--eq` preprocessing does for these cases (`equivalences`): fewer variables, and the heuristic
-//! scores one variable instead of two that always agree.
+//! With `Config::eq`, before translation, atoms equivalent by completion to a literal (`a :- l.`
+//! as their only rule) or to a conjunctive body (`a :- B.` as their only rule) are merged with
+//! it, as clasp's `--eq` preprocessing does for these cases (`equivalences`): fewer variables,
+//! and the heuristic scores one variable instead of two that always agree.
 //!
 //! Invariants:
 //! - Every atom `1..=num_atoms` has a solver literal (`atom_lit`); index 0 holds the constant

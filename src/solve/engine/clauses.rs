@@ -1,0 +1,322 @@
+//! The clause store: long clauses in one arena with a three-word header, binary clauses only
+//! in the watch lists, adding clauses at level 0 and during search, and native weight
+//! constraints (adding, removing and recycling their slots).
+//!
+//! Invariants: the first two literals of every long clause are its watched literals; a clause
+//! added during search is ordered first (true, unassigned, then false by decreasing level) and
+//! an asserting one backjumps to the level where it became unit, so its watches are valid on
+//! the current trail.
+
+use super::*;
+
+impl Engine {
+    // ---------------------------------------------------------------- clauses
+
+    pub(super) fn clause_len(&self, cref: ClauseRef) -> usize {
+        self.arena[cref as usize] as usize
+    }
+
+    pub(super) fn clause_lit(&self, cref: ClauseRef, i: usize) -> Lit {
+        Lit::from_code(self.arena[cref as usize + HEADER + i])
+    }
+
+    pub(super) fn clause_flags(&self, cref: ClauseRef) -> u32 {
+        self.arena[cref as usize + 1]
+    }
+
+    pub(super) fn alloc_clause(&mut self, lits: &[Lit], learnt: bool, lbd: u32) -> ClauseRef {
+        let cref = self.arena.len() as u32;
+        self.arena.push(lits.len() as u32);
+        self.arena
+            .push(if learnt { FLAG_LEARNT } else { 0 } | (lbd.min(1 << 20) << 2));
+        self.arena.push(match self.deletion {
+            Deletion::Sorted => 0f32.to_bits(),
+            // As clasp: a new clause counts one use per restart so far, so that new clauses
+            // outrank old ones whose counts were halved.
+            Deletion::Basic => (1 + self.num_restarts).min(MAX_USES as u64) as u32,
+        });
+        self.arena.extend(lits.iter().map(|l| l.code() as u32));
+        self.watches[(lits[0]).code()].push(Watch {
+            cref,
+            other: lits[1],
+        });
+        self.watches[(lits[1]).code()].push(Watch {
+            cref,
+            other: lits[0],
+        });
+        if learnt {
+            self.learnts.push(cref);
+        }
+        cref
+    }
+
+    /// Watches the binary clause `a ∨ b` inline (no arena entry): each literal's list holds
+    /// the other.
+    pub(super) fn watch_binary(&mut self, a: Lit, b: Lit) {
+        self.watches[a.code()].push(Watch {
+            cref: u32::MAX,
+            other: b,
+        });
+        self.watches[b.code()].push(Watch {
+            cref: u32::MAX,
+            other: a,
+        });
+    }
+
+    pub(super) fn attach(&mut self, lits: &[Lit], learnt: bool, lbd: u32) -> Reason {
+        if lits.len() == 2 {
+            self.watch_binary(lits[0], lits[1]);
+            Reason::Binary(lits[1])
+        } else {
+            Reason::Long(self.alloc_clause(lits, learnt, lbd))
+        }
+    }
+
+    /// Adds a clause at decision level 0 (backtracking there first). Returns false when the
+    /// engine became inconsistent.
+    pub fn add_clause(&mut self, lits: &[Lit]) -> bool {
+        self.backtrack(0);
+        if self.inconsistent {
+            return false;
+        }
+        let mut c: Vec<Lit> = lits.to_vec();
+        c.sort();
+        c.dedup();
+        for w in c.windows(2) {
+            if w[0] == !w[1] {
+                return true;
+            }
+        }
+        if c.iter().any(|&l| self.val(l) == 1) {
+            return true;
+        }
+        c.retain(|&l| self.val(l) == 0);
+        self.num_clauses += 1;
+        match c.len() {
+            0 => {
+                self.inconsistent = true;
+                false
+            }
+            1 => {
+                self.assign(c[0], Reason::Decision);
+                if self.propagate().is_some() {
+                    self.inconsistent = true;
+                    return false;
+                }
+                true
+            }
+            _ => {
+                self.attach(&c, false, 0);
+                true
+            }
+        }
+    }
+
+    /// Adds a clause that the current (total) assignment falsifies, such as the clause blocking
+    /// an enumerated model's decisions, without leaving the search: backtracks only to the
+    /// second-highest level of its literals, where the clause is unit and implies its
+    /// highest-level literal's complement, so that `search_from(.., true)` goes on from there
+    /// (clasp's enumeration likewise backtracks instead of starting over; starting each model
+    /// from level 0 made 10-queens' 724 models cost 3x clasp's choices). Falls back to
+    /// [`Engine::add_clause`] (level 0) when the clause is not of that shape. Returns false when
+    /// the problem became inconsistent.
+    pub fn add_clause_resuming(&mut self, lits: &[Lit]) -> bool {
+        let mut c: Vec<Lit> = lits.to_vec();
+        c.sort();
+        c.dedup();
+        let all_false = c.iter().all(|&l| self.val(l) == -1);
+        let distinct = c.windows(2).all(|w| w[0] != !w[1]);
+        if !all_false || !distinct || c.len() < 2 || self.decision_level() == 0 {
+            return self.add_clause(lits);
+        }
+        c.sort_by_key(|&l| std::cmp::Reverse(self.level[l.var().index()]));
+        let top = self.level[c[0].var().index()];
+        let second = self.level[c[1].var().index()];
+        if top == second || second == 0 {
+            return self.add_clause(lits);
+        }
+        self.backtrack(second);
+        self.num_clauses += 1;
+        // Now c[0] is unassigned and the rest false: the clause is asserting, never conflicting.
+        let conflicting = self.add_clause_in_search(&mut c, false);
+        debug_assert!(!conflicting);
+        true
+    }
+
+    /// Adds a clause while a search is in progress (loop nogoods): watches are chosen so that
+    /// the clause is propagating or conflicting as appropriate. Returns true when the clause is
+    /// conflicting under the current assignment (the conflict is then in `self.conflict`).
+    pub(super) fn add_clause_in_search(&mut self, lits: &mut [Lit], learnt: bool) -> bool {
+        // Order: true literals first, then unassigned, then false by decreasing level.
+        lits.sort_by_key(|&l| {
+            let v = self.val(l);
+            match v {
+                1 => 0u64,
+                0 => 1,
+                _ => 2 + (u32::MAX - self.level[l.var().index()]) as u64,
+            }
+        });
+        if lits.is_empty() {
+            self.conflict.clear();
+            return true;
+        }
+        if lits.len() == 1 {
+            // A unit clause: it holds at level 0; assign it there through a restart.
+            let l = lits[0];
+            if self.level_of(l) == 0 && self.val(l) == 1 {
+                return false;
+            }
+            if self.val(l) == -1 && self.level_of(l) == 0 {
+                self.conflict.clear();
+                self.conflict.push(l);
+                return true;
+            }
+            self.backtrack(0);
+            self.assign(l, Reason::Decision);
+            return false;
+        }
+        if self.val(lits[0]) == 0 && self.val(lits[1]) == -1 {
+            // Asserting: imply lits[0] at the level where the clause became unit, so the
+            // implication survives backtracking above that level (the watches stay valid).
+            let level = self.level[lits[1].var().index()];
+            if level < self.decision_level() {
+                self.backtrack(level);
+            }
+        }
+        let reason = self.attach(lits, learnt, lits.len() as u32);
+        let (v0, v1) = (self.val(lits[0]), self.val(lits[1]));
+        if v0 == -1 {
+            self.conflict.clear();
+            self.conflict.extend_from_slice(lits);
+            return true;
+        }
+        if v0 == 0 && v1 == -1 {
+            let r = match reason {
+                Reason::Binary(_) => Reason::Binary(lits[1]),
+                other => other,
+            };
+            self.assign(lits[0], r);
+        }
+        false
+    }
+
+    /// Adds a native weight constraint `head <-> sum(w * l) >= bound` at level 0. Weights may be
+    /// negative; they are normalised by negating their literals.
+    pub fn add_weight(&mut self, head: Lit, lits: &[(Lit, i64)], bound: i64) -> bool {
+        self.backtrack(0);
+        let mut bound = bound as i128;
+        let mut norm: Vec<(Lit, u64)> = Vec::new();
+        for &(l, w) in lits {
+            if w > 0 {
+                norm.push((l, w as u64));
+            } else if w < 0 {
+                // w * l = w - w * (not l), so move -w to the other side.
+                bound -= w as i128;
+                norm.push((!l, (-(w as i128)) as u64));
+            }
+        }
+        if bound <= 0 {
+            return self.add_clause(&[head]);
+        }
+        let total: i128 = norm.iter().map(|&(_, w)| w as i128).sum();
+        if total < bound {
+            return self.add_clause(&[!head]);
+        }
+        let bound = bound as u64;
+        norm.sort_by_key(|x| std::cmp::Reverse(x.1));
+        if self.propagate().is_some() {
+            self.inconsistent = true;
+            return false;
+        }
+        let id = match self.free_weights.last() {
+            Some(&id) => id,
+            None => self.weights.len() as u32,
+        };
+        let (mut sum_true, mut sum_false) = (0u64, 0u64);
+        for &(l, w) in &norm {
+            let slot = self.weight_slot_of(l.var());
+            self.weight_watch[slot].push(WeightWatch {
+                id,
+                lit: l,
+                weight: w,
+            });
+            match self.val(l) {
+                1 => sum_true += w,
+                -1 => sum_false += w,
+                _ => {}
+            }
+        }
+        let slot = self.weight_slot_of(head.var());
+        self.weight_watch[slot].push(WeightWatch {
+            id,
+            lit: head,
+            weight: 0,
+        });
+        let total = norm.iter().map(|&(_, w)| w).sum();
+        let max_weight = norm.iter().map(|&(_, w)| w).max().unwrap_or(0);
+        let c = WeightConstraint {
+            sum_true,
+            sum_false,
+            total,
+            max_weight,
+            head,
+            lits: norm,
+            bound,
+            removed: false,
+        };
+        if id as usize == self.weights.len() {
+            self.weights.push(c);
+        } else {
+            self.free_weights.pop();
+            self.weights[id as usize] = c;
+        }
+        self.num_clauses += 1;
+        if self.propagate_weight(id as usize) || self.propagate().is_some() {
+            self.inconsistent = true;
+            return false;
+        }
+        true
+    }
+
+    /// The index in `weight_watch` of `v`'s occurrence list, made on first use.
+    pub(super) fn weight_slot_of(&mut self, v: Var) -> usize {
+        if self.weight_slot[v.index()] == NO_SLOT {
+            self.weight_slot[v.index()] = self.weight_watch.len() as u32;
+            self.weight_watch.push(Vec::new());
+        }
+        self.weight_slot[v.index()] as usize
+    }
+
+    /// Detaches the weight constraint whose literal is `head` (if `add_weight` made one), at
+    /// level 0. Its head variable becomes unconstrained by it; clauses learnt with its help
+    /// stay valid for every assignment of the other variables (the constraint only defined
+    /// `head`), so callers may retire auxiliary bounds this way once nothing reads `head`.
+    pub fn remove_weight(&mut self, head: Lit) {
+        self.backtrack(0);
+        // The constraint is found through its head's occurrence (weight 0, which no body
+        // literal has); its slot is reused by a later `add_weight`.
+        let slot = self.weight_slot[head.var().index()];
+        if slot == NO_SLOT {
+            return;
+        }
+        let Some(id) = self.weight_watch[slot as usize]
+            .iter()
+            .find(|w| w.weight == 0 && w.lit == head && !self.weights[w.id as usize].removed)
+            .map(|w| w.id as usize)
+        else {
+            return;
+        };
+        self.free_weights.push(id as u32);
+        let c = &mut self.weights[id];
+        c.removed = true;
+        let lits = std::mem::take(&mut c.lits);
+        let idu = id as u32;
+        for v in lits.iter().map(|&(l, _)| l.var()).chain([head.var()]) {
+            // The slot stays (possibly with an empty list): propagation then finds nothing.
+            let slot = self.weight_slot[v.index()];
+            if slot != NO_SLOT {
+                self.weight_watch[slot as usize].retain(|w| w.id != idu);
+            }
+        }
+    }
+}

@@ -1,0 +1,203 @@
+//! The decision heuristic: VSIDS activities on a binary heap, clause activities, phase
+//! saving and the sign score, random decisions, and the MOMS-like initial activities.
+//!
+//! Invariants: every unassigned decidable variable is in the heap (assigned ones may be too, and
+//! are skipped when popped); activities are rescaled before they overflow.
+
+use super::*;
+
+impl Engine {
+    // ---------------------------------------------------------------- heuristic
+
+    pub(super) fn bump_var(&mut self, v: Var) {
+        let a = &mut self.activity[v.index()];
+        *a += self.var_inc;
+        if *a > 1e100 {
+            for x in self.activity.iter_mut() {
+                *x *= 1e-100;
+            }
+            self.var_inc *= 1e-100;
+        }
+        if self.heap_pos[v.index()] != NO_SLOT {
+            self.heap_up(self.heap_pos[v.index()] as usize);
+        }
+    }
+
+    pub(super) fn bump_clause(&mut self, cref: ClauseRef) {
+        if self.clause_flags(cref) & FLAG_LEARNT == 0 {
+            return;
+        }
+        let i = cref as usize + 2;
+        if self.deletion == Deletion::Basic {
+            self.arena[i] = (self.arena[i] + 1).min(MAX_USES);
+            return;
+        }
+        let a = f32::from_bits(self.arena[i]) + self.cla_inc as f32;
+        self.arena[i] = a.to_bits();
+        if a > 1e20 {
+            self.rescale_clause_activities();
+        }
+    }
+
+    /// Scales every learnt clause's and loop formula's activity, and the increment, by 1e-20.
+    /// Under `Deletion::Basic` the clauses hold use counters, which are left alone.
+    pub(super) fn rescale_clause_activities(&mut self) {
+        if self.deletion == Deletion::Sorted {
+            for &c in &self.learnts {
+                let k = c as usize + 2;
+                self.arena[k] = (f32::from_bits(self.arena[k]) * 1e-20).to_bits();
+            }
+        }
+        self.rescale_loop_activities();
+        self.cla_inc *= 1e-20;
+    }
+
+    pub(super) fn heap_less(&self, a: Var, b: Var) -> bool {
+        self.activity[a.index()] > self.activity[b.index()]
+    }
+
+    pub(super) fn heap_insert(&mut self, v: Var) {
+        if self.heap_pos[v.index()] != NO_SLOT || !self.decidable[v.index()] {
+            return;
+        }
+        self.heap.push(v);
+        let i = self.heap.len() - 1;
+        self.heap_pos[v.index()] = i as u32;
+        self.heap_up(i);
+    }
+
+    pub(super) fn heap_up(&mut self, mut i: usize) {
+        let v = self.heap[i];
+        while i > 0 {
+            let parent = (i - 1) / 2;
+            if !self.heap_less(v, self.heap[parent]) {
+                break;
+            }
+            self.heap[i] = self.heap[parent];
+            self.heap_pos[self.heap[i].index()] = i as u32;
+            i = parent;
+        }
+        self.heap[i] = v;
+        self.heap_pos[v.index()] = i as u32;
+    }
+
+    pub(super) fn heap_down(&mut self, mut i: usize) {
+        let v = self.heap[i];
+        let n = self.heap.len();
+        loop {
+            let l = 2 * i + 1;
+            if l >= n {
+                break;
+            }
+            let r = l + 1;
+            let c = if r < n && self.heap_less(self.heap[r], self.heap[l]) {
+                r
+            } else {
+                l
+            };
+            if !self.heap_less(self.heap[c], v) {
+                break;
+            }
+            self.heap[i] = self.heap[c];
+            self.heap_pos[self.heap[i].index()] = i as u32;
+            i = c;
+        }
+        self.heap[i] = v;
+        self.heap_pos[v.index()] = i as u32;
+    }
+
+    pub(super) fn heap_pop(&mut self) -> Option<Var> {
+        if self.heap.is_empty() {
+            return None;
+        }
+        let top = self.heap[0];
+        let last = self.heap.pop().expect("non-empty heap");
+        self.heap_pos[top.index()] = NO_SLOT;
+        if !self.heap.is_empty() {
+            self.heap[0] = last;
+            self.heap_pos[last.index()] = 0;
+            self.heap_down(0);
+        }
+        Some(top)
+    }
+
+    pub(super) fn next_random(&mut self) -> u64 {
+        // xorshift64*.
+        self.rng ^= self.rng >> 12;
+        self.rng ^= self.rng << 25;
+        self.rng ^= self.rng >> 27;
+        self.rng.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+
+    /// The sign to decide `v` with: its saved phase, else (with `sign_from_learnts`) the
+    /// polarity occurring more often in learnt clauses, else its initial sign.
+    pub(super) fn decision_sign(&self, v: Var) -> bool {
+        let i = v.index();
+        if self.sign_from_learnts && !self.phase_saved[i] && self.occ[i] != 0 {
+            return self.occ[i] > 0;
+        }
+        self.phase[i]
+    }
+
+    pub(super) fn pick_branch(&mut self) -> Option<Lit> {
+        if self.random_permille > 0
+            && !self.heap.is_empty()
+            && self.next_random() % 1000 < self.random_permille as u64
+        {
+            let k = (self.next_random() % self.heap.len() as u64) as usize;
+            let v = self.heap[k];
+            if self.val(v.positive()) == 0 && self.decidable[v.index()] {
+                return Some(Lit::new(v, self.decision_sign(v)));
+            }
+        }
+        while let Some(v) = self.heap_pop() {
+            if self.val(v.positive()) == 0 && self.decidable[v.index()] {
+                return Some(Lit::new(v, self.decision_sign(v)));
+            }
+        }
+        None
+    }
+
+    /// Seeds the VSIDS activities with a MOMS-like score (clasp `--init-moms`): variables
+    /// occurring often in both polarities in short clauses come first. Scores are scaled into
+    /// [0, 1], below one conflict bump, so learning takes over at the first conflict.
+    pub(super) fn seed_activities(&mut self) {
+        let n = self.num_vars();
+        let mut occ = vec![0u64; 2 * n];
+        for (code, ws) in self.watches.iter().enumerate() {
+            // Each binary clause appears in two lists; count it once per literal.
+            occ[code] += ws.iter().filter(|w| w.cref == u32::MAX).count() as u64;
+        }
+        let mut pos = 0usize;
+        while pos < self.arena.len() {
+            let len = self.arena[pos] as usize;
+            if self.arena[pos + 1] & (FLAG_DELETED | FLAG_LEARNT) == 0 {
+                for &c in &self.arena[pos + HEADER..pos + HEADER + len] {
+                    occ[c as usize] += 1;
+                }
+            }
+            pos += HEADER + len;
+        }
+        let score: Vec<f64> = (0..n)
+            .map(|v| {
+                let (p, q) = (occ[2 * v], occ[2 * v + 1]);
+                ((p * q) as f64) * 1024.0 + (p + q) as f64
+            })
+            .collect();
+        let max = score.iter().copied().fold(0.0f64, f64::max);
+        if max <= 0.0 {
+            return;
+        }
+        for (v, s) in score.into_iter().enumerate() {
+            self.activity[v] = s / max;
+        }
+        let vars: Vec<Var> = self.heap.clone();
+        self.heap.clear();
+        for v in vars {
+            self.heap_pos[v.index()] = NO_SLOT;
+        }
+        for v in 0..n {
+            self.heap_insert(Var::new(v));
+        }
+    }
+}

@@ -1,0 +1,220 @@
+//! The search loop: decisions, conflicts, backjumps, restarts (Luby, glucose with blocking),
+//! limits and assumptions.
+//!
+//! Invariants: assumptions occupy decision levels `1..=assumptions.len()`; a model stays on the
+//! trail until the next `backtrack` or `add_clause`.
+
+use super::*;
+
+impl Engine {
+    // ---------------------------------------------------------------- search
+
+    pub(super) fn luby(mut i: u32) -> u64 {
+        // The Luby sequence 1 1 2 1 1 2 4 ... at 0-based index i.
+        let mut size = 1u64;
+        let mut seq = 0u32;
+        while size < i as u64 + 1 {
+            seq += 1;
+            size = 2 * size + 1;
+        }
+        let mut x = i as u64;
+        while size - 1 != x {
+            size = (size - 1) >> 1;
+            seq -= 1;
+            x %= size;
+        }
+        let _ = &mut i;
+        1u64 << seq
+    }
+
+    pub(super) fn should_restart(&mut self, lbd: Option<u32>) -> bool {
+        match &mut self.restarts {
+            Restarts::Never => false,
+            Restarts::Luby { unit, index, left } => {
+                if lbd.is_some() {
+                    *left = left.saturating_sub(1);
+                }
+                if *left == 0 {
+                    *index += 1;
+                    *left = Engine::luby(*index) * *unit as u64;
+                    return true;
+                }
+                false
+            }
+            Restarts::Glucose {
+                fast,
+                slow,
+                since,
+                trail,
+            } => {
+                if let Some(l) = lbd {
+                    let l = l as f64;
+                    *fast += (l - *fast) / 32.0;
+                    *slow += (l - *slow) / 10000.0f64.min(self.conflicts as f64 + 1.0);
+                    *since += 1;
+                    let t = self.conflict_trail as f64;
+                    if self.restart_blocking && self.conflicts > 10000 && t > 1.4 * *trail {
+                        *since = 0;
+                    }
+                    *trail += (t - *trail) / 5000.0f64.min(self.conflicts as f64 + 1.0);
+                }
+                if *since >= 50 && *fast > 1.25 * *slow {
+                    *since = 0;
+                    return true;
+                }
+                false
+            }
+        }
+    }
+
+    pub(super) fn limit_reached(&mut self) -> bool {
+        if let Some(flag) = &self.portfolio_stop {
+            if flag.load(Ordering::Relaxed) {
+                return true;
+            }
+        }
+        if let Some(flag) = &self.interrupt {
+            if flag.load(Ordering::Relaxed) {
+                self.interrupted = true;
+                return true;
+            }
+        }
+        if let Some(d) = self.deadline {
+            if Instant::now() >= d {
+                return true;
+            }
+        }
+        self.conflict_limit.is_some_and(|n| self.conflicts >= n)
+    }
+
+    /// Searches for a total assignment extending `assumptions`. On `Sat` the assignment stays
+    /// on the trail until the next `backtrack`/`add_clause`.
+    pub fn search(&mut self, assumptions: &[Lit]) -> SearchResult {
+        self.search_from(assumptions, false)
+    }
+
+    /// [`Engine::search`]; with `resume`, goes on from the current assignment instead of level
+    /// 0 (after [`Engine::add_clause_resuming`], with the same assumptions as the search that
+    /// made this assignment).
+    pub fn search_from(&mut self, assumptions: &[Lit], resume: bool) -> SearchResult {
+        self.interrupted = false;
+        self.failed.clear();
+        if self.inconsistent {
+            return SearchResult::Unsat;
+        }
+        if !resume || self.decision_level() == 0 {
+            self.backtrack(0);
+            if self.propagate().is_some() {
+                self.inconsistent = true;
+                return SearchResult::Unsat;
+            }
+            self.maybe_simplify();
+        }
+        if self.init_moms {
+            self.init_moms = false;
+            self.seed_activities();
+        }
+        let mut ticks: u64 = 0;
+        loop {
+            ticks += 1;
+            if ticks & 255 == 0 && self.limit_reached() {
+                self.backtrack(0);
+                return SearchResult::Unknown;
+            }
+            if self.propagate().is_some() {
+                self.conflicts += 1;
+                // The conflict may lie entirely below the current level (clauses added during
+                // search); move down to its highest level first.
+                let max_level = self
+                    .conflict
+                    .iter()
+                    .map(|l| self.level[l.var().index()])
+                    .max()
+                    .unwrap_or(0);
+                if max_level == 0 {
+                    self.inconsistent = true;
+                    self.backtrack(0);
+                    return SearchResult::Unsat;
+                }
+                if max_level < self.decision_level() {
+                    self.backtrack(max_level);
+                }
+                self.conflict_trail = self.trail.len();
+                let bt = self.analyze();
+                let learnt = std::mem::take(&mut self.learnt);
+                let lbd = self.lbd(&learnt);
+                self.backtrack(bt);
+                if learnt.len() == 1 {
+                    self.assign(learnt[0], Reason::Decision);
+                } else {
+                    let r = self.attach(&learnt, true, lbd);
+                    let r = match r {
+                        Reason::Binary(_) => Reason::Binary(learnt[1]),
+                        other => other,
+                    };
+                    self.assign(learnt[0], r);
+                }
+                self.learnt = learnt;
+                self.var_inc /= self.var_decay;
+                self.cla_inc /= 0.999;
+                if self.should_restart(Some(lbd)) {
+                    self.num_restarts += 1;
+                    self.backtrack(0);
+                }
+                continue;
+            }
+            self.maybe_simplify();
+            match self.reduce {
+                ReduceSchedule::Size => {
+                    // A loop formula counts as the clauses it stands for.
+                    let learnts = self.learnts.len() + self.loops.clauses;
+                    if learnts as f64 >= self.max_learnts + self.trail.len() as f64 {
+                        self.reduce_db();
+                        self.max_learnts *= 1.1;
+                    }
+                }
+                ReduceSchedule::Conflicts { first, inc, repeat } => {
+                    if self.next_reduce == 0 {
+                        self.next_reduce = self.conflicts + first;
+                        self.reduce_len = repeat;
+                    }
+                    if self.conflicts >= self.next_reduce {
+                        self.reductions += 1;
+                        self.reduce_idx += 1;
+                        if self.reduce_len > 0 && self.reduce_idx >= self.reduce_len {
+                            self.reduce_idx = 0;
+                            self.reduce_len += 1;
+                        }
+                        self.next_reduce = self.conflicts + first + self.reduce_idx * inc;
+                        self.reduce_db();
+                    }
+                }
+            }
+            let level = self.decision_level() as usize;
+            let next = if level < assumptions.len() {
+                let a = assumptions[level];
+                match self.val(a) {
+                    1 => {
+                        // Already true: open an empty level to keep levels aligned.
+                        self.trail_lim.push(self.trail.len());
+                        continue;
+                    }
+                    -1 => {
+                        self.analyze_final(a);
+                        self.backtrack(0);
+                        return SearchResult::Unsat;
+                    }
+                    _ => a,
+                }
+            } else {
+                match self.pick_branch() {
+                    Some(l) => l,
+                    None => return SearchResult::Sat,
+                }
+            };
+            self.decisions += 1;
+            self.trail_lim.push(self.trail.len());
+            self.assign(next, Reason::Decision);
+        }
+    }
+}

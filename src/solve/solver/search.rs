@@ -1,0 +1,414 @@
+//! The solver's search primitives: the next answer set (search, stability checks of
+//! non-head-cycle-free candidates, edge acyclicity), models and their costs, reporting, blocking
+//! of found models and cost bounds.
+//!
+//! Invariants: every reported model passed the minimality check when the program is not
+//! head-cycle-free; a blocked model (by its decisions, or its projection) is never reported
+//! again in the same call; constraints of one call hang on that call's guard.
+
+use super::*;
+
+impl Solver {
+    // ------------------------------------------------------------------ search primitives
+
+    /// Finds the next answer set under `assume`.
+    pub(super) fn next(&mut self, assume: &[Lit]) -> Next {
+        self.next_from(assume, false)
+    }
+
+    /// [`Solver::next`]; with `resume`, the first search goes on from the current assignment
+    /// (after `block` added the clause excluding the last model's decisions in search).
+    pub(super) fn next_from(&mut self, assume: &[Lit], resume: bool) -> Next {
+        let mut resume = resume;
+        loop {
+            match self.engine.search_from(assume, std::mem::take(&mut resume)) {
+                SearchResult::Unsat => return Next::Exhausted,
+                SearchResult::Unknown => return Next::Stopped,
+                SearchResult::Sat => {
+                    if let Some(cycle) = self.edge_cycle() {
+                        // Acyclicity (edge directives): forbid this cycle's edges together.
+                        self.engine.add_clause(&cycle);
+                        continue;
+                    }
+                    if !self.tr.non_hcf {
+                        return Next::Model;
+                    }
+                    match self.is_minimal() {
+                        Some(true) => return Next::Model,
+                        Some(false) => {}
+                        None => {
+                            self.engine.interrupted =
+                                self.engine.interrupted
+                                    || self.config.interrupt.as_ref().is_some_and(|f| {
+                                        f.load(std::sync::atomic::Ordering::Relaxed)
+                                    });
+                            return Next::Stopped;
+                        }
+                    }
+                    // Not a minimal model of its reduct: exclude this atom assignment for good.
+                    // Later steps only give rules to new atoms and to externals, whose values
+                    // the check keeps fixed, so a smaller model of the reduct extends by the
+                    // same new atoms and the assignment never becomes minimal.
+                    let block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
+                        .map(|a| {
+                            let l = self.tr.atom_lit[a];
+                            if self.engine.value(l) == Some(true) {
+                                !l
+                            } else {
+                                l
+                            }
+                        })
+                        .collect();
+                    self.engine.add_clause(&block);
+                }
+            }
+        }
+    }
+
+    /// When the edges (aspif edge directives) whose conditions hold contain a cycle, the
+    /// clause excluding that cycle: the negations of the cycle's edge conditions.
+    pub(super) fn edge_cycle(&mut self) -> Option<Vec<Lit>> {
+        if self.prog.edges.is_empty() {
+            return None;
+        }
+        let holds = |e: &Engine, l: Lit| e.value(l) == Some(true);
+        let mut active: Vec<(i32, i32, Vec<Lit>)> = Vec::new();
+        for ed in &self.prog.edges {
+            let lits: Vec<Lit> = ed.condition.iter().map(|&l| self.tr.lit(l)).collect();
+            if lits.iter().all(|&l| holds(&self.engine, l)) {
+                active.push((ed.from, ed.to, lits));
+            }
+        }
+        // Depth-first search for a back edge, remembering the edge used to reach each node.
+        let mut nodes: Vec<i32> = active.iter().flat_map(|e| [e.0, e.1]).collect();
+        nodes.sort_unstable();
+        nodes.dedup();
+        let idx = |n: i32| nodes.binary_search(&n).expect("node of an active edge");
+        let mut out: Vec<Vec<usize>> = vec![Vec::new(); nodes.len()];
+        for (k, e) in active.iter().enumerate() {
+            out[idx(e.0)].push(k);
+        }
+        let mut state = vec![0u8; nodes.len()];
+        let mut via: Vec<Option<usize>> = vec![None; nodes.len()];
+        for root in 0..nodes.len() {
+            if state[root] != 0 {
+                continue;
+            }
+            let mut stack: Vec<(usize, usize)> = vec![(root, 0)];
+            state[root] = 1;
+            while let Some(&mut (v, ref mut k)) = stack.last_mut() {
+                if *k < out[v].len() {
+                    let ek = out[v][*k];
+                    *k += 1;
+                    let w = idx(active[ek].1);
+                    if state[w] == 1 {
+                        // Cycle: w -> ... -> v -> w.
+                        let mut edges = vec![ek];
+                        let mut x = v;
+                        while x != w {
+                            let e = via[x].expect("nodes on the stack were reached by an edge");
+                            edges.push(e);
+                            x = idx(active[e].0);
+                        }
+                        let mut clause: Vec<Lit> = edges
+                            .iter()
+                            .flat_map(|&e| active[e].2.iter().map(|&l| !l))
+                            .collect();
+                        clause.sort();
+                        clause.dedup();
+                        return Some(clause);
+                    }
+                    if state[w] == 0 {
+                        state[w] = 1;
+                        via[w] = Some(ek);
+                        stack.push((w, 0));
+                    }
+                } else {
+                    state[v] = 2;
+                    stack.pop();
+                }
+            }
+        }
+        None
+    }
+
+    pub(super) fn true_atoms(&self) -> Vec<u32> {
+        (1..=self.prog.num_atoms)
+            .filter(|&a| self.engine.value(self.tr.atom_lit[a as usize]) == Some(true))
+            .collect()
+    }
+
+    /// Whether the current total assignment's atoms form a minimal model of the reduct;
+    /// `None` when a limit stopped the check.
+    pub(super) fn is_minimal(&mut self) -> Option<bool> {
+        self.minimality_checks += 1;
+        let model = self.true_atoms();
+        let mut in_m = vec![false; self.prog.num_atoms as usize + 1];
+        for &a in &model {
+            in_m[a as usize] = true;
+        }
+        let mut sub = Engine::new();
+        sub.deadline = self.engine.deadline;
+        sub.interrupt = self.engine.interrupt.clone();
+        let vars: Vec<Option<Lit>> = (0..=self.prog.num_atoms as usize)
+            .map(|a| {
+                if in_m[a] {
+                    Some(sub.new_var().positive())
+                } else {
+                    None
+                }
+            })
+            .collect();
+        let holds = |l: i32| {
+            if l > 0 {
+                in_m[l as usize]
+            } else {
+                !in_m[(-l) as usize]
+            }
+        };
+        for r in &self.prog.rules {
+            let heads: Vec<Lit> = r.head.iter().filter_map(|&h| vars[h as usize]).collect();
+            if r.head.is_empty() {
+                continue;
+            }
+            // The reduct's body over the smaller model Y: positive literals vary, negative
+            // ones are fixed by M.
+            let mut clause_body: Vec<Lit> = Vec::new();
+            match r.body {
+                BodyRef::Normal(ls) => {
+                    if ls.iter().any(|&l| l < 0 && !holds(l)) {
+                        continue;
+                    }
+                    if ls.iter().any(|&l| l > 0 && !in_m[l as usize]) {
+                        continue;
+                    }
+                    for &l in ls.iter().filter(|&&l| l > 0) {
+                        clause_body.push(!vars[l as usize].expect("positive body atom is in M"));
+                    }
+                }
+                BodyRef::Weight { lower, lits } => {
+                    let mut fixed = 0i64;
+                    let mut var_lits = Vec::new();
+                    for &(l, w) in lits {
+                        if l < 0 {
+                            if holds(l) {
+                                fixed += w;
+                            }
+                        } else if let Some(v) = vars[l as usize] {
+                            var_lits.push((v, w));
+                        }
+                    }
+                    let b = sub.new_var().positive();
+                    sub.add_weight(b, &var_lits, lower - fixed);
+                    clause_body.push(!b);
+                }
+            }
+            match r.head_kind {
+                HeadKind::Disjunction => {
+                    let mut c = clause_body.clone();
+                    c.extend_from_slice(&heads);
+                    sub.add_clause(&c);
+                }
+                HeadKind::Choice => {
+                    for &h in &heads {
+                        let mut c = clause_body.clone();
+                        c.push(h);
+                        sub.add_clause(&c);
+                    }
+                }
+            }
+        }
+        let strict: Vec<Lit> = vars.iter().flatten().map(|&l| !l).collect();
+        // Free externals keep their value in the reduct check.
+        for &(a, _) in &self.prog.externals {
+            if self.tr.free[a as usize] {
+                if let Some(v) = vars[a as usize] {
+                    sub.add_clause(&[v]);
+                }
+            }
+        }
+        if !sub.add_clause(&strict) {
+            return Some(true);
+        }
+        match sub.search(&[]) {
+            SearchResult::Sat => Some(false),
+            SearchResult::Unsat => Some(true),
+            SearchResult::Unknown => None,
+        }
+    }
+
+    pub(super) fn costs(&self) -> Vec<i64> {
+        self.tr
+            .minimize
+            .iter()
+            .map(|(_, lits)| {
+                lits.iter()
+                    .filter(|&&(l, _)| self.engine.value(l) == Some(true))
+                    .map(|&(_, w)| w)
+                    .sum()
+            })
+            .collect()
+    }
+
+    /// Builds the model on the trail.
+    pub(super) fn model(&self, number: usize, optimal: bool) -> Model {
+        let atoms = self.true_atoms();
+        let mut symbols = Vec::new();
+        let mut shown: HashSet<&str> = HashSet::new();
+        for (o, &l) in self.prog.outputs.iter().zip(&self.tr.output_lits) {
+            if self.engine.value(l) == Some(true) && shown.insert(o.symbol.as_str()) {
+                symbols.push(o.symbol.clone());
+            }
+        }
+        let mut cr_applied: Vec<String> = self
+            .prog
+            .cr_rules
+            .iter()
+            .zip(&self.cr_lits)
+            .filter(|(_, &l)| self.engine.value(l) == Some(true))
+            .map(|(c, _)| c.label.clone())
+            .collect();
+        cr_applied.sort();
+        let support = supports(&self.prog, &atoms);
+        Model {
+            number,
+            symbols,
+            atoms,
+            costs: self.costs(),
+            cr_applied,
+            support,
+            optimal,
+        }
+    }
+
+    /// Reports the model on the trail unless its projection was seen; returns false when the
+    /// call must stop.
+    pub(super) fn report(&mut self, call: &mut Call<'_>, optimal: bool, dedup: bool) -> bool {
+        let mut m = self.model(call.phase_count + 1, optimal);
+        if self.config.check_models {
+            if let Err(v) = crate::solve::check::check(&self.prog, &m.atoms) {
+                panic!("internal error: the solver found a model that is not stable: {v:?}");
+            }
+        }
+        if dedup {
+            let key: Vec<u32> = m
+                .atoms
+                .iter()
+                .copied()
+                .filter(|&a| !self.is_cr[a as usize])
+                .collect();
+            if !call.seen.insert(key) {
+                return true;
+            }
+        }
+        call.note_model();
+        call.phase_count += 1;
+        m.number = call.phase_count;
+        if !m.costs.is_empty() {
+            call.has_costs = true;
+        }
+        if !(call.sink)(&m) {
+            call.done = true;
+            return false;
+        }
+        if !call.unlimited && self.config.models > 0 && call.phase_count >= self.config.models {
+            call.done = true;
+            return false;
+        }
+        true
+    }
+
+    /// The literals to block on for projected enumeration, if any.
+    pub(super) fn projection(&self) -> Option<Vec<Lit>> {
+        if self.config.project {
+            if !self.prog.projections.is_empty() {
+                return Some(
+                    self.prog
+                        .projections
+                        .iter()
+                        .map(|&a| self.tr.atom_lit[a as usize])
+                        .collect(),
+                );
+            }
+            return Some(self.tr.output_lits.clone());
+        }
+        if !self.cr_lits.is_empty() {
+            return Some(
+                (1..=self.prog.num_atoms as usize)
+                    .filter(|&a| !self.is_cr[a])
+                    .map(|a| self.tr.atom_lit[a])
+                    .collect(),
+            );
+        }
+        None
+    }
+
+    /// Adds the clause excluding the current model (under `guard`). Returns true when the
+    /// search may resume from the assignment this leaves (decision-based blocking, added by
+    /// backtracking only to the clause's second-highest level), false when it restarted.
+    pub(super) fn block(&mut self, guard: Lit, projection: &Option<Vec<Lit>>) -> bool {
+        let mut c = vec![!guard];
+        match projection {
+            Some(lits) => {
+                for &l in lits {
+                    match self.engine.value(l) {
+                        Some(true) => c.push(!l),
+                        Some(false) => c.push(l),
+                        None => {}
+                    }
+                }
+            }
+            None => {
+                for d in self.engine.decisions_on_trail() {
+                    if d != guard {
+                        c.push(!d);
+                    }
+                }
+                return self.engine.add_clause_resuming(&c);
+            }
+        }
+        self.engine.add_clause(&c);
+        false
+    }
+
+    /// Adds `guard -> costs <lex bound` (or `<=lex` when `inclusive`), comparing the first
+    /// `bound.len()` levels.
+    pub(super) fn add_cost_bound(&mut self, guard: Lit, bound: &[i64], inclusive: bool) {
+        let k = bound.len().min(self.tr.minimize.len());
+        if k == 0 {
+            return;
+        }
+        self.engine.backtrack(0);
+        // Bounds from the command line may be anything; the sums they bound stay within
+        // +-2^62 (see `aspif::WEIGHT_SUM_MAX`), so saturating at the ends of i64 keeps the
+        // meaning.
+        let mut bound = bound[..k].to_vec();
+        if inclusive {
+            bound[k - 1] = bound[k - 1].saturating_add(1);
+        }
+        let levels: Vec<Vec<(Lit, i64)>> = self.tr.minimize[..k]
+            .iter()
+            .map(|(_, l)| l.clone())
+            .collect();
+        let mut at_most = Vec::new();
+        let mut below = Vec::new();
+        for (i, lits) in levels.iter().enumerate() {
+            let neg: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (l, -w)).collect();
+            // sum <= c  <=>  -sum >= -c.
+            let a = self.aux_weight(guard, &neg, bound[i].saturating_neg());
+            let b = self.aux_weight(guard, &neg, bound[i].saturating_sub(1).saturating_neg());
+            at_most.push(a);
+            below.push(b);
+        }
+        let mut big = vec![!guard];
+        for i in 0..k {
+            // g_i <-> a_0 and ... and a_{i-1} and b_i; a full equivalence keeps every auxiliary
+            // variable a function of the atoms, which decision-based blocking relies on.
+            let mut conj = at_most[..i].to_vec();
+            conj.push(below[i]);
+            let g = self.aux_conjunction(guard, &conj);
+            big.push(g);
+        }
+        self.engine.add_clause(&big);
+    }
+}

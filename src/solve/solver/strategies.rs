@@ -1,0 +1,218 @@
+//! The solver's strategies over the search primitives: plain enumeration, lexicographic
+//! branch-and-bound optimization (clasp's "opt") and brave/cautious consequences.
+//!
+//! Invariants: the last model of an optimization is reported optimal only once the bound below
+//! it is unsatisfiable; for consequences each model reports the current estimate and the next
+//! model must change it (a clause on the call's guard), so the last one reported is the answer.
+
+use super::*;
+
+impl Solver {
+    // ------------------------------------------------------------------ strategies
+
+    pub(super) fn run_main(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
+        let dedup = !self.cr_lits.is_empty();
+        match self.config.enum_mode {
+            EnumMode::Brave | EnumMode::Cautious => self.run_consequences(call, assume, guard),
+            EnumMode::Auto => {
+                let optimize =
+                    !self.tr.minimize.is_empty() && self.config.opt_mode != OptMode::Ignore;
+                match self.config.opt_mode.clone() {
+                    OptMode::Opt if optimize => {
+                        self.run_optimize(call, assume, dedup, true);
+                    }
+                    OptMode::OptN if optimize => {
+                        call.unlimited = true;
+                        let proven = self.run_optimize(call, assume, dedup, true);
+                        call.unlimited = false;
+                        if proven && !call.done {
+                            if let Some(best) = self.best.clone() {
+                                let g = self.new_guard();
+                                self.add_cost_bound(g, &best, true);
+                                let mut a2 = assume.to_vec();
+                                a2.push(g);
+                                call.optimum = false;
+                                call.phase_count = 0;
+                                call.seen.clear();
+                                let ok = self.run_enumerate(call, &a2, g, dedup, true);
+                                call.optimum = ok;
+                                self.retire(g);
+                            }
+                        }
+                    }
+                    OptMode::Enum(bound) if optimize && !bound.is_empty() => {
+                        let g = self.new_guard();
+                        self.add_cost_bound(g, &bound, true);
+                        let mut a2 = assume.to_vec();
+                        a2.push(g);
+                        self.run_enumerate(call, &a2, g, dedup, false);
+                        self.retire(g);
+                    }
+                    _ => {
+                        self.run_enumerate(call, assume, guard, dedup, false);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Enumerates answer sets; returns true when the space was exhausted.
+    pub(super) fn run_enumerate(
+        &mut self,
+        call: &mut Call<'_>,
+        assume: &[Lit],
+        guard: Lit,
+        dedup: bool,
+        optimal: bool,
+    ) -> bool {
+        let projection = self.projection();
+        let mut resume = false;
+        loop {
+            match self.next_from(assume, std::mem::take(&mut resume)) {
+                Next::Exhausted => {
+                    call.exhausted = true;
+                    return true;
+                }
+                Next::Stopped => {
+                    call.stopped = true;
+                    return false;
+                }
+                Next::Model => {
+                    // A model reached without a decision beyond the assumptions (one level
+                    // each) is the only one: the space is exhausted even if the model limit
+                    // stops the enumeration here, as clasp reports it.
+                    let unique = self.engine.decision_level() as usize <= assume.len();
+                    let go = self.report(call, optimal, dedup);
+                    let resumable = self.block(guard, &projection);
+                    if !go {
+                        // The next call starts over from level 0.
+                        self.engine.backtrack(0);
+                        if unique {
+                            call.exhausted = true;
+                        }
+                        return unique;
+                    }
+                    resume = resumable;
+                }
+            }
+        }
+    }
+
+    /// Branch and bound; returns true when the optimum was proven. Reports improving models
+    /// when `report` is set, otherwise remembers the best one in `call.seen`-independent state.
+    pub(super) fn run_optimize(
+        &mut self,
+        call: &mut Call<'_>,
+        assume: &[Lit],
+        dedup: bool,
+        report: bool,
+    ) -> bool {
+        let mut bound_guard: Option<Lit> = None;
+        let mut found = false;
+        loop {
+            let mut a = assume.to_vec();
+            if let Some(g) = bound_guard {
+                a.push(g);
+            }
+            match self.next(&a) {
+                Next::Exhausted => {
+                    if let Some(g) = bound_guard {
+                        self.retire(g);
+                    }
+                    if found {
+                        call.optimum = true;
+                        call.exhausted = true;
+                    } else {
+                        call.exhausted = true;
+                    }
+                    return found;
+                }
+                Next::Stopped => {
+                    call.stopped = true;
+                    if let Some(g) = bound_guard {
+                        self.retire(g);
+                    }
+                    return false;
+                }
+                Next::Model => {
+                    found = true;
+                    let costs = self.costs();
+                    self.best = Some(costs.clone());
+                    if report && !self.report(call, false, dedup) {
+                        if let Some(g) = bound_guard {
+                            self.retire(g);
+                        }
+                        return false;
+                    }
+                    let g = self.new_guard();
+                    self.add_cost_bound(g, &costs, false);
+                    if let Some(old) = bound_guard {
+                        self.retire(old);
+                    }
+                    bound_guard = Some(g);
+                }
+            }
+        }
+    }
+
+    pub(super) fn run_consequences(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
+        let brave = self.config.enum_mode == EnumMode::Brave;
+        let n = self.tr.output_lits.len();
+        let mut current: Option<Vec<bool>> = None;
+        loop {
+            match self.next(assume) {
+                Next::Exhausted => {
+                    call.exhausted = true;
+                    break;
+                }
+                Next::Stopped => {
+                    call.stopped = true;
+                    break;
+                }
+                Next::Model => {
+                    let truth: Vec<bool> = self
+                        .tr
+                        .output_lits
+                        .iter()
+                        .map(|&l| self.engine.value(l) == Some(true))
+                        .collect();
+                    let cur = match current.take() {
+                        None => truth,
+                        Some(c) => (0..n)
+                            .map(|i| {
+                                if brave {
+                                    c[i] || truth[i]
+                                } else {
+                                    c[i] && truth[i]
+                                }
+                            })
+                            .collect(),
+                    };
+                    let mut m = self.model(call.count + 1, false);
+                    m.symbols.clear();
+                    let mut shown: HashSet<&str> = HashSet::new();
+                    for (i, o) in self.prog.outputs.iter().enumerate() {
+                        if cur[i] && shown.insert(o.symbol.as_str()) {
+                            m.symbols.push(o.symbol.clone());
+                        }
+                    }
+                    call.note_model();
+                    if !(call.sink)(&m) {
+                        call.done = true;
+                        break;
+                    }
+                    let mut c = vec![!guard];
+                    for (&l, &now) in self.tr.output_lits.iter().zip(&cur) {
+                        if brave && !now {
+                            c.push(l);
+                        } else if !brave && now {
+                            c.push(!l);
+                        }
+                    }
+                    current = Some(cur);
+                    self.engine.add_clause(&c);
+                }
+            }
+        }
+    }
+}
