@@ -353,10 +353,7 @@ pub fn run_ask(
     }
     let mut asked: Vec<String> = Vec::new();
     let prompt = if a.json { "" } else { "> " };
-    loop {
-        let Some(line) = lines.next_line(prompt, out)? else {
-            break;
-        };
+    while let Some(line) = lines.next_line(prompt, out)? {
         let typed = line.trim();
         if typed.is_empty() || typed == "quit" || typed == "exit" {
             break;
