@@ -115,10 +115,10 @@ impl<'a> Grounder<'a> {
     }
 
     /// Grounds `lits[i..]` and calls `k` for every solution.
-    pub(super) fn join(
+    pub(super) fn join<L: std::borrow::Borrow<NLit>>(
         &mut self,
         ctx: &mut Ctx,
-        lits: &[NLit],
+        lits: &[L],
         i: usize,
         ranges: &[Option<Range>],
         k: &mut dyn FnMut(&mut Self, &mut Ctx),
@@ -126,7 +126,7 @@ impl<'a> Grounder<'a> {
         if self.stopped.is_some() {
             return;
         }
-        let Some(lit) = lits.get(i) else {
+        let Some(lit) = lits.get(i).map(L::borrow) else {
             k(self, ctx);
             return;
         };
@@ -355,7 +355,7 @@ impl Grounder<'_> {
             });
             return;
         }
-        let body: Vec<NLit> = order.iter().map(|&j| stmt.body[j].clone()).collect();
+        let body: Vec<&NLit> = order.iter().map(|&j| &stmt.body[j]).collect();
         let ranges: Vec<Option<Range>> = order
             .iter()
             .map(|&j| ranges.get(j).copied().flatten())

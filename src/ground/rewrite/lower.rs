@@ -30,9 +30,9 @@ impl Rewriter<'_> {
             TermKind::Infimum => NTerm::Sym(self.syms.inf()),
             TermKind::Supremum => NTerm::Sym(self.syms.sup()),
             TermKind::Function { name, args, .. } => {
-                let list = args.first().cloned().unwrap_or_default();
+                let list: &[ast::Term] = args.first().map_or(&[], Vec::as_slice);
                 let mut nargs = Vec::with_capacity(list.len());
-                for a in &list {
+                for a in list {
                     nargs.push(self.term(a, vars, extra)?);
                 }
                 let name_sym = self.syms.names.intern(name);
@@ -340,7 +340,7 @@ impl Rewriter<'_> {
         };
         self.projections += 1;
         let name = format!("#proj{}", self.projections);
-        let args = a.args.first().cloned().unwrap_or_default();
+        let args: &[ast::Term] = a.args.first().map_or(&[], Vec::as_slice);
         let mut head_args = Vec::new();
         let mut body_args = Vec::new();
         let mut lit_args = Vec::new();

@@ -323,13 +323,28 @@ struct Vars {
 
 impl Vars {
     fn slot(&mut self, name: &str, span: Span) -> u32 {
-        if let Some(&v) = self.map.get(name) {
+        // Rules have few variables: a scan beats hashing (and a second copy of each name);
+        // the map indexes the names only past `SCAN`.
+        const SCAN: usize = 16;
+        if self.names.len() <= SCAN {
+            if let Some(v) = self.names.iter().position(|n| n == name) {
+                return v as u32;
+            }
+        } else if let Some(&v) = self.map.get(name) {
             return v;
         }
         let v = self.names.len() as u32;
         self.names.push(name.to_string());
         self.spans.push(span);
-        self.map.insert(name.to_string(), v);
+        if self.names.len() > SCAN {
+            if self.map.is_empty() {
+                for (i, n) in self.names.iter().enumerate() {
+                    self.map.insert(n.clone(), i as u32);
+                }
+            } else {
+                self.map.insert(name.to_string(), v);
+            }
+        }
         v
     }
 

@@ -319,10 +319,11 @@ impl Rewriter<'_> {
         let n = vars.names.len();
         // Global variables: those outside aggregate elements and head conditions.
         let mut global = vec![false; n];
-        let mark = |t: &NTerm, g: &mut Vec<bool>| {
-            let mut vs = Vec::new();
-            t.vars(&mut vs);
-            for v in vs {
+        let mut buf = Vec::new();
+        let mut mark = |t: &NTerm, g: &mut Vec<bool>| {
+            buf.clear();
+            t.vars(&mut buf);
+            for &v in &buf {
                 g[v as usize] = true;
             }
         };
