@@ -92,11 +92,11 @@ pub struct Config {
     pub init_moms: bool,
     /// Stop with `UNKNOWN` after this many conflicts (clasp `--solve-limit`; for tuning).
     pub conflict_limit: Option<u64>,
-    /// Bump the variables of loop nogoods when they are learnt (clasp `--score-other=all`).
     /// Learn an unfounded set as one shared loop formula (`engine/loops.rs`) instead of one
     /// clause per atom. Off by default: it halves the peak memory on labyrinth but raised the
     /// conflict counts (docs/design/solver.md, "Loop nogoods").
     pub shared_loops: bool,
+    /// Bump the variables of loop nogoods when they are learnt (clasp `--score-other=all`).
     pub score_other: bool,
     /// Decide variables without a saved phase with the polarity that occurs more often in
     /// learnt clauses (clasp's VSIDS sign score). Only matters when phases are rarely saved
@@ -129,6 +129,10 @@ pub enum SearchProfile {
     /// 15 times more on the non-tight optimization problem tsp.
     #[default]
     Auto,
+    /// The tweety values for every program without `#minimize`, tight or not (clasp's choice);
+    /// the configured values for the others. A tuning option: over the benchmark rows it took
+    /// 1.17 times the conflicts of `Auto` (docs/bench/solve-2026-12-03.txt).
+    Decision,
     /// The configured values for every program.
     Fixed,
 }
