@@ -18,7 +18,7 @@ use crate::action::ast::Value;
 use crate::action::Options;
 
 use super::episode::{run, LearnConfig, RunReport, World};
-use super::kb::{Cache, CachedWorld, KbError, KbSpec, KbWorld};
+use super::kb::{Cache, KbError, KbSpec, KbWorld};
 use super::score::{relaxed, strict, Counts};
 use super::term::{in_hand, o, r, rel, Axiom, AxiomKind, Literal};
 use crate::base::rng::SplitMix64;
@@ -233,7 +233,8 @@ pub fn one_run_with(
         #[cfg(feature = "sim")]
         Oracle::Physics => {
             let world = super::physics::PhysicsWorld::new(super::physics::Catalogue::h1());
-            let mut oracle = CachedWorld::new(world, caches.oracle.clone(), "physics h1");
+            let mut oracle =
+                super::kb::CachedWorld::new(world, caches.oracle.clone(), "physics h1");
             learn_against(spec, config, seed, caches, &mut oracle)
         }
         #[cfg(not(feature = "sim"))]
