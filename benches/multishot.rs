@@ -4,12 +4,15 @@
 //! call stays flat, nothing leaks from one call into the next; medians beside, as they resist
 //! the preemptions of a loaded machine), with the engine's variable and clause counts at the
 //! end; then 20,000 `add_program` steps of a growing chain, first and last 1,000 steps
-//! compared likewise (a step costs the same at any length). Then criterion measures one call on
+//! compared likewise (a step costs the same at any length); then `step(t)` parts grounded one
+//! by one on a `Control`, the first and last tenth compared. Then criterion measures one call on
 //! a warm solver, and one `add_program` step.
 //!
 //! `cargo bench --no-default-features --bench multishot`; `LUCENT_MULTISHOT_CALLS=N` changes
 //! the number of calls of the flatness runs, `LUCENT_MULTISHOT_STEPS=N` the chain's steps,
-//! `LUCENT_MULTISHOT_CRITERION=0` skips criterion.
+//! `LUCENT_MULTISHOT_PARTS=N` the number of `step(t)` parts a `Control` grounds one by one
+//! (the grounding cost per part, first and last tenth compared), `LUCENT_MULTISHOT_CRITERION=0`
+//! skips criterion.
 
 use criterion::{black_box, Criterion};
 use lucent::ground::program::{Body, CrRule, GroundProgram, HeadKind, Output, Rule};
@@ -222,6 +225,60 @@ fn chain(steps: u32, every: u32) {
     );
 }
 
+/// A planner-like program in parts: `base` with 20 fluents at step 0, `step(t)` with inertia,
+/// one action choice and a goal check per step (every part adds the same number of atoms).
+const STEPS_PROGRAM: &str = "
+    #program base.
+    f(1..20). holds(F,0) :- f(F), F < 10.
+    #program step(t).
+    { occurs(a(F),t) : f(F) } 1.
+    holds(F,t) :- occurs(a(F),t).
+    holds(F,t) :- holds(F,t-1), not ab(F,t).
+    ab(F,t) :- occurs(a(G),t), f(F), F = G + 1.
+    done(t) :- holds(20,t).
+";
+
+/// `steps` parts `step(1..steps)` grounded one by one on one `Control` (a solve call after
+/// each, as the planner does); prints the mean time of `ground` over the first and the last
+/// tenth of the steps. Each part adds the same atoms, so a grounding that costs what its part
+/// adds keeps last/first near 1; a grounding that reads every earlier atom grows linearly.
+fn control_steps(steps: i32) {
+    use lucent::control::{Control, ControlConfig, Part, Symbol};
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("steps", STEPS_PROGRAM).expect("the program parses");
+    ctl.ground(&[Part::base()]).expect("base grounds");
+    let window = (steps / 10).max(1);
+    let (mut first, mut last) = (Vec::new(), Vec::new());
+    let start = Instant::now();
+    for t in 1..=steps {
+        let t0 = Instant::now();
+        ctl.ground(&[Part::new("step", vec![Symbol::number(t)])])
+            .expect("the step grounds");
+        let dt = t0.elapsed().as_secs_f64();
+        if t <= window {
+            first.push(dt);
+        }
+        if t > steps - window {
+            last.push(dt);
+        }
+        black_box(ctl.solve(&Default::default(), |_| false).models);
+    }
+    let ((first, first_med), (last, last_med)) = (stats(&mut first), stats(&mut last));
+    println!(
+        "Control: {steps} step parts grounded one by one: {:.2} s; ground mean of the first \
+         {window}: {:.3} ms/step, of the last {window}: {:.3} ms/step, last/first {:.2} \
+         (medians {:.3} and {:.3}, last/first {:.2}); atoms at the end: {}",
+        start.elapsed().as_secs_f64(),
+        first * 1e-3,
+        last * 1e-3,
+        last / first,
+        first_med * 1e-3,
+        last_med * 1e-3,
+        last_med / first_med,
+        ctl.num_atoms()
+    );
+}
+
 fn main() {
     // `cargo test --all-targets` runs benches without `--bench`, as a smoke test: small counts.
     let bench = std::env::args().any(|a| a == "--bench");
@@ -236,6 +293,11 @@ fn main() {
         .and_then(|v| v.parse().ok())
         .unwrap_or(if bench { 20_000 } else { 2_000 });
     chain(steps, 1000);
+    let parts: i32 = std::env::var("LUCENT_MULTISHOT_PARTS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(if bench { 200 } else { 20 });
+    control_steps(parts);
     if std::env::var("LUCENT_MULTISHOT_CRITERION").is_ok_and(|v| v == "0") {
         return;
     }

@@ -281,3 +281,57 @@ fn ask_over_a_saved_run() {
     assert_eq!(code, 65);
     assert!(err.contains("reach.lp"), "{err}");
 }
+
+#[test]
+fn an_answer_that_uses_a_learned_axiom_says_so() {
+    // The learner profile drops E7; the file `lucent learn` writes brings it back as the
+    // learned axiom L2 with its strength, and the why-not answer of Example 2 cites it.
+    const LEARNED: &str = "tests/data/explain/learned_e7.ald";
+    let text = std::fs::read_to_string(format!("{}/{LEARNED}", env!("CARGO_MANIFEST_DIR")));
+    let store = lucent::learn::strength::Store::from_ald(&text.unwrap()).unwrap();
+    assert_eq!(
+        store.axioms.len(),
+        1,
+        "the file reads back as the learner's store"
+    );
+    let q = "Why did you not pick up the white block at step 0?";
+    let args = [
+        "explain",
+        EXAMPLE,
+        LEARNED,
+        "--profile",
+        "learner",
+        "--happened",
+        PAPER_PLAN,
+        "-q",
+        q,
+    ];
+    let (code, out, err) = run(&args);
+    assert_eq!(code, 0, "{err}");
+    insta::assert_snapshot!(out.trim());
+    let mut json = args.to_vec();
+    json.push("--outf=2");
+    let (code, out, err) = run(&json);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        v["learned"],
+        serde_json::json!([{
+            "label": "L2",
+            "strength": 0.9,
+            "axiom": "impossible pickup(R1, O1) if relation(below, O1, O2)"
+        }])
+    );
+    let nodes = v["tree"]["nodes"].as_array().unwrap();
+    let path = v["tree"]["path"].as_array().unwrap();
+    let root = &nodes[path[0].as_u64().unwrap() as usize];
+    assert_eq!(root["learned"]["label"], "L2", "{root}");
+    // Without the learned file nothing is cited (and E7 is missing: the action CWA answers).
+    let (code, out, err) = run(&args[..2]
+        .iter()
+        .chain(&args[3..])
+        .copied()
+        .collect::<Vec<_>>());
+    assert_eq!(code, 0, "{err}");
+    assert!(!out.contains("learned"), "{out}");
+}

@@ -322,6 +322,51 @@ fn assumptions_and_externals() {
 }
 
 #[test]
+fn core_of_failed_assumptions() {
+    // {a; b; c; d}. e :- a. :- e, c.  Assuming a, b, c, d fails because of a and c only.
+    let p = program(
+        5,
+        vec![
+            Rule::choice(&[1, 2, 3, 4], &[]),
+            Rule::normal(&[5], &[1]),
+            Rule::normal(&[], &[5, 3]),
+        ],
+    );
+    let mut s = Solver::new(&p, Config::default());
+    let r = s.solve_with(&[1, 2, 3, 4]);
+    assert_eq!(r.outcome, Outcome::Unsatisfiable);
+    assert_eq!(s.core(), Some(&[1, 3][..]), "in the caller's order");
+    // The core is refuted on its own, and each half of it is satisfiable.
+    assert_eq!(s.solve_with(&[1, 3]).outcome, Outcome::Unsatisfiable);
+    assert_eq!(s.solve_with(&[2, 3, 4]).outcome, Outcome::Satisfiable);
+    assert_eq!(s.core(), None, "no core after a model");
+    assert_eq!(s.solve_with(&[1, 2, 4]).outcome, Outcome::Satisfiable);
+    // A negative assumption takes part like a positive one: -e with a.
+    assert_eq!(s.solve_with(&[2, -5, 1]).outcome, Outcome::Unsatisfiable);
+    assert_eq!(s.core(), Some(&[-5, 1][..]));
+
+    // Unfounded loops: a :- b. b :- a. {c; d}. :- c, not a.  Assuming d and c fails on c alone
+    // (a and b are unfounded, so c is refuted).
+    let p = program(
+        4,
+        vec![
+            Rule::normal(&[1], &[2]),
+            Rule::normal(&[2], &[1]),
+            Rule::choice(&[3, 4], &[]),
+            Rule::normal(&[], &[3, -1]),
+        ],
+    );
+    let mut s = Solver::new(&p, Config::default());
+    assert_eq!(s.solve_with(&[4, 3]).outcome, Outcome::Unsatisfiable);
+    assert_eq!(s.core(), Some(&[3][..]));
+    // A program with no answer set at all has the empty core.
+    let p = program(1, vec![Rule::normal(&[], &[-1])]);
+    let mut s = Solver::new(&p, Config::default());
+    assert_eq!(s.solve_with(&[-1]).outcome, Outcome::Unsatisfiable);
+    assert_eq!(s.core(), Some(&[][..]));
+}
+
+#[test]
 fn incremental_constraint_keeps_solver() {
     // {a; b}. then add :- a. : models go from 4 to 2.
     let p = program(2, vec![Rule::choice(&[1, 2], &[])]);

@@ -3,19 +3,29 @@
 //! Invariant: `Sym(i)` is valid for the interner that produced it; `resolve(intern(s)) == s`.
 //! Interners are per run and never shrink.
 
-use hashbrown::HashMap;
+use hashbrown::{DefaultHashBuilder, HashTable};
+use std::hash::BuildHasher;
 
 /// An interned string.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Sym(pub u32);
 
 /// Maps strings to [`Sym`]s and back.
-#[derive(Default, Debug, Clone)]
+#[derive(Default, Clone)]
 pub struct Interner {
-    /// Id of each string.
-    map: HashMap<Box<str>, Sym>,
+    /// Ids, hashed by their string (each string is stored once, in `strings`).
+    table: HashTable<Sym>,
+    hasher: DefaultHashBuilder,
     /// String of each id.
     strings: Vec<Box<str>>,
+}
+
+impl std::fmt::Debug for Interner {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Interner")
+            .field("strings", &self.strings)
+            .finish()
+    }
 }
 
 impl Interner {
@@ -24,20 +34,30 @@ impl Interner {
         Interner::default()
     }
 
-    /// The id of `s`, allocating one if `s` is new.
+    /// The id of `s`, created if new.
     pub fn intern(&mut self, s: &str) -> Sym {
-        if let Some(&sym) = self.map.get(s) {
+        let hash = self.hasher.hash_one(s);
+        let strings = &self.strings;
+        if let Some(&sym) = self.table.find(hash, |&k| &*strings[k.0 as usize] == s) {
             return sym;
         }
         let sym = Sym(self.strings.len() as u32);
         self.strings.push(s.into());
-        self.map.insert(s.into(), sym);
+        let Interner {
+            table,
+            hasher,
+            strings,
+        } = self;
+        table.insert_unique(hash, sym, |&k| hasher.hash_one(&*strings[k.0 as usize]));
         sym
     }
 
     /// The id of `s` if it was interned.
     pub fn get(&self, s: &str) -> Option<Sym> {
-        self.map.get(s).copied()
+        let hash = self.hasher.hash_one(s);
+        self.table
+            .find(hash, |&k| &*self.strings[k.0 as usize] == s)
+            .copied()
     }
 
     /// The string of `sym`.

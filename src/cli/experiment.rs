@@ -105,45 +105,33 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
         json: false,
     };
     let mut positional = Vec::new();
-    let mut i = 0;
-    while i < args.len() {
-        let a = args[i].as_str();
-        let (name, inline) = match a.split_once('=') {
-            Some((n, v)) if n.starts_with('-') => (n, Some(v.to_string())),
-            _ => (a, None),
-        };
-        let value = |i: &mut usize| -> Result<String, String> {
-            if let Some(v) = &inline {
-                return Ok(v.clone());
-            }
-            *i += 1;
-            args.get(*i)
-                .cloned()
-                .ok_or_else(|| format!("'{name}' needs a value"))
-        };
+    let mut words = super::options::VerbArgs::new(args);
+    while let Some(w) = words.next_arg() {
+        let (a, name) = (w.word, w.name);
+        let mut value = || words.value(&w);
         let number = |v: String| {
             v.parse::<u64>()
                 .map_err(|_| format!("'{name}': '{v}' is not a number"))
         };
         match name {
-            "--seed" => out.setup.seed = number(value(&mut i)?)?,
-            "--runs" => out.setup.runs = number(value(&mut i)?)? as usize,
-            "--configurations" => out.setup.configurations = number(value(&mut i)?)? as usize,
-            "--goals" => out.setup.goals = number(value(&mut i)?)? as usize,
-            "--episodes" => out.setup.episodes = number(value(&mut i)?)? as usize,
-            "--kb" => out.kb = value(&mut i)?,
-            "--domain" => out.domain = value(&mut i)?,
+            "--seed" => out.setup.seed = number(value()?)?,
+            "--runs" => out.setup.runs = number(value()?)? as usize,
+            "--configurations" => out.setup.configurations = number(value()?)? as usize,
+            "--goals" => out.setup.goals = number(value()?)? as usize,
+            "--episodes" => out.setup.episodes = number(value()?)? as usize,
+            "--kb" => out.kb = value()?,
+            "--domain" => out.domain = value()?,
             "--code-balance" => out.setup.code_balance = true,
             "--code-samples" => out.setup.code_samples = true,
             "--oracle" => {
-                let v = value(&mut i)?;
+                let v = value()?;
                 out.setup.oracle = crate::learn::h1::Oracle::parse(&v)
                     .ok_or_else(|| format!("'--oracle {v}': expected kb_full or physics"))?;
                 out.setup.oracle.availability()?;
             }
-            "--out" => out.out = Some(PathBuf::from(value(&mut i)?)),
-            "--emit-jobs" => out.emit_jobs = Some(PathBuf::from(value(&mut i)?)),
-            "--outf" => match value(&mut i)?.as_str() {
+            "--out" => out.out = Some(PathBuf::from(value()?)),
+            "--emit-jobs" => out.emit_jobs = Some(PathBuf::from(value()?)),
+            "--outf" => match value()?.as_str() {
                 "0" => out.json = false,
                 "2" => out.json = true,
                 v => return Err(format!("'--outf={v}': expected 0 or 2")),
@@ -151,7 +139,6 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
             _ if a.starts_with('-') && a.len() > 1 => return Err(format!("unknown option '{a}'")),
             _ => positional.push(a.to_string()),
         }
-        i += 1;
     }
     Ok((out, positional))
 }

@@ -10,8 +10,10 @@
 //! - `lucent ask SCENE.ald... [--happened PLAN]` or `lucent ask --run RUN.json [DOMAIN.ald]`:
 //!   questions read line by line, each answered in turn; follow-up questions take their step
 //!   from the previous one. The session keeps its questions: `history` lists them, `!N` asks
-//!   question N again and `!!` the last one. Line editing is the terminal's own (no line-editor
-//!   dependency: a history command covers re-asking, and the session also reads piped input).
+//!   question N again and `!!` the last one. When standard input and output are a terminal the
+//!   lines are read by a line editor (rustyline: cursor keys, up and down recall earlier
+//!   questions); otherwise (pipes, scripts, tests) by the plain line reader, which echoes each
+//!   question so that a transcript reads as a dialogue.
 //! - `--run RUN.json` (both verbs): a run `lucent run` saved (`--save-history`, or its `--outf=2`
 //!   output) instead of a scene: its step-0 perception, statics, goal and executed actions
 //!   (`explain::history::scene_of_run`), over the domain files given (default: the built-in
@@ -25,7 +27,7 @@
 //! understood and what can be asked (exit 65 for `explain`, the session goes on for `ask`);
 //! nothing the user types panics.
 
-use std::io::{BufRead, Write};
+use std::io::{BufRead, IsTerminal, Write};
 
 use crate::action::{self, ast::Value};
 use crate::base::SourceMap;
@@ -55,7 +57,8 @@ With --run, the history is a run saved by `lucent run` (--save-history FILE or i
 output) over the domain files given (default: the built-in KB_full); actions the world
 reported as failed are left out. With --why/--why-not, explains an atom of the first answer set
 of any clingo program. In `ask`, `history` lists the questions asked so far, `!N` asks question
-N again, `!!` the last one; an empty line or `quit` ends the session.
+N again, `!!` the last one; an empty line or `quit` ends the session. On a terminal the
+line can be edited, and the up and down keys recall earlier questions.
 
 Options:
   -q, --question TEXT   the question (explain)
@@ -100,47 +103,35 @@ fn usage(err: &mut dyn Write, verb: &str, msg: &str) -> std::io::Result<i32> {
 
 fn parse_args(args: &[String]) -> Result<Args, String> {
     let mut a = Args::default();
-    let mut i = 0;
-    while i < args.len() {
-        let arg = args[i].as_str();
-        let (name, inline) = match arg.split_once('=') {
-            Some((n, v)) if n.starts_with("--") => (n, Some(v.to_string())),
-            _ => (arg, None),
-        };
-        let value = |i: &mut usize| -> Result<String, String> {
-            if let Some(v) = inline.clone() {
-                return Ok(v);
-            }
-            *i += 1;
-            args.get(*i)
-                .cloned()
-                .ok_or_else(|| format!("'{name}' needs a value"))
-        };
+    let mut words = super::options::VerbArgs::new(args);
+    while let Some(w) = words.next_arg() {
+        let (arg, name) = (w.word, w.name);
+        let mut value = || words.value(&w);
         match name {
-            "-q" | "--question" => a.question = Some(value(&mut i)?),
-            "--happened" => a.happened = Some(value(&mut i)?),
-            "--run" => a.run = Some(value(&mut i)?),
-            "--goal" => a.goal = Some(value(&mut i)?),
-            "--profile" => a.profile = Some(value(&mut i)?),
+            "-q" | "--question" => a.question = Some(value()?),
+            "--happened" => a.happened = Some(value()?),
+            "--run" => a.run = Some(value()?),
+            "--goal" => a.goal = Some(value()?),
+            "--profile" => a.profile = Some(value()?),
             "--max-horizon" => {
-                let v = value(&mut i)?;
+                let v = value()?;
                 a.max_horizon = Some(
                     v.parse()
                         .map_err(|_| format!("'--max-horizon {v}': expected a number"))?,
                 );
             }
             "--full" => a.full = true,
-            "--outf" => match value(&mut i)?.as_str() {
+            "--outf" => match value()?.as_str() {
                 "2" => a.json = true,
                 "0" => a.json = false,
                 v => return Err(format!("'--outf={v}': expected 0 or 2")),
             },
-            "--dot" => a.dot = Some(value(&mut i)?),
-            "--svg" => a.svg = Some(value(&mut i)?),
-            "--why" => a.why = Some(value(&mut i)?),
-            "--why-not" => a.why_not = Some(value(&mut i)?),
+            "--dot" => a.dot = Some(value()?),
+            "--svg" => a.svg = Some(value()?),
+            "--why" => a.why = Some(value()?),
+            "--why-not" => a.why_not = Some(value()?),
             "-c" => {
-                let v = value(&mut i)?;
+                let v = value()?;
                 let (n, v) = v
                     .split_once('=')
                     .ok_or_else(|| format!("'-c {v}': expected -c NAME=VALUE"))?;
@@ -160,7 +151,6 @@ fn parse_args(args: &[String]) -> Result<Args, String> {
             }
             _ => a.files.push(arg.to_string()),
         }
-        i += 1;
     }
     Ok(a)
 }
@@ -207,11 +197,123 @@ pub fn run_explain(
     })
 }
 
-/// `lucent ask`: one question per line of standard input (line editing on a terminal).
+/// Where `lucent ask` reads its lines.
+pub trait LineSource {
+    /// The next line without its end, after showing `prompt` (empty: none); `None` at the end
+    /// of the input.
+    fn next_line(&mut self, prompt: &str, out: &mut dyn Write) -> std::io::Result<Option<String>>;
+    /// Whether the reader shows what is typed itself (a terminal): otherwise the session echoes
+    /// each question after the prompt.
+    fn shows_input(&self) -> bool;
+    /// Keeps a question for recall (the up key of a line editor).
+    fn remember(&mut self, _question: &str) {}
+}
+
+/// The plain line reader: pipes, scripts and tests.
+pub struct PlainLines<'a> {
+    input: &'a mut dyn BufRead,
+    echo: bool,
+}
+
+impl<'a> PlainLines<'a> {
+    /// Reads from `input`; with `echo`, the session echoes each question (the input is not a
+    /// terminal, so the transcript would otherwise show only the answers).
+    pub fn new(input: &'a mut dyn BufRead, echo: bool) -> Self {
+        PlainLines { input, echo }
+    }
+}
+
+impl LineSource for PlainLines<'_> {
+    fn next_line(&mut self, prompt: &str, out: &mut dyn Write) -> std::io::Result<Option<String>> {
+        if !prompt.is_empty() {
+            write!(out, "{prompt}")?;
+            out.flush()?;
+        }
+        let mut line = String::new();
+        if self.input.read_line(&mut line)? == 0 {
+            return Ok(None);
+        }
+        Ok(Some(line))
+    }
+
+    fn shows_input(&self) -> bool {
+        !self.echo
+    }
+}
+
+/// The line editor of a terminal session (rustyline without its optional features: no file
+/// history, no custom bindings): cursor keys, Home/End, up and down through this session's
+/// questions. Ctrl-D and Ctrl-C end the session.
+pub struct EditorLines {
+    editor: rustyline::DefaultEditor,
+}
+
+impl EditorLines {
+    /// An editor on the process's terminal; `None` when the terminal cannot be set up.
+    pub fn new() -> Option<Self> {
+        rustyline::DefaultEditor::new()
+            .ok()
+            .map(|editor| EditorLines { editor })
+    }
+}
+
+impl LineSource for EditorLines {
+    fn next_line(&mut self, prompt: &str, out: &mut dyn Write) -> std::io::Result<Option<String>> {
+        // What the session wrote so far must be on the screen before the editor draws.
+        out.flush()?;
+        match self.editor.readline(prompt) {
+            Ok(line) => Ok(Some(line)),
+            Err(rustyline::error::ReadlineError::Eof)
+            | Err(rustyline::error::ReadlineError::Interrupted) => Ok(None),
+            Err(rustyline::error::ReadlineError::Io(e)) => Err(e),
+            Err(e) => Err(std::io::Error::other(e.to_string())),
+        }
+    }
+
+    fn shows_input(&self) -> bool {
+        true
+    }
+
+    fn remember(&mut self, question: &str) {
+        // A full or failing history only loses the recall of this one question.
+        let _ = self.editor.add_history_entry(question);
+    }
+}
+
+/// True when this command line is `lucent ask` on a terminal (standard input and output), the
+/// case [`run_ask_on_terminal`] serves with a line editor.
+pub fn wants_line_editor(args: &[String]) -> bool {
+    args.first().is_some_and(|a| a == "ask")
+        && std::io::stdin().is_terminal()
+        && std::io::stdout().is_terminal()
+}
+
+/// `lucent ask` on the process's terminal with a line editor (falling back to the plain reader
+/// when the terminal cannot be set up); `args` are the verb's arguments. Returns the exit code.
+pub fn run_ask_on_terminal(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> i32 {
+    let result = match EditorLines::new() {
+        Some(mut editor) => run_ask(args, &mut editor, out, err),
+        None => {
+            let stdin = std::io::stdin();
+            let mut lock = stdin.lock();
+            run_ask(args, &mut PlainLines::new(&mut lock, false), out, err)
+        }
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            if e.kind() != std::io::ErrorKind::BrokenPipe {
+                let _ = writeln!(err, "*** ERROR: (lucent): {e}");
+            }
+            super::EXIT_UNAVAILABLE
+        }
+    }
+}
+
+/// `lucent ask`: one question per line from `lines`.
 pub fn run_ask(
     args: &[String],
-    echo: bool,
-    input: &mut dyn BufRead,
+    lines: &mut dyn LineSource,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
@@ -250,21 +352,13 @@ pub fn run_ask(
         )?;
     }
     let mut asked: Vec<String> = Vec::new();
-    let mut line = String::new();
-    loop {
-        line.clear();
-        if !a.json {
-            write!(out, "> ")?;
-            out.flush()?;
-        }
-        if input.read_line(&mut line)? == 0 {
-            break;
-        }
+    let prompt = if a.json { "" } else { "> " };
+    while let Some(line) = lines.next_line(prompt, out)? {
         let typed = line.trim();
         if typed.is_empty() || typed == "quit" || typed == "exit" {
             break;
         }
-        if !a.json && echo {
+        if !a.json && !lines.shows_input() {
             writeln!(out, "{typed}")?;
         }
         if typed == "history" {
@@ -294,6 +388,7 @@ pub fn run_ask(
         };
         let reply = respond(&history, no_plan, &lexicon, &q, &a, &mut session);
         emit(&reply, &a, out, err)?;
+        lines.remember(&q);
         asked.push(q);
     }
     Ok(0)

@@ -48,38 +48,25 @@ fn parse(args: &[String]) -> Result<Args, String> {
         code_samples: false,
         help: false,
     };
-    let mut i = 0;
-    while i < args.len() {
-        let a = args[i].as_str();
-        let (name, inline) = match a.split_once('=') {
-            Some((n, v)) => (n, Some(v.to_string())),
-            None => (a, None),
-        };
-        let value = |i: &mut usize| -> Result<String, String> {
-            if let Some(v) = &inline {
-                return Ok(v.clone());
-            }
-            *i += 1;
-            args.get(*i)
-                .cloned()
-                .ok_or_else(|| format!("'{name}' needs a value"))
-        };
+    let mut words = super::options::VerbArgs::new(args);
+    while let Some(w) = words.next_arg() {
+        let (a, name) = (w.word, w.name);
+        let mut value = || words.value(&w);
         let number = |v: String| {
             v.parse::<u64>()
                 .map_err(|_| format!("'{name}': '{v}' is not a number"))
         };
         match name {
             "--help" | "-h" => out.help = true,
-            "--kb" => out.kb = value(&mut i)?,
-            "--seed" => out.seed = number(value(&mut i)?)?,
-            "--episodes" => out.episodes = Some(number(value(&mut i)?)? as usize),
-            "-o" | "--output" => out.output = Some(value(&mut i)?),
-            "--outf" => out.json = value(&mut i)? == "2",
+            "--kb" => out.kb = value()?,
+            "--seed" => out.seed = number(value()?)?,
+            "--episodes" => out.episodes = Some(number(value()?)? as usize),
+            "-o" | "--output" => out.output = Some(value()?),
+            "--outf" => out.json = value()? == "2",
             "--code-balance" => out.code_balance = true,
             "--code-samples" => out.code_samples = true,
             _ => return Err(format!("unknown option '{a}'")),
         }
-        i += 1;
     }
     Ok(out)
 }

@@ -81,7 +81,12 @@ fn main_on_this_thread() -> i32 {
     let stderr = std::io::stderr();
     let mut out = std::io::BufWriter::new(stdout.lock());
     let mut err = stderr.lock();
-    let code = run(&args, &mut stdin.lock(), &mut out, &mut err);
+    let code = if explain::wants_line_editor(&args) {
+        // `lucent ask` on a terminal: a line editor reads the terminal itself.
+        explain::run_ask_on_terminal(&args[1..], &mut out, &mut err)
+    } else {
+        run(&args, &mut stdin.lock(), &mut out, &mut err)
+    };
     let _ = out.flush();
     code
 }
@@ -144,7 +149,8 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
             use std::io::IsTerminal;
             let echo = !std::io::stdin().is_terminal();
             let mut input = std::io::BufReader::new(&mut *io.stdin);
-            return explain::run_ask(&args[1..], echo, &mut input, io.out, io.err);
+            let mut lines = explain::PlainLines::new(&mut input, echo);
+            return explain::run_ask(&args[1..], &mut lines, io.out, io.err);
         }
         _ => {}
     }

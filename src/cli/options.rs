@@ -285,6 +285,59 @@ pub enum UsageError {
     },
 }
 
+/// Scans the command line of a verb (`lucent explain`, `ask`, `run`, `learn`, `experiment`):
+/// word by word, an option word `--name=value` (or `-n=value`) split into its name and inline
+/// value; [`VerbArgs::value`] takes an option's value, inline or else the next word. The verbs
+/// keep their own option tables; the scanning and its error are shared. A missing value is
+/// clingo's usage error (`SyntaxError: 'name' requires a value!`, as [`UsageError`] words it).
+pub struct VerbArgs<'a> {
+    args: &'a [String],
+    next: usize,
+}
+
+/// One word of a verb's command line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct VerbArg<'a> {
+    /// The word as given.
+    pub word: &'a str,
+    /// The option's name (`--goal` of `--goal=on(a,b)`); the whole word when it has no inline
+    /// value.
+    pub name: &'a str,
+    /// The value after `=` in an option word.
+    pub inline: Option<&'a str>,
+}
+
+impl<'a> VerbArgs<'a> {
+    /// A scanner over a verb's arguments (the words after the verb).
+    pub fn new(args: &'a [String]) -> Self {
+        VerbArgs { args, next: 0 }
+    }
+
+    /// The next word, `None` after the last.
+    pub fn next_arg(&mut self) -> Option<VerbArg<'a>> {
+        let word = self.args.get(self.next)?.as_str();
+        self.next += 1;
+        let (name, inline) = match word.split_once('=') {
+            Some((n, v)) if n.starts_with('-') => (n, Some(v)),
+            _ => (word, None),
+        };
+        Some(VerbArg { word, name, inline })
+    }
+
+    /// The value of the option `arg` (the word [`VerbArgs::next_arg`] returned last): its
+    /// inline value, or else the next word, which is then consumed.
+    pub fn value(&mut self, arg: &VerbArg<'_>) -> Result<String, String> {
+        if let Some(v) = arg.inline {
+            return Ok(v.to_string());
+        }
+        let v = self.args.get(self.next).cloned().ok_or_else(|| {
+            UsageError::MissingValue(arg.name.trim_start_matches('-').to_string()).to_string()
+        })?;
+        self.next += 1;
+        Ok(v)
+    }
+}
+
 fn invalid(option: &str, value: &str) -> UsageError {
     UsageError::InvalidValue {
         option: option.to_string(),
@@ -623,6 +676,38 @@ mod tests {
 
     fn args(s: &str) -> Vec<String> {
         s.split_whitespace().map(str::to_string).collect()
+    }
+
+    #[test]
+    fn verb_arguments_inline_or_next_and_clingos_missing_value() {
+        let words = args("--goal=on(a,b) -q why? --outf 2 x=1 -c n=3 --full --happened");
+        let mut v = VerbArgs::new(&words);
+        let mut seen = Vec::new();
+        while let Some(a) = v.next_arg() {
+            let value = match a.name {
+                "--goal" | "-q" | "--outf" | "-c" | "--happened" => Some(v.value(&a)),
+                _ => None,
+            };
+            seen.push((a.word.to_string(), a.name.to_string(), value));
+        }
+        let ok = |s: &str| Some(Ok(s.to_string()));
+        assert_eq!(
+            seen,
+            vec![
+                ("--goal=on(a,b)".into(), "--goal".into(), ok("on(a,b)")),
+                ("-q".into(), "-q".into(), ok("why?")),
+                ("--outf".into(), "--outf".into(), ok("2")),
+                // A word that is not an option keeps its `=`.
+                ("x=1".into(), "x=1".into(), None),
+                ("-c".into(), "-c".into(), ok("n=3")),
+                ("--full".into(), "--full".into(), None),
+                (
+                    "--happened".into(),
+                    "--happened".into(),
+                    Some(Err("SyntaxError: 'happened' requires a value!".into()))
+                ),
+            ]
+        );
     }
 
     #[test]

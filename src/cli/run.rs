@@ -96,22 +96,10 @@ fn parse(args: &[String]) -> Result<RunArgs, String> {
         threshold: 0.5,
         ..RunArgs::default()
     };
-    let mut i = 0;
-    while i < args.len() {
-        let arg = args[i].as_str();
-        let (name, inline) = match arg.split_once('=') {
-            Some((n, v)) if n.starts_with("--") => (n, Some(v.to_string())),
-            _ => (arg, None),
-        };
-        let value = |i: &mut usize| -> Result<String, String> {
-            if let Some(v) = inline.clone() {
-                return Ok(v);
-            }
-            *i += 1;
-            args.get(*i)
-                .cloned()
-                .ok_or_else(|| format!("{name} needs a value"))
-        };
+    let mut words = super::options::VerbArgs::new(args);
+    while let Some(w) = words.next_arg() {
+        let (arg, name) = (w.word, w.name);
+        let mut value = || words.value(&w);
         fn number<T: std::str::FromStr>(name: &str, v: String) -> Result<T, String> {
             v.parse()
                 .map_err(|_| format!("{name} needs a number, got `{v}`"))
@@ -126,22 +114,22 @@ fn parse(args: &[String]) -> Result<RunArgs, String> {
         }
         match name {
             "--help" | "-h" => out.help = true,
-            "--scene" => out.scene = Some(value(&mut i)?),
-            "--preset" => out.preset = Some(value(&mut i)?),
-            "--seed" => out.seed = number(name, value(&mut i)?)?,
-            "--goal" => out.goals.push(value(&mut i)?),
-            "--goal-seed" => out.goal_seed = Some(number(name, value(&mut i)?)?),
-            "--perception-noise" => out.perception = probability(name, value(&mut i)?)?,
-            "--actuation-noise" => out.actuation = probability(name, value(&mut i)?)?,
-            "--threshold" => out.threshold = probability(name, value(&mut i)?)?,
-            "--max-actions" => out.config.max_actions = number(name, value(&mut i)?)?,
-            "--max-plans" => out.config.max_plans = number(name, value(&mut i)?)?,
-            "--max-horizon" => out.config.plan.max_horizon = number(name, value(&mut i)?)?,
+            "--scene" => out.scene = Some(value()?),
+            "--preset" => out.preset = Some(value()?),
+            "--seed" => out.seed = number(name, value()?)?,
+            "--goal" => out.goals.push(value()?),
+            "--goal-seed" => out.goal_seed = Some(number(name, value()?)?),
+            "--perception-noise" => out.perception = probability(name, value()?)?,
+            "--actuation-noise" => out.actuation = probability(name, value()?)?,
+            "--threshold" => out.threshold = probability(name, value()?)?,
+            "--max-actions" => out.config.max_actions = number(name, value()?)?,
+            "--max-plans" => out.config.max_plans = number(name, value()?)?,
+            "--max-horizon" => out.config.plan.max_horizon = number(name, value()?)?,
             "--no-confirm" => out.config.confirm_goal = false,
-            "--looks" => out.config.looks = number(name, value(&mut i)?)?,
-            "--log" => out.log = Some(value(&mut i)?),
-            "--save-history" => out.save = Some(value(&mut i)?),
-            "--outf" => match value(&mut i)?.as_str() {
+            "--looks" => out.config.looks = number(name, value()?)?,
+            "--log" => out.log = Some(value()?),
+            "--save-history" => out.save = Some(value()?),
+            "--outf" => match value()?.as_str() {
                 "2" => out.json = true,
                 "0" => out.json = false,
                 v => return Err(format!("--outf={v}: expected 0 or 2")),
@@ -156,7 +144,6 @@ fn parse(args: &[String]) -> Result<RunArgs, String> {
                 ))
             }
         }
-        i += 1;
     }
     if out.scene.is_some() && out.preset.is_some() {
         return Err("--scene and --preset exclude each other".into());

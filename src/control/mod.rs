@@ -182,6 +182,11 @@ pub struct Summary {
     pub stats: solve::Stats,
     /// Models reported to the callback.
     pub models: usize,
+    /// When the call found no model and was not stopped: the assumptions of
+    /// [`SolveOptions::assumptions`] that the refutation used, in their order, under which the
+    /// program has no answer set either (clingo's `on_core`; not minimal). Empty when the
+    /// program has no answer set under any assumption; `None` after a model or a stop.
+    pub core: Option<Vec<(Symbol, bool)>>,
 }
 
 impl Summary {
@@ -568,13 +573,21 @@ impl Control {
         self.prepare();
         let mut assumptions = Vec::new();
         self.external_assumptions(&mut assumptions);
-        let mut impossible = false;
-        for (s, positive) in &options.assumptions {
-            match self.lookup(s) {
-                Some(a) => assumptions.push(if *positive { a as i32 } else { -(a as i32) }),
-                None if *positive => impossible = true,
+        let mut impossible = None;
+        // Per assumption of the caller, its solver literal (for the core).
+        let mut lits: Vec<Option<i32>> = Vec::with_capacity(options.assumptions.len());
+        for (k, (s, positive)) in options.assumptions.iter().enumerate() {
+            let lit = self
+                .lookup(s)
+                .map(|a| if *positive { a as i32 } else { -(a as i32) });
+            match lit {
+                Some(l) => assumptions.push(l),
+                None if *positive => {
+                    impossible.get_or_insert(k);
+                }
                 None => {}
             }
+            lits.push(lit);
         }
         let Control {
             solver,
@@ -584,7 +597,7 @@ impl Control {
             ..
         } = self;
         let solver = solver.as_mut().expect("prepared");
-        if impossible {
+        if let Some(k) = impossible {
             return Summary {
                 outcome: solve::Outcome::Unsatisfiable,
                 exhausted: true,
@@ -592,6 +605,7 @@ impl Control {
                 stop: None,
                 stats: solve::Stats::default(),
                 models: 0,
+                core: Some(vec![options.assumptions[k].clone()]),
             };
         }
         let names = Names {
@@ -621,6 +635,15 @@ impl Control {
                 })
             })
         };
+        let core = (count == 0).then(|| solver.core()).flatten().map(|core| {
+            options
+                .assumptions
+                .iter()
+                .zip(&lits)
+                .filter(|(_, l)| l.is_some_and(|l| core.contains(&l)))
+                .map(|(a, _)| a.clone())
+                .collect()
+        });
         Summary {
             outcome: result.outcome,
             exhausted: result.exhausted,
@@ -628,6 +651,7 @@ impl Control {
             stop: result.stop,
             stats: result.stats,
             models: count,
+            core,
         }
     }
 

@@ -320,44 +320,58 @@ impl fmt::Display for Symbol {
             Symbol::Inf => f.write_str("#inf"),
             Symbol::Sup => f.write_str("#sup"),
             Symbol::Number(n) => write!(f, "{n}"),
-            Symbol::String(s) => {
-                f.write_str("\"")?;
-                for c in s.chars() {
-                    match c {
-                        '"' => f.write_str("\\\"")?,
-                        '\\' => f.write_str("\\\\")?,
-                        '\n' => f.write_str("\\n")?,
-                        c => write!(f, "{c}")?,
-                    }
-                }
-                f.write_str("\"")
-            }
+            Symbol::String(s) => write_string(f, s),
             Symbol::Function {
                 name,
                 args,
                 negative,
-            } => {
-                if *negative {
-                    f.write_str("-")?;
-                }
-                f.write_str(name)?;
-                if !args.is_empty() || name.is_empty() {
-                    f.write_str("(")?;
-                    for (i, a) in args.iter().enumerate() {
-                        if i > 0 {
-                            f.write_str(",")?;
-                        }
-                        write!(f, "{a}")?;
-                    }
-                    if name.is_empty() && args.len() == 1 {
-                        f.write_str(",")?;
-                    }
-                    f.write_str(")")?;
-                }
-                Ok(())
-            }
+            } => write_function(f, name, args, *negative),
         }
     }
+}
+
+/// Writes a string term as clingo prints it: quoted, with `"`, `\` and newlines escaped.
+pub fn write_string(f: &mut fmt::Formatter<'_>, s: &str) -> fmt::Result {
+    f.write_str("\"")?;
+    for c in s.chars() {
+        match c {
+            '"' => f.write_str("\\\"")?,
+            '\\' => f.write_str("\\\\")?,
+            '\n' => f.write_str("\\n")?,
+            c => write!(f, "{c}")?,
+        }
+    }
+    f.write_str("\"")
+}
+
+/// Writes a function term as clingo prints it: `-` when classically negated, the name, and the
+/// arguments in parentheses without spaces (none for a constant; a tuple of one gets a
+/// trailing comma). Shared by [`Symbol`] and any other term type with the same surface (the
+/// explainer's patterns), so that both print alike.
+pub fn write_function<A: fmt::Display>(
+    f: &mut fmt::Formatter<'_>,
+    name: &str,
+    args: &[A],
+    negative: bool,
+) -> fmt::Result {
+    if negative {
+        f.write_str("-")?;
+    }
+    f.write_str(name)?;
+    if !args.is_empty() || name.is_empty() {
+        f.write_str("(")?;
+        for (i, a) in args.iter().enumerate() {
+            if i > 0 {
+                f.write_str(",")?;
+            }
+            write!(f, "{a}")?;
+        }
+        if name.is_empty() && args.len() == 1 {
+            f.write_str(",")?;
+        }
+        f.write_str(")")?;
+    }
+    Ok(())
 }
 
 impl std::str::FromStr for Symbol {

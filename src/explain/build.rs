@@ -310,13 +310,15 @@ impl<'o> Builder<'o> {
     /// restate the root's own action or fluent (the sort guard `action(pickup(rob1,a))`) do
     /// not count.
     fn mentions_root(&self, rule: &RuleInstance) -> bool {
+        // The sort test asks the oracle for the literal's rules: it comes last (it was 14% of
+        // a belief question's time when it came first).
         rule.positive().any(|t| {
-            !self.is_sort(t)
-                && !self
-                    .root_inner
-                    .as_ref()
-                    .is_some_and(|inner| contains(t, inner))
+            !self
+                .root_inner
+                .as_ref()
+                .is_some_and(|inner| contains(t, inner))
                 && constants(t).iter().any(|c| self.root_objects.contains(c))
+                && !self.is_sort(t)
         })
     }
 

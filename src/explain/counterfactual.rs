@@ -7,13 +7,13 @@
 //!   those that did. If X itself could not have been executed, the answer says so and why
 //!   (the why-not answer over the original history).
 //! - **Why no plan**: the planning problem at horizon H with each goal literal, each
-//!   initial-state fact and each `never` constraint behind an assumption (an external atom that
-//!   switches it on); unsatisfiable with all of them on, the set is shrunk one assumption at a
-//!   time (deletion: an element stays only if the problem becomes solvable without it), so the
+//!   initial-state fact and each `never` constraint behind an assumption atom that switches it
+//!   on ([`NoPlan`]). One grounding; a solve under all the assumptions fails, and the solver's
+//!   unsatisfiable core (the assumptions its refutation used, `control::Summary::core`) is the
+//!   first candidate; it is then shrunk by deletion (an element stays only if the problem
+//!   becomes solvable without it; an unsolvable smaller set is replaced by its own core), so the
 //!   answer is a *minimal* set of goal literals, observations and constraints that together make
-//!   the task impossible. One grounding, one solve call per assumption tried (the assumptions
-//!   are external atoms whose values each call sets; the solver has no unsat-core API yet, so
-//!   the core is found by deletion rather than read off a failed solve).
+//!   the task impossible. The hypotheses left out of a solve are assumed false (switched off).
 //!
 //! Invariants: nothing here reads files; every answer comes from solves of the problem, never
 //! from the question's wording; a problem that does not translate is a [`HistoryError`].
@@ -182,8 +182,8 @@ pub fn what_if(
 }
 
 /// One assumption of the why-no-plan problem.
-#[derive(Clone, Debug)]
-enum Hyp {
+#[derive(Clone, Debug, PartialEq)]
+pub enum Hyp {
     /// A goal literal (a fluent).
     Goal(Symbol),
     /// An initial-state fact (`holds(f, 0)` or `hpd`/`obs`), with its statement text.
@@ -195,6 +195,139 @@ enum Hyp {
 /// The assumption atom of hypothesis `k`.
 const HYP: &str = "lucent_hyp";
 
+/// The why-no-plan problem: the task at a fixed horizon, grounded once, with its goal literals,
+/// initial-state facts and `never` constraints behind assumption atoms.
+pub struct NoPlan {
+    ctl: Control,
+    hyps: Vec<Hyp>,
+    /// Solve calls made so far.
+    pub solves: usize,
+    /// The size of the solver's first core (before deletion), once [`NoPlan::minimal_core`] ran.
+    pub first_core: Option<usize>,
+}
+
+impl NoPlan {
+    /// The planning problem of `problem` at `horizon` (with `goal` instead of the description's
+    /// goal when it is not empty).
+    pub fn new(problem: &Problem, goal: &[Symbol], horizon: usize) -> Result<NoPlan, HistoryError> {
+        let mut desc = problem.desc.clone();
+        let mut sources: SourceMap = problem.sources.clone();
+        if !goal.is_empty() {
+            desc.statements
+                .retain(|s| !matches!(s.kind, action::ast::StatementKind::Goal { .. }));
+            // One statement: the goal is the conjunction (separate `goal` statements would be
+            // alternatives).
+            let text = format!(
+                "goal {}.\n",
+                goal.iter()
+                    .map(Symbol::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            );
+            let file = sources.add("<question goal>", text.clone());
+            desc.statements
+                .extend(action::parse(file, &text).description.statements);
+        }
+        let mut overrides = problem.config.overrides.clone();
+        overrides.push(("horizon".into(), Value::Int(horizon as i64)));
+        overrides.push(("horizon_mode".into(), Value::Word("iterative".into())));
+        overrides.push(("planning".into(), Value::Bool(true)));
+        let options = Options {
+            profile: problem.config.profile.clone(),
+            overrides,
+        };
+        let t = action::translate(&desc, &options);
+        if t.has_errors() {
+            let mut d = Diagnostics::default();
+            d.extend(t.diagnostics);
+            return Err(HistoryError::Input(d.render(&sources)));
+        }
+        let mut program = t.program;
+        let hyps = gate(&mut program, &t.origins, &mut sources);
+        let mut ctl = Control::with_sources(ControlConfig::default(), sources);
+        ctl.add_program(program)
+            .map_err(|e| HistoryError::Input(e.message))?;
+        ctl.ground(&[Part::base()])
+            .map_err(|e| HistoryError::Input(e.message))?;
+        // The assumption atoms are free externals: each call's assumptions set them (an
+        // external left false would refute an assumption that it is true).
+        for k in 0..hyps.len() {
+            ctl.assign_external(&hyp_atom(k), TruthValue::Free);
+        }
+        Ok(NoPlan {
+            ctl,
+            hyps,
+            solves: 0,
+            first_core: None,
+        })
+    }
+
+    /// The hypotheses, indexed as the sets of the other methods.
+    pub fn hypotheses(&self) -> &[Hyp] {
+        &self.hyps
+    }
+
+    /// Solves with the hypotheses `on` switched on and the others off: `None` when a plan
+    /// exists, else the core, a subset of `on` that is unsolvable on its own (the others off).
+    pub fn refute(&mut self, on: &[usize]) -> Option<Vec<usize>> {
+        let assumptions: Vec<(Symbol, bool)> = (0..self.hyps.len())
+            .map(|k| (hyp_atom(k), on.contains(&k)))
+            .collect();
+        let mut sat = false;
+        self.solves += 1;
+        let summary = self.ctl.solve(&SolveOptions { assumptions }, |_| {
+            sat = true;
+            false
+        });
+        if sat {
+            return None;
+        }
+        // Assumed-false hypotheses in the core are dropped: switching them off is what every
+        // later call does too. Without a core (a stopped search), `on` itself.
+        let core = match summary.core {
+            Some(core) => on
+                .iter()
+                .copied()
+                .filter(|&k| core.contains(&(hyp_atom(k), true)))
+                .collect(),
+            None => on.to_vec(),
+        };
+        Some(core)
+    }
+
+    /// A minimal set of hypotheses that makes the task impossible: `None` when a plan exists
+    /// with all of them; the empty set when none is needed (no plan even without them).
+    /// Deletion tries observations first, then constraints, then goal literals, so the answer
+    /// keeps the goal when it can.
+    pub fn minimal_core(&mut self) -> Option<Vec<usize>> {
+        let all: Vec<usize> = (0..self.hyps.len()).collect();
+        let mut core = self.refute(&all)?;
+        self.first_core = Some(core.len());
+        let rank = |h: &Hyp| match h {
+            Hyp::Observation(_) => 0,
+            Hyp::Constraint(_) => 1,
+            Hyp::Goal(_) => 2,
+        };
+        let mut order = core.clone();
+        order.sort_by_key(|&k| (rank(&self.hyps[k]), k));
+        for k in order {
+            if !core.contains(&k) {
+                continue;
+            }
+            let without: Vec<usize> = core.iter().copied().filter(|&x| x != k).collect();
+            if let Some(smaller) = self.refute(&without) {
+                core = smaller;
+            }
+        }
+        Some(core)
+    }
+}
+
+/// The assumption atom of hypothesis `k`.
+fn hyp_atom(k: usize) -> Symbol {
+    Symbol::function(HYP, vec![Symbol::number(k as i32)])
+}
+
 /// Why is there no plan of at most `horizon` steps for the problem (with `goal` instead of the
 /// description's goal when it is not empty)? A minimal set of goal literals, observations and
 /// constraints that cannot all hold together.
@@ -205,67 +338,17 @@ pub fn why_no_plan(
     horizon: usize,
 ) -> Result<Answer, HistoryError> {
     let v = Verbalizer::new(lexicon);
-    let mut desc = problem.desc.clone();
-    let mut sources: SourceMap = problem.sources.clone();
-    if !goal.is_empty() {
-        desc.statements
-            .retain(|s| !matches!(s.kind, action::ast::StatementKind::Goal { .. }));
-        let text: String = goal.iter().map(|g| format!("goal {g}.\n")).collect();
-        let file = sources.add("<question goal>", text.clone());
-        desc.statements
-            .extend(action::parse(file, &text).description.statements);
-    }
-    let mut overrides = problem.config.overrides.clone();
-    overrides.push(("horizon".into(), Value::Int(horizon as i64)));
-    overrides.push(("horizon_mode".into(), Value::Word("iterative".into())));
-    overrides.push(("planning".into(), Value::Bool(true)));
-    let options = Options {
-        profile: problem.config.profile.clone(),
-        overrides,
-    };
-    let t = action::translate(&desc, &options);
-    if t.has_errors() {
-        let mut d = Diagnostics::default();
-        d.extend(t.diagnostics);
-        return Err(HistoryError::Input(d.render(&sources)));
-    }
-    let mut program = t.program;
-    let hyps = gate(&mut program, &t.origins, &mut sources);
-    let mut ctl = Control::with_sources(ControlConfig::default(), sources.clone());
-    ctl.add_program(program)
-        .map_err(|e| HistoryError::Input(e.message))?;
-    ctl.ground(&[Part::base()])
-        .map_err(|e| HistoryError::Input(e.message))?;
-    let atom = |k: usize| Symbol::function(HYP, vec![Symbol::number(k as i32)]);
-    // The assumption atoms are externals: each call sets their values (a value that the
-    // Control also assumed from the declaration would contradict an assumption).
-    let solvable = |on: &[usize], ctl: &mut Control| -> bool {
-        for k in 0..hyps.len() {
-            let value = if on.contains(&k) {
-                TruthValue::True
-            } else {
-                TruthValue::False
-            };
-            ctl.assign_external(&atom(k), value);
-        }
-        let mut sat = false;
-        ctl.solve(&SolveOptions::default(), |_| {
-            sat = true;
-            false
-        });
-        sat
-    };
-    let all: Vec<usize> = (0..hyps.len()).collect();
+    let mut np = NoPlan::new(problem, goal, horizon)?;
     let h = horizon.to_string();
-    if solvable(&all, &mut ctl) {
+    let Some(core) = np.minimal_core() else {
         return Ok(Answer {
             kind: "no_plan",
             text: v.template("plan_exists", &[("horizon", &h)]),
             literals: Vec::new(),
             tree: None,
         });
-    }
-    if !solvable(&[], &mut ctl) {
+    };
+    if core.is_empty() {
         return Ok(Answer {
             kind: "no_plan",
             text: v.template("no_plan_always", &[("horizon", &h)]),
@@ -273,34 +356,10 @@ pub fn why_no_plan(
             tree: None,
         });
     }
-    // Deletion: observations first, then constraints, then goal literals, so the answer keeps
-    // the goal when it can.
-    let mut core = all.clone();
-    let order: Vec<usize> = all
-        .iter()
-        .copied()
-        .filter(|k| matches!(hyps[*k], Hyp::Observation(_)))
-        .chain(
-            all.iter()
-                .copied()
-                .filter(|k| matches!(hyps[*k], Hyp::Constraint(_))),
-        )
-        .chain(
-            all.iter()
-                .copied()
-                .filter(|k| matches!(hyps[*k], Hyp::Goal(_))),
-        )
-        .collect();
-    for k in order {
-        let without: Vec<usize> = core.iter().copied().filter(|x| *x != k).collect();
-        if !solvable(&without, &mut ctl) {
-            core = without;
-        }
-    }
     let mut reasons = Vec::new();
     let mut literals = Vec::new();
     for &k in &core {
-        match &hyps[k] {
+        match &np.hypotheses()[k] {
             Hyp::Goal(g) => {
                 reasons.push(format!("the goal that {}", v.fluent(g, Tense::Present)));
                 literals.push(g.clone());

@@ -14,10 +14,12 @@
 use super::oracle::{Labels, ProgramOracle};
 use super::pattern::SymbolExt;
 use super::questions::Scenario;
+use super::tree::LearnedAxiom;
 use crate::action::{self, ast::Description, ast::StatementKind, ast::Value, Options};
 use crate::action::{AxiomOrigin, OriginKind};
 use crate::base::{Diagnostics, SourceMap};
 use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol, TruthValue};
+use crate::learn::strength::{Store, LEARNED_PREFIX};
 use crate::syntax::ast;
 
 /// How the history's program is made.
@@ -67,17 +69,45 @@ pub struct History {
     pub last_step: u32,
     /// The objects, computed once from the answer set (see [`History::objects`]).
     objects: Vec<String>,
+    /// The learned axioms among the description's files (see [`learned_axioms`]).
+    pub learned: Vec<LearnedAxiom>,
+}
+
+/// The learned axioms in the files of `sources`: every file that `lucent learn` wrote (its
+/// statements introduced by `% learned axiom: strength …` comments, read back by
+/// `learn::strength::Store::from_ald`), with their labels, strengths and AL_d text. A file
+/// whose comments do not read back contributes none (its statements are still axioms, just
+/// not cited as learned).
+pub fn learned_axioms(sources: &SourceMap) -> Vec<LearnedAxiom> {
+    let mut out = Vec::new();
+    for k in 0..sources.len() {
+        let text = &sources.get(crate::base::FileId(k as u32)).text;
+        if !text.contains(LEARNED_PREFIX) {
+            continue;
+        }
+        let Ok(store) = Store::from_ald(text) else {
+            continue;
+        };
+        out.extend(store.axioms.iter().map(|l| LearnedAxiom {
+            label: l.label.clone(),
+            strength: l.strength,
+            text: l.axiom.to_ald(),
+        }));
+    }
+    out
 }
 
 impl History {
     /// The RA scenario of the questions over this history (executed: past tense).
     pub fn scenario(&self) -> Scenario<'_> {
-        Scenario::ra(
+        let mut scn = Scenario::ra(
             &self.oracle,
             self.plan.clone(),
             self.goal.clone(),
             self.last_step,
-        )
+        );
+        scn.learned = self.learned.clone();
+        scn
     }
 
     /// The objects the history mentions (for the question parser): the constant arguments of
@@ -334,6 +364,7 @@ pub fn explain_history(
     let oracle =
         ProgramOracle::new(ctl, model, labels).map_err(|e| HistoryError::Input(e.to_string()))?;
     Ok(History {
+        learned: learned_axioms(&problem.sources),
         problem,
         objects: History::objects_of(&oracle),
         oracle,

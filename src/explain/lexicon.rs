@@ -54,6 +54,7 @@ pub const TEMPLATES: &[(&str, &[&str])] = &[
     ("no_plan", &["horizon", "reasons"]),
     ("no_plan_always", &["horizon"]),
     ("plan_exists", &["horizon"]),
+    ("learned_axiom", &["label", "strength", "axiom"]),
 ];
 
 /// The JSON shape of a lexicon file.

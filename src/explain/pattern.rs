@@ -19,6 +19,7 @@
 
 use std::fmt;
 
+use crate::control::symbol;
 use crate::control::Symbol;
 
 /// What literals need of a ground term, beyond `control::Symbol`'s own methods.
@@ -503,35 +504,16 @@ impl PatternParser<'_> {
 
 impl fmt::Display for Pattern {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Numbers, strings and functions print as the symbol would (one printer for both).
         match self {
             Pattern::Var(v) => f.write_str(v),
-            // Numbers, strings and ground functions print as the symbol would.
             Pattern::Num(n) => write!(f, "{n}"),
-            Pattern::Str(s) => write!(f, "{}", Symbol::String(s.clone())),
+            Pattern::Str(s) => symbol::write_string(f, s),
             Pattern::Fun {
                 name,
                 args,
                 negative,
-            } => {
-                if *negative {
-                    f.write_str("-")?;
-                }
-                f.write_str(name)?;
-                if !args.is_empty() || name.is_empty() {
-                    f.write_str("(")?;
-                    for (i, a) in args.iter().enumerate() {
-                        if i > 0 {
-                            f.write_str(",")?;
-                        }
-                        write!(f, "{a}")?;
-                    }
-                    if name.is_empty() && args.len() == 1 {
-                        f.write_str(",")?;
-                    }
-                    f.write_str(")")?;
-                }
-                Ok(())
-            }
+            } => symbol::write_function(f, name, args, *negative),
         }
     }
 }

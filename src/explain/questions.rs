@@ -15,7 +15,9 @@ use super::build::{normalize, origin_alternative, BuildConfig, Builder};
 use super::english::{holds, occurs, Question};
 use super::lexicon::Lexicon;
 use super::pattern::{Pattern, SymbolExt};
-use super::tree::{recheck, AxiomKind, Kind, NodeId, Oracle, ProofTree, RecheckError};
+use super::tree::{
+    recheck, AxiomKind, Kind, LearnedAxiom, NodeId, Oracle, ProofTree, RecheckError,
+};
 use super::verbalize::{Tense, Verbalizer};
 use crate::control::Symbol;
 
@@ -48,6 +50,9 @@ pub struct Scenario<'a> {
     pub inertial: Vec<String>,
     /// Tree-building settings.
     pub build: BuildConfig,
+    /// The learned axioms of the knowledge base, with their strengths: an answer whose path
+    /// uses one says so.
+    pub learned: Vec<LearnedAxiom>,
 }
 
 impl<'a> Scenario<'a> {
@@ -71,6 +76,7 @@ impl<'a> Scenario<'a> {
                 ..BuildConfig::default()
             },
             robot,
+            learned: Vec::new(),
             inertial: [
                 "relation",
                 "in_hand",
@@ -126,7 +132,7 @@ pub fn answer(
 ) -> Result<Answer, AnswerError> {
     let v = Verbalizer::new(lexicon);
     let a = Answering { scn, v, mode };
-    match question {
+    let mut answer = match question {
         Question::DescribePlan => Ok(a.plan()),
         Question::WhyAction { action, step } => a.why(action, *step, session),
         Question::WhyNotAction { action, step } => a.why_not(action, *step, session),
@@ -138,6 +144,34 @@ pub fn answer(
         Question::Goal { .. } | Question::WhyNoPlan { .. } | Question::WhatIf { .. } => {
             Err(AnswerError::NeedsSolver)
         }
+    }?;
+    cite_learned(&mut answer, &a.v);
+    Ok(answer)
+}
+
+/// Says which learned axioms the answer's path rests on: one sentence per axiom, after the
+/// answer ("I used the learned axiom L2 (strength 0.57): impossible pickup(R1, O1) if …").
+fn cite_learned(answer: &mut Answer, v: &Verbalizer<'_>) {
+    let Some(tree) = &answer.tree else { return };
+    let mut cited: Vec<&LearnedAxiom> = Vec::new();
+    for &id in &tree.path {
+        if let Some(l) = tree.learned_of(id) {
+            if !cited.iter().any(|c| c.label == l.label) {
+                cited.push(l);
+            }
+        }
+    }
+    for l in cited {
+        let sentence = v.template(
+            "learned_axiom",
+            &[
+                ("label", &l.label),
+                ("strength", &format!("{:.2}", l.strength)),
+                ("axiom", &l.text),
+            ],
+        );
+        answer.text.push(' ');
+        answer.text.push_str(&sentence);
     }
 }
 
@@ -167,8 +201,9 @@ impl Answering<'_, '_> {
 
     /// A checked proof tree.
     fn tree(&self, literal: &Symbol) -> Result<ProofTree, AnswerError> {
-        let tree = Builder::new(self.scn.oracle, self.scn.build.clone()).build(literal);
+        let mut tree = Builder::new(self.scn.oracle, self.scn.build.clone()).build(literal);
         recheck(&tree, self.scn.oracle)?;
+        tree.note_learned(&self.scn.learned);
         Ok(tree)
     }
 
@@ -742,20 +777,41 @@ impl Answer {
         });
         if let Some(tree) = &self.tree {
             obj["tree"] = tree_json(tree);
+            // The learned axioms the answer's path cites (as its English says).
+            let cited: Vec<serde_json::Value> = tree
+                .learned
+                .iter()
+                .filter(|l| {
+                    tree.path
+                        .iter()
+                        .any(|&id| tree.learned_of(id).is_some_and(|x| x.label == l.label))
+                })
+                .map(learned_json)
+                .collect();
+            if !cited.is_empty() {
+                obj["learned"] = serde_json::Value::Array(cited);
+            }
         }
         obj
     }
 }
 
+/// A learned axiom as JSON: `label`, `strength`, `axiom` (AL_d).
+fn learned_json(l: &LearnedAxiom) -> serde_json::Value {
+    serde_json::json!({"label": l.label, "strength": l.strength, "axiom": l.text})
+}
+
 /// A proof tree as JSON: `nodes` (index order, children before parents) with `literal`,
 /// `step`, `holds`, `kind`, `rule` (the ground rule instance, as text), `children`, `blocked`
-/// and `no_evidence`; `roots`; `path`.
+/// and `no_evidence`, and `learned` (label, strength, axiom) when the rule instance comes from
+/// a learned axiom; `roots`; `path`.
 pub fn tree_json(tree: &ProofTree) -> serde_json::Value {
     let nodes: Vec<serde_json::Value> = tree
         .nodes
         .iter()
-        .map(|n| {
-            serde_json::json!({
+        .enumerate()
+        .map(|(i, n)| {
+            let mut node = serde_json::json!({
                 "literal": n.literal.to_string(),
                 "step": n.step,
                 "holds": n.holds,
@@ -764,7 +820,11 @@ pub fn tree_json(tree: &ProofTree) -> serde_json::Value {
                 "children": n.children.iter().map(|c| c.0).collect::<Vec<_>>(),
                 "blocked": n.blocked.iter().map(|r| r.to_string()).collect::<Vec<_>>(),
                 "no_evidence": n.no_evidence.iter().map(Symbol::to_string).collect::<Vec<_>>(),
-            })
+            });
+            if let Some(l) = tree.learned_of(NodeId(i as u32)) {
+                node["learned"] = learned_json(l);
+            }
+            node
         })
         .collect();
     serde_json::json!({

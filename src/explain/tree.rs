@@ -271,8 +271,19 @@ pub struct Edge<'t> {
     pub rule: &'t RuleInstance,
 }
 
+/// A learned axiom (DOMAIN.md 5.9, written by `lucent learn`) as an explanation cites it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LearnedAxiom {
+    /// Its AL_d label (`L2`), the label of its rule instances.
+    pub label: String,
+    /// Its strength in (0, 1] when the knowledge base was loaded.
+    pub strength: f64,
+    /// The axiom in AL_d (`impossible pickup(R1, O1) if relation(below, O1, O2)`).
+    pub text: String,
+}
+
 /// A proof tree: nodes children-first, the alternatives for the root, the preferred path.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct ProofTree {
     /// The nodes; every child id is smaller than its parent's.
     pub nodes: Vec<Node>,
@@ -280,6 +291,9 @@ pub struct ProofTree {
     pub roots: Vec<NodeId>,
     /// The path the answer uses, from a root to a leaf (may be empty).
     pub path: Vec<NodeId>,
+    /// The learned axioms among the tree's rule instances (supports and blocked rules), in
+    /// the order the knowledge base lists them; empty when it has none.
+    pub learned: Vec<LearnedAxiom>,
 }
 
 impl ProofTree {
@@ -325,6 +339,24 @@ impl ProofTree {
     /// Whether the node is on the answer's path.
     pub fn on_path(&self, id: NodeId) -> bool {
         self.path.contains(&id)
+    }
+
+    /// The learned axiom a node's supporting rule instance comes from.
+    pub fn learned_of(&self, id: NodeId) -> Option<&LearnedAxiom> {
+        let label = &self.node(id).rule.as_ref()?.label;
+        self.learned.iter().find(|l| &l.label == label)
+    }
+
+    /// Keeps, of `known` (a knowledge base's learned axioms), those whose label is the label of
+    /// one of the tree's rule instances.
+    pub fn note_learned(&mut self, known: &[LearnedAxiom]) {
+        let used = |l: &LearnedAxiom| {
+            self.nodes.iter().any(|n| {
+                n.rule.as_ref().is_some_and(|r| r.label == l.label)
+                    || n.blocked.iter().any(|r| r.label == l.label)
+            })
+        };
+        self.learned = known.iter().filter(|l| used(l)).cloned().collect();
     }
 
     /// The leaves reachable from the roots.

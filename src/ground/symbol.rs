@@ -62,7 +62,8 @@ pub struct Symbols {
     table: HashTable<SymId>,
     /// Hasher for the table.
     hasher: hashbrown::DefaultHashBuilder,
-    /// Id of each small integer `SMALL_MIN + i`, `u32::MAX` when not created yet.
+    /// Id of each small integer, at index `small_index(n)` (`u32::MAX` when not created yet);
+    /// grown on demand, so a table that only sees small numbers stays small.
     small: Vec<u32>,
 }
 
@@ -70,6 +71,17 @@ pub struct Symbols {
 const SMALL_MIN: i32 = -1024;
 /// One past the largest integer of the direct table.
 const SMALL_MAX: i32 = 16384;
+
+/// The index of a small integer in the direct table: `0, -1, 1, -2, 2, ...` interleaved, so
+/// that the table grows with the magnitude of the numbers seen.
+#[inline]
+fn small_index(n: i32) -> usize {
+    if n >= 0 {
+        2 * n as usize
+    } else {
+        2 * (-(n as i64)) as usize - 1
+    }
+}
 
 impl Default for Symbols {
     fn default() -> Self {
@@ -175,15 +187,18 @@ impl Symbols {
     #[inline]
     pub fn int(&mut self, n: i32) -> SymId {
         if (SMALL_MIN..SMALL_MAX).contains(&n) {
-            let i = (n - SMALL_MIN) as usize;
+            let i = small_index(n);
             if let Some(&id) = self.small.get(i) {
                 if id != u32::MAX {
                     return SymId(id);
                 }
             }
             let id = self.intern_key(KeyRef::Num(n));
-            if self.small.is_empty() {
-                self.small = vec![u32::MAX; (SMALL_MAX - SMALL_MIN) as usize];
+            if self.small.len() <= i {
+                // Powers of two from 64: a one-shot table of a small program allocates little
+                // (the whole range would be 68 KiB per table).
+                self.small
+                    .resize((i + 1).next_power_of_two().max(64), u32::MAX);
             }
             self.small[i] = id.0;
             return id;

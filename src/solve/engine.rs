@@ -264,6 +264,10 @@ pub struct Engine {
     cla_inc: f64,
     /// True once a conflict at level 0 was found.
     inconsistent: bool,
+    /// After a search that answered `Unsat` under assumptions: the assumptions (true on the
+    /// trail, as assumed) that imply the failed one's complement, the failed one first; empty
+    /// when no assumption took part (a level-0 conflict).
+    failed: Vec<Lit>,
     /// Literals of the last conflict (all false).
     conflict: Vec<Lit>,
     /// Unfounded-set propagator for non-tight programs (install with `set_unfounded`).
@@ -409,6 +413,7 @@ impl Engine {
             var_decay: 0.95,
             cla_inc: 1.0,
             inconsistent: false,
+            failed: Vec::new(),
             conflict: Vec::new(),
             unfounded: None,
             uf_relevant: Vec::new(),
@@ -654,6 +659,13 @@ impl Engine {
     /// Whether a conflict at level 0 was derived: no more models under any assumption.
     pub fn is_inconsistent(&self) -> bool {
         self.inconsistent
+    }
+
+    /// After a search that answered [`SearchResult::Unsat`]: a subset of its assumptions that
+    /// the constraints refute together (MiniSat's `analyzeFinal`), the one found false first;
+    /// empty when the constraints alone are unsatisfiable. Meaningless after other answers.
+    pub fn failed_assumptions(&self) -> &[Lit] {
+        &self.failed
     }
 
     /// The value of a literal: `Some(true)`, `Some(false)` or `None`.

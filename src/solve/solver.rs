@@ -106,6 +106,8 @@ pub struct Solver {
     problem_size: usize,
     /// Solve calls so far.
     calls: u64,
+    /// The caller's assumptions that refuted the last call, when it found no model.
+    core: Option<Vec<i32>>,
 }
 
 /// What one guard owns: variables defined for the constraints it guards (cost and CR bounds,
@@ -234,6 +236,7 @@ impl Solver {
             scopes: Vec::new(),
             problem_size,
             calls: 0,
+            core: None,
         }
     }
 
@@ -469,6 +472,7 @@ impl Solver {
     /// are then neither used nor extended.
     pub fn solve(&mut self) -> SolveResult {
         if self.config.threads >= 2 {
+            self.core = None;
             return portfolio(&self.prog, &self.config);
         }
         self.solve_with(&[])
@@ -483,6 +487,16 @@ impl Solver {
         });
         r.models = models;
         r
+    }
+
+    /// After a call under assumptions ([`Solver::solve_with`], [`Solver::for_each_model`])
+    /// that found no answer set and was not stopped: the assumptions (aspif literals, in the
+    /// caller's order) that the refutation used, a subset under which the program has no answer
+    /// set either (clingo's unsatisfiable core; not minimal). Empty when the program has none
+    /// under any assumption. `None` after a call that found a model or was stopped, and after
+    /// [`Solver::solve`]'s portfolio.
+    pub fn core(&self) -> Option<&[i32]> {
+        self.core.as_deref()
     }
 
     /// Solves under extra assumptions, calling `sink` on every model as it is found (return
@@ -534,6 +548,16 @@ impl Solver {
                 CrMode::Subset => self.run_cr_subset(&mut call, &assume, call_guard),
             }
         }
+        // With no model, the last search ran under `assume` alone (bound and phase guards
+        // are added only after a model), so its failed assumptions refute the program.
+        self.core = (call.count == 0 && call.exhausted && !call.stopped).then(|| {
+            let failed = self.engine.failed_assumptions();
+            assumptions
+                .iter()
+                .copied()
+                .filter(|&l| failed.contains(&self.lit_of(l)))
+                .collect()
+        });
         self.retire(call_guard);
         let outcome = if call.count > 0 {
             if call.optimum && call.has_costs {

@@ -1,5 +1,6 @@
-//! Conflict analysis: first-UIP learning with recursive clause minimisation, and the LBD of
-//! learnt clauses (computed at learning, lowered when a clause propagates).
+//! Conflict analysis: first-UIP learning with recursive clause minimisation, the LBD of
+//! learnt clauses (computed at learning, lowered when a clause propagates), and the final
+//! analysis of a failed assumption (the assumptions it rests on, `Engine::failed_assumptions`).
 //!
 //! Invariants: analysis never looks at level-0 assignments; the learnt clause has its asserting
 //! literal first and a literal of the backjump level second.
@@ -7,6 +8,48 @@
 use super::*;
 
 impl Engine {
+    /// Fills `failed` when assumption `a` is found false at decision level
+    /// `<= assumptions.len()`: walks the implication graph of `!a` back to the assumption
+    /// decisions it rests on (every decision at these levels is an assumption).
+    pub(super) fn analyze_final(&mut self, a: Lit) {
+        self.failed.clear();
+        self.failed.push(a);
+        let v0 = a.var();
+        if self.level[v0.index()] == 0 {
+            return;
+        }
+        let Some(&start) = self.trail_lim.first() else {
+            return;
+        };
+        let mut marked: Vec<Var> = vec![v0];
+        self.seen[v0.index()] = 1;
+        let mut reason = Vec::new();
+        for i in (start..self.trail.len()).rev() {
+            let x = self.trail[i];
+            let v = x.var();
+            if self.seen[v.index()] == 0 {
+                continue;
+            }
+            if matches!(self.reason[v.index()], Reason::Decision) {
+                // An assumption (`!a` itself when both `a` and `!a` were assumed).
+                self.failed.push(x);
+                continue;
+            }
+            reason.clear();
+            self.reason_lits(v, &mut reason);
+            for &q in &reason {
+                let w = q.var();
+                if self.seen[w.index()] == 0 && self.level[w.index()] > 0 {
+                    self.seen[w.index()] = 1;
+                    marked.push(w);
+                }
+            }
+        }
+        for v in marked {
+            self.seen[v.index()] = 0;
+        }
+    }
+
     // ---------------------------------------------------------------- analysis
 
     /// First-UIP analysis of `self.conflict`; leaves the learnt clause in `self.learnt`

@@ -98,6 +98,7 @@ impl Engine {
     /// made this assignment).
     pub fn search_from(&mut self, assumptions: &[Lit], resume: bool) -> SearchResult {
         self.interrupted = false;
+        self.failed.clear();
         if self.inconsistent {
             return SearchResult::Unsat;
         }
@@ -199,6 +200,7 @@ impl Engine {
                         continue;
                     }
                     -1 => {
+                        self.analyze_final(a);
                         self.backtrack(0);
                         return SearchResult::Unsat;
                     }

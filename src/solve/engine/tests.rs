@@ -14,6 +14,35 @@ fn luby_sequence() {
 }
 
 #[test]
+fn failed_assumptions_are_the_ones_the_refutation_uses() {
+    // x -> y, y -> -z; w is unrelated. Assuming w, x, z fails on z, because of x.
+    let mut e = Engine::new();
+    let v = lits(&mut e, 4);
+    let (x, y, z, w) = (v[0], v[1], v[2], v[3]);
+    e.add_clause(&[x.negative(), y.positive()]);
+    e.add_clause(&[y.negative(), z.negative()]);
+    let assumptions = [w.positive(), x.positive(), z.positive()];
+    assert_eq!(e.search(&assumptions), SearchResult::Unsat);
+    let mut failed = e.failed_assumptions().to_vec();
+    assert_eq!(failed[0], z.positive(), "the failed assumption comes first");
+    failed.sort_by_key(|l| l.code());
+    let mut expected = vec![z.positive(), x.positive()];
+    expected.sort_by_key(|l| l.code());
+    assert_eq!(failed, expected);
+    // The core alone is refuted; without x the rest is satisfiable.
+    assert_eq!(e.search(&[x.positive(), z.positive()]), SearchResult::Unsat);
+    assert_eq!(e.search(&[w.positive(), z.positive()]), SearchResult::Sat);
+    // Contradictory assumptions are a core of two; a fact false at level 0 one of one.
+    assert_eq!(e.search(&[w.positive(), w.negative()]), SearchResult::Unsat);
+    let mut failed = e.failed_assumptions().to_vec();
+    failed.sort_by_key(|l| l.code());
+    assert_eq!(failed, vec![w.positive(), w.negative()]);
+    e.add_clause(&[y.negative()]);
+    assert_eq!(e.search(&[w.positive(), y.positive()]), SearchResult::Unsat);
+    assert_eq!(e.failed_assumptions(), &[y.positive()]);
+}
+
+#[test]
 fn pigeonhole_three_in_two_is_unsat() {
     // p(i, j): pigeon i in hole j; each pigeon somewhere, no two share a hole.
     let mut e = Engine::new();

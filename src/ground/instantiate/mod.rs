@@ -1,0 +1,544 @@
+//! Instantiation: grounds rewritten statements bottom-up over the statement dependency graph.
+//!
+//! Algorithm (Kaminski, Schaub, TPLP 2022, simplified): ground facts first, then the strongly
+//! connected components of the statement dependency graph (a statement depends on every
+//! statement heading a predicate it reads) in topological order, each split, as gringo does,
+//! into the components of its positive dependencies (a statement read only under `not` inside
+//! its component is grounded after the reader, whose literal stays); inside a recursive part,
+//! semi-naive evaluation grounds each rule once per combination that uses at least one atom new
+//! in the last round, the rounds after the first in gringo's queue order. Components with an
+//! aggregate or conditional literal over one of their own predicates are instead grounded
+//! naively to a fixpoint, keeping only the last round's rules (aggregate instances must see
+//! every element). Joins use per-predicate indexes on the bound argument positions, built
+//! lazily and extended as atoms arrive. The graph search, the split and the queue follow
+//! gringo's (`Dependency::analyze`, `Graph::tarjan`, `Queue::process`), so the rules come out
+//! in gringo's order: the atom numbering, hence the solver's initial variable order, follows.
+//!
+//! Invariants:
+//! - Internal atom ids are `1..=atoms.len()`; an atom is *in the domain* once some rule instance
+//!   can derive it; `fact` atoms are certainly true, and they never lose that status.
+//! - A predicate is *complete* once every statement heading it is grounded; readers come after
+//!   (or in the same component, where `not` literals on it stay).
+//! - A positive body literal only matches atoms in the domain; a fact matched positively is
+//!   removed from the ground body; `not a` with `a` a fact kills the instance, and `not a` with
+//!   `a` of a complete predicate outside the domain is removed.
+//! - Ground rules use internal ids; `simplify` renumbers them for aspif.
+//!
+//! Files: `mod` (the grounder's state, atoms, rule store), `provenance` (origins, dead
+//! instances), `join` (candidates, indexes, joins, body order), `conditional` (conditional
+//! body literals and the helper atoms for negations), `aggregate` (aggregate elements and
+//! guards, saturation), `emit` (ground rules from a body's solutions), `schedule` (component
+//! order, semi-naive and naive rounds, warnings).
+
+mod aggregate;
+mod conditional;
+mod emit;
+mod join;
+mod provenance;
+mod schedule;
+
+pub use join::cmp_holds;
+
+use hashbrown::HashMap;
+use hashbrown::HashTable;
+use smallvec::SmallVec;
+use std::hash::BuildHasher;
+
+use crate::base::{Diagnostic, Diagnostics, SourceMap, Span, WarningKind};
+use crate::syntax::ast::{AggregateFunction, CmpOp, Sign};
+
+use super::program::{
+    AuxKind, Bindings, Body, DeadReason, DeadRule, ExternalValue, HeadKind, HeuristicModifier, Lit,
+    Origin, RemovedLit, Rule, RuleOrigin, Rules, Weight,
+};
+use super::rewrite::{
+    lit_vars, Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
+};
+use super::symbol::{SymData, SymId, Symbols};
+use super::term::{Binding, NTerm};
+use crate::base::intern::Sym;
+
+/// Internal atom id, `1..`.
+pub type AtomId = u32;
+
+/// Why grounding stopped early.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StopReason {
+    /// The configured size limit was exceeded.
+    SizeLimit,
+    /// The deadline passed.
+    Deadline,
+}
+
+/// What is known about one atom.
+#[derive(Clone, Copy, Debug)]
+pub struct AtomInfo {
+    /// The atom as a symbol (`p(1)`); `None` for auxiliary atoms.
+    pub sym: Option<SymId>,
+    /// Its predicate (`u32::MAX` for auxiliary atoms).
+    pub pred: PredId,
+    /// Certainly true.
+    pub fact: bool,
+    /// Derivable by some ground rule (or external).
+    pub in_domain: bool,
+    /// Position in the predicate's domain list.
+    pub dom_pos: u32,
+}
+
+/// Index of a predicate's atoms on a set of bound argument positions.
+struct Index {
+    /// The bound positions (bit `i` for argument `i`).
+    mask: u64,
+    /// Atoms `[0, upto)` of the domain list are indexed.
+    upto: usize,
+    /// Key: the values at the bound positions; value: its group in `groups`.
+    map: HashMap<SmallVec<[SymId; 4]>, u32>,
+    /// Domain positions of each key, increasing (append-only).
+    groups: Vec<Vec<u32>>,
+}
+
+/// The atoms of one predicate.
+#[derive(Default)]
+struct Domain {
+    /// Atoms in derivation order.
+    atoms: Vec<AtomId>,
+    /// Indexes, one per bound-position mask (few per predicate, found by linear search).
+    indexes: Vec<Index>,
+    /// All rules that can derive the predicate have been grounded.
+    complete: bool,
+    /// Semi-naive: positions below `old` were seen by every rule in all combinations.
+    old: u32,
+    /// Semi-naive: positions in `[old, delta)` are new in this round.
+    delta: u32,
+}
+
+/// A position range in a domain list.
+type Range = (u32, u32);
+
+/// Domain positions to try for a literal.
+enum Candidates {
+    /// Every position in `[lo, hi)`.
+    Range(u32, u32),
+    /// At most one position.
+    One(Option<u32>),
+    /// `groups[group][lo..hi]` of the predicate's index number `index`.
+    Group {
+        /// Index number in the domain.
+        index: u32,
+        /// Group in the index.
+        group: u32,
+        /// First entry.
+        lo: u32,
+        /// One past the last entry.
+        hi: u32,
+    },
+}
+
+/// Grounding limits, as values.
+#[derive(Clone, Debug, Default)]
+pub struct Limits {
+    /// Maximum number of ground rules plus atoms.
+    pub max_size: Option<usize>,
+    /// Stop after this instant (checked every few thousand rules).
+    pub deadline: Option<std::time::Instant>,
+}
+
+/// A minimize element key: priority, weight, tuple.
+type MinKey = (i32, i32, Vec<SymId>);
+
+/// The grounder's state.
+pub struct Grounder<'a> {
+    /// Symbols.
+    pub syms: Symbols,
+    /// Atom table, index `id - 1`.
+    pub atoms: Vec<AtomInfo>,
+    /// Atom of each predicate-atom symbol, by symbol id (0: none).
+    sym_atom: Vec<AtomId>,
+    /// Domains, by predicate.
+    domains: Vec<Domain>,
+    /// Ground rules over internal ids, stored flat (a program may ground to millions).
+    pub rules: Rules,
+    /// Origins parallel to `rules` (when provenance is on): the first instance of each rule.
+    pub origins: Vec<Origin>,
+    /// Further origins of rules that several instances ground to (when provenance is on).
+    pub more_origins: HashMap<u32, Vec<Origin>>,
+    /// Provenance: the statement being grounded.
+    prov_stmt: ProvStmt,
+    /// Provenance: the auxiliary being built (its kind and the bindings when it started).
+    prov_aux: Option<(AuxKind, Bindings)>,
+    /// Provenance: instances dropped during instantiation because a fact among their heads
+    /// satisfies them (`simplify` keeps those with a head atom that ends up false).
+    pub dead: Vec<DeadRule>,
+    /// Provenance: the origins of each minimize element's conditions, parallel to `minimize`.
+    pub minimize_origins: HashMap<MinKey, Vec<Vec<Origin>>>,
+    /// Deduplication of `rules`.
+    rule_set: HashTable<u32>,
+    /// Hash of each rule in `rules` (so that growing `rule_set` does not rehash rules).
+    rule_hashes: Vec<u64>,
+    /// Hasher for `rule_set`.
+    hasher: hashbrown::DefaultHashBuilder,
+    /// Diagnostics.
+    pub diags: &'a mut Diagnostics,
+    /// Sources for snippets.
+    sources: Option<&'a SourceMap>,
+    /// Record origins.
+    pub provenance: bool,
+    /// Limits.
+    limits: Limits,
+    /// Set when grounding must stop.
+    pub stopped: Option<StopReason>,
+    /// Spans of undefined operations already reported.
+    reported: hashbrown::HashSet<Span>,
+    /// `not not a` auxiliaries, by atom.
+    notnot: HashMap<AtomId, AtomId>,
+    /// CR application atoms by (statement, ground global values).
+    cr_appl: HashMap<(u32, Vec<SymId>), AtomId>,
+    /// Ground CR rules: application atom and label.
+    pub cr_rules: Vec<(AtomId, String)>,
+    /// Minimize elements: key to alternative conditions.
+    pub minimize: HashMap<MinKey, Vec<Vec<Lit>>>,
+    /// Insertion order of minimize keys.
+    pub minimize_order: Vec<MinKey>,
+    /// `#show t : body` instances.
+    pub shows: Vec<(SymId, Vec<Lit>)>,
+    /// Projected atoms.
+    pub projections: Vec<AtomId>,
+    /// Externals.
+    pub externals: Vec<(AtomId, ExternalValue)>,
+    /// Heuristics with internal atom ids.
+    pub heuristics: Vec<super::program::Heuristic>,
+    /// Edges.
+    pub edges: Vec<super::program::Edge>,
+    /// Node numbers of `#edge` terms.
+    edge_nodes: HashMap<SymId, i32>,
+    /// Rules emitted since the last deadline check.
+    since_check: u32,
+    /// Grounding a component naively: derived atoms are not marked as facts, since a later
+    /// round may withdraw the rule that derived them.
+    naive: bool,
+    /// Computing a naive component's domain: aggregates over its predicates are assumed true.
+    optimistic: bool,
+}
+
+/// A join continuation.
+type Cont<'k, 'a> = &'k mut dyn FnMut(&mut Grounder<'a>, &mut Ctx);
+
+/// The statement being grounded, for provenance.
+#[derive(Default)]
+struct ProvStmt {
+    /// Its index.
+    stmt: u32,
+    /// Set when the statement is itself part of another's translation.
+    aux: Option<AuxKind>,
+    /// Its variable names (`None` for the rewriting's own variables).
+    names: Vec<Option<Sym>>,
+    /// Its head atoms, when its head is a plain disjunction or choice of atoms (so that an
+    /// instance whose body fails can still name the atoms it would have derived).
+    head: Option<Vec<NAtom>>,
+}
+
+/// Per-statement join state.
+struct Ctx {
+    /// Variable values.
+    binding: Binding,
+    /// Ground body literals so far.
+    body: Vec<Lit>,
+}
+
+/// A ground conditional disjunction element: its literals (sign and atom) and its condition.
+type ElemInstance = (Vec<(Sign, AtomId)>, Vec<Lit>);
+
+/// One ground literal of a conditional disjunction element: its sign, the index of its
+/// non-ground literal in the element's conjunction, and the atom.
+type ElemLit = (Sign, usize, SymId);
+
+/// The instances of a conditional disjunction element that form one element: their key (the
+/// values of the local variables shared by condition and literals), their conditions and the
+/// union of their literals.
+type ElemGroup = (Vec<SymId>, Vec<Vec<Lit>>, Vec<ElemLit>);
+
+/// A ground instance of a conditional body literal's condition: its literals, and the
+/// alternatives of the literal (`None` when none can hold, an empty list when one certainly
+/// does).
+type CondInstance = (Vec<Lit>, Option<Vec<Vec<Lit>>>);
+
+/// The distinct tuples of an aggregate's ground elements, in order of first occurrence, stored
+/// one after another; `table` holds their indexes, hashed by tuple.
+#[derive(Default)]
+struct ElemTuples {
+    /// The tuples' values, one tuple after another.
+    values: Vec<SymId>,
+    /// Where each tuple ends in `values`.
+    ends: Vec<usize>,
+    /// Indexes of the tuples.
+    table: HashTable<u32>,
+    /// Hasher of `table`.
+    hasher: hashbrown::DefaultHashBuilder,
+}
+
+impl ElemTuples {
+    /// Tuple `i`.
+    fn get(&self, i: usize) -> &[SymId] {
+        let start = if i == 0 { 0 } else { self.ends[i - 1] };
+        &self.values[start..self.ends[i]]
+    }
+
+    /// The index of tuple `t`, added at the end if new.
+    fn index(&mut self, t: &[SymId]) -> usize {
+        let hash = self.hasher.hash_one(t);
+        let ElemTuples {
+            values,
+            ends,
+            table,
+            hasher,
+        } = self;
+        let get = |i: u32| {
+            let i = i as usize;
+            let start = if i == 0 { 0 } else { ends[i - 1] };
+            &values[start..ends[i]]
+        };
+        if let Some(&i) = table.find(hash, |&i| get(i) == t) {
+            return i as usize;
+        }
+        let i = ends.len();
+        values.extend_from_slice(t);
+        ends.push(values.len());
+        let (values, ends) = (&*values, &*ends);
+        table.insert_unique(hash, i as u32, |&j| {
+            let j = j as usize;
+            let start = if j == 0 { 0 } else { ends[j - 1] };
+            hasher.hash_one(&values[start..ends[j]])
+        });
+        i
+    }
+}
+
+/// The value of an aggregate atom under a guard, over ground elements.
+enum Truth {
+    /// Certainly true.
+    True,
+    /// Certainly false.
+    False,
+    /// True exactly when all these literals are.
+    Lits(Vec<Lit>),
+}
+
+impl<'a> Grounder<'a> {
+    /// A grounder over `syms` (which holds the symbols of the compiled program).
+    pub fn new(
+        syms: Symbols,
+        num_preds: usize,
+        diags: &'a mut Diagnostics,
+        sources: Option<&'a SourceMap>,
+        provenance: bool,
+        limits: Limits,
+    ) -> Grounder<'a> {
+        let mut domains = Vec::with_capacity(num_preds);
+        domains.resize_with(num_preds, Domain::default);
+        Grounder {
+            syms,
+            atoms: Vec::new(),
+            sym_atom: Vec::new(),
+            domains,
+            rules: Rules::new(),
+            origins: Vec::new(),
+            more_origins: HashMap::new(),
+            prov_stmt: ProvStmt::default(),
+            prov_aux: None,
+            minimize_origins: HashMap::new(),
+            dead: Vec::new(),
+            rule_set: HashTable::new(),
+            rule_hashes: Vec::new(),
+            hasher: hashbrown::DefaultHashBuilder::default(),
+            diags,
+            sources,
+            provenance,
+            limits,
+            stopped: None,
+            reported: hashbrown::HashSet::new(),
+            notnot: HashMap::new(),
+            cr_appl: HashMap::new(),
+            cr_rules: Vec::new(),
+            minimize: HashMap::new(),
+            minimize_order: Vec::new(),
+            shows: Vec::new(),
+            projections: Vec::new(),
+            externals: Vec::new(),
+            heuristics: Vec::new(),
+            edges: Vec::new(),
+            edge_nodes: HashMap::new(),
+            since_check: 0,
+            naive: false,
+            optimistic: false,
+        }
+    }
+
+    fn snippet(&self, span: Span) -> String {
+        match self.sources {
+            Some(s) if (span.file.0 as usize) < s.len() => s.get(span.file).slice(span).to_string(),
+            _ => String::new(),
+        }
+    }
+
+    fn undefined(&mut self, span: Span) {
+        if self.reported.insert(span) {
+            let d =
+                Diagnostic::warning(WarningKind::OperationUndefined, span, "operation undefined");
+            let s = self.snippet(span);
+            self.diags
+                .push(if s.is_empty() { d } else { d.with_snippet(s) });
+        }
+    }
+
+    fn eval(&mut self, t: &NTerm, b: &Binding) -> Option<SymId> {
+        match t.eval(&mut self.syms, b) {
+            Ok(v) => Some(v),
+            Err(span) => {
+                self.undefined(span);
+                None
+            }
+        }
+    }
+
+    /// A fresh auxiliary atom.
+    pub fn aux(&mut self) -> AtomId {
+        self.atoms.push(AtomInfo {
+            sym: None,
+            pred: u32::MAX,
+            fact: false,
+            in_domain: true,
+            dom_pos: 0,
+        });
+        self.atoms.len() as AtomId
+    }
+
+    /// The atom of a predicate-atom symbol, created outside the domain if new.
+    pub fn atom_of(&mut self, sym: SymId, pred: PredId) -> AtomId {
+        if let Some(a) = self.find_atom(sym) {
+            return a;
+        }
+        self.atoms.push(AtomInfo {
+            sym: Some(sym),
+            pred,
+            fact: false,
+            in_domain: false,
+            dom_pos: 0,
+        });
+        let id = self.atoms.len() as AtomId;
+        let i = sym.0 as usize;
+        if i >= self.sym_atom.len() {
+            self.sym_atom.resize((i + 1).max(self.syms.len()), 0);
+        }
+        self.sym_atom[i] = id;
+        id
+    }
+
+    /// The atom of a symbol, if it exists.
+    pub fn find_atom(&self, sym: SymId) -> Option<AtomId> {
+        match self.sym_atom.get(sym.0 as usize) {
+            Some(&a) if a != 0 => Some(a),
+            _ => None,
+        }
+    }
+
+    fn info(&self, a: AtomId) -> &AtomInfo {
+        &self.atoms[a as usize - 1]
+    }
+
+    /// Puts an atom into its predicate's domain.
+    fn derive(&mut self, a: AtomId) {
+        let info = self.atoms[a as usize - 1];
+        if info.in_domain || info.pred == u32::MAX {
+            return;
+        }
+        let d = &mut self.domains[info.pred as usize];
+        let pos = d.atoms.len() as u32;
+        d.atoms.push(a);
+        let i = &mut self.atoms[a as usize - 1];
+        i.in_domain = true;
+        i.dom_pos = pos;
+        self.check_size();
+    }
+
+    fn check_size(&mut self) {
+        if let Some(max) = self.limits.max_size {
+            if self.rules.len() + self.atoms.len() > max {
+                self.stopped = Some(StopReason::SizeLimit);
+            }
+        }
+    }
+
+    /// Frees the rule deduplication table once instantiation is over (simplification does
+    /// not add rules through [`Grounder::add_rule`]); large programs need the memory.
+    pub fn release_dedup(&mut self) {
+        self.rule_set = HashTable::new();
+        self.rule_hashes = Vec::new();
+    }
+
+    /// Adds a ground rule unless an equal one exists; returns whether it was added. With
+    /// provenance, `origin` is recorded for the rule, also when it existed already.
+    fn add_rule(&mut self, rule: Rule, origin: impl FnOnce(&mut Self) -> Origin) -> bool {
+        assert_eq!(
+            self.rule_hashes.len(),
+            self.rules.len(),
+            "add_rule after release_dedup"
+        );
+        let rule = rule.as_ref();
+        let hash = self.hasher.hash_one(rule);
+        let rules = &self.rules;
+        if let Some(&i) = self.rule_set.find(hash, |&i| rules.get(i as usize) == rule) {
+            if self.provenance {
+                let o = origin(self);
+                self.add_origin(i, o);
+            }
+            return false;
+        }
+        let idx = self.rules.len() as u32;
+        self.rules.push_ref(rule);
+        self.rule_hashes.push(hash);
+        if self.provenance {
+            let o = origin(self);
+            self.origins.push(o);
+        }
+        let hashes = &self.rule_hashes;
+        self.rule_set
+            .insert_unique(hash, idx, |&i| hashes[i as usize]);
+        self.check_size();
+        self.since_check += 1;
+        if self.since_check >= 4096 {
+            self.since_check = 0;
+            if let Some(d) = self.limits.deadline {
+                if std::time::Instant::now() >= d {
+                    self.stopped = Some(StopReason::Deadline);
+                }
+            }
+        }
+        true
+    }
+
+    /// Records one more origin for rule `i` (unless it has that origin already).
+    fn add_origin(&mut self, i: u32, o: Origin) {
+        if self.origins[i as usize] == o {
+            return;
+        }
+        let more = self.more_origins.entry(i).or_default();
+        if !more.contains(&o) {
+            more.push(o);
+        }
+    }
+
+    /// With provenance: records `origin` for an existing rule equal to `rule`, if there is one
+    /// (an instance satisfied by a fact that grounds to that fact's rule).
+    fn attach_origin(&mut self, rule: Rule, origin: impl FnOnce(&mut Self) -> Origin) {
+        if !self.provenance {
+            return;
+        }
+        let rule = rule.as_ref();
+        let hash = self.hasher.hash_one(rule);
+        let rules = &self.rules;
+        if let Some(&i) = self.rule_set.find(hash, |&i| rules.get(i as usize) == rule) {
+            let o = origin(self);
+            self.add_origin(i, o);
+        }
+    }
+}

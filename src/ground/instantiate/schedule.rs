@@ -1,0 +1,554 @@
+//! Scheduling: facts first, then the strongly connected components of the statement
+//! dependency graph in gringo's order (`Graph::tarjan`, the positive split), each to its
+//! fixpoint by semi-naive rounds (or naive rounds for recursive aggregates); then gringo's
+//! warnings for atoms no rule heads.
+//!
+//! Invariant: a predicate is complete once every statement heading it is grounded, and its
+//! readers come after it (or in the same component).
+
+use super::*;
+
+impl Grounder<'_> {
+    /// Grounds the whole compiled program.
+    pub fn run(&mut self, prog: &Compiled) {
+        let n = prog.preds.len();
+        // Head predicates of each statement, and the predicates each statement reads.
+        let mut heads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
+        let mut reads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
+        // What each statement reads other than under default negation.
+        let mut pos_reads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
+        for s in &prog.stmts {
+            let h = stmt_heads(s);
+            // In gringo's order of the body (positive literals last to first, then the negative
+            // ones), which decides the order of its depth-first search.
+            let negative =
+                |l: &NLit| matches!(l, NLit::Pred { sign, .. } if *sign != Sign::Positive);
+            let mut pr = Vec::new();
+            for l in s.body.iter().rev().filter(|l| !negative(l)) {
+                lit_preds(l, &mut pr);
+            }
+            let mut r = pr.clone();
+            for l in s.body.iter().filter(|l| negative(l)) {
+                lit_preds(l, &mut r);
+            }
+            if let NHead::Disj(es) | NHead::Choice(es) = &s.head {
+                for e in es {
+                    for l in &e.cond {
+                        lit_preds(l, &mut r);
+                        lit_preds(l, &mut pr);
+                    }
+                    for l in e.conj.iter().filter(|l| l.sign != Sign::Positive) {
+                        r.push(l.atom.pred);
+                    }
+                }
+            }
+            heads.push(h);
+            reads.push(r);
+            pos_reads.push(pr);
+        }
+        self.warn_undefined(prog, &heads);
+        // SPARC sorts: facts of their hidden predicates.
+        for &(pred, v) in &prog.sort_facts {
+            let name = prog.preds[pred as usize].name;
+            let sym = self.syms.fun(name, false, &[v]);
+            let a = self.atom_of(sym, pred);
+            self.derive(a);
+            self.atoms[a as usize - 1].fact = true;
+        }
+        // Statement dependency graph, as gringo's (Dependency::analyze): a statement depends on
+        // every statement heading a predicate it reads. Ground facts are no nodes (gringo keeps
+        // them apart and outputs them first); they are grounded before everything.
+        let mut providers: Vec<Vec<u32>> = vec![Vec::new(); n];
+        let mut nodes: Vec<usize> = Vec::new();
+        let mut node_of = vec![u32::MAX; prog.stmts.len()];
+        for (si, s) in prog.stmts.iter().enumerate() {
+            if !is_ground_fact(s) {
+                node_of[si] = nodes.len() as u32;
+                nodes.push(si);
+            }
+            for &p in &heads[si] {
+                providers[p as usize].push(si as u32);
+            }
+        }
+        // Statements still to ground per predicate: a predicate is complete once all are done.
+        let mut pending: Vec<u32> = providers.iter().map(|v| v.len() as u32).collect();
+        for (d, &left) in self.domains.iter_mut().zip(&pending) {
+            if left == 0 {
+                d.complete = true;
+            }
+        }
+        let finished = |g: &mut Self, si: usize, pending: &mut Vec<u32>| {
+            for &p in &heads[si] {
+                pending[p as usize] -= 1;
+                if pending[p as usize] == 0 {
+                    g.domains[p as usize].complete = true;
+                }
+            }
+        };
+        for (si, s) in prog.stmts.iter().enumerate() {
+            if node_of[si] == u32::MAX {
+                if self.stopped.is_some() {
+                    return;
+                }
+                self.ground_stmt(s, &[]);
+                finished(self, si, &mut pending);
+            }
+        }
+        let edges_of = |reads: &[Vec<PredId>], keep: &dyn Fn(usize) -> bool| -> Vec<Vec<u32>> {
+            nodes
+                .iter()
+                .map(|&si| {
+                    let mut e = Vec::new();
+                    for &p in &reads[si] {
+                        for &t in &providers[p as usize] {
+                            let t = node_of[t as usize];
+                            if t != u32::MAX && keep(t as usize) {
+                                e.push(t);
+                            }
+                        }
+                    }
+                    e
+                })
+                .collect()
+        };
+        let edges = edges_of(&reads, &|_| true);
+        let pos_edges = edges_of(&pos_reads, &|_| true);
+        let comps = positive_split(gringo_tarjan(&edges), &pos_edges);
+        let mut comp_mark = vec![usize::MAX; n];
+        for (ci, comp) in comps.iter().enumerate() {
+            if self.stopped.is_some() {
+                break;
+            }
+            let stmts: Vec<&NStmt> = comp
+                .iter()
+                .map(|&v| &prog.stmts[nodes[v as usize]])
+                .collect();
+            let mut preds: Vec<PredId> = Vec::new();
+            for &v in comp {
+                for &p in &heads[nodes[v as usize]] {
+                    if comp_mark[p as usize] != ci {
+                        comp_mark[p as usize] = ci;
+                        preds.push(p);
+                    }
+                }
+            }
+            let in_comp = |p: PredId| comp_mark[p as usize] == ci;
+            let naive = stmts
+                .iter()
+                .any(|s| s.body.iter().any(|l| nested_reads(l, &in_comp)))
+                || stmts.iter().any(|s| match &s.head {
+                    NHead::Disj(es) | NHead::Choice(es) => es.iter().any(|e| {
+                        let mut r = Vec::new();
+                        e.cond.iter().for_each(|l| lit_preds(l, &mut r));
+                        r.into_iter().any(in_comp)
+                    }),
+                    NHead::None => false,
+                });
+            let recursive = stmts.iter().any(|s| {
+                s.body
+                    .iter()
+                    .any(|l| matches!(l, NLit::Pred { sign: Sign::Positive, atom } if in_comp(atom.pred)))
+            });
+            if naive {
+                self.naive = true;
+                self.ground_naive(&stmts, &preds);
+                self.naive = false;
+            } else if recursive {
+                self.ground_seminaive(&stmts, &preds, &in_comp);
+            } else {
+                for s in &stmts {
+                    self.ground_stmt(s, &[]);
+                }
+            }
+            for &v in comp {
+                finished(self, nodes[v as usize], &mut pending);
+            }
+        }
+    }
+
+    /// Grounds a component with recursive aggregates: first its domain, by rounds in which
+    /// such aggregates are assumed true (each round's rules are discarded), until no atom is
+    /// added; then one final round with the aggregates evaluated over the complete domain.
+    pub(super) fn ground_naive(&mut self, stmts: &[&NStmt], comp: &[PredId]) {
+        self.optimistic = true;
+        loop {
+            let rules_start = self.rules.len();
+            let cr_start = self.cr_rules.len();
+            let size_before: usize = comp
+                .iter()
+                .map(|&p| self.domains[p as usize].atoms.len())
+                .sum();
+            for s in stmts {
+                self.ground_stmt(s, &[]);
+            }
+            let size_after: usize = comp
+                .iter()
+                .map(|&p| self.domains[p as usize].atoms.len())
+                .sum();
+            self.forget_rules_from(rules_start);
+            for (a, _) in self.cr_rules.drain(cr_start..) {
+                self.cr_appl.retain(|_, v| *v != a);
+            }
+            if self.stopped.is_some() || size_after == size_before {
+                break;
+            }
+        }
+        self.optimistic = false;
+        for s in stmts {
+            self.ground_stmt(s, &[]);
+        }
+    }
+
+    pub(super) fn forget_rules_from(&mut self, start: usize) {
+        while self.rule_hashes.len() > start {
+            let hash = self.rule_hashes.pop().expect("len > start");
+            let idx = self.rule_hashes.len() as u32;
+            if let Ok(e) = self.rule_set.find_entry(hash, |&i| i == idx) {
+                e.remove();
+            }
+            if self.provenance {
+                self.origins.pop();
+            }
+        }
+        if self.provenance {
+            self.more_origins.retain(|&i, _| (i as usize) < start);
+        }
+        self.rules.truncate(start);
+        // Their defining rules may be gone; fresh auxiliaries are made next round.
+        self.notnot.clear();
+    }
+
+    pub(super) fn ground_seminaive(
+        &mut self,
+        stmts: &[&NStmt],
+        comp: &[PredId],
+        in_comp: &dyn Fn(PredId) -> bool,
+    ) {
+        // Round 0: everything over what is known.
+        for &p in comp {
+            let d = &mut self.domains[p as usize];
+            d.old = 0;
+            d.delta = d.atoms.len() as u32;
+        }
+        for s in stmts {
+            let ranges: Vec<Option<Range>> = s
+                .body
+                .iter()
+                .map(|l| match l {
+                    NLit::Pred {
+                        sign: Sign::Positive,
+                        atom,
+                    } if in_comp(atom.pred) => Some((0, self.domains[atom.pred as usize].delta)),
+                    _ => None,
+                })
+                .collect();
+            self.ground_stmt(s, &ranges);
+        }
+        // Later rounds follow gringo's queue of instantiators (Queue::process): an instantiator
+        // is a statement with one recursive literal over the last round's new atoms (earlier
+        // recursive literals over older atoms, later ones over all). After a round, the
+        // statements of that round, in order, enqueue the instantiators reading what they head
+        // whose literal has new atoms, in the order the instantiators were registered. Only
+        // the order of the output rules (hence the atom numbering) depends on this order.
+        let rec: Vec<Vec<usize>> = stmts
+            .iter()
+            .map(|s| {
+                s.body
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, l)| matches!(l, NLit::Pred { sign: Sign::Positive, atom } if in_comp(atom.pred)))
+                    .map(|(i, _)| i)
+                    .collect()
+            })
+            .collect();
+        let heads: Vec<Vec<PredId>> = stmts.iter().map(|s| stmt_heads(s)).collect();
+        let rec_pred = |t: usize, jj: usize| -> PredId {
+            match &stmts[t].body[rec[t][jj]] {
+                NLit::Pred { atom, .. } => atom.pred,
+                _ => unreachable!("recursive literals are predicate literals"),
+            }
+        };
+        // deps[s]: the instantiators (statement, recursive literal) reading a predicate that
+        // statement s heads, in registration order.
+        let mut deps: Vec<Vec<(usize, usize)>> = vec![Vec::new(); stmts.len()];
+        for (t, r) in rec.iter().enumerate() {
+            for jj in 0..r.len() {
+                let p = rec_pred(t, jj);
+                for (s, h) in heads.iter().enumerate() {
+                    if h.contains(&p) {
+                        deps[s].push((t, jj));
+                    }
+                }
+            }
+        }
+        let offset: Vec<usize> = rec
+            .iter()
+            .scan(0usize, |acc, r| {
+                let o = *acc;
+                *acc += r.len();
+                Some(o)
+            })
+            .collect();
+        let mut enqueued =
+            vec![false; offset.last().map_or(0, |&o| o) + rec.last().map_or(0, |r| r.len())];
+        // The statements whose heads propagate after the current round, in order.
+        let mut current: Vec<usize> = (0..stmts.len()).collect();
+        loop {
+            let mut any = false;
+            for &p in comp {
+                let d = &mut self.domains[p as usize];
+                d.old = d.delta;
+                d.delta = d.atoms.len() as u32;
+                any |= d.delta > d.old;
+            }
+            if !any || self.stopped.is_some() {
+                return;
+            }
+            let mut queue: Vec<(usize, usize)> = Vec::new();
+            for &s in &current {
+                for &(t, jj) in &deps[s] {
+                    let d = &self.domains[rec_pred(t, jj) as usize];
+                    if !enqueued[offset[t] + jj] && d.delta > d.old {
+                        enqueued[offset[t] + jj] = true;
+                        queue.push((t, jj));
+                    }
+                }
+            }
+            current.clear();
+            for &(t, jj) in &queue {
+                enqueued[offset[t] + jj] = false;
+                current.push(t);
+                let s = stmts[t];
+                let mut ranges: Vec<Option<Range>> = vec![None; s.body.len()];
+                let mut empty = false;
+                for (kk, &i) in rec[t].iter().enumerate() {
+                    let NLit::Pred { atom, .. } = &s.body[i] else {
+                        continue;
+                    };
+                    let d = &self.domains[atom.pred as usize];
+                    let r = match kk.cmp(&jj) {
+                        std::cmp::Ordering::Less => (0, d.old),
+                        std::cmp::Ordering::Equal => (d.old, d.delta),
+                        std::cmp::Ordering::Greater => (0, d.delta),
+                    };
+                    empty |= r.0 >= r.1;
+                    ranges[i] = Some(r);
+                }
+                if !empty {
+                    self.ground_stmt(s, &ranges);
+                }
+            }
+        }
+    }
+
+    /// gringo's `atom does not occur in any rule head` for positive body atoms of predicates
+    /// that nothing defines.
+    pub(super) fn warn_undefined(&mut self, prog: &Compiled, heads: &[Vec<PredId>]) {
+        let mut defined = vec![false; prog.preds.len()];
+        for h in heads {
+            for &p in h {
+                defined[p as usize] = true;
+            }
+        }
+        for &p in &prog.defined {
+            defined[p as usize] = true;
+        }
+        let mut seen: hashbrown::HashSet<Span> = hashbrown::HashSet::new();
+        for s in &prog.stmts {
+            let mut atoms: Vec<&NAtom> = Vec::new();
+            for l in &s.body {
+                positive_atoms(l, &mut atoms);
+            }
+            if let NHead::Disj(es) | NHead::Choice(es) = &s.head {
+                for e in es {
+                    e.cond.iter().for_each(|l| positive_atoms(l, &mut atoms));
+                }
+            }
+            for a in atoms {
+                if !a.sort && !defined[a.pred as usize] && seen.insert(a.span) {
+                    let d = Diagnostic::warning(
+                        WarningKind::AtomUndefined,
+                        a.span,
+                        "atom does not occur in any rule head",
+                    );
+                    let snip = self.snippet(a.span);
+                    self.diags.push(if snip.is_empty() {
+                        d
+                    } else {
+                        d.with_snippet(snip)
+                    });
+                }
+            }
+        }
+    }
+}
+
+pub(super) fn positive_atoms<'x>(l: &'x NLit, out: &mut Vec<&'x NAtom>) {
+    match l {
+        NLit::Pred { atom, .. } => out.push(atom),
+        NLit::Agg(a) => {
+            for e in &a.elems {
+                e.cond.iter().for_each(|c| positive_atoms(c, out));
+                e.lit_lits().for_each(|l| positive_atoms(l, out));
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Predicates a literal reads (including inside aggregates).
+pub(super) fn lit_preds(l: &NLit, out: &mut Vec<PredId>) {
+    match l {
+        NLit::Pred { atom, .. } => out.push(atom.pred),
+        NLit::Agg(a) => {
+            for e in &a.elems {
+                e.cond.iter().for_each(|c| lit_preds(c, out));
+                e.lit_lits().for_each(|l| lit_preds(l, out));
+            }
+        }
+        _ => {}
+    }
+}
+
+/// True when an aggregate of `l` reads a predicate of the current component.
+/// The predicates a statement derives atoms of (its head atoms, or the external atom).
+pub(super) fn stmt_heads(s: &NStmt) -> Vec<PredId> {
+    let mut h = Vec::new();
+    match &s.head {
+        NHead::Disj(es) | NHead::Choice(es) => {
+            for a in es.iter().flat_map(|e| e.derived_atoms()) {
+                if !h.contains(&a.pred) {
+                    h.push(a.pred)
+                }
+            }
+        }
+        NHead::None => {}
+    }
+    if let NKind::External(a, _) = &s.kind {
+        h.push(a.pred);
+    }
+    h
+}
+
+/// Whether a statement is a ground fact (one unconditional head atom, no body, no variables):
+/// gringo keeps these out of its dependency graph and outputs them first.
+pub(super) fn is_ground_fact(s: &NStmt) -> bool {
+    matches!(s.kind, NKind::Rule)
+        && s.body.is_empty()
+        && s.num_vars == 0
+        && matches!(&s.head, NHead::Disj(es) if es.len() == 1 && es[0].cond.is_empty() && es[0].conj.is_empty())
+}
+
+pub(super) fn nested_reads(l: &NLit, in_comp: &dyn Fn(PredId) -> bool) -> bool {
+    match l {
+        NLit::Agg(_) => {
+            let mut r = Vec::new();
+            lit_preds(l, &mut r);
+            r.into_iter().any(in_comp)
+        }
+        _ => false,
+    }
+}
+
+/// Splits each strongly connected component of the statement dependency graph into the
+/// components of its positive dependencies, in topological order, as gringo does: a statement
+/// read only under default negation by a statement of the same component is grounded after
+/// it, which keeps such literals (the predicate is not complete yet) instead of iterating the
+/// whole component together. Grounding each part to a fixpoint in this order gives the same
+/// rules, in gringo's order. Parts list their statements in gringo's order too.
+pub(super) fn positive_split(comps: Vec<Vec<u32>>, pos_edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
+    let mut local = vec![u32::MAX; pos_edges.len()];
+    let mut out = Vec::with_capacity(comps.len());
+    for comp in comps {
+        if comp.len() == 1 {
+            out.push(comp);
+            continue;
+        }
+        for (i, &v) in comp.iter().enumerate() {
+            local[v as usize] = i as u32;
+        }
+        let sub: Vec<Vec<u32>> = comp
+            .iter()
+            .map(|&v| {
+                pos_edges[v as usize]
+                    .iter()
+                    .map(|&w| local[w as usize])
+                    .filter(|&w| w != u32::MAX)
+                    .collect()
+            })
+            .collect();
+        for part in gringo_tarjan(&sub) {
+            out.push(part.into_iter().map(|i| comp[i as usize]).collect());
+        }
+        for &v in &comp {
+            local[v as usize] = u32::MAX;
+        }
+    }
+    out
+}
+
+/// Strongly connected components, every component after those it has edges to, computed as
+/// gringo's `Graph::tarjan` does so that independent components and the members of one
+/// component come in gringo's order: depth-first from the nodes in reverse order (gringo's
+/// graph prepends inserted nodes), edges in insertion order, and each component listing its
+/// nodes as they leave the trail (last reached first).
+pub fn gringo_tarjan(edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
+    const NEW: u32 = u32::MAX;
+    const DONE: u32 = 0;
+    let n = edges.len();
+    // NEW, DONE, or the node's current low value (from 2 on, as gringo's).
+    let mut visited = vec![NEW; n];
+    let mut next_edge = vec![0usize; n];
+    let mut stack: Vec<u32> = Vec::new();
+    let mut trail: Vec<u32> = Vec::new();
+    let mut comps: Vec<Vec<u32>> = Vec::new();
+    for root in (0..n).rev() {
+        if visited[root] != NEW {
+            continue;
+        }
+        let mut index = 1u32;
+        let mut push =
+            |x: u32, visited: &mut Vec<u32>, stack: &mut Vec<u32>, trail: &mut Vec<u32>| {
+                index += 1;
+                visited[x as usize] = index;
+                stack.push(x);
+                trail.push(x);
+            };
+        push(root as u32, &mut visited, &mut stack, &mut trail);
+        while let Some(&y) = stack.last() {
+            let y = y as usize;
+            let es = &edges[y];
+            while next_edge[y] < es.len() && visited[es[next_edge[y]] as usize] != NEW {
+                next_edge[y] += 1;
+            }
+            if next_edge[y] < es.len() {
+                let z = es[next_edge[y]];
+                next_edge[y] += 1;
+                push(z, &mut visited, &mut stack, &mut trail);
+                continue;
+            }
+            stack.pop();
+            let mut root = true;
+            for &z in es {
+                let vz = visited[z as usize];
+                if vz != DONE && vz < visited[y] {
+                    root = false;
+                    visited[y] = vz;
+                }
+            }
+            if root {
+                let mut c = Vec::new();
+                loop {
+                    let w = trail.pop().expect("scc trail");
+                    visited[w as usize] = DONE;
+                    c.push(w);
+                    if w as usize == y {
+                        break;
+                    }
+                }
+                comps.push(c);
+            }
+        }
+    }
+    comps
+}

@@ -1,0 +1,505 @@
+//! Rewriting: from syntax-tree statements to [`NStmt`]s the instantiator can ground.
+//!
+//! What happens here, in order: `#const` names are replaced by their values; pools are
+//! unfolded (in rule heads, bodies and aggregate bounds into separate statements, inside
+//! aggregates and conditions into separate elements; as clingo does, the pools of the literal
+//! of a conditional element stay within it: a conjunction in a disjunctive head, a
+//! disjunction in a conditional body literal); intervals become fresh variables bound by an
+//! interval literal; anonymous variables become fresh variables; conditional body literals
+//! `l : c` become a guard-less one-element aggregate the instantiator reads as "every
+//! instance of `c` has some instance of `l`"; choice bounds and head aggregates become an
+//! unbounded choice plus a constraint on a body aggregate; every body (and every element
+//! condition) is put in an order in which each literal is evaluable when reached, which is also
+//! the safety check.
+//!
+//! Invariants: a planned body binds every global variable before it is used; a statement that
+//! is unsafe is reported (gringo's `unsafe variables in:` with one note per variable) and not
+//! produced.
+//!
+//! Files: `mod` (the rewritten forms `NStmt`, `NLit`, ... and the `Rewriter`'s state),
+//! `pool` (unfolding pools), `lower` (terms, literals, aggregates and conditions to their
+//! rewritten forms), `statement` (constants and statements other than rules), `rule` (rules,
+//! their choice bounds and head aggregates, the safety check per instance), `safety` (the
+//! body order that binds every variable before its use).
+
+mod lower;
+mod pool;
+mod rule;
+mod safety;
+mod statement;
+
+pub use pool::unpool_term;
+pub use safety::{lit_vars, plan};
+
+use hashbrown::HashMap;
+
+use crate::base::{Diagnostic, Diagnostics, SourceMap, Span};
+use crate::syntax::ast::{self, AggregateFunction, CmpOp, Sign, TermKind};
+
+use super::program::AuxKind;
+use super::symbol::{SymId, Symbols};
+use super::term::NTerm;
+use crate::base::intern::Sym;
+
+/// Index of a predicate signature in [`Compiled::preds`].
+pub type PredId = u32;
+
+/// A predicate signature.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Pred {
+    /// Name.
+    pub name: Sym,
+    /// Arity.
+    pub arity: u32,
+    /// Classically negated.
+    pub neg: bool,
+}
+
+/// A non-ground predicate atom.
+#[derive(Clone, Debug)]
+pub struct NAtom {
+    /// Its predicate.
+    pub pred: PredId,
+    /// Name (as in the predicate).
+    pub name: Sym,
+    /// Classical negation.
+    pub neg: bool,
+    /// Arguments.
+    pub args: Vec<NTerm>,
+    /// Where it was written.
+    pub span: Span,
+    /// A SPARC sort atom `#s(t)`: a typing check, placed after the program's own literals.
+    pub sort: bool,
+}
+
+/// A body literal after rewriting.
+#[derive(Clone, Debug)]
+pub enum NLit {
+    /// A predicate literal with its default-negation sign.
+    Pred {
+        /// `not`, `not not` or nothing.
+        sign: Sign,
+        /// The atom.
+        atom: NAtom,
+    },
+    /// A comparison; `=` binds an unbound side that can be matched.
+    Cmp {
+        /// Relation.
+        op: CmpOp,
+        /// Left.
+        lhs: NTerm,
+        /// Right.
+        rhs: NTerm,
+    },
+    /// `pat = lo..hi`, binding the variables of `pat`.
+    Interval {
+        /// Matched against each value.
+        pat: NTerm,
+        /// Lower end.
+        lo: NTerm,
+        /// Upper end.
+        hi: NTerm,
+    },
+    /// `#true` / `#false`.
+    Bool(bool),
+    /// A body aggregate.
+    Agg(Box<NAgg>),
+}
+
+/// A body aggregate.
+#[derive(Clone, Debug)]
+pub struct NAgg {
+    /// Default negation in front.
+    pub sign: Sign,
+    /// The function.
+    pub func: AggregateFunction,
+    /// Guards, read as `aggregate op term`.
+    pub guards: Vec<(CmpOp, NTerm)>,
+    /// Index in `guards` of an `=` guard whose variable the aggregate binds (set by planning).
+    pub binder: Option<usize>,
+    /// Elements.
+    pub elems: Vec<NElem>,
+    /// Where it was written.
+    pub span: Span,
+}
+
+/// An aggregate element `terms : cond` (planned condition).
+#[derive(Clone, Debug)]
+pub struct NElem {
+    /// The tuple; its first term is the weight for `#sum`, `#min`, `#max`.
+    pub terms: Vec<NTerm>,
+    /// The condition, in evaluation order.
+    pub cond: Vec<NLit>,
+    /// For a conditional body literal `l : cond` (an aggregate with this single element and no
+    /// guards): the alternatives of `l` (its pool alternatives), each its interval binders
+    /// followed by the literal. An instance of the condition asks for *some* instance of some
+    /// alternative (clingo's reading: pools, intervals and variables local to `l` give a
+    /// disjunction).
+    pub lit: Option<Vec<Vec<NLit>>>,
+}
+
+impl NElem {
+    /// The literals of a conditional body literal's alternatives (none for other elements).
+    pub fn lit_lits(&self) -> impl Iterator<Item = &NLit> {
+        self.lit.iter().flatten().flatten()
+    }
+}
+
+/// A head element `[not] atom : cond`.
+#[derive(Clone, Debug)]
+pub struct NCondLit {
+    /// The atom (for an element with `conj`, the atom of its first literal).
+    pub atom: NAtom,
+    /// The condition, in evaluation order (empty when unconditional).
+    pub cond: Vec<NLit>,
+    /// Empty for a plain head atom. For an element written with a colon in a disjunction,
+    /// gringo's reading: the element holds when its condition and every literal here holds
+    /// (pools and intervals of the written literal are unfolded into this conjunction).
+    pub conj: Vec<NHeadLit>,
+}
+
+/// One literal of a conditional disjunction element: `[not [not]] atom`, over every solution
+/// of `expand` (the interval literals of the written literal, planned after the condition).
+#[derive(Clone, Debug)]
+pub struct NHeadLit {
+    /// `not`, `not not` or nothing.
+    pub sign: Sign,
+    /// The atom.
+    pub atom: NAtom,
+    /// Interval binders local to this literal.
+    pub expand: Vec<NLit>,
+}
+
+impl NCondLit {
+    /// Every atom the element can make true (the positive literals of its conjunction).
+    pub fn derived_atoms(&self) -> impl Iterator<Item = &NAtom> {
+        let plain = self.conj.is_empty().then_some(&self.atom);
+        plain.into_iter().chain(
+            self.conj
+                .iter()
+                .filter(|l| l.sign == Sign::Positive)
+                .map(|l| &l.atom),
+        )
+    }
+}
+
+/// A statement's head.
+#[derive(Clone, Debug)]
+pub enum NHead {
+    /// No atoms: a constraint, or a directive whose payload is in [`NKind`].
+    None,
+    /// A disjunction of atoms.
+    Disj(Vec<NCondLit>),
+    /// An unbounded choice of atoms.
+    Choice(Vec<NCondLit>),
+}
+
+/// What a statement produces beyond its head.
+#[derive(Clone, Debug)]
+pub enum NKind {
+    /// An ordinary rule or constraint.
+    Rule,
+    /// A consistency-restoring rule with its optional label.
+    Cr(Option<NTerm>),
+    /// One minimize element: weight, priority, further terms (weights already negated for
+    /// `#maximize`).
+    Minimize {
+        /// The weight.
+        weight: NTerm,
+        /// The priority.
+        priority: NTerm,
+        /// Distinguishing terms.
+        terms: Vec<NTerm>,
+        /// True for `#maximize`: the weight is negated.
+        maximize: bool,
+    },
+    /// `#show t : body.`
+    Show(NTerm),
+    /// `#project a : body.`
+    Project(NAtom),
+    /// `#external a : body. [v]`
+    External(NAtom, NTerm),
+    /// `#heuristic a : body. [w@p, m]`
+    Heuristic {
+        /// The atom.
+        atom: NAtom,
+        /// Weight.
+        weight: NTerm,
+        /// Priority.
+        priority: NTerm,
+        /// Modifier.
+        modifier: NTerm,
+    },
+    /// `#edge (u, v) : body.`
+    Edge(NTerm, NTerm),
+}
+
+/// A rewritten statement.
+#[derive(Clone, Debug)]
+pub struct NStmt {
+    /// Index of the source statement.
+    pub stmt: u32,
+    /// Its span.
+    pub span: Span,
+    /// The head.
+    pub head: NHead,
+    /// The planned body.
+    pub body: Vec<NLit>,
+    /// The payload.
+    pub kind: NKind,
+    /// Number of variable slots.
+    pub num_vars: u32,
+    /// Name of each slot.
+    pub var_names: Vec<Sym>,
+    /// Global slots (bound by the body), in slot order.
+    pub globals: Vec<u32>,
+    /// Set when the rewriting made this statement as part of statement `stmt`'s translation
+    /// (the constraint of a choice's bounds, a projection rule): its rules are auxiliaries.
+    pub aux: Option<AuxKind>,
+}
+
+/// `#show` configuration.
+#[derive(Clone, Debug, Default)]
+pub struct ShowConfig {
+    /// `#show.` was written, or a `#show p/n.`: atoms are shown only by signature.
+    pub restricted: bool,
+    /// Signatures shown by `#show p/n.`.
+    pub signatures: Vec<Pred>,
+}
+
+/// The whole rewritten program.
+#[derive(Clone, Debug, Default)]
+pub struct Compiled {
+    /// Predicate signatures.
+    pub preds: Vec<Pred>,
+    /// Statements.
+    pub stmts: Vec<NStmt>,
+    /// `#show` configuration.
+    pub show: ShowConfig,
+    /// `#project p/n.` signatures.
+    pub project_sigs: Vec<PredId>,
+    /// Predicates declared by `#defined`.
+    pub defined: Vec<PredId>,
+    /// Spans of the source statements, by statement index.
+    pub stmt_spans: Vec<Span>,
+    /// SPARC sort memberships, as facts of the sort predicates `#s/1`.
+    pub sort_facts: Vec<(PredId, SymId)>,
+}
+
+/// Rewriting context over the whole program.
+pub struct Rewriter<'a> {
+    /// The symbol table.
+    pub syms: &'a mut Symbols,
+    /// Diagnostics.
+    pub diags: &'a mut Diagnostics,
+    /// Sources, for snippets.
+    pub sources: Option<&'a SourceMap>,
+    /// Values of `#const` names.
+    pub consts: HashMap<String, SymId>,
+    /// The output.
+    pub out: Compiled,
+    /// Predicate ids.
+    pred_map: HashMap<Pred, PredId>,
+    /// Spans of unsupported constructs already reported.
+    reported: Vec<Span>,
+    /// Names (with `#`) of the SPARC sorts defined so far.
+    pub sorts: Vec<String>,
+    /// The statement being rewritten (index and span), for auxiliary rules.
+    current: (u32, Span),
+    /// Number of projection predicates made for anonymous variables under negation.
+    projections: u32,
+    /// Set while rewriting a statement made for another one's translation.
+    aux_role: Option<AuxKind>,
+}
+
+/// Per-statement variable table.
+#[derive(Default)]
+struct Vars {
+    names: Vec<String>,
+    spans: Vec<Span>,
+    map: HashMap<String, u32>,
+    fresh: u32,
+}
+
+impl Vars {
+    fn slot(&mut self, name: &str, span: Span) -> u32 {
+        // Rules have few variables: a scan beats hashing (and a second copy of each name);
+        // the map indexes the names only past `SCAN`.
+        const SCAN: usize = 16;
+        if self.names.len() <= SCAN {
+            if let Some(v) = self.names.iter().position(|n| n == name) {
+                return v as u32;
+            }
+        } else if let Some(&v) = self.map.get(name) {
+            return v;
+        }
+        let v = self.names.len() as u32;
+        self.names.push(name.to_string());
+        self.spans.push(span);
+        if self.names.len() > SCAN {
+            if self.map.is_empty() {
+                for (i, n) in self.names.iter().enumerate() {
+                    self.map.insert(n.clone(), i as u32);
+                }
+            } else {
+                self.map.insert(name.to_string(), v);
+            }
+        }
+        v
+    }
+
+    fn fresh(&mut self, prefix: &str, span: Span) -> u32 {
+        self.fresh += 1;
+        let name = format!("#{prefix}{}", self.fresh);
+        self.slot(&name, span)
+    }
+}
+
+/// The default-negation complement of a sign.
+fn negate_sign(s: Sign) -> Sign {
+    match s {
+        Sign::Positive => Sign::Not,
+        Sign::Not => Sign::NotNot,
+        Sign::NotNot => Sign::Not,
+    }
+}
+
+/// The complement of a comparison.
+pub fn negate_cmp(op: CmpOp) -> CmpOp {
+    match op {
+        CmpOp::Eq => CmpOp::Ne,
+        CmpOp::Ne => CmpOp::Eq,
+        CmpOp::Lt => CmpOp::Ge,
+        CmpOp::Le => CmpOp::Gt,
+        CmpOp::Gt => CmpOp::Le,
+        CmpOp::Ge => CmpOp::Lt,
+    }
+}
+
+/// `t op x` read as `x op' t`.
+pub fn flip_cmp(op: CmpOp) -> CmpOp {
+    match op {
+        CmpOp::Lt => CmpOp::Gt,
+        CmpOp::Le => CmpOp::Ge,
+        CmpOp::Gt => CmpOp::Lt,
+        CmpOp::Ge => CmpOp::Le,
+        o => o,
+    }
+}
+
+/// Turns a symbolic atom into the term with the same shape (`-p(X)` into `-p(X)`).
+fn atom_as_term(a: &ast::SymbolicAtom) -> ast::Term {
+    let f = ast::Term {
+        span: a.span,
+        kind: TermKind::Function {
+            name: a.name.clone(),
+            args: a.args.clone(),
+            trailing_comma: false,
+        },
+    };
+    if a.negated {
+        ast::Term {
+            span: a.span,
+            kind: TermKind::Unary {
+                op: ast::UnaryOp::Minus,
+                arg: Box::new(f),
+            },
+        }
+    } else {
+        f
+    }
+}
+
+/// Rewrites the guards of a choice into those of a `#count` body aggregate.
+fn lower_upper(lower: &Option<ast::Guard>, upper: &Option<ast::Guard>) -> bool {
+    lower.is_some() || upper.is_some()
+}
+
+impl<'a> Rewriter<'a> {
+    /// A rewriter writing into `syms` and `diags`.
+    pub fn new(
+        syms: &'a mut Symbols,
+        diags: &'a mut Diagnostics,
+        sources: Option<&'a SourceMap>,
+    ) -> Rewriter<'a> {
+        Rewriter {
+            syms,
+            diags,
+            sources,
+            consts: HashMap::new(),
+            out: Compiled::default(),
+            pred_map: HashMap::new(),
+            reported: Vec::new(),
+            sorts: Vec::new(),
+            current: (0, Span::default()),
+            aux_role: None,
+            projections: 0,
+        }
+    }
+
+    /// The id of a predicate signature.
+    pub fn pred(&mut self, name: &str, arity: u32, neg: bool) -> PredId {
+        let p = Pred {
+            name: self.syms.names.intern(name),
+            arity,
+            neg,
+        };
+        if let Some(&id) = self.pred_map.get(&p) {
+            return id;
+        }
+        let id = self.out.preds.len() as PredId;
+        self.out.preds.push(p.clone());
+        self.pred_map.insert(p, id);
+        id
+    }
+
+    fn snippet(&self, span: Span) -> String {
+        match self.sources {
+            Some(s) if (span.file.0 as usize) < s.len() => s.get(span.file).slice(span).to_string(),
+            _ => String::new(),
+        }
+    }
+
+    /// Reports an unsupported construct once per span.
+    pub fn unsupported(&mut self, span: Span, what: &str) {
+        if self.reported.contains(&span) {
+            return;
+        }
+        self.reported.push(span);
+        let d = Diagnostic::error(span, format!("unsupported: {what}"));
+        let snip = self.snippet(span);
+        self.diags.push(if snip.is_empty() {
+            d
+        } else {
+            d.with_snippet(snip)
+        });
+    }
+
+    /// Evaluates a ground term (for `#const` values).
+    pub fn eval_ground(&mut self, t: &ast::Term) -> Option<SymId> {
+        let mut vars = Vars::default();
+        let mut extra = Vec::new();
+        let n = self.term(t, &mut vars, &mut extra)?;
+        if !extra.is_empty() || !vars.names.is_empty() {
+            self.diags.push(
+                Diagnostic::error(t.span, "constant term expected")
+                    .with_snippet(self.snippet(t.span)),
+            );
+            return None;
+        }
+        match n.eval(self.syms, &super::term::Binding::new(0)) {
+            Ok(s) => Some(s),
+            Err(span) => {
+                self.diags.push(
+                    Diagnostic::warning(
+                        crate::base::WarningKind::OperationUndefined,
+                        span,
+                        "operation undefined",
+                    )
+                    .with_snippet(self.snippet(span)),
+                );
+                None
+            }
+        }
+    }
+}

@@ -1,0 +1,455 @@
+//! Rules: each pool alternative of a rule becomes a statement; choice bounds and head
+//! aggregates become an unbounded choice plus a constraint on a body aggregate; `finish`
+//! plans the body (the safety check) and records the statement.
+//!
+//! Invariant: an unsafe statement is reported (gringo's `unsafe variables in:`) and not
+//! produced.
+
+use super::pool::*;
+use super::*;
+
+impl Rewriter<'_> {
+    pub(super) fn rule(&mut self, index: u32, span: Span, r: &ast::Rule) {
+        // Most rules have no pools: no copy then.
+        if pool_free_rule(r) {
+            self.rule_instance(index, span, &r.head, &r.body, &r.kind);
+            return;
+        }
+        // Unfold pools of the head and body into separate rules.
+        let heads: Vec<ast::Head> = match &r.head {
+            // A plain element's alternatives are separate rules; an element written with a
+            // colon keeps its literal's pools (a conjunction, see `head_elem`) and its
+            // condition's alternatives become further elements of the same disjunction.
+            ast::Head::Disjunction(elems) => product(
+                elems
+                    .iter()
+                    .map(|e| {
+                        if e.has_colon {
+                            vec![unpool_condition(e)]
+                        } else {
+                            unpool_cond(e).into_iter().map(|c| vec![c]).collect()
+                        }
+                    })
+                    .collect(),
+            )
+            .into_iter()
+            .map(|es: Vec<Vec<ast::ConditionalLiteral>>| ast::Head::Disjunction(es.concat()))
+            .collect(),
+            // Alternatives of the guards are separate rules (each bound must hold).
+            ast::Head::Choice(c) => {
+                let mut c = c.clone();
+                c.elements = c.elements.iter().flat_map(unpool_cond).collect();
+                let mut out = Vec::new();
+                for lower in unpool_guard(&c.lower) {
+                    for upper in unpool_guard(&c.upper) {
+                        let mut c = c.clone();
+                        c.lower = lower.clone();
+                        c.upper = upper;
+                        out.push(ast::Head::Choice(c));
+                    }
+                }
+                out
+            }
+            ast::Head::Aggregate(h) => {
+                let mut h = h.clone();
+                h.elements = h
+                    .elements
+                    .iter()
+                    .flat_map(|e| {
+                        unpool_list(&e.terms)
+                            .into_iter()
+                            .map(|terms| ast::HeadAggregateElement { terms, ..e.clone() })
+                            .collect::<Vec<_>>()
+                    })
+                    .collect();
+                let mut out = Vec::new();
+                for lower in unpool_guard(&h.lower) {
+                    for upper in unpool_guard(&h.upper) {
+                        let mut h = h.clone();
+                        h.lower = lower.clone();
+                        h.upper = upper;
+                        out.push(ast::Head::Aggregate(h));
+                    }
+                }
+                out
+            }
+            h => vec![h.clone()],
+        };
+        for head in &heads {
+            for body in unpool_body(&r.body) {
+                self.rule_instance(index, span, head, &body, &r.kind);
+            }
+        }
+    }
+
+    pub(super) fn rule_instance(
+        &mut self,
+        index: u32,
+        span: Span,
+        head: &ast::Head,
+        body: &[ast::BodyLiteral],
+        kind: &ast::RuleKind,
+    ) {
+        let mut vars = Vars::default();
+        let mut out = Vec::new();
+        let mut extra = Vec::new();
+        let kind = match kind {
+            ast::RuleKind::Normal => NKind::Rule,
+            ast::RuleKind::ConsistencyRestoring { label } => match label {
+                None => NKind::Cr(None),
+                Some(l) => {
+                    let ls = unpool_term(l);
+                    let Some(t) = self.term(&ls[0], &mut vars, &mut extra) else {
+                        return;
+                    };
+                    NKind::Cr(Some(t))
+                }
+            },
+        };
+        let head_ast = head;
+        let head = match head {
+            ast::Head::None => NHead::None,
+            ast::Head::Disjunction(elems) => {
+                // `#false` alone is a constraint; `#true` alone makes the rule void.
+                if elems.len() == 1 && elems[0].condition.is_empty() {
+                    match elems[0].literal.atom {
+                        ast::Atom::Boolean(false) if elems[0].literal.sign == Sign::Positive => {
+                            return self.rule_instance(
+                                index,
+                                span,
+                                &ast::Head::None,
+                                body,
+                                &ast::RuleKind::Normal,
+                            );
+                        }
+                        ast::Atom::Boolean(_) => {
+                            self.unsupported(elems[0].span, "this head literal");
+                            return;
+                        }
+                        _ => {}
+                    }
+                }
+                // h | not a :- B.  ==  h :- B, not not a.   (and `not not a` moves as `not a`);
+                // likewise a comparison: h | X < 3 :- B.  ==  h :- B, not X < 3.
+                let moves = |e: &ast::ConditionalLiteral| {
+                    !e.has_colon
+                        && (e.literal.sign != Sign::Positive
+                            || matches!(e.literal.atom, ast::Atom::Comparison { .. }))
+                };
+                if elems.iter().any(moves) {
+                    let mut keep = Vec::new();
+                    let mut nbody = body.to_vec();
+                    for e in elems {
+                        if moves(e) {
+                            let mut l = e.literal.clone();
+                            l.sign = negate_sign(l.sign);
+                            nbody.push(ast::BodyLiteral::Literal(l));
+                        } else {
+                            keep.push(e.clone());
+                        }
+                    }
+                    let head = if keep.is_empty() {
+                        ast::Head::None
+                    } else {
+                        ast::Head::Disjunction(keep)
+                    };
+                    let kind = match &kind {
+                        NKind::Cr(_) => {
+                            return self.unsupported(span, "default negation in CR rule heads")
+                        }
+                        _ => ast::RuleKind::Normal,
+                    };
+                    return self.rule_instance(index, span, &head, &nbody, &kind);
+                }
+                let mut es = Vec::new();
+                for e in elems {
+                    // An element with a colon whose literal is false (`#false`, `not #true`) never
+                    // holds; gringo reads a comparison there the same way.
+                    if e.has_colon
+                        && match &e.literal.atom {
+                            ast::Atom::Boolean(b) => *b == (e.literal.sign == Sign::Not),
+                            ast::Atom::Comparison { .. } => true,
+                            _ => false,
+                        }
+                    {
+                        continue;
+                    }
+                    let e = if e.has_colon {
+                        self.disj_elem(e, &mut vars)
+                    } else {
+                        self.head_elem(e, &mut vars, &mut extra)
+                    };
+                    let Some(e) = e else {
+                        return;
+                    };
+                    es.push(e);
+                }
+                NHead::Disj(es)
+            }
+            ast::Head::Choice(c) => {
+                let mut es = Vec::new();
+                for e in &c.elements {
+                    let Some(e) = self.head_elem(e, &mut vars, &mut extra) else {
+                        return;
+                    };
+                    es.push(e);
+                }
+                if lower_upper(&c.lower, &c.upper) {
+                    // l { e } u :- B.  ==  { e } :- B.  and  :- B, not l #count{ e } u.
+                    let agg = ast::BodyAggregate {
+                        span: c.span,
+                        function: AggregateFunction::Count,
+                        lower: c.lower.clone(),
+                        elements: Vec::new(),
+                        set_syntax: c.elements.iter().flat_map(unpool_cond).collect(),
+                        upper: c.upper.clone(),
+                    };
+                    let mut cbody = body.to_vec();
+                    cbody.push(ast::BodyLiteral::Aggregate {
+                        sign: Sign::Not,
+                        aggregate: Box::new(agg),
+                    });
+                    let role = self.aux_role.replace(AuxKind::Bound);
+                    self.rule_instance(
+                        index,
+                        span,
+                        &ast::Head::None,
+                        &cbody,
+                        &ast::RuleKind::Normal,
+                    );
+                    self.aux_role = role;
+                }
+                NHead::Choice(es)
+            }
+            ast::Head::Aggregate(h) => {
+                // l #f { w,t : a : c } u :- B.  ==  { a : c } :- B.  and
+                // :- B, not l #f { w,t,a : a, c } u.
+                let mut es = Vec::new();
+                let mut elements = Vec::new();
+                for e in &h.elements {
+                    let ce = ast::ConditionalLiteral {
+                        span: e.span,
+                        literal: e.literal.clone(),
+                        condition: e.condition.clone(),
+                        has_colon: !e.condition.is_empty(),
+                    };
+                    for ce in unpool_cond(&ce) {
+                        let Some(mut n) = self.head_elem(&ce, &mut vars, &mut extra) else {
+                            return;
+                        };
+                        if !self.tuple_checks(h.function, &e.terms, &mut vars, &mut n.cond) {
+                            continue;
+                        }
+                        es.push(n);
+                        let mut condition = vec![ce.literal.clone()];
+                        condition.extend(ce.condition.iter().cloned());
+                        let mut terms = e.terms.clone();
+                        if let ast::Atom::Symbolic(sa) = &ce.literal.atom {
+                            terms.push(atom_as_term(sa));
+                        }
+                        elements.push(ast::BodyAggregateElement {
+                            span: e.span,
+                            terms,
+                            condition,
+                        });
+                    }
+                }
+                if lower_upper(&h.lower, &h.upper) {
+                    let agg = ast::BodyAggregate {
+                        span: h.span,
+                        function: h.function,
+                        lower: h.lower.clone(),
+                        elements,
+                        set_syntax: Vec::new(),
+                        upper: h.upper.clone(),
+                    };
+                    let mut cbody = body.to_vec();
+                    cbody.push(ast::BodyLiteral::Aggregate {
+                        sign: Sign::Not,
+                        aggregate: Box::new(agg),
+                    });
+                    let role = self.aux_role.replace(AuxKind::Bound);
+                    self.rule_instance(
+                        index,
+                        span,
+                        &ast::Head::None,
+                        &cbody,
+                        &ast::RuleKind::Normal,
+                    );
+                    self.aux_role = role;
+                }
+                NHead::Choice(es)
+            }
+        };
+        if self.body(body, &mut vars, &mut out).is_none() {
+            return;
+        }
+        // A choice whose bounds are undefined (say `X+1` with X=a) is dropped with them: the
+        // bounds are evaluated in its body as `t = t`.
+        let guards: Vec<&ast::Guard> = match head_ast {
+            ast::Head::Choice(c) => c.lower.iter().chain(c.upper.iter()).collect(),
+            ast::Head::Aggregate(h) => h.lower.iter().chain(h.upper.iter()).collect(),
+            _ => Vec::new(),
+        };
+        for g in guards {
+            if let Some(t) = self.term(&g.term, &mut vars, &mut extra) {
+                if !matches!(t, NTerm::Sym(_)) {
+                    out.push(NLit::Cmp {
+                        op: CmpOp::Eq,
+                        lhs: t.clone(),
+                        rhs: t,
+                    });
+                }
+            }
+        }
+        out.append(&mut extra);
+        self.finish(index, span, head, out, kind, vars);
+    }
+
+    /// Plans the body and element conditions, checks safety, and records the statement.
+    pub(super) fn finish(
+        &mut self,
+        index: u32,
+        span: Span,
+        mut head: NHead,
+        body: Vec<NLit>,
+        kind: NKind,
+        vars: Vars,
+    ) {
+        let n = vars.names.len();
+        // Global variables: those outside aggregate elements and head conditions.
+        let mut global = vec![false; n];
+        let mut buf = Vec::new();
+        let mut mark = |t: &NTerm, g: &mut Vec<bool>| {
+            buf.clear();
+            t.vars(&mut buf);
+            for &v in &buf {
+                g[v as usize] = true;
+            }
+        };
+        for l in &body {
+            match l {
+                NLit::Agg(a) => a.guards.iter().for_each(|(_, t)| mark(t, &mut global)),
+                other => {
+                    let mut vs = Vec::new();
+                    lit_vars(other, &mut vs);
+                    for v in vs {
+                        global[v as usize] = true;
+                    }
+                }
+            }
+        }
+        match &head {
+            NHead::Disj(es) | NHead::Choice(es) => {
+                for e in es.iter().filter(|e| e.cond.is_empty() && e.conj.is_empty()) {
+                    e.atom.args.iter().for_each(|t| mark(t, &mut global));
+                }
+            }
+            NHead::None => {}
+        }
+        match &kind {
+            NKind::Rule | NKind::Cr(None) => {}
+            NKind::Cr(Some(t)) | NKind::Show(t) => mark(t, &mut global),
+            NKind::Minimize {
+                weight,
+                priority,
+                terms,
+                ..
+            } => {
+                mark(weight, &mut global);
+                mark(priority, &mut global);
+                terms.iter().for_each(|t| mark(t, &mut global));
+            }
+            NKind::Project(a) => a.args.iter().for_each(|t| mark(t, &mut global)),
+            NKind::External(a, value) => {
+                a.args.iter().for_each(|t| mark(t, &mut global));
+                mark(value, &mut global);
+            }
+            NKind::Heuristic {
+                atom,
+                weight,
+                priority,
+                modifier,
+            } => {
+                atom.args.iter().for_each(|t| mark(t, &mut global));
+                mark(weight, &mut global);
+                mark(priority, &mut global);
+                mark(modifier, &mut global);
+            }
+            NKind::Edge(u, v) => {
+                mark(u, &mut global);
+                mark(v, &mut global);
+            }
+        }
+        // Global variables occurring only in elements of several aggregates are still local to
+        // each; a variable is global iff marked above.
+        let mut bound = vec![false; n];
+        let mut unsafe_vars: Vec<u32> = Vec::new();
+        let body = plan(body, &mut bound, &global, &mut unsafe_vars);
+        for (v, g) in global.iter().enumerate() {
+            if *g && !bound[v] && !unsafe_vars.contains(&(v as u32)) {
+                unsafe_vars.push(v as u32);
+            }
+        }
+        match &mut head {
+            NHead::Disj(es) | NHead::Choice(es) => {
+                for e in es.iter_mut() {
+                    let mut b = bound.clone();
+                    let cond = std::mem::take(&mut e.cond);
+                    e.cond = plan(cond, &mut b, &global, &mut unsafe_vars);
+                    let mut vs = Vec::new();
+                    if e.conj.is_empty() {
+                        e.atom.args.iter().for_each(|t| t.vars(&mut vs));
+                    }
+                    for l in &mut e.conj {
+                        let mut bl = b.clone();
+                        let expand = std::mem::take(&mut l.expand);
+                        l.expand = plan(expand, &mut bl, &global, &mut unsafe_vars);
+                        let mut lv = Vec::new();
+                        l.atom.args.iter().for_each(|t| t.vars(&mut lv));
+                        vs.extend(lv.into_iter().filter(|&v| !bl[v as usize]));
+                    }
+                    for v in vs {
+                        if !b[v as usize] && !unsafe_vars.contains(&v) {
+                            unsafe_vars.push(v);
+                        }
+                    }
+                }
+            }
+            NHead::None => {}
+        }
+        if !unsafe_vars.is_empty() {
+            unsafe_vars.sort_by_key(|&v| (vars.spans[v as usize].start, v));
+            let mut d =
+                Diagnostic::error(span, "unsafe variables in").with_snippet(self.snippet(span));
+            for v in unsafe_vars {
+                let name = &vars.names[v as usize];
+                let shown = if name.starts_with("#Anon") {
+                    "_".to_string()
+                } else {
+                    name.clone()
+                };
+                d = d.with_note(Some(vars.spans[v as usize]), format!("'{shown}' is unsafe"));
+            }
+            self.diags.push(d);
+            return;
+        }
+        let var_names = vars
+            .names
+            .iter()
+            .map(|s| self.syms.names.intern(s))
+            .collect();
+        let globals = (0..n as u32).filter(|&v| global[v as usize]).collect();
+        self.out.stmts.push(NStmt {
+            stmt: index,
+            span,
+            head,
+            body,
+            kind,
+            num_vars: n as u32,
+            var_names,
+            globals,
+            aux: self.aux_role,
+        });
+    }
+}

@@ -1,0 +1,427 @@
+//! Statements: `#const` definitions (with `-c` overrides, in dependency order), then every
+//! statement of the program (show, external, minimize, heuristic, edge, projection, CR rules)
+//! rewritten; rules go to `rule`.
+//!
+//! Invariant: statement ids are the statements' indexes in the program, never renumbered.
+
+use super::pool::*;
+use super::*;
+
+impl Rewriter<'_> {
+    /// Rewrites every statement of `program`.
+    pub fn program(&mut self, program: &ast::Program, consts: &[(String, ast::Term)]) {
+        // #const: command-line values win over default definitions, [override] wins over both.
+        let mut overrides: HashMap<String, SymId> = HashMap::new();
+        for (name, t) in consts {
+            if let Some(v) = self.eval_ground(t) {
+                overrides.insert(name.clone(), v);
+            }
+        }
+        self.const_definitions(program, &overrides);
+        for (k, v) in overrides {
+            self.consts.entry(k).or_insert(v);
+        }
+        let lowered;
+        let program = if program.dialect == ast::Dialect::Sparc {
+            lowered = crate::ground::sparc::lower(self, program);
+            &lowered
+        } else {
+            program
+        };
+        let mut in_base = true;
+        for (i, st) in program.statements.iter().enumerate() {
+            self.out.stmt_spans.push(st.span);
+            if let ast::StatementKind::ProgramPart(p) = &st.kind {
+                in_base = p.name == "base";
+                if !in_base {
+                    self.diags.push(Diagnostic::warning(
+                        crate::base::WarningKind::Other,
+                        st.span,
+                        format!(
+                            "program part '{}' is ignored: Lucent grounds only #program base",
+                            p.name
+                        ),
+                    ));
+                }
+                continue;
+            }
+            if !in_base {
+                continue;
+            }
+            self.statement(i as u32, st);
+        }
+    }
+
+    /// Evaluates the `#const` definitions not overridden by `-c`, each after the constants its
+    /// value names (`#const a=b. #const b=1.` gives `a` the value 1, as gringo does). A second
+    /// definition of a name is gringo's `redefinition of constant` error (the first one
+    /// stays); definitions naming each other in a cycle are a `cyclic constant definition`
+    /// error and stay unevaluated. A definition naming itself (`#const a=a.`) is no cycle: the
+    /// name stays a symbol.
+    pub(super) fn const_definitions(
+        &mut self,
+        program: &ast::Program,
+        overrides: &HashMap<String, SymId>,
+    ) {
+        // The definitions in force, in file order: (statement span, definition).
+        let mut defs: Vec<(Span, &ast::ConstDef)> = Vec::new();
+        for st in &program.statements {
+            let ast::StatementKind::Const(c) = &st.kind else {
+                continue;
+            };
+            if c.kind == ast::ConstKind::Default && overrides.contains_key(&c.name) {
+                continue;
+            }
+            if let Some(&(first, _)) = defs.iter().find(|(_, d)| d.name == c.name) {
+                self.diags.push(
+                    Diagnostic::error(st.span, "redefinition of constant")
+                        .with_snippet(self.snippet(st.span))
+                        .with_note(Some(first), "constant also defined here"),
+                );
+                continue;
+            }
+            defs.push((st.span, c));
+        }
+        // deps[i]: the definitions whose names definition i's value mentions.
+        let deps: Vec<Vec<usize>> = defs
+            .iter()
+            .enumerate()
+            .map(|(i, (_, d))| {
+                let mut names = Vec::new();
+                const_names(&d.value, &mut names);
+                let mut out: Vec<usize> = names
+                    .iter()
+                    .filter_map(|n| defs.iter().position(|(_, e)| e.name == *n))
+                    .filter(|&j| j != i)
+                    .collect();
+                out.sort_unstable();
+                out.dedup();
+                out
+            })
+            .collect();
+        let mut done = vec![false; defs.len()];
+        loop {
+            let mut progress = false;
+            for i in 0..defs.len() {
+                if done[i] || deps[i].iter().any(|&j| !done[j]) {
+                    continue;
+                }
+                done[i] = true;
+                progress = true;
+                if let Some(v) = self.eval_ground(&defs[i].1.value) {
+                    self.consts.insert(defs[i].1.name.clone(), v);
+                }
+            }
+            if !progress {
+                break;
+            }
+        }
+        // What is left lies on a cycle or depends on one; report each cycle once, at its first
+        // definition, with the others as notes (last first, as gringo lists them).
+        let left: Vec<usize> = (0..defs.len()).filter(|&i| !done[i]).collect();
+        let reach = |from: usize| -> Vec<bool> {
+            let mut seen = vec![false; defs.len()];
+            let mut stack = vec![from];
+            while let Some(k) = stack.pop() {
+                for &j in &deps[k] {
+                    if !seen[j] {
+                        seen[j] = true;
+                        stack.push(j);
+                    }
+                }
+            }
+            seen
+        };
+        let reaches: Vec<Vec<bool>> = (0..defs.len())
+            .map(|i| if done[i] { Vec::new() } else { reach(i) })
+            .collect();
+        let mut reported = vec![false; defs.len()];
+        for &i in &left {
+            if reported[i] || !reaches[i][i] {
+                continue;
+            }
+            let cycle: Vec<usize> = left
+                .iter()
+                .copied()
+                .filter(|&j| reaches[i][j] && reaches[j][i])
+                .collect();
+            let mut d = Diagnostic::error(defs[i].0, "cyclic constant definition")
+                .with_snippet(self.snippet(defs[i].0));
+            for &j in cycle.iter().rev().filter(|&&j| j != i) {
+                d = d.with_note(
+                    Some(defs[j].0),
+                    format!("cycle involves definition:\n  {}", self.snippet(defs[j].0)),
+                );
+            }
+            for j in cycle {
+                reported[j] = true;
+            }
+            self.diags.push(d);
+        }
+    }
+
+    /// The `weight@priority, terms` tuple that weak constraints and `#minimize`/`#maximize`
+    /// elements share, as a [`NKind::Minimize`] (priority 0 when omitted); `None` when the
+    /// weight or the priority does not compile (a term that does not compile is left out, its
+    /// error already reported).
+    pub(super) fn minimize_kind(
+        &mut self,
+        (weight, priority, terms): (&ast::Term, Option<&ast::Term>, &[ast::Term]),
+        maximize: bool,
+        vars: &mut Vars,
+        extra: &mut Vec<NLit>,
+    ) -> Option<NKind> {
+        let weight = self.term(weight, vars, extra)?;
+        let priority = match priority {
+            Some(p) => self.term(p, vars, extra)?,
+            None => NTerm::Sym(self.syms.int(0)),
+        };
+        let terms = terms
+            .iter()
+            .filter_map(|t| self.term(t, vars, extra))
+            .collect();
+        Some(NKind::Minimize {
+            weight,
+            priority,
+            terms,
+            maximize,
+        })
+    }
+
+    pub(super) fn sig_pred(&mut self, s: &ast::Signature) -> PredId {
+        self.pred(&s.name, s.arity, s.negated)
+    }
+
+    pub(super) fn statement(&mut self, index: u32, st: &ast::Statement) {
+        use ast::StatementKind as K;
+        self.current = (index, st.span);
+        match &st.kind {
+            K::Rule(r) => self.rule(index, st.span, r),
+            K::WeakConstraint(w) => {
+                for body in unpool_body(&w.body) {
+                    let mut vars = Vars::default();
+                    let mut out = Vec::new();
+                    let mut extra = Vec::new();
+                    let cost = (&w.weight, w.priority.as_ref(), &w.terms[..]);
+                    let Some(kind) = self.minimize_kind(cost, false, &mut vars, &mut extra) else {
+                        continue;
+                    };
+                    if self.body(&body, &mut vars, &mut out).is_none() {
+                        continue;
+                    }
+                    out.append(&mut extra);
+                    self.finish(index, st.span, NHead::None, out, kind, vars);
+                }
+            }
+            K::Optimize(o) => {
+                for e in &o.elements {
+                    for cond in product(e.condition.iter().map(unpool_literal).collect()) {
+                        let mut vars = Vars::default();
+                        let mut out = Vec::new();
+                        let mut extra = Vec::new();
+                        let cost = (&e.weight, e.priority.as_ref(), &e.terms[..]);
+                        let Some(kind) =
+                            self.minimize_kind(cost, o.maximize, &mut vars, &mut extra)
+                        else {
+                            continue;
+                        };
+                        if self.condition(&cond, &mut vars, &mut out).is_none() {
+                            continue;
+                        }
+                        out.append(&mut extra);
+                        self.finish(index, e.span, NHead::None, out, kind, vars);
+                    }
+                }
+            }
+            K::Show(show) => match &**show {
+                ast::Show::Nothing => self.out.show.restricted = true,
+                ast::Show::Signature(s) => {
+                    self.out.show.restricted = true;
+                    let p = self.sig_pred(s);
+                    let pred = self.out.preds[p as usize].clone();
+                    self.out.show.signatures.push(pred);
+                }
+                ast::Show::Term { term, body } => {
+                    for t in unpool_term(term) {
+                        for b in unpool_body(body) {
+                            let mut vars = Vars::default();
+                            let mut out = Vec::new();
+                            let mut extra = Vec::new();
+                            let Some(t) = self.term(&t, &mut vars, &mut extra) else {
+                                continue;
+                            };
+                            if self.body(&b, &mut vars, &mut out).is_none() {
+                                continue;
+                            }
+                            out.append(&mut extra);
+                            self.finish(index, st.span, NHead::None, out, NKind::Show(t), vars);
+                        }
+                    }
+                }
+            },
+            K::Defined(s) => {
+                let p = self.sig_pred(s);
+                self.out.defined.push(p);
+            }
+            K::Project(project) => match &**project {
+                ast::Project::Signature(s) => {
+                    let p = self.sig_pred(s);
+                    self.out.project_sigs.push(p);
+                }
+                ast::Project::Atom { atom, body } => {
+                    for a in unpool_atom(atom) {
+                        for b in unpool_body(body) {
+                            let mut vars = Vars::default();
+                            let mut out = Vec::new();
+                            let mut extra = Vec::new();
+                            let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
+                                continue;
+                            };
+                            if self.body(&b, &mut vars, &mut out).is_none() {
+                                continue;
+                            }
+                            // The atom ranges over its predicate's possible atoms and binds the
+                            // variables it alone has, as in gringo: `#project p(X).` projects
+                            // onto every p/1 atom.
+                            out.push(NLit::Pred {
+                                sign: Sign::Positive,
+                                atom: a.clone(),
+                            });
+                            out.append(&mut extra);
+                            self.finish(index, st.span, NHead::None, out, NKind::Project(a), vars);
+                        }
+                    }
+                }
+            },
+            K::External(e) => {
+                for a in unpool_atom(&e.atom) {
+                    for b in unpool_body(&e.body) {
+                        let mut vars = Vars::default();
+                        let mut out = Vec::new();
+                        let mut extra = Vec::new();
+                        let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
+                            continue;
+                        };
+                        // The value is a term of the instance (`[X]`); omitted, it is false.
+                        let value = match &e.value {
+                            Some(t) => match self.term(t, &mut vars, &mut extra) {
+                                Some(v) => v,
+                                None => continue,
+                            },
+                            None => NTerm::Sym(self.syms.fun_str("false", false, &[])),
+                        };
+                        if self.body(&b, &mut vars, &mut out).is_none() {
+                            continue;
+                        }
+                        out.append(&mut extra);
+                        self.finish(
+                            index,
+                            st.span,
+                            NHead::None,
+                            out,
+                            NKind::External(a, value),
+                            vars,
+                        );
+                    }
+                }
+            }
+            K::Heuristic(h) => {
+                for a in unpool_atom(&h.atom) {
+                    for b in unpool_body(&h.body) {
+                        let mut vars = Vars::default();
+                        let mut out = Vec::new();
+                        let mut extra = Vec::new();
+                        let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
+                            continue;
+                        };
+                        let Some(weight) = self.term(&h.weight, &mut vars, &mut extra) else {
+                            continue;
+                        };
+                        let priority = match &h.priority {
+                            Some(p) => self.term(p, &mut vars, &mut extra),
+                            None => Some(NTerm::Sym(self.syms.int(0))),
+                        };
+                        let Some(priority) = priority else { continue };
+                        let Some(modifier) = self.term(&h.modifier, &mut vars, &mut extra) else {
+                            continue;
+                        };
+                        if self.body(&b, &mut vars, &mut out).is_none() {
+                            continue;
+                        }
+                        out.append(&mut extra);
+                        let kind = NKind::Heuristic {
+                            atom: a,
+                            weight,
+                            priority,
+                            modifier,
+                        };
+                        self.finish(index, st.span, NHead::None, out, kind, vars);
+                    }
+                }
+            }
+            K::Edge(e) => {
+                for from in unpool_term(&e.from) {
+                    for to in unpool_term(&e.to) {
+                        for b in unpool_body(&e.body) {
+                            let mut vars = Vars::default();
+                            let mut out = Vec::new();
+                            let mut extra = Vec::new();
+                            let (Some(u), Some(v)) = (
+                                self.term(&from, &mut vars, &mut extra),
+                                self.term(&to, &mut vars, &mut extra),
+                            ) else {
+                                continue;
+                            };
+                            if self.body(&b, &mut vars, &mut out).is_none() {
+                                continue;
+                            }
+                            out.append(&mut extra);
+                            self.finish(index, st.span, NHead::None, out, NKind::Edge(u, v), vars);
+                        }
+                    }
+                }
+            }
+            K::Include(_) => {
+                self.diags.push(Diagnostic::error(
+                    st.span,
+                    "#include must be resolved before grounding (ground::include::resolve_includes)",
+                ));
+            }
+            K::Script(_) => self.unsupported(st.span, "#script is not supported by Lucent"),
+            K::Const(_) | K::ProgramPart(_) | K::Error => {}
+            K::Section(_)
+            | K::SortDef(_)
+            | K::PredicateDecl(_)
+            | K::Display(_)
+            | K::DisplaySort(_)
+            | K::MaxInt(_) => {
+                self.unsupported(st.span, "SPARC sections in a clingo-dialect program");
+            }
+        }
+    }
+}
+
+/// The constant names (candidates for `#const` values) in a term.
+pub(super) fn const_names<'t>(t: &'t ast::Term, out: &mut Vec<&'t str>) {
+    match &t.kind {
+        TermKind::Constant(c) => out.push(c),
+        TermKind::Function { args, .. } => args.iter().flatten().for_each(|a| const_names(a, out)),
+        TermKind::ScriptCall { args, .. } => args.iter().for_each(|a| const_names(a, out)),
+        TermKind::Pool(ts) => ts.iter().for_each(|a| const_names(a, out)),
+        TermKind::Unary { arg, .. } | TermKind::Paren(arg) => const_names(arg, out),
+        TermKind::Binary { lhs, rhs, .. } => {
+            const_names(lhs, out);
+            const_names(rhs, out);
+        }
+        TermKind::Interval { lo, hi } => {
+            const_names(lo, out);
+            const_names(hi, out);
+        }
+        TermKind::Integer(_)
+        | TermKind::String(_)
+        | TermKind::Variable(_)
+        | TermKind::Anonymous
+        | TermKind::Infimum
+        | TermKind::Supremum => {}
+    }
+}
