@@ -97,10 +97,10 @@ fn main() -> ExitCode {
         } else if let Some(v) = a.strip_prefix("--score-other=") {
             config.score_other = v == "all";
         } else if let Some(v) = a.strip_prefix("--profile=") {
-            config.profile = if v == "fixed" {
-                SearchProfile::Fixed
-            } else {
-                SearchProfile::Auto
+            config.profile = match v {
+                "fixed" => SearchProfile::Fixed,
+                "decision" => SearchProfile::Decision,
+                _ => SearchProfile::Auto,
             };
         } else if let Some(v) = a.strip_prefix("--block-restarts=") {
             config.restart_blocking = v != "0";

@@ -9,11 +9,12 @@ because that tool has no memory column): each manifest row names an encoding, an
 extra arguments and a mode (n1 = first answer set, n0 = all answer sets, opt = proven
 optimum); both commands get clingo's command line with --outf=2; times are wall-clock times of
 the whole process, the minimum over --reps runs, the two solvers alternating so machine noise
-hits both. Peak memory is the process's maximum resident set size as GNU time reports it
+hits both. CPU times (user plus system seconds, GNU time's %U + %S) are printed beside them,
+also the minimum over the runs: on a loaded shared machine they are the steadier measure. Peak memory is the process's maximum resident set size as GNU time reports it
 (`/usr/bin/time -f %M`, Debian package `time`), the minimum over the runs.
 
 A row agrees when both give the same result, the same model count (n0) and the same optimum
-(opt). The last lines are the geometric means of ours/ref time and ours/ref peak memory over
+(opt). The last lines are the geometric means of ours/ref time, CPU time and peak memory over
 the rows both finished and agree on, with the worst row of each.
 Exit status: 0 when every finished row agrees, 1 otherwise.
 """
@@ -31,7 +32,7 @@ import time
 
 
 def run(cmd, timeout):
-    """(seconds, peak RSS in KiB, stdout, stderr, exit code), or None on timeout.
+    """(seconds, peak RSS in KiB, CPU seconds, stdout, stderr, exit code), or None on timeout.
 
     The peak RSS comes from GNU time (`/usr/bin/time -f %M`), not from this process's wait4:
     Linux carries the RSS high-water mark of the forking process across exec, so a child of
@@ -42,7 +43,7 @@ def run(cmd, timeout):
         t0 = time.perf_counter()
         # Own process group, killed whole on timeout: killing GNU time alone left the measured
         # program running, loading the machine for every later row.
-        p = subprocess.Popen([TIME, "-f", "%M", "-o", rss.name] + cmd, stdout=out, stderr=err,
+        p = subprocess.Popen([TIME, "-f", "%U %S %M", "-o", rss.name] + cmd, stdout=out, stderr=err,
                              start_new_session=True)
         try:
             p.wait(timeout=timeout)
@@ -51,11 +52,18 @@ def run(cmd, timeout):
             p.wait()
             return None
         secs = time.perf_counter() - t0
-        lines = rss.read().split()
-        kib = int(lines[-1]) if lines and lines[-1].isdigit() else None
+        # The last line (GNU time writes "Command exited with non-zero status N" first when
+        # the exit code is not 0): user seconds, system seconds, peak RSS.
+        last = rss.read().strip().split("\n")[-1].split()
+        kib = int(last[2]) if len(last) == 3 and last[2].isdigit() else None
+        try:
+            cpu = float(last[0]) + float(last[1])
+        except (IndexError, ValueError):
+            cpu = None
         out.seek(0)
         err.seek(0)
-        return secs, kib, out.read().decode(errors="replace"), err.read().decode(errors="replace"), p.returncode
+        return secs, kib, cpu, out.read().decode(errors="replace"), err.read().decode(errors="replace"), \
+            p.returncode
 
 
 def summary(stdout):
@@ -98,9 +106,10 @@ def main():
         header = fh.readline().rstrip("\n").split("\t")
         rows = [dict(zip(header, line.rstrip("\n").split("\t"))) for line in fh if line.strip()]
     pick = re.compile(a.rows) if a.rows else None
-    time_ratios, mem_ratios, disagree, unfinished = [], [], 0, 0
-    print("%-22s %-36s %9s %9s %7s %8s %8s %7s  %s"
-          % ("family", "instance", "ref_s", "ours_s", "t_ratio", "ref_MB", "ours_MB", "m_ratio", "verdict"))
+    time_ratios, cpu_ratios, mem_ratios, disagree, unfinished = [], [], [], 0, 0
+    print("%-22s %-36s %9s %9s %7s %8s %8s %7s %8s %8s %7s  %s"
+          % ("family", "instance", "ref_s", "ours_s", "t_ratio", "ref_cpu", "ours_cpu", "c_ratio",
+             "ref_MB", "ours_MB", "m_ratio", "verdict"))
     for r in rows:
         name = r["family"] + "/" + os.path.basename(r["instance"])
         if pick and not pick.search(name):
@@ -109,6 +118,7 @@ def main():
         tail = shlex.split(r.get("args", "")) + MODE_ARGS[r["mode"]] + ["--outf=2"]
         secs = {"ref": None, "ours": None}
         rss = {"ref": None, "ours": None}
+        cpu = {"ref": None, "ours": None}
         out = {}
         for rep in range(a.reps):
             for who in (["ref", "ours"] if rep % 2 == 0 else ["ours", "ref"]):
@@ -116,9 +126,11 @@ def main():
                 res = run(cmd, a.timeout)
                 if res is None:
                     continue
-                t, kib, stdout, stderr, code = res
+                t, kib, c, stdout, stderr, code = res
                 out[who] = (stdout, stderr, code)
                 secs[who] = t if secs[who] is None else min(secs[who], t)
+                if c is not None:
+                    cpu[who] = c if cpu[who] is None else min(cpu[who], c)
                 if kib is not None:
                     rss[who] = kib if rss[who] is None else min(rss[who], kib)
         verdict = "ok"
@@ -141,6 +153,9 @@ def main():
                     disagree += 1
             if verdict == "ok":
                 time_ratios.append((secs["ours"] / secs["ref"], name))
+                if cpu["ref"] is not None and cpu["ours"] is not None:
+                    # 10 ms is the resolution of GNU time's CPU seconds.
+                    cpu_ratios.append((max(cpu["ours"], 0.01) / max(cpu["ref"], 0.01), name))
                 if rss["ref"] and rss["ours"]:
                     mem_ratios.append((rss["ours"] / rss["ref"], name))
         f_s = lambda x: "%9.3f" % x if x is not None else "        -"
@@ -149,11 +164,15 @@ def main():
         t_ratio = "%7.2f" % (secs["ours"] / secs["ref"]) if both else "      -"
         mem = rss["ref"] is not None and rss["ours"] is not None
         m_ratio = "%7.2f" % (rss["ours"] / rss["ref"]) if both and mem else "      -"
-        print("%-22s %-36s %s %s %s %s %s %s  %s"
+        f_c = lambda x: "%8.2f" % x if x is not None else "       -"
+        cboth = both and cpu["ref"] is not None and cpu["ours"] is not None
+        c_ratio = "%7.2f" % (max(cpu["ours"], 0.01) / max(cpu["ref"], 0.01)) if cboth else "      -"
+        print("%-22s %-36s %s %s %s %s %s %s %s %s %s  %s"
               % (r["family"], os.path.basename(r["instance"])[:36], f_s(secs["ref"]), f_s(secs["ours"]),
-                 t_ratio, f_mb(rss["ref"]), f_mb(rss["ours"]), m_ratio, verdict))
+                 t_ratio, f_c(cpu["ref"]), f_c(cpu["ours"]), c_ratio, f_mb(rss["ref"]),
+                 f_mb(rss["ours"]), m_ratio, verdict))
         sys.stdout.flush()
-    for what, ratios in (("time", time_ratios), ("peak memory", mem_ratios)):
+    for what, ratios in (("time", time_ratios), ("CPU time", cpu_ratios), ("peak memory", mem_ratios)):
         worst = max(ratios) if ratios else (float("nan"), "-")
         print("geomean ours/ref %s %.3f over %d rows; worst %.2f (%s)"
               % (what, geomean([x for x, _ in ratios]), len(ratios), worst[0], worst[1]))

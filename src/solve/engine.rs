@@ -1,6 +1,7 @@
 //! The CDCL core: assignment, two-watched-literal unit propagation, native weight constraints,
 //! first-UIP conflict analysis with recursive clause minimisation, VSIDS with phase saving,
-//! Luby and glucose-style restarts, and learnt clause deletion by LBD and activity.
+//! Luby and glucose-style restarts, and learnt clause deletion (clasp's use counts, or LBD and
+//! activity).
 //!
 //! Follows MiniSat/Glucose as restated by varisat and kissat: per-variable data in parallel
 //! vectors, long clauses in one `Vec<u32>` arena with a three-word header, binary clauses only in

@@ -206,7 +206,12 @@ impl Solver {
             .map(|&a| (a, tr.ext_value[a as usize]))
             .collect();
         let optimizing = !prog.minimize.is_empty() && config.opt_mode != OptMode::Ignore;
-        if config.profile == SearchProfile::Auto && engine.has_unfounded() && !optimizing {
+        let tweety = match config.profile {
+            SearchProfile::Auto => engine.has_unfounded() && !optimizing,
+            SearchProfile::Decision => !optimizing,
+            SearchProfile::Fixed => false,
+        };
+        if tweety {
             // Non-tight decision problems: clasp's `tweety` search settings (`SearchProfile`).
             engine.configure(0.92, config.seed);
             engine.restarts = restart_state(RestartPolicy::Luby(60));
@@ -768,11 +773,22 @@ pub fn supports(p: &GroundProgram, atoms: &[u32]) -> Vec<Option<usize>> {
     };
     let mut derived = vec![false; n + 1];
     let mut support: Vec<Option<usize>> = vec![None; n + 1];
+    // Atoms of the model not derived yet: once none is left, no pass can change anything.
+    let mut open = atoms.iter().filter(|&&a| (a as usize) <= n).count();
     // Repeated passes; each pass derives at least one atom or stops.
     for strict in [true, false] {
-        loop {
+        while open > 0 {
             let mut changed = false;
             for (ri, r) in p.rules.iter().enumerate() {
+                // Only a rule with a head atom of the model not derived yet can support
+                // anything (constraints never): test that before the body.
+                let useful = r.head.iter().any(|&h| {
+                    let hu = h as usize;
+                    hu <= n && in_m[hu] && !derived[hu]
+                });
+                if !useful {
+                    continue;
+                }
                 let body_ok = match r.body {
                     BodyRef::Normal(ls) => ls
                         .iter()
@@ -802,6 +818,7 @@ pub fn supports(p: &GroundProgram, atoms: &[u32]) -> Vec<Option<usize>> {
                     derived[hu] = true;
                     support[hu] = Some(ri);
                     changed = true;
+                    open -= 1;
                 }
             }
             if !changed {
