@@ -41,6 +41,9 @@ pieces this build lacks is reported as \"not available: <reason>\".
                        domains/ra/kb_full.ald)
   --code-balance       H1: store capped inconsistent trials with label 0 (the authors' code)
   --code-samples       H1: take samples from every trial (the authors' code)
+  --oracle kb_full|physics
+                       H1's oracle: KB_full (default) or the physics world (feature `sim`);
+                       H2 and H4 reason with the axioms learned against it
   --out DIR            keep one result file per trial in DIR/results (a rerun reuses them) and
                        write DIR/report.md, DIR/report.json and the SVG plots
   --emit-jobs FILE     with --out: write one `lucent experiment trial ID --out DIR` line per trial
@@ -120,6 +123,12 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
             "--domain" => out.domain = value()?,
             "--code-balance" => out.setup.code_balance = true,
             "--code-samples" => out.setup.code_samples = true,
+            "--oracle" => {
+                let v = value()?;
+                out.setup.oracle = crate::learn::h1::Oracle::parse(&v)
+                    .ok_or_else(|| format!("'--oracle {v}': expected kb_full or physics"))?;
+                out.setup.oracle.availability()?;
+            }
             "--out" => out.out = Some(PathBuf::from(value()?)),
             "--emit-jobs" => out.emit_jobs = Some(PathBuf::from(value()?)),
             "--outf" => match value()?.as_str() {

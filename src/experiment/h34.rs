@@ -1,14 +1,15 @@
 //! H3, proof-tree checks, and H4, explanation precision and recall (DOMAIN.md 7.5, the paper's
-//! Tables 4 and 5). A trial is one (scene, goal) pair of a preset, drawn by
-//! `explain::h3::generate` from the trial's seed (so each trial has its own configuration and
-//! goal: the paper's 20 configurations with 5 goals each become 100 independent draws per
-//! preset), planned under KB_full and executed as a history (`explain::history`).
+//! Tables 4 and 5). A trial is one (scene, goal) pair of a preset, the same pair as H2's trial
+//! with that id (`h2::pair`: configuration `index / goals`, goal `index mod goals`, so the
+//! paper's 20 configurations with 5 goals each, shared by H2, H3 and H4), planned under KB_full
+//! and executed as a history (`explain::history`); the trial's seed draws the questions.
 //! - H3 asks the questions and beliefs of `explain::h3::check_history` over that history and
 //!   counts what the checks of 7.5 find (re-check, repeats on a path, leaf kinds).
 //! - H4 draws the four questions of 7.5 over KB_full's history (the first four
 //!   `check_history` asks), takes KB_full's full-mode answers as the truth (6.9: "generated in
 //!   full mode from KB_full"), and asks the same questions over the learner profile's own run
-//!   (without) and over the learner profile plus the axioms H1 run `index mod runs` learned
+//!   (without) and over the learner profile plus the axioms H1 run `configuration mod runs`
+//!   learned, as in H2
 //!   (with: `RunResult::ald`), scoring each answer's literals against the truth.
 //!
 //! Invariants: H4's precision and recall are averaged per question type (6.9), per preset and
@@ -22,12 +23,12 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use super::svg;
-use super::{Context, Hypothesis, Record, Trial, TrialError, H1_CONFIG};
+use super::{Context, Hypothesis, Record, Trial, TrialError};
 use crate::action::{self, ast::Description, ast::Value};
 use crate::base::SourceMap;
 use crate::control::Symbol;
 use crate::explain::english::Question;
-use crate::explain::h3::{check_history, generate, ScenePreset};
+use crate::explain::h3::{check_history, ScenePreset};
 use crate::explain::history::{explain_history, History, HistoryConfig};
 use crate::explain::lexicon::Lexicon;
 use crate::explain::pattern::SymbolExt;
@@ -42,15 +43,21 @@ pub fn availability(_h: Hypothesis) -> Result<(), String> {
 /// The planner's horizon budget for the generated scenes (DOMAIN.md 7.1 scenes need at most 8).
 const MAX_HORIZON: usize = 10;
 
-/// The scene of a trial, loaded against the domain: the generated scene (`h3::generate` with the
-/// trial's seed: each trial draws its own configuration and goal) as AL_d text that includes
-/// the domain, which is read from the context, never from a file.
+/// The scene of a trial, loaded against the domain: H2's (scene, goal) pair with the trial's
+/// index (`h2::pair`) as AL_d text that includes the domain, which is read from the context,
+/// never from a file.
 fn load_scene(
     ctx: &Context,
     preset: ScenePreset,
-    seed: u64,
+    trial: &Trial,
 ) -> Result<(Description, SourceMap), TrialError> {
-    let scene = generate(preset, seed);
+    let goals = ctx.setup.goals.max(1);
+    let scene = super::h2::pair(
+        preset,
+        ctx.setup.seed,
+        trial.index / goals,
+        trial.index % goals,
+    );
     let domain = Path::new(&ctx.domain.path);
     let dir = domain.parent().unwrap_or(Path::new("."));
     let text = scene.to_ald(&ctx.domain.path, true);
@@ -138,7 +145,7 @@ pub fn run_trial(
     seed: u64,
 ) -> Result<serde_json::Value, TrialError> {
     let preset = preset_of(trial)?;
-    let (desc, sources) = load_scene(ctx, preset, seed)?;
+    let (desc, sources) = load_scene(ctx, preset, trial)?;
     let full = run_history(&desc, &sources, None)?;
     let value = match h {
         Hypothesis::H3 => serde_json::to_value(h3_trial(trial, full.as_ref(), seed)),
@@ -196,7 +203,7 @@ fn literal_sets(h: &History, questions: &[Question]) -> Vec<BTreeSet<String>> {
 /// X for a random plan action, why not X with one argument changed, a related belief) drawn
 /// over KB_full's history; the truth is KB_full's full-mode answer (6.9); the same questions
 /// are asked over the learner profile's own history (without) and over the learner profile
-/// plus the axioms H1 run `index mod runs` learned (with), and each answer scored.
+/// plus the axioms H1 run `configuration mod runs` learned (with), and each answer scored.
 fn h4_trial(
     ctx: &Context,
     trial: &Trial,
@@ -254,13 +261,13 @@ fn h4_trial(
     Ok(t)
 }
 
-/// The AL_d text of the axioms H1 run `trial.index mod runs` learned (computed now when the
+/// The AL_d text of the axioms H1 run `configuration mod runs` learned (computed now when the
 /// store does not have it: same seed, same result).
 fn learned_axioms(ctx: &Context, trial: &Trial) -> Result<String, TrialError> {
     let h1 = Trial {
         hypothesis: Hypothesis::H1,
-        config: H1_CONFIG.into(),
-        index: trial.index % ctx.setup.runs.max(1),
+        config: ctx.setup.oracle.name().into(),
+        index: (trial.index / ctx.setup.goals.max(1)) % ctx.setup.runs.max(1),
     };
     let (record, _) = ctx.record(&h1)?;
     record

@@ -34,6 +34,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::base::rng::SplitMix64;
 use crate::learn::episode::LearnConfig;
+use crate::learn::h1::Oracle;
 use crate::learn::kb::KbSpec;
 
 /// The paper's four hypotheses (DOMAIN.md 7.1).
@@ -91,7 +92,18 @@ pub struct Setup {
     pub code_balance: bool,
     /// Take samples from every trial, as the authors' code does.
     pub code_samples: bool,
+    /// H1's oracle (KB_full by default; results stored before the field existed are KB_full's).
+    #[serde(default)]
+    pub oracle: Oracle,
+    /// The harness's trial design ([`DESIGN`]); results of another design are not reused (0 for
+    /// results stored before the field existed).
+    #[serde(default)]
+    pub design: u32,
 }
+
+/// The current trial design: 1 when H3 and H4 took H2's (scene, goal) pairs (before, one scene
+/// per trial was drawn from the trial's seed).
+pub const DESIGN: u32 = 1;
 
 impl Setup {
     /// The paper's sizes with the given seed.
@@ -104,6 +116,8 @@ impl Setup {
             episodes: LearnConfig::default().episodes,
             code_balance: false,
             code_samples: false,
+            oracle: Oracle::KbFull,
+            design: DESIGN,
         }
     }
 
@@ -122,7 +136,8 @@ impl Setup {
 /// The scene presets of H2-H4 (DOMAIN.md 7.1), as trial configs.
 pub const PRESETS: [&str; 2] = ["real", "simulated"];
 
-/// The config of every H1 trial: the oracle is KB_full.
+/// The config of H1 trials against KB_full (the default oracle); against the physics world it
+/// is `physics` ([`Oracle::name`]).
 pub const H1_CONFIG: &str = "kb_full";
 
 /// One trial.
@@ -130,7 +145,7 @@ pub const H1_CONFIG: &str = "kb_full";
 pub struct Trial {
     /// Which hypothesis.
     pub hypothesis: Hypothesis,
-    /// The configuration: `kb_full` for H1, a preset of [`PRESETS`] for H2-H4.
+    /// The configuration: the oracle (`kb_full`, `physics`) for H1, a preset of [`PRESETS`] for H2-H4.
     pub config: String,
     /// The run (H1) or `configuration * goals + goal` (H2-H4).
     pub index: usize,
@@ -157,7 +172,7 @@ impl Trial {
             index: index.parse().ok()?,
         };
         let known = match trial.hypothesis {
-            Hypothesis::H1 => trial.config == H1_CONFIG,
+            Hypothesis::H1 => Oracle::parse(&trial.config).is_some(),
             _ => PRESETS.contains(&trial.config.as_str()),
         };
         known.then_some(trial)
@@ -198,7 +213,7 @@ pub fn trials(setup: &Setup, hypotheses: &[Hypothesis]) -> Vec<Trial> {
         if h == Hypothesis::H1 {
             out.extend((0..setup.runs).map(|index| Trial {
                 hypothesis: h,
-                config: H1_CONFIG.into(),
+                config: setup.oracle.name().into(),
                 index,
             }));
         } else {

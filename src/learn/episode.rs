@@ -32,7 +32,8 @@ use crate::base::rng::SplitMix64;
 pub struct States {
     /// The complete step-0 state (fluent literals of both signs; statics may be included).
     pub before: Vec<Literal>,
-    /// The step-1 state, `None` when the action is not executable.
+    /// The step-1 state (a world may give only its positive literals, all that 5.1 compares),
+    /// `None` when the action is not executable.
     pub after: Option<Vec<Literal>>,
 }
 

@@ -12,12 +12,12 @@
 use std::sync::Arc;
 
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::action::ast::Value;
 use crate::action::Options;
 
-use super::episode::{run, LearnConfig, RunReport};
+use super::episode::{run, LearnConfig, RunReport, World};
 use super::kb::{Cache, KbError, KbSpec, KbWorld};
 use super::score::{relaxed, strict, Counts};
 use super::term::{in_hand, o, r, rel, Axiom, AxiomKind, Literal};
@@ -177,9 +177,71 @@ pub struct Caches {
     pub learner: Arc<Cache>,
 }
 
+/// What plays the world in a learning run (DOMAIN.md 5.1: the oracle program or a physics
+/// simulator).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Oracle {
+    /// KB_full ([`oracle_options`]), the authors' oracle.
+    #[default]
+    KbFull,
+    /// The rapier world (`learn::physics`, feature `sim`).
+    Physics,
+}
+
+impl Oracle {
+    /// `kb_full` or `physics`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Oracle::KbFull => "kb_full",
+            Oracle::Physics => "physics",
+        }
+    }
+
+    /// Parses [`Oracle::name`].
+    pub fn parse(text: &str) -> Option<Oracle> {
+        [Oracle::KbFull, Oracle::Physics]
+            .into_iter()
+            .find(|o| o.name() == text)
+    }
+
+    /// `Ok` when this build can run it, else the reason.
+    pub fn availability(self) -> Result<(), String> {
+        match self {
+            Oracle::KbFull => Ok(()),
+            Oracle::Physics if cfg!(feature = "sim") => Ok(()),
+            Oracle::Physics => Err("the physics oracle needs the `sim` feature".into()),
+        }
+    }
+}
+
 /// One run against KB_full, with its report.
 pub fn one_run(spec: &KbSpec, config: &LearnConfig, seed: u64) -> Result<RunReport, KbError> {
     one_run_cached(spec, config, seed, &Caches::default())
+}
+
+/// One run against `oracle`, with its report.
+pub fn one_run_with(
+    spec: &KbSpec,
+    config: &LearnConfig,
+    seed: u64,
+    oracle: Oracle,
+    caches: &Caches,
+) -> Result<RunReport, KbError> {
+    match oracle {
+        Oracle::KbFull => one_run_cached(spec, config, seed, caches),
+        #[cfg(feature = "sim")]
+        Oracle::Physics => {
+            let world = super::physics::PhysicsWorld::new(super::physics::Catalogue::h1());
+            let mut oracle =
+                super::kb::CachedWorld::new(world, caches.oracle.clone(), "physics h1");
+            learn_against(spec, config, seed, caches, &mut oracle)
+        }
+        #[cfg(not(feature = "sim"))]
+        Oracle::Physics => Err(KbError::Translate(
+            Oracle::Physics.availability().unwrap_err(),
+        )),
+    }
 }
 
 /// One run against KB_full sharing answers through `caches`.
@@ -197,7 +259,22 @@ pub fn one_run_cached(
         &[],
     )?;
     oracle.need_before = false;
+    oracle.read_before = false;
     oracle.use_cache(caches.oracle.clone());
+    let mut report = learn_against(spec, config, seed, caches, &mut oracle)?;
+    report.solves += oracle.solves;
+    Ok(report)
+}
+
+/// One run of the learner (a fresh `learner` knowledge base) against `oracle`; the report's
+/// `solves` counts the learner's.
+fn learn_against(
+    spec: &KbSpec,
+    config: &LearnConfig,
+    seed: u64,
+    caches: &Caches,
+    oracle: &mut dyn World,
+) -> Result<RunReport, KbError> {
     let mut learner = KbWorld::new(
         KbSpec {
             options: learner_options(),
@@ -209,8 +286,8 @@ pub fn one_run_cached(
     // state is never needed there.
     learner.need_before = !config.collect.informative_only;
     learner.use_cache(caches.learner.clone());
-    let mut report = run(&mut oracle, &mut learner, config, seed);
-    report.solves = oracle.solves + learner.solves;
+    let mut report = run(oracle, &mut learner, config, seed);
+    report.solves = learner.solves;
     Ok(report)
 }
 

@@ -6,7 +6,8 @@
 //! step-0 observations `obs(relation(on, X, L), true, 0)`, `obs(in_hand(R, X), true, 0)` and the
 //! action record `hpd(A, 0)` declared external; a trial is one solve under assumptions. The
 //! state read back is the observable vocabulary (`relation` and `in_hand`, both signs) at steps
-//! 0 and 1, through atom numbers looked up once.
+//! 0 and 1, through atom numbers looked up once; at step 1 only the positive literals (all that
+//! 5.1 compares), and no step-0 state for the oracle (`read_before`).
 //!
 //! A trial asks for one answer set (the solver stops at the first cardinality-minimal one) and
 //! the program shows no atoms (`#show.`): the observables are read by atom number, so no model
@@ -166,6 +167,8 @@ pub struct KbWorld {
     /// Whether [`World::step`] computes the step-0 state when the action is not executable
     /// (the learner needs it for relevant literals; the oracle does not).
     pub need_before: bool,
+    /// Whether answers carry the step-0 state at all (the oracle's is never read, 5.1).
+    pub read_before: bool,
     /// The shared cache and this knowledge base's number in it.
     cache: Option<(Arc<Cache>, u32)>,
     /// The learned axioms' text, part of the cache key.
@@ -264,6 +267,7 @@ impl KbWorld {
             observables,
             solves: 0,
             need_before: true,
+            read_before: true,
             cache: None,
             learned_text: text,
         })
@@ -275,8 +279,8 @@ impl KbWorld {
         // world sharing a cache (one experiment); options, learned axioms and the reading mode
         // tell the knowledge bases apart.
         let key = format!(
-            "{:?}|{}|{}",
-            self.spec.options, self.need_before, self.learned_text
+            "{:?}|{}|{}|{}",
+            self.spec.options, self.need_before, self.read_before, self.learned_text
         );
         let n = cache.kb(key);
         self.cache = Some((cache, n));
@@ -310,12 +314,19 @@ impl KbWorld {
         }
         let options = SolveOptions::default();
         let observables = &self.observables;
+        let read_before = self.read_before;
         let mut last: Option<(Vec<Literal>, Vec<Literal>)> = None;
         self.solves += 1;
         self.ctl.solve(&options, |m| {
             let (mut s0, mut s1) = (Vec::new(), Vec::new());
             for (atom, lit, step) in observables {
-                if m.holds(*atom) {
+                // Step 1: only the positive literals, all that 5.1 compares.
+                let wanted = if *step == 0 {
+                    read_before
+                } else {
+                    lit.positive
+                };
+                if wanted && m.holds(*atom) {
                     if *step == 0 {
                         s0.push(lit.clone());
                     } else {
@@ -353,6 +364,35 @@ impl World for KbWorld {
     }
 }
 
+/// Any one-step world whose answers are a function of (facts, action), answering through a
+/// [`Cache`] (the physics oracle: `learn::physics`).
+pub struct CachedWorld<W> {
+    /// The world.
+    pub inner: W,
+    /// The cache and the world's number in it.
+    cache: Arc<Cache>,
+    kb: u32,
+}
+
+impl<W: World> CachedWorld<W> {
+    /// `inner` answering through `cache`, under `key` (distinct for distinct worlds).
+    pub fn new(inner: W, cache: Arc<Cache>, key: &str) -> CachedWorld<W> {
+        let kb = cache.kb(format!("world|{key}"));
+        CachedWorld { inner, cache, kb }
+    }
+}
+
+impl<W: World> World for CachedWorld<W> {
+    fn step(&mut self, facts: &[Literal], action: &Literal) -> States {
+        if let Some(s) = self.cache.get(self.kb, facts, action) {
+            return s;
+        }
+        let states = self.inner.step(facts, action);
+        self.cache.put(self.kb, facts, action, &states);
+        states
+    }
+}
+
 impl KbWorld {
     /// [`World::step`] by solving.
     fn step_uncached(&mut self, facts: &[Literal], action: &Literal) -> States {
@@ -378,13 +418,14 @@ impl KbWorld {
 
 impl LearnerKb for KbWorld {
     fn set_learned(&mut self, axioms: &[(String, Axiom)]) {
-        let (solves, need_before) = (self.solves, self.need_before);
+        let (solves, need_before, read_before) = (self.solves, self.need_before, self.read_before);
         let cache = self.cache.take();
         match KbWorld::new(self.spec.clone(), axioms) {
             Ok(w) => {
                 *self = w;
                 self.solves = solves;
                 self.need_before = need_before;
+                self.read_before = read_before;
                 if let Some((c, _)) = cache {
                     self.use_cache(c);
                 }

@@ -18,4 +18,6 @@ pub mod surprise;
 pub mod strength;
 pub mod episode;
 pub mod kb;
+#[cfg(feature = "sim")]
+pub mod physics;
 pub mod h1;

@@ -9,10 +9,18 @@ use super::*;
 impl Solver {
     /// Default CR semantics: find the minimal number of applied CR rules, then solve among the
     /// answer sets applying exactly that many.
+    ///
+    /// Shortcut: when one model is asked for (`--models=1`, plain enumeration, no
+    /// optimization) and the first phase finds an answer set applying no CR rule, that answer
+    /// set is CR-minimal (no answer set applies fewer than 0) and is reported at once, from
+    /// the first phase's assignment and before any guard is retired (retiring backtracks).
     pub(super) fn run_cr_cardinality(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
         let cr: Vec<(Lit, i64)> = self.cr_lits.iter().map(|&l| (l, 1)).collect();
         let mut best: Option<i64> = None;
         let mut bound_guard: Option<Lit> = None;
+        let one_plain_model = self.config.models == 1
+            && self.config.enum_mode == EnumMode::Auto
+            && (self.tr.minimize.is_empty() || self.config.opt_mode == OptMode::Ignore);
         loop {
             let mut a = assume.to_vec();
             if let Some(g) = bound_guard {
@@ -32,6 +40,21 @@ impl Solver {
                         .iter()
                         .filter(|&&(l, _)| self.engine.value(l) == Some(true))
                         .count() as i64;
+                    if k == 0 && one_plain_model {
+                        // Forced by propagation under the call's own assumptions: the only
+                        // answer set, as `run_enumerate` reports it.
+                        let unique = bound_guard.is_none()
+                            && self.engine.decision_level() as usize <= assume.len();
+                        self.report(call, false, true);
+                        self.engine.backtrack(0);
+                        if let Some(g) = bound_guard {
+                            self.retire(g);
+                        }
+                        if unique {
+                            call.exhausted = true;
+                        }
+                        return;
+                    }
                     best = Some(k);
                     if let Some(g) = bound_guard {
                         self.retire(g);
