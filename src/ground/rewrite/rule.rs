@@ -204,20 +204,7 @@ impl Rewriter<'_> {
                         set_syntax: c.elements.iter().flat_map(unpool_cond).collect(),
                         upper: c.upper.clone(),
                     };
-                    let mut cbody = body.to_vec();
-                    cbody.push(ast::BodyLiteral::Aggregate {
-                        sign: Sign::Not,
-                        aggregate: Box::new(agg),
-                    });
-                    let role = self.aux_role.replace(AuxKind::Bound);
-                    self.rule_instance(
-                        index,
-                        span,
-                        &ast::Head::None,
-                        &cbody,
-                        &ast::RuleKind::Normal,
-                    );
-                    self.aux_role = role;
+                    self.bound_check(index, span, body, agg);
                 }
                 NHead::Choice(es)
             }
@@ -263,20 +250,7 @@ impl Rewriter<'_> {
                         set_syntax: Vec::new(),
                         upper: h.upper.clone(),
                     };
-                    let mut cbody = body.to_vec();
-                    cbody.push(ast::BodyLiteral::Aggregate {
-                        sign: Sign::Not,
-                        aggregate: Box::new(agg),
-                    });
-                    let role = self.aux_role.replace(AuxKind::Bound);
-                    self.rule_instance(
-                        index,
-                        span,
-                        &ast::Head::None,
-                        &cbody,
-                        &ast::RuleKind::Normal,
-                    );
-                    self.aux_role = role;
+                    self.bound_check(index, span, body, agg);
                 }
                 NHead::Choice(es)
             }
@@ -304,6 +278,31 @@ impl Rewriter<'_> {
         }
         out.append(&mut extra);
         self.finish(index, span, head, out, kind, vars);
+    }
+
+    /// Emits the constraint `:- B, not AGG.` that checks a choice or head aggregate's bounds,
+    /// its rule instances attributed to the rule as `AuxKind::Bound`.
+    fn bound_check(
+        &mut self,
+        index: u32,
+        span: Span,
+        body: &[ast::BodyLiteral],
+        agg: ast::BodyAggregate,
+    ) {
+        let mut cbody = body.to_vec();
+        cbody.push(ast::BodyLiteral::Aggregate {
+            sign: Sign::Not,
+            aggregate: Box::new(agg),
+        });
+        let role = self.aux_role.replace(AuxKind::Bound);
+        self.rule_instance(
+            index,
+            span,
+            &ast::Head::None,
+            &cbody,
+            &ast::RuleKind::Normal,
+        );
+        self.aux_role = role;
     }
 
     /// Plans the body and element conditions, checks safety, and records the statement.
