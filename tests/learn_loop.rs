@@ -215,6 +215,7 @@ impl World for Double {
             return States {
                 before,
                 after: None,
+                unrealisable: false,
             };
         }
         let mut next = base.clone();
@@ -253,6 +254,7 @@ impl World for Double {
         States {
             before,
             after: Some(after),
+            unrealisable: false,
         }
     }
 }

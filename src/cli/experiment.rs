@@ -41,6 +41,8 @@ pieces this build lacks is reported as \"not available: <reason>\".
                        domains/ra/kb_full.ald)
   --code-balance       H1: store capped inconsistent trials with label 0 (the authors' code)
   --code-samples       H1: take samples from every trial (the authors' code)
+  --count-every-trial  H1: end a run after 100 quiet trials of any kind (DOMAIN.md 5.2 as
+                       written; by default only trials the learner would act in count)
   --oracle kb_full|physics
                        H1's oracle: KB_full (default) or the physics world (feature `sim`);
                        H2 and H4 reason with the axioms learned against it
@@ -123,6 +125,7 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
             "--domain" => out.domain = value()?,
             "--code-balance" => out.setup.code_balance = true,
             "--code-samples" => out.setup.code_samples = true,
+            "--count-every-trial" => out.setup.count_every_trial = true,
             "--oracle" => {
                 let v = value()?;
                 out.setup.oracle = crate::learn::h1::Oracle::parse(&v)
@@ -297,6 +300,7 @@ pub fn run_experiment(
         kb: &kb,
         domain: &domain,
         store,
+        caches: Default::default(),
     };
     let start = Instant::now();
     let terminal = std::io::stderr().is_terminal();
@@ -490,6 +494,7 @@ fn trial(id: &str, dir: &Path, err: &mut dyn Write) -> std::io::Result<i32> {
         kb: &kb,
         domain: &domain,
         store: &store,
+        caches: Default::default(),
     };
     match ctx.record(&trial) {
         Ok(_) => Ok(0),

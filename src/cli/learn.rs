@@ -15,25 +15,35 @@ use crate::learn::h1;
 use crate::learn::kb::KbSpec;
 
 const HELP_LEARN: &str = "\
-usage: lucent learn [--kb FILE.ald] [--seed N] [--episodes N] [-o FILE] [--outf=0|2]
+usage: lucent learn [--kb FILE.ald] [--seed N] [--run I] [--episodes N] [-o FILE] [--tables DIR]
+                    [--outf=0|2]
 
 One axiom-learning run (DOMAIN.md section 5): random one-step trials against the oracle
 (KB_full with the learner's switches), a learner knowledge base with the `learner` profile,
 and after each surprise a 100-tree ensemble whose kept axioms join the learner at once.
 Prints what was learned, when and from which surprise; -o writes the learned axioms as an
-AL_d file with their strengths. --kb defaults to domains/ra/scenes/h1.ald.
+AL_d file with their strengths. --kb defaults to domains/ra/scenes/h1.ald. --run I is run I
+of `lucent experiment h1 --seed N` (default 0).
   --code-balance   store capped inconsistent trials with label 0, as the authors' code does
   --code-samples   take samples from every trial, as the authors' code does
+  --tables DIR     write each episode's feature table (the lifted samples the trees were
+                   trained on) to DIR/episode-N.csv: one column per feature, then the label
+  --count-every-trial  end the run after 100 quiet trials of any kind (DOMAIN.md 5.2 as
+                   written); by default only trials whose action the learner takes to be
+                   executable count
 ";
 
 struct Args {
     kb: String,
     seed: u64,
+    run: usize,
     episodes: Option<usize>,
     output: Option<String>,
+    tables: Option<String>,
     json: bool,
     code_balance: bool,
     code_samples: bool,
+    count_every_trial: bool,
     help: bool,
 }
 
@@ -41,11 +51,14 @@ fn parse(args: &[String]) -> Result<Args, String> {
     let mut out = Args {
         kb: "domains/ra/scenes/h1.ald".into(),
         seed: 0,
+        run: 0,
         episodes: None,
         output: None,
+        tables: None,
         json: false,
         code_balance: false,
         code_samples: false,
+        count_every_trial: false,
         help: false,
     };
     let mut words = super::options::VerbArgs::new(args);
@@ -60,11 +73,14 @@ fn parse(args: &[String]) -> Result<Args, String> {
             "--help" | "-h" => out.help = true,
             "--kb" => out.kb = value()?,
             "--seed" => out.seed = number(value()?)?,
+            "--run" => out.run = number(value()?)? as usize,
             "--episodes" => out.episodes = Some(number(value()?)? as usize),
             "-o" | "--output" => out.output = Some(value()?),
+            "--tables" => out.tables = Some(value()?),
             "--outf" => out.json = value()? == "2",
             "--code-balance" => out.code_balance = true,
             "--code-samples" => out.code_samples = true,
+            "--count-every-trial" => out.count_every_trial = true,
             _ => return Err(format!("unknown option '{a}'")),
         }
     }
@@ -78,6 +94,7 @@ fn config(args: &Args) -> LearnConfig {
     }
     c.collect.balance_fix = !args.code_balance;
     c.collect.informative_only = !args.code_samples;
+    c.count_every_trial = args.count_every_trial;
     c
 }
 
@@ -128,7 +145,7 @@ pub fn run_learn(
         return Ok(super::EXIT_INPUT);
     };
     let start = Instant::now();
-    let report = match h1::one_run(&spec, &config(&args), h1::run_seed(args.seed, 0)) {
+    let report = match h1::one_run(&spec, &config(&args), h1::run_seed(args.seed, args.run)) {
         Ok(r) => r,
         Err(e) => {
             writeln!(err, "*** ERROR: (lucent): {e}")?;
@@ -159,6 +176,7 @@ pub fn run_learn(
             .collect();
         let json = serde_json::json!({
             "seed": args.seed,
+            "run": args.run,
             "episodes": episodes,
             "learned": report.store.axioms.iter().map(|l| serde_json::json!({
                 "label": l.label, "axiom": l.axiom.short(), "ald": l.axiom.to_ald(),
@@ -177,14 +195,14 @@ pub fn run_learn(
     } else {
         writeln!(
             out,
-            "Learning run (seed {}): {} trials",
-            args.seed, report.trials
+            "Learning run {} (seed {}): {} trials",
+            args.run, args.seed, report.trials
         )?;
         for e in &report.episodes {
             match e.detected_at {
                 None => writeln!(
                     out,
-                    "episode {}: no surprise in 100 trials; the run ends",
+                    "episode {}: no surprise in 100 quiet trials; the run ends",
                     e.episode
                 )?,
                 Some(t) => {
@@ -232,6 +250,12 @@ pub fn run_learn(
         )?;
         writeln!(out, "Time: {:.2}s", start.elapsed().as_secs_f64())?;
     }
+    if let Some(dir) = &args.tables {
+        if let Err(e) = write_tables(dir, &report.episodes) {
+            writeln!(err, "*** ERROR: (lucent): {dir}: {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    }
     if let Some(path) = &args.output {
         if let Err(e) = std::fs::write(path, report.store.to_ald()) {
             writeln!(err, "*** ERROR: (lucent): {path}: {e}")?;
@@ -239,4 +263,37 @@ pub fn run_learn(
         }
     }
     Ok(0)
+}
+
+/// Writes every episode's feature table as `DIR/episode-N.csv`: a header of the feature
+/// literals (short form) and `label`, then one row of 0/1 per sample.
+fn write_tables(
+    dir: &str,
+    episodes: &[crate::learn::episode::EpisodeReport],
+) -> std::io::Result<()> {
+    std::fs::create_dir_all(dir)?;
+    for e in episodes {
+        let Some((features, table)) = &e.table else {
+            continue;
+        };
+        let quote = |t: String| format!("\"{}\"", t.replace('"', "\"\""));
+        let mut text: Vec<String> = vec![features
+            .iter()
+            .map(|f| quote(f.short()))
+            .chain(std::iter::once("label".to_string()))
+            .collect::<Vec<_>>()
+            .join(",")];
+        for (row, label) in table.rows.iter().zip(&table.labels) {
+            text.push(
+                row.iter()
+                    .chain(std::iter::once(label))
+                    .map(|&b| if b { "1" } else { "0" })
+                    .collect::<Vec<_>>()
+                    .join(","),
+            );
+        }
+        let path = std::path::Path::new(dir).join(format!("episode-{}.csv", e.episode));
+        std::fs::write(path, text.join("\n") + "\n")?;
+    }
+    Ok(())
 }

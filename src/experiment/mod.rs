@@ -34,7 +34,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::base::rng::SplitMix64;
 use crate::learn::episode::LearnConfig;
-use crate::learn::h1::Oracle;
+use crate::learn::h1::{Caches, Oracle};
 use crate::learn::kb::KbSpec;
 
 /// The paper's four hypotheses (DOMAIN.md 7.1).
@@ -92,6 +92,11 @@ pub struct Setup {
     pub code_balance: bool,
     /// Take samples from every trial, as the authors' code does.
     pub code_samples: bool,
+    /// End a learning run after 100 quiet trials of any kind, as DOMAIN.md 5.2 is written
+    /// (`LearnConfig::count_every_trial`); by default only trials the learner would act in
+    /// count.
+    #[serde(default)]
+    pub count_every_trial: bool,
     /// H1's oracle (KB_full by default; results stored before the field existed are KB_full's).
     #[serde(default)]
     pub oracle: Oracle,
@@ -102,8 +107,9 @@ pub struct Setup {
 }
 
 /// The current trial design: 1 when H3 and H4 took H2's (scene, goal) pairs (before, one scene
-/// per trial was drawn from the trial's seed).
-pub const DESIGN: u32 = 1;
+/// per trial was drawn from the trial's seed); 2 when a learning run's detection phase counted
+/// only the trials the learner would act in (`LearnConfig::count_every_trial`).
+pub const DESIGN: u32 = 2;
 
 impl Setup {
     /// The paper's sizes with the given seed.
@@ -116,6 +122,7 @@ impl Setup {
             episodes: LearnConfig::default().episodes,
             code_balance: false,
             code_samples: false,
+            count_every_trial: false,
             oracle: Oracle::KbFull,
             design: DESIGN,
         }
@@ -129,6 +136,7 @@ impl Setup {
         };
         c.collect.balance_fix = !self.code_balance;
         c.collect.informative_only = !self.code_samples;
+        c.count_every_trial = self.count_every_trial;
         c
     }
 }
@@ -307,6 +315,10 @@ pub struct Context<'a> {
     pub domain: &'a Domain,
     /// The results.
     pub store: &'a dyn Store,
+    /// Answers of the H1 worlds, shared by the learning runs of this process (an answer is a
+    /// function of the knowledge base, the facts and the action: `learn::kb::Cache`), so they
+    /// change no result, only the time.
+    pub caches: Caches,
 }
 
 /// How a trial's result was obtained.

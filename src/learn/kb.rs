@@ -5,9 +5,11 @@
 //! The description is translated once per set of learned axioms and grounded once, with the
 //! step-0 observations `obs(relation(on, X, L), true, 0)`, `obs(in_hand(R, X), true, 0)` and the
 //! action record `hpd(A, 0)` declared external; a trial is one solve under assumptions. The
-//! state read back is the observable vocabulary (`relation` and `in_hand`, both signs) at steps
-//! 0 and 1, through atom numbers looked up once; at step 1 only the positive literals (all that
-//! 5.1 compares), and no step-0 state for the oracle (`read_before`).
+//! state read back is the observable vocabulary (`relation` and `in_hand`) at steps 0 and 1,
+//! through atom numbers looked up once: at step 0 every positive literal and the negative ones
+//! that mention a constant of the action (all that 5.1, 5.5 and 5.9 read: see
+//! [`States::before`]), at step 1 only the positive literals (all that 5.1 compares), and no
+//! step-0 state for the oracle (`read_before`).
 //!
 //! A trial asks for one answer set (the solver stops at the first cardinality-minimal one) and
 //! the program shows no atoms (`#show.`): the observables are read by atom number, so no model
@@ -71,8 +73,13 @@ pub struct Cache {
     inner: Mutex<CacheTables>,
 }
 
-/// A cached answer: the step-0 literals and, if executable, the step-1 literals.
-type Answer = (Vec<u32>, Option<Vec<u32>>);
+/// A cached answer: the step-0 literals, if executable the step-1 literals, and whether the
+/// world could not realise the state (`States::unrealisable`).
+type Answer = (Vec<u32>, Option<Vec<u32>>, bool);
+
+/// An answer of a [`KbWorld`] as numbers of its observables: the step-0 ones and, if the action
+/// is executable, the step-1 ones.
+type Indices = (Vec<u32>, Option<Vec<u32>>);
 
 #[derive(Debug, Default)]
 struct CacheTables {
@@ -124,13 +131,14 @@ impl Cache {
         let mut t = self.inner.lock().expect("cache lock");
         t.lookups += 1;
         let key = t.key(kb, facts, action);
-        let (before, after) = t.answers.get(&key)?;
+        let (before, after, unrealisable) = t.answers.get(&key)?;
         let lits = |ids: &[u32]| -> Vec<Literal> {
             ids.iter().map(|&i| t.lits[i as usize].clone()).collect()
         };
         let states = States {
             before: lits(before),
             after: after.as_deref().map(lits),
+            unrealisable: *unrealisable,
         };
         t.hits += 1;
         Some(states)
@@ -144,7 +152,21 @@ impl Cache {
             .after
             .as_ref()
             .map(|a| a.iter().map(|l| t.intern(l)).collect());
-        t.answers.insert(key, (before, after));
+        t.answers.insert(key, (before, after, states.unrealisable));
+    }
+
+    /// Stores an answer given as literal numbers from [`Cache::intern_all`].
+    fn put_ids(&self, kb: u32, facts: &[Literal], action: &Literal, answer: Answer) {
+        let mut t = self.inner.lock().expect("cache lock");
+        let key = t.key(kb, facts, action);
+        t.answers.insert(key, answer);
+    }
+
+    /// The numbers of `lits` in this cache (interned once per knowledge base, so an answer is
+    /// stored without hashing its literals).
+    fn intern_all<'a>(&self, lits: impl Iterator<Item = &'a Literal>) -> Vec<u32> {
+        let mut t = self.inner.lock().expect("cache lock");
+        lits.map(|l| t.intern(l)).collect()
     }
 
     /// Lookups that found an answer, and lookups in all.
@@ -160,8 +182,11 @@ pub struct KbWorld {
     spec: KbSpec,
     /// The grounded program.
     ctl: Control,
-    /// Observable literals: atom, literal, step.
-    observables: Vec<(AtomId, Literal, u8)>,
+    /// The observable literals.
+    observables: Vec<Observable>,
+    /// The constants of the observables, each with its bit in [`Observable::mentions`] (the
+    /// first 64; a literal with a later one has every bit set, so it is always read).
+    constants: HashMap<String, u32>,
     /// Solve calls so far.
     pub solves: usize,
     /// Whether [`World::step`] computes the step-0 state when the action is not executable
@@ -169,10 +194,34 @@ pub struct KbWorld {
     pub need_before: bool,
     /// Whether answers carry the step-0 state at all (the oracle's is never read, 5.1).
     pub read_before: bool,
-    /// The shared cache and this knowledge base's number in it.
-    cache: Option<(Arc<Cache>, u32)>,
+    /// The shared cache, this knowledge base's number in it, and the cache's number of every
+    /// observable.
+    cache: Option<(Arc<Cache>, u32, Vec<u32>)>,
     /// The learned axioms' text, part of the cache key.
     learned_text: String,
+}
+
+/// An observable literal of a knowledge base: `holds(lit, step)` is atom `atom`.
+struct Observable {
+    atom: AtomId,
+    lit: Literal,
+    step: u8,
+    /// One bit per constant in an entity position of `lit` (see [`KbWorld::constants`]).
+    mentions: u64,
+}
+
+/// The bits of the constants in the entity positions of `lit`; a constant not in `constants`
+/// is added while bits last, else every bit is set.
+fn mention_bits(lit: &Literal, constants: &mut HashMap<String, u32>) -> u64 {
+    let mut bits = 0u64;
+    for i in lit.entity_positions() {
+        if let Term::Const(c) = &lit.args[i] {
+            let n = constants.len() as u32;
+            let b = *constants.entry(c.clone()).or_insert(n);
+            bits |= if b < 64 { 1 << b } else { u64::MAX };
+        }
+    }
+    bits
 }
 
 /// `Symbol` to the learner's literal (constants and numbers only).
@@ -236,6 +285,8 @@ impl KbWorld {
         }
         let mut config = ControlConfig::default();
         config.solve.models = 1;
+        // Answers are read by atom number: no model needs its supporting rules.
+        config.solve.supports = false;
         let mut ctl = Control::with_sources(config, sources);
         ctl.add_program(translation.program)
             .map_err(|e| KbError::Ground(e.message))?;
@@ -244,6 +295,7 @@ impl KbWorld {
         ctl.ground(&[Part::base()])
             .map_err(|e| KbError::Ground(e.message))?;
         let mut observables = Vec::new();
+        let mut constants = HashMap::new();
         for a in ctl.symbolic_atoms() {
             let s = &a.symbol;
             if s.name() != Some("holds") || s.args().len() != 2 {
@@ -259,12 +311,19 @@ impl KbWorld {
                 continue;
             }
             lit.positive = !s.is_negative();
-            observables.push((a.atom, lit, step as u8));
+            let mentions = mention_bits(&lit, &mut constants);
+            observables.push(Observable {
+                atom: a.atom,
+                lit,
+                step: step as u8,
+                mentions,
+            });
         }
         Ok(KbWorld {
             spec,
             ctl,
             observables,
+            constants,
             solves: 0,
             need_before: true,
             read_before: true,
@@ -283,16 +342,20 @@ impl KbWorld {
             self.spec.options, self.need_before, self.read_before, self.learned_text
         );
         let n = cache.kb(key);
-        self.cache = Some((cache, n));
+        let ids = cache.intern_all(self.observables.iter().map(|o| &o.lit));
+        self.cache = Some((cache, n, ids));
     }
 
-    /// Solves under the facts (and the action, if any); the last model's observable literals
-    /// at steps 0 and 1, or `None` without an answer set.
+    /// Solves under the facts (and the action when `occurs`): the numbers of the last model's
+    /// observables read at steps 0 and 1 (step 0: every positive literal and the negative ones
+    /// mentioning a constant of the action; step 1: the positive ones), or `None` without an
+    /// answer set.
     fn solve(
         &mut self,
         facts: &[Literal],
-        action: Option<&Literal>,
-    ) -> Option<(Vec<Literal>, Vec<Literal>)> {
+        action: &Literal,
+        occurs: bool,
+    ) -> Option<(Vec<u32>, Vec<u32>)> {
         let obs = |l: &Literal| {
             Symbol::function(
                 "obs",
@@ -303,34 +366,43 @@ impl KbWorld {
         // after it. (Assumptions would do the same; at control 6658570 a positive assumption
         // on an external atom made every call unsatisfiable, so values are assigned.)
         let mut set: Vec<Symbol> = facts.iter().map(obs).collect();
-        if let Some(a) = action {
+        if occurs {
             set.push(Symbol::function(
                 "hpd",
-                vec![symbol_of(a), Symbol::number(0)],
+                vec![symbol_of(action), Symbol::number(0)],
             ));
         }
         for s in &set {
             self.ctl.assign_external(s, TruthValue::True);
         }
+        // The action's constants: a negative step-0 literal is read when it mentions one.
+        let wanted_negative: u64 = action
+            .args
+            .iter()
+            .filter_map(|t| match t {
+                Term::Const(c) => self.constants.get(c),
+                Term::Var(_) => None,
+            })
+            .fold(0, |bits, &b| bits | if b < 64 { 1 << b } else { u64::MAX });
         let options = SolveOptions::default();
         let observables = &self.observables;
         let read_before = self.read_before;
-        let mut last: Option<(Vec<Literal>, Vec<Literal>)> = None;
+        let mut last: Option<(Vec<u32>, Vec<u32>)> = None;
         self.solves += 1;
         self.ctl.solve(&options, |m| {
             let (mut s0, mut s1) = (Vec::new(), Vec::new());
-            for (atom, lit, step) in observables {
-                // Step 1: only the positive literals, all that 5.1 compares.
-                let wanted = if *step == 0 {
-                    read_before
+            for (i, o) in observables.iter().enumerate() {
+                let wanted = if o.step == 0 {
+                    read_before && (o.lit.positive || o.mentions & wanted_negative != 0)
                 } else {
-                    lit.positive
+                    // Step 1: only the positive literals, all that 5.1 compares.
+                    o.lit.positive
                 };
-                if wanted && m.holds(*atom) {
-                    if *step == 0 {
-                        s0.push(lit.clone());
+                if wanted && m.holds(o.atom) {
+                    if o.step == 0 {
+                        s0.push(i as u32);
                     } else {
-                        s1.push(lit.clone());
+                        s1.push(i as u32);
                     }
                 }
             }
@@ -343,6 +415,14 @@ impl KbWorld {
         last
     }
 
+    /// The literals of observables given by number.
+    fn literals(&self, indices: &[u32]) -> Vec<Literal> {
+        indices
+            .iter()
+            .map(|&i| self.observables[i as usize].lit.clone())
+            .collect()
+    }
+
     /// The knowledge base's spec.
     pub fn spec(&self) -> &KbSpec {
         &self.spec
@@ -351,16 +431,22 @@ impl KbWorld {
 
 impl World for KbWorld {
     fn step(&mut self, facts: &[Literal], action: &Literal) -> States {
-        if let Some((cache, kb)) = &self.cache {
+        if let Some((cache, kb, _)) = &self.cache {
             if let Some(s) = cache.get(*kb, facts, action) {
                 return s;
             }
         }
-        let states = self.step_uncached(facts, action);
-        if let Some((cache, kb)) = &self.cache {
-            cache.put(*kb, facts, action, &states);
+        let (before, after) = self.step_uncached(facts, action);
+        if let Some((cache, kb, ids)) = &self.cache {
+            let number = |v: &[u32]| -> Vec<u32> { v.iter().map(|&i| ids[i as usize]).collect() };
+            let answer = (number(&before), after.as_deref().map(number), false);
+            cache.put_ids(*kb, facts, action, answer);
         }
-        states
+        States {
+            before: self.literals(&before),
+            after: after.map(|a| self.literals(&a)),
+            unrealisable: false,
+        }
     }
 }
 
@@ -394,23 +480,19 @@ impl<W: World> World for CachedWorld<W> {
 }
 
 impl KbWorld {
-    /// [`World::step`] by solving.
-    fn step_uncached(&mut self, facts: &[Literal], action: &Literal) -> States {
-        match self.solve(facts, Some(action)) {
-            Some((before, after)) => States {
-                before,
-                after: Some(after),
-            },
+    /// [`World::step`] by solving, as observable numbers.
+    fn step_uncached(&mut self, facts: &[Literal], action: &Literal) -> Indices {
+        match self.solve(facts, action, true) {
+            Some((before, after)) => (before, Some(after)),
             None => {
                 let before = if self.need_before {
-                    self.solve(facts, None).map(|(b, _)| b).unwrap_or_default()
+                    self.solve(facts, action, false)
+                        .map(|(b, _)| b)
+                        .unwrap_or_default()
                 } else {
                     Vec::new()
                 };
-                States {
-                    before,
-                    after: None,
-                }
+                (before, None)
             }
         }
     }
@@ -426,7 +508,7 @@ impl LearnerKb for KbWorld {
                 self.solves = solves;
                 self.need_before = need_before;
                 self.read_before = read_before;
-                if let Some((c, _)) = cache {
+                if let Some((c, _, _)) = cache {
                     self.use_cache(c);
                 }
             }

@@ -6,9 +6,14 @@
 //! Objects `on` the table stand on fixed slots, two rows of four, 0.28 m apart laterally and
 //! 0.5 m in depth, so objects on the table never touch and `sim::execute`'s free-spot search
 //! finds the strip between the rows for a `putdown` on the table; an object `on` another stands
-//! centred on its top. The scene is settled, then the action executes without slips
-//! (`failure_rate` 0) and with exact perception; a failure (`HandFull`, `Covered`, `NotHeld`, a
-//! held destination) means the action is not executable (no successor state).
+//! centred on its top. The scene is settled; a scene that does not come to rest with its `on`
+//! facts intact (a large object on the small can topples) is *unrealisable* and the trial is
+//! void (`States::unrealisable`): what follows would be the fall, which KB_full does not model
+//! (D1 lets such an object stand by a CR exception), not the action's effect; answering it as a
+//! successor taught `pickup(R1, O1) causes -above(O2, O3) if -in_hand(R1, O2)` in 12 of 20
+//! runs. Otherwise the action executes without slips (`failure_rate` 0) and with exact
+//! perception; a failure (`HandFull`, `Covered`, `NotHeld`, a held destination) means the
+//! action is not executable (no successor state).
 //!
 //! Observation [ours]: the support relations `on`, `above`, `below` and `touch` (objects and
 //! the table) and `in_hand`, positive literals only, as 5.1 compares them. The positional and
@@ -29,8 +34,9 @@ use super::term::{Literal, Term, IN_HAND, RELATION};
 /// The relations the physics oracle reports.
 pub const OBSERVED: [Rel; 4] = [Rel::On, Rel::Above, Rel::Below, Rel::Touch];
 
-/// Seconds the initial scene may settle before the action.
-const SETTLE_SECONDS: f32 = 1.0;
+/// Seconds the initial scene may take to come to rest before the action; a scene still moving
+/// then is not realisable.
+const SETTLE_SECONDS: f32 = 3.0;
 
 /// Table slots: lateral (x) and depth (z) positions.
 const SLOTS_X: [f32; 4] = [-0.42, -0.14, 0.14, 0.42];
@@ -93,7 +99,8 @@ pub struct PhysicsWorld {
     pub catalogue: Catalogue,
     /// Steps run.
     pub steps: usize,
-    /// Steps whose initial scene moved while settling (an `on` fact no longer measured).
+    /// Steps whose initial scene did not stand (still moving after settling, or an `on` fact
+    /// no longer measured): answered as unrealisable.
     pub unsettled: usize,
 }
 
@@ -195,20 +202,28 @@ impl OneStepWorld for PhysicsWorld {
         let not_executable = States {
             before: Vec::new(),
             after: None,
+            unrealisable: false,
         };
         let Some(mut scene) = self.scene(facts) else {
             return not_executable;
         };
         let mut world = World::build(&scene);
-        world.settle(SETTLE_SECONDS);
+        let spent = world.settle(SETTLE_SECONDS);
         world.write_back(&mut scene);
         let settled = self.observe(&scene);
-        if facts
-            .iter()
-            .filter(|f| f.positive && f.name == RELATION)
-            .any(|f| settled.binary_search(f).is_err())
+        if spent >= SETTLE_SECONDS
+            || facts
+                .iter()
+                .filter(|f| f.positive && f.name == RELATION)
+                .any(|f| settled.binary_search(f).is_err())
         {
+            // The state does not stand (a large object on the small can topples): whatever
+            // follows is its fall, not the action's effect.
             self.unsettled += 1;
+            return States {
+                unrealisable: true,
+                ..not_executable
+            };
         }
         let args: Vec<&str> = match action.args.iter().map(constant).collect::<Option<_>>() {
             Some(a) => a,
@@ -227,6 +242,7 @@ impl OneStepWorld for PhysicsWorld {
             Ok(report) if report.succeeded() => States {
                 before: Vec::new(),
                 after: Some(self.observe(&scene)),
+                unrealisable: false,
             },
             _ => not_executable,
         }
@@ -291,6 +307,30 @@ mod tests {
         ));
         assert!(!holds(&after, &on("green_cube_large", "red_cube_large")));
         assert!(holds(&after, &on("red_cube_large", "table")));
+    }
+
+    /// A large cube on the small can does not stand: the trial is void, whatever the action
+    /// (here one on another stack), and counted as unsettled. The state is one of the random
+    /// H1 states after which the world used to report the cube's fall as the pickup's effect.
+    #[test]
+    fn a_state_that_does_not_stand_is_unrealisable() {
+        let mut w = PhysicsWorld::new(Catalogue::h1());
+        let facts = vec![
+            on("yellow_duck", "red_cube_large"),
+            on("green_cube_large", "white_can_small"),
+            on("white_cube_large", "table"),
+            on("yellow_cube_large", "table"),
+            on("pitcher", "table"),
+            on("white_can_small", "table"),
+            on("blue_ball", "table"),
+            on("red_cube_large", "table"),
+        ];
+        let s = w.step(
+            &facts,
+            &Literal::ground("pickup", &["rob1", "yellow_cube_large"]),
+        );
+        assert!(s.unrealisable && s.after.is_none(), "{s:?}");
+        assert_eq!(w.unsettled, 1);
     }
 
     #[test]

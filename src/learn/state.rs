@@ -158,6 +158,8 @@ pub struct Outcome {
     pub learner_executable: bool,
     /// The oracle has a successor state (the action was executable).
     pub oracle_executable: bool,
+    /// The oracle could not realise the step-0 state (`States::unrealisable`): no sample.
+    pub void: bool,
 }
 
 impl Outcome {
@@ -273,6 +275,9 @@ impl Collector {
     /// Offers trial `trial` with its outcome; returns the datasets that took a sample.
     pub fn offer(&mut self, trial: usize, outcome: &Outcome) -> Vec<(Dataset, bool)> {
         let mut added = Vec::new();
+        if outcome.void {
+            return added;
+        }
         let informative = self.config.informative_only;
         let cl_ok = !informative || (outcome.learner_executable && outcome.oracle_executable);
         let ec_ok = !informative || outcome.learner_executable;
@@ -390,6 +395,25 @@ mod tests {
             extra: if extra { vec![l] } else { vec![] },
             learner_executable: learner,
             oracle_executable: oracle,
+            void: false,
+        }
+    }
+
+    /// A void trial (the world could not realise the state) gives no sample, in either mode.
+    #[test]
+    fn a_void_trial_gives_no_sample() {
+        for informative_only in [true, false] {
+            let mut c = Collector::new(CollectConfig {
+                informative_only,
+                ..CollectConfig::default()
+            });
+            let void = Outcome {
+                void: true,
+                ..outcome(false, false, true, true)
+            };
+            assert!(c.offer(0, &void).is_empty());
+            assert!(c.cl.is_empty() && c.ec.is_empty());
+            assert!(!c.offer(1, &outcome(false, false, true, true)).is_empty());
         }
     }
 

@@ -63,6 +63,7 @@ pub fn classify(
         extra,
         learner_executable: learner_after.is_some(),
         oracle_executable: oracle_after.is_some(),
+        void: false,
     }
 }
 

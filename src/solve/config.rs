@@ -114,6 +114,10 @@ pub struct Config {
     pub check_models: bool,
     /// Number of portfolio threads (`--parallel-mode=N`); 1 is sequential.
     pub threads: usize,
+    /// Compute every model's [`Model::support`](crate::solve::Model) (one supporting rule per
+    /// true atom). Callers that never read supports turn it off: building them was ~5% of a
+    /// learning run, whose one-step programs are solved thousands of times (docs/bench/h1.md).
+    pub supports: bool,
 }
 
 /// Which search settings apply.
@@ -220,6 +224,7 @@ impl Default for Config {
             eq: true,
             check_models: false,
             threads: 1,
+            supports: true,
         }
     }
 }

@@ -269,7 +269,11 @@ impl Solver {
             .map(|(c, _)| c.label.clone())
             .collect();
         cr_applied.sort();
-        let support = supports(&self.prog, &atoms);
+        let support = if self.config.supports {
+            supports(&self.prog, &atoms)
+        } else {
+            Vec::new()
+        };
         Model {
             number,
             symbols,
