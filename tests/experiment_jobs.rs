@@ -1,7 +1,8 @@
 //! The experiment harness's scale-out and resumption (issue 16): on a small configuration, the
 //! job list run by GNU parallel and merged gives the same report as the in-process run for the
 //! same seed, and a rerun over a results directory that already holds some trials reuses them
-//! (the stored files are not rewritten) and still gives the same report.
+//! (the stored files are not rewritten) and still gives the same report; a run killed for real
+//! resumes from the trials it stored, and a damaged result file is computed again.
 //!
 //! Timings are the only values allowed to differ: JSON keys `time`, `seconds` and `*_time` are
 //! removed before comparing, so are the markdown rows of timing ratios (`| Planning time |`,
@@ -205,6 +206,92 @@ fn job_list_through_gnu_parallel_and_a_resumed_run_match_the_in_process_run() {
     );
 
     for d in [a, b, c] {
+        let _ = std::fs::remove_dir_all(d);
+    }
+}
+
+/// A real interruption: the run is killed (SIGKILL, no clean-up) once its first trial is stored;
+/// the rerun reuses every stored trial and computes only the rest, a stored result that was
+/// damaged afterwards is computed again, and the report is the uninterrupted run's.
+#[test]
+fn a_killed_run_resumes_and_a_damaged_result_is_computed_again() {
+    const RUN: [&str; 8] = [
+        "experiment",
+        "h1",
+        "--seed",
+        "5",
+        "--runs",
+        "3",
+        "--episodes",
+        "1",
+    ];
+    let whole = scratch("whole");
+    let mut a: Vec<&str> = RUN.to_vec();
+    a.extend(["--out", whole.to_str().unwrap()]);
+    lucent(&a);
+
+    let cut = scratch("killed");
+    let cut_str = cut.to_str().unwrap();
+    let mut b: Vec<&str> = RUN.to_vec();
+    b.extend(["--out", cut_str]);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_lucent"))
+        .args(&b)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("lucent runs");
+    let results = cut.join("results");
+    let stored = || -> usize {
+        std::fs::read_dir(&results)
+            .map(|d| {
+                d.filter_map(Result::ok)
+                    .filter(|e| {
+                        let n = e.file_name().to_string_lossy().to_string();
+                        n.starts_with("h1-") && n.ends_with(".json")
+                    })
+                    .count()
+            })
+            .unwrap_or(0)
+    };
+    let start = std::time::Instant::now();
+    while stored() == 0 && start.elapsed().as_secs() < 600 {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+    let finished = stored();
+    assert!(finished >= 1, "a trial was stored before the kill");
+
+    let rerun = lucent(&b);
+    let stderr = String::from_utf8_lossy(&rerun.stderr);
+    assert!(
+        stderr.contains(&format!(
+            "experiment: 3 trials, {} computed, {finished} reused",
+            3 - finished
+        )),
+        "{stderr}"
+    );
+    assert_eq!(report(&whole), report(&cut));
+
+    // A result file cut short (a disk filled, a copy interrupted) is not trusted.
+    let victim = results.join("h1-kb_full-0001.json");
+    let text = std::fs::read_to_string(&victim).unwrap();
+    std::fs::write(&victim, &text[..text.len() / 2]).unwrap();
+    let again = lucent(&b);
+    let stderr = String::from_utf8_lossy(&again.stderr);
+    assert!(
+        stderr.contains("experiment: 3 trials, 1 computed, 2 reused"),
+        "{stderr}"
+    );
+    let rewritten = std::fs::read_to_string(&victim).unwrap();
+    assert!(
+        serde_json::from_str::<Value>(&rewritten).is_ok(),
+        "{rewritten}"
+    );
+    assert_eq!(report(&whole), report(&cut));
+
+    for d in [whole, cut] {
         let _ = std::fs::remove_dir_all(d);
     }
 }
