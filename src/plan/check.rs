@@ -87,6 +87,10 @@ pub struct StateSearch {
 /// A state as a bit set over [`StateSearch`]'s fluents.
 type Bits = Vec<u64>;
 
+/// An entry of the search's queue: f = (length + bound, CR count), the length (longer first
+/// among equal f), the CR count and the state.
+type Entry = ((usize, usize), Reverse<usize>, usize, Bits);
+
 /// All transitions out of one state.
 #[derive(Debug)]
 struct Expansion {
@@ -767,8 +771,7 @@ impl StateSearch {
         }
         // Per state: its best (length, CR count) so far.
         let mut best: HashMap<Bits, (usize, usize)> = HashMap::new();
-        let mut heap: BinaryHeap<Reverse<((usize, usize), Reverse<usize>, usize, Bits)>> =
-            BinaryHeap::new();
+        let mut heap: BinaryHeap<Reverse<Entry>> = BinaryHeap::new();
         let h0 = h(&start);
         if h0 > max_depth {
             return Ok(None);
