@@ -339,7 +339,11 @@ pub fn why_no_plan(
 ) -> Result<Answer, HistoryError> {
     let v = Verbalizer::new(lexicon);
     let mut np = NoPlan::new(problem, goal, horizon)?;
-    let h = horizon.to_string();
+    // "1 step", "3 steps": the templates say "at most {horizon}".
+    let h = match horizon {
+        1 => "1 step".to_string(),
+        n => format!("{n} steps"),
+    };
     let Some(core) = np.minimal_core() else {
         return Ok(Answer {
             kind: "no_plan",
