@@ -817,6 +817,22 @@ mod tests {
     }
 
     #[test]
+    fn a_later_part_shows_a_term_on_an_atom_of_an_earlier_one() {
+        // `#show x : p(k).` in part k reads p(k), grounded (and numbered) by `base`.
+        let mut ctl = Control::new(ControlConfig::default());
+        ctl.add(
+            "s",
+            "#program base. 1 { p(0..1) } 1. #program check(k). #show p/1. #show x : p(k).",
+        )
+        .unwrap();
+        ctl.ground(&[Part::base()]).unwrap();
+        assert_eq!(answers(&mut ctl), ["p(0)", "p(1)"]);
+        ctl.ground(&[Part::new("check", vec![Symbol::number(1)])])
+            .unwrap();
+        assert_eq!(answers(&mut ctl), ["p(0)", "p(1) x"]);
+    }
+
+    #[test]
     fn externals_are_assigned_and_released() {
         let mut ctl = Control::new(ControlConfig::default());
         ctl.add("e", "#external e(1..2). p :- e(1). q :- e(2).")

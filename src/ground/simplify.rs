@@ -530,6 +530,29 @@ pub fn finish_after(
             used[a] = true;
         }
     }
+    // Frozen atoms in conditions of shows, heuristics and edges, and projected ones, are
+    // possible (a later part may show an atom of an earlier one).
+    if !before.is_empty() {
+        let mut mark = |l: Lit| {
+            let a = l.unsigned_abs() as usize;
+            if frozen(a) {
+                used[a] = true;
+            }
+        };
+        for (_, cond) in &g.shows {
+            cond.iter().for_each(|&l| mark(l));
+        }
+        for h in &g.heuristics {
+            mark(h.atom as Lit);
+            h.condition.iter().for_each(|&l| mark(l));
+        }
+        for e in &g.edges {
+            e.condition.iter().for_each(|&l| mark(l));
+        }
+        for &a in &g.projections {
+            mark(a as Lit);
+        }
+    }
     // Numbering as gringo's output does it: atoms in order of first occurrence in the rules
     // (each rule's heads before its body), then those only in minimize statements, externals
     // and shown atoms, in creation order. The solver's initial variable order follows it.
