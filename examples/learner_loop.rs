@@ -4,10 +4,15 @@
 //! beside clingo's Python API doing the same.
 //!
 //! usage: learner_loop FILE [N]
+//!
+//! It uses mimalloc as its global allocator, as the `lucent` binary does.
 
 use std::time::Instant;
 
 use lucent::control::{Control, ControlConfig, Part, SolveOptions};
+
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
