@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The learner's inner loop, Lucent against clingo's Python API in one run: N times parse,
 ground, solve a one-step program and read the model (every true atom), with a fresh control
-each time. Lucent runs examples/learner_loop.rs (library calls through control::Control);
+each time. Lucent runs examples/learner_loop.rs (library calls through control::Control, built
+with the release-lto profile, mimalloc as its allocator);
 clingo runs Control(), add, ground, solve with the model's atoms read as symbols.
 Prints calls per second for both and the ratio.
 
@@ -37,9 +38,10 @@ def main():
     ap.add_argument("program", nargs="?",
                     default=os.path.join(root, "benches", "data", "learner_step.lp"))
     a = ap.parse_args()
-    subprocess.run(["cargo", "build", "--release", "--quiet", "--no-default-features",
-                    "--example", "learner_loop"], cwd=root, check=True)
-    exe = os.path.join(root, "target", "release", "examples", "learner_loop")
+    # The release-lto profile (Cargo.toml): release with fat LTO and one codegen unit.
+    subprocess.run(["cargo", "build", "--profile", "release-lto", "--quiet",
+                    "--no-default-features", "--example", "learner_loop"], cwd=root, check=True)
+    exe = os.path.join(root, "target", "release-lto", "examples", "learner_loop")
     out = subprocess.run([exe, a.program, str(a.n)], capture_output=True, text=True,
                          check=True).stdout
     m = re.search(r"calls_per_second=([0-9.]+)", out)

@@ -40,7 +40,7 @@ mod search;
 use super::config::{Deletion, ReduceSchedule};
 use super::lit::{Lit, Var};
 use super::unfounded::Unfounded;
-use loops::{is_loop_watch, Loops};
+use loops::{is_loop_watch, Loops, LOOP_TAG};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::Instant;
@@ -142,6 +142,9 @@ fn prefetch<T>(p: *const T) {
 
 /// How many trail positions ahead of the propagation queue head watch lists are prefetched.
 const PREFETCH_AHEAD: usize = 4;
+
+/// How many watch list entries ahead of the one visited the clause of a watch is prefetched.
+const CLAUSE_AHEAD: usize = 3;
 
 /// The size of an engine's contents (`Engine::size`), for tests that check that repeated calls
 /// leave nothing behind.

@@ -23,7 +23,7 @@ impl Engine {
             Deletion::Sorted => self.reduce_sorted(),
             Deletion::Basic => self.reduce_basic(),
         }
-        if self.wasted * 2 > self.arena.len() {
+        if self.wasted * 4 > self.arena.len() {
             self.collect_garbage();
         } else {
             // Propagation never looks at deleted clauses: drop their watches now.

@@ -126,6 +126,14 @@ impl Engine {
         let mut conflict = false;
         let mut loop_watches = false;
         while i < n {
+            // Start loading the clause of the watch `CLAUSE_AHEAD` entries on, unless its
+            // blocker is true (then its clause will not be read): the header load is the
+            // main cache miss of propagation, and it now overlaps with this watch's work.
+            if let Some(a) = ws.get(i + CLAUSE_AHEAD) {
+                if a.cref & LOOP_TAG == 0 && values[a.other.code()] != 1 {
+                    prefetch(arena.as_ptr().wrapping_add(a.cref as usize));
+                }
+            }
             let w = ws[i];
             i += 1;
             let bv = values[w.other.code()];
