@@ -13,6 +13,7 @@ The histories are kept in DIR (default target/episodes) as preset-seed.json.
 import argparse
 import json
 import os
+import resource
 import subprocess
 import sys
 import time
@@ -51,6 +52,7 @@ def main():
     for preset, seed in runs:
         path = os.path.join(args.out, f"{preset}-{seed}.json")
         t0 = time.time()
+        c0 = children_cpu()
         cmd = [args.lucent, "run", "--preset", preset, "--seed", str(seed),
                "--perception-noise", "0.15", "--actuation-noise", "0.15",
                "--save-history", path] + args.extra
@@ -58,22 +60,32 @@ def main():
             proc = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
         except subprocess.TimeoutExpired:
             secs = time.time() - t0
-            rows.append((preset, seed, "?", False, 0, 0, f"timed out after {secs:.0f} s", secs))
+            rows.append((preset, seed, "?", False, 0, 0, f"timed out after {secs:.0f} s", secs,
+                         children_cpu() - c0))
             print(f"{preset:9} {seed:3} FAIL timed out", file=sys.stderr, flush=True)
             continue
         secs = time.time() - t0
+        cpu = children_cpu() - c0
         if proc.returncode not in (0, 20) or not os.path.exists(path):
             rows.append((preset, seed, "?", False, 0, 0, f"exit {proc.returncode}: "
-                         + proc.stderr.strip().splitlines()[-1:][0] if proc.stderr.strip() else "", secs))
+                         + proc.stderr.strip().splitlines()[-1:][0] if proc.stderr.strip() else "", secs,
+                         cpu))
             continue
-        rows.append(row_of(preset, seed, path, proc.returncode, secs))
+        rows.append(row_of(preset, seed, path, proc.returncode, secs, cpu))
         r = rows[-1]
         print(f"{preset:9} {seed:3} {'ok  ' if r[3] else 'FAIL'} replans {r[4]} "
-              f"actions {r[5]} {secs:6.1f}s {r[6]}", file=sys.stderr, flush=True)
+              f"actions {r[5]} {secs:6.1f}s wall {cpu:6.1f}s cpu {r[6]}", file=sys.stderr,
+              flush=True)
     report(rows, presets, time.time() - start)
 
 
-def row_of(preset, seed, path, code, secs):
+def children_cpu():
+    """CPU seconds (user + system) of the finished child processes so far."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def row_of(preset, seed, path, code, secs, cpu=None):
     """One table row from a saved history (`code`: the exit code, None to judge by the file)."""
     h = json.load(open(path))
     ending = h["ending"]
@@ -85,7 +97,8 @@ def row_of(preset, seed, path, code, secs):
         ok = code == 0
     why = "" if ok else f"{ending}; goal in truth: {h['goal_in_truth']}"
     actions = len([s for s in h["steps"] if s.get("happened")])
-    return (preset, seed, ",".join(h["goal"]), ok, max(len(h["plans"]) - 1, 0), actions, why, secs)
+    return (preset, seed, ",".join(h["goal"]), ok, max(len(h["plans"]) - 1, 0), actions, why, secs,
+            cpu)
 
 
 def report(rows, presets, total):
@@ -105,11 +118,16 @@ def report(rows, presets, total):
     for r in rows:
         hist[r[4]] = hist.get(r[4], 0) + 1
     print("# replans: " + ", ".join(f"{k}: {hist[k]}" for k in sorted(hist)))
-    print("\n| preset | seed | goal | reached | replans | actions | seconds | why not |")
-    print("|---|---|---|---|---|---|---|---|")
+    cpus = [r[8] for r in rows if r[8] is not None]
+    if cpus:
+        print(f"# CPU s per episode: mean {sum(cpus) / len(cpus):.1f}, max {max(cpus):.1f}, "
+              f"sum {sum(cpus):.0f}")
+    print("\n| preset | seed | goal | reached | replans | actions | wall s | CPU s | why not |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
+        cpu = "" if r[8] is None else f"{r[8]:.1f}"
         print(f"| {r[0]} | {r[1]} | `{r[2]}` | {'yes' if r[3] else 'NO'} | {r[4]} | {r[5]} "
-              f"| {r[7]:.1f} | {r[6]} |")
+              f"| {r[7]:.1f} | {cpu} | {r[6]} |")
 
 
 if __name__ == "__main__":

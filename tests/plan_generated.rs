@@ -2,7 +2,7 @@
 //! 200-pair run of `examples/plan_generated.rs` (figures in
 //! docs/bench/plan-generated-2026-12-01.md): every distinct minimal plan the planner returns is
 //! optimal under the independent checks of `plan::check` (replay one transition at a time;
-//! L* and E* by breadth-first search over states) and, replayed in rapier without noise,
+//! L* and E* by a search over states) and, replayed in rapier without noise,
 //! succeeds at every action, reaches the goal and leaves every object stable.
 //! Also the regression behind the withdrawn first version of this test: the scene of `real`
 //! seed 1 was not at rest when posed (a rocking capsicum), and is settled before planning.

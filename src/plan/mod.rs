@@ -8,8 +8,9 @@
 //!   literals, as AL_d statements for a domain description.
 //! - `check` replays a plan one transition at a time against the domain (the one-step
 //!   program with the current state as the initial state) and classifies it as optimal,
-//!   sub-optimal or incorrect (4.3), with the minimal length and CR count found by a
-//!   breadth-first search over states, not by the planner's search.
+//!   sub-optimal or incorrect (4.3), with the minimal length and CR count found by a search
+//!   over states (A* under a lower bound drawn from E1, E5 and E7, transitions computed once
+//!   per state), not by the planner's search.
 //! - `act`, `history` and `tabletop` (feature `sim`): the sense-plan-act loop, its record and
 //!   the simulated world it runs in.
 //! - `physics` (feature `sim`) draws planning tasks from generated scenes (DOMAIN.md 7.1) and
