@@ -11,8 +11,9 @@
 //! `cargo bench --no-default-features --bench multishot`; `LUCENT_MULTISHOT_CALLS=N` changes
 //! the number of calls of the flatness runs, `LUCENT_MULTISHOT_STEPS=N` the chain's steps,
 //! `LUCENT_MULTISHOT_PARTS=N` the number of `step(t)` parts a `Control` grounds one by one
-//! (the grounding cost per part, first and last tenth compared), `LUCENT_MULTISHOT_CRITERION=0`
-//! skips criterion.
+//! (the grounding cost per part, first and last tenth compared; `LUCENT_MULTISHOT_WINDOW=N`
+//! compares the first and last N parts instead), `LUCENT_MULTISHOT_CRITERION=0` skips
+//! criterion.
 
 use criterion::{black_box, Criterion};
 use lucent::ground::program::{Body, CrRule, GroundProgram, HeadKind, Output, Rule};
@@ -247,7 +248,11 @@ fn control_steps(steps: i32) {
     let mut ctl = Control::new(ControlConfig::default());
     ctl.add("steps", STEPS_PROGRAM).expect("the program parses");
     ctl.ground(&[Part::base()]).expect("base grounds");
-    let window = (steps / 10).max(1);
+    let window = std::env::var("LUCENT_MULTISHOT_WINDOW")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or((steps / 10).max(1))
+        .clamp(1, steps.max(1));
     let (mut first, mut last) = (Vec::new(), Vec::new());
     let start = Instant::now();
     for t in 1..=steps {

@@ -1,9 +1,10 @@
-//! Groundings merged into the Control's tables. A later grounding sees the atoms of earlier
-//! ones as its *context* (facts as facts, the others as free externals); its result is matched
-//! to the earlier atoms by symbol, new atoms numbered after the old, and its rules, outputs,
-//! minimize statements and provenance (statement ids, bindings, grounder atoms) moved into the
-//! Control's numbering. The first grounding is adopted as it is (its numbering is the global
-//! one, as one-shot `ground::ground` numbers).
+//! Groundings merged into the Control's tables. Every grounding runs on the Control's one
+//! `ground::incremental::Session` (grounder atoms, domains and indexes kept between calls) and
+//! the Control's one symbol table; a later grounding's atoms are matched to the Control's by
+//! grounder atom, new atoms numbered after the old, and its rules, outputs, minimize
+//! statements and provenance (statement ids, grounder atoms) moved into the Control's
+//! numbering. The first grounding is adopted as it is (its numbering is the global one, as
+//! one-shot `ground::ground` numbers).
 //!
 //! Invariants: a symbol keeps its atom across groundings (grounder-made `#projN` atoms excepted:
 //! they belong to their grounding); an atom that a solve call completed gets no rules later
@@ -12,49 +13,10 @@
 use super::*;
 
 impl Control {
-    /// The atoms of earlier groundings as statements: facts as facts, the others as externals.
-    pub(super) fn context(&self, statements: &mut Vec<Statement>) {
-        for (i, s) in self.atom_sym.iter().enumerate() {
-            let Some(s) = s else { continue };
-            let sym = Symbol::from_table(&self.syms, *s);
-            let Some(atom) = sym.to_atom() else { continue };
-            let lit = ast::Literal {
-                span: Span::default(),
-                sign: ast::Sign::Positive,
-                atom: ast::Atom::Symbolic(atom.clone()),
-            };
-            let kind = if self.flags[i] & FACT != 0 {
-                StatementKind::Rule(ast::Rule {
-                    head: ast::Head::Disjunction(vec![ast::ConditionalLiteral {
-                        span: Span::default(),
-                        literal: lit,
-                        condition: Vec::new(),
-                        has_colon: false,
-                    }]),
-                    body: Vec::new(),
-                    kind: ast::RuleKind::Normal,
-                })
-            } else {
-                StatementKind::External(Box::new(ast::External {
-                    atom,
-                    body: Vec::new(),
-                    value: Some(ast::Term {
-                        span: Span::default(),
-                        kind: ast::TermKind::Constant("free".into()),
-                    }),
-                }))
-            };
-            statements.push(Statement {
-                span: Span::default(),
-                kind,
-            });
-        }
-    }
-
     /// Takes the first grounding as it is: its numbering is the global one.
     pub(super) fn adopt(&mut self, mut g: Grounding) {
         let program = std::mem::take(&mut g.program);
-        self.syms = std::mem::take(&mut g.symbols);
+        // (The symbols are the Control's already.)
         // Copied, not taken: `take_grounding` hands the grounding back for text output,
         // which renders its atom names from these symbols.
         self.atom_sym = g.atom_syms.clone();
@@ -70,6 +32,9 @@ impl Control {
             if let Some(s) = s {
                 self.sym_atom[s.0 as usize] = i as AtomId + 1;
             }
+        }
+        for (i, &ga) in self.session.last_gatoms().iter().enumerate() {
+            set_gatom(&mut self.ctl_of_gatom, ga, i as AtomId + 1);
         }
         for &s in &g.fact_syms {
             if let Some(a) = self.atom_of_sym(s) {
@@ -127,26 +92,25 @@ impl Control {
     pub(super) fn merge(&mut self, mut g: Grounding, stmt_offset: u32) -> Result<(), Diagnostic> {
         let local = std::mem::take(&mut g.program);
         let old_atoms = self.atom_sym.len() as AtomId;
-        // Local symbol ids to global ones.
-        let mut memo: Vec<u32> = vec![u32::MAX; g.symbols.len()];
+        // Local atoms to the Control's, by the session's grounder atom.
         let mut map = vec![0 as AtomId; local.num_atoms as usize + 1];
+        let gatoms = self.session.last_gatoms().to_vec();
         for (a, slot) in map.iter_mut().enumerate().skip(1) {
+            let ga = gatoms[a - 1];
+            if let Some(&x) = self.ctl_of_gatom.get(ga as usize) {
+                if x != 0 {
+                    *slot = x;
+                    continue;
+                }
+            }
             let sym = g
                 .atom_syms
                 .get(a - 1)
                 .copied()
                 .flatten()
-                .filter(|&s| !is_internal(&g.symbols, s));
-            *slot = match sym {
-                Some(s) => {
-                    let gs = translate(&g.symbols, s, &mut self.syms, &mut memo);
-                    match self.atom_of_sym(gs) {
-                        Some(x) => x,
-                        None => self.new_atom(Some(gs)),
-                    }
-                }
-                None => self.new_atom(None),
-            };
+                .filter(|&s| !is_internal(&self.syms, s));
+            *slot = self.new_atom(sym);
+            set_gatom(&mut self.ctl_of_gatom, ga, *slot);
         }
         let is_old = |a: AtomId| a <= old_atoms;
         let lit = |l: i32| -> i32 {
@@ -165,9 +129,8 @@ impl Control {
                 && (solver.as_ref().is_some_and(|s| !s.is_external(a))
                     || matches!(ext.get(&a), Some(None)))
         };
-        let was_fact: Vec<bool> = self.flags.iter().map(|f| f & FACT != 0).collect();
-        let old_fact = |a: AtomId| is_old(a) && was_fact[a as usize - 1];
-        let gmap = self.translate_atom_records(&g, &local, &map, &mut memo);
+        let old_fact = |a: AtomId, flags: &[u8]| is_old(a) && flags[a as usize - 1] & FACT != 0;
+        let gmap = self.translate_atom_records(&local, &map);
         let mut delta = GroundProgram::new();
         let mut defined_here: HashSet<AtomId> = HashSet::new();
         let mut redefined: Vec<AtomId> = Vec::new();
@@ -176,7 +139,7 @@ impl Control {
         for (i, r) in local.rules.iter().enumerate() {
             let heads: Vec<AtomId> = r.head.iter().map(|&h| map[h as usize]).collect();
             // A rule whose heads are all old facts adds nothing (the context's facts).
-            if !heads.is_empty() && heads.iter().all(|&h| old_fact(h)) {
+            if !heads.is_empty() && heads.iter().all(|&h| old_fact(h, &self.flags)) {
                 continue;
             }
             if let Some(&h) = heads
@@ -223,13 +186,17 @@ impl Control {
             delta.rules = keep_rules.rules;
             kept = keep_idx;
             defined_here = delta.rules.iter().flat_map(|r| r.head.to_vec()).collect();
+            for (a, &ga) in gatoms.iter().enumerate() {
+                if redefined.contains(&map[a + 1]) {
+                    self.session.forget_fact(ga);
+                }
+            }
         }
         for &h in &defined_here {
             self.flags[h as usize - 1] |= DEFINED;
         }
         for &s in &g.fact_syms {
-            let gs = translate(&g.symbols, s, &mut self.syms, &mut memo);
-            if let Some(a) = self.atom_of_sym(gs) {
+            if let Some(a) = self.atom_of_sym(s) {
                 if !redefined.contains(&a) {
                     self.flags[a as usize - 1] |= FACT;
                 }
@@ -309,7 +276,7 @@ impl Control {
                     .provenance
                     .origins(i)
                     .iter()
-                    .filter_map(|o| self.translate_origin(o, &g, gmap, &mut memo, stmt_offset))
+                    .filter_map(|o| self.translate_origin(o, gmap, stmt_offset))
                     .collect();
                 prov.push_rule(origins);
             }
@@ -327,7 +294,7 @@ impl Control {
                     origins: d
                         .origins
                         .iter()
-                        .filter_map(|o| self.translate_origin(o, &g, gmap, &mut memo, stmt_offset))
+                        .filter_map(|o| self.translate_origin(o, gmap, stmt_offset))
                         .collect(),
                     why,
                 });
@@ -383,15 +350,13 @@ impl Control {
         Span::new(file, 0, 0)
     }
 
-    /// Moves a later grounding's atom records into the Control's table (by symbol; auxiliary
-    /// atoms are new) and returns the local-to-global grounder atom map (`None` without
-    /// provenance).
+    /// Moves a later grounding's atom records into the Control's table (the session's grounder
+    /// atoms are the Control's: a record updates the atom's earlier one) and returns the
+    /// grounder atom map (`None` without provenance).
     fn translate_atom_records(
         &mut self,
-        g: &Grounding,
         local: &GroundProgram,
         map: &[AtomId],
-        memo: &mut [u32],
     ) -> Option<Vec<GAtom>> {
         if !self.config.provenance || local.provenance.atoms.is_empty() {
             return None;
@@ -403,36 +368,27 @@ impl Control {
             } else {
                 map[r.aspif as usize]
             };
-            let sym = r
-                .sym
-                .map(|s| translate(&g.symbols, SymId(s), &mut self.syms, memo).0);
-            let known = sym
-                .filter(|&s| !is_internal(&self.syms, SymId(s)))
-                .and_then(|s| self.gatom_of_sym.get(&s).copied());
-            gmap[i + 1] = match known {
-                Some(ga) => {
-                    let old = &mut self.gatoms[ga as usize - 1];
+            match self.gatoms.get_mut(i) {
+                Some(old) => {
                     if r.status != AtomStatus::False && old.status != AtomStatus::Fact {
                         old.status = r.status;
                     }
                     if aspif != 0 {
                         old.aspif = aspif;
                     }
-                    ga
                 }
                 None => {
                     self.gatoms.push(AtomRecord {
-                        sym,
+                        sym: r.sym,
                         status: r.status,
                         aspif,
                     });
-                    let ga = self.gatoms.len() as GAtom;
-                    if let Some(s) = sym {
-                        self.gatom_of_sym.insert(s, ga);
+                    if let Some(s) = r.sym {
+                        self.gatom_of_sym.insert(s, i as GAtom + 1);
                     }
-                    ga
                 }
-            };
+            }
+            gmap[i + 1] = i as GAtom + 1;
         }
         Some(gmap)
     }
@@ -443,26 +399,17 @@ impl Control {
     fn translate_origin(
         &mut self,
         o: &ground::program::Origin,
-        g: &Grounding,
         gmap: &[GAtom],
-        memo: &mut [u32],
         offset: u32,
     ) -> Option<ground::program::Origin> {
         let n = self.stmts.len() as u32;
-        let mut bind = |b: &[(u32, u32)], syms: &mut Symbols| -> Vec<(u32, u32)> {
-            b.iter()
-                .map(|&(name, value)| {
-                    let text = g.symbols.names.resolve(crate::base::intern::Sym(name));
-                    let name = syms.names.intern(text).0;
-                    (name, translate(&g.symbols, SymId(value), syms, memo).0)
-                })
-                .collect()
-        };
+        // (Bindings are ids of the Control's table already.)
+        let bind = |b: &[(u32, u32)]| -> Vec<(u32, u32)> { b.to_vec() };
         let rule = match &o.rule {
             RuleOrigin::Statement { stmt, bindings } if stmt + offset < n => {
                 RuleOrigin::Statement {
                     stmt: stmt + offset,
-                    bindings: bind(bindings, &mut self.syms),
+                    bindings: bind(bindings),
                 }
             }
             RuleOrigin::Auxiliary {
@@ -472,7 +419,7 @@ impl Control {
             } if of_stmt + offset < n => RuleOrigin::Auxiliary {
                 of_stmt: of_stmt + offset,
                 kind: *kind,
-                bindings: bind(bindings, &mut self.syms),
+                bindings: bind(bindings),
             },
             RuleOrigin::Complement => RuleOrigin::Complement,
             _ => return None,
@@ -512,26 +459,11 @@ fn is_internal(syms: &Symbols, s: SymId) -> bool {
     }
 }
 
-/// Copies symbol `s` of table `from` into `to` (memoised by local id).
-fn translate(from: &Symbols, s: SymId, to: &mut Symbols, memo: &mut [u32]) -> SymId {
-    if memo[s.0 as usize] != u32::MAX {
-        return SymId(memo[s.0 as usize]);
+/// Records that grounder atom `ga` is the Control's atom `a`.
+fn set_gatom(table: &mut Vec<AtomId>, ga: AtomId, a: AtomId) {
+    let i = ga as usize;
+    if table.len() <= i {
+        table.resize(i + 1, 0);
     }
-    use crate::ground::symbol::SymData;
-    let out = match from.get(s) {
-        SymData::Inf => to.inf(),
-        SymData::Sup => to.sup(),
-        SymData::Num(n) => to.int(n),
-        SymData::Str(x) => to.string(from.names.resolve(x)),
-        SymData::Fun { name, neg, .. } => {
-            let args: Vec<SymId> = from
-                .args(s)
-                .iter()
-                .map(|&a| translate(from, a, to, memo))
-                .collect();
-            to.fun_str(from.names.resolve(name), neg, &args)
-        }
-    };
-    memo[s.0 as usize] = out.0;
-    out
+    table[i] = a;
 }

@@ -23,10 +23,11 @@
 //! Multi-shot solving: `#program name(params).` splits the statements into parts (`base`
 //! before any directive, in each file); [`Control::ground`] instantiates parts with their
 //! parameters bound, on top of everything grounded before. Earlier parts are never
-//! re-instantiated: a new part is grounded against a context made of the atoms derived earlier
-//! (facts as facts, the other atoms as free externals), its atoms are matched to the earlier
-//! ones by symbol, new atoms are numbered after the old ones, and only the new ground rules
-//! reach the solver.
+//! re-instantiated: one grounder state lives in the Control (`ground::incremental::Session`:
+//! the atoms, predicate domains and indexes of every grounding), a new part's statements join
+//! against it, its atoms are matched to the earlier ones by grounder atom, new atoms are
+//! numbered after the old ones, and only the new ground rules reach the solver, so a part
+//! costs what it adds.
 //!
 //! ```
 //! use lucent::control::{Control, ControlConfig, Part, Symbol, TruthValue};
@@ -309,6 +310,10 @@ pub struct Control {
     gatoms: Vec<AtomRecord>,
     /// Grounder atom of each symbol id in `gatoms`.
     gatom_of_sym: HashMap<u32, GAtom>,
+    /// The grounder's state across groundings (atoms, domains, indexes).
+    session: ground::incremental::Session,
+    /// The Control's atom of each of the session's grounder atoms (0: none).
+    ctl_of_gatom: Vec<AtomId>,
 }
 
 /// A statement of a grounded part (see [`Control::statement`]).
@@ -357,6 +362,8 @@ impl Control {
             stmts: Vec::new(),
             gatoms: Vec::new(),
             gatom_of_sym: HashMap::new(),
+            session: ground::incremental::Session::new(),
+            ctl_of_gatom: Vec::new(),
         }
     }
 
@@ -807,6 +814,22 @@ mod tests {
             .unwrap();
         ctl.ground(&[Part::base()]).unwrap();
         assert_eq!(answers(&mut ctl), ["q(2) q(3) r"]);
+    }
+
+    #[test]
+    fn a_later_part_shows_a_term_on_an_atom_of_an_earlier_one() {
+        // `#show x : p(k).` in part k reads p(k), grounded (and numbered) by `base`.
+        let mut ctl = Control::new(ControlConfig::default());
+        ctl.add(
+            "s",
+            "#program base. 1 { p(0..1) } 1. #program check(k). #show p/1. #show x : p(k).",
+        )
+        .unwrap();
+        ctl.ground(&[Part::base()]).unwrap();
+        assert_eq!(answers(&mut ctl), ["p(0)", "p(1)"]);
+        ctl.ground(&[Part::new("check", vec![Symbol::number(1)])])
+            .unwrap();
+        assert_eq!(answers(&mut ctl), ["p(0)", "p(1) x"]);
     }
 
     #[test]

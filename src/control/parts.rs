@@ -2,8 +2,8 @@
 //! `#program name(params).` parts (`base` before any directive, per file; an included file's
 //! parts do not leak), `#include <incmode>.` taken out, constants evaluated (`-c` before
 //! `#const`), and ground requests grouped (parts without parameters together, then each group of
-//! parts whose parameter bindings agree) and handed to `ground::ground` with the context of
-//! earlier groundings (see `context`).
+//! parts whose parameter bindings agree) and handed to the Control's grounding session
+//! (`ground::incremental`), which continues from the earlier groundings (see `context`).
 //!
 //! Invariant: a part instance is grounded at most once; a failed grounding leaves the part's
 //! statements where they were.
@@ -322,9 +322,6 @@ impl Control {
             }
         }
         let own = statements.len();
-        if !first {
-            self.context(&mut statements);
-        }
         let program = Program {
             dialect: self.dialect.unwrap_or_default(),
             statements,
@@ -338,7 +335,11 @@ impl Control {
             provenance: self.config.provenance,
             message_limit: Some(self.config.message_limit),
         };
-        let mut grounding = ground::ground(&program, Some(&self.sources), &gconfig);
+        let syms = std::mem::take(&mut self.syms);
+        let mut grounding = self
+            .session
+            .ground(&program, Some(&self.sources), &gconfig, syms);
+        self.syms = std::mem::take(&mut grounding.symbols);
         for &k in &self.config.disabled_warnings {
             grounding.diagnostics.disable(k);
         }

@@ -256,23 +256,6 @@ impl Symbol {
             kind,
         }
     }
-
-    /// The symbol as a syntax-tree atom, for functions and constants.
-    pub(crate) fn to_atom(&self) -> Option<ast::SymbolicAtom> {
-        match self {
-            Symbol::Function {
-                name,
-                args,
-                negative,
-            } if !name.is_empty() => Some(ast::SymbolicAtom {
-                span: Default::default(),
-                negated: *negative,
-                name: name.clone(),
-                args: vec![args.iter().map(Symbol::to_term).collect()],
-            }),
-            _ => None,
-        }
-    }
 }
 
 impl Ord for Symbol {

@@ -19,6 +19,7 @@ pub mod rewrite;
 pub mod sparc;
 pub mod instantiate;
 pub mod simplify;
+pub mod incremental;
 pub mod text;
 pub mod reference;
 

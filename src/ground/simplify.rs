@@ -48,7 +48,19 @@ pub struct Finished {
     pub atom_syms: Vec<Option<SymId>>,
     /// Symbol of every fact atom (also those simplified away from bodies).
     pub fact_syms: Vec<SymId>,
+    /// The grounder atom of each fact of `fact_syms`.
+    pub fact_atoms: Vec<AtomId>,
+    /// The grounder atom of each aspif atom (`atom_gatoms[a - 1]`).
+    pub atom_gatoms: Vec<AtomId>,
+    /// The `prefer(l1, l2)` facts among the atoms this call decided (multi-shot: later calls
+    /// pair them with their own CR rules).
+    pub prefer_atoms: Vec<AtomId>,
 }
+
+/// Multi-shot ([`finish_after`]): the atom has an aspif number from an earlier grounding.
+pub const NUMBERED: u8 = 1;
+/// Multi-shot ([`finish_after`]): an earlier grounding reported the atom as a fact.
+pub const KNOWN_FACT: u8 = 2;
 
 /// The two passes that build [`Occurrences`]: count, then fill.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -111,7 +123,24 @@ impl Occurrences {
 
 /// Adds `:- a, -a.` for complementary atoms, then simplifies and numbers.
 pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
-    add_classical_constraints(g);
+    finish_after(g, prog, &[], &[])
+}
+
+/// [`finish`] for a later grounding of a multi-shot session: `before[a]` holds the flags
+/// ([`NUMBERED`], [`KNOWN_FACT`]) of grounder atom `a` from earlier groundings (missing: 0), and
+/// `prefer_before` the `prefer` facts they decided. A numbered atom is *frozen*: earlier
+/// groundings gave it its number and rules, so it is never made false here (it is possible or a
+/// fact), it gets a number only when it occurs, and it is neither output nor reported as a fact
+/// again (unless it became one). Only the atoms that are not frozen are visited for outputs,
+/// facts and complementary pairs, so the work follows what this grounding added.
+pub fn finish_after(
+    g: &mut Grounder<'_>,
+    prog: &Compiled,
+    before: &[u8],
+    prefer_before: &[AtomId],
+) -> Finished {
+    let frozen = |a: usize| before.get(a).is_some_and(|&f| f & NUMBERED != 0);
+    add_classical_constraints(g, prog, &frozen);
     let n = g.atoms.len();
     let mut status: Vec<Status> = g
         .atoms
@@ -128,11 +157,17 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     for &(a, _) in &g.externals {
         external[a as usize] = true;
     }
+    // What propagation may not make false: externals and frozen atoms.
+    let keep: Vec<bool> = if before.is_empty() {
+        external.clone()
+    } else {
+        (0..=n).map(|a| external[a] || frozen(a)).collect()
+    };
     // With provenance: why each dead rule died.
     let prov = g.provenance;
     let mut why: Vec<Option<DeadReason>> = Vec::new();
     let (dead, killed_contradictory) =
-        propagate(g, &external, &mut status, true, prov.then_some(&mut why));
+        propagate(g, &keep, &mut status, true, prov.then_some(&mut why));
     // What gringo would still find possible: it keeps rules with contradictory bodies, so atoms
     // only they derive stay in its minimize statements (clingo then reports an optimum of 0
     // where a dropped statement would make the answer plain SATISFIABLE).
@@ -149,7 +184,7 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
                     }
                 })
                 .collect();
-            propagate(g, &external, &mut st, false, None);
+            propagate(g, &keep, &mut st, false, None);
             st
         });
     let truth = |l: Lit, status: &[Status]| -> Option<bool> {
@@ -483,6 +518,9 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         prog.show.signatures.contains(p)
     };
     for a in 1..=n {
+        if frozen(a) {
+            continue;
+        }
         let info = g.atoms[a - 1];
         if info.sym.is_some()
             && status[a - 1] != Status::False
@@ -492,17 +530,42 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             used[a] = true;
         }
     }
+    // Frozen atoms in conditions of shows, heuristics and edges, and projected ones, are
+    // possible (a later part may show an atom of an earlier one).
+    if !before.is_empty() {
+        let mut mark = |l: Lit| {
+            let a = l.unsigned_abs() as usize;
+            if frozen(a) {
+                used[a] = true;
+            }
+        };
+        for (_, cond) in &g.shows {
+            cond.iter().for_each(|&l| mark(l));
+        }
+        for h in &g.heuristics {
+            mark(h.atom as Lit);
+            h.condition.iter().for_each(|&l| mark(l));
+        }
+        for e in &g.edges {
+            e.condition.iter().for_each(|&l| mark(l));
+        }
+        for &a in &g.projections {
+            mark(a as Lit);
+        }
+    }
     // Numbering as gringo's output does it: atoms in order of first occurrence in the rules
     // (each rule's heads before its body), then those only in minimize statements, externals
     // and shown atoms, in creation order. The solver's initial variable order follows it.
     let mut number = vec![0u32; n + 1];
     let mut atom_syms: Vec<Option<SymId>> = Vec::new();
+    let mut atom_gatoms: Vec<AtomId> = Vec::new();
     let mut next = 0u32;
     let mut assign = |a: usize, number: &mut Vec<u32>| {
         if number[a] == 0 {
             next += 1;
             number[a] = next;
             atom_syms.push(g.atoms[a - 1].sym);
+            atom_gatoms.push(a as AtomId);
         }
     };
     for r in &rules {
@@ -587,11 +650,21 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         .collect();
     // Outputs: shown atoms, facts with an empty condition.
     let mut fact_syms = Vec::new();
+    let mut fact_atoms = Vec::new();
     for a in 1..=n {
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };
+        if frozen(a) {
+            // Output earlier; a fact only when it became one now.
+            if status[a - 1] == Status::Fact && before[a] & KNOWN_FACT == 0 {
+                fact_syms.push(sym);
+                fact_atoms.push(a as AtomId);
+            }
+            continue;
+        }
         if status[a - 1] == Status::Fact {
             fact_syms.push(sym);
+            fact_atoms.push(a as AtomId);
         }
         if info.in_domain && status[a - 1] != Status::False && shown_pred(g, info.pred) {
             let condition = if status[a - 1] == Status::Fact {
@@ -689,8 +762,10 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
             });
         }
     }
-    // prefer(l1, l2) facts between labels of CR rules.
-    for a in 1..=n {
+    // prefer(l1, l2) facts between labels of CR rules (those of earlier groundings first).
+    let mut prefer_atoms = Vec::new();
+    let fresh = (1..=n).filter(|&a| !frozen(a) && status[a - 1] == Status::Fact);
+    for a in prefer_before.iter().map(|&a| a as usize).chain(fresh) {
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };
         if status[a - 1] != Status::Fact {
@@ -706,6 +781,9 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         if args.len() != 2 || !prefer {
             continue;
         }
+        if !frozen(a) {
+            prefer_atoms.push(a as AtomId);
+        }
         let (l1, l2) = (g.syms.show(args[0]), g.syms.show(args[1]));
         for better in out.cr_rules.iter().filter(|c| c.label == l1) {
             for worse in out.cr_rules.iter().filter(|c| c.label == l2) {
@@ -720,6 +798,9 @@ pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
         program: out,
         atom_syms,
         fact_syms,
+        fact_atoms,
+        atom_gatoms,
+        prefer_atoms,
     }
 }
 
@@ -940,25 +1021,64 @@ fn new_aux(g: &mut Grounder<'_>, status: &mut Vec<Status>) -> AtomId {
     a
 }
 
-/// `:- a, -a.` for every atom `-a` whose complement can be derived.
-fn add_classical_constraints(g: &mut Grounder<'_>) {
+/// `:- a, -a.` for every atom `-a` whose complement can be derived (multi-shot: for the pairs
+/// with an atom that is not `frozen`, the others had theirs in an earlier grounding).
+fn add_classical_constraints(
+    g: &mut Grounder<'_>,
+    prog: &Compiled,
+    frozen: &dyn Fn(usize) -> bool,
+) {
     let n = g.atoms.len();
     let mut extra = Vec::new();
     let mut removed = Vec::new();
-    for a in 1..=n {
-        let info = g.atoms[a - 1];
+    // Multi-shot: positive predicates with a classically negated twin, whose new atoms may
+    // complete a pair with a frozen negative atom.
+    let twins: Vec<bool> = if g.old_atoms == 0 {
+        Vec::new()
+    } else {
+        let negs: hashbrown::HashSet<(crate::base::intern::Sym, u32)> = prog
+            .preds
+            .iter()
+            .filter(|p| p.neg)
+            .map(|p| (p.name, p.arity))
+            .collect();
+        prog.preds
+            .iter()
+            .map(|p| !p.neg && negs.contains(&(p.name, p.arity)))
+            .collect()
+    };
+    for x in 1..=n {
+        if frozen(x) {
+            continue;
+        }
+        let info = g.atoms[x - 1];
         let Some(sym) = info.sym else { continue };
         if !info.in_domain {
             continue;
         }
-        let super::symbol::SymData::Fun { neg: true, .. } = g.syms.get(sym) else {
+        let super::symbol::SymData::Fun { neg, .. } = g.syms.get(sym) else {
             continue;
         };
-        let Some(pos) = g.syms.flip_sign(sym) else {
+        if !neg && !twins.get(info.pred as usize).copied().unwrap_or(false) {
+            continue;
+        }
+        let Some(other) = g.syms.flip_sign(sym) else {
             continue;
         };
-        let Some(b) = g.find_atom(pos) else { continue };
-        if !g.atoms[b as usize - 1].in_domain {
+        let Some(y) = g.find_atom(other) else {
+            continue;
+        };
+        // From the positive side only the pairs whose negative atom is frozen (the others
+        // are found from their negative side).
+        if !neg && !frozen(y as usize) {
+            continue;
+        }
+        let (a, b) = if neg {
+            (x, y)
+        } else {
+            (y as usize, x as AtomId)
+        };
+        if !g.atoms[b as usize - 1].in_domain || !g.atoms[a - 1].in_domain {
             continue;
         }
         let mut body = Vec::new();

@@ -218,6 +218,35 @@ pub struct Grounder<'a> {
     naive: bool,
     /// Computing a naive component's domain: aggregates over its predicates are assumed true.
     optimistic: bool,
+    /// Multi-shot: atoms `1..=old_atoms` existed before this grounding (0 for one-shot).
+    pub old_atoms: usize,
+    /// Predicates some statement of this or an earlier grounding heads (or `#defined`).
+    defined: Vec<bool>,
+}
+
+/// What a [`Grounder`] keeps between the groundings of one multi-shot session (see
+/// `ground::incremental`): the atoms, their symbol index, and the predicate domains with their
+/// indexes, so that a later grounding joins against them instead of rebuilding them.
+#[derive(Default)]
+pub struct State {
+    atoms: Vec<AtomInfo>,
+    sym_atom: Vec<AtomId>,
+    domains: Vec<Domain>,
+    defined: Vec<bool>,
+}
+
+impl State {
+    /// Number of atoms so far.
+    pub fn num_atoms(&self) -> usize {
+        self.atoms.len()
+    }
+
+    /// Atom `a` is not certainly true after all (its rules were withdrawn).
+    pub fn clear_fact(&mut self, a: AtomId) {
+        if let Some(info) = self.atoms.get_mut((a as usize).wrapping_sub(1)) {
+            info.fact = false;
+        }
+    }
 }
 
 /// A join continuation.
@@ -370,7 +399,55 @@ impl<'a> Grounder<'a> {
             since_check: 0,
             naive: false,
             optimistic: false,
+            old_atoms: 0,
+            defined: Vec::new(),
         }
+    }
+
+    /// A grounder that continues `state` (the atoms and domains of earlier groundings; their
+    /// predicates keep their ids, new ones are numbered after them), over `syms`, the table
+    /// those groundings used. Rules, directives and provenance start empty.
+    #[allow(clippy::too_many_arguments)]
+    pub fn resume(
+        state: State,
+        syms: Symbols,
+        num_preds: usize,
+        diags: &'a mut Diagnostics,
+        sources: Option<&'a SourceMap>,
+        provenance: bool,
+        limits: Limits,
+    ) -> Grounder<'a> {
+        let mut g = Grounder::new(syms, 0, diags, sources, provenance, limits);
+        g.atoms = state.atoms;
+        g.sym_atom = state.sym_atom;
+        g.domains = state.domains;
+        g.defined = state.defined;
+        g.domains
+            .resize_with(num_preds.max(g.domains.len()), Domain::default);
+        g.old_atoms = g.atoms.len();
+        g
+    }
+
+    /// The state to continue from at the next grounding (the grounder's atoms, domains and
+    /// indexes move out; its symbols stay in `syms`).
+    pub fn suspend(&mut self) -> State {
+        State {
+            atoms: std::mem::take(&mut self.atoms),
+            sym_atom: std::mem::take(&mut self.sym_atom),
+            domains: std::mem::take(&mut self.domains),
+            defined: std::mem::take(&mut self.defined),
+        }
+    }
+
+    /// Marks atom `a` true for good (a later grounding removes it from bodies).
+    pub fn set_fact(&mut self, a: AtomId) {
+        self.atoms[a as usize - 1].fact = true;
+    }
+
+    /// Puts atom `a` into its predicate's domain (an atom a later grounding must be able to
+    /// match).
+    pub fn put_in_domain(&mut self, a: AtomId) {
+        self.derive(a);
     }
 
     fn snippet(&self, span: Span) -> String {

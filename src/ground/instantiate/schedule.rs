@@ -73,9 +73,9 @@ impl Grounder<'_> {
         // Statements still to ground per predicate: a predicate is complete once all are done.
         let mut pending: Vec<u32> = providers.iter().map(|v| v.len() as u32).collect();
         for (d, &left) in self.domains.iter_mut().zip(&pending) {
-            if left == 0 {
-                d.complete = true;
-            }
+            // (Multi-shot: a predicate of an earlier grounding that this one's statements head
+            // is open again until they are grounded.)
+            d.complete = left == 0;
         }
         let finished = |g: &mut Self, si: usize, pending: &mut Vec<u32>| {
             for &p in &heads[si] {
@@ -344,7 +344,9 @@ impl Grounder<'_> {
     /// gringo's `atom does not occur in any rule head` for positive body atoms of predicates
     /// that nothing defines.
     pub(super) fn warn_undefined(&mut self, prog: &Compiled, heads: &[Vec<PredId>]) {
-        let mut defined = vec![false; prog.preds.len()];
+        // Predicates an earlier grounding defined count as defined (multi-shot).
+        let mut defined = std::mem::take(&mut self.defined);
+        defined.resize(prog.preds.len().max(defined.len()), false);
         for h in heads {
             for &p in h {
                 defined[p as usize] = true;
@@ -380,6 +382,7 @@ impl Grounder<'_> {
                 }
             }
         }
+        self.defined = defined;
     }
 }
 

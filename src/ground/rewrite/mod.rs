@@ -437,6 +437,23 @@ impl<'a> Rewriter<'a> {
         }
     }
 
+    /// Multi-shot: continues the predicate table of an earlier rewriting (predicates keep their
+    /// ids) and its count of projection predicates (a later `#projN` is another predicate).
+    pub fn resume(&mut self, preds: Vec<Pred>, projections: u32) {
+        self.pred_map = preds
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (p.clone(), i as PredId))
+            .collect();
+        self.out.preds = preds;
+        self.projections = projections;
+    }
+
+    /// Projection predicates made so far (see [`Rewriter::resume`]).
+    pub fn projections(&self) -> u32 {
+        self.projections
+    }
+
     /// The id of a predicate signature.
     pub fn pred(&mut self, name: &str, arity: u32, neg: bool) -> PredId {
         let p = Pred {

@@ -1,0 +1,181 @@
+//! Multi-shot grounding (gringo's incremental grounding): a [`Session`] keeps what one grounding
+//! leaves for the next (the predicate table, the grounder's atoms, their predicate domains with
+//! their indexes, and which atoms earlier groundings numbered or found true), so that grounding
+//! a later program part joins its statements against the existing domains and costs what the
+//! part adds, not what was grounded before.
+//!
+//! Invariants:
+//! - The first grounding of a session is exactly [`super::ground`]'s (same atoms, numbering,
+//!   output); each later one numbers only the atoms that occur in its own output, from 1,
+//!   and [`Session::last_gatoms`] maps those numbers to the session's grounder atoms, which
+//!   never change.
+//! - An atom an earlier grounding numbered is *frozen*: it stays in its domain, is possible or
+//!   a fact, and later groundings never make it false (`simplify::finish_after`).
+//! - Grounder-made `#projN` predicates are numbered across the session (a later part's
+//!   `#proj1` is another predicate than an earlier one's).
+//! - A grounding that fails in rewriting leaves the session as it was; one that stops during
+//!   instantiation (size or time limit, unsupported construct) spends it: later groundings
+//!   report an error.
+
+use crate::base::{Diagnostic, Diagnostics, SourceMap};
+use crate::syntax::ast;
+
+use super::instantiate::{self, AtomId, Grounder, Limits};
+use super::rewrite::{self, Pred};
+use super::simplify::{self, KNOWN_FACT, NUMBERED};
+use super::symbol::Symbols;
+use super::{GroundConfig, GroundProgram, Grounding, StopReason};
+
+/// The grounder's state across the groundings of one multi-shot program.
+#[derive(Default)]
+pub struct Session {
+    /// The rewriter's predicate table (predicates keep their ids).
+    preds: Vec<Pred>,
+    /// Projection predicates made so far.
+    projections: u32,
+    /// Atoms and domains.
+    state: instantiate::State,
+    /// Per grounder atom `a` at `flags[a]`: [`NUMBERED`], [`KNOWN_FACT`].
+    flags: Vec<u8>,
+    /// `prefer(l1, l2)` facts so far.
+    prefer: Vec<AtomId>,
+    /// The grounder atom of each aspif atom of the last grounding (`[a - 1]`).
+    last_gatoms: Vec<AtomId>,
+    /// Set when a grounding stopped half-way: the state is no longer consistent.
+    spent: bool,
+    /// Groundings done.
+    groundings: usize,
+}
+
+impl Session {
+    /// A session with nothing grounded.
+    pub fn new() -> Session {
+        Session::default()
+    }
+
+    /// The session's grounder atom of aspif atom `a` of the last grounding.
+    pub fn last_gatoms(&self) -> &[AtomId] {
+        &self.last_gatoms
+    }
+
+    /// Grounder atom `a` is no fact: its rules did not reach the program (the caller dropped
+    /// them as a redefinition).
+    pub fn forget_fact(&mut self, a: AtomId) {
+        if let Some(f) = self.flags.get_mut(a as usize) {
+            *f &= !KNOWN_FACT;
+        }
+        self.state.clear_fact(a);
+    }
+
+    /// Grounds `program` on top of the earlier groundings, over `syms`, the table they used
+    /// (it comes back in [`Grounding::symbols`]). Rules, outputs, externals and provenance of
+    /// the result are this grounding's only; statement ids count its own statements.
+    pub fn ground(
+        &mut self,
+        program: &ast::Program,
+        sources: Option<&SourceMap>,
+        config: &GroundConfig,
+        mut syms: Symbols,
+    ) -> Grounding {
+        let mut diags = Diagnostics::new(config.message_limit.unwrap_or(20));
+        let empty = |diags, syms, statement_spans| Grounding {
+            program: GroundProgram::new(),
+            diagnostics: diags,
+            atom_syms: Vec::new(),
+            fact_syms: Vec::new(),
+            statement_spans,
+            symbols: syms,
+            stopped: None,
+        };
+        if self.spent {
+            let span = program
+                .statements
+                .first()
+                .map(|s| s.span)
+                .unwrap_or_default();
+            diags.push(Diagnostic::error(
+                span,
+                "grounding cannot continue: an earlier grounding of this program stopped",
+            ));
+            return empty(diags, syms, Vec::new());
+        }
+        let (compiled, projections) = {
+            let mut rw = rewrite::Rewriter::new(&mut syms, &mut diags, sources);
+            rw.resume(self.preds.clone(), self.projections);
+            rw.program(program, &config.consts);
+            let p = rw.projections();
+            (rw.out, p)
+        };
+        let statement_spans = compiled.stmt_spans.clone();
+        if diags.has_errors() {
+            return empty(diags, syms, statement_spans);
+        }
+        let limits = Limits {
+            max_size: config.max_size,
+            deadline: config.deadline,
+        };
+        let state = std::mem::take(&mut self.state);
+        let mut g = Grounder::resume(
+            state,
+            syms,
+            compiled.preds.len(),
+            &mut diags,
+            sources,
+            config.provenance,
+            limits,
+        );
+        g.run(&compiled);
+        g.release_dedup();
+        let stopped = g.stopped;
+        let fin = simplify::finish_after(&mut g, &compiled, &self.flags, &self.prefer);
+        // What the next grounding starts from: the atoms this one numbered are frozen (and in
+        // their domains, as the one-shot context of facts and externals had them), its facts
+        // are facts for good.
+        self.flags.resize(g.atoms.len() + 1, 0);
+        for &a in &fin.atom_gatoms {
+            self.flags[a as usize] |= NUMBERED;
+            g.put_in_domain(a);
+        }
+        for &a in &fin.fact_atoms {
+            self.flags[a as usize] |= KNOWN_FACT;
+            g.set_fact(a);
+        }
+        self.prefer.extend_from_slice(&fin.prefer_atoms);
+        self.state = g.suspend();
+        let syms = std::mem::take(&mut g.syms);
+        drop(g);
+        self.preds = compiled.preds;
+        self.projections = projections;
+        self.groundings += 1;
+        if let Some(reason) = stopped {
+            let span = statement_spans.first().copied().unwrap_or_default();
+            diags.push(Diagnostic::error(
+                span,
+                match reason {
+                    StopReason::SizeLimit => {
+                        "grounding stopped: the size limit on ground rules and atoms was exceeded"
+                    }
+                    StopReason::Deadline => "grounding stopped: the time limit was reached",
+                },
+            ));
+        }
+        let error = diags.has_errors();
+        if error {
+            self.spent = true;
+        }
+        self.last_gatoms = if error { Vec::new() } else { fin.atom_gatoms };
+        Grounding {
+            program: if error {
+                GroundProgram::new()
+            } else {
+                fin.program
+            },
+            diagnostics: diags,
+            atom_syms: if error { Vec::new() } else { fin.atom_syms },
+            fact_syms: fin.fact_syms,
+            statement_spans,
+            symbols: syms,
+            stopped,
+        }
+    }
+}
