@@ -24,7 +24,7 @@ use super::instantiate::{self, AtomId, Grounder, Limits};
 use super::rewrite::{self, Pred};
 use super::simplify::{self, KNOWN_FACT, NUMBERED};
 use super::symbol::Symbols;
-use super::{GroundConfig, GroundProgram, Grounding, StopReason};
+use super::{GroundConfig, GroundProgram, Grounding};
 
 /// The grounder's state across the groundings of one multi-shot program.
 #[derive(Default)]
@@ -148,16 +148,7 @@ impl Session {
         self.projections = projections;
         self.groundings += 1;
         if let Some(reason) = stopped {
-            let span = statement_spans.first().copied().unwrap_or_default();
-            diags.push(Diagnostic::error(
-                span,
-                match reason {
-                    StopReason::SizeLimit => {
-                        "grounding stopped: the size limit on ground rules and atoms was exceeded"
-                    }
-                    StopReason::Deadline => "grounding stopped: the time limit was reached",
-                },
-            ));
+            diags.push(super::stopped_error(reason, &statement_spans));
         }
         let error = diags.has_errors();
         if error {

@@ -181,16 +181,7 @@ pub fn ground(
     let syms = std::mem::take(&mut g.syms);
     drop(g);
     if let Some(reason) = stopped {
-        let span = statement_spans.first().copied().unwrap_or_default();
-        diags.push(Diagnostic::error(
-            span,
-            match reason {
-                StopReason::SizeLimit => {
-                    "grounding stopped: the size limit on ground rules and atoms was exceeded"
-                }
-                StopReason::Deadline => "grounding stopped: the time limit was reached",
-            },
-        ));
+        diags.push(stopped_error(reason, &statement_spans));
     }
     let error = diags.has_errors();
     Grounding {
@@ -206,4 +197,19 @@ pub fn ground(
         symbols: syms,
         stopped,
     }
+}
+
+/// The error of a grounding that stopped early (size or time limit), placed at the program's
+/// first statement; one-shot and incremental grounding report it the same way.
+fn stopped_error(reason: StopReason, statement_spans: &[Span]) -> Diagnostic {
+    let span = statement_spans.first().copied().unwrap_or_default();
+    Diagnostic::error(
+        span,
+        match reason {
+            StopReason::SizeLimit => {
+                "grounding stopped: the size limit on ground rules and atoms was exceeded"
+            }
+            StopReason::Deadline => "grounding stopped: the time limit was reached",
+        },
+    )
 }
