@@ -81,9 +81,7 @@ impl<'a> Parser<'a> {
         while self.at(T::Bar) || self.at(T::Semi) || self.at(T::Comma) {
             self.bump();
             let start = self.tok.start;
-            let mut lits = Vec::with_capacity(1);
-            self.literal(Ctx::Single, &mut lits)?;
-            let literal = lits.remove(0);
+            let literal = self.single_literal()?;
             elements.push(self.head_element(start, literal, true)?);
         }
         Ok((Head::Disjunction(elements), first_term))
@@ -131,15 +129,24 @@ impl<'a> Parser<'a> {
 
     /// `{ l : c ; ... }`, the braces included.
     pub(super) fn conditional_set(&mut self) -> PResult<Vec<ConditionalLiteral>> {
+        self.braced_elements(|p, start| {
+            let literal = p.single_literal()?;
+            p.head_element(start, literal, false)
+        })
+    }
+
+    /// `{ e ; ... }`, the braces included: the elements `element` reads, each called with the
+    /// offset its element starts at. Choices and both kinds of aggregates share this shape.
+    fn braced_elements<E>(
+        &mut self,
+        mut element: impl FnMut(&mut Self, u32) -> PResult<E>,
+    ) -> PResult<Vec<E>> {
         self.expect(T::LBrace, &["{"])?;
         let mut elements = Vec::new();
         if !self.at(T::RBrace) {
             loop {
                 let start = self.tok.start;
-                let mut lits = Vec::with_capacity(1);
-                self.literal(Ctx::Single, &mut lits)?;
-                let literal = lits.remove(0);
-                elements.push(self.head_element(start, literal, false)?);
+                elements.push(element(self, start)?);
                 if !self.eat(T::Semi) {
                     break;
                 }
@@ -147,6 +154,36 @@ impl<'a> Parser<'a> {
         }
         self.expect(T::RBrace, &["}", ";"])?;
         Ok(elements)
+    }
+
+    /// The aggregate function keyword at the current token, consumed.
+    fn aggregate_keyword(&mut self) -> AggregateFunction {
+        let function = aggregate_function(self.tok.kind, self.cur()).expect("at an aggregate");
+        self.bump();
+        function
+    }
+
+    /// An aggregate element's tuple `t1, ..., tn`, empty when a `:` follows at once.
+    fn aggregate_tuple(&mut self) -> PResult<Vec<Term>> {
+        let mut terms = Vec::new();
+        if !self.at(T::Colon) {
+            loop {
+                terms.push(self.term()?);
+                if !self.eat(T::Comma) {
+                    break;
+                }
+            }
+        }
+        Ok(terms)
+    }
+
+    /// An aggregate element's optional `: condition`.
+    fn aggregate_condition(&mut self) -> PResult<Vec<Literal>> {
+        if self.eat(T::Colon) {
+            self.condition(true)
+        } else {
+            Ok(Vec::new())
+        }
     }
 
     /// An upper guard after `}`: `op term` or a bare term (meaning `<= term`).
@@ -175,43 +212,19 @@ impl<'a> Parser<'a> {
         lower: Option<Guard>,
     ) -> PResult<HeadAggregate> {
         self.enter()?;
-        let function = aggregate_function(self.tok.kind, self.cur()).expect("at an aggregate");
-        self.bump();
-        self.expect(T::LBrace, &["{"])?;
-        let mut elements = Vec::new();
-        if !self.at(T::RBrace) {
-            loop {
-                let el_start = self.tok.start;
-                let mut terms = Vec::new();
-                if !self.at(T::Colon) {
-                    loop {
-                        terms.push(self.term()?);
-                        if !self.eat(T::Comma) {
-                            break;
-                        }
-                    }
-                }
-                self.expect(T::Colon, &[":"])?;
-                let mut lits = Vec::with_capacity(1);
-                self.literal(Ctx::Single, &mut lits)?;
-                let literal = lits.remove(0);
-                let condition = if self.eat(T::Colon) {
-                    self.condition(true)?
-                } else {
-                    Vec::new()
-                };
-                elements.push(HeadAggregateElement {
-                    span: self.span_from(el_start),
-                    terms,
-                    literal,
-                    condition,
-                });
-                if !self.eat(T::Semi) {
-                    break;
-                }
-            }
-        }
-        self.expect(T::RBrace, &["}", ";"])?;
+        let function = self.aggregate_keyword();
+        let elements = self.braced_elements(|p, start| {
+            let terms = p.aggregate_tuple()?;
+            p.expect(T::Colon, &[":"])?;
+            let literal = p.single_literal()?;
+            let condition = p.aggregate_condition()?;
+            Ok(HeadAggregateElement {
+                span: p.span_from(start),
+                terms,
+                literal,
+                condition,
+            })
+        })?;
         let upper = self.upper_guard()?;
         self.leave();
         Ok(HeadAggregate {
@@ -339,38 +352,16 @@ impl<'a> Parser<'a> {
             let set = self.conditional_set()?;
             (AggregateFunction::Count, Vec::new(), set)
         } else {
-            let function = aggregate_function(self.tok.kind, self.cur()).expect("at an aggregate");
-            self.bump();
-            self.expect(T::LBrace, &["{"])?;
-            let mut elements = Vec::new();
-            if !self.at(T::RBrace) {
-                loop {
-                    let el_start = self.tok.start;
-                    let mut terms = Vec::new();
-                    if !self.at(T::Colon) {
-                        loop {
-                            terms.push(self.term()?);
-                            if !self.eat(T::Comma) {
-                                break;
-                            }
-                        }
-                    }
-                    let condition = if self.eat(T::Colon) {
-                        self.condition(true)?
-                    } else {
-                        Vec::new()
-                    };
-                    elements.push(BodyAggregateElement {
-                        span: self.span_from(el_start),
-                        terms,
-                        condition,
-                    });
-                    if !self.eat(T::Semi) {
-                        break;
-                    }
-                }
-            }
-            self.expect(T::RBrace, &["}", ";"])?;
+            let function = self.aggregate_keyword();
+            let elements = self.braced_elements(|p, start| {
+                let terms = p.aggregate_tuple()?;
+                let condition = p.aggregate_condition()?;
+                Ok(BodyAggregateElement {
+                    span: p.span_from(start),
+                    terms,
+                    condition,
+                })
+            })?;
             (function, elements, Vec::new())
         };
         let upper = self.upper_guard()?;
@@ -411,6 +402,14 @@ impl<'a> Parser<'a> {
         }
         let term = self.term()?;
         self.literal_tail(start, sign, term, ctx, out)
+    }
+
+    /// Exactly one literal, no comparison chain (a head element, a choice or head aggregate
+    /// element).
+    fn single_literal(&mut self) -> PResult<Literal> {
+        let mut lits = Vec::with_capacity(1);
+        self.literal(Ctx::Single, &mut lits)?;
+        Ok(lits.remove(0))
     }
 
     /// `#true`, `#false` or a SPARC sort atom `#s(t)`.
