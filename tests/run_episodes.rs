@@ -6,24 +6,19 @@
 //! `scripts/episodes.py` (docs/bench/episodes-2026-12-01.md).
 #![cfg(feature = "sim")]
 
-use lucent::action;
-use lucent::base::SourceMap;
 use lucent::plan::act::{run, Domain, RunConfig};
 use lucent::plan::history::History;
 use lucent::plan::tabletop::{act_config, random_goal, SimWorld};
 use lucent::sim::{generate, GenerateConfig, Preset};
 
+#[path = "support/plan.rs"]
+mod plan_support;
+
+/// KB_full (`domains/ra/kb_full.ald`).
 fn domain() -> Domain {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("domains/ra/kb_full.ald");
-    let mut sources = SourceMap::new();
-    let file = sources.add(
-        path.to_string_lossy().into_owned(),
-        std::fs::read_to_string(&path).unwrap(),
-    );
-    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
+    let (description, sources) = plan_support::load(plan_support::DOMAIN);
     Domain {
-        description: parsed.description,
+        description,
         sources,
     }
 }

@@ -10,26 +10,20 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use lucent::action;
-use lucent::base::SourceMap;
 use lucent::control::Symbol;
 use lucent::learn::surprise::classify;
 use lucent::learn::term::Literal;
 use lucent::plan::act::{run, Domain, Event, Percept, RunConfig, Seen, World};
 use lucent::plan::history::{Ending, History};
 
+#[path = "support/plan.rs"]
+mod plan_support;
+
+/// KB_full (`domains/ra/kb_full.ald`).
 fn domain() -> Domain {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("domains/ra/kb_full.ald");
-    let mut sources = SourceMap::new();
-    let file = sources.add(
-        path.to_string_lossy().into_owned(),
-        std::fs::read_to_string(&path).unwrap(),
-    );
-    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(!parsed.has_errors());
+    let (description, sources) = plan_support::load(plan_support::DOMAIN);
     Domain {
-        description: parsed.description,
+        description,
         sources,
     }
 }

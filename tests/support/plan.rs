@@ -5,10 +5,13 @@
 
 use std::path::Path;
 
-use lucent::action::{self, ast::Description};
+use lucent::action::ast::Description;
 use lucent::base::SourceMap;
 use lucent::control::Symbol;
 use lucent::plan::scene::add_statements;
+
+#[path = "ra_scenes.rs"]
+mod ra_scenes;
 
 /// The golden scenes of DOMAIN.md 4.5.
 pub const TABLETOP: &str = "domains/ra/scenes/tabletop_task.ald";
@@ -27,13 +30,7 @@ pub fn load(file: &str) -> (Description, SourceMap) {
     } else {
         root.join("domains/ra/scenes").join(file)
     };
-    let mut sources = SourceMap::new();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let id = sources.add(path.to_string_lossy().into_owned(), text);
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, id, &mut read);
-    assert!(!parsed.has_errors(), "{file}: {:?}", parsed.diagnostics);
-    (parsed.description, sources)
+    ra_scenes::load_at(&path, &std::fs::read_to_string(&path).unwrap())
 }
 
 /// KB_full with a scene (AL_d statements, e.g. `SceneFacts::to_ald`) and a goal statement
