@@ -10,6 +10,8 @@ use lucent::base::SourceMap;
 use lucent::control::Symbol;
 use lucent::plan::scene::add_statements;
 
+#[path = "cli.rs"]
+mod cli;
 #[path = "ra_scenes.rs"]
 mod ra_scenes;
 
@@ -50,13 +52,5 @@ pub fn actions(text: &[&str]) -> Vec<Symbol> {
 /// `lucent ARGS` in-process from the repository's root: exit code, stdout, stderr.
 pub fn lucent(args: &[&str]) -> (i32, String, String) {
     std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
-    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
-    let mut out = Vec::new();
-    let mut err = Vec::new();
-    let code = lucent::cli::run(&args, &mut std::io::empty(), &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
+    cli::lucent_in_process(args, "")
 }
