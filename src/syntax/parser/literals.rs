@@ -27,45 +27,17 @@ impl<'a> Parser<'a> {
             self.literal(Ctx::Single, &mut first)?;
         } else {
             let term = self.term()?;
-            if self.at(T::LBrace) {
-                let guard = Guard {
-                    op: CmpOp::Le,
-                    term,
-                };
-                return Ok((
-                    Head::Choice(Box::new(self.choice(start, Some(guard))?)),
-                    None,
-                ));
-            }
-            if self.at_aggregate() {
-                let guard = Guard {
-                    op: CmpOp::Le,
-                    term,
-                };
-                return Ok((
-                    Head::Aggregate(Box::new(self.head_aggregate(start, Some(guard))?)),
-                    None,
-                ));
-            }
-            if let Some(op) = cmp_op(self.tok.kind) {
-                let next = self.peek();
-                if next.kind == T::LBrace
-                    || aggregate_function(next.kind, self.word(next)).is_some()
-                {
-                    self.bump();
-                    let guard = Guard { op, term };
-                    if self.at(T::LBrace) {
-                        return Ok((
-                            Head::Choice(Box::new(self.choice(start, Some(guard))?)),
-                            None,
-                        ));
-                    }
-                    return Ok((
-                        Head::Aggregate(Box::new(self.head_aggregate(start, Some(guard))?)),
-                        None,
-                    ));
+            let term = match self.lower_guard(term) {
+                Ok(guard) => {
+                    let head = if self.at(T::LBrace) {
+                        Head::Choice(Box::new(self.choice(start, Some(guard))?))
+                    } else {
+                        Head::Aggregate(Box::new(self.head_aggregate(start, Some(guard))?))
+                    };
+                    return Ok((head, None));
                 }
-            }
+                Err(term) => term,
+            };
             // Only `label : head :+ body` needs the term back (as the label), and only when a
             // `:` follows an atom; copy it just then.
             if !self.at_cmp() && self.at(T::Colon) {
@@ -85,6 +57,26 @@ impl<'a> Parser<'a> {
             elements.push(self.head_element(start, literal, true)?);
         }
         Ok((Head::Disjunction(elements), first_term))
+    }
+
+    /// After a term: the lower guard it is when a choice or an aggregate follows (`t {`,
+    /// `t #count`: `t <=`; `t op {`, `t op #count`, the operator consumed); the term itself
+    /// otherwise.
+    fn lower_guard(&mut self, term: Term) -> Result<Guard, Term> {
+        if self.at(T::LBrace) || self.at_aggregate() {
+            return Ok(Guard {
+                op: CmpOp::Le,
+                term,
+            });
+        }
+        if let Some(op) = cmp_op(self.tok.kind) {
+            let next = self.peek();
+            if next.kind == T::LBrace || aggregate_function(next.kind, self.word(next)).is_some() {
+                self.bump();
+                return Ok(Guard { op, term });
+            }
+        }
+        Err(term)
     }
 
     /// True when the current token is a comparison operator.
@@ -259,48 +251,17 @@ impl<'a> Parser<'a> {
         let start = self.tok.start;
         let sign = self.sign()?;
         if self.at(T::LBrace) || self.at_aggregate() {
-            let aggregate = self.body_aggregate(start, None)?;
-            out.push(BodyLiteral::Aggregate {
-                sign,
-                aggregate: Box::new(aggregate),
-            });
-            self.body_end = AFTER_AGGREGATE;
-            return Ok(());
+            return self.body_aggregate_literal(start, sign, None, out);
         }
         let mut lits = Vec::with_capacity(1);
         if self.at(T::Hash) && (matches!(self.cur(), "#true" | "#false") || self.at_sort_name()) {
             self.atom_literal(start, sign, &mut lits)?;
         } else {
             let term = self.term()?;
-            if self.at(T::LBrace) || self.at_aggregate() {
-                let guard = Guard {
-                    op: CmpOp::Le,
-                    term,
-                };
-                let aggregate = self.body_aggregate(start, Some(guard))?;
-                out.push(BodyLiteral::Aggregate {
-                    sign,
-                    aggregate: Box::new(aggregate),
-                });
-                self.body_end = AFTER_AGGREGATE;
-                return Ok(());
-            }
-            if let Some(op) = cmp_op(self.tok.kind) {
-                let next = self.peek();
-                if next.kind == T::LBrace
-                    || aggregate_function(next.kind, self.word(next)).is_some()
-                {
-                    self.bump();
-                    let guard = Guard { op, term };
-                    let aggregate = self.body_aggregate(start, Some(guard))?;
-                    out.push(BodyLiteral::Aggregate {
-                        sign,
-                        aggregate: Box::new(aggregate),
-                    });
-                    self.body_end = AFTER_AGGREGATE;
-                    return Ok(());
-                }
-            }
+            let term = match self.lower_guard(term) {
+                Ok(guard) => return self.body_aggregate_literal(start, sign, Some(guard), out),
+                Err(term) => term,
+            };
             self.literal_tail(start, sign, term, Ctx::Chain, &mut lits)?;
         }
         if lits.len() == 1 && self.at(T::Colon) {
@@ -324,6 +285,23 @@ impl<'a> Parser<'a> {
             _ => &[],
         };
         out.extend(lits.into_iter().map(BodyLiteral::Literal));
+        Ok(())
+    }
+
+    /// A body aggregate with its sign, after its optional lower guard.
+    fn body_aggregate_literal(
+        &mut self,
+        start: u32,
+        sign: Sign,
+        lower: Option<Guard>,
+        out: &mut Vec<BodyLiteral>,
+    ) -> PResult<()> {
+        let aggregate = self.body_aggregate(start, lower)?;
+        out.push(BodyLiteral::Aggregate {
+            sign,
+            aggregate: Box::new(aggregate),
+        });
+        self.body_end = AFTER_AGGREGATE;
         Ok(())
     }
 
