@@ -14,14 +14,7 @@ use lucent::sim::{generate, GenerateConfig, Preset};
 #[path = "support/plan.rs"]
 mod plan_support;
 
-/// KB_full (`domains/ra/kb_full.ald`).
-fn domain() -> Domain {
-    let (description, sources) = plan_support::load(plan_support::DOMAIN);
-    Domain {
-        description,
-        sources,
-    }
-}
+use plan_support::domain;
 
 fn episode(domain: &Domain, preset: Preset, seed: u64) -> History {
     let scene = generate(&GenerateConfig::new(preset, seed)).unwrap();

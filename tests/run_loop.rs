@@ -13,20 +13,13 @@ use std::collections::{BTreeMap, BTreeSet};
 use lucent::control::Symbol;
 use lucent::learn::surprise::classify;
 use lucent::learn::term::Literal;
-use lucent::plan::act::{run, Domain, Event, Percept, RunConfig, Seen, World};
+use lucent::plan::act::{run, Event, Percept, RunConfig, Seen, World};
 use lucent::plan::history::{Ending, History};
 
 #[path = "support/plan.rs"]
 mod plan_support;
 
-/// KB_full (`domains/ra/kb_full.ald`).
-fn domain() -> Domain {
-    let (description, sources) = plan_support::load(plan_support::DOMAIN);
-    Domain {
-        description,
-        sources,
-    }
-}
+use plan_support::domain;
 
 fn sym(text: &str) -> Symbol {
     Symbol::parse(text).unwrap()

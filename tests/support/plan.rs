@@ -8,6 +8,7 @@ use std::path::Path;
 use lucent::action::ast::Description;
 use lucent::base::SourceMap;
 use lucent::control::Symbol;
+use lucent::plan::act::Domain;
 use lucent::plan::scene::add_statements;
 
 #[path = "cli.rs"]
@@ -33,6 +34,15 @@ pub fn load(file: &str) -> (Description, SourceMap) {
         root.join("domains/ra/scenes").join(file)
     };
     ra_scenes::load_at(&path, &std::fs::read_to_string(&path).unwrap())
+}
+
+/// KB_full as the sense-plan-act loop takes it.
+pub fn domain() -> Domain {
+    let (description, sources) = load(DOMAIN);
+    Domain {
+        description,
+        sources,
+    }
 }
 
 /// KB_full with a scene (AL_d statements, e.g. `SceneFacts::to_ald`) and a goal statement
