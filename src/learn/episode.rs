@@ -11,10 +11,10 @@
 //! applies in a trial's answer set (the learner acts on it).
 //!
 //! Two rules of ours keep an episode finite and informative: collection also ends after a
-//! stall, `stall_trials` consecutive trials that add no sample, or longer while a capped dataset
-//! waits for rare negatives (five mean gaps between them, `Collector::stall_window`); then a
-//! dataset whose positives reached the cap is learned from, causal laws first. It never exceeds
-//! `max_collect_trials`.
+//! stall, `stall_trials` consecutive trials that add no sample, or longer while a dataset waits
+//! for a rare class (five mean gaps between its samples, at most `stall_max`,
+//! `Collector::stall_window`); then a dataset whose positives reached the cap is learned from,
+//! causal laws first. It never exceeds `max_collect_trials`.
 //!
 //! Invariants: a run is a function of (seed, oracle, learner's initial knowledge, config); the
 //! only randomness is the run's generator and the ensemble's seeds derived from it.
@@ -87,6 +87,8 @@ pub struct LearnConfig {
     /// While a capped dataset still wants negatives, collection waits this many mean gaps
     /// between them before it ends (`Collector::stall_window`).
     pub stall_factor: f64,
+    /// The longest stall window (`Collector::stall_window`).
+    pub stall_max: usize,
     /// Hard bound on the trials of one collection.
     pub max_collect_trials: usize,
     /// The ensemble.
@@ -107,6 +109,7 @@ impl Default for LearnConfig {
             collect: CollectConfig::default(),
             stall_trials: 100,
             stall_factor: 5.0,
+            stall_max: 500,
             max_collect_trials: 5000,
             ensemble: EnsembleParams::default(),
             pools: Pools::h1(),
@@ -283,7 +286,8 @@ pub fn run(
         let mut t = 1;
         while collector.full().is_none()
             && t < config.max_collect_trials
-            && since_last < collector.stall_window(config.stall_trials, config.stall_factor)
+            && since_last
+                < collector.stall_window(config.stall_trials, config.stall_factor, config.stall_max)
         {
             let s = generate(&config.pools, ty, &mut rng);
             let (outcome, data) = trial(

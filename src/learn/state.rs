@@ -289,8 +289,10 @@ impl Collector {
     /// dataset kept 3 negatives, fewer than CART's `min_samples_leaf`, so no tree could split
     /// on `-in_hand(R1, O1)` and 85 of 100 learned `if above(O1, O3)` instead. A class never
     /// seen (CL negatives while every executable putdown surprises, before C2 is known) still
-    /// ends collection after `base`.
-    pub fn stall_window(&self, base: usize, factor: f64) -> usize {
+    /// ends collection after `base`. The window never exceeds `max` (a class seen twice in
+    /// thousands of trials, as the physics world's rare outcomes are, would otherwise hold an
+    /// episode for thousands more).
+    pub fn stall_window(&self, base: usize, factor: f64, max: usize) -> usize {
         let cap = self.cap();
         let mut window = base;
         for (i, d) in [&self.cl, &self.ec].into_iter().enumerate() {
@@ -308,7 +310,7 @@ impl Collector {
                 }
             }
         }
-        window
+        window.min(max.max(base))
     }
 
     /// Offers trial `trial` with its outcome; returns the datasets that took a sample.
@@ -544,7 +546,7 @@ mod tests {
         for t in 0..6 {
             c.offer(t, &outcome(false, true, true, false));
         }
-        assert_eq!(c.stall_window(100, 5.0), 100);
+        assert_eq!(c.stall_window(100, 5.0, 500), 100);
         for t in 6..50 {
             c.offer(t, &outcome(false, false, false, false));
         }
@@ -553,8 +555,8 @@ mod tests {
         assert_eq!(c.offered, 52);
         assert_eq!((c.positives_seen, c.negatives_seen), ([0, 6], [2, 2]));
         assert_eq!((c.ec.len(), c.ec.positives()), (8, 6));
-        assert_eq!(c.stall_window(100, 5.0), 130);
-        assert_eq!(c.stall_window(200, 5.0), 200);
+        assert_eq!(c.stall_window(100, 5.0, 500), 130);
+        assert_eq!(c.stall_window(200, 5.0, 500), 200);
         // A causal-law dataset capped without a negative ever seen keeps the base window (EC
         // has 4 samples and no positive: it wants none of the negatives it sees, 0 < 4 free
         // is false once it holds 4).
@@ -564,7 +566,7 @@ mod tests {
         }
         assert_eq!((d.positives_seen, d.negatives_seen), ([60, 0], [0, 60]));
         assert_eq!((d.cl.positives(), d.ec.len()), (6, 4));
-        assert_eq!(d.stall_window(100, 5.0), 100);
+        assert_eq!(d.stall_window(100, 5.0, 500), 100);
         // Rare positives: 2 causal-law surprises in 80 trials (the rest consistent). CL has
         // 2 positives (< 6) and 3 negatives: it wants positives, seen 2 in 80: 5 * 40 = 200.
         let mut e = Collector::new(config);
@@ -572,6 +574,7 @@ mod tests {
             e.offer(t, &outcome(t % 40 == 0, false, true, true));
         }
         assert_eq!((e.cl.len(), e.cl.positives()), (5, 2));
-        assert_eq!(e.stall_window(100, 5.0), 200);
+        assert_eq!(e.stall_window(100, 5.0, 500), 200);
+        assert_eq!(e.stall_window(100, 5.0, 150), 150, "at most max");
     }
 }
