@@ -6,8 +6,9 @@
 //! budget ends a run with its reason, that a plan blocked by a misreading makes the robot look
 //! again instead of giving up, that an action the current belief makes not executable is replanned
 //! instead of executed, that a look contradicting the expectation is confirmed by more looks (a
-//! single misreading outvoted, a repeated one believed), and that a recorded discrepancy is what
-//! the learner's surprise classification (DOMAIN.md 5.1) consumes.
+//! single misreading outvoted, a repeated one believed), that a putdown after which the next
+//! action was blocked is not repeated, and that a recorded discrepancy is what the learner's
+//! surprise classification (DOMAIN.md 5.1) consumes.
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -37,6 +38,9 @@ struct Blocks {
     phantom: Vec<(String, f64)>,
     /// Extra readings of one look: (actions executed before it, look, fluent, confidence).
     misread: Vec<(usize, u32, String, f64)>,
+    /// Occlusion the domain does not predict: (o, l, x) means that while `o` rests on `l`
+    /// every look sees `x` behind `o`.
+    hides: Vec<(String, String, String)>,
     looks: usize,
 }
 
@@ -52,6 +56,7 @@ impl Blocks {
             executed: 0,
             phantom: Vec::new(),
             misread: Vec::new(),
+            hides: Vec::new(),
             looks: 0,
         }
     }
@@ -91,6 +96,16 @@ impl World for Blocks {
                     fluent: sym(f),
                     value: true,
                     confidence: *c,
+                    exact: false,
+                });
+            }
+        }
+        for (o, l, x) in &self.hides {
+            if self.on.get(o) == Some(l) {
+                p.fluents.push(Seen {
+                    fluent: sym(&format!("relation(behind,{x},{o})")),
+                    value: true,
+                    confidence: 0.9,
                     exact: false,
                 });
             }
@@ -404,4 +419,27 @@ fn a_surprise_seen_once_is_no_discrepancy() {
         vec!["relation(on,c,a)".to_string()]
     );
     assert_eq!(h.plans[1].reason, "discrepancy at step 0");
+}
+
+#[test]
+fn a_putdown_that_hid_the_next_object_is_not_repeated() {
+    // `b` rests on `a`; put down on `c`, `b` hides `a` from the camera (the domain does not
+    // predict it, and E8 then forbids picking `a` up). The first minimal plan puts `b` on `c`;
+    // after it the pickup of `a` is not executable, and every minimal plan from there moves `b`
+    // again, the first of them onto `c` again. The robot prefers one that does not repeat the
+    // putdown that hid `a`, and puts `b` on the table.
+    let mut w = Blocks::new(&[("a", "table"), ("b", "a"), ("c", "table")]);
+    w.hides.push(("b".into(), "c".into(), "a".into()));
+    let mut config = RunConfig::default();
+    config.plan.max_horizon = 4;
+    let (h, events) = go(&mut w, "in_hand(rob1,a)", &config);
+    assert!(h.succeeded(), "{events:?}");
+    assert_eq!(h.plans[0].actions[1], "putdown(rob1,b,c)", "{events:?}");
+    assert_eq!(
+        h.plans[1].reason,
+        "pickup(rob1,a) not executable in the belief at step 2"
+    );
+    assert!(h.plans[1].alternatives > 1, "{:?}", h.plans[1]);
+    assert_eq!(h.plans[1].actions[1], "putdown(rob1,b,table)", "{events:?}");
+    assert_eq!(h.plans.len(), 2);
 }

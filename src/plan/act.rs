@@ -30,7 +30,10 @@
 //! confirmed by `RunConfig::confirm_looks` more looks at the same step, the majority of all of
 //! them ([`fuse`]) being believed, before a discrepancy is recorded or the plan given up
 //! (DOMAIN.md 4.4 lets the robot perceive again; with one look per step a single misreading
-//! made plans move objects back and forth, docs/bench/episodes-2026-12-04.md).
+//! made plans move objects back and forth, docs/bench/episodes-2026-12-04.md). And when the
+//! next action is not executable after a putdown (the object put down now hides another from
+//! the camera, which the domain does not predict, and E8 forbids the pickup), later plans
+//! prefer a minimal plan without that putdown, so the robot does not repeat it forever.
 //!
 //! Invariants: nothing here reads files, prints or reads the clock (progress goes to the
 //! caller's callback); every plan is made from the belief of the step it starts at; the
@@ -644,6 +647,10 @@ fn run_steps(
     };
     // The step whose belief was confirmed by more looks (`RunConfig::confirm_looks`).
     let mut confirmed: Option<u32> = None;
+    // Putdowns after which the next action of the plan was not executable in the (confirmed)
+    // belief: a minimal plan without them is preferred, so the robot does not put an object
+    // where it just hid another again (the domain cannot predict occlusion).
+    let mut tabu: Vec<Symbol> = Vec::new();
     let mut pending: VecDeque<Symbol> = VecDeque::new();
     let mut reason = Some("initial".to_string());
     // Looks taken since the last plan because the planner found none.
@@ -707,7 +714,11 @@ fn run_steps(
                 Err(PlanError::Input(m)) => return Ending::Input(m),
             };
             relooks = 0;
-            let first = &found.plans[0];
+            let first = found
+                .plans
+                .iter()
+                .find(|p| !p.actions.iter().any(|a| tabu.contains(a)))
+                .unwrap_or(&found.plans[0]);
             let record = PlanRecord {
                 step,
                 actions: texts(&first.actions),
@@ -751,6 +762,16 @@ fn run_steps(
             // A fresh plan's first action is executed even so (the planner and the one-step
             // prediction share the domain, so this does not happen; the guard stops a loop).
             pending.clear();
+            let last = step
+                .checked_sub(1)
+                .and_then(|i| history.steps[i as usize].happened.as_deref())
+                .and_then(|a| Symbol::parse(a).ok())
+                .filter(|a| a.is("putdown", 3));
+            if let Some(putdown) = last {
+                if !tabu.contains(&putdown) {
+                    tabu.push(putdown);
+                }
+            }
             reason = Some(format!(
                 "{action} not executable in the belief at step {step}"
             ));
