@@ -227,14 +227,20 @@ fn fruit_and_ducks_stand_still_on_the_table_at_any_yaw() {
                 let lowest = kind.shape(size).compute_local_aabb().mins.y;
                 scene.add("x", kind, Colour::Red, size, [0.05, -lowest, 0.02], yaw);
                 let (moved, _) = creep(&mut scene, "x");
-                assert!(moved < 0.002, "{kind:?} {size:?} yaw {yaw}: moved {moved} m");
+                assert!(
+                    moved < 0.002,
+                    "{kind:?} {size:?} yaw {yaw}: moved {moved} m"
+                );
             }
         }
     }
 }
 
 /// A can lying on its side rolled 5-60 mm per 2 s on the bare table without rolling resistance
-/// (rapier has none); with it, it comes to rest whatever its yaw.
+/// (rapier has none); with it, it comes to rest whatever its yaw: after 4 s it moves less than
+/// 2 mm and 0.1 rad in each of three more 2 s windows of the same world. (A world rebuilt from
+/// the scene, as the stability test does, restarts the contacts cold: the small can at yaw 1.2
+/// then rolls about 8 mm in the first window, recorded in docs/bench/plan-generated-2026-12-05.md.)
 #[test]
 fn a_can_lying_on_its_side_comes_to_rest() {
     for size in Size::ALL {
@@ -242,11 +248,26 @@ fn a_can_lying_on_its_side_comes_to_rest() {
             let yaw = 0.2 * i as f32;
             let mut scene = Scene::custom(1);
             let id = scene.add("can", ObjectKind::Can, Colour::Red, size, [0.0; 3], 0.0);
-            let lying = Rot3::from_rotation_y(yaw) * Rot3::from_rotation_x(std::f32::consts::FRAC_PI_2);
+            let lying =
+                Rot3::from_rotation_y(yaw) * Rot3::from_rotation_x(std::f32::consts::FRAC_PI_2);
             let radius = 0.45 * size.width();
-            scene.objects[id.index()]
-                .set_pose(&Pose::from_parts(Vector::new(0.05, radius + 0.001, 0.02), lying));
-            creep(&mut scene, "can");
+            scene.objects[id.index()].set_pose(&Pose::from_parts(
+                Vector::new(0.05, radius + 0.001, 0.02),
+                lying,
+            ));
+            let mut world = World::build(&scene);
+            world.step_for(4.0);
+            for window in 0..3 {
+                let before = world.pose(id).unwrap();
+                world.step_for(2.0);
+                let after = world.pose(id).unwrap();
+                let moved = (after.translation - before.translation).length();
+                let turned = before.rotation.angle_between(after.rotation);
+                assert!(
+                    moved < 0.002 && turned < 0.1,
+                    "{size:?} yaw {yaw} window {window}: moved {moved} m, turned {turned} rad"
+                );
+            }
         }
     }
 }
@@ -269,6 +290,10 @@ fn a_can_overhanging_its_support_still_topples() {
         assert_eq!(!stable(&scene, "can"), topples, "offset {offset}");
         settle(&mut scene, 3.0);
         let relations = measure(&scene, &TruthConfig::default()).relations;
-        assert_eq!(has(&relations, Rel::On, "can", "base"), !topples, "{relations:?}");
+        assert_eq!(
+            has(&relations, Rel::On, "can", "base"),
+            !topples,
+            "{relations:?}"
+        );
     }
 }
