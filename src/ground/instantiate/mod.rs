@@ -545,6 +545,15 @@ impl<'a> Grounder<'a> {
         }
     }
 
+    /// Makes room for `n` ground rules (and as many atoms) before instantiation, so that a
+    /// small program's tables do not rehash as they grow from empty.
+    pub fn reserve(&mut self, n: usize) {
+        let hashes = &self.rule_hashes;
+        self.rule_set.reserve(n, |&i| hashes[i as usize]);
+        self.rule_hashes.reserve(n);
+        self.atoms.reserve(n);
+    }
+
     /// Frees the rule deduplication table once instantiation is over (simplification does
     /// not add rules through [`Grounder::add_rule`]); large programs need the memory.
     pub fn release_dedup(&mut self) {
