@@ -7,34 +7,22 @@
 //! printed with the median, the maximum and the first run (`p99 <question>: <ms> ...`), the
 //! figure issue 14 asks for (aim: under 10 ms).
 
-use std::path::Path;
 use std::time::Instant;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use lucent::action;
-use lucent::base::SourceMap;
 use lucent::explain::english::Parser;
-use lucent::explain::history::{explain_history, parse_actions, History, HistoryConfig};
+use lucent::explain::history::{parse_actions, History};
 use lucent::explain::lexicon::Lexicon;
 use lucent::explain::questions::{answer, Mode, Session};
 
+/// The tests' scene loader and history (`domains/ra/scenes` under KB_full).
+#[path = "../tests/support/ra_scenes.rs"]
+mod ra_scenes;
+
 fn history(scene: &str, plan: &str) -> History {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("domains/ra/scenes")
-        .join(scene);
-    let mut sources = SourceMap::new();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let file = sources.add(path.to_string_lossy().into_owned(), text);
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
+    let (desc, mut sources) = ra_scenes::load_scene(scene);
     let actions = parse_actions(plan).unwrap();
-    explain_history(
-        &parsed.description,
-        &mut sources,
-        &actions,
-        &HistoryConfig::default(),
-    )
-    .unwrap()
+    ra_scenes::history(&desc, &mut sources, &actions, None)
 }
 
 fn ask(h: &History, lexicon: &Lexicon, q: &str) -> usize {

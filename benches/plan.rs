@@ -5,24 +5,14 @@
 //!
 //! `cargo bench --no-default-features --bench plan`
 
-use std::path::Path;
-
 use criterion::Criterion;
-use lucent::action::{self, ast::Description};
-use lucent::base::SourceMap;
 use lucent::plan::{plan, PlanConfig, Search};
 
-fn load(scene: &str) -> (Description, SourceMap) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("domains/ra/scenes")
-        .join(scene);
-    let mut sources = SourceMap::new();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let file = sources.add(path.to_string_lossy().into_owned(), text);
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    (parsed.description, sources)
-}
+/// The tests' scene loader (`domains/ra/scenes`, includes resolved).
+#[path = "../tests/support/ra_scenes.rs"]
+mod ra_scenes;
+
+use ra_scenes::load_scene as load;
 
 fn main() {
     let mut c = Criterion::default().sample_size(10).configure_from_args();

@@ -5,16 +5,11 @@
 use lucent::base::FileId;
 use lucent::syntax::ast::Dialect;
 
+#[path = "support/cli.rs"]
+mod cli_support;
+
 fn run(args: &[&str]) -> (i32, String, String) {
-    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
-    let mut out = Vec::new();
-    let mut err = Vec::new();
-    let code = lucent::cli::run(&args, &mut std::io::empty(), &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
+    cli_support::lucent_in_process(args, "")
 }
 
 fn at_root() {

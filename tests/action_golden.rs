@@ -22,6 +22,9 @@ use lucent::base::SourceMap;
 use lucent::control::{Control, ControlConfig, OwnedModel, Part, SolveOptions, Symbol};
 use lucent::solve::{self, Config, Outcome};
 
+#[path = "support/ra_scenes.rs"]
+mod ra_scenes;
+
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
@@ -32,13 +35,7 @@ fn translate_scene(
     profile: Option<&str>,
     overrides: &[(&str, Value)],
 ) -> (SourceMap, action::Translation) {
-    let path = root().join("domains/ra/scenes").join(scene);
-    let mut sources = SourceMap::new();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let file = sources.add(path.to_string_lossy().into_owned(), text);
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(!parsed.has_errors(), "{:?}", parsed.diagnostics);
+    let (description, sources) = ra_scenes::load_scene(scene);
     let options = Options {
         profile: profile.map(str::to_string),
         overrides: overrides
@@ -46,7 +43,7 @@ fn translate_scene(
             .map(|(n, v)| (n.to_string(), v.clone()))
             .collect(),
     };
-    let t = action::translate(&parsed.description, &options);
+    let t = action::translate(&description, &options);
     assert!(!t.has_errors(), "{:?}", t.diagnostics);
     assert_eq!(t.program.statements.len(), t.origins.len());
     (sources, t)

@@ -2,31 +2,10 @@
 //! binary. Expected outputs are derived from REFERENCE.md (exit codes) and from gringo's
 //! diagnostic format (`file:line:col-col: error: message`).
 
-use std::io::Write;
-use std::process::{Command, Stdio};
+#[path = "support/cli.rs"]
+mod cli_support;
 
-/// Runs `lucent ARGS` with `stdin` and returns (exit code, stdout, stderr).
-fn lucent(args: &[&str], stdin: &str) -> (i32, String, String) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_lucent"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the lucent binary runs");
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(stdin.as_bytes())
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use cli_support::lucent_binary as lucent;
 
 #[test]
 fn help_lists_options_and_exits_0() {

@@ -4,18 +4,12 @@
 //! pictures; `--why`/`--why-not` on a clingo program of our own (`tests/data/explain/reach.lp`);
 //! and the replies to questions that are not understood or out of range.
 
+#[path = "support/cli.rs"]
+mod cli_support;
+
 fn run_with(args: &[&str], stdin: &str) -> (i32, String, String) {
     std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
-    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
-    let mut out = Vec::new();
-    let mut err = Vec::new();
-    let mut input = stdin.as_bytes();
-    let code = lucent::cli::run(&args, &mut input, &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
+    cli_support::lucent_in_process(args, stdin)
 }
 
 fn run(args: &[&str]) -> (i32, String, String) {

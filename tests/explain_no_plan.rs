@@ -4,27 +4,18 @@
 //! off), removing any one element makes the task solvable, and switching the set off (every
 //! other hypothesis on) makes the task possible. Scenes: `domains/ra/scenes`.
 
-use std::path::Path;
-
-use lucent::action;
-use lucent::base::SourceMap;
 use lucent::control::Symbol;
 use lucent::explain::counterfactual::{why_no_plan, Hyp, NoPlan};
 use lucent::explain::history::{HistoryConfig, Problem};
 use lucent::explain::lexicon::Lexicon;
 
+#[path = "support/ra_scenes.rs"]
+mod ra_scenes;
+
 fn problem(scene: &str) -> Problem {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("domains/ra/scenes")
-        .join(scene);
-    let mut sources = SourceMap::new();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let file = sources.add(path.to_string_lossy().into_owned(), text);
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(parsed.diagnostics.is_empty(), "{scene} loads");
+    let (desc, sources) = ra_scenes::load_scene(scene);
     Problem {
-        desc: parsed.description,
+        desc,
         sources,
         config: HistoryConfig::default(),
     }

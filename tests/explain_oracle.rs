@@ -3,10 +3,6 @@
 //! task after one of its plans. Every proof tree built over the real ground program and answer
 //! set passes `tree::recheck`; the paper's questions get the paper's answers and literals.
 
-use std::path::Path;
-
-use lucent::action::{self, ast::Description};
-use lucent::base::SourceMap;
 use lucent::control::Symbol;
 use lucent::explain::build::{BuildConfig, Builder};
 use lucent::explain::english::Parser;
@@ -15,18 +11,10 @@ use lucent::explain::lexicon::Lexicon;
 use lucent::explain::questions::{answer, Mode, Session};
 use lucent::explain::tree::{recheck, Kind, Oracle};
 
-fn load(scene: &str) -> (Description, SourceMap) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("domains/ra/scenes")
-        .join(scene);
-    let mut sources = SourceMap::new();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let file = sources.add(path.to_string_lossy().into_owned(), text);
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(!parsed.has_errors(), "{:?}", parsed.diagnostics);
-    (parsed.description, sources)
-}
+#[path = "support/ra_scenes.rs"]
+mod ra_scenes;
+
+use ra_scenes::load_scene as load;
 
 const PAPER_PLAN: &str = "pickup(rob1,green_can); putdown(rob1,green_can,table); \
     pickup(rob1,white_block); putdown(rob1,white_block,green_can); pickup(rob1,pitcher); \

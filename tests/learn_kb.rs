@@ -3,27 +3,16 @@
 //! targets are missing, surprises are classified as DOMAIN.md 5.1 says, and a learned axiom
 //! added to the learner changes its predictions at once.
 
-use lucent::action;
-use lucent::base::SourceMap;
 use lucent::learn::episode::{LearnerKb, World};
 use lucent::learn::h1;
 use lucent::learn::kb::{KbSpec, KbWorld};
 use lucent::learn::surprise::classify;
 use lucent::learn::term::{Literal, IN_HAND};
 
-fn spec() -> KbSpec {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/domains/ra/scenes/h1.ald");
-    let mut sources = SourceMap::new();
-    let file = sources.add(path.to_string(), std::fs::read_to_string(path).unwrap());
-    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(!parsed.has_errors(), "{:?}", parsed.diagnostics);
-    KbSpec {
-        description: parsed.description,
-        options: h1::learner_options(),
-        sources,
-    }
-}
+#[path = "support/learn.rs"]
+mod learn_support;
+
+use learn_support::spec;
 
 fn worlds() -> (KbWorld, KbWorld) {
     let s = spec();

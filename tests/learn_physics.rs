@@ -8,27 +8,16 @@
 
 use std::process::Command;
 
-use lucent::action;
-use lucent::base::SourceMap;
 use lucent::learn::episode::{LearnConfig, World};
 use lucent::learn::h1::{self, Caches, Oracle};
 use lucent::learn::kb::{KbSpec, KbWorld};
 use lucent::learn::physics::{Catalogue, PhysicsWorld, OBSERVED};
 use lucent::learn::term::{Literal, IN_HAND, RELATION};
 
-fn spec() -> KbSpec {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/domains/ra/scenes/h1.ald");
-    let mut sources = SourceMap::new();
-    let file = sources.add(path.to_string(), std::fs::read_to_string(path).unwrap());
-    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(!parsed.has_errors(), "{:?}", parsed.diagnostics);
-    KbSpec {
-        description: parsed.description,
-        options: h1::learner_options(),
-        sources,
-    }
-}
+#[path = "support/learn.rs"]
+mod learn_support;
+
+use learn_support::spec;
 
 /// The positive literals the physics oracle observes, from any state.
 fn observed(state: &[Literal]) -> Vec<Literal> {

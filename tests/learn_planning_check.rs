@@ -13,9 +13,7 @@
 //! incorrect plans, and with the learned axioms added it makes none; plans are judged by
 //! `plan::check` (replay against KB_full, DOMAIN.md 4.3).
 
-use lucent::action;
 use lucent::base::rng::SplitMix64;
-use lucent::base::SourceMap;
 use lucent::explain::h3::ScenePreset;
 use lucent::learn::episode::{LearnConfig, World};
 use lucent::learn::h1;
@@ -26,6 +24,11 @@ use lucent::learn::surprise::classify;
 use lucent::learn::term::Axiom;
 use std::sync::OnceLock;
 
+#[path = "support/learn.rs"]
+mod learn_support;
+
+use learn_support::spec;
+
 /// The learning run both tests use (seed 0, run 0), done once.
 fn learned_run() -> &'static Store {
     static RUN: OnceLock<Store> = OnceLock::new();
@@ -33,20 +36,6 @@ fn learned_run() -> &'static Store {
         let report = h1::one_run(&spec(), &LearnConfig::default(), h1::run_seed(0, 0)).unwrap();
         report.store
     })
-}
-
-fn spec() -> KbSpec {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/domains/ra/scenes/h1.ald");
-    let mut sources = SourceMap::new();
-    let file = sources.add(path.to_string(), std::fs::read_to_string(path).unwrap());
-    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(!parsed.has_errors(), "{:?}", parsed.diagnostics);
-    KbSpec {
-        description: parsed.description,
-        options: h1::learner_options(),
-        sources,
-    }
 }
 
 #[test]

@@ -69,51 +69,30 @@ fn an_unnecessary_exception_or_a_detour_is_sub_optimal() {
 fn an_impossible_action_or_a_missed_goal_is_incorrect() {
     let (desc, sources) = load(TABLETOP);
     let config = PlanConfig::default();
-    // The red cube is below the pitcher (E7).
-    let v = classify(
-        &desc,
-        &sources,
-        &config,
-        &actions(&["pickup(rob1,red_cube_large)"]),
-        100_000,
-    )
-    .unwrap();
-    assert_eq!(v.quality, Quality::Incorrect);
-    assert!(
-        v.reason.as_deref().unwrap().contains("step 0"),
-        "{:?}",
-        v.reason
-    );
-    // The pitcher on the ball: the pitcher would be unstable (irregular surface below).
-    let v = classify(
-        &desc,
-        &sources,
-        &config,
-        &actions(&["pickup(rob1,pitcher)", "putdown(rob1,pitcher,blue_ball)"]),
-        100_000,
-    )
-    .unwrap();
-    assert_eq!(v.quality, Quality::Incorrect);
-    assert!(
-        v.reason.as_deref().unwrap().contains("step 1"),
-        "{:?}",
-        v.reason
-    );
-    // Executable, but the red cube is not in the hand at the end.
-    let v = classify(
-        &desc,
-        &sources,
-        &config,
-        &actions(&["pickup(rob1,pitcher)", "putdown(rob1,pitcher,table)"]),
-        100_000,
-    )
-    .unwrap();
-    assert_eq!(v.quality, Quality::Incorrect);
-    assert!(
-        v.reason.as_deref().unwrap().contains("goal"),
-        "{:?}",
-        v.reason
-    );
+    // (the plan, where its reason says it fails)
+    let cases: &[(&[&str], &str)] = &[
+        // The red cube is below the pitcher (E7).
+        (&["pickup(rob1,red_cube_large)"], "step 0"),
+        // The pitcher on the ball: the pitcher would be unstable (irregular surface below).
+        (
+            &["pickup(rob1,pitcher)", "putdown(rob1,pitcher,blue_ball)"],
+            "step 1",
+        ),
+        // Executable, but the red cube is not in the hand at the end.
+        (
+            &["pickup(rob1,pitcher)", "putdown(rob1,pitcher,table)"],
+            "goal",
+        ),
+    ];
+    for (plan, failing) in cases {
+        let v = classify(&desc, &sources, &config, &actions(plan), 100_000).unwrap();
+        assert_eq!(v.quality, Quality::Incorrect, "{plan:?}");
+        assert!(
+            v.reason.as_deref().unwrap().contains(failing),
+            "{plan:?}: {:?}",
+            v.reason
+        );
+    }
 }
 
 /// Problems of KB_full with the tasks' L* and E*: the golden scenes, the scene of facts and the

@@ -53,17 +53,16 @@ fn plan_rejects_bad_files() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `lucent plan` on KB_full with a scene of facts (`--scene SCENE`) and `args` after it.
+fn plan_scene(scene: &str, args: &[&str]) -> (i32, String, String) {
+    let mut all = vec!["plan", DOMAIN, "--scene", scene];
+    all.extend_from_slice(args);
+    run(&all)
+}
+
 #[test]
 fn plan_takes_a_scene_of_facts_and_a_goal_as_literals_or_english() {
-    let (code, out, err) = run(&[
-        "plan",
-        DOMAIN,
-        "--scene",
-        SCENE,
-        "--goal",
-        "on(mug, white_block)",
-        "--outf=2",
-    ]);
+    let (code, out, err) = plan_scene(SCENE, &["--goal", "on(mug, white_block)", "--outf=2"]);
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["length"], 2);
@@ -73,15 +72,10 @@ fn plan_takes_a_scene_of_facts_and_a_goal_as_literals_or_english() {
     );
     assert!(v["time"]["total"].as_f64().is_some());
     // The same goal in controlled English, with the plan checked.
-    let (code, out, err) = run(&[
-        "plan",
-        DOMAIN,
-        "--scene",
+    let (code, out, err) = plan_scene(
         SCENE,
-        "--goal",
-        "put the mug on the white block",
-        "--check",
-    ]);
+        &["--goal", "put the mug on the white block", "--check"],
+    );
     assert_eq!(code, 0, "{err}");
     assert!(
         out.contains("Plan: pickup(rob1,mug)@0; putdown(rob1,mug,white_block)@1"),
@@ -89,75 +83,68 @@ fn plan_takes_a_scene_of_facts_and_a_goal_as_literals_or_english() {
     );
     assert!(out.contains("Check: optimal"), "{out}");
     // Holding the red block needs the white block moved first: length 3.
-    let (code, out, err) = run(&[
-        "plan",
-        DOMAIN,
-        "--scene",
-        SCENE,
-        "--goal",
-        "pick up the red block",
-        "--all",
-    ]);
+    let (code, out, err) = plan_scene(SCENE, &["--goal", "pick up the red block", "--all"]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("Length: 3"), "{out}");
 }
 
 #[test]
 fn plan_rejects_bad_scenes_and_goals_with_clear_messages() {
-    // An unknown object in the goal.
-    let (code, _, err) = run(&["plan", DOMAIN, "--scene", SCENE, "--goal", "on(ghost, mug)"]);
-    assert_eq!(code, 65, "{err}");
-    assert!(err.contains("`ghost` is not in sort"), "{err}");
-    let (code, _, err) = run(&[
-        "plan",
-        DOMAIN,
-        "--scene",
-        SCENE,
-        "--goal",
-        "put the ghost on the mug",
-    ]);
-    assert_eq!(code, 65, "{err}");
-    assert!(err.contains("ghost"), "{err}");
-    // A malformed scene file: a positioned syntax error.
-    let (code, _, err) = run(&["plan", DOMAIN, "--scene", "tests/data/plan/malformed.lp"]);
-    assert_eq!(code, 65, "{err}");
-    assert!(err.contains("malformed.lp:3:1"), "{err}");
-    // An impossible goal (nothing stays on the mug's irregular top): no plan within H.
-    let (code, _, err) = run(&[
-        "plan",
-        DOMAIN,
-        "--scene",
-        SCENE,
-        "--goal",
-        "on(red_block, mug)",
-        "--max-horizon=4",
-    ]);
-    assert_eq!(code, 20, "{err}");
-    assert!(err.contains("no_plan_within(4)"), "{err}");
-    // The same without a budget: the default H = max(9, 2 * 3 + 2), no hang.
-    let (code, _, err) = run(&[
-        "plan",
-        DOMAIN,
-        "--scene",
-        SCENE,
-        "--goal",
-        "on(red_block, mug)",
-    ]);
-    assert_eq!(code, 20, "{err}");
-    assert!(err.contains("no_plan_within(9)"), "{err}");
-    // An initially unstable scene.
-    let (code, _, err) = run(&[
-        "plan",
-        DOMAIN,
-        "--scene",
-        "tests/data/plan/unstable.lp",
-        "--goal",
-        "in_hand(rob1, red_block)",
-    ]);
-    assert_eq!(code, 20, "{err}");
-    assert!(err.contains("initially_unstable(red_block)"), "{err}");
-    // A missing scene file.
-    let (code, _, err) = run(&["plan", DOMAIN, "--scene", "no/such/scene.lp"]);
-    assert_eq!(code, 65, "{err}");
-    assert!(err.contains("no/such/scene.lp"), "{err}");
+    // (the case, the scene, the arguments after it, the exit code, what the error names)
+    let cases: &[(&str, &str, &[&str], i32, &str)] = &[
+        (
+            "an unknown object in the goal",
+            SCENE,
+            &["--goal", "on(ghost, mug)"],
+            65,
+            "`ghost` is not in sort",
+        ),
+        (
+            "an unknown object in an English goal",
+            SCENE,
+            &["--goal", "put the ghost on the mug"],
+            65,
+            "ghost",
+        ),
+        (
+            "a malformed scene file: a positioned syntax error",
+            "tests/data/plan/malformed.lp",
+            &[],
+            65,
+            "malformed.lp:3:1",
+        ),
+        (
+            "an impossible goal (nothing stays on the mug's irregular top): no plan within H",
+            SCENE,
+            &["--goal", "on(red_block, mug)", "--max-horizon=4"],
+            20,
+            "no_plan_within(4)",
+        ),
+        (
+            "the same without a budget: the default H = max(9, 2 * 3 + 2), no hang",
+            SCENE,
+            &["--goal", "on(red_block, mug)"],
+            20,
+            "no_plan_within(9)",
+        ),
+        (
+            "an initially unstable scene",
+            "tests/data/plan/unstable.lp",
+            &["--goal", "in_hand(rob1, red_block)"],
+            20,
+            "initially_unstable(red_block)",
+        ),
+        (
+            "a missing scene file",
+            "no/such/scene.lp",
+            &[],
+            65,
+            "no/such/scene.lp",
+        ),
+    ];
+    for (case, scene, args, want, names) in cases {
+        let (code, _, err) = plan_scene(scene, args);
+        assert_eq!(code, *want, "{case}: {err}");
+        assert!(err.contains(names), "{case}: {err}");
+    }
 }

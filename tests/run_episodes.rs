@@ -6,27 +6,15 @@
 //! `scripts/episodes.py` (docs/bench/episodes-2026-12-01.md).
 #![cfg(feature = "sim")]
 
-use lucent::action;
-use lucent::base::SourceMap;
 use lucent::plan::act::{run, Domain, RunConfig};
 use lucent::plan::history::History;
 use lucent::plan::tabletop::{act_config, random_goal, SimWorld};
 use lucent::sim::{generate, GenerateConfig, Preset};
 
-fn domain() -> Domain {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("domains/ra/kb_full.ald");
-    let mut sources = SourceMap::new();
-    let file = sources.add(
-        path.to_string_lossy().into_owned(),
-        std::fs::read_to_string(&path).unwrap(),
-    );
-    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    Domain {
-        description: parsed.description,
-        sources,
-    }
-}
+#[path = "support/plan.rs"]
+mod plan_support;
+
+use plan_support::domain;
 
 fn episode(domain: &Domain, preset: Preset, seed: u64) -> History {
     let scene = generate(&GenerateConfig::new(preset, seed)).unwrap();

@@ -10,29 +10,16 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use lucent::action;
-use lucent::base::SourceMap;
 use lucent::control::Symbol;
 use lucent::learn::surprise::classify;
 use lucent::learn::term::Literal;
-use lucent::plan::act::{run, Domain, Event, Percept, RunConfig, Seen, World};
+use lucent::plan::act::{run, Event, Percept, RunConfig, Seen, World};
 use lucent::plan::history::{Ending, History};
 
-fn domain() -> Domain {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("domains/ra/kb_full.ald");
-    let mut sources = SourceMap::new();
-    let file = sources.add(
-        path.to_string_lossy().into_owned(),
-        std::fs::read_to_string(&path).unwrap(),
-    );
-    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, file, &mut read);
-    assert!(!parsed.has_errors());
-    Domain {
-        description: parsed.description,
-        sources,
-    }
-}
+#[path = "support/plan.rs"]
+mod plan_support;
+
+use plan_support::domain;
 
 fn sym(text: &str) -> Symbol {
     Symbol::parse(text).unwrap()

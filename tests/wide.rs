@@ -3,28 +3,10 @@
 //! pool unfolding, a rule with 20,000 body literals overflowed the stack, and `--text` searched
 //! the facts once per shown atom.
 
-use std::io::Write;
-use std::process::{Command, Stdio};
+#[path = "support/cli.rs"]
+mod cli_support;
 
-/// Runs `lucent ARGS` on `stdin`; returns (exit code, stdout, stderr).
-fn lucent(args: &[&str], stdin: &str) -> (i32, String, String) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_lucent"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the lucent binary runs");
-    let mut pipe = child.stdin.take().unwrap();
-    pipe.write_all(stdin.as_bytes()).unwrap();
-    drop(pipe);
-    let out = child.wait_with_output().unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use cli_support::lucent_binary as lucent;
 
 /// The numbers `0..n` joined by `sep`.
 fn numbers(n: usize, sep: &str) -> String {

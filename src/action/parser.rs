@@ -13,8 +13,9 @@
 //! - Spans lie inside the text (they come from the lexer's tokens).
 
 use crate::base::{Diagnostic, FileId, Span};
-use crate::syntax::ast::{BinaryOp, CmpOp, Dialect, Term, TermKind, UnaryOp};
-use crate::syntax::lexer::{describe, Lexer, Token, TokenKind as T};
+use crate::syntax::ast::{BinaryOp, Dialect, Term, TermKind, UnaryOp};
+use crate::syntax::lexer::{Lexer, Token, TokenKind as T};
+use crate::syntax::parser::{cmp_op, integer_value, unexpected_message};
 
 use super::ast::*;
 
@@ -174,14 +175,7 @@ impl<'a> Parser<'a> {
     }
 
     fn unexpected(&mut self, expecting: &[&str]) -> Failed {
-        let mut msg = format!(
-            "syntax error, unexpected {}",
-            describe(self.tok.kind, self.cur())
-        );
-        if !expecting.is_empty() {
-            msg.push_str(", expecting ");
-            msg.push_str(&expecting.join(" or "));
-        }
+        let msg = unexpected_message(self.tok.kind, self.cur(), expecting);
         let span = self.span(self.tok.start, self.tok.end);
         self.diags.push(Diagnostic::error(span, msg));
         Failed
@@ -556,16 +550,7 @@ impl<'a> Parser<'a> {
     fn body_item(&mut self) -> PResult<BodyItem> {
         let start = self.tok.start;
         let term = self.term()?;
-        let op = match self.tok.kind {
-            T::Eq => Some(CmpOp::Eq),
-            T::Ne => Some(CmpOp::Ne),
-            T::Lt => Some(CmpOp::Lt),
-            T::Le => Some(CmpOp::Le),
-            T::Gt => Some(CmpOp::Gt),
-            T::Ge => Some(CmpOp::Ge),
-            _ => None,
-        };
-        if let Some(op) = op {
+        if let Some(op) = cmp_op(self.tok.kind) {
             self.bump();
             let rhs = self.term()?;
             return Ok(BodyItem::Compare {
@@ -811,15 +796,8 @@ impl<'a> Parser<'a> {
     }
 
     fn integer(&mut self, tok: Token) -> i64 {
-        let word = self.word_of(tok);
-        let (digits, radix) = match word.get(..2) {
-            Some("0x") | Some("0X") => (&word[2..], 16),
-            Some("0o") | Some("0O") => (&word[2..], 8),
-            Some("0b") | Some("0B") => (&word[2..], 2),
-            _ => (word, 10),
-        };
-        match i64::from_str_radix(digits, radix) {
-            Ok(v) if v <= i32::MAX as i64 => v,
+        match integer_value(self.word_of(tok)) {
+            Some(v) if v <= i32::MAX as i64 => v,
             _ => {
                 self.diags.push(Diagnostic::error(
                     self.span(tok.start, tok.end),

@@ -94,6 +94,84 @@ pub enum Pattern {
 /// Variable bindings of a match: `(name, value)`.
 pub type Bindings = Vec<(String, Symbol)>;
 
+/// What a pattern is matched against: a symbol ([`Pattern::matches`]) or a pattern whose
+/// variables count as constants ([`Pattern::subsumes`]); one algorithm, [`match_into`], serves
+/// both.
+trait Subject: Clone + PartialEq {
+    /// Name, arguments and classical sign, if this is a function term.
+    fn function(&self) -> Option<(&str, &[Self], bool)>;
+    /// Whether this is `leaf`, a number or string pattern.
+    fn is_leaf(&self, leaf: &Pattern) -> bool;
+}
+
+impl Subject for Symbol {
+    fn function(&self) -> Option<(&str, &[Symbol], bool)> {
+        match self {
+            Symbol::Function {
+                name,
+                args,
+                negative,
+            } => Some((name, args, *negative)),
+            _ => None,
+        }
+    }
+
+    fn is_leaf(&self, leaf: &Pattern) -> bool {
+        match (leaf, self) {
+            (Pattern::Num(a), Symbol::Number(b)) => a == b,
+            (Pattern::Str(a), Symbol::String(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
+impl Subject for Pattern {
+    fn function(&self) -> Option<(&str, &[Pattern], bool)> {
+        match self {
+            Pattern::Fun {
+                name,
+                args,
+                negative,
+            } => Some((name, args, *negative)),
+            _ => None,
+        }
+    }
+
+    fn is_leaf(&self, leaf: &Pattern) -> bool {
+        self == leaf
+    }
+}
+
+/// One-way matching of `pattern` against `subject`, extending `bindings`: a variable binds the
+/// subject (the same value each time it occurs; `_` binds nothing), a function matches a
+/// function of the same name, sign and arity argument by argument, a number or a string only
+/// itself. On failure `bindings` may hold partial bindings.
+fn match_into<S: Subject>(pattern: &Pattern, subject: &S, bindings: &mut Vec<(String, S)>) -> bool {
+    match pattern {
+        Pattern::Var(v) => {
+            if v == "_" {
+                return true;
+            }
+            if let Some((_, bound)) = bindings.iter().find(|(name, _)| name == v) {
+                return bound == subject;
+            }
+            bindings.push((v.clone(), subject.clone()));
+            true
+        }
+        Pattern::Fun {
+            name,
+            args,
+            negative,
+        } => subject.function().is_some_and(|(n2, a2, g2)| {
+            name == n2
+                && *negative == g2
+                && args.len() == a2.len()
+                && args.iter().zip(a2).all(|(p, s)| match_into(p, s, bindings))
+        }),
+        leaf => subject.is_leaf(leaf),
+    }
+}
+
 impl Pattern {
     /// The function name, if this is a function or constant.
     pub fn name(&self) -> Option<&str> {
@@ -183,74 +261,14 @@ impl Pattern {
     /// Matches this pattern against a symbol, extending `bindings`. On failure `bindings` may
     /// hold partial bindings.
     pub fn matches(&self, sym: &Symbol, bindings: &mut Bindings) -> bool {
-        match (self, sym) {
-            (Pattern::Var(v), s) => {
-                if v == "_" {
-                    return true;
-                }
-                if let Some((_, bound)) = bindings.iter().find(|(name, _)| name == v) {
-                    return bound == s;
-                }
-                bindings.push((v.clone(), s.clone()));
-                true
-            }
-            (Pattern::Num(a), Symbol::Number(b)) => a == b,
-            (Pattern::Str(a), Symbol::String(b)) => a == b,
-            (
-                Pattern::Fun {
-                    name,
-                    args,
-                    negative,
-                },
-                Symbol::Function {
-                    name: n2,
-                    args: a2,
-                    negative: g2,
-                },
-            ) => {
-                name == n2
-                    && negative == g2
-                    && args.len() == a2.len()
-                    && args.iter().zip(a2).all(|(p, s)| p.matches(s, bindings))
-            }
-            _ => false,
-        }
+        match_into(self, sym, bindings)
     }
 
     /// Matches this pattern against another one, as if the other's variables were constants
     /// that only a variable matches (a question's `putdown(rob1,a,_)` against the lexicon's
     /// `putdown(R,X,Y)`: `Y` is bound to `_`). Bindings are patterns.
     pub fn subsumes(&self, other: &Pattern, bindings: &mut Vec<(String, Pattern)>) -> bool {
-        match (self, other) {
-            (Pattern::Var(v), p) => {
-                if v == "_" {
-                    return true;
-                }
-                if let Some((_, bound)) = bindings.iter().find(|(name, _)| name == v) {
-                    return bound == p;
-                }
-                bindings.push((v.clone(), p.clone()));
-                true
-            }
-            (
-                Pattern::Fun {
-                    name,
-                    args,
-                    negative,
-                },
-                Pattern::Fun {
-                    name: n2,
-                    args: a2,
-                    negative: g2,
-                },
-            ) => {
-                name == n2
-                    && negative == g2
-                    && args.len() == a2.len()
-                    && args.iter().zip(a2).all(|(p, q)| p.subsumes(q, bindings))
-            }
-            (a, b) => a == b,
-        }
+        match_into(self, other, bindings)
     }
 
     /// The pattern with its variables replaced by their bindings (unbound variables stay).

@@ -5,10 +5,16 @@
 
 use std::path::Path;
 
-use lucent::action::{self, ast::Description};
+use lucent::action::ast::Description;
 use lucent::base::SourceMap;
 use lucent::control::Symbol;
+use lucent::plan::act::Domain;
 use lucent::plan::scene::add_statements;
+
+#[path = "cli.rs"]
+mod cli;
+#[path = "ra_scenes.rs"]
+mod ra_scenes;
 
 /// The golden scenes of DOMAIN.md 4.5.
 pub const TABLETOP: &str = "domains/ra/scenes/tabletop_task.ald";
@@ -27,13 +33,16 @@ pub fn load(file: &str) -> (Description, SourceMap) {
     } else {
         root.join("domains/ra/scenes").join(file)
     };
-    let mut sources = SourceMap::new();
-    let text = std::fs::read_to_string(&path).unwrap();
-    let id = sources.add(path.to_string_lossy().into_owned(), text);
-    let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
-    let parsed = action::load(&mut sources, id, &mut read);
-    assert!(!parsed.has_errors(), "{file}: {:?}", parsed.diagnostics);
-    (parsed.description, sources)
+    ra_scenes::load_at(&path, &std::fs::read_to_string(&path).unwrap())
+}
+
+/// KB_full as the sense-plan-act loop takes it.
+pub fn domain() -> Domain {
+    let (description, sources) = load(DOMAIN);
+    Domain {
+        description,
+        sources,
+    }
 }
 
 /// KB_full with a scene (AL_d statements, e.g. `SceneFacts::to_ald`) and a goal statement
@@ -53,13 +62,5 @@ pub fn actions(text: &[&str]) -> Vec<Symbol> {
 /// `lucent ARGS` in-process from the repository's root: exit code, stdout, stderr.
 pub fn lucent(args: &[&str]) -> (i32, String, String) {
     std::env::set_current_dir(env!("CARGO_MANIFEST_DIR")).unwrap();
-    let args: Vec<String> = args.iter().map(|s| s.to_string()).collect();
-    let mut out = Vec::new();
-    let mut err = Vec::new();
-    let code = lucent::cli::run(&args, &mut std::io::empty(), &mut out, &mut err);
-    (
-        code,
-        String::from_utf8(out).unwrap(),
-        String::from_utf8(err).unwrap(),
-    )
+    cli::lucent_in_process(args, "")
 }

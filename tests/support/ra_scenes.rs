@@ -1,6 +1,10 @@
 //! Real runs over KB_full for the explanation tests: AL_d scene text loaded against
 //! `domains/ra/kb_full.ald`, planned by `lucent::plan`, and its executed plan explained through
 //! `explain::history` (the Control adapter).
+//!
+//! Its loaders (`load_scene`, `load_text`, `load_at`) are the one AL_d file loader of the tests
+//! and benches: `support/plan.rs`, `support/learn.rs` and `benches/{explain,plan}.rs` include
+//! this file too.
 #![allow(dead_code)]
 
 use std::path::Path;

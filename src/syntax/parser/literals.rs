@@ -27,45 +27,17 @@ impl<'a> Parser<'a> {
             self.literal(Ctx::Single, &mut first)?;
         } else {
             let term = self.term()?;
-            if self.at(T::LBrace) {
-                let guard = Guard {
-                    op: CmpOp::Le,
-                    term,
-                };
-                return Ok((
-                    Head::Choice(Box::new(self.choice(start, Some(guard))?)),
-                    None,
-                ));
-            }
-            if self.at_aggregate() {
-                let guard = Guard {
-                    op: CmpOp::Le,
-                    term,
-                };
-                return Ok((
-                    Head::Aggregate(Box::new(self.head_aggregate(start, Some(guard))?)),
-                    None,
-                ));
-            }
-            if let Some(op) = cmp_op(self.tok.kind) {
-                let next = self.peek();
-                if next.kind == T::LBrace
-                    || aggregate_function(next.kind, self.word(next)).is_some()
-                {
-                    self.bump();
-                    let guard = Guard { op, term };
-                    if self.at(T::LBrace) {
-                        return Ok((
-                            Head::Choice(Box::new(self.choice(start, Some(guard))?)),
-                            None,
-                        ));
-                    }
-                    return Ok((
-                        Head::Aggregate(Box::new(self.head_aggregate(start, Some(guard))?)),
-                        None,
-                    ));
+            let term = match self.lower_guard(term) {
+                Ok(guard) => {
+                    let head = if self.at(T::LBrace) {
+                        Head::Choice(Box::new(self.choice(start, Some(guard))?))
+                    } else {
+                        Head::Aggregate(Box::new(self.head_aggregate(start, Some(guard))?))
+                    };
+                    return Ok((head, None));
                 }
-            }
+                Err(term) => term,
+            };
             // Only `label : head :+ body` needs the term back (as the label), and only when a
             // `:` follows an atom; copy it just then.
             if !self.at_cmp() && self.at(T::Colon) {
@@ -81,12 +53,30 @@ impl<'a> Parser<'a> {
         while self.at(T::Bar) || self.at(T::Semi) || self.at(T::Comma) {
             self.bump();
             let start = self.tok.start;
-            let mut lits = Vec::with_capacity(1);
-            self.literal(Ctx::Single, &mut lits)?;
-            let literal = lits.remove(0);
+            let literal = self.single_literal()?;
             elements.push(self.head_element(start, literal, true)?);
         }
         Ok((Head::Disjunction(elements), first_term))
+    }
+
+    /// After a term: the lower guard it is when a choice or an aggregate follows (`t {`,
+    /// `t #count`: `t <=`; `t op {`, `t op #count`, the operator consumed); the term itself
+    /// otherwise.
+    fn lower_guard(&mut self, term: Term) -> Result<Guard, Term> {
+        if self.at(T::LBrace) || self.at_aggregate() {
+            return Ok(Guard {
+                op: CmpOp::Le,
+                term,
+            });
+        }
+        if let Some(op) = cmp_op(self.tok.kind) {
+            let next = self.peek();
+            if next.kind == T::LBrace || aggregate_function(next.kind, self.word(next)).is_some() {
+                self.bump();
+                return Ok(Guard { op, term });
+            }
+        }
+        Err(term)
     }
 
     /// True when the current token is a comparison operator.
@@ -131,15 +121,24 @@ impl<'a> Parser<'a> {
 
     /// `{ l : c ; ... }`, the braces included.
     pub(super) fn conditional_set(&mut self) -> PResult<Vec<ConditionalLiteral>> {
+        self.braced_elements(|p, start| {
+            let literal = p.single_literal()?;
+            p.head_element(start, literal, false)
+        })
+    }
+
+    /// `{ e ; ... }`, the braces included: the elements `element` reads, each called with the
+    /// offset its element starts at. Choices and both kinds of aggregates share this shape.
+    fn braced_elements<E>(
+        &mut self,
+        mut element: impl FnMut(&mut Self, u32) -> PResult<E>,
+    ) -> PResult<Vec<E>> {
         self.expect(T::LBrace, &["{"])?;
         let mut elements = Vec::new();
         if !self.at(T::RBrace) {
             loop {
                 let start = self.tok.start;
-                let mut lits = Vec::with_capacity(1);
-                self.literal(Ctx::Single, &mut lits)?;
-                let literal = lits.remove(0);
-                elements.push(self.head_element(start, literal, false)?);
+                elements.push(element(self, start)?);
                 if !self.eat(T::Semi) {
                     break;
                 }
@@ -147,6 +146,36 @@ impl<'a> Parser<'a> {
         }
         self.expect(T::RBrace, &["}", ";"])?;
         Ok(elements)
+    }
+
+    /// The aggregate function keyword at the current token, consumed.
+    fn aggregate_keyword(&mut self) -> AggregateFunction {
+        let function = aggregate_function(self.tok.kind, self.cur()).expect("at an aggregate");
+        self.bump();
+        function
+    }
+
+    /// An aggregate element's tuple `t1, ..., tn`, empty when a `:` follows at once.
+    fn aggregate_tuple(&mut self) -> PResult<Vec<Term>> {
+        let mut terms = Vec::new();
+        if !self.at(T::Colon) {
+            loop {
+                terms.push(self.term()?);
+                if !self.eat(T::Comma) {
+                    break;
+                }
+            }
+        }
+        Ok(terms)
+    }
+
+    /// An aggregate element's optional `: condition`.
+    fn aggregate_condition(&mut self) -> PResult<Vec<Literal>> {
+        if self.eat(T::Colon) {
+            self.condition(true)
+        } else {
+            Ok(Vec::new())
+        }
     }
 
     /// An upper guard after `}`: `op term` or a bare term (meaning `<= term`).
@@ -175,43 +204,19 @@ impl<'a> Parser<'a> {
         lower: Option<Guard>,
     ) -> PResult<HeadAggregate> {
         self.enter()?;
-        let function = aggregate_function(self.tok.kind, self.cur()).expect("at an aggregate");
-        self.bump();
-        self.expect(T::LBrace, &["{"])?;
-        let mut elements = Vec::new();
-        if !self.at(T::RBrace) {
-            loop {
-                let el_start = self.tok.start;
-                let mut terms = Vec::new();
-                if !self.at(T::Colon) {
-                    loop {
-                        terms.push(self.term()?);
-                        if !self.eat(T::Comma) {
-                            break;
-                        }
-                    }
-                }
-                self.expect(T::Colon, &[":"])?;
-                let mut lits = Vec::with_capacity(1);
-                self.literal(Ctx::Single, &mut lits)?;
-                let literal = lits.remove(0);
-                let condition = if self.eat(T::Colon) {
-                    self.condition(true)?
-                } else {
-                    Vec::new()
-                };
-                elements.push(HeadAggregateElement {
-                    span: self.span_from(el_start),
-                    terms,
-                    literal,
-                    condition,
-                });
-                if !self.eat(T::Semi) {
-                    break;
-                }
-            }
-        }
-        self.expect(T::RBrace, &["}", ";"])?;
+        let function = self.aggregate_keyword();
+        let elements = self.braced_elements(|p, start| {
+            let terms = p.aggregate_tuple()?;
+            p.expect(T::Colon, &[":"])?;
+            let literal = p.single_literal()?;
+            let condition = p.aggregate_condition()?;
+            Ok(HeadAggregateElement {
+                span: p.span_from(start),
+                terms,
+                literal,
+                condition,
+            })
+        })?;
         let upper = self.upper_guard()?;
         self.leave();
         Ok(HeadAggregate {
@@ -246,48 +251,17 @@ impl<'a> Parser<'a> {
         let start = self.tok.start;
         let sign = self.sign()?;
         if self.at(T::LBrace) || self.at_aggregate() {
-            let aggregate = self.body_aggregate(start, None)?;
-            out.push(BodyLiteral::Aggregate {
-                sign,
-                aggregate: Box::new(aggregate),
-            });
-            self.body_end = AFTER_AGGREGATE;
-            return Ok(());
+            return self.body_aggregate_literal(start, sign, None, out);
         }
         let mut lits = Vec::with_capacity(1);
         if self.at(T::Hash) && (matches!(self.cur(), "#true" | "#false") || self.at_sort_name()) {
             self.atom_literal(start, sign, &mut lits)?;
         } else {
             let term = self.term()?;
-            if self.at(T::LBrace) || self.at_aggregate() {
-                let guard = Guard {
-                    op: CmpOp::Le,
-                    term,
-                };
-                let aggregate = self.body_aggregate(start, Some(guard))?;
-                out.push(BodyLiteral::Aggregate {
-                    sign,
-                    aggregate: Box::new(aggregate),
-                });
-                self.body_end = AFTER_AGGREGATE;
-                return Ok(());
-            }
-            if let Some(op) = cmp_op(self.tok.kind) {
-                let next = self.peek();
-                if next.kind == T::LBrace
-                    || aggregate_function(next.kind, self.word(next)).is_some()
-                {
-                    self.bump();
-                    let guard = Guard { op, term };
-                    let aggregate = self.body_aggregate(start, Some(guard))?;
-                    out.push(BodyLiteral::Aggregate {
-                        sign,
-                        aggregate: Box::new(aggregate),
-                    });
-                    self.body_end = AFTER_AGGREGATE;
-                    return Ok(());
-                }
-            }
+            let term = match self.lower_guard(term) {
+                Ok(guard) => return self.body_aggregate_literal(start, sign, Some(guard), out),
+                Err(term) => term,
+            };
             self.literal_tail(start, sign, term, Ctx::Chain, &mut lits)?;
         }
         if lits.len() == 1 && self.at(T::Colon) {
@@ -311,6 +285,23 @@ impl<'a> Parser<'a> {
             _ => &[],
         };
         out.extend(lits.into_iter().map(BodyLiteral::Literal));
+        Ok(())
+    }
+
+    /// A body aggregate with its sign, after its optional lower guard.
+    fn body_aggregate_literal(
+        &mut self,
+        start: u32,
+        sign: Sign,
+        lower: Option<Guard>,
+        out: &mut Vec<BodyLiteral>,
+    ) -> PResult<()> {
+        let aggregate = self.body_aggregate(start, lower)?;
+        out.push(BodyLiteral::Aggregate {
+            sign,
+            aggregate: Box::new(aggregate),
+        });
+        self.body_end = AFTER_AGGREGATE;
         Ok(())
     }
 
@@ -339,38 +330,16 @@ impl<'a> Parser<'a> {
             let set = self.conditional_set()?;
             (AggregateFunction::Count, Vec::new(), set)
         } else {
-            let function = aggregate_function(self.tok.kind, self.cur()).expect("at an aggregate");
-            self.bump();
-            self.expect(T::LBrace, &["{"])?;
-            let mut elements = Vec::new();
-            if !self.at(T::RBrace) {
-                loop {
-                    let el_start = self.tok.start;
-                    let mut terms = Vec::new();
-                    if !self.at(T::Colon) {
-                        loop {
-                            terms.push(self.term()?);
-                            if !self.eat(T::Comma) {
-                                break;
-                            }
-                        }
-                    }
-                    let condition = if self.eat(T::Colon) {
-                        self.condition(true)?
-                    } else {
-                        Vec::new()
-                    };
-                    elements.push(BodyAggregateElement {
-                        span: self.span_from(el_start),
-                        terms,
-                        condition,
-                    });
-                    if !self.eat(T::Semi) {
-                        break;
-                    }
-                }
-            }
-            self.expect(T::RBrace, &["}", ";"])?;
+            let function = self.aggregate_keyword();
+            let elements = self.braced_elements(|p, start| {
+                let terms = p.aggregate_tuple()?;
+                let condition = p.aggregate_condition()?;
+                Ok(BodyAggregateElement {
+                    span: p.span_from(start),
+                    terms,
+                    condition,
+                })
+            })?;
             (function, elements, Vec::new())
         };
         let upper = self.upper_guard()?;
@@ -411,6 +380,14 @@ impl<'a> Parser<'a> {
         }
         let term = self.term()?;
         self.literal_tail(start, sign, term, ctx, out)
+    }
+
+    /// Exactly one literal, no comparison chain (a head element, a choice or head aggregate
+    /// element).
+    fn single_literal(&mut self) -> PResult<Literal> {
+        let mut lits = Vec::with_capacity(1);
+        self.literal(Ctx::Single, &mut lits)?;
+        Ok(lits.remove(0))
     }
 
     /// `#true`, `#false` or a SPARC sort atom `#s(t)`.

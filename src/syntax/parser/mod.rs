@@ -183,8 +183,8 @@ fn aggregate_function(kind: T, word: &str) -> Option<AggregateFunction> {
     }
 }
 
-/// Comparison operator of a token.
-fn cmp_op(kind: T) -> Option<CmpOp> {
+/// Comparison operator of a token (the AL_d parser reads comparisons with it too).
+pub(crate) fn cmp_op(kind: T) -> Option<CmpOp> {
     Some(match kind {
         T::Eq => CmpOp::Eq,
         T::Ne => CmpOp::Ne,
@@ -194,6 +194,30 @@ fn cmp_op(kind: T) -> Option<CmpOp> {
         T::Ge => CmpOp::Ge,
         _ => return None,
     })
+}
+
+/// gringo's wording of a syntax error at a token of `kind` and text `word`: `syntax error,
+/// unexpected X[, expecting a or b]` (the AL_d parser words its errors so too).
+pub(crate) fn unexpected_message(kind: T, word: &str, expecting: &[&str]) -> String {
+    let mut msg = format!("syntax error, unexpected {}", describe(kind, word));
+    if !expecting.is_empty() {
+        msg.push_str(", expecting ");
+        msg.push_str(&expecting.join(" or "));
+    }
+    msg
+}
+
+/// The value of a number token's text (decimal, or `0x`, `0o`, `0b` with either case of the
+/// letter); `None` when it does not fit an `i64`. Each parser reports out-of-range values its
+/// own way.
+pub(crate) fn integer_value(word: &str) -> Option<i64> {
+    let (digits, radix) = match word.get(..2) {
+        Some("0x") | Some("0X") => (&word[2..], 16),
+        Some("0o") | Some("0O") => (&word[2..], 8),
+        Some("0b") | Some("0B") => (&word[2..], 2),
+        _ => (word, 10),
+    };
+    i64::from_str_radix(digits, radix).ok()
 }
 
 /// `#name`s that are clingo keywords rather than SPARC sort names.
@@ -403,14 +427,7 @@ impl<'a> Parser<'a> {
 
     /// Reports `syntax error, unexpected X[, expecting a or b]` at the current token.
     fn unexpected(&mut self, expecting: &[&str]) -> Failed {
-        let mut msg = format!(
-            "syntax error, unexpected {}",
-            describe(self.tok.kind, self.cur())
-        );
-        if !expecting.is_empty() {
-            msg.push_str(", expecting ");
-            msg.push_str(&expecting.join(" or "));
-        }
+        let msg = unexpected_message(self.tok.kind, self.cur(), expecting);
         let span = self.span(self.tok.start, self.tok.end);
         self.diags.push(Diagnostic::error(span, msg));
         Failed

@@ -259,16 +259,9 @@ impl<'a> Parser<'a> {
 
     /// The value of a number token; out-of-range literals are reported.
     pub(super) fn integer(&mut self, tok: Token) -> i64 {
-        let word = self.word(tok);
-        let (digits, radix) = match word.get(..2) {
-            Some("0x") | Some("0X") => (&word[2..], 16),
-            Some("0o") | Some("0O") => (&word[2..], 8),
-            Some("0b") | Some("0B") => (&word[2..], 2),
-            _ => (word, 10),
-        };
-        match i64::from_str_radix(digits, radix) {
-            Ok(v) => v,
-            Err(_) => {
+        match integer_value(self.word(tok)) {
+            Some(v) => v,
+            None => {
                 self.diags.push(Diagnostic::error(
                     self.span(tok.start, tok.end),
                     "integer literal out of range",
