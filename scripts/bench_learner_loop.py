@@ -4,21 +4,31 @@ ground, solve a one-step program and read the model (every true atom), with a fr
 each time. Lucent runs examples/learner_loop.rs (library calls through control::Control, built
 with the release-lto profile, mimalloc as its allocator);
 clingo runs Control(), add, ground, solve with the model's atoms read as symbols.
-Prints calls per second for both and the ratio.
+Prints calls per second for both and the ratio, and the CPU time per call of both (clingo's:
+this process's `time.process_time()` over its loop; Lucent's: the child's user+sys time).
 
-usage: scripts/bench_learner_loop.py [--n N] [PROGRAM]   (default benches/data/learner_step.lp)
+With --bin (repeatable), prebuilt learner_loop binaries (say main's and a branch's) run instead
+of building one, in --rounds rounds of clingo then each binary, so that a loaded machine's
+drift hits them alike.
+
+usage: scripts/bench_learner_loop.py [--n N] [--rounds R] [--bin BIN]... [PROGRAM]
+       (default benches/data/learner_step.lp)
 """
 import argparse
 import os
 import re
+import resource
 import subprocess
 import sys
 import time
 
 
 def clingo_loop(text, n):
+    """N calls of clingo's Python API: calls per second, seconds, atoms read (and, in
+    `clingo_loop.cpu`, the CPU seconds of the loop)."""
     import clingo
     atoms = 0
+    cpu = time.process_time()
     start = time.perf_counter()
     for _ in range(n):
         ctl = clingo.Control(["0"])
@@ -28,33 +38,60 @@ def clingo_loop(text, n):
             for model in handle:
                 atoms += len(model.symbols(atoms=True))
     secs = time.perf_counter() - start
+    clingo_loop.cpu = time.process_time() - cpu
     return n / secs, secs, atoms
+
+
+def lucent_run(exe, program, n):
+    """Runs one learner_loop binary: its output line, calls per second, CPU seconds."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    out = subprocess.run([exe, program, str(n)], capture_output=True, text=True,
+                         check=True).stdout
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    rate = float(re.search(r"calls_per_second=([0-9.]+)", out).group(1))
+    return out.strip(), rate, cpu
 
 
 def main():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     ap = argparse.ArgumentParser()
     ap.add_argument("--n", type=int, default=2000)
+    ap.add_argument("--rounds", type=int, default=1)
+    ap.add_argument("--bin", action="append", default=[],
+                    help="a prebuilt learner_loop binary (repeatable); nothing is built")
     ap.add_argument("program", nargs="?",
                     default=os.path.join(root, "benches", "data", "learner_step.lp"))
     a = ap.parse_args()
-    # The release-lto profile (Cargo.toml): release with fat LTO and one codegen unit.
-    subprocess.run(["cargo", "build", "--profile", "release-lto", "--quiet",
-                    "--no-default-features", "--example", "learner_loop"], cwd=root, check=True)
-    exe = os.path.join(root, "target", "release-lto", "examples", "learner_loop")
-    out = subprocess.run([exe, a.program, str(a.n)], capture_output=True, text=True,
-                         check=True).stdout
-    m = re.search(r"calls_per_second=([0-9.]+)", out)
-    lucent = float(m.group(1))
+    exes = a.bin
+    if not exes:
+        # The release-lto profile (Cargo.toml): release with fat LTO and one codegen unit.
+        subprocess.run(["cargo", "build", "--profile", "release-lto", "--quiet",
+                        "--no-default-features", "--example", "learner_loop"], cwd=root,
+                       check=True)
+        exes = [os.path.join(root, "target", "release-lto", "examples", "learner_loop")]
     with open(a.program) as fh:
         text = fh.read()
-    clingo_rate, secs, atoms = clingo_loop(text, a.n)
     import clingo
-    print(out.strip())
-    print("clingo-python {} calls={} seconds={:.3f} calls_per_second={:.1f} atoms_read={}".format(
-        clingo.__version__, a.n, secs, clingo_rate, atoms))
-    print("ratio lucent/clingo = {:.2f}".format(lucent / clingo_rate))
-
+    for r in range(a.rounds):
+        if a.rounds > 1 or a.bin:
+            print("round {} (load average {:.1f})".format(r, os.getloadavg()[0]))
+        runs = [lucent_run(exe, a.program, a.n) for exe in exes[:1]]
+        clingo_rate, secs, atoms = clingo_loop(text, a.n)
+        clingo_cpu = clingo_loop.cpu / a.n
+        runs += [lucent_run(exe, a.program, a.n) for exe in exes[1:]]
+        for exe, (out, rate, cpu) in zip(exes, runs):
+            if a.bin:
+                print(exe)
+            print(out)
+            print("lucent cpu_per_call_us={:.0f}".format(1e6 * cpu / a.n))
+        print("clingo-python {} calls={} seconds={:.3f} calls_per_second={:.1f} "
+              "atoms_read={} cpu_per_call_us={:.0f}".format(
+                  clingo.__version__, a.n, secs, clingo_rate, atoms, 1e6 * clingo_cpu))
+        for exe, (out, rate, cpu) in zip(exes, runs):
+            name = " ({})".format(exe) if a.bin else ""
+            print("ratio lucent/clingo = {:.2f}, cpu ratio clingo/lucent = {:.2f}{}".format(
+                rate / clingo_rate, clingo_cpu / (cpu / a.n), name))
 
 if __name__ == "__main__":
     sys.exit(main())

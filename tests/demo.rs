@@ -3,19 +3,14 @@
 //! and the plan in English, executes it in the physics world with replanning, and exits 0 when
 //! the goal was reached; its run is deterministic. Bad arguments are exit 1.
 
-use std::process::Command;
+#[path = "support/cli.rs"]
+mod cli_support;
 
+/// `lucent demo ARGS` (the binary).
 fn demo(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lucent"))
-        .arg("demo")
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
+    let mut all = vec!["demo"];
+    all.extend_from_slice(args);
+    cli_support::lucent_binary(&all, "")
 }
 
 #[cfg(feature = "sim")]

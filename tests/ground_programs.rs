@@ -13,9 +13,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use lucent::base::SourceMap;
-use lucent::ground::{aspif, ground, GroundConfig, Grounding};
-use lucent::syntax::ast::Dialect;
-use lucent::syntax::parse;
+use lucent::ground::{aspif, GroundConfig, Grounding};
 
 fn data_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/ground")
@@ -32,19 +30,12 @@ fn programs() -> Vec<PathBuf> {
     v
 }
 
+#[path = "support/ground.rs"]
+mod ground_support;
+
 fn ground_file(path: &Path) -> (Grounding, SourceMap) {
     let text = std::fs::read_to_string(path).expect("program");
-    let mut sources = SourceMap::new();
-    let id = sources.add(path.display().to_string(), text.clone());
-    let parsed = parse(id, &text, Dialect::Clingo);
-    assert!(!parsed.has_errors(), "{}: parse errors", path.display());
-    let g = ground(&parsed.program, Some(&sources), &GroundConfig::default());
-    assert!(
-        !g.diagnostics.has_errors(),
-        "{}",
-        g.diagnostics.render(&sources)
-    );
-    (g, sources)
+    ground_support::ground_text(&path.display().to_string(), &text, &GroundConfig::default())
 }
 
 fn tool(name: &str) -> Command {

@@ -10,26 +10,17 @@ use lucent::base::SourceMap;
 use lucent::ground::program::{
     AtomStatus, AuxKind, DeadReason, GroundProgram, Provenance, RuleOrigin,
 };
-use lucent::ground::{ground, text, GroundConfig, Grounding};
-use lucent::syntax::ast::Dialect;
-use lucent::syntax::parse;
+use lucent::ground::{text, GroundConfig, Grounding};
+
+#[path = "support/ground.rs"]
+mod ground_support;
 
 fn run(name: &str, src: &str, provenance: bool) -> (Grounding, SourceMap) {
-    let mut sources = SourceMap::new();
-    let id = sources.add(name, src);
-    let parsed = parse(id, src, Dialect::Clingo);
-    assert!(!parsed.has_errors(), "{name}: parse errors");
     let config = GroundConfig {
         provenance,
         ..GroundConfig::default()
     };
-    let g = ground(&parsed.program, Some(&sources), &config);
-    assert!(
-        !g.diagnostics.has_errors(),
-        "{}",
-        g.diagnostics.render(&sources)
-    );
-    (g, sources)
+    ground_support::ground_text(name, src, &config)
 }
 
 /// The `--text --provenance` form of `src`.

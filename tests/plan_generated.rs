@@ -1,11 +1,12 @@
 //! Generated planning tasks (DOMAIN.md 7.1) over both scene presets, a fixed subset of the
 //! 200-pair run of `examples/plan_generated.rs` (figures in
-//! docs/bench/plan-generated-2026-12-01.md): every distinct minimal plan the planner returns is
+//! docs/bench/plan-generated-2026-12-05.md): every distinct minimal plan the planner returns is
 //! optimal under the independent checks of `plan::check` (replay one transition at a time;
 //! L* and E* by a search over states) and, replayed in rapier without noise,
 //! succeeds at every action, reaches the goal and leaves every object stable.
-//! Also the regression behind the withdrawn first version of this test: the scene of `real`
-//! seed 1 was not at rest when posed (a rocking capsicum), and is settled before planning.
+//! Also the regression behind the withdrawn first version of this test: a generated scene not
+//! at rest (`simulated` seed 57's duck; first seen with `real` seed 1's capsicum) is settled
+//! before planning.
 #![cfg(feature = "sim")]
 
 #[path = "support/plan.rs"]
@@ -64,13 +65,15 @@ fn generated_tasks_of_both_presets_give_optimal_plans_that_work_in_physics() {
 
 #[test]
 fn a_scene_not_at_rest_is_settled_before_a_task_is_posed() {
-    // As generated (6 simulated seconds of settling), real seed 1's capsicum still rocks.
-    let mut scene = generate(&GenerateConfig::new(Preset::Real, 1)).unwrap();
-    assert_eq!(unstable_objects(&scene), vec!["red_capsicum".to_string()]);
+    // As generated (6 simulated seconds of settling), simulated seed 57's duck, fallen on its
+    // back, still rocks (real seed 1's capsicum did until it got a flat foot, 2026-12-05; of
+    // seeds 1-100 of both presets this is the one scene left that needs more settling).
+    let mut scene = generate(&GenerateConfig::new(Preset::Simulated, 57)).unwrap();
+    assert_eq!(unstable_objects(&scene), vec!["yellow_duck".to_string()]);
     assert!(settle_to_rest(&mut scene).is_empty());
     assert!(unstable_objects(&scene).is_empty());
     // The task is posed on the settled scene.
-    let (task, _) = generate_task(Preset::Real, 1).unwrap();
+    let (task, _) = generate_task(Preset::Simulated, 57).unwrap();
     assert!(unstable_objects(&task).is_empty());
     assert_eq!(
         Skip::NotAtRest(vec!["a".into()]).to_string(),

@@ -5,20 +5,14 @@
 //! too small end the run with `no_plan_within(H)` and exit 20.
 #![cfg(feature = "sim")]
 
-use std::process::Command;
-
 use lucent::plan::history::{Ending, History};
 
+#[path = "support/cli.rs"]
+mod cli_support;
+
+/// `lucent ARGS` (the binary).
 fn lucent(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lucent"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
+    cli_support::lucent_binary(args, "")
 }
 
 fn scratch(name: &str) -> std::path::PathBuf {

@@ -3,7 +3,7 @@
 //! 7.1): each reaches its goal in the world's ground truth, or ends with a recorded reason that
 //! the test prints; every discrepancy names a failure or a differing literal and is followed by
 //! a plan made at the next step; an episode is deterministic per seed. The 100-episode record is
-//! `scripts/episodes.py` (docs/bench/episodes-2026-12-01.md).
+//! `scripts/episodes.py` (docs/bench/episodes-2026-12-05.md).
 #![cfg(feature = "sim")]
 
 use lucent::plan::act::{run, Domain, RunConfig};

@@ -184,6 +184,19 @@ fn same_type(a: &Value, b: &Value) -> bool {
     std::mem::discriminant(a) == std::mem::discriminant(b)
 }
 
+/// What is wrong with setting switch `name` to `value` (by `set` or in a profile) among
+/// `switches`: an unknown name, or a value of another type than the switch's.
+fn setting_error(switches: &BTreeMap<String, Value>, name: &Name, value: &Value) -> Option<String> {
+    match switches.get(&name.text) {
+        None => Some(format!("unknown switch `{}`", name.text)),
+        Some(old) if !same_type(old, value) => Some(format!(
+            "switch `{}` takes values like `{old}`, not `{value}`",
+            name.text
+        )),
+        Some(_) => None,
+    }
+}
+
 /// Checks `desc` under `options`.
 pub fn check(desc: &Description, options: &Options) -> Checked {
     let mut c = Checked::default();
@@ -306,27 +319,14 @@ fn resolve_switches(desc: &Description, options: &Options, c: &mut Checked) {
             c.switches.insert(name.text.clone(), value.clone());
         }
     }
-    let assign = |c: &mut Checked, name: &Name, value: &Value| match c.switches.get(&name.text) {
-        None => err(
-            &mut c.diagnostics,
-            name.span,
-            format!("unknown switch `{}`", name.text),
-        ),
-        Some(old) if !same_type(old, value) => err(
-            &mut c.diagnostics,
-            name.span,
-            format!(
-                "switch `{}` takes values like `{old}`, not `{value}`",
-                name.text
-            ),
-        ),
-        Some(_) => {
-            c.switches.insert(name.text.clone(), value.clone());
-        }
-    };
     for s in &desc.statements {
         if let StatementKind::Set { name, value } = &s.kind {
-            assign(c, name, value);
+            match setting_error(&c.switches, name, value) {
+                Some(msg) => err(&mut c.diagnostics, name.span, msg),
+                None => {
+                    c.switches.insert(name.text.clone(), value.clone());
+                }
+            }
         }
     }
     // Every profile's switch settings must name known switches with values of their type.
@@ -335,21 +335,8 @@ fn resolve_switches(desc: &Description, options: &Options, c: &mut Checked) {
         if let StatementKind::Profile { items, .. } = &s.kind {
             for item in items {
                 if let ProfileItem::Set { name, value } = item {
-                    match known.get(&name.text) {
-                        None => err(
-                            &mut c.diagnostics,
-                            name.span,
-                            format!("unknown switch `{}`", name.text),
-                        ),
-                        Some(old) if !same_type(old, value) => err(
-                            &mut c.diagnostics,
-                            name.span,
-                            format!(
-                                "switch `{}` takes values like `{old}`, not `{value}`",
-                                name.text
-                            ),
-                        ),
-                        Some(_) => {}
+                    if let Some(msg) = setting_error(&known, name, value) {
+                        err(&mut c.diagnostics, name.span, msg);
                     }
                 }
             }

@@ -26,6 +26,12 @@ use super::simplify::{self, KNOWN_FACT, NUMBERED};
 use super::symbol::Symbols;
 use super::{GroundConfig, GroundProgram, Grounding};
 
+/// Symbols reserved per statement before a session's first grounding.
+const SYMBOLS_PER_STATEMENT: usize = 8;
+/// Ground rules (and atoms) reserved per rewritten statement before a session's first
+/// grounding.
+const RULES_PER_STATEMENT: usize = 4;
+
 /// The grounder's state across the groundings of one multi-shot program.
 #[derive(Default)]
 pub struct Session {
@@ -99,6 +105,11 @@ impl Session {
             ));
             return empty(diags, syms, Vec::new());
         }
+        if self.groundings == 0 {
+            // A first grounding makes a few symbols per statement at least (atoms, their
+            // arguments): reserved at once instead of rehashing the table from empty.
+            syms.reserve(SYMBOLS_PER_STATEMENT * program.statements.len());
+        }
         let (compiled, projections) = {
             let mut rw = rewrite::Rewriter::new(&mut syms, &mut diags, sources);
             rw.resume(self.preds.clone(), self.projections);
@@ -124,6 +135,9 @@ impl Session {
             config.provenance,
             limits,
         );
+        if self.groundings == 0 {
+            g.reserve(RULES_PER_STATEMENT * compiled.stmts.len());
+        }
         g.run(&compiled);
         g.release_dedup();
         let stopped = g.stopped;

@@ -102,6 +102,21 @@ impl Symbols {
         }
     }
 
+    /// Makes room for `n` more symbols (with two arguments each on average), so that a
+    /// grounding whose size is known roughly does not rehash the table as it grows.
+    pub fn reserve(&mut self, n: usize) {
+        let Symbols {
+            table,
+            data,
+            args,
+            hasher,
+            ..
+        } = self;
+        table.reserve(n, |&other| hasher.hash_one(key_from(data, args, other)));
+        data.reserve(n);
+        args.reserve(2 * n);
+    }
+
     /// Number of distinct symbols.
     pub fn len(&self) -> usize {
         self.data.len()

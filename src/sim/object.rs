@@ -89,6 +89,12 @@ impl ObjectKind {
         }
     }
 
+    /// True for the kinds that can roll on a flat surface (round in some direction): everything
+    /// but cubes, boxes and the four-legged pig. They get rolling resistance in `World`.
+    pub fn rolls(self) -> bool {
+        !matches!(self, ObjectKind::Cube | ObjectKind::Box | ObjectKind::Pig)
+    }
+
     /// Angular damping of the body. Rapier has no rolling resistance, so round objects get
     /// more damping, as felt balls and fruit on a table stop rolling within a second or two.
     pub fn rolling_damping(self) -> f32 {
@@ -121,6 +127,7 @@ impl ObjectKind {
             ]),
             ObjectKind::Duck => SharedShape::compound(vec![
                 (at(0.0, 0.0, 0.0), ellipsoid(0.5 * s, 0.3 * s, 0.35 * s)),
+                foot(0.12 * s, -0.3 * s, s),
                 (at(0.28 * s, 0.38 * s, 0.0), SharedShape::ball(0.18 * s)),
                 (
                     at(0.48 * s, 0.36 * s, 0.0),
@@ -130,6 +137,7 @@ impl ObjectKind {
             ]),
             ObjectKind::Apple => SharedShape::compound(vec![
                 (at(0.0, 0.0, 0.0), ellipsoid(0.5 * s, 0.42 * s, 0.5 * s)),
+                foot(0.16 * s, -0.42 * s, s),
                 (
                     at(0.0, 0.48 * s, 0.0),
                     SharedShape::cylinder(0.08 * s, 0.03 * s),
@@ -137,6 +145,7 @@ impl ObjectKind {
             ]),
             ObjectKind::Capsicum => SharedShape::compound(vec![
                 (at(0.0, 0.0, 0.0), lobed(0.5 * s, 0.45 * s)),
+                foot(0.24 * s, -0.45 * s, s),
                 (
                     at(0.0, 0.52 * s, 0.0),
                     SharedShape::cylinder(0.1 * s, 0.04 * s),
@@ -183,6 +192,20 @@ impl ObjectKind {
             ),
         }
     }
+}
+
+/// A flat foot under a hull whose lowest point is at height `bottom`: a thin square plate of
+/// half width `half_width` whose underside lies `0.03 * s` below that point, so the object
+/// stands on the plate. A faceted hull resting on its pole vertex or on a many-sided face never
+/// came to rest in rapier (an upright capsicum slid 2-30 mm per 2 s at some yaws, apples and
+/// ducks rocked on their pole), and a disc foot slid too; a box face rests like a cube's. Real
+/// fruit and rubber ducks have a flattened base.
+fn foot(half_width: f32, bottom: f32, s: f32) -> (Pose, SharedShape) {
+    let half = 0.03 * s;
+    (
+        Pose::from_translation(Vector::new(0.0, bottom - 0.03 * s + half, 0.0)),
+        SharedShape::cuboid(half_width, half, half_width),
+    )
 }
 
 /// A convex hull approximating an ellipsoid with semi-axes `a`, `b`, `c` (x, y, z).

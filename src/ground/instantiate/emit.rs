@@ -190,7 +190,8 @@ impl Grounder<'_> {
     }
 
     pub(super) fn emit_rule_inner(&mut self, stmt: &NStmt, ctx: &mut Ctx) {
-        let mut head: Vec<AtomId> = Vec::new();
+        // Most heads have a few atoms: no allocation for them.
+        let mut head: SmallVec<[AtomId; 8]> = SmallVec::new();
         let mut extra_choices: Vec<(AtomId, Vec<Lit>)> = Vec::new();
         let mut elems: Vec<ElemInstance> = Vec::new();
         let is_choice = matches!(stmt.head, NHead::Choice(_));
@@ -326,8 +327,8 @@ impl Grounder<'_> {
                     |g| g.origin(stmt, ctx),
                 );
             }
-            let facts = (self.provenance && !self.naive).then(|| head.clone());
-            head.retain(|&a| !self.info(a).fact);
+            let facts = (self.provenance && !self.naive).then(|| head.to_vec());
+            head.retain(|a| !self.info(*a).fact);
             if head.is_empty() {
                 // A choice among facts: satisfied (with provenance, kept as removed).
                 if let Some((f, facts)) = facts.and_then(|h| Some((*h.first()?, h))) {
@@ -343,11 +344,11 @@ impl Grounder<'_> {
             for &a in &head {
                 self.derive(a);
             }
-            self.add_rule(
-                Rule {
+            self.add_rule_ref(
+                RuleRef {
                     head_kind: HeadKind::Choice,
-                    head,
-                    body: Body::Normal(ctx.body.clone()),
+                    head: &head,
+                    body: BodyRef::Normal(&ctx.body),
                 },
                 |g| g.origin(stmt, ctx),
             );
@@ -361,7 +362,7 @@ impl Grounder<'_> {
             } else if self.provenance && !self.naive {
                 let origin = self.origin(stmt, ctx);
                 self.dead.push(DeadRule {
-                    head,
+                    head: head.to_vec(),
                     origins: vec![origin],
                     why: DeadReason::HeadFact(f),
                 });
@@ -385,11 +386,11 @@ impl Grounder<'_> {
         if head.len() == 1 && ctx.body.is_empty() && !self.naive {
             self.atoms[head[0] as usize - 1].fact = true;
         }
-        self.add_rule(
-            Rule {
+        self.add_rule_ref(
+            RuleRef {
                 head_kind: HeadKind::Disjunction,
-                head,
-                body: Body::Normal(ctx.body.clone()),
+                head: &head,
+                body: BodyRef::Normal(&ctx.body),
             },
             |g| g.origin(stmt, ctx),
         );

@@ -48,8 +48,8 @@ use crate::base::{Diagnostic, Diagnostics, SourceMap, Span, WarningKind};
 use crate::syntax::ast::{AggregateFunction, CmpOp, Sign};
 
 use super::program::{
-    AuxKind, Bindings, Body, DeadReason, DeadRule, ExternalValue, HeadKind, HeuristicModifier, Lit,
-    Origin, RemovedLit, Rule, RuleOrigin, Rules, Weight,
+    AuxKind, Bindings, Body, BodyRef, DeadReason, DeadRule, ExternalValue, HeadKind,
+    HeuristicModifier, Lit, Origin, RemovedLit, Rule, RuleOrigin, RuleRef, Rules, Weight,
 };
 use super::rewrite::{
     lit_vars, Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
@@ -545,6 +545,15 @@ impl<'a> Grounder<'a> {
         }
     }
 
+    /// Makes room for `n` ground rules (and as many atoms) before instantiation, so that a
+    /// small program's tables do not rehash as they grow from empty.
+    pub fn reserve(&mut self, n: usize) {
+        let hashes = &self.rule_hashes;
+        self.rule_set.reserve(n, |&i| hashes[i as usize]);
+        self.rule_hashes.reserve(n);
+        self.atoms.reserve(n);
+    }
+
     /// Frees the rule deduplication table once instantiation is over (simplification does
     /// not add rules through [`Grounder::add_rule`]); large programs need the memory.
     pub fn release_dedup(&mut self) {
@@ -555,12 +564,21 @@ impl<'a> Grounder<'a> {
     /// Adds a ground rule unless an equal one exists; returns whether it was added. With
     /// provenance, `origin` is recorded for the rule, also when it existed already.
     fn add_rule(&mut self, rule: Rule, origin: impl FnOnce(&mut Self) -> Origin) -> bool {
+        self.add_rule_ref(rule.as_ref(), origin)
+    }
+
+    /// [`Grounder::add_rule`] for a rule given by slices (no owned copy is made unless the
+    /// rule is new, and then only into the rule store).
+    fn add_rule_ref(
+        &mut self,
+        rule: RuleRef<'_>,
+        origin: impl FnOnce(&mut Self) -> Origin,
+    ) -> bool {
         assert_eq!(
             self.rule_hashes.len(),
             self.rules.len(),
             "add_rule after release_dedup"
         );
-        let rule = rule.as_ref();
         let hash = self.hasher.hash_one(rule);
         let rules = &self.rules;
         if let Some(&i) = self.rule_set.find(hash, |&i| rules.get(i as usize) == rule) {

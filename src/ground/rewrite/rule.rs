@@ -326,13 +326,14 @@ impl Rewriter<'_> {
                 g[v as usize] = true;
             }
         };
+        let mut vs = Vec::new();
         for l in &body {
             match l {
                 NLit::Agg(a) => a.guards.iter().for_each(|(_, t)| mark(t, &mut global)),
                 other => {
-                    let mut vs = Vec::new();
+                    vs.clear();
                     lit_vars(other, &mut vs);
-                    for v in vs {
+                    for &v in &vs {
                         global[v as usize] = true;
                     }
                 }
