@@ -14,6 +14,7 @@ cargo build --release --quiet
 mkdir -p "$out"
 cmd=(target/release/lucent experiment all --seed "$seed" --out "$out" "$@")
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 start=$(date +%s%N)
 if [ -x /usr/bin/time ]; then
   /usr/bin/time -o "$out/.time" -f '%U %S %M' "${cmd[@]}" >/dev/null
@@ -29,7 +30,7 @@ wall="$((ms / 1000)).$(printf %03d $((ms % 1000)))"
 {
   echo "command: ${cmd[*]}"
   echo "machine: $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), load average before: ${load_before}, after: $(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  echo "commit: ${commit}"
   echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   echo "wall time: ${wall} s; user CPU ${user} s, system ${sys} s, max RSS ${rss} KB"
   echo "trials reused from an earlier run: see the 'experiment:' line on standard error"
