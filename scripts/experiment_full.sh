@@ -13,16 +13,25 @@ out=docs/experiments
 cargo build --release --quiet
 mkdir -p "$out"
 cmd=(target/release/lucent experiment all --seed "$seed" --out "$out" "$@")
+load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 start=$(date +%s%N)
-"${cmd[@]}" >/dev/null
+if [ -x /usr/bin/time ]; then
+  /usr/bin/time -o "$out/.time" -f '%U %S %M' "${cmd[@]}" >/dev/null
+else
+  "${cmd[@]}" >/dev/null
+  echo "? ? ?" > "$out/.time"
+fi
 end=$(date +%s%N)
+read -r user sys rss < "$out/.time"
+rm -f "$out/.time"
 ms=$(( (end - start) / 1000000 ))
 wall="$((ms / 1000)).$(printf %03d $((ms % 1000)))"
 {
   echo "command: ${cmd[*]}"
-  echo "machine: $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "machine: $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), load average before: ${load_before}, after: $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)"
   echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
-  echo "wall time: ${wall} s"
+  echo "wall time: ${wall} s; user CPU ${user} s, system ${sys} s, max RSS ${rss} KB"
   echo "trials reused from an earlier run: see the 'experiment:' line on standard error"
 } > "$out/command.txt"
 cat "$out/command.txt"

@@ -16,7 +16,7 @@ use crate::learn::kb::KbSpec;
 
 const HELP_LEARN: &str = "\
 usage: lucent learn [--kb FILE.ald] [--seed N] [--run I] [--episodes N] [-o FILE] [--tables DIR]
-                    [--outf=0|2]
+                    [--oracle kb_full|physics] [--outf=0|2]
 
 One axiom-learning run (DOMAIN.md section 5): random one-step trials against the oracle
 (KB_full with the learner's switches), a learner knowledge base with the `learner` profile,
@@ -31,6 +31,8 @@ of `lucent experiment h1 --seed N` (default 0).
   --count-every-trial  end the run after 100 quiet trials of any kind (DOMAIN.md 5.2 as
                    written); by default only trials whose action the learner takes to be
                    executable count
+  --oracle kb_full|physics  the oracle: KB_full (default) or the physics world (feature
+                   `sim`), as `lucent experiment h1 --oracle` runs it
 ";
 
 struct Args {
@@ -44,6 +46,7 @@ struct Args {
     code_balance: bool,
     code_samples: bool,
     count_every_trial: bool,
+    oracle: h1::Oracle,
     help: bool,
 }
 
@@ -59,6 +62,7 @@ fn parse(args: &[String]) -> Result<Args, String> {
         code_balance: false,
         code_samples: false,
         count_every_trial: false,
+        oracle: h1::Oracle::KbFull,
         help: false,
     };
     let mut words = super::options::VerbArgs::new(args);
@@ -81,6 +85,12 @@ fn parse(args: &[String]) -> Result<Args, String> {
             "--code-balance" => out.code_balance = true,
             "--code-samples" => out.code_samples = true,
             "--count-every-trial" => out.count_every_trial = true,
+            "--oracle" => {
+                let name = value()?;
+                out.oracle = h1::Oracle::parse(&name)
+                    .ok_or_else(|| format!("unknown oracle '{name}' (kb_full or physics)"))?;
+                out.oracle.availability()?;
+            }
             _ => return Err(format!("unknown option '{a}'")),
         }
     }
@@ -145,7 +155,13 @@ pub fn run_learn(
         return Ok(super::EXIT_INPUT);
     };
     let start = Instant::now();
-    let report = match h1::one_run(&spec, &config(&args), h1::run_seed(args.seed, args.run)) {
+    let report = match h1::one_run_with(
+        &spec,
+        &config(&args),
+        h1::run_seed(args.seed, args.run),
+        args.oracle,
+        &h1::Caches::default(),
+    ) {
         Ok(r) => r,
         Err(e) => {
             writeln!(err, "*** ERROR: (lucent): {e}")?;

@@ -108,8 +108,9 @@ pub struct Setup {
 
 /// The current trial design: 1 when H3 and H4 took H2's (scene, goal) pairs (before, one scene
 /// per trial was drawn from the trial's seed); 2 when a learning run's detection phase counted
-/// only the trials the learner would act in (`LearnConfig::count_every_trial`).
-pub const DESIGN: u32 = 2;
+/// only the trials the learner would act in (`LearnConfig::count_every_trial`); 3 when
+/// collection waited for rare negatives (`learn::state::Collector::stall_window`).
+pub const DESIGN: u32 = 3;
 
 impl Setup {
     /// The paper's sizes with the given seed.

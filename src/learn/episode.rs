@@ -10,9 +10,11 @@
 //! (5.9) that decays after every episode and is refreshed when the axiom is learned again or
 //! applies in a trial's answer set (the learner acts on it).
 //!
-//! Two rules of ours keep an episode finite and informative: collection also ends after
-//! `stall_trials` consecutive trials that add no sample (then a dataset whose positives reached
-//! the cap is learned from, causal laws first), and it never exceeds `max_collect_trials`.
+//! Two rules of ours keep an episode finite and informative: collection also ends after a
+//! stall, `stall_trials` consecutive trials that add no sample, or longer while a dataset waits
+//! for a rare class (five mean gaps between its samples, at most `stall_max`,
+//! `Collector::stall_window`); then a dataset whose positives reached the cap is learned from,
+//! causal laws first. It never exceeds `max_collect_trials`.
 //!
 //! Invariants: a run is a function of (seed, oracle, learner's initial knowledge, config); the
 //! only randomness is the run's generator and the ensemble's seeds derived from it.
@@ -79,8 +81,14 @@ pub struct LearnConfig {
     pub max_detect_trials: usize,
     /// Collection and class balance.
     pub collect: CollectConfig,
-    /// Consecutive trials without a new sample that end collection.
+    /// Consecutive trials without a new sample that end collection, at least (see
+    /// `Collector::stall_window`).
     pub stall_trials: usize,
+    /// While a capped dataset still wants negatives, collection waits this many mean gaps
+    /// between them before it ends (`Collector::stall_window`).
+    pub stall_factor: f64,
+    /// The longest stall window (`Collector::stall_window`).
+    pub stall_max: usize,
     /// Hard bound on the trials of one collection.
     pub max_collect_trials: usize,
     /// The ensemble.
@@ -100,6 +108,8 @@ impl Default for LearnConfig {
             max_detect_trials: 2000,
             collect: CollectConfig::default(),
             stall_trials: 100,
+            stall_factor: 5.0,
+            stall_max: 500,
             max_collect_trials: 5000,
             ensemble: EnsembleParams::default(),
             pools: Pools::h1(),
@@ -242,15 +252,24 @@ pub fn run(
                 ActionType::Putdown
             };
             let s = generate(&config.pools, ty, &mut rng);
-            let (outcome, data) = trial(oracle, learner, &mut report.store, &s, &robot, false);
+            // Under `informative_only` a trial whose action the learner forbids is no surprise
+            // to learn from whatever the oracle says: no dataset takes a sample of it, so an
+            // episode it started would collect nothing (a physics world that stacks onto a
+            // covered object, which E1 forbids, started five such episodes in run 1 of seed
+            // 0). The oracle is asked only when its answer matters: for a trial the learner
+            // acts in, or to tell whether a forbidden one is quiet under `count_every_trial`.
+            let informative = config.collect.informative_only;
+            let skip = informative && !config.count_every_trial;
+            let (outcome, data) = trial(oracle, learner, &mut report.store, &s, &robot, skip);
             report.trials += 1;
-            if outcome.surprising() {
+            let learnable = !informative || outcome.learner_executable;
+            if outcome.surprising() && learnable {
                 ep.detected_at = Some(t);
                 ep.surprise = describe(&s.action, &outcome);
                 detected = Some((ty, outcome, data));
                 break;
             }
-            if config.count_every_trial || outcome.learner_executable {
+            if outcome.learner_executable || (config.count_every_trial && !outcome.surprising()) {
                 quiet += 1;
             }
             t += 1;
@@ -267,7 +286,8 @@ pub fn run(
         let mut t = 1;
         while collector.full().is_none()
             && t < config.max_collect_trials
-            && since_last < config.stall_trials
+            && since_last
+                < collector.stall_window(config.stall_trials, config.stall_factor, config.stall_max)
         {
             let s = generate(&config.pools, ty, &mut rng);
             let (outcome, data) = trial(

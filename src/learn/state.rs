@@ -236,6 +236,13 @@ pub struct Collector {
     pub cl: Samples,
     /// The EC dataset.
     pub ec: Samples,
+    /// Trials offered so far that would have been a label-1 sample of (CL, EC) had the
+    /// dataset wanted one, wanted or not: the rate at which positives arrive.
+    pub positives_seen: [usize; 2],
+    /// Likewise for label-0 samples.
+    pub negatives_seen: [usize; 2],
+    /// Trials offered so far.
+    pub offered: usize,
 }
 
 impl Collector {
@@ -272,6 +279,40 @@ impl Collector {
         }
     }
 
+    /// How many consecutive trials without a new sample end collection [ours]: `base`, or
+    /// `factor` times the mean gap (trials offered per would-be sample) of the rarest class a
+    /// dataset that is not full still wants (positives below the cap; negatives by
+    /// [`Self::wants_negative`]), whichever is longer; a class seen fewer than twice has no
+    /// rate yet and does not count. Why: a sample that arrives once in 50 trials is given up
+    /// after 100 quiet trials in 13% of episodes. E2's negatives (an executable putdown of the
+    /// held object, ~1.3% of putdown trials before C2 is known) were, in run 16 of seed 0: the
+    /// dataset kept 3 negatives, fewer than CART's `min_samples_leaf`, so no tree could split
+    /// on `-in_hand(R1, O1)` and 85 of 100 learned `if above(O1, O3)` instead. A class never
+    /// seen (CL negatives while every executable putdown surprises, before C2 is known) still
+    /// ends collection after `base`. The window never exceeds `max` (a class seen twice in
+    /// thousands of trials, as the physics world's rare outcomes are, would otherwise hold an
+    /// episode for thousands more).
+    pub fn stall_window(&self, base: usize, factor: f64, max: usize) -> usize {
+        let cap = self.cap();
+        let mut window = base;
+        for (i, d) in [&self.cl, &self.ec].into_iter().enumerate() {
+            if d.len() >= self.config.size {
+                continue;
+            }
+            let wanted = [
+                (d.positives() < cap, self.positives_seen[i]),
+                (self.wants_negative(d), self.negatives_seen[i]),
+            ];
+            for (wants, seen) in wanted {
+                if wants && seen >= 2 {
+                    let gap = self.offered as f64 / seen as f64;
+                    window = window.max((factor * gap).ceil() as usize);
+                }
+            }
+        }
+        window.min(max.max(base))
+    }
+
     /// Offers trial `trial` with its outcome; returns the datasets that took a sample.
     pub fn offer(&mut self, trial: usize, outcome: &Outcome) -> Vec<(Dataset, bool)> {
         let mut added = Vec::new();
@@ -281,6 +322,17 @@ impl Collector {
         let informative = self.config.informative_only;
         let cl_ok = !informative || (outcome.learner_executable && outcome.oracle_executable);
         let ec_ok = !informative || outcome.learner_executable;
+        self.offered += 1;
+        if cl_ok && !outcome.unexpected.is_empty() {
+            self.positives_seen[0] += 1;
+        } else if cl_ok && !outcome.surprising() {
+            self.negatives_seen[0] += 1;
+        }
+        if ec_ok && !outcome.extra.is_empty() {
+            self.positives_seen[1] += 1;
+        } else if ec_ok {
+            self.negatives_seen[1] += 1;
+        }
         let cap = self.cap();
         if !outcome.unexpected.is_empty() && self.cl.positives() < cap && cl_ok {
             // Case 1: a missing causal law; the action was executable, so EC gets a label 0.
@@ -477,5 +529,52 @@ mod tests {
             c.offer(2, &outcome(false, false, true, true)),
             vec![(Dataset::Cl, false), (Dataset::Ec, false)]
         );
+    }
+
+    /// The stall window with T = 10 (cap 6), by hand. EC takes 6 positives (6 offered, 6
+    /// positives seen: 5 * 6 / 6 = 5 < 100); 44 trials the learner forbids (nothing seen);
+    /// 2 consistent trials, negatives for both (EC takes them: 8 samples, 6 positive). EC
+    /// wants negatives (positives at the cap), seen 2 in 52: 5 * 52 / 2 = 130. CL wants
+    /// positives too but has seen none, and negatives, seen 2: also 130.
+    #[test]
+    fn the_stall_window_follows_the_rarest_wanted_class() {
+        let config = CollectConfig {
+            size: 10,
+            ..CollectConfig::default()
+        };
+        let mut c = Collector::new(config.clone());
+        for t in 0..6 {
+            c.offer(t, &outcome(false, true, true, false));
+        }
+        assert_eq!(c.stall_window(100, 5.0, 500), 100);
+        for t in 6..50 {
+            c.offer(t, &outcome(false, false, false, false));
+        }
+        assert_eq!(c.offer(50, &outcome(false, false, true, true)).len(), 2);
+        c.offer(51, &outcome(false, false, true, true));
+        assert_eq!(c.offered, 52);
+        assert_eq!((c.positives_seen, c.negatives_seen), ([0, 6], [2, 2]));
+        assert_eq!((c.ec.len(), c.ec.positives()), (8, 6));
+        assert_eq!(c.stall_window(100, 5.0, 500), 130);
+        assert_eq!(c.stall_window(200, 5.0, 500), 200);
+        // A causal-law dataset capped without a negative ever seen keeps the base window (EC
+        // has 4 samples and no positive: it wants none of the negatives it sees, 0 < 4 free
+        // is false once it holds 4).
+        let mut d = Collector::new(config.clone());
+        for t in 0..60 {
+            d.offer(t, &outcome(true, false, true, true));
+        }
+        assert_eq!((d.positives_seen, d.negatives_seen), ([60, 0], [0, 60]));
+        assert_eq!((d.cl.positives(), d.ec.len()), (6, 4));
+        assert_eq!(d.stall_window(100, 5.0, 500), 100);
+        // Rare positives: 2 causal-law surprises in 80 trials (the rest consistent). CL has
+        // 2 positives (< 6) and 3 negatives: it wants positives, seen 2 in 80: 5 * 40 = 200.
+        let mut e = Collector::new(config);
+        for t in 0..80 {
+            e.offer(t, &outcome(t % 40 == 0, false, true, true));
+        }
+        assert_eq!((e.cl.len(), e.cl.positives()), (5, 2));
+        assert_eq!(e.stall_window(100, 5.0, 500), 200);
+        assert_eq!(e.stall_window(100, 5.0, 150), 150, "at most max");
     }
 }
