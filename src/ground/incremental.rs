@@ -141,7 +141,7 @@ impl Session {
         g.run(&compiled);
         g.release_dedup();
         let stopped = g.stopped;
-        let fin = simplify::finish_after(&mut g, &compiled, &self.flags, &self.prefer);
+        let mut fin = simplify::finish_after(&mut g, &compiled, &self.flags, &self.prefer);
         // What the next grounding starts from: the atoms this one numbered are frozen (and in
         // their domains, as the one-shot context of facts and externals had them), its facts
         // are facts for good.
@@ -161,26 +161,14 @@ impl Session {
         self.preds = compiled.preds;
         self.projections = projections;
         self.groundings += 1;
-        if let Some(reason) = stopped {
-            diags.push(super::stopped_error(reason, &statement_spans));
-        }
-        let error = diags.has_errors();
-        if error {
+        let gatoms = std::mem::take(&mut fin.atom_gatoms);
+        let grounding = super::finished(fin, diags, statement_spans, syms, stopped);
+        if grounding.diagnostics.has_errors() {
             self.spent = true;
+            self.last_gatoms = Vec::new();
+        } else {
+            self.last_gatoms = gatoms;
         }
-        self.last_gatoms = if error { Vec::new() } else { fin.atom_gatoms };
-        Grounding {
-            program: if error {
-                GroundProgram::new()
-            } else {
-                fin.program
-            },
-            diagnostics: diags,
-            atom_syms: if error { Vec::new() } else { fin.atom_syms },
-            fact_syms: fin.fact_syms,
-            statement_spans,
-            symbols: syms,
-            stopped,
-        }
+        grounding
     }
 }

@@ -180,6 +180,18 @@ pub fn ground(
     let fin = simplify::finish(&mut g, &compiled);
     let syms = std::mem::take(&mut g.syms);
     drop(g);
+    finished(fin, diags, statement_spans, syms, stopped)
+}
+
+/// The [`Grounding`] of a finished instantiation, one-shot or incremental: the limit error added
+/// when it `stopped`, and no program nor atom names when any error was reported.
+fn finished(
+    fin: simplify::Finished,
+    mut diags: Diagnostics,
+    statement_spans: Vec<Span>,
+    symbols: symbol::Symbols,
+    stopped: Option<StopReason>,
+) -> Grounding {
     if let Some(reason) = stopped {
         diags.push(stopped_error(reason, &statement_spans));
     }
@@ -194,7 +206,7 @@ pub fn ground(
         atom_syms: if error { Vec::new() } else { fin.atom_syms },
         fact_syms: fin.fact_syms,
         statement_spans,
-        symbols: syms,
+        symbols,
         stopped,
     }
 }
