@@ -5,6 +5,7 @@
 
 use hashbrown::{DefaultHashBuilder, HashTable};
 use std::hash::BuildHasher;
+use std::sync::Arc;
 
 /// An interned string.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -17,7 +18,7 @@ pub struct Interner {
     table: HashTable<Sym>,
     hasher: DefaultHashBuilder,
     /// String of each id.
-    strings: Vec<Box<str>>,
+    strings: Vec<Arc<str>>,
 }
 
 impl std::fmt::Debug for Interner {
@@ -63,6 +64,12 @@ impl Interner {
     /// The string of `sym`.
     pub fn resolve(&self, sym: Sym) -> &str {
         &self.strings[sym.0 as usize]
+    }
+
+    /// The string of `sym`, shared: a clone of the interner's own copy (no allocation), for
+    /// values that outlive the interner (`control::Symbol` names).
+    pub fn resolve_shared(&self, sym: Sym) -> Arc<str> {
+        Arc::clone(&self.strings[sym.0 as usize])
     }
 
     /// Number of interned strings.

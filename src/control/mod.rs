@@ -79,7 +79,7 @@ use crate::syntax::ast::{self, Dialect, Program, Statement, StatementKind};
 
 use model::Names;
 pub use model::{Model, OwnedModel};
-pub use symbol::{ParseSymbolError, Symbol};
+pub use symbol::{Name, ParseSymbolError, Symbol};
 
 /// An atom of the ground program, as the solver numbers it (aspif's numbering, from 1).
 pub type AtomId = u32;

@@ -12,8 +12,11 @@
 //!   function with the empty name.
 //! - Conversion to and from the grounder's hash-consed table is exact in both directions.
 
+use std::borrow::Borrow;
 use std::cmp::Ordering;
 use std::fmt;
+use std::ops::Deref;
+use std::sync::Arc;
 
 use crate::ground::symbol::{SymData, SymId, Symbols};
 use crate::syntax::ast;
@@ -28,7 +31,7 @@ pub enum Symbol {
     /// A function term, a constant (no arguments) or a tuple (empty name).
     Function {
         /// The name; empty for tuples.
-        name: String,
+        name: Name,
         /// The arguments.
         args: Vec<Symbol>,
         /// Classical negation: `-f(1)`.
@@ -38,6 +41,111 @@ pub enum Symbol {
     Inf,
     /// `#sup`, greater than every other symbol.
     Sup,
+}
+
+/// The name of a function symbol: shared text, so that a name read from the grounder's table
+/// (every atom of every model) or cloned is not copied. It compares, hashes, orders and prints
+/// as its `str` (`Debug` included), so it stands where a `String` stood:
+/// `Symbol::function("p", ..)`, `name == "p"`, `&*name`, `name.as_str()`.
+#[derive(Clone, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
+pub struct Name(Arc<str>);
+
+impl Name {
+    /// The text.
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+}
+
+impl Deref for Name {
+    type Target = str;
+    fn deref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl AsRef<str> for Name {
+    fn as_ref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl Borrow<str> for Name {
+    fn borrow(&self) -> &str {
+        &self.0
+    }
+}
+
+impl fmt::Debug for Name {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(&*self.0, f)
+    }
+}
+
+impl fmt::Display for Name {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl From<&str> for Name {
+    fn from(s: &str) -> Name {
+        Name(Arc::from(s))
+    }
+}
+
+impl From<String> for Name {
+    fn from(s: String) -> Name {
+        Name(Arc::from(s))
+    }
+}
+
+impl From<&String> for Name {
+    fn from(s: &String) -> Name {
+        Name(Arc::from(s.as_str()))
+    }
+}
+
+impl From<Arc<str>> for Name {
+    fn from(s: Arc<str>) -> Name {
+        Name(s)
+    }
+}
+
+impl From<Name> for String {
+    fn from(n: Name) -> String {
+        n.0.to_string()
+    }
+}
+
+impl PartialEq<str> for Name {
+    fn eq(&self, other: &str) -> bool {
+        &*self.0 == other
+    }
+}
+
+impl PartialEq<&str> for Name {
+    fn eq(&self, other: &&str) -> bool {
+        &*self.0 == *other
+    }
+}
+
+impl PartialEq<String> for Name {
+    fn eq(&self, other: &String) -> bool {
+        *self.0 == **other
+    }
+}
+
+impl PartialEq<Name> for str {
+    fn eq(&self, other: &Name) -> bool {
+        self == &*other.0
+    }
+}
+
+impl PartialEq<Name> for &str {
+    fn eq(&self, other: &Name) -> bool {
+        *self == &*other.0
+    }
 }
 
 /// Why [`Symbol::parse`] rejected a text.
@@ -62,12 +170,12 @@ impl Symbol {
     }
 
     /// The constant `name`.
-    pub fn constant(name: impl Into<String>) -> Symbol {
+    pub fn constant(name: impl Into<Name>) -> Symbol {
         Symbol::function(name, Vec::new())
     }
 
     /// The function `name(args)` (positive).
-    pub fn function(name: impl Into<String>, args: Vec<Symbol>) -> Symbol {
+    pub fn function(name: impl Into<Name>, args: Vec<Symbol>) -> Symbol {
         Symbol::Function {
             name: name.into(),
             args,
@@ -167,7 +275,7 @@ impl Symbol {
             SymData::Num(n) => Symbol::Number(n),
             SymData::Str(s) => Symbol::String(syms.names.resolve(s).to_string()),
             SymData::Fun { name, neg, .. } => Symbol::Function {
-                name: syms.names.resolve(name).to_string(),
+                name: Name(syms.names.resolve_shared(name)),
                 args: syms
                     .args(id)
                     .iter()
@@ -236,7 +344,7 @@ impl Symbol {
                 let f = ast::Term {
                     span: Default::default(),
                     kind: ast::TermKind::Function {
-                        name: name.clone(),
+                        name: name.to_string(),
                         args: vec![args.iter().map(Symbol::to_term).collect()],
                         trailing_comma: name.is_empty() && args.len() == 1,
                     },

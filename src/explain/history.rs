@@ -123,8 +123,8 @@ impl History {
         for lit in oracle.true_literals() {
             if let Some("has_size" | "has_surface" | "object") = lit.name() {
                 if let Some(Symbol::Function { name, args, .. }) = lit.arg(0) {
-                    if args.is_empty() && !out.contains(name) {
-                        out.push(name.clone());
+                    if args.is_empty() && !out.iter().any(|o| *name == *o) {
+                        out.push(name.to_string());
                     }
                 }
             }

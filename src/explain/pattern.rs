@@ -247,7 +247,7 @@ impl Pattern {
                 args,
                 negative,
             } => Symbol::Function {
-                name: name.clone(),
+                name: name.into(),
                 args: args
                     .iter()
                     .map(Pattern::to_symbol)
@@ -327,7 +327,7 @@ impl From<&Symbol> for Pattern {
                 args,
                 negative,
             } => Pattern::Fun {
-                name: name.clone(),
+                name: name.to_string(),
                 args: args.iter().map(Pattern::from).collect(),
                 negative: *negative,
             },

@@ -75,7 +75,7 @@ impl<'a> Verbalizer<'a> {
             Symbol::Number(n) => n.to_string(),
             Symbol::String(s) => s.clone(),
             Symbol::Function { name, args, .. } if args.is_empty() && !name.is_empty() => {
-                if let Some(words) = self.lexicon.names.get(name) {
+                if let Some(words) = self.lexicon.names.get(name.as_str()) {
                     return words.clone();
                 }
                 let mut parts: Vec<&str> = name.split('_').filter(|p| !p.is_empty()).collect();

@@ -15,7 +15,6 @@
 //!   hash-consing table holds too.
 
 use std::cmp::Ordering;
-use std::hash::{BuildHasher, Hash};
 
 use hashbrown::HashTable;
 
@@ -58,10 +57,8 @@ pub struct Symbols {
     data: Vec<SymData>,
     /// Argument arena: the arguments of `Fun` nodes, contiguous per node.
     args: Vec<SymId>,
-    /// Hash-consing table over `data`.
+    /// Hash-consing table over `data`, hashed by [`key_hash`].
     table: HashTable<SymId>,
-    /// Hasher for the table.
-    hasher: hashbrown::DefaultHashBuilder,
     /// Id of each small integer, at index `small_index(n)` (`u32::MAX` when not created yet);
     /// grown on demand, so a table that only sees small numbers stays small.
     small: Vec<u32>,
@@ -97,7 +94,6 @@ impl Symbols {
             data: Vec::new(),
             args: Vec::new(),
             table: HashTable::new(),
-            hasher: hashbrown::DefaultHashBuilder::default(),
             small: Vec::new(),
         }
     }
@@ -106,13 +102,9 @@ impl Symbols {
     /// grounding whose size is known roughly does not rehash the table as it grows.
     pub fn reserve(&mut self, n: usize) {
         let Symbols {
-            table,
-            data,
-            args,
-            hasher,
-            ..
+            table, data, args, ..
         } = self;
-        table.reserve(n, |&other| hasher.hash_one(key_from(data, args, other)));
+        table.reserve(n, |&other| key_hash(&key_from(data, args, other)));
         data.reserve(n);
         args.reserve(2 * n);
     }
@@ -149,7 +141,7 @@ impl Symbols {
     }
 
     fn hash_key(&self, kind: &KeyRef<'_>) -> u64 {
-        self.hasher.hash_one(kind)
+        key_hash(kind)
     }
 
     fn key_of(&self, id: SymId) -> KeyRef<'_> {
@@ -186,15 +178,9 @@ impl Symbols {
         };
         self.data.push(data);
         let Symbols {
-            table,
-            data,
-            args,
-            hasher,
-            ..
+            table, data, args, ..
         } = self;
-        table.insert_unique(hash, id, |&other| {
-            hasher.hash_one(key_from(data, args, other))
-        });
+        table.insert_unique(hash, id, |&other| key_hash(&key_from(data, args, other)));
         id
     }
 
@@ -394,13 +380,40 @@ impl Symbols {
 }
 
 /// A borrowed view of a node, for hashing and lookup before insertion.
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, PartialEq, Eq)]
 enum KeyRef<'a> {
     Inf,
     Sup,
     Num(i32),
     Str(Sym),
     Fun(Sym, bool, &'a [SymId]),
+}
+
+/// The hash of a node: a multiplicative mix of its words (the kind, name and sign in one
+/// word, then each argument id), finished by folding the high half into the low one. The
+/// keys are small and trusted (the grounder's own ids), so a keyed hasher's per-word cost
+/// (foldhash hashed every argument as a separate write) buys nothing here.
+#[inline]
+fn key_hash(key: &KeyRef<'_>) -> u64 {
+    const K: u64 = 0x9e37_79b9_7f4a_7c15;
+    #[inline]
+    fn mix(h: u64, w: u64) -> u64 {
+        (h.rotate_left(23) ^ w).wrapping_mul(K)
+    }
+    let h = match *key {
+        KeyRef::Inf => mix(0, 1),
+        KeyRef::Sup => mix(0, 2),
+        KeyRef::Num(n) => mix(3, n as u32 as u64),
+        KeyRef::Str(s) => mix(4, s.0 as u64),
+        KeyRef::Fun(name, neg, args) => {
+            let mut h = mix(5 + neg as u64, (name.0 as u64) << 8 | args.len() as u64);
+            for a in args {
+                h = mix(h, a.0 as u64);
+            }
+            h
+        }
+    };
+    h ^ (h >> 29)
 }
 
 fn key_from<'a>(data: &[SymData], args: &'a [SymId], id: SymId) -> KeyRef<'a> {

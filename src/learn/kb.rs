@@ -232,7 +232,7 @@ pub fn literal_of(sym: &Symbol) -> Option<Literal> {
         .iter()
         .map(|a| match a {
             Symbol::Function { name, args, .. } if args.is_empty() => {
-                Some(Term::Const(name.clone()))
+                Some(Term::Const(name.to_string()))
             }
             Symbol::Number(n) => Some(Term::Const(n.to_string())),
             _ => None,
