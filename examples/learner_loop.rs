@@ -5,14 +5,17 @@
 //!
 //! usage: learner_loop FILE [N]
 //!
-//! It uses mimalloc as its global allocator, as the `lucent` binary does.
+//! It uses mimalloc as its global allocator, the `lucent` binary's (`src/mi_alloc.rs`).
 
 use std::time::Instant;
 
 use lucent::control::{Control, ControlConfig, Part, SolveOptions};
 
+#[path = "../src/mi_alloc.rs"]
+mod mi_alloc;
+
 #[global_allocator]
-static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static GLOBAL: mi_alloc::Mi = mi_alloc::Mi;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

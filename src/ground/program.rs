@@ -302,6 +302,26 @@ impl Rules {
         self.wlits.truncate(e.wlit);
     }
 
+    /// The largest atom in any head or body literal (0 without rules): one pass over the
+    /// flat arrays, not a view per rule.
+    pub fn max_atom(&self) -> Atom {
+        let heads = self.heads.iter().copied().max().unwrap_or(0);
+        let lits = self
+            .lits
+            .iter()
+            .map(|l| l.unsigned_abs())
+            .max()
+            .unwrap_or(0);
+        // The `(0, lower)` entries count as atom 0.
+        let wlits = self
+            .wlits
+            .iter()
+            .map(|(l, _)| l.unsigned_abs())
+            .max()
+            .unwrap_or(0);
+        heads.max(lits).max(wlits)
+    }
+
     /// Releases spare capacity.
     pub fn shrink_to_fit(&mut self) {
         self.heads.shrink_to_fit();

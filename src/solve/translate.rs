@@ -101,17 +101,8 @@ pub struct Translation {
 
 /// The largest atom mentioned anywhere in the program (the declared count may be too small).
 pub fn max_atom(p: &GroundProgram) -> u32 {
-    let mut m = p.num_atoms;
+    let mut m = p.num_atoms.max(p.rules.max_atom());
     let lit_atom = |l: i32| l.unsigned_abs();
-    for r in &p.rules {
-        m = m.max(r.head.iter().copied().max().unwrap_or(0));
-        match r.body {
-            BodyRef::Normal(ls) => m = m.max(ls.iter().map(|&l| lit_atom(l)).max().unwrap_or(0)),
-            BodyRef::Weight { lits, .. } => {
-                m = m.max(lits.iter().map(|&(l, _)| lit_atom(l)).max().unwrap_or(0))
-            }
-        }
-    }
     for mz in &p.minimize {
         m = m.max(mz.lits.iter().map(|&(l, _)| lit_atom(l)).max().unwrap_or(0));
     }

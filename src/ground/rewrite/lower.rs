@@ -133,10 +133,11 @@ impl Rewriter<'_> {
         for t in list {
             args.push(self.term(t, vars, extra)?);
         }
-        let pred = self.pred(&a.name, args.len() as u32, a.negated);
+        let name = self.syms.names.intern(&a.name);
+        let pred = self.pred_of(name, args.len() as u32, a.negated);
         Some(NAtom {
             pred,
-            name: self.syms.names.intern(&a.name),
+            name,
             neg: a.negated,
             args,
             span: a.span,

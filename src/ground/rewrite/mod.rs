@@ -456,11 +456,13 @@ impl<'a> Rewriter<'a> {
 
     /// The id of a predicate signature.
     pub fn pred(&mut self, name: &str, arity: u32, neg: bool) -> PredId {
-        let p = Pred {
-            name: self.syms.names.intern(name),
-            arity,
-            neg,
-        };
+        let name = self.syms.names.intern(name);
+        self.pred_of(name, arity, neg)
+    }
+
+    /// The id of a predicate signature whose name is interned already.
+    pub fn pred_of(&mut self, name: Sym, arity: u32, neg: bool) -> PredId {
+        let p = Pred { name, arity, neg };
         if let Some(&id) = self.pred_map.get(&p) {
             return id;
         }
