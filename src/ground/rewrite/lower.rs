@@ -25,8 +25,8 @@ impl Rewriter<'_> {
                 Some(&v) => NTerm::Sym(v),
                 None => NTerm::Sym(self.syms.fun_str(c, false, &[])),
             },
-            TermKind::Variable(v) => NTerm::Var(vars.slot(v, t.span)),
-            TermKind::Anonymous => NTerm::Var(vars.fresh("Anon", t.span)),
+            TermKind::Variable(v) => NTerm::Var(vars.slot(&mut self.syms.names, v, t.span)),
+            TermKind::Anonymous => NTerm::Var(vars.fresh(&mut self.syms.names, "Anon", t.span)),
             TermKind::Infimum => NTerm::Sym(self.syms.inf()),
             TermKind::Supremum => NTerm::Sym(self.syms.sup()),
             TermKind::Function { name, args, .. } => {
@@ -74,7 +74,7 @@ impl Rewriter<'_> {
             TermKind::Interval { lo, hi } => {
                 let lo = self.term(lo, vars, extra)?;
                 let hi = self.term(hi, vars, extra)?;
-                let v = vars.fresh("Range", t.span);
+                let v = vars.fresh(&mut self.syms.names, "Range", t.span);
                 extra.push(NLit::Interval {
                     pat: NTerm::Var(v),
                     lo,

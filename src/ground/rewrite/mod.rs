@@ -39,7 +39,7 @@ use crate::syntax::ast::{self, AggregateFunction, CmpOp, Sign, TermKind};
 use super::program::AuxKind;
 use super::symbol::{SymId, Symbols};
 use super::term::NTerm;
-use crate::base::intern::Sym;
+use crate::base::intern::{Interner, Sym};
 
 /// Index of a predicate signature in [`Compiled::preds`].
 pub type PredId = u32;
@@ -312,46 +312,48 @@ pub struct Rewriter<'a> {
     aux_role: Option<AuxKind>,
 }
 
-/// Per-statement variable table.
+/// Per-statement variable table. Names are interned in the symbol table's interner (the
+/// statement's `var_names` are those ids), so a variable costs no string of its own.
 #[derive(Default)]
 struct Vars {
-    names: Vec<String>,
+    names: Vec<Sym>,
     spans: Vec<Span>,
-    map: HashMap<String, u32>,
+    map: HashMap<Sym, u32>,
     fresh: u32,
 }
 
 impl Vars {
-    fn slot(&mut self, name: &str, span: Span) -> u32 {
-        // Rules have few variables: a scan beats hashing (and a second copy of each name);
-        // the map indexes the names only past `SCAN`.
+    fn slot(&mut self, interner: &mut Interner, name: &str, span: Span) -> u32 {
+        let name = interner.intern(name);
+        // Rules have few variables: a scan beats hashing; the map indexes the names only
+        // past `SCAN`.
         const SCAN: usize = 16;
         if self.names.len() <= SCAN {
-            if let Some(v) = self.names.iter().position(|n| n == name) {
+            if let Some(v) = self.names.iter().position(|&n| n == name) {
                 return v as u32;
             }
-        } else if let Some(&v) = self.map.get(name) {
+        } else if let Some(&v) = self.map.get(&name) {
             return v;
         }
         let v = self.names.len() as u32;
-        self.names.push(name.to_string());
+        self.names.push(name);
         self.spans.push(span);
         if self.names.len() > SCAN {
             if self.map.is_empty() {
-                for (i, n) in self.names.iter().enumerate() {
-                    self.map.insert(n.clone(), i as u32);
+                for (i, &n) in self.names.iter().enumerate() {
+                    self.map.insert(n, i as u32);
                 }
             } else {
-                self.map.insert(name.to_string(), v);
+                self.map.insert(name, v);
             }
         }
         v
     }
 
-    fn fresh(&mut self, prefix: &str, span: Span) -> u32 {
+    fn fresh(&mut self, interner: &mut Interner, prefix: &str, span: Span) -> u32 {
         self.fresh += 1;
         let name = format!("#{prefix}{}", self.fresh);
-        self.slot(&name, span)
+        self.slot(interner, &name, span)
     }
 }
 

@@ -423,22 +423,18 @@ impl Rewriter<'_> {
             let mut d =
                 Diagnostic::error(span, "unsafe variables in").with_snippet(self.snippet(span));
             for v in unsafe_vars {
-                let name = &vars.names[v as usize];
+                let name = self.syms.names.resolve(vars.names[v as usize]);
                 let shown = if name.starts_with("#Anon") {
                     "_".to_string()
                 } else {
-                    name.clone()
+                    name.to_string()
                 };
                 d = d.with_note(Some(vars.spans[v as usize]), format!("'{shown}' is unsafe"));
             }
             self.diags.push(d);
             return;
         }
-        let var_names = vars
-            .names
-            .iter()
-            .map(|s| self.syms.names.intern(s))
-            .collect();
+        let var_names = vars.names;
         let globals = (0..n as u32).filter(|&v| global[v as usize]).collect();
         self.out.stmts.push(NStmt {
             stmt: index,
