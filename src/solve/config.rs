@@ -104,6 +104,14 @@ pub struct Config {
     pub sign_from_learnts: bool,
     /// Postpone glucose restarts while the trail is much longer than on average.
     pub restart_blocking: bool,
+    /// After this many conflicts in one search call without a model, a tight program without
+    /// `#minimize` (under `SearchProfile::Auto`) switches to clasp's phase handling for the
+    /// rest of the call: saved phases are forgotten once, phases are saved only on backjumps
+    /// over more than 160 levels, and the sign score decides the rest (`Engine::phase_switch`).
+    /// A long run without a model is the mark of a refutation such as pigeons 10/9, where this
+    /// halves the conflicts and their cost; satisfiable planning rows lose from it when it
+    /// starts early (docs/bench/pigeon-2026-12-06.txt). `None` never switches.
+    pub phase_switch: Option<u64>,
     /// Merge atoms equivalent to a literal or to a rule body by their completion before search
     /// (clasp `--eq`, on in all of clasp's configurations; see `translate::equivalences`). On
     /// by default: over the benchmark pairs it lowers conflicts and CPU time
@@ -220,6 +228,7 @@ impl Default for Config {
             shared_loops: false,
             sign_from_learnts: false,
             restart_blocking: true,
+            phase_switch: Some(20_000),
             conflict_limit: None,
             eq: true,
             check_models: false,

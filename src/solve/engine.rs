@@ -140,6 +140,9 @@ fn prefetch<T>(p: *const T) {
     let _ = p;
 }
 
+/// `Engine::save_progress` after a phase switch (`Engine::phase_switch`): clasp's tweety value.
+const PHASE_SWITCH_PROGRESS: u32 = 160;
+
 /// How many trail positions ahead of the propagation queue head watch lists are prefetched.
 const PREFETCH_AHEAD: usize = 4;
 
@@ -366,6 +369,16 @@ pub struct Engine {
     pub restart_blocking: bool,
     /// Trail length at the last conflict, before backjumping.
     conflict_trail: usize,
+    /// After this many conflicts in one search call (without a model: a model ends the call),
+    /// switch to clasp's phase handling until the call returns: every saved phase is
+    /// forgotten, phases are saved only on backjumps over more than `PHASE_SWITCH_PROGRESS`
+    /// levels, and unsaved ones come from the sign score (`sign_from_learnts`). The next call
+    /// starts with the configured values again.
+    pub phase_switch: Option<u64>,
+    /// The configured `save_progress` and `sign_from_learnts` while a phase switch is in force.
+    phase_switched: Option<(u32, bool)>,
+    /// Statistics: phase switches made.
+    pub phase_switches: u64,
     /// Per variable: retired by `retire_vars` and not yet reusable.
     retired: Vec<bool>,
     /// Variables retired since the last level-0 simplification; that pass deletes every
@@ -465,6 +478,9 @@ impl Engine {
             sign_from_learnts: false,
             restart_blocking: false,
             conflict_trail: 0,
+            phase_switch: None,
+            phase_switched: None,
+            phase_switches: 0,
             conflict_limit: None,
             retired: Vec::new(),
             dead_vars: Vec::new(),

@@ -211,6 +211,11 @@ impl Solver {
             SearchProfile::Decision => !optimizing,
             SearchProfile::Fixed => false,
         };
+        if config.profile == SearchProfile::Auto && !tweety && !optimizing {
+            // Tight decision problems: clasp's phase handling after a long run without a
+            // model (`Config::phase_switch`).
+            engine.phase_switch = config.phase_switch;
+        }
         if tweety {
             // Non-tight decision problems: clasp's `tweety` search settings (`SearchProfile`).
             engine.configure(0.92, config.seed);

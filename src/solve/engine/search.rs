@@ -87,6 +87,16 @@ impl Engine {
         self.conflict_limit.is_some_and(|n| self.conflicts >= n)
     }
 
+    /// Switches to clasp's phase handling for the rest of the search call
+    /// (`Engine::phase_switch`).
+    fn switch_phases(&mut self) {
+        self.phase_switched = Some((self.save_progress, self.sign_from_learnts));
+        self.phase_switches += 1;
+        self.save_progress = PHASE_SWITCH_PROGRESS;
+        self.sign_from_learnts = true;
+        self.phase_saved.iter_mut().for_each(|s| *s = false);
+    }
+
     /// Searches for a total assignment extending `assumptions`. On `Sat` the assignment stays
     /// on the trail until the next `backtrack`/`add_clause`.
     pub fn search(&mut self, assumptions: &[Lit]) -> SearchResult {
@@ -99,6 +109,11 @@ impl Engine {
     pub fn search_from(&mut self, assumptions: &[Lit], resume: bool) -> SearchResult {
         self.interrupted = false;
         self.failed.clear();
+        if let Some((save_progress, sign)) = self.phase_switched.take() {
+            self.save_progress = save_progress;
+            self.sign_from_learnts = sign;
+        }
+        let switch_at = self.phase_switch.map(|k| self.conflicts.saturating_add(k));
         if self.inconsistent {
             return SearchResult::Unsat;
         }
@@ -123,6 +138,9 @@ impl Engine {
             }
             if self.propagate().is_some() {
                 self.conflicts += 1;
+                if switch_at == Some(self.conflicts) {
+                    self.switch_phases();
+                }
                 // The conflict may lie entirely below the current level (clauses added during
                 // search); move down to its highest level first.
                 let max_level = self

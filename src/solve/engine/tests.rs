@@ -116,6 +116,33 @@ fn both_deletion_policies_stay_sound_under_frequent_reductions() {
 }
 
 #[test]
+fn phase_switch_lasts_one_search_call() {
+    // 6 pigeons in 5 holes take well over 20 conflicts: the switch happens once, in the call
+    // that needs them, and the next call starts with the configured phase handling again.
+    let mut e = Engine::new();
+    e.phase_switch = Some(20);
+    pigeons(&mut e, 6, 5);
+    assert_eq!(e.search(&[]), SearchResult::Unsat);
+    assert!(
+        e.conflicts > 20,
+        "the test needs conflicts: {}",
+        e.conflicts
+    );
+    assert_eq!(e.phase_switches, 1);
+    assert_eq!(e.save_progress, PHASE_SWITCH_PROGRESS);
+    assert!(e.sign_from_learnts);
+    // The next call starts with the configured values (here left as by a switched call).
+    let mut e2 = Engine::new();
+    let w = pigeons(&mut e2, 5, 5);
+    e2.phase_switched = Some((0, false));
+    e2.save_progress = PHASE_SWITCH_PROGRESS;
+    e2.sign_from_learnts = true;
+    assert_eq!(e2.search(&[]), SearchResult::Sat);
+    assert_eq!((e2.save_progress, e2.sign_from_learnts), (0, false));
+    assert!(w.iter().any(|x| e2.value(x.positive()) == Some(true)));
+}
+
+#[test]
 fn weight_constraint_propagates() {
     // h <-> 2a + 1b + 1c >= 3, h true, a false: then b and c must be true... 1+1 < 3, so
     // the constraint is unsatisfiable with a false and h true.
