@@ -15,7 +15,19 @@ if ! command -v clingo >/dev/null || ! command -v gringo >/dev/null || ! command
 fi
 if ! python3 -c 'import clingo' 2>/dev/null; then
   echo "== installing clingo 5.8 (Python module) from PyPI"
-  python3 -m pip install -q clingo
+  if ! python3 -m pip --version >/dev/null 2>&1; then
+    as_root apt-get update -qq
+    as_root apt-get install -y -qq python3-pip
+  fi
+  # Debian 12's own python3 is "externally managed" (PEP 668): pip refuses a plain install
+  # there, so the second try installs beside the distribution's packages.
+  python3 -m pip install -q clingo || python3 -m pip install -q --break-system-packages clingo
+fi
+# tests/experiment_jobs.rs runs the experiment's job list with GNU parallel.
+if ! command -v parallel >/dev/null; then
+  echo "== installing GNU parallel"
+  as_root apt-get update -qq
+  as_root apt-get install -y -qq parallel
 fi
 
 echo "== cargo fmt --check"

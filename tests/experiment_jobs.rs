@@ -7,7 +7,7 @@
 //! Timings are the only values allowed to differ: JSON keys `time`, `seconds` and `*_time` are
 //! removed before comparing, so are the markdown rows of timing ratios (`| Planning time |`,
 //! H2's Table 2), and plots of timings (`*time*.svg`) are not compared.
-//! GNU parallel must be installed (`.ci/run` installs it with apt-get when it is missing).
+//! GNU parallel must be installed (`scripts/test.sh` installs it with apt-get when it is missing).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -103,7 +103,7 @@ fn job_list_through_gnu_parallel_and_a_resumed_run_match_the_in_process_run() {
         .is_ok_and(|o| o.status.success());
     assert!(
         has_parallel,
-        "GNU parallel is missing: `apt-get install -y parallel` (.ci/run does it)"
+        "GNU parallel is missing: `apt-get install -y parallel` (scripts/test.sh does it)"
     );
 
     // 1. In process.
