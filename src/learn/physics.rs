@@ -13,9 +13,10 @@
 //! (`States::unrealisable`): what follows would be the fall, which KB_full does not model (D1
 //! lets such an object stand by a CR exception), not the action's effect; answering it as a
 //! successor taught `pickup(R1, O1) causes -above(O2, O3) if -in_hand(R1, O2)` in 12 of 20
-//! runs (the settle test missing), then in 19 of 20 (the rebuild test missing). Otherwise the action executes without slips (`failure_rate` 0) and with exact
-//! perception; a failure (`HandFull`, `Covered`, `NotHeld`, a held destination) means the
-//! action is not executable (no successor state).
+//! runs (the settle test missing), then in 19 of 20 (the rebuild test missing). Otherwise the
+//! action executes without slips (`failure_rate` 0) and with exact perception; a failure
+//! (`HandFull`, `Covered`, `NotHeld`, a held destination) means the action is not executable
+//! (no successor state).
 //!
 //! Observation [ours]: the support relations `on`, `above`, `below` and `touch` (objects and
 //! the table) and `in_hand`, positive literals only, as 5.1 compares them. The positional and
