@@ -575,7 +575,7 @@ fn eval_sort(
 pub fn ground_member(t: &Term) -> Option<Member> {
     match &t.kind {
         TermKind::Integer(n) => Some(Member::Int(*n)),
-        TermKind::Constant(s) => Some(Member::Sym(s.clone())),
+        TermKind::Constant(s) => Some(Member::Sym(s.to_string())),
         TermKind::Paren(inner) => ground_member(inner),
         _ => None,
     }

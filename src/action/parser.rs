@@ -621,7 +621,7 @@ impl<'a> Parser<'a> {
                     span,
                     name: Name {
                         span: Span::new(span.file, span.start, span.start + name.len() as u32),
-                        text: name,
+                        text: name.to_string(),
                     },
                     args: Vec::new(),
                 },
@@ -638,7 +638,7 @@ impl<'a> Parser<'a> {
                         span,
                         name: Name {
                             span: Span::new(span.file, span.start, span.start + name.len() as u32),
-                            text: name,
+                            text: name.to_string(),
                         },
                         args: args.pop().unwrap_or_default(),
                     },
@@ -740,7 +740,7 @@ impl<'a> Parser<'a> {
                 let tok = self.bump();
                 Ok(Term {
                     span: self.span_from(start),
-                    kind: TermKind::Variable(self.word_of(tok).to_string()),
+                    kind: TermKind::Variable(self.word_of(tok).into()),
                 })
             }
             T::Ident => {
@@ -754,7 +754,7 @@ impl<'a> Parser<'a> {
                     Ok(Term {
                         span: self.span_from(start),
                         kind: TermKind::Function {
-                            name,
+                            name: name.into(),
                             args: vec![args],
                             trailing_comma: false,
                         },
@@ -762,7 +762,7 @@ impl<'a> Parser<'a> {
                 } else {
                     Ok(Term {
                         span: self.span_from(start),
-                        kind: TermKind::Constant(name),
+                        kind: TermKind::Constant(name.into()),
                     })
                 }
             }

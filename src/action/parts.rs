@@ -70,10 +70,10 @@ fn parameter(statements: &[ast::Statement]) -> String {
 fn collect_names(t: &Term, out: &mut std::collections::BTreeSet<String>) {
     match &t.kind {
         TermKind::Constant(c) => {
-            out.insert(c.clone());
+            out.insert(c.to_string());
         }
         TermKind::Function { name, args, .. } => {
-            out.insert(name.clone());
+            out.insert(name.to_string());
             args.iter().flatten().for_each(|a| collect_names(a, out));
         }
         TermKind::Unary { arg, .. } | TermKind::Paren(arg) => collect_names(arg, out),
@@ -253,7 +253,7 @@ pub fn split(
 ) -> (Vec<ast::Statement>, Vec<AxiomOrigin>) {
     debug_assert_eq!(out.len(), times.len());
     let param = parameter(&out);
-    let t = term(TermKind::Constant(param.clone()));
+    let t = term(TermKind::Constant(param.as_str().into()));
     let before = term(TermKind::Binary {
         op: BinaryOp::Sub,
         lhs: Box::new(t.clone()),

@@ -210,11 +210,11 @@ fn term(span: Span, kind: TermKind) -> Term {
 }
 
 fn var(span: Span, name: &str) -> Term {
-    term(span, TermKind::Variable(name.to_string()))
+    term(span, TermKind::Variable(name.into()))
 }
 
 fn constant(span: Span, name: &str) -> Term {
-    term(span, TermKind::Constant(name.to_string()))
+    term(span, TermKind::Constant(name.into()))
 }
 
 fn int(span: Span, n: i64) -> Term {
@@ -240,7 +240,7 @@ fn function(span: Span, name: &str, args: Vec<Term>) -> Term {
         term(
             span,
             TermKind::Function {
-                name: name.to_string(),
+                name: name.into(),
                 args: vec![args],
                 trailing_comma: false,
             },
@@ -252,7 +252,7 @@ fn atom(span: Span, negated: bool, name: &str, args: Vec<Term>) -> SymbolicAtom 
     SymbolicAtom {
         span,
         negated,
-        name: name.to_string(),
+        name: name.into(),
         args: vec![args],
     }
 }

@@ -162,7 +162,7 @@ impl Control {
             K::Supremum => Symbol::Sup,
             K::Constant(c) => match self.get_const_depth(c, depth + 1) {
                 Some(v) => v,
-                None => Symbol::constant(c.clone()),
+                None => Symbol::constant(c.as_str()),
             },
             K::Function { name, args, .. } if args.len() <= 1 => {
                 let list = args.first().map(Vec::as_slice).unwrap_or(&[]);
@@ -170,7 +170,7 @@ impl Control {
                 for a in list {
                     out.push(self.eval_const(a, depth + 1)?);
                 }
-                Symbol::function(name.clone(), out)
+                Symbol::function(name.as_str(), out)
             }
             K::Unary {
                 op: ast::UnaryOp::Minus,

@@ -361,7 +361,7 @@ impl Symbol {
                 let f = ast::Term {
                     span: Default::default(),
                     kind: ast::TermKind::Function {
-                        name: name.to_string(),
+                        name: ast::Name::new(name),
                         args: vec![args.iter().map(Symbol::to_term).collect()],
                         trailing_comma: name.is_empty() && args.len() == 1,
                     },

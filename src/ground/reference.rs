@@ -129,7 +129,7 @@ fn term(t: &RTerm) -> ast::Term {
     ast::Term {
         span: Span::default(),
         kind: match *t {
-            RTerm::Var(v) => ast::TermKind::Variable(format!("V{v}")),
+            RTerm::Var(v) => ast::TermKind::Variable(format!("V{v}").into()),
             RTerm::Const(c) => ast::TermKind::Integer(c as i64),
         },
     }
@@ -139,7 +139,7 @@ fn atom(a: &RAtom) -> ast::Atom {
     ast::Atom::Symbolic(ast::SymbolicAtom {
         span: Span::default(),
         negated: false,
-        name: format!("p{}", a.pred),
+        name: format!("p{}", a.pred).into(),
         args: vec![a.args.iter().map(term).collect()],
     })
 }

@@ -111,7 +111,7 @@ fn is_arithmetic(t: &ast::Term) -> bool {
 fn term_vars(t: &ast::Term, direct: bool, out: &mut HashSet<String>) {
     match &t.kind {
         TermKind::Variable(v) => {
-            out.insert(v.clone());
+            out.insert(v.to_string());
         }
         TermKind::Function { args, .. } => {
             for a in args.iter().flatten() {
@@ -201,7 +201,7 @@ fn sort_literal(span: Span, sort: &str, arg: ast::Term) -> ast::Literal {
 fn variable(span: Span, name: &str) -> ast::Term {
     ast::Term {
         span,
-        kind: TermKind::Variable(name.to_string()),
+        kind: TermKind::Variable(name.into()),
     }
 }
 
@@ -676,7 +676,7 @@ impl Typing {
     /// arguments with variables; `None` after reporting an error.
     fn typing(&self, rw: &mut Rewriter<'_>, a: &ast::SymbolicAtom) -> Option<Vec<ast::Literal>> {
         let args: Vec<ast::Term> = a.args.first().cloned().unwrap_or_default();
-        let Some(sorts) = self.decls.get(&a.name) else {
+        let Some(sorts) = self.decls.get(a.name.as_str()) else {
             rw.diags.push(
                 Diagnostic::error(
                     a.span,
@@ -1151,12 +1151,12 @@ pub fn lower(rw: &mut Rewriter<'_>, program: &ast::Program) -> ast::Program {
         };
         match &l.atom {
             ast::Atom::Symbolic(a) if a.args.iter().all(|list| list.is_empty()) => {
-                let arity = typing.decls.get(&a.name).map_or(0, |d| d.len()) as u32;
+                let arity = typing.decls.get(a.name.as_str()).map_or(0, |d| d.len()) as u32;
                 statements.push(ast::Statement {
                     span,
                     kind: StatementKind::Show(Box::new(ast::Show::Signature(ast::Signature {
                         negated: a.negated,
-                        name: a.name.clone(),
+                        name: a.name.to_string(),
                         arity,
                     }))),
                 });
@@ -1193,7 +1193,7 @@ pub fn lower(rw: &mut Rewriter<'_>, program: &ast::Program) -> ast::Program {
                 let term = ast::Term {
                     span: l.span,
                     kind: TermKind::Function {
-                        name: format!("#{sort}"),
+                        name: format!("#{sort}").into(),
                         args: vec![vec![(**arg).clone()]],
                         trailing_comma: false,
                     },

@@ -66,7 +66,7 @@ fn term_text(t: &Term) -> String {
 
 fn name(t: &Term) -> Option<String> {
     match &t.kind {
-        TermKind::Constant(c) => Some(c.clone()),
+        TermKind::Constant(c) => Some(c.to_string()),
         _ => None,
     }
 }

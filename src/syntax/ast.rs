@@ -14,6 +14,8 @@
 
 use crate::base::Span;
 
+pub use super::name::Name;
+
 /// A parsed file.
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub struct Program {
@@ -324,7 +326,7 @@ pub struct SymbolicAtom {
     /// Classical negation `-`.
     pub negated: bool,
     /// Predicate name.
-    pub name: String,
+    pub name: Name,
     /// Argument lists: one list normally; several for a pool `p(1,2;3,4)`. A name without
     /// parentheses and `name()` both have one empty list.
     pub args: Vec<Vec<Term>>,
@@ -364,9 +366,9 @@ pub enum TermKind {
     /// A string literal, unescaped.
     String(String),
     /// A constant `name` (lower-case identifier, possibly with leading underscores).
-    Constant(String),
+    Constant(Name),
     /// A variable `X`.
-    Variable(String),
+    Variable(Name),
     /// The anonymous variable `_`.
     Anonymous,
     /// `#inf`
@@ -377,7 +379,7 @@ pub enum TermKind {
     /// `(a, b)`; a one-element tuple is written `(a,)`.
     Function {
         /// The function name, empty for tuples.
-        name: String,
+        name: Name,
         /// Argument lists (pool alternatives).
         args: Vec<Vec<Term>>,
         /// For tuples: a trailing comma was written, as in `(a,)`.

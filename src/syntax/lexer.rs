@@ -161,10 +161,23 @@ const DIRECTIVES: &[&str] = &[
     "false",
 ];
 
+/// `IDENT[b]` is true for the bytes that may continue an identifier or variable (ASCII
+/// letters and digits, `_` and `'`): one table load per byte in the hot scanning loops.
+static IDENT: [bool; 256] = {
+    let mut t = [false; 256];
+    let mut b = 0;
+    while b < 256 {
+        let c = b as u8;
+        t[b] = c.is_ascii_alphanumeric() || c == b'_' || c == b'\'';
+        b += 1;
+    }
+    t
+};
+
 /// True for bytes that may continue an identifier or variable.
 #[inline]
 fn is_ident_byte(b: u8) -> bool {
-    b.is_ascii_alphanumeric() || b == b'_' || b == b'\''
+    IDENT[b as usize]
 }
 
 impl<'a> Lexer<'a> {
@@ -197,6 +210,8 @@ impl<'a> Lexer<'a> {
     }
 
     /// Reports `lexer error, unexpected <what>` at `start..end`.
+    #[cold]
+    #[inline(never)]
     fn error(&self, diags: &mut Vec<Diagnostic>, start: usize, end: usize, what: &str) {
         diags.push(Diagnostic::error(
             self.span(start, end),
@@ -205,7 +220,22 @@ impl<'a> Lexer<'a> {
     }
 
     /// Skips whitespace and comments; reports an unterminated block comment.
+    #[inline]
     fn skip_trivia(&mut self, diags: &mut Vec<Diagnostic>) {
+        let bytes = self.bytes;
+        let mut pos = self.pos;
+        while pos < bytes.len() && bytes[pos].is_ascii_whitespace() {
+            pos += 1;
+        }
+        self.pos = pos;
+        if pos < bytes.len() && bytes[pos] == b'%' {
+            self.skip_comments(diags);
+        }
+    }
+
+    /// Skips comments and the whitespace between them, from a `%`.
+    #[inline(never)]
+    fn skip_comments(&mut self, diags: &mut Vec<Diagnostic>) {
         let bytes = self.bytes;
         loop {
             while self.pos < bytes.len() && bytes[self.pos].is_ascii_whitespace() {
@@ -280,7 +310,7 @@ impl<'a> Lexer<'a> {
             b'a'..=b'z' => {
                 let end = self.ident_end(start + 1);
                 self.pos = end;
-                if &bytes[start..end] == b"not" {
+                if b == b'n' && end == start + 3 && next == b'o' && bytes[start + 2] == b't' {
                     return Some(T::Not);
                 }
                 return Some(T::Ident);
@@ -379,21 +409,29 @@ impl<'a> Lexer<'a> {
             b'~' => (T::Tilde, 1),
             b'@' => (T::At, 1),
             _ => {
-                // An unexpected character: skip it whole, so spans stay on char boundaries.
-                let ch = self.text[start..].chars().next().unwrap_or('\u{fffd}');
-                let end = start + ch.len_utf8();
-                let shown = if ch.is_control() {
-                    format!("\\x{:02x}", ch as u32)
-                } else {
-                    ch.to_string()
-                };
-                self.error(diags, start, end, &shown);
-                self.pos = end;
+                self.unexpected_char(diags);
                 return None;
             }
         };
         self.pos = start + len;
         Some(kind)
+    }
+
+    /// Reports and skips the character at the position, which starts no token: it is skipped
+    /// whole, so spans stay on char boundaries.
+    #[cold]
+    #[inline(never)]
+    fn unexpected_char(&mut self, diags: &mut Vec<Diagnostic>) {
+        let start = self.pos;
+        let ch = self.text[start..].chars().next().unwrap_or('\u{fffd}');
+        let end = start + ch.len_utf8();
+        let shown = if ch.is_control() {
+            format!("\\x{:02x}", ch as u32)
+        } else {
+            ch.to_string()
+        };
+        self.error(diags, start, end, &shown);
+        self.pos = end;
     }
 
     /// The end of an identifier whose remaining characters start at `i`.
@@ -436,6 +474,7 @@ impl<'a> Lexer<'a> {
 
     /// Scans a string literal. An unterminated string or a bad escape is a lexer error at the
     /// opening quote (as gringo reports it); the quote is skipped and lexing resumes after it.
+    #[inline(never)]
     fn string(&mut self, diags: &mut Vec<Diagnostic>) -> Option<TokenKind> {
         let bytes = self.bytes;
         let start = self.pos;
@@ -461,6 +500,7 @@ impl<'a> Lexer<'a> {
 
     /// Scans `#name` (and `#sum+`). In the clingo dialect an unknown name is a lexer error and
     /// is skipped; in SPARC it is a sort name.
+    #[inline(never)]
     fn hash(&mut self, diags: &mut Vec<Diagnostic>) -> Option<TokenKind> {
         let bytes = self.bytes;
         let start = self.pos;

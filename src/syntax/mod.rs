@@ -10,6 +10,7 @@
 pub mod ast;
 pub mod fuzzing;
 pub mod lexer;
+pub mod name;
 pub mod parser;
 pub mod printer;
 pub mod visit;

@@ -21,7 +21,7 @@ impl Rewriter<'_> {
             // `0x80000000` too), as its arithmetic wraps: the truncating cast does the same.
             TermKind::Integer(n) => NTerm::Sym(self.syms.int(*n as i32)),
             TermKind::String(s) => NTerm::Sym(self.syms.string(s)),
-            TermKind::Constant(c) => match self.consts.get(c) {
+            TermKind::Constant(c) => match self.consts.get(c.as_str()) {
                 Some(&v) => NTerm::Sym(v),
                 None => NTerm::Sym(self.syms.fun_str(c, false, &[])),
             },
@@ -351,7 +351,7 @@ impl Rewriter<'_> {
             } else {
                 let v = ast::Term {
                     span: t.span,
-                    kind: TermKind::Variable(format!("#P{i}")),
+                    kind: TermKind::Variable(format!("#P{i}").into()),
                 };
                 head_args.push(v.clone());
                 body_args.push(v);
@@ -361,7 +361,7 @@ impl Rewriter<'_> {
         let mk = |name: &str, negated: bool, args: Vec<ast::Term>| ast::SymbolicAtom {
             span: a.span,
             negated,
-            name: name.to_string(),
+            name: name.into(),
             args: vec![args],
         };
         let rule = ast::Rule {

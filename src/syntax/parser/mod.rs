@@ -338,7 +338,7 @@ fn term_to_signature(term: &Term) -> Option<Signature> {
     };
     Some(Signature {
         negated,
-        name: name.clone(),
+        name: name.to_string(),
         arity: u32::try_from(arity).ok()?,
     })
 }

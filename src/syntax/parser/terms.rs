@@ -102,7 +102,7 @@ impl<'a> Parser<'a> {
             }
             T::Variable => {
                 let tok = self.bump();
-                TermKind::Variable(self.word(tok).to_string())
+                TermKind::Variable(Name::new(self.word(tok)))
             }
             T::Anonymous => {
                 self.bump();
@@ -110,7 +110,7 @@ impl<'a> Parser<'a> {
             }
             T::Ident => {
                 let tok = self.bump();
-                let name = self.word(tok).to_string();
+                let name = Name::new(self.word(tok));
                 if self.at(T::LParen) {
                     let args = self.arguments()?;
                     TermKind::Function {
@@ -200,7 +200,7 @@ impl<'a> Parser<'a> {
         self.bump();
         if self.eat(T::RParen) {
             return Ok(TermKind::Function {
-                name: String::new(),
+                name: Name::default(),
                 args: vec![Vec::new()],
                 trailing_comma: false,
             });
@@ -230,7 +230,7 @@ impl<'a> Parser<'a> {
                 return Ok(TermKind::Paren(Box::new(terms.pop().expect("one term"))));
             }
             return Ok(TermKind::Function {
-                name: String::new(),
+                name: Name::default(),
                 args: vec![terms],
                 trailing_comma: trailing,
             });
@@ -246,7 +246,7 @@ impl<'a> Parser<'a> {
                     Term {
                         span: Span::new(file, alt_start, end),
                         kind: TermKind::Function {
-                            name: String::new(),
+                            name: Name::default(),
                             args: vec![terms],
                             trailing_comma: trailing,
                         },
