@@ -126,7 +126,12 @@ impl VarSet {
     }
 
     /// Removes every slot (the room stays).
+    #[inline]
     pub fn clear(&mut self) {
+        if let [w] = &mut self.words[..] {
+            *w = 0;
+            return;
+        }
         self.words.iter_mut().for_each(|w| *w = 0);
     }
 
@@ -143,12 +148,20 @@ impl VarSet {
     }
 
     /// Whether the set is empty.
+    #[inline]
     pub fn is_empty(&self) -> bool {
+        if let [w] = &self.words[..] {
+            return *w == 0;
+        }
         self.words.iter().all(|&w| w == 0)
     }
 
     /// Whether the sets share a slot (both made with the same room).
+    #[inline]
     pub fn intersects(&self, other: &VarSet) -> bool {
+        if let ([a], [b]) = (&self.words[..], &other.words[..]) {
+            return a & b != 0;
+        }
         self.words.iter().zip(&other.words).any(|(a, b)| a & b != 0)
     }
 
@@ -158,6 +171,83 @@ impl VarSet {
             .iter_mut()
             .zip(&other.words)
             .for_each(|(a, b)| *a |= b);
+    }
+}
+
+/// The variables of a list of terms as bit sets of one width (that of a [`VarSet`] for the
+/// same rule), and whether each term is a pattern (no operation below it): made once per rule
+/// body, so that asking whether a term is bound, or what matching it binds, costs a few word
+/// operations instead of a walk over the term (`instantiate`'s join order asks it many times).
+#[derive(Clone, Debug, Default)]
+pub struct TermVars {
+    /// Words per term.
+    width: usize,
+    /// The variables of term `i`: `words[i * width..(i + 1) * width]`.
+    words: Vec<u64>,
+    /// Whether term `i` is a pattern.
+    pattern: Vec<bool>,
+}
+
+impl TermVars {
+    /// Empties the list, for terms over slots `0..n`.
+    pub fn reset(&mut self, n: usize) {
+        self.width = n.div_ceil(64).max(1);
+        self.words.clear();
+        self.pattern.clear();
+    }
+
+    /// The number of terms.
+    pub fn len(&self) -> usize {
+        self.pattern.len()
+    }
+
+    /// Whether there is no term.
+    pub fn is_empty(&self) -> bool {
+        self.pattern.is_empty()
+    }
+
+    /// Adds term `t` (its number is the previous [`TermVars::len`]).
+    pub fn push(&mut self, t: &NTerm) {
+        let start = self.words.len();
+        self.words.resize(start + self.width, 0);
+        let pattern = t.mark_vars(&mut self.words[start..]);
+        self.pattern.push(pattern);
+    }
+
+    /// [`NTerm::bound_in`] for term `i`.
+    #[inline]
+    pub fn bound_in(&self, i: usize, bound: &VarSet) -> bool {
+        if let [b] = &bound.words[..] {
+            return self.words[i] & !b == 0;
+        }
+        let w = self.width;
+        self.words[i * w..(i + 1) * w]
+            .iter()
+            .zip(&bound.words)
+            .all(|(t, b)| t & !b == 0)
+    }
+
+    /// [`NTerm::binds_in`] for term `i`, which is `t`: a pattern binds its unbound variables;
+    /// other terms are walked.
+    #[inline]
+    pub fn binds_in(&self, i: usize, t: &NTerm, bound: &VarSet, out: &mut VarSet) -> bool {
+        if !self.pattern[i] {
+            return t.binds_in(bound, out);
+        }
+        if let ([b], [o]) = (&bound.words[..], &mut out.words[..]) {
+            *o |= self.words[i] & !b;
+            return true;
+        }
+        let w = self.width;
+        for ((o, t), b) in out
+            .words
+            .iter_mut()
+            .zip(&self.words[i * w..(i + 1) * w])
+            .zip(&bound.words)
+        {
+            *o |= t & !b;
+        }
+        true
     }
 }
 
@@ -289,6 +379,34 @@ impl NTerm {
         }
     }
 
+    /// Sets the bits of the term's variables in `bits` (a [`VarSet`]'s words); true when the
+    /// term is a pattern (constants, variables and functions of patterns).
+    pub fn mark_vars(&self, bits: &mut [u64]) -> bool {
+        match self {
+            NTerm::Sym(_) => true,
+            NTerm::Var(v) => {
+                bits[*v as usize / 64] |= 1 << (v % 64);
+                true
+            }
+            NTerm::Fun { args, .. } => {
+                let mut pattern = true;
+                for a in args {
+                    pattern &= a.mark_vars(bits);
+                }
+                pattern
+            }
+            NTerm::Unary { arg, .. } => {
+                arg.mark_vars(bits);
+                false
+            }
+            NTerm::Binary { lhs, rhs, .. } => {
+                lhs.mark_vars(bits);
+                rhs.mark_vars(bits);
+                false
+            }
+        }
+    }
+
     /// [`NTerm::bound_by`] over a [`VarSet`].
     pub fn bound_in(&self, bound: &VarSet) -> bool {
         match self {
@@ -343,7 +461,12 @@ impl NTerm {
             NTerm::Fun { name, neg, args } => {
                 let mut vals = smallvec::SmallVec::<[SymId; 8]>::new();
                 for a in args {
-                    vals.push(a.eval(syms, b)?);
+                    // Constants and variables (most arguments) without a call.
+                    vals.push(match a {
+                        NTerm::Sym(s) => *s,
+                        NTerm::Var(v) => b.get(*v).expect("evaluated an unbound variable"),
+                        _ => a.eval(syms, b)?,
+                    });
                 }
                 Ok(syms.fun(*name, *neg, &vals))
             }
@@ -419,7 +542,19 @@ impl NTerm {
                 } if n2 == *name && g2 == *neg && len as usize == args.len() => {
                     for (i, a) in args.iter().enumerate() {
                         let s = syms.args(sym)[i];
-                        if !a.matches(syms, s, b) {
+                        // Constants and variables (most arguments) without a call.
+                        let ok = match a {
+                            NTerm::Sym(x) => *x == s,
+                            NTerm::Var(v) => match b.get(*v) {
+                                Some(x) => x == s,
+                                None => {
+                                    b.bind(*v, s);
+                                    true
+                                }
+                            },
+                            _ => a.matches(syms, s, b),
+                        };
+                        if !ok {
                             return false;
                         }
                     }

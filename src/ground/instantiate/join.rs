@@ -433,6 +433,29 @@ impl Grounder<'_> {
         placed.resize(n, false);
         let mut newly = std::mem::take(&mut self.scratch.newly);
         newly.reset(nv);
+        // The variables of the terms each literal evaluates, once: term `first[i] + k` is the
+        // `k`-th of literal `i` (a predicate's arguments; a comparison's sides; an interval's
+        // bounds and pattern).
+        let mut tv = std::mem::take(&mut self.scratch.term_vars);
+        tv.reset(nv);
+        let mut first = std::mem::take(&mut self.scratch.first_term);
+        first.clear();
+        for l in lits {
+            first.push(tv.len());
+            match l {
+                NLit::Pred { atom, .. } => atom.args.iter().for_each(|t| tv.push(t)),
+                NLit::Cmp { lhs, rhs, .. } => {
+                    tv.push(lhs);
+                    tv.push(rhs);
+                }
+                NLit::Interval { pat, lo, hi } => {
+                    tv.push(lo);
+                    tv.push(hi);
+                    tv.push(pat);
+                }
+                NLit::Bool(_) | NLit::Agg(_) => {}
+            }
+        }
         while order.len() < n {
             let mut best: Option<(f64, usize)> = None;
             for (i, l) in lits.iter().enumerate() {
@@ -440,19 +463,25 @@ impl Grounder<'_> {
                     continue;
                 }
                 newly.clear();
+                let f = first[i];
                 let cost = match l {
                     NLit::Bool(_) => Some(0.0),
-                    NLit::Pred { sign, atom } if *sign != Sign::Positive => {
-                        atom.args.iter().all(|t| t.bound_in(&bound)).then_some(0.0)
-                    }
+                    NLit::Pred { sign, atom } if *sign != Sign::Positive => (0..atom.args.len())
+                        .all(|k| tv.bound_in(f + k, &bound))
+                        .then_some(0.0),
                     NLit::Pred { atom, .. } => {
-                        if atom.args.iter().all(|t| t.binds_in(&bound, &mut newly)) {
+                        if atom
+                            .args
+                            .iter()
+                            .enumerate()
+                            .all(|(k, t)| tv.binds_in(f + k, t, &bound, &mut newly))
+                        {
                             let range =
                                 self.lookup_range(atom.pred, ranges.get(i).copied().flatten());
                             let size = range.1.saturating_sub(range.0) as f64;
                             let mut mask = 0u64;
-                            for (k, t) in atom.args.iter().enumerate() {
-                                if k < 64 && t.bound_in(&bound) {
+                            for k in 0..atom.args.len().min(64) {
+                                if tv.bound_in(f + k, &bound) {
                                     mask |= 1 << k;
                                 }
                             }
@@ -471,12 +500,12 @@ impl Grounder<'_> {
                         }
                     }
                     NLit::Cmp { op, lhs, rhs } => {
-                        let (lb, rb) = (lhs.bound_in(&bound), rhs.bound_in(&bound));
+                        let (lb, rb) = (tv.bound_in(f, &bound), tv.bound_in(f + 1, &bound));
                         if lb && rb {
                             Some(0.0)
                         } else if *op == CmpOp::Eq
-                            && ((rb && lhs.binds_in(&bound, &mut newly))
-                                || (lb && rhs.binds_in(&bound, &mut newly)))
+                            && ((rb && tv.binds_in(f, lhs, &bound, &mut newly))
+                                || (lb && tv.binds_in(f + 1, rhs, &bound, &mut newly)))
                         {
                             Some(1.0)
                         } else {
@@ -484,9 +513,9 @@ impl Grounder<'_> {
                         }
                     }
                     NLit::Interval { pat, lo, hi } => {
-                        if lo.bound_in(&bound)
-                            && hi.bound_in(&bound)
-                            && pat.binds_in(&bound, &mut newly)
+                        if tv.bound_in(f, &bound)
+                            && tv.bound_in(f + 1, &bound)
+                            && tv.binds_in(f + 2, pat, &bound, &mut newly)
                         {
                             Some(match (lo, hi) {
                                 (NTerm::Sym(a), NTerm::Sym(b)) => {
@@ -535,6 +564,8 @@ impl Grounder<'_> {
         self.scratch.reserved = reserved;
         self.scratch.placed = placed;
         self.scratch.newly = newly;
+        self.scratch.term_vars = tv;
+        self.scratch.first_term = first;
     }
 }
 

@@ -55,7 +55,7 @@ use super::rewrite::{
     lit_vars, Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
 };
 use super::symbol::{SymData, SymId, Symbols};
-use super::term::{Binding, NTerm, VarSet};
+use super::term::{Binding, NTerm, TermVars, VarSet};
 use crate::base::intern::Sym;
 
 /// Internal atom id, `1..`.
@@ -281,6 +281,10 @@ struct Scratch {
     placed: Vec<bool>,
     /// `join_order`: the variables a literal binds.
     newly: VarSet,
+    /// `join_order`: the variables of the body's terms.
+    term_vars: TermVars,
+    /// `join_order`: the first term of each literal in `term_vars`.
+    first_term: Vec<usize>,
     /// The join order of the statement.
     order: Vec<usize>,
     /// The join state of the statement (taken while it is grounded).
