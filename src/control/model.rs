@@ -37,14 +37,14 @@ impl Model<'_> {
 
     /// Every true atom with a symbol: the whole answer set (shown or not), in atom order.
     pub fn atoms(&self) -> Vec<Symbol> {
-        self.raw
-            .atoms
-            .iter()
-            .filter_map(|&a| {
-                let s = (*self.names.atom_sym.get(a as usize - 1)?)?;
-                Some(Symbol::from_table(self.names.syms, s))
-            })
-            .collect()
+        // Sized once: nearly every true atom has a symbol.
+        let mut out = Vec::with_capacity(self.raw.atoms.len());
+        for &a in &self.raw.atoms {
+            if let Some(&Some(s)) = self.names.atom_sym.get(a as usize - 1) {
+                out.push(Symbol::from_table(self.names.syms, s));
+            }
+        }
+        out
     }
 
     /// Whether the atom of `symbol` is true.

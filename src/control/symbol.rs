@@ -279,10 +279,27 @@ impl Symbol {
                 args: syms
                     .args(id)
                     .iter()
-                    .map(|&a| Symbol::from_table(syms, a))
+                    .map(|&a| Symbol::leaf_from_table(syms, a))
                     .collect(),
                 negative: neg,
             },
+        }
+    }
+
+    /// `from_table` for an argument: constants and numbers (most arguments) are made here
+    /// without a call, the rest by `from_table`.
+    #[inline]
+    fn leaf_from_table(syms: &Symbols, id: SymId) -> Symbol {
+        match syms.get(id) {
+            SymData::Num(n) => Symbol::Number(n),
+            SymData::Fun {
+                name, neg, len: 0, ..
+            } => Symbol::Function {
+                name: Name(syms.names.resolve_shared(name)),
+                args: Vec::new(),
+                negative: neg,
+            },
+            _ => Symbol::from_table(syms, id),
         }
     }
 

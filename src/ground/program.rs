@@ -241,6 +241,7 @@ impl Rules {
     }
 
     /// Rule `i` (panics when `i >= len()`, as slice indexing does).
+    #[inline]
     pub fn get(&self, i: usize) -> RuleRef<'_> {
         let start = if i == 0 {
             Ends::default()
@@ -254,6 +255,7 @@ impl Rules {
         self.view(start, self.ends[i])
     }
 
+    #[inline]
     fn view(&self, start: Ends, end: Ends) -> RuleRef<'_> {
         let head_kind = if end.head & CHOICE != 0 {
             HeadKind::Choice
@@ -277,6 +279,7 @@ impl Rules {
     }
 
     /// The rules in order.
+    #[inline]
     pub fn iter(&self) -> RulesIter<'_> {
         RulesIter {
             rules: self,
@@ -415,6 +418,7 @@ pub struct RulesIter<'a> {
 impl<'a> Iterator for RulesIter<'a> {
     type Item = RuleRef<'a>;
 
+    #[inline]
     fn next(&mut self) -> Option<RuleRef<'a>> {
         let end = *self.rules.ends.get(self.next)?;
         let r = self.rules.view(self.start, end);

@@ -1062,7 +1062,8 @@ fn add_classical_constraints(
         if !neg && !twins.get(info.pred as usize).copied().unwrap_or(false) {
             continue;
         }
-        let Some(other) = g.syms.flip_sign(sym) else {
+        // (A complement never created has no atom.)
+        let Some(other) = g.syms.find_flip_sign(sym) else {
             continue;
         };
         let Some(y) = g.find_atom(other) else {

@@ -266,8 +266,18 @@ impl Symbols {
     pub fn flip_sign(&mut self, id: SymId) -> Option<SymId> {
         match self.get(id) {
             SymData::Fun { name, neg, .. } if !self.names.resolve(name).is_empty() => {
-                let args: Vec<SymId> = self.args(id).to_vec();
+                let args: smallvec::SmallVec<[SymId; 8]> = self.args(id).into();
                 Some(self.fun(name, !neg, &args))
+            }
+            _ => None,
+        }
+    }
+
+    /// [`Symbols::flip_sign`] when the result exists already (nothing is created).
+    pub fn find_flip_sign(&self, id: SymId) -> Option<SymId> {
+        match self.get(id) {
+            SymData::Fun { name, neg, .. } if !self.names.resolve(name).is_empty() => {
+                self.find_fun(name, !neg, self.args(id))
             }
             _ => None,
         }

@@ -78,6 +78,13 @@ impl Binding {
         }
     }
 
+    /// Makes the binding `n` unbound slots, keeping its vectors' memory.
+    pub fn reset(&mut self, n: usize) {
+        self.values.clear();
+        self.values.resize(n, None);
+        self.trail.clear();
+    }
+
     /// The value of slot `v`.
     pub fn get(&self, v: u32) -> Option<SymId> {
         self.values[v as usize]

@@ -389,6 +389,8 @@ pub struct Engine {
     free_vars: Vec<Var>,
     /// Slots of removed weight constraints, reused by `add_weight`.
     free_weights: Vec<u32>,
+    /// Scratch space of `add_clause` (empty between calls).
+    clause_buf: Vec<Lit>,
 }
 
 impl Default for Engine {
@@ -486,6 +488,7 @@ impl Engine {
             dead_vars: Vec::new(),
             free_vars: Vec::new(),
             free_weights: Vec::new(),
+            clause_buf: Vec::new(),
         }
     }
 

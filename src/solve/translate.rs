@@ -236,6 +236,9 @@ impl Translation {
     /// body literal is made false right after).
     fn body_lit(&mut self, e: &mut Engine, body: BodyRef<'_>, constraint: bool) -> Lit {
         match body {
+            // What `lookup_conj` answers for keys of no or one literal, without a key.
+            BodyRef::Normal([]) => self.true_lit(),
+            BodyRef::Normal(&[l]) => self.lit(l),
             BodyRef::Normal(ls) => {
                 let mut key = std::mem::take(&mut self.key_buf);
                 conj_key(&mut key, ls.iter().map(|&l| self.lit(l)));
@@ -299,7 +302,7 @@ impl Translation {
             let c = Cycles::of(p, n + 1, |i, r| heads.add(i, r));
             let free = external_free(p, n);
             let reach = reaches_external(p, n, &free);
-            let eqs = equivalences(p, n, &free, &reach, &c.comp, &heads);
+            let eqs = equivalences(n, &free, &reach, &c.comp, &heads);
             (Some(c), eqs)
         } else {
             (None, vec![Equiv::None; n + 1])
@@ -320,7 +323,9 @@ impl Translation {
             .into_iter()
             .map(|l| l.expect("every atom has a literal after alias resolution"))
             .collect();
-        t.supports = vec![AtomSupports::new(); n + 1];
+        t.supports = std::iter::repeat_with(AtomSupports::new)
+            .take(n + 1)
+            .collect();
         t.free = vec![false; n + 1];
         t.ext_value = vec![ExternalValue::Free; n + 1];
         t.pos_occ = vec![false; n + 1];
@@ -466,6 +471,21 @@ impl Translation {
         let b = self.body_lit(e, r.body, constraint);
         self.rule_body.push(b);
         debug_assert_eq!(self.rule_body.len(), index + 1);
+        // Integrity constraints and normal rules (most rules) directly; the general case
+        // below gives them the same clauses and supports.
+        if r.head_kind == HeadKind::Disjunction && r.head.len() <= 1 {
+            match *r.head {
+                [] => {
+                    e.add_clause(&[!b]);
+                }
+                [h] => {
+                    e.add_clause(&[!b, self.atom_lit[h as usize]]);
+                    self.supports[h as usize].push((b, index as u32));
+                }
+                _ => unreachable!("at most one head atom"),
+            }
+            return;
+        }
         let mut head: SmallVec<[u32; 4]> = SmallVec::from_slice(r.head);
         head.sort_unstable();
         head.dedup();
@@ -757,7 +777,6 @@ enum Equiv {
 /// `comp` gives the component of each atom `0..=n` in the positive dependency graph, `heads`
 /// the rules of each atom.
 fn equivalences(
-    p: &GroundProgram,
     n: usize,
     free: &[bool],
     reach: &[bool],
@@ -772,35 +791,45 @@ fn equivalences(
         if heads.count[a] != 1 || free[a] {
             continue;
         }
-        let r = p.rules.get(heads.rule[a] as usize);
-        if r.head_kind != HeadKind::Disjunction || r.head.len() != 1 {
-            continue;
-        }
-        let BodyRef::Normal(ls) = r.body else {
-            continue;
-        };
-        out[a] = match ls {
-            [] => Equiv::Lit(0),
-            [l] => {
+        out[a] = match heads.shape[a] {
+            Shape::Other => continue,
+            Shape::Fact => Equiv::Lit(0),
+            Shape::Lit(l) => {
                 let b = l.unsigned_abs() as usize;
-                if free[b] || (*l > 0 && (comp[b] == comp[a] || reach[b])) {
+                if free[b] || (l > 0 && (comp[b] == comp[a] || reach[b])) {
                     continue;
                 }
-                Equiv::Lit(*l)
+                Equiv::Lit(l)
             }
-            _ => Equiv::Body(heads.rule[a] as usize),
+            Shape::Body => Equiv::Body(heads.rule[a] as usize),
         };
     }
     out
 }
 
+/// The shape of the last rule of an atom, as far as `equivalences` needs it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Shape {
+    /// Anything but a normal rule with one head atom and a conjunctive body.
+    Other,
+    /// `a.`
+    Fact,
+    /// `a :- l.`
+    Lit(i32),
+    /// `a :- B.`, `B` of two or more literals.
+    Body,
+}
+
 /// Per atom, its rules as far as `equivalences` needs them; filled by one `add` per rule (in
-/// the pass over the rules that `positive_edges` makes anyway).
+/// the pass over the rules that `positive_edges` makes anyway), so that `equivalences` needs
+/// no second look at the rules.
 struct HeadRules {
     /// Per atom: the number of rules with it in the head, counted up to 2.
     count: Vec<u8>,
     /// Per atom: the last rule with it in the head.
     rule: Vec<u32>,
+    /// Per atom: the shape of that rule.
+    shape: Vec<Shape>,
     /// Whether some rule is a disjunction of two or more atoms.
     disjunctive: bool,
 }
@@ -811,6 +840,7 @@ impl HeadRules {
         HeadRules {
             count: vec![0; n],
             rule: vec![u32::MAX; n],
+            shape: vec![Shape::Other; n],
             disjunctive: false,
         }
     }
@@ -820,10 +850,17 @@ impl HeadRules {
         if r.head.len() > 1 && r.head_kind == HeadKind::Disjunction {
             self.disjunctive = true;
         }
+        let shape = match (r.head_kind, r.head.len(), r.body) {
+            (HeadKind::Disjunction, 1, BodyRef::Normal([])) => Shape::Fact,
+            (HeadKind::Disjunction, 1, BodyRef::Normal(&[l])) => Shape::Lit(l),
+            (HeadKind::Disjunction, 1, BodyRef::Normal(_)) => Shape::Body,
+            _ => Shape::Other,
+        };
         for &h in r.head {
             let h = h as usize;
             self.count[h] = self.count[h].saturating_add(1).min(2);
             self.rule[h] = i as u32;
+            self.shape[h] = shape;
         }
     }
 }
@@ -937,11 +974,14 @@ fn positive_edges(
     };
     // Two passes (count, then fill) into one flat array: a `Vec` per atom cost 24 bytes of
     // header per atom even for the many atoms without edges.
+    // The second pass visits only the rules with edges, noted in the first.
     let mut first = vec![0usize; n + 1];
+    let mut with_edges: Vec<u32> = Vec::new();
     for (i, r) in p.rules.iter().enumerate() {
         visit(i, &r);
         let k = positive(&r);
         if k > 0 {
+            with_edges.push(i as u32);
             for &h in r.head {
                 first[h as usize + 1] += k;
             }
@@ -952,10 +992,8 @@ fn positive_edges(
     }
     let mut fill = first.clone();
     let mut targets = vec![0u32; first[n]];
-    for r in &p.rules {
-        if positive(&r) == 0 {
-            continue;
-        }
+    for &i in &with_edges {
+        let r = p.rules.get(i as usize);
         for &h in r.head {
             let at = &mut fill[h as usize];
             let mut put = |b: u32| {
@@ -1039,6 +1077,15 @@ pub fn scc(edges: &Graph) -> Vec<u32> {
     let mut call: Vec<(u32, usize)> = Vec::new();
     for root in 0..n {
         if index[root] != u32::MAX {
+            continue;
+        }
+        if edges.succ(root).is_empty() {
+            // A root without successors is a component of its own (most atoms of most
+            // programs): what the search below would find, in the same order.
+            index[root] = next;
+            next += 1;
+            comp[root] = ncomp;
+            ncomp += 1;
             continue;
         }
         call.push((root as u32, 0));

@@ -344,23 +344,34 @@ impl Grounder<'_> {
                 head,
             };
         }
-        let mut ctx = Ctx {
-            binding: Binding::new(stmt.num_vars as usize),
-            body: Vec::new(),
+        // The join state and the order's vector are reused from statement to statement.
+        let mut ctx = match self.scratch.ctx.take() {
+            Some(mut c) => {
+                c.binding.reset(stmt.num_vars as usize);
+                c.body.clear();
+                c
+            }
+            None => Ctx {
+                binding: Binding::new(stmt.num_vars as usize),
+                body: Vec::new(),
+            },
         };
-        let order = self.join_order(stmt, ranges);
+        let mut order = std::mem::take(&mut self.scratch.order);
+        self.join_order(stmt, ranges, &mut order);
         if order.iter().enumerate().all(|(i, &j)| i == j) {
             self.join(&mut ctx, &stmt.body, 0, ranges, &mut |g, ctx| {
                 g.emit(stmt, ctx)
             });
-            return;
+        } else {
+            let body: Vec<&NLit> = order.iter().map(|&j| &stmt.body[j]).collect();
+            let ranges: Vec<Option<Range>> = order
+                .iter()
+                .map(|&j| ranges.get(j).copied().flatten())
+                .collect();
+            self.join(&mut ctx, &body, 0, &ranges, &mut |g, ctx| g.emit(stmt, ctx));
         }
-        let body: Vec<&NLit> = order.iter().map(|&j| &stmt.body[j]).collect();
-        let ranges: Vec<Option<Range>> = order
-            .iter()
-            .map(|&j| ranges.get(j).copied().flatten())
-            .collect();
-        self.join(&mut ctx, &body, 0, &ranges, &mut |g, ctx| g.emit(stmt, ctx));
+        self.scratch.order = order;
+        self.scratch.ctx = Some(ctx);
     }
 
     /// The order in which to join the body literals of `stmt`, given the ranges of its
@@ -373,15 +384,29 @@ impl Grounder<'_> {
     /// Evaluability follows the planner's rules (`rewrite::plan`); an aggregate keeps every
     /// literal the planner put before it in front of it (so its global variables are bound as
     /// planned), and the variable an aggregate binds is bound by it alone.
-    pub(super) fn join_order(&mut self, stmt: &NStmt, ranges: &[Option<Range>]) -> Vec<usize> {
+    ///
+    /// The order is written to `order` (cleared first).
+    pub(super) fn join_order(
+        &mut self,
+        stmt: &NStmt,
+        ranges: &[Option<Range>],
+        order: &mut Vec<usize>,
+    ) {
         let lits = &stmt.body;
         let n = lits.len();
+        order.clear();
         if n <= 1 {
-            return (0..n).collect();
+            order.extend(0..n);
+            return;
         }
-        let mut bound = vec![false; stmt.num_vars as usize];
+        // Scratch vectors, taken from the grounder and given back at the end.
+        let mut bound = std::mem::take(&mut self.scratch.bound);
+        bound.clear();
+        bound.resize(stmt.num_vars as usize, false);
         // Variables bound by aggregates (as planned).
-        let mut reserved = vec![false; stmt.num_vars as usize];
+        let mut reserved = std::mem::take(&mut self.scratch.reserved);
+        reserved.clear();
+        reserved.resize(stmt.num_vars as usize, false);
         for l in lits {
             if let NLit::Agg(a) = l {
                 if let Some(NTerm::Var(v)) = a.binder.map(|i| &a.guards[i].1) {
@@ -389,9 +414,10 @@ impl Grounder<'_> {
                 }
             }
         }
-        let mut placed = vec![false; n];
-        let mut order = Vec::with_capacity(n);
-        let mut newly: Vec<u32> = Vec::new();
+        let mut placed = std::mem::take(&mut self.scratch.placed);
+        placed.clear();
+        placed.resize(n, false);
+        let mut newly = std::mem::take(&mut self.scratch.newly);
         while order.len() < n {
             let mut best: Option<(f64, usize)> = None;
             for (i, l) in lits.iter().enumerate() {
@@ -481,7 +507,7 @@ impl Grounder<'_> {
             let Some((_, i)) = best else {
                 // Not expected (the planned order is evaluable): keep the rest as planned.
                 order.extend((0..n).filter(|&j| !placed[j]));
-                return order;
+                break;
             };
             placed[i] = true;
             order.push(i);
@@ -491,7 +517,10 @@ impl Grounder<'_> {
                 bound[v as usize] = true;
             }
         }
-        order
+        self.scratch.bound = bound;
+        self.scratch.reserved = reserved;
+        self.scratch.placed = placed;
+        self.scratch.newly = newly;
     }
 }
 

@@ -222,6 +222,27 @@ pub struct Grounder<'a> {
     pub old_atoms: usize,
     /// Predicates some statement of this or an earlier grounding heads (or `#defined`).
     defined: Vec<bool>,
+    /// Vectors reused from one statement to the next.
+    scratch: Scratch,
+}
+
+/// Vectors the grounding of a statement reuses from the previous one instead of allocating
+/// its own (a small program's statements ground to a few rules each, so the allocations
+/// would be a good part of their cost).
+#[derive(Default)]
+struct Scratch {
+    /// `join_order`: the variables bound so far.
+    bound: Vec<bool>,
+    /// `join_order`: the variables aggregates bind.
+    reserved: Vec<bool>,
+    /// `join_order`: the literals placed so far.
+    placed: Vec<bool>,
+    /// `join_order`: the variables a literal binds.
+    newly: Vec<u32>,
+    /// The join order of the statement.
+    order: Vec<usize>,
+    /// The join state of the statement (taken while it is grounded).
+    ctx: Option<Ctx>,
 }
 
 /// What a [`Grounder`] keeps between the groundings of one multi-shot session (see
@@ -401,6 +422,7 @@ impl<'a> Grounder<'a> {
             optimistic: false,
             old_atoms: 0,
             defined: Vec::new(),
+            scratch: Scratch::default(),
         }
     }
 

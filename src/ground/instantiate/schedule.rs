@@ -8,43 +8,83 @@
 
 use super::*;
 
+/// Lists of numbers stored one after another (compressed rows): row `i` is
+/// `items[start[i]..start[i + 1]]`. The schedule's per-statement tables (heads, reads,
+/// providers, dependency edges, components) are built this way, with no allocation per row.
+pub(super) struct Rows {
+    start: Vec<u32>,
+    items: Vec<u32>,
+}
+
+impl Rows {
+    /// No rows, room for `rows` rows of `items` items in all.
+    pub(super) fn with_capacity(rows: usize, items: usize) -> Rows {
+        let mut start = Vec::with_capacity(rows + 1);
+        start.push(0);
+        Rows {
+            start,
+            items: Vec::with_capacity(items),
+        }
+    }
+
+    /// Ends the row being built: its items are those pushed since the previous row ended.
+    pub(super) fn end_row(&mut self) {
+        self.start.push(self.items.len() as u32);
+    }
+
+    /// The number of rows.
+    pub(super) fn len(&self) -> usize {
+        self.start.len() - 1
+    }
+
+    /// Row `i`.
+    pub(super) fn row(&self, i: usize) -> &[u32] {
+        &self.items[self.start[i] as usize..self.start[i + 1] as usize]
+    }
+
+    /// The items of the row being built.
+    fn open_row(&self) -> &[u32] {
+        &self.items[*self.start.last().expect("a start") as usize..]
+    }
+}
+
 impl Grounder<'_> {
     /// Grounds the whole compiled program.
     pub fn run(&mut self, prog: &Compiled) {
         let n = prog.preds.len();
+        let ns = prog.stmts.len();
         // Head predicates of each statement, and the predicates each statement reads.
-        let mut heads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
-        let mut reads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
+        let mut heads = Rows::with_capacity(ns, ns);
+        let mut reads = Rows::with_capacity(ns, 3 * ns);
         // What each statement reads other than under default negation.
-        let mut pos_reads: Vec<Vec<PredId>> = Vec::with_capacity(prog.stmts.len());
+        let mut pos_reads = Rows::with_capacity(ns, 3 * ns);
+        let negative = |l: &NLit| matches!(l, NLit::Pred { sign, .. } if *sign != Sign::Positive);
         for s in &prog.stmts {
-            let h = stmt_heads(s);
+            stmt_heads(s, &mut heads);
+            heads.end_row();
             // In gringo's order of the body (positive literals last to first, then the negative
             // ones), which decides the order of its depth-first search.
-            let negative =
-                |l: &NLit| matches!(l, NLit::Pred { sign, .. } if *sign != Sign::Positive);
-            let mut pr = Vec::new();
             for l in s.body.iter().rev().filter(|l| !negative(l)) {
-                lit_preds(l, &mut pr);
+                lit_preds(l, &mut pos_reads.items);
             }
-            let mut r = pr.clone();
+            let pos_start = *pos_reads.start.last().expect("a start") as usize;
+            reads.items.extend_from_slice(&pos_reads.items[pos_start..]);
             for l in s.body.iter().filter(|l| negative(l)) {
-                lit_preds(l, &mut r);
+                lit_preds(l, &mut reads.items);
             }
             if let NHead::Disj(es) | NHead::Choice(es) = &s.head {
                 for e in es {
                     for l in &e.cond {
-                        lit_preds(l, &mut r);
-                        lit_preds(l, &mut pr);
+                        lit_preds(l, &mut reads.items);
+                        lit_preds(l, &mut pos_reads.items);
                     }
                     for l in e.conj.iter().filter(|l| l.sign != Sign::Positive) {
-                        r.push(l.atom.pred);
+                        reads.items.push(l.atom.pred);
                     }
                 }
             }
-            heads.push(h);
-            reads.push(r);
-            pos_reads.push(pr);
+            reads.end_row();
+            pos_reads.end_row();
         }
         self.warn_undefined(prog, &heads);
         // SPARC sorts: facts of their hidden predicates.
@@ -58,27 +98,42 @@ impl Grounder<'_> {
         // Statement dependency graph, as gringo's (Dependency::analyze): a statement depends on
         // every statement heading a predicate it reads. Ground facts are no nodes (gringo keeps
         // them apart and outputs them first); they are grounded before everything.
-        let mut providers: Vec<Vec<u32>> = vec![Vec::new(); n];
-        let mut nodes: Vec<usize> = Vec::new();
-        let mut node_of = vec![u32::MAX; prog.stmts.len()];
+        let mut nodes: Vec<u32> = Vec::new();
+        let mut node_of = vec![u32::MAX; ns];
+        // The statements heading each predicate, in order (counted, then placed).
+        let mut providers = Rows {
+            start: vec![0; n + 1],
+            items: vec![0; heads.items.len()],
+        };
+        for &p in &heads.items {
+            providers.start[p as usize + 1] += 1;
+        }
+        for i in 1..=n {
+            providers.start[i] += providers.start[i - 1];
+        }
+        // Statements still to ground per predicate: a predicate is complete once all are done.
+        let mut pending: Vec<u32> = (0..n)
+            .map(|p| providers.start[p + 1] - providers.start[p])
+            .collect();
+        let mut fill: Vec<u32> = providers.start[..n].to_vec();
         for (si, s) in prog.stmts.iter().enumerate() {
             if !is_ground_fact(s) {
                 node_of[si] = nodes.len() as u32;
-                nodes.push(si);
+                nodes.push(si as u32);
             }
-            for &p in &heads[si] {
-                providers[p as usize].push(si as u32);
+            for &p in heads.row(si) {
+                providers.items[fill[p as usize] as usize] = si as u32;
+                fill[p as usize] += 1;
             }
         }
-        // Statements still to ground per predicate: a predicate is complete once all are done.
-        let mut pending: Vec<u32> = providers.iter().map(|v| v.len() as u32).collect();
+        drop(fill);
         for (d, &left) in self.domains.iter_mut().zip(&pending) {
             // (Multi-shot: a predicate of an earlier grounding that this one's statements head
             // is open again until they are grounded.)
             d.complete = left == 0;
         }
         let finished = |g: &mut Self, si: usize, pending: &mut Vec<u32>| {
-            for &p in &heads[si] {
+            for &p in heads.row(si) {
                 pending[p as usize] -= 1;
                 if pending[p as usize] == 0 {
                     g.domains[p as usize].complete = true;
@@ -94,38 +149,41 @@ impl Grounder<'_> {
                 finished(self, si, &mut pending);
             }
         }
-        let edges_of = |reads: &[Vec<PredId>], keep: &dyn Fn(usize) -> bool| -> Vec<Vec<u32>> {
-            nodes
-                .iter()
-                .map(|&si| {
-                    let mut e = Vec::new();
-                    for &p in &reads[si] {
-                        for &t in &providers[p as usize] {
-                            let t = node_of[t as usize];
-                            if t != u32::MAX && keep(t as usize) {
-                                e.push(t);
-                            }
+        let edges_of = |reads: &Rows| -> Rows {
+            let mut e = Rows::with_capacity(nodes.len(), reads.items.len());
+            for &si in &nodes {
+                for &p in reads.row(si as usize) {
+                    for &t in providers.row(p as usize) {
+                        let t = node_of[t as usize];
+                        if t != u32::MAX {
+                            e.items.push(t);
                         }
                     }
-                    e
-                })
-                .collect()
+                }
+                e.end_row();
+            }
+            e
         };
-        let edges = edges_of(&reads, &|_| true);
-        let pos_edges = edges_of(&pos_reads, &|_| true);
+        let edges = edges_of(&reads);
+        let pos_edges = edges_of(&pos_reads);
+        drop((reads, pos_reads));
         let comps = positive_split(gringo_tarjan(&edges), &pos_edges);
         let mut comp_mark = vec![usize::MAX; n];
-        for (ci, comp) in comps.iter().enumerate() {
+        let mut stmts: Vec<&NStmt> = Vec::new();
+        let mut preds: Vec<PredId> = Vec::new();
+        for ci in 0..comps.len() {
             if self.stopped.is_some() {
                 break;
             }
-            let stmts: Vec<&NStmt> = comp
-                .iter()
-                .map(|&v| &prog.stmts[nodes[v as usize]])
-                .collect();
-            let mut preds: Vec<PredId> = Vec::new();
+            let comp = comps.row(ci);
+            stmts.clear();
+            stmts.extend(
+                comp.iter()
+                    .map(|&v| &prog.stmts[nodes[v as usize] as usize]),
+            );
+            preds.clear();
             for &v in comp {
-                for &p in &heads[nodes[v as usize]] {
+                for &p in heads.row(nodes[v as usize] as usize) {
                     if comp_mark[p as usize] != ci {
                         comp_mark[p as usize] = ci;
                         preds.push(p);
@@ -161,7 +219,7 @@ impl Grounder<'_> {
                 }
             }
             for &v in comp {
-                finished(self, nodes[v as usize], &mut pending);
+                finished(self, nodes[v as usize] as usize, &mut pending);
             }
         }
     }
@@ -261,7 +319,11 @@ impl Grounder<'_> {
                     .collect()
             })
             .collect();
-        let heads: Vec<Vec<PredId>> = stmts.iter().map(|s| stmt_heads(s)).collect();
+        let mut heads = Rows::with_capacity(stmts.len(), stmts.len());
+        for s in stmts {
+            stmt_heads(s, &mut heads);
+            heads.end_row();
+        }
         let rec_pred = |t: usize, jj: usize| -> PredId {
             match &stmts[t].body[rec[t][jj]] {
                 NLit::Pred { atom, .. } => atom.pred,
@@ -274,9 +336,9 @@ impl Grounder<'_> {
         for (t, r) in rec.iter().enumerate() {
             for jj in 0..r.len() {
                 let p = rec_pred(t, jj);
-                for (s, h) in heads.iter().enumerate() {
-                    if h.contains(&p) {
-                        deps[s].push((t, jj));
+                for (s, d) in deps.iter_mut().enumerate() {
+                    if heads.row(s).contains(&p) {
+                        d.push((t, jj));
                     }
                 }
             }
@@ -343,21 +405,20 @@ impl Grounder<'_> {
 
     /// gringo's `atom does not occur in any rule head` for positive body atoms of predicates
     /// that nothing defines.
-    pub(super) fn warn_undefined(&mut self, prog: &Compiled, heads: &[Vec<PredId>]) {
+    pub(super) fn warn_undefined(&mut self, prog: &Compiled, heads: &Rows) {
         // Predicates an earlier grounding defined count as defined (multi-shot).
         let mut defined = std::mem::take(&mut self.defined);
         defined.resize(prog.preds.len().max(defined.len()), false);
-        for h in heads {
-            for &p in h {
-                defined[p as usize] = true;
-            }
+        for &p in &heads.items {
+            defined[p as usize] = true;
         }
         for &p in &prog.defined {
             defined[p as usize] = true;
         }
         let mut seen: hashbrown::HashSet<Span> = hashbrown::HashSet::new();
+        let mut atoms: Vec<&NAtom> = Vec::new();
         for s in &prog.stmts {
-            let mut atoms: Vec<&NAtom> = Vec::new();
+            atoms.clear();
             for l in &s.body {
                 positive_atoms(l, &mut atoms);
             }
@@ -366,7 +427,7 @@ impl Grounder<'_> {
                     e.cond.iter().for_each(|l| positive_atoms(l, &mut atoms));
                 }
             }
-            for a in atoms {
+            for &a in &atoms {
                 if !a.sort && !defined[a.pred as usize] && seen.insert(a.span) {
                     let d = Diagnostic::warning(
                         WarningKind::AtomUndefined,
@@ -415,22 +476,21 @@ pub(super) fn lit_preds(l: &NLit, out: &mut Vec<PredId>) {
 
 /// True when an aggregate of `l` reads a predicate of the current component.
 /// The predicates a statement derives atoms of (its head atoms, or the external atom).
-pub(super) fn stmt_heads(s: &NStmt) -> Vec<PredId> {
-    let mut h = Vec::new();
+/// Adds them to the open row of `out`.
+pub(super) fn stmt_heads(s: &NStmt, out: &mut Rows) {
     match &s.head {
         NHead::Disj(es) | NHead::Choice(es) => {
             for a in es.iter().flat_map(|e| e.derived_atoms()) {
-                if !h.contains(&a.pred) {
-                    h.push(a.pred)
+                if !out.open_row().contains(&a.pred) {
+                    out.items.push(a.pred)
                 }
             }
         }
         NHead::None => {}
     }
     if let NKind::External(a, _) = &s.kind {
-        h.push(a.pred);
+        out.items.push(a.pred);
     }
-    h
 }
 
 /// Whether a statement is a ground fact (one unconditional head atom, no body, no variables):
@@ -459,31 +519,39 @@ pub(super) fn nested_reads(l: &NLit, in_comp: &dyn Fn(PredId) -> bool) -> bool {
 /// it, which keeps such literals (the predicate is not complete yet) instead of iterating the
 /// whole component together. Grounding each part to a fixpoint in this order gives the same
 /// rules, in gringo's order. Parts list their statements in gringo's order too.
-pub(super) fn positive_split(comps: Vec<Vec<u32>>, pos_edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
+pub(super) fn positive_split(comps: Rows, pos_edges: &Rows) -> Rows {
     let mut local = vec![u32::MAX; pos_edges.len()];
-    let mut out = Vec::with_capacity(comps.len());
-    for comp in comps {
+    let mut out = Rows::with_capacity(comps.len(), comps.items.len());
+    let mut sub = Rows::with_capacity(0, 0);
+    for ci in 0..comps.len() {
+        let comp = comps.row(ci);
         if comp.len() == 1 {
-            out.push(comp);
+            out.items.push(comp[0]);
+            out.end_row();
             continue;
         }
         for (i, &v) in comp.iter().enumerate() {
             local[v as usize] = i as u32;
         }
-        let sub: Vec<Vec<u32>> = comp
-            .iter()
-            .map(|&v| {
-                pos_edges[v as usize]
+        sub.start.truncate(1);
+        sub.items.clear();
+        for &v in comp {
+            sub.items.extend(
+                pos_edges
+                    .row(v as usize)
                     .iter()
                     .map(|&w| local[w as usize])
-                    .filter(|&w| w != u32::MAX)
-                    .collect()
-            })
-            .collect();
-        for part in gringo_tarjan(&sub) {
-            out.push(part.into_iter().map(|i| comp[i as usize]).collect());
+                    .filter(|&w| w != u32::MAX),
+            );
+            sub.end_row();
         }
-        for &v in &comp {
+        let parts = gringo_tarjan(&sub);
+        for pi in 0..parts.len() {
+            out.items
+                .extend(parts.row(pi).iter().map(|&i| comp[i as usize]));
+            out.end_row();
+        }
+        for &v in comp {
             local[v as usize] = u32::MAX;
         }
     }
@@ -495,7 +563,7 @@ pub(super) fn positive_split(comps: Vec<Vec<u32>>, pos_edges: &[Vec<u32>]) -> Ve
 /// component come in gringo's order: depth-first from the nodes in reverse order (gringo's
 /// graph prepends inserted nodes), edges in insertion order, and each component listing its
 /// nodes as they leave the trail (last reached first).
-pub fn gringo_tarjan(edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
+pub(super) fn gringo_tarjan(edges: &Rows) -> Rows {
     const NEW: u32 = u32::MAX;
     const DONE: u32 = 0;
     let n = edges.len();
@@ -504,7 +572,7 @@ pub fn gringo_tarjan(edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
     let mut next_edge = vec![0usize; n];
     let mut stack: Vec<u32> = Vec::new();
     let mut trail: Vec<u32> = Vec::new();
-    let mut comps: Vec<Vec<u32>> = Vec::new();
+    let mut comps = Rows::with_capacity(n, n);
     for root in (0..n).rev() {
         if visited[root] != NEW {
             continue;
@@ -520,7 +588,7 @@ pub fn gringo_tarjan(edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
         push(root as u32, &mut visited, &mut stack, &mut trail);
         while let Some(&y) = stack.last() {
             let y = y as usize;
-            let es = &edges[y];
+            let es = edges.row(y);
             while next_edge[y] < es.len() && visited[es[next_edge[y]] as usize] != NEW {
                 next_edge[y] += 1;
             }
@@ -540,16 +608,15 @@ pub fn gringo_tarjan(edges: &[Vec<u32>]) -> Vec<Vec<u32>> {
                 }
             }
             if root {
-                let mut c = Vec::new();
                 loop {
                     let w = trail.pop().expect("scc trail");
                     visited[w as usize] = DONE;
-                    c.push(w);
+                    comps.items.push(w);
                     if w as usize == y {
                         break;
                     }
                 }
-                comps.push(c);
+                comps.end_row();
             }
         }
     }

@@ -74,42 +74,64 @@ impl Engine {
 
     /// Adds a clause at decision level 0 (backtracking there first). Returns false when the
     /// engine became inconsistent.
+    ///
+    /// A clause with a true literal (at level 0) is dropped before anything is copied: most
+    /// clauses of a program whose atoms are mostly facts are, and translating such a program
+    /// is mostly this test. The others are simplified in `clause_buf` (false literals dropped,
+    /// sorted, repeats dropped, tautologies dropped), so adding a clause allocates nothing but
+    /// its place in the arena.
+    #[inline]
     pub fn add_clause(&mut self, lits: &[Lit]) -> bool {
+        if self.trail_lim.is_empty() && !self.inconsistent && lits.iter().any(|&l| self.val(l) == 1)
+        {
+            return true;
+        }
+        self.add_clause_at_level0(lits)
+    }
+
+    /// [`Engine::add_clause`] past its test for a true literal at level 0.
+    fn add_clause_at_level0(&mut self, lits: &[Lit]) -> bool {
         self.backtrack(0);
         if self.inconsistent {
             return false;
         }
-        let mut c: Vec<Lit> = lits.to_vec();
-        c.sort();
-        c.dedup();
-        for w in c.windows(2) {
-            if w[0] == !w[1] {
-                return true;
-            }
-        }
-        if c.iter().any(|&l| self.val(l) == 1) {
+        if lits.iter().any(|&l| self.val(l) == 1) {
             return true;
         }
-        c.retain(|&l| self.val(l) == 0);
-        self.num_clauses += 1;
-        match c.len() {
-            0 => {
-                self.inconsistent = true;
-                false
-            }
-            1 => {
-                self.assign(c[0], Reason::Decision);
-                if self.propagate().is_some() {
+        let mut c = std::mem::take(&mut self.clause_buf);
+        c.clear();
+        c.extend(lits.iter().copied().filter(|&l| self.val(l) == 0));
+        c.sort_unstable();
+        c.dedup();
+        // With no literal true, both literals of a complementary pair are unassigned.
+        let tautology = c.windows(2).any(|w| w[0] == !w[1]);
+        let ok = if tautology {
+            true
+        } else {
+            self.num_clauses += 1;
+            match c.len() {
+                0 => {
                     self.inconsistent = true;
-                    return false;
+                    false
                 }
-                true
+                1 => {
+                    self.assign(c[0], Reason::Decision);
+                    if self.propagate().is_some() {
+                        self.inconsistent = true;
+                        false
+                    } else {
+                        true
+                    }
+                }
+                _ => {
+                    self.attach(&c, false, 0);
+                    true
+                }
             }
-            _ => {
-                self.attach(&c, false, 0);
-                true
-            }
-        }
+        };
+        c.clear();
+        self.clause_buf = c;
+        ok
     }
 
     /// Adds a clause that the current (total) assignment falsifies, such as the clause blocking
