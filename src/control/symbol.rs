@@ -274,15 +274,18 @@ impl Symbol {
             SymData::Sup => Symbol::Sup,
             SymData::Num(n) => Symbol::Number(n),
             SymData::Str(s) => Symbol::String(syms.names.resolve(s).to_string()),
-            SymData::Fun { name, neg, .. } => Symbol::Function {
-                name: Name(syms.names.resolve_shared(name)),
-                args: syms
-                    .args(id)
-                    .iter()
-                    .map(|&a| Symbol::leaf_from_table(syms, a))
-                    .collect(),
-                negative: neg,
-            },
+            SymData::Fun { name, neg, .. } => {
+                let ids = syms.args(id);
+                let mut args = Vec::with_capacity(ids.len());
+                for &a in ids {
+                    args.push(Symbol::leaf_from_table(syms, a));
+                }
+                Symbol::Function {
+                    name: Name(syms.names.resolve_shared(name)),
+                    args,
+                    negative: neg,
+                }
+            }
         }
     }
 

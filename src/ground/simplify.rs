@@ -20,7 +20,7 @@
 //! false is kept as a `DeadRule` with its reason; the atom table records every grounder
 //! atom's symbol, status and aspif number.
 
-use super::instantiate::{AtomId, Grounder};
+use super::instantiate::{AtomId, AtomInfo, Grounder};
 use super::program::{
     AtomRecord, AtomStatus, Body, BodyRef, CrRule, DeadReason, DeadRule, GroundProgram, HeadKind,
     Lit, Minimize, Origin, Output, Prefer, Provenance, RemovedLit, Rule, RuleOrigin, Rules, Weight,
@@ -121,6 +121,98 @@ impl Occurrences {
     }
 }
 
+/// The aspif numbering, made as the output rules are written (gringo's: atoms in order of
+/// first occurrence, each rule's heads before its body), and the scratch vectors that write
+/// each rule renumbered, so the rules are not passed over again to number and renumber them.
+struct Numbering {
+    /// The aspif number of each grounder atom (0: none yet).
+    number: Vec<u32>,
+    /// The last number given.
+    next: u32,
+    /// The symbol of each numbered atom, by number.
+    atom_syms: Vec<Option<SymId>>,
+    /// The grounder atom of each numbered atom, by number.
+    atom_gatoms: Vec<AtomId>,
+    /// Scratch: the head, body and weight body of a rule being written.
+    head: Vec<AtomId>,
+    lits: Vec<Lit>,
+    wlits: Vec<(Lit, Weight)>,
+}
+
+impl Numbering {
+    fn new(n: usize) -> Numbering {
+        Numbering {
+            number: vec![0; n + 1],
+            next: 0,
+            atom_syms: Vec::new(),
+            atom_gatoms: Vec::new(),
+            head: Vec::new(),
+            lits: Vec::new(),
+            wlits: Vec::new(),
+        }
+    }
+
+    /// The number of grounder atom `a`, given now if it has none.
+    fn assign(&mut self, a: usize, atoms: &[AtomInfo]) -> u32 {
+        if a >= self.number.len() {
+            self.number.resize(a + 1, 0);
+        }
+        if self.number[a] == 0 {
+            self.next += 1;
+            self.number[a] = self.next;
+            self.atom_syms.push(atoms[a - 1].sym);
+            self.atom_gatoms.push(a as AtomId);
+        }
+        self.number[a]
+    }
+
+    fn assign_lit(&mut self, l: Lit, atoms: &[AtomInfo]) -> Lit {
+        let m = self.assign(l.unsigned_abs() as usize, atoms) as Lit;
+        if l < 0 {
+            -m
+        } else {
+            m
+        }
+    }
+
+    /// Numbers the atoms of a rule over grounder atoms and appends it, renumbered, to `rules`.
+    fn push(
+        &mut self,
+        rules: &mut Rules,
+        kind: HeadKind,
+        head: &[AtomId],
+        body: BodyRef<'_>,
+        atoms: &[AtomInfo],
+    ) {
+        let mut h = std::mem::take(&mut self.head);
+        h.clear();
+        for &a in head {
+            h.push(self.assign(a as usize, atoms));
+        }
+        match body {
+            BodyRef::Normal(ls) => {
+                let mut b = std::mem::take(&mut self.lits);
+                b.clear();
+                for &l in ls {
+                    b.push(self.assign_lit(l, atoms));
+                }
+                rules.push_parts(kind, &h, BodyRef::Normal(&b));
+                self.lits = b;
+            }
+            BodyRef::Weight { lower, lits } => {
+                let mut b = std::mem::take(&mut self.wlits);
+                b.clear();
+                for &(l, w) in lits {
+                    b.push((self.assign_lit(l, atoms), w));
+                }
+                rules.push_parts(kind, &h, BodyRef::Weight { lower, lits: &b });
+                self.wlits = b;
+            }
+        }
+        self.head = h;
+    }
+}
+
 /// Adds `:- a, -a.` for complementary atoms, then simplifies and numbers.
 pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
     finish_after(g, prog, &[], &[])
@@ -197,7 +289,9 @@ pub fn finish_after(
     };
     // Simplify the surviving rules.
     // Stored flat (`Rules`): the program outlives grounding and is held beside the solver.
+    // They are written numbered for aspif as they come (see `Numbering`).
     let mut rules = Rules::new();
+    let mut numbering = Numbering::new(n);
     // With provenance: the origins of each output rule, and the removed rules that headed a
     // false atom.
     let mut origins = Provenance::new();
@@ -377,7 +471,7 @@ pub fn finish_after(
             fact_rule[h] = rules.len() as u32;
             status[h - 1] = Status::Fact;
         }
-        rules.push_parts(r.head_kind, &head, body);
+        numbering.push(&mut rules, r.head_kind, &head, body, &g.atoms);
         if prov {
             origins.push_rule(with_removed(take_origins(ri), &removed));
         }
@@ -448,7 +542,13 @@ pub fn finish_after(
         } else {
             let a = new_aux(g, &mut status);
             for (i, alt) in alts.into_iter().enumerate() {
-                rules.push_parts(HeadKind::Disjunction, &[a], BodyRef::Normal(&alt));
+                numbering.push(
+                    &mut rules,
+                    HeadKind::Disjunction,
+                    &[a],
+                    BodyRef::Normal(&alt),
+                    &g.atoms,
+                );
                 if prov {
                     origins.push_rule(std::mem::take(&mut alt_origins[i]));
                 }
@@ -462,7 +562,13 @@ pub fn finish_after(
                 // a fact atom.
                 let a = new_aux(g, &mut status);
                 status[a as usize - 1] = Status::Fact;
-                rules.push_parts(HeadKind::Disjunction, &[a], BodyRef::Normal(&[]));
+                numbering.push(
+                    &mut rules,
+                    HeadKind::Disjunction,
+                    &[a],
+                    BodyRef::Normal(&[]),
+                    &g.atoms,
+                );
                 if prov {
                     origins.push_rule(std::mem::take(&mut certain_origins));
                 }
@@ -485,38 +591,29 @@ pub fn finish_after(
                 .collect(),
         });
     }
-    // Which atoms get a number: every atom that occurs, and shown atoms.
+    // Which atoms get a number: every atom that occurs (those of the rules have theirs), and
+    // shown atoms.
     let n = g.atoms.len();
     let mut used = vec![false; n + 1];
     let use_lit = |l: Lit, used: &mut Vec<bool>| used[l.unsigned_abs() as usize] = true;
-    for r in &rules {
-        r.head.iter().for_each(|&h| used[h as usize] = true);
-        match r.body {
-            BodyRef::Normal(ls) => ls.iter().for_each(|&l| use_lit(l, &mut used)),
-            BodyRef::Weight { lits, .. } => lits.iter().for_each(|&(l, _)| use_lit(l, &mut used)),
-        }
-    }
     for m in &minimize {
         m.lits.iter().for_each(|&(l, _)| use_lit(l, &mut used));
     }
     for &(a, _) in &g.externals {
         used[a as usize] = true;
     }
-    // Shown atoms.
-    let shown_pred = |g: &Grounder<'_>, pred: u32| -> bool {
-        if pred == u32::MAX {
-            return false;
-        }
-        let p = &prog.preds[pred as usize];
-        // Auxiliary predicates of the rewriting (`#proj...`) are never shown.
-        if g.syms.names.resolve(p.name).starts_with('#') {
-            return false;
-        }
-        if !prog.show.restricted {
-            return true;
-        }
-        prog.show.signatures.contains(p)
-    };
+    // Shown atoms: the predicates shown, decided once per predicate.
+    let shown: Vec<bool> = prog
+        .preds
+        .iter()
+        .map(|p| {
+            // Auxiliary predicates of the rewriting (`#proj...`) are never shown.
+            !g.syms.names.resolve(p.name).starts_with('#')
+                && (!prog.show.restricted || prog.show.signatures.contains(p))
+        })
+        .collect();
+    let shown_pred =
+        |_: &Grounder<'_>, pred: u32| -> bool { pred != u32::MAX && shown[pred as usize] };
     for a in 1..=n {
         if frozen(a) {
             continue;
@@ -554,35 +651,21 @@ pub fn finish_after(
         }
     }
     // Numbering as gringo's output does it: atoms in order of first occurrence in the rules
-    // (each rule's heads before its body), then those only in minimize statements, externals
-    // and shown atoms, in creation order. The solver's initial variable order follows it.
-    let mut number = vec![0u32; n + 1];
-    let mut atom_syms: Vec<Option<SymId>> = Vec::new();
-    let mut atom_gatoms: Vec<AtomId> = Vec::new();
-    let mut next = 0u32;
-    let mut assign = |a: usize, number: &mut Vec<u32>| {
-        if number[a] == 0 {
-            next += 1;
-            number[a] = next;
-            atom_syms.push(g.atoms[a - 1].sym);
-            atom_gatoms.push(a as AtomId);
-        }
-    };
-    for r in &rules {
-        r.head.iter().for_each(|&h| assign(h as usize, &mut number));
-        match r.body {
-            BodyRef::Normal(ls) => ls
-                .iter()
-                .for_each(|&l| assign(l.unsigned_abs() as usize, &mut number)),
-            BodyRef::Weight { lits, .. } => lits
-                .iter()
-                .for_each(|&(l, _)| assign(l.unsigned_abs() as usize, &mut number)),
-        }
-    }
+    // (each rule's heads before its body; given as the rules were written), then those only in
+    // minimize statements, externals and shown atoms, in creation order. The solver's initial
+    // variable order follows it.
     for (a, _) in used.iter().enumerate().filter(|&(_, &u)| u) {
-        assign(a, &mut number);
+        numbering.assign(a, &g.atoms);
     }
-    let next = next;
+    let Numbering {
+        mut number,
+        next,
+        atom_syms,
+        atom_gatoms,
+        ..
+    } = numbering;
+    number.resize(n + 1, 0);
+    let number = number;
     let map_lit = |l: Lit| -> Lit {
         let a = number[l.unsigned_abs() as usize] as Lit;
         if l > 0 {
@@ -593,8 +676,6 @@ pub fn finish_after(
     };
     let mut out = GroundProgram::new();
     out.num_atoms = next;
-    // Renumbered in place.
-    rules.map_atoms(&mut |a| number[a as usize]);
     rules.shrink_to_fit();
     out.rules = rules;
     if prov {
@@ -764,6 +845,7 @@ pub fn finish_after(
     }
     // prefer(l1, l2) facts between labels of CR rules (those of earlier groundings first).
     let mut prefer_atoms = Vec::new();
+    let prefer_name = g.syms.names.get("prefer");
     let fresh = (1..=n).filter(|&a| !frozen(a) && status[a - 1] == Status::Fact);
     for a in prefer_before.iter().map(|&a| a as usize).chain(fresh) {
         let info = g.atoms[a - 1];
@@ -775,7 +857,7 @@ pub fn finish_after(
         let prefer = match g.syms.get(sym) {
             SymData::Fun {
                 name, neg: false, ..
-            } => g.syms.names.resolve(name) == "prefer",
+            } => Some(name) == prefer_name,
             _ => false,
         };
         if args.len() != 2 || !prefer {
@@ -860,8 +942,39 @@ fn propagate(
     let mut neg_occ = Occurrences::new(n);
     // For weight bodies: the weight still reachable minus the bound; below 0 the rule is dead.
     let mut slack: Vec<i64> = vec![0; g.rules.len()];
+    // A disjunctive rule with a fact among its heads is satisfied in every model and, by
+    // minimality, supports none of its other heads: it is dead from the start (as in gringo),
+    // so atoms only it could derive become false. The fact's own rule `a.` is kept. So is a
+    // rule whose body holds `a` and `not a` (a weak constraint `:~ r, not r.` costs nothing).
+    // Found in the counting pass, killed once the head counts are complete.
+    let mut dead_at_start: Vec<(u32, DeadReason)> = Vec::new();
     for pass in [Pass::Count, Pass::Fill] {
         for (ri, r) in g.rules.iter().enumerate() {
+            if pass == Pass::Count {
+                for &h in r.head {
+                    head_count[h as usize] += 1;
+                }
+                if let BodyRef::Weight { lower, lits } = r.body {
+                    slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
+                }
+                let fact_head = r
+                    .head
+                    .iter()
+                    .copied()
+                    .find(|&h| status[h as usize - 1] == Status::Fact);
+                let satisfied_head = r.head_kind == HeadKind::Disjunction
+                    && fact_head.is_some()
+                    && !(r.head.len() == 1 && r.body.is_empty_normal());
+                let contra = kill_contradictory && contradictory(r.body);
+                killed_contradictory |= contra;
+                if satisfied_head || contra {
+                    let reason = match fact_head {
+                        Some(h) if satisfied_head => DeadReason::HeadFact(h),
+                        _ => DeadReason::Contradictory,
+                    };
+                    dead_at_start.push((ri as u32, reason));
+                }
+            }
             match r.body {
                 BodyRef::Normal(lits) => {
                     for &l in lits {
@@ -879,14 +992,6 @@ fn propagate(
         }
         pos_occ.end(pass);
         neg_occ.end(pass);
-    }
-    for (ri, r) in g.rules.iter().enumerate() {
-        for &h in r.head {
-            head_count[h as usize] += 1;
-        }
-        if let BodyRef::Weight { lower, lits } = r.body {
-            slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
-        }
     }
     let mut dead = vec![false; g.rules.len()];
     let mut work: Vec<AtomId> = Vec::new();
@@ -922,38 +1027,17 @@ fn propagate(
             }
         }
     };
-    // A disjunctive rule with a fact among its heads is satisfied in every model and, by
-    // minimality, supports none of its other heads: it is dead from the start (as in gringo),
-    // so atoms only it could derive become false. The fact's own rule `a.` is kept. So is a
-    // rule whose body holds `a` and `not a` (a weak constraint `:~ r, not r.` costs nothing).
-    for ri in 0..g.rules.len() {
-        let r = g.rules.get(ri);
-        let fact_head = r
-            .head
-            .iter()
-            .copied()
-            .find(|&h| status[h as usize - 1] == Status::Fact);
-        let satisfied_head = r.head_kind == HeadKind::Disjunction
-            && fact_head.is_some()
-            && !(r.head.len() == 1 && r.body.is_empty_normal());
-        let contra = kill_contradictory && contradictory(r.body);
-        killed_contradictory |= contra;
-        if satisfied_head || contra {
-            let reason = match fact_head {
-                Some(h) if satisfied_head => DeadReason::HeadFact(h),
-                _ => DeadReason::Contradictory,
-            };
-            kill(
-                ri,
-                reason,
-                why,
-                &mut dead,
-                &mut head_count,
-                status,
-                &mut work,
-                &g.rules,
-            );
-        }
+    for (ri, reason) in dead_at_start {
+        kill(
+            ri as usize,
+            reason,
+            why,
+            &mut dead,
+            &mut head_count,
+            status,
+            &mut work,
+            &g.rules,
+        );
     }
     // Rules with `not a`, a a fact, are dead from the start.
     for a in 1..=n {

@@ -159,6 +159,11 @@ impl Symbols {
         if let Some(&id) = self.table.find(hash, |&id| self.key_of(id) == key) {
             return id;
         }
+        self.insert_new(hash, key)
+    }
+
+    /// Adds the symbol of `key`, which is not in the table, with its hash.
+    fn insert_new(&mut self, hash: u64, key: KeyRef<'_>) -> SymId {
         let id = SymId(self.data.len() as u32);
         let data = match key {
             KeyRef::Inf => SymData::Inf,
@@ -225,7 +230,28 @@ impl Symbols {
 
     /// The function `name(args)` (a constant when `args` is empty, a tuple when `name` is empty).
     pub fn fun(&mut self, name: Sym, neg: bool, args: &[SymId]) -> SymId {
-        self.intern_key(KeyRef::Fun(name, neg, args))
+        let key = KeyRef::Fun(name, neg, args);
+        let hash = key_hash(&key);
+        // The probe compares the node's fields directly (no key is built per candidate).
+        let (data, arena) = (&self.data, &self.args);
+        let found = self.table.find(hash, |&id| match data[id.0 as usize] {
+            SymData::Fun {
+                name: n,
+                neg: g,
+                start,
+                len,
+            } => {
+                n == name
+                    && g == neg
+                    && len as usize == args.len()
+                    && arena[start as usize..(start + len) as usize] == *args
+            }
+            _ => false,
+        });
+        if let Some(&id) = found {
+            return id;
+        }
+        self.insert_new(hash, key)
     }
 
     /// The function `name(args)` if it was created before, without creating it.

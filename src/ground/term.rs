@@ -111,6 +111,56 @@ impl Binding {
     }
 }
 
+/// A set of variable slots as bits (one word for rules of up to 64 variables). Meant to be
+/// kept and [`VarSet::reset`] for the next rule, so that it allocates once.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct VarSet {
+    words: Vec<u64>,
+}
+
+impl VarSet {
+    /// Makes the set empty, with room for slots `0..n`.
+    pub fn reset(&mut self, n: usize) {
+        self.words.clear();
+        self.words.resize(n.div_ceil(64).max(1), 0);
+    }
+
+    /// Removes every slot (the room stays).
+    pub fn clear(&mut self) {
+        self.words.iter_mut().for_each(|w| *w = 0);
+    }
+
+    /// Whether slot `v` is in the set.
+    #[inline]
+    pub fn contains(&self, v: u32) -> bool {
+        self.words[v as usize / 64] >> (v % 64) & 1 != 0
+    }
+
+    /// Adds slot `v`.
+    #[inline]
+    pub fn insert(&mut self, v: u32) {
+        self.words[v as usize / 64] |= 1 << (v % 64);
+    }
+
+    /// Whether the set is empty.
+    pub fn is_empty(&self) -> bool {
+        self.words.iter().all(|&w| w == 0)
+    }
+
+    /// Whether the sets share a slot (both made with the same room).
+    pub fn intersects(&self, other: &VarSet) -> bool {
+        self.words.iter().zip(&other.words).any(|(a, b)| a & b != 0)
+    }
+
+    /// Adds the slots of `other` (made with the same room).
+    pub fn union_with(&mut self, other: &VarSet) {
+        self.words
+            .iter_mut()
+            .zip(&other.words)
+            .for_each(|(a, b)| *a |= b);
+    }
+}
+
 /// Evaluation failed: the span of the undefined operation.
 pub type Undefined = Span;
 
@@ -231,6 +281,52 @@ impl NTerm {
                     rhs.binds(bound, out)
                 } else if rhs.bound_by(bound) {
                     lhs.binds(bound, out)
+                } else {
+                    false
+                }
+            }
+            _ => false,
+        }
+    }
+
+    /// [`NTerm::bound_by`] over a [`VarSet`].
+    pub fn bound_in(&self, bound: &VarSet) -> bool {
+        match self {
+            NTerm::Sym(_) => true,
+            NTerm::Var(v) => bound.contains(*v),
+            NTerm::Fun { args, .. } => args.iter().all(|a| a.bound_in(bound)),
+            NTerm::Unary { arg, .. } => arg.bound_in(bound),
+            NTerm::Binary { lhs, rhs, .. } => lhs.bound_in(bound) && rhs.bound_in(bound),
+        }
+    }
+
+    /// [`NTerm::binds`] over [`VarSet`]s: the variables the match binds are added to `out`.
+    pub fn binds_in(&self, bound: &VarSet, out: &mut VarSet) -> bool {
+        match self {
+            NTerm::Sym(_) => true,
+            NTerm::Var(v) => {
+                if !bound.contains(*v) {
+                    out.insert(*v);
+                }
+                true
+            }
+            NTerm::Fun { args, .. } => args.iter().all(|a| a.binds_in(bound, out)),
+            _ if self.bound_in(bound) => true,
+            NTerm::Unary {
+                op: UnaryOp::Minus,
+                arg,
+                ..
+            } => arg.binds_in(bound, out),
+            NTerm::Binary {
+                op: BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul,
+                lhs,
+                rhs,
+                ..
+            } => {
+                if lhs.bound_in(bound) {
+                    rhs.binds_in(bound, out)
+                } else if rhs.bound_in(bound) {
+                    lhs.binds_in(bound, out)
                 } else {
                     false
                 }

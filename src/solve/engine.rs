@@ -700,6 +700,13 @@ impl Engine {
         }
     }
 
+    /// Whether the engine is at decision level 0 and `l` is true (true in every assignment
+    /// from now on): a clause with such a literal is one `add_clause` drops.
+    #[inline]
+    pub fn true_at_level0(&self, l: Lit) -> bool {
+        self.trail_lim.is_empty() && self.val(l) == 1
+    }
+
     fn val(&self, l: Lit) -> i8 {
         self.values[l.code()]
     }

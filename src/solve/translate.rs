@@ -449,6 +449,15 @@ impl Translation {
 
     /// Adds the clauses of one rule (its body, its head clause and its supports).
     pub fn add_rule(&mut self, e: &mut Engine, index: usize, r: RuleRef<'_>) {
+        if let (HeadKind::Disjunction, &[h], BodyRef::Normal([])) = (r.head_kind, r.head, r.body) {
+            // A fact (most rules of many programs): the body is the true literal, the rule
+            // clause `h` (satisfied when `h` was merged with the true literal).
+            let b = self.true_lit();
+            self.rule_body.push(b);
+            e.add_clause(&[!b, self.atom_lit[h as usize]]);
+            self.supports[h as usize].push((b, index as u32));
+            return;
+        }
         let constraint = r.head_kind == HeadKind::Disjunction && r.head.is_empty();
         if !r.head.is_empty() {
             match r.body {
@@ -523,6 +532,12 @@ impl Translation {
     /// Adds the completion clause of atom `a`: true only if some support holds.
     pub fn complete(&mut self, e: &mut Engine, a: usize) {
         if self.free[a] {
+            return;
+        }
+        // Satisfied at level 0 (a fact's atom and its fact's true body): nothing to add.
+        if e.true_at_level0(!self.atom_lit[a])
+            || self.supports[a].iter().any(|&(s, _)| e.true_at_level0(s))
+        {
             return;
         }
         let mut c = std::mem::take(&mut self.lits_buf);

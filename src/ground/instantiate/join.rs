@@ -22,18 +22,25 @@ impl<'a> Grounder<'a> {
     ) -> Option<Candidates> {
         let mut mask = 0u64;
         let mut key: SmallVec<[SymId; 4]> = SmallVec::new();
-        for (i, t) in atom.args.iter().enumerate() {
-            if i < 64 && t.bound_by_binding(b) {
-                let v = match t.eval(&mut self.syms, b) {
+        for (i, t) in atom.args.iter().enumerate().take(64) {
+            // Constants and variables (most arguments) without a call.
+            let v = match t {
+                NTerm::Sym(s) => *s,
+                NTerm::Var(v) => match b.get(*v) {
+                    Some(s) => s,
+                    None => continue,
+                },
+                _ if !t.bound_by_binding(b) => continue,
+                _ => match t.eval(&mut self.syms, b) {
                     Ok(v) => v,
                     Err(span) => {
                         self.undefined(span);
                         return None;
                     }
-                };
-                mask |= 1 << i;
-                key.push(v);
-            }
+                },
+            };
+            mask |= 1 << i;
+            key.push(v);
         }
         if mask == 0 {
             return Some(Candidates::Range(range.0, range.1));
@@ -53,7 +60,7 @@ impl<'a> Grounder<'a> {
         let slot = self.index(atom.pred, mask);
         let d = &mut self.domains[atom.pred as usize];
         let idx = &mut d.indexes[slot];
-        let Some(&group) = idx.map.get(&key) else {
+        let Some(group) = idx.find(&key) else {
             return Some(Candidates::One(None));
         };
         let list = &idx.groups[group as usize];
@@ -82,12 +89,7 @@ impl<'a> Grounder<'a> {
         let slot = match d.indexes.iter().position(|x| x.mask == mask) {
             Some(i) => i,
             None => {
-                d.indexes.push(Index {
-                    mask,
-                    upto: 0,
-                    map: HashMap::new(),
-                    groups: Vec::new(),
-                });
+                d.indexes.push(Index::new(mask));
                 d.indexes.len() - 1
             }
         };
@@ -103,11 +105,7 @@ impl<'a> Grounder<'a> {
                 .filter(|&i| i < 64 && mask & (1 << i) != 0)
                 .map(|i| args[i])
                 .collect();
-            let groups = &mut idx.groups;
-            let g = *idx.map.entry(k).or_insert_with(|| {
-                groups.push(Vec::new());
-                groups.len() as u32 - 1
-            });
+            let g = idx.group(&k);
             idx.groups[g as usize].push(idx.upto as u32);
             idx.upto += 1;
         }
@@ -171,17 +169,29 @@ impl<'a> Grounder<'a> {
                         _ => j,
                     };
                     let a = d.atoms[pos as usize];
-                    let sym = self.info(a).sym.expect("predicate atom has a symbol");
+                    let info = *self.info(a);
+                    let sym = info.sym.expect("predicate atom has a symbol");
                     let mut ok = true;
                     for (j, t) in atom.args.iter().enumerate() {
                         let s = self.syms.args(sym)[j];
-                        if !t.matches(&mut self.syms, s, &mut ctx.binding) {
-                            ok = false;
+                        // Constants and variables (most arguments) without a call.
+                        ok = match t {
+                            NTerm::Sym(x) => *x == s,
+                            NTerm::Var(v) => match ctx.binding.get(*v) {
+                                Some(x) => x == s,
+                                None => {
+                                    ctx.binding.bind(*v, s);
+                                    true
+                                }
+                            },
+                            _ => t.matches(&mut self.syms, s, &mut ctx.binding),
+                        };
+                        if !ok {
                             break;
                         }
                     }
                     if ok {
-                        if !self.info(a).fact {
+                        if !info.fact {
                             ctx.body.push(a as Lit);
                         }
                         self.join(ctx, lits, i + 1, ranges, k);
@@ -314,7 +324,12 @@ impl<'a> Grounder<'a> {
     pub(super) fn atom_sym(&mut self, atom: &NAtom, b: &Binding) -> Option<SymId> {
         let mut vals: SmallVec<[SymId; 8]> = SmallVec::new();
         for t in &atom.args {
-            vals.push(self.eval(t, b)?);
+            // Constants and variables (most arguments) without a call.
+            vals.push(match t {
+                NTerm::Sym(s) => *s,
+                NTerm::Var(v) => b.get(*v).expect("evaluated an unbound variable"),
+                _ => self.eval(t, b)?,
+            });
         }
         Some(self.syms.fun(atom.name, atom.neg, &vals))
     }
@@ -400,17 +415,16 @@ impl Grounder<'_> {
             return;
         }
         // Scratch vectors, taken from the grounder and given back at the end.
+        let nv = stmt.num_vars as usize;
         let mut bound = std::mem::take(&mut self.scratch.bound);
-        bound.clear();
-        bound.resize(stmt.num_vars as usize, false);
+        bound.reset(nv);
         // Variables bound by aggregates (as planned).
         let mut reserved = std::mem::take(&mut self.scratch.reserved);
-        reserved.clear();
-        reserved.resize(stmt.num_vars as usize, false);
+        reserved.reset(nv);
         for l in lits {
             if let NLit::Agg(a) = l {
                 if let Some(NTerm::Var(v)) = a.binder.map(|i| &a.guards[i].1) {
-                    reserved[*v as usize] = true;
+                    reserved.insert(*v);
                 }
             }
         }
@@ -418,6 +432,7 @@ impl Grounder<'_> {
         placed.clear();
         placed.resize(n, false);
         let mut newly = std::mem::take(&mut self.scratch.newly);
+        newly.reset(nv);
         while order.len() < n {
             let mut best: Option<(f64, usize)> = None;
             for (i, l) in lits.iter().enumerate() {
@@ -428,16 +443,16 @@ impl Grounder<'_> {
                 let cost = match l {
                     NLit::Bool(_) => Some(0.0),
                     NLit::Pred { sign, atom } if *sign != Sign::Positive => {
-                        atom.args.iter().all(|t| t.bound_by(&bound)).then_some(0.0)
+                        atom.args.iter().all(|t| t.bound_in(&bound)).then_some(0.0)
                     }
                     NLit::Pred { atom, .. } => {
-                        if atom.args.iter().all(|t| t.binds(&bound, &mut newly)) {
+                        if atom.args.iter().all(|t| t.binds_in(&bound, &mut newly)) {
                             let range =
                                 self.lookup_range(atom.pred, ranges.get(i).copied().flatten());
                             let size = range.1.saturating_sub(range.0) as f64;
                             let mut mask = 0u64;
                             for (k, t) in atom.args.iter().enumerate() {
-                                if k < 64 && t.bound_by(&bound) {
+                                if k < 64 && t.bound_in(&bound) {
                                     mask |= 1 << k;
                                 }
                             }
@@ -447,7 +462,8 @@ impl Grounder<'_> {
                                 size
                             } else {
                                 let slot = self.index(atom.pred, mask);
-                                let keys = self.domains[atom.pred as usize].indexes[slot].map.len();
+                                let keys =
+                                    self.domains[atom.pred as usize].indexes[slot].groups.len();
                                 size / keys.max(1) as f64
                             })
                         } else {
@@ -455,12 +471,12 @@ impl Grounder<'_> {
                         }
                     }
                     NLit::Cmp { op, lhs, rhs } => {
-                        let (lb, rb) = (lhs.bound_by(&bound), rhs.bound_by(&bound));
+                        let (lb, rb) = (lhs.bound_in(&bound), rhs.bound_in(&bound));
                         if lb && rb {
                             Some(0.0)
                         } else if *op == CmpOp::Eq
-                            && ((rb && lhs.binds(&bound, &mut newly))
-                                || (lb && rhs.binds(&bound, &mut newly)))
+                            && ((rb && lhs.binds_in(&bound, &mut newly))
+                                || (lb && rhs.binds_in(&bound, &mut newly)))
                         {
                             Some(1.0)
                         } else {
@@ -468,9 +484,9 @@ impl Grounder<'_> {
                         }
                     }
                     NLit::Interval { pat, lo, hi } => {
-                        if lo.bound_by(&bound)
-                            && hi.bound_by(&bound)
-                            && pat.binds(&bound, &mut newly)
+                        if lo.bound_in(&bound)
+                            && hi.bound_in(&bound)
+                            && pat.binds_in(&bound, &mut newly)
                         {
                             Some(match (lo, hi) {
                                 (NTerm::Sym(a), NTerm::Sym(b)) => {
@@ -488,7 +504,7 @@ impl Grounder<'_> {
                     NLit::Agg(a) => {
                         if placed[..i].iter().all(|&p| p) {
                             if let Some(NTerm::Var(v)) = a.binder.map(|k| &a.guards[k].1) {
-                                newly.push(*v);
+                                newly.insert(*v);
                             }
                             Some(1.5)
                         } else {
@@ -497,7 +513,7 @@ impl Grounder<'_> {
                     }
                 };
                 let Some(cost) = cost else { continue };
-                if !matches!(l, NLit::Agg(_)) && newly.iter().any(|&v| reserved[v as usize]) {
+                if !matches!(l, NLit::Agg(_)) && newly.intersects(&reserved) {
                     continue;
                 }
                 if best.is_none_or(|(c, _)| cost < c) {
@@ -513,9 +529,7 @@ impl Grounder<'_> {
             order.push(i);
             newly.clear();
             lit_binds(&lits[i], &bound, &mut newly);
-            for &v in &newly {
-                bound[v as usize] = true;
-            }
+            bound.union_with(&newly);
         }
         self.scratch.bound = bound;
         self.scratch.reserved = reserved;
@@ -556,30 +570,30 @@ pub fn cmp_holds(syms: &Symbols, op: CmpOp, a: SymId, b: SymId) -> bool {
 }
 
 /// Adds the variables that evaluating `l` with `bound` known binds to `out`.
-pub(super) fn lit_binds(l: &NLit, bound: &[bool], out: &mut Vec<u32>) {
+pub(super) fn lit_binds(l: &NLit, bound: &VarSet, out: &mut VarSet) {
     match l {
         NLit::Pred {
             sign: Sign::Positive,
             atom,
         } => {
             for t in &atom.args {
-                t.binds(bound, out);
+                t.binds_in(bound, out);
             }
         }
         NLit::Cmp { lhs, rhs, .. } => {
-            if lhs.bound_by(bound) {
-                rhs.binds(bound, out);
+            if lhs.bound_in(bound) {
+                rhs.binds_in(bound, out);
             } else {
-                lhs.binds(bound, out);
+                lhs.binds_in(bound, out);
             }
         }
         NLit::Interval { pat, .. } => {
-            pat.binds(bound, out);
+            pat.binds_in(bound, out);
         }
         NLit::Agg(a) => {
             if let Some(NTerm::Var(v)) = a.binder.map(|k| &a.guards[k].1) {
-                if !bound[*v as usize] && !out.contains(v) {
-                    out.push(*v);
+                if !bound.contains(*v) {
+                    out.insert(*v);
                 }
             }
         }

@@ -55,7 +55,7 @@ use super::rewrite::{
     lit_vars, Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
 };
 use super::symbol::{SymData, SymId, Symbols};
-use super::term::{Binding, NTerm};
+use super::term::{Binding, NTerm, VarSet};
 use crate::base::intern::Sym;
 
 /// Internal atom id, `1..`.
@@ -91,10 +91,54 @@ struct Index {
     mask: u64,
     /// Atoms `[0, upto)` of the domain list are indexed.
     upto: usize,
-    /// Key: the values at the bound positions; value: its group in `groups`.
-    map: HashMap<SmallVec<[SymId; 4]>, u32>,
+    /// The number of bound positions: the length of a key.
+    width: usize,
+    /// The groups, hashed by their keys ([`values_hash`]).
+    table: HashTable<u32>,
+    /// The key of each group (the values at the bound positions), one after another.
+    keys: Vec<SymId>,
     /// Domain positions of each key, increasing (append-only).
     groups: Vec<Vec<u32>>,
+}
+
+impl Index {
+    /// An empty index on the positions of `mask`.
+    fn new(mask: u64) -> Index {
+        Index {
+            mask,
+            upto: 0,
+            width: mask.count_ones() as usize,
+            table: HashTable::new(),
+            keys: Vec::new(),
+            groups: Vec::new(),
+        }
+    }
+
+    /// The group of `key`, if there is one.
+    fn find(&self, key: &[SymId]) -> Option<u32> {
+        let w = self.width;
+        let keys = &self.keys;
+        self.table
+            .find(values_hash(key), |&g| {
+                &keys[g as usize * w..(g as usize + 1) * w] == key
+            })
+            .copied()
+    }
+
+    /// The group of `key`, added (empty) if new.
+    fn group(&mut self, key: &[SymId]) -> u32 {
+        if let Some(g) = self.find(key) {
+            return g;
+        }
+        let g = self.groups.len() as u32;
+        self.keys.extend_from_slice(key);
+        self.groups.push(Vec::new());
+        let (keys, w) = (&self.keys, self.width);
+        self.table.insert_unique(values_hash(key), g, |&x| {
+            values_hash(&keys[x as usize * w..(x as usize + 1) * w])
+        });
+        g
+    }
 }
 
 /// The atoms of one predicate.
@@ -175,8 +219,6 @@ pub struct Grounder<'a> {
     rule_set: HashTable<u32>,
     /// Hash of each rule in `rules` (so that growing `rule_set` does not rehash rules).
     rule_hashes: Vec<u64>,
-    /// Hasher for `rule_set`.
-    hasher: hashbrown::DefaultHashBuilder,
     /// Diagnostics.
     pub diags: &'a mut Diagnostics,
     /// Sources for snippets.
@@ -232,13 +274,13 @@ pub struct Grounder<'a> {
 #[derive(Default)]
 struct Scratch {
     /// `join_order`: the variables bound so far.
-    bound: Vec<bool>,
+    bound: VarSet,
     /// `join_order`: the variables aggregates bind.
-    reserved: Vec<bool>,
+    reserved: VarSet,
     /// `join_order`: the literals placed so far.
     placed: Vec<bool>,
     /// `join_order`: the variables a literal binds.
-    newly: Vec<u32>,
+    newly: VarSet,
     /// The join order of the statement.
     order: Vec<usize>,
     /// The join state of the statement (taken while it is grounded).
@@ -399,7 +441,6 @@ impl<'a> Grounder<'a> {
             dead: Vec::new(),
             rule_set: HashTable::new(),
             rule_hashes: Vec::new(),
-            hasher: hashbrown::DefaultHashBuilder::default(),
             diags,
             sources,
             provenance,
@@ -601,7 +642,7 @@ impl<'a> Grounder<'a> {
             self.rules.len(),
             "add_rule after release_dedup"
         );
-        let hash = self.hasher.hash_one(rule);
+        let hash = rule_hash(rule);
         let rules = &self.rules;
         if let Some(&i) = self.rule_set.find(hash, |&i| rules.get(i as usize) == rule) {
             if self.provenance {
@@ -651,11 +692,55 @@ impl<'a> Grounder<'a> {
             return;
         }
         let rule = rule.as_ref();
-        let hash = self.hasher.hash_one(rule);
+        let hash = rule_hash(rule);
         let rules = &self.rules;
         if let Some(&i) = self.rule_set.find(hash, |&i| rules.get(i as usize) == rule) {
             let o = origin(self);
             self.add_origin(i, o);
         }
     }
+}
+
+/// One step of the grounder's hashes: a multiplicative word mix (as the symbol table's).
+#[inline]
+fn mix(h: u64, w: u64) -> u64 {
+    const K: u64 = 0x9e37_79b9_7f4a_7c15;
+    (h.rotate_left(23) ^ w).wrapping_mul(K)
+}
+
+/// The hash of a list of symbols (an index key).
+fn values_hash(vs: &[SymId]) -> u64 {
+    let mut h = mix(7, vs.len() as u64);
+    for v in vs {
+        h = mix(h, v.0 as u64);
+    }
+    h ^ (h >> 29)
+}
+
+/// The hash of a ground rule in the deduplication table: a multiplicative word mix, as the
+/// symbol table's (a general hasher writes every atom separately, several times the work).
+fn rule_hash(r: RuleRef<'_>) -> u64 {
+    let kind = match r.head_kind {
+        HeadKind::Disjunction => 1,
+        HeadKind::Choice => 2,
+    };
+    let mut h = mix(kind, r.head.len() as u64);
+    for &a in r.head {
+        h = mix(h, a as u64);
+    }
+    match r.body {
+        BodyRef::Normal(ls) => {
+            h = mix(h, ls.len() as u64);
+            for &l in ls {
+                h = mix(h, l as u32 as u64);
+            }
+        }
+        BodyRef::Weight { lower, lits } => {
+            h = mix(mix(h, u64::MAX - lits.len() as u64), lower as u64);
+            for &(l, w) in lits {
+                h = mix(mix(h, l as u32 as u64), w as u64);
+            }
+        }
+    }
+    h ^ (h >> 29)
 }
