@@ -1,7 +1,9 @@
 //! Source files held in memory, with line tables for turning spans into `line:column`.
 //!
 //! Invariant: `line_starts[0] == 0` and the table is strictly increasing; columns are 1-based
-//! byte columns, as gringo prints them.
+//! byte columns, as gringo prints them. The table is built from the text on first use (only
+//! diagnostics need it: a call that parses and grounds without a message never does), so a
+//! file's `text` is not changed after the file is made.
 
 use super::span::{FileId, Span};
 
@@ -12,34 +14,41 @@ pub struct SourceFile {
     pub name: String,
     /// The full text.
     pub text: String,
-    /// Byte offset of the first character of every line.
-    line_starts: Vec<u32>,
+    /// Byte offset of the first character of every line, built on first use.
+    line_starts: std::sync::OnceLock<Vec<u32>>,
 }
 
 impl SourceFile {
-    /// Builds the line table of `text`.
+    /// The file `name` with text `text` (its line table is built when first needed).
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> SourceFile {
-        let text = text.into();
-        let mut line_starts = vec![0u32];
-        for (i, b) in text.bytes().enumerate() {
-            if b == b'\n' {
-                line_starts.push((i + 1) as u32);
-            }
-        }
         SourceFile {
             name: name.into(),
-            text,
-            line_starts,
+            text: text.into(),
+            line_starts: std::sync::OnceLock::new(),
         }
+    }
+
+    /// The line table: the byte offset of the first character of every line.
+    fn line_starts(&self) -> &[u32] {
+        self.line_starts.get_or_init(|| {
+            let mut starts = vec![0u32];
+            for (i, b) in self.text.bytes().enumerate() {
+                if b == b'\n' {
+                    starts.push((i + 1) as u32);
+                }
+            }
+            starts
+        })
     }
 
     /// 1-based line and 1-based byte column of a byte offset.
     pub fn line_col(&self, offset: u32) -> (u32, u32) {
-        let line = match self.line_starts.binary_search(&offset) {
+        let line_starts = self.line_starts();
+        let line = match line_starts.binary_search(&offset) {
             Ok(i) => i,
             Err(i) => i - 1,
         };
-        (line as u32 + 1, offset - self.line_starts[line] + 1)
+        (line as u32 + 1, offset - line_starts[line] + 1)
     }
 
     /// The text covered by `span`, clipped to the file.

@@ -68,6 +68,41 @@ impl Name {
     }
 }
 
+impl Name {
+    /// A hash of the text for small direct-mapped caches (the rewriter's name ids): for an
+    /// inline name three multiplications over its bytes, whatever its length. Equal names have
+    /// equal hashes.
+    #[inline]
+    pub fn quick_hash(&self) -> u64 {
+        const K: u64 = 0x9e37_79b9_7f4a_7c15;
+        match &self.0 {
+            Repr::Inline { len, bytes } => {
+                let (a, b, c) = words(bytes);
+                (((a.wrapping_mul(K) ^ b).wrapping_mul(K) ^ c).wrapping_mul(K) ^ u64::from(*len))
+                    .wrapping_mul(K)
+            }
+            Repr::Heap(s) => s
+                .bytes()
+                .fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+                    (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+                })
+                .wrapping_mul(K),
+        }
+    }
+}
+
+/// The inline bytes as three words (the last two overlap by two bytes): fixed-size loads, so
+/// comparing and hashing a name costs a few instructions whatever its length.
+#[inline]
+fn words(bytes: &[u8; INLINE]) -> (u64, u64, u64) {
+    let word = |i: usize| {
+        let mut w = [0u8; 8];
+        w.copy_from_slice(&bytes[i..i + 8]);
+        u64::from_le_bytes(w)
+    };
+    (word(0), word(8), word(INLINE - 8))
+}
+
 impl Default for Name {
     fn default() -> Name {
         Name::new("")
@@ -119,9 +154,16 @@ impl From<Name> for String {
 }
 
 impl PartialEq for Name {
+    /// Two inline names compare as their 24 bytes (the bytes past `len` are zero); a text of
+    /// up to [`INLINE`] bytes is always inline, so an inline name never equals a shared one.
     #[inline]
     fn eq(&self, other: &Name) -> bool {
-        self.as_str() == other.as_str()
+        match (&self.0, &other.0) {
+            (Repr::Inline { len: a, bytes: x }, Repr::Inline { len: b, bytes: y }) => {
+                a == b && words(x) == words(y)
+            }
+            _ => self.as_str() == other.as_str(),
+        }
     }
 }
 
@@ -222,6 +264,10 @@ mod tests {
             Repr::Inline { .. }
         ));
         assert!(Name::new("a") < Name::new("b"));
+        for (a, b) in [("p", "p"), ("in_hand", "in_hand"), (long, long)] {
+            assert_eq!(Name::new(a).quick_hash(), Name::new(b).quick_hash());
+        }
+        assert_ne!(Name::new("p").quick_hash(), Name::new("q").quick_hash());
         assert_ne!(Name::new("a"), Name::new("ab"));
     }
 

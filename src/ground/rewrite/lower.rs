@@ -23,9 +23,12 @@ impl Rewriter<'_> {
             TermKind::String(s) => NTerm::Sym(self.syms.string(s)),
             TermKind::Constant(c) => match self.consts.get(c.as_str()) {
                 Some(&v) => NTerm::Sym(v),
-                None => NTerm::Sym(self.syms.fun_str(c, false, &[])),
+                None => {
+                    let name = self.name_id(c);
+                    NTerm::Sym(self.syms.fun(name, false, &[]))
+                }
             },
-            TermKind::Variable(v) => NTerm::Var(vars.slot(&mut self.syms.names, v, t.span)),
+            TermKind::Variable(v) => NTerm::Var(vars.slot(self.name_id(v), t.span)),
             TermKind::Anonymous => NTerm::Var(vars.fresh(&mut self.syms.names, "Anon", t.span)),
             TermKind::Infimum => NTerm::Sym(self.syms.inf()),
             TermKind::Supremum => NTerm::Sym(self.syms.sup()),
@@ -35,7 +38,7 @@ impl Rewriter<'_> {
                 for a in list {
                     nargs.push(self.term(a, vars, extra)?);
                 }
-                let name_sym = self.syms.names.intern(name);
+                let name_sym = self.name_id(name);
                 self.fold_fun(name_sym, false, nargs)
             }
             TermKind::ScriptCall { .. } => {
@@ -133,7 +136,7 @@ impl Rewriter<'_> {
         for t in list {
             args.push(self.term(t, vars, extra)?);
         }
-        let name = self.syms.names.intern(&a.name);
+        let name = self.name_id(&a.name);
         let pred = self.pred_of(name, args.len() as u32, a.negated);
         Some(NAtom {
             pred,

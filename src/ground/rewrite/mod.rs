@@ -310,7 +310,19 @@ pub struct Rewriter<'a> {
     projections: u32,
     /// Set while rewriting a statement made for another one's translation.
     aux_role: Option<AuxKind>,
+    /// The ids of the tree's names in `syms.names`, direct-mapped by
+    /// [`ast::Name::quick_hash`]: a program names few predicates, constants and variables
+    /// many times, and a hit costs a hash of the name's bytes and one compare instead of the
+    /// interner's probe. Entries stay valid: the interner never forgets a name.
+    name_ids: Vec<Option<(ast::Name, Sym)>>,
+    /// Predicate ids by signature, direct-mapped likewise (`pred_map` is the full table).
+    pred_ids: Vec<Option<(Pred, PredId)>>,
 }
+
+/// Slots of [`Rewriter`]'s name cache (a power of two).
+const NAME_SLOTS: usize = 128;
+/// Slots of [`Rewriter`]'s predicate cache (a power of two).
+const PRED_SLOTS: usize = 64;
 
 /// Per-statement variable table. Names are interned in the symbol table's interner (the
 /// statement's `var_names` are those ids), so a variable costs no string of its own.
@@ -323,8 +335,7 @@ struct Vars {
 }
 
 impl Vars {
-    fn slot(&mut self, interner: &mut Interner, name: &str, span: Span) -> u32 {
-        let name = interner.intern(name);
+    fn slot(&mut self, name: Sym, span: Span) -> u32 {
         // Rules have few variables: a scan beats hashing; the map indexes the names only
         // past `SCAN`.
         const SCAN: usize = 16;
@@ -352,8 +363,8 @@ impl Vars {
 
     fn fresh(&mut self, interner: &mut Interner, prefix: &str, span: Span) -> u32 {
         self.fresh += 1;
-        let name = format!("#{prefix}{}", self.fresh);
-        self.slot(interner, &name, span)
+        let name = interner.intern(&format!("#{prefix}{}", self.fresh));
+        self.slot(name, span)
     }
 }
 
@@ -436,7 +447,23 @@ impl<'a> Rewriter<'a> {
             current: (0, Span::default()),
             aux_role: None,
             projections: 0,
+            name_ids: vec![None; NAME_SLOTS],
+            pred_ids: vec![None; PRED_SLOTS],
         }
+    }
+
+    /// The id of a name of the tree (see `name_ids`).
+    #[inline]
+    pub fn name_id(&mut self, name: &ast::Name) -> Sym {
+        let i = (name.quick_hash() >> (64 - NAME_SLOTS.trailing_zeros())) as usize;
+        if let Some((n, sym)) = &self.name_ids[i] {
+            if n == name {
+                return *sym;
+            }
+        }
+        let sym = self.syms.names.intern(name);
+        self.name_ids[i] = Some((name.clone(), sym));
+        sym
     }
 
     /// Multi-shot: continues the predicate table of an earlier rewriting (predicates keep their
@@ -465,12 +492,24 @@ impl<'a> Rewriter<'a> {
     /// The id of a predicate signature whose name is interned already.
     pub fn pred_of(&mut self, name: Sym, arity: u32, neg: bool) -> PredId {
         let p = Pred { name, arity, neg };
-        if let Some(&id) = self.pred_map.get(&p) {
-            return id;
+        let slot =
+            (name.0.wrapping_mul(0x9e37_79b9) ^ arity.wrapping_mul(0x85eb_ca6b) ^ neg as u32) >> 7;
+        let slot = slot as usize & (PRED_SLOTS - 1);
+        if let Some((q, id)) = &self.pred_ids[slot] {
+            if *q == p {
+                return *id;
+            }
         }
-        let id = self.out.preds.len() as PredId;
-        self.out.preds.push(p.clone());
-        self.pred_map.insert(p, id);
+        let id = match self.pred_map.get(&p) {
+            Some(&id) => id,
+            None => {
+                let id = self.out.preds.len() as PredId;
+                self.out.preds.push(p.clone());
+                self.pred_map.insert(p.clone(), id);
+                id
+            }
+        };
+        self.pred_ids[slot] = Some((p, id));
         id
     }
 

@@ -124,12 +124,18 @@ pub fn plan(
 ) -> Vec<NLit> {
     let mut out = Vec::with_capacity(lits.len());
     let mut newly = Vec::new();
+    // What the best literal so far binds: `readiness` leaves in `newly` what the literal it
+    // scored binds, and `bound` does not change during a round, so the chosen literal's is kept
+    // instead of scoring it again (an aggregate's `binder`, set by `readiness`, is likewise the
+    // one of this round's bound variables).
+    let mut best_newly = Vec::new();
     while !lits.is_empty() {
         let mut best: Option<(u32, usize)> = None;
         for (i, lit) in lits.iter_mut().enumerate() {
             if let Some(score) = readiness(lit, bound, global, &mut newly) {
                 if best.is_none_or(|(s, _)| score < s) {
                     best = Some((score, i));
+                    std::mem::swap(&mut newly, &mut best_newly);
                 }
             }
         }
@@ -149,8 +155,7 @@ pub fn plan(
             return out;
         };
         let mut l = lits.remove(i);
-        readiness(&mut l, bound, global, &mut newly);
-        for &v in &newly {
+        for &v in &best_newly {
             bound[v as usize] = true;
         }
         // Plan aggregate element conditions with the global variables bound so far.
