@@ -111,6 +111,56 @@ impl Binding {
     }
 }
 
+/// A set of variable slots asked which are known (bound): what [`NTerm::bound_by`] and
+/// [`NTerm::binds`] read.
+pub trait Known {
+    /// Whether slot `v` is known.
+    fn knows(&self, v: u32) -> bool;
+}
+
+impl Known for [bool] {
+    #[inline]
+    fn knows(&self, v: u32) -> bool {
+        self[v as usize]
+    }
+}
+
+impl Known for VarSet {
+    #[inline]
+    fn knows(&self, v: u32) -> bool {
+        self.contains(v)
+    }
+}
+
+impl Known for Binding {
+    #[inline]
+    fn knows(&self, v: u32) -> bool {
+        self.get(v).is_some()
+    }
+}
+
+/// Where [`NTerm::binds`] adds the slots a match binds (each once).
+pub trait Newly {
+    /// Adds slot `v`, if not there yet.
+    fn add(&mut self, v: u32);
+}
+
+impl Newly for Vec<u32> {
+    #[inline]
+    fn add(&mut self, v: u32) {
+        if !self.contains(&v) {
+            self.push(v);
+        }
+    }
+}
+
+impl Newly for VarSet {
+    #[inline]
+    fn add(&mut self, v: u32) {
+        self.insert(v);
+    }
+}
+
 /// A set of variable slots as bits (one word for rules of up to 64 variables). Meant to be
 /// kept and [`VarSet::reset`] for the next rule, so that it allocates once.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -214,7 +264,7 @@ impl TermVars {
         self.pattern.push(pattern);
     }
 
-    /// [`NTerm::bound_in`] for term `i`.
+    /// [`NTerm::bound_by`] for term `i`.
     #[inline]
     pub fn bound_in(&self, i: usize, bound: &VarSet) -> bool {
         if let [b] = &bound.words[..] {
@@ -227,12 +277,12 @@ impl TermVars {
             .all(|(t, b)| t & !b == 0)
     }
 
-    /// [`NTerm::binds_in`] for term `i`, which is `t`: a pattern binds its unbound variables;
+    /// [`NTerm::binds`] for term `i`, which is `t`: a pattern binds its unbound variables;
     /// other terms are walked.
     #[inline]
     pub fn binds_in(&self, i: usize, t: &NTerm, bound: &VarSet, out: &mut VarSet) -> bool {
         if !self.pattern[i] {
-            return t.binds_in(bound, out);
+            return t.binds(bound, out);
         }
         if let ([b], [o]) = (&bound.words[..], &mut out.words[..]) {
             *o |= self.words[i] & !b;
@@ -331,26 +381,29 @@ impl NTerm {
         }
     }
 
-    /// True when every variable of the term is in `bound`.
-    pub fn bound_by(&self, bound: &[bool]) -> bool {
+    /// True when every variable of the term is known in `bound` (a `[bool]` by slot, a
+    /// [`VarSet`] or a [`Binding`]).
+    pub fn bound_by<K: Known + ?Sized>(&self, bound: &K) -> bool {
         match self {
             NTerm::Sym(_) => true,
-            NTerm::Var(v) => bound[*v as usize],
+            NTerm::Var(v) => bound.knows(*v),
             NTerm::Fun { args, .. } => args.iter().all(|a| a.bound_by(bound)),
             NTerm::Unary { arg, .. } => arg.bound_by(bound),
             NTerm::Binary { lhs, rhs, .. } => lhs.bound_by(bound) && rhs.bound_by(bound),
         }
     }
 
-    /// When matching the term against a symbol with the variables in `bound` known: `None` if
+    /// When matching the term against a symbol with the variables in `bound` known: false if
     /// it cannot be matched (an operation over an unknown variable that cannot be inverted),
-    /// otherwise adds the variables the match binds to `out`.
-    pub fn binds(&self, bound: &[bool], out: &mut Vec<u32>) -> bool {
+    /// otherwise true, and the variables the match binds are added to `out`. The one place
+    /// that says which terms a match can invert: the rewriter's safety check and the
+    /// instantiator's join order both ask it.
+    pub fn binds<K: Known + ?Sized, O: Newly>(&self, bound: &K, out: &mut O) -> bool {
         match self {
             NTerm::Sym(_) => true,
             NTerm::Var(v) => {
-                if !bound[*v as usize] && !out.contains(v) {
-                    out.push(*v);
+                if !bound.knows(*v) {
+                    out.add(*v);
                 }
                 true
             }
@@ -404,52 +457,6 @@ impl NTerm {
                 rhs.mark_vars(bits);
                 false
             }
-        }
-    }
-
-    /// [`NTerm::bound_by`] over a [`VarSet`].
-    pub fn bound_in(&self, bound: &VarSet) -> bool {
-        match self {
-            NTerm::Sym(_) => true,
-            NTerm::Var(v) => bound.contains(*v),
-            NTerm::Fun { args, .. } => args.iter().all(|a| a.bound_in(bound)),
-            NTerm::Unary { arg, .. } => arg.bound_in(bound),
-            NTerm::Binary { lhs, rhs, .. } => lhs.bound_in(bound) && rhs.bound_in(bound),
-        }
-    }
-
-    /// [`NTerm::binds`] over [`VarSet`]s: the variables the match binds are added to `out`.
-    pub fn binds_in(&self, bound: &VarSet, out: &mut VarSet) -> bool {
-        match self {
-            NTerm::Sym(_) => true,
-            NTerm::Var(v) => {
-                if !bound.contains(*v) {
-                    out.insert(*v);
-                }
-                true
-            }
-            NTerm::Fun { args, .. } => args.iter().all(|a| a.binds_in(bound, out)),
-            _ if self.bound_in(bound) => true,
-            NTerm::Unary {
-                op: UnaryOp::Minus,
-                arg,
-                ..
-            } => arg.binds_in(bound, out),
-            NTerm::Binary {
-                op: BinaryOp::Add | BinaryOp::Sub | BinaryOp::Mul,
-                lhs,
-                rhs,
-                ..
-            } => {
-                if lhs.bound_in(bound) {
-                    rhs.binds_in(bound, out)
-                } else if rhs.bound_in(bound) {
-                    lhs.binds_in(bound, out)
-                } else {
-                    false
-                }
-            }
-            _ => false,
         }
     }
 
@@ -563,7 +570,7 @@ impl NTerm {
                 _ => false,
             },
             _ => {
-                if self.bound_by_binding(b) {
+                if self.bound_by(b) {
                     return match self.eval(syms, b) {
                         Ok(v) => v == sym,
                         Err(_) => false,
@@ -596,7 +603,7 @@ impl NTerm {
                         arg.matches(syms, t, b)
                     }
                     NTerm::Binary { op, lhs, rhs, .. } => {
-                        let (known, unknown, known_left) = if lhs.bound_by_binding(b) {
+                        let (known, unknown, known_left) = if lhs.bound_by(b) {
                             (lhs, rhs, true)
                         } else {
                             (rhs, lhs, false)
@@ -630,17 +637,6 @@ impl NTerm {
                     _ => false,
                 }
             }
-        }
-    }
-
-    /// True when every variable of the term is bound in `b`.
-    pub fn bound_by_binding(&self, b: &Binding) -> bool {
-        match self {
-            NTerm::Sym(_) => true,
-            NTerm::Var(v) => b.get(*v).is_some(),
-            NTerm::Fun { args, .. } => args.iter().all(|a| a.bound_by_binding(b)),
-            NTerm::Unary { arg, .. } => arg.bound_by_binding(b),
-            NTerm::Binary { lhs, rhs, .. } => lhs.bound_by_binding(b) && rhs.bound_by_binding(b),
         }
     }
 }

@@ -30,7 +30,7 @@ impl<'a> Grounder<'a> {
                     Some(s) => s,
                     None => continue,
                 },
-                _ if !t.bound_by_binding(b) => continue,
+                _ if !t.bound_by(b) => continue,
                 _ => match t.eval(&mut self.syms, b) {
                     Ok(v) => v,
                     Err(span) => {
@@ -149,7 +149,7 @@ impl<'a> Grounder<'a> {
                         if self.provenance
                             && self.prov_aux.is_none()
                             && ranges.get(i).copied().flatten().is_none()
-                            && atom.args.iter().all(|t| t.bound_by_binding(&ctx.binding))
+                            && atom.args.iter().all(|t| t.bound_by(&ctx.binding))
                         {
                             if let Some(sym) = self.atom_sym(atom, &ctx.binding) {
                                 self.blocked(ctx, true, sym, atom.pred);
@@ -248,8 +248,8 @@ impl<'a> Grounder<'a> {
                 ctx.body.truncate(blen);
             }
             NLit::Cmp { op, lhs, rhs } => {
-                let lb = lhs.bound_by_binding(&ctx.binding);
-                let rb = rhs.bound_by_binding(&ctx.binding);
+                let lb = lhs.bound_by(&ctx.binding);
+                let rb = rhs.bound_by(&ctx.binding);
                 if lb && rb {
                     // Integer arithmetic is compared without creating symbols; anything else
                     // (and undefined operations, which warn) goes the general way.
@@ -608,18 +608,18 @@ pub(super) fn lit_binds(l: &NLit, bound: &VarSet, out: &mut VarSet) {
             atom,
         } => {
             for t in &atom.args {
-                t.binds_in(bound, out);
+                t.binds(bound, out);
             }
         }
         NLit::Cmp { lhs, rhs, .. } => {
-            if lhs.bound_in(bound) {
-                rhs.binds_in(bound, out);
+            if lhs.bound_by(bound) {
+                rhs.binds(bound, out);
             } else {
-                lhs.binds_in(bound, out);
+                lhs.binds(bound, out);
             }
         }
         NLit::Interval { pat, .. } => {
-            pat.binds_in(bound, out);
+            pat.binds(bound, out);
         }
         NLit::Agg(a) => {
             if let Some(NTerm::Var(v)) = a.binder.map(|k| &a.guards[k].1) {

@@ -79,7 +79,7 @@ impl Grounder<'_> {
         for a in &atoms {
             let mut vals: SmallVec<[SymId; 8]> = SmallVec::new();
             for t in &a.args {
-                match t.bound_by_binding(&ctx.binding) {
+                match t.bound_by(&ctx.binding) {
                     true => match t.eval(&mut self.syms, &ctx.binding) {
                         Ok(v) => vals.push(v),
                         Err(_) => break,
