@@ -90,6 +90,19 @@ impl Binding {
         self.values[v as usize]
     }
 
+    /// Matches slot `v` against `s`: true when it holds `s`, or when it was unbound and now
+    /// holds `s` (bound with [`Binding::bind`]).
+    #[inline]
+    pub fn unify(&mut self, v: u32, s: SymId) -> bool {
+        match self.get(v) {
+            Some(x) => x == s,
+            None => {
+                self.bind(v, s);
+                true
+            }
+        }
+    }
+
     /// Binds an unbound slot.
     pub fn bind(&mut self, v: u32, s: SymId) {
         debug_assert!(self.values[v as usize].is_none());
@@ -527,19 +540,24 @@ impl NTerm {
         }
     }
 
+    /// [`NTerm::matches`] with constants and variables (most arguments of an atom) matched
+    /// inline, without a call.
+    #[inline(always)]
+    pub fn matches_arg(&self, syms: &mut Symbols, sym: SymId, b: &mut Binding) -> bool {
+        match self {
+            NTerm::Sym(x) => *x == sym,
+            NTerm::Var(v) => b.unify(*v, sym),
+            _ => self.matches(syms, sym, b),
+        }
+    }
+
     /// Matches the term against `sym`, binding unbound variables; on failure the binding may
     /// hold partial bindings, which the caller undoes to its mark. An undefined operation is a
     /// failed match.
     pub fn matches(&self, syms: &mut Symbols, sym: SymId, b: &mut Binding) -> bool {
         match self {
             NTerm::Sym(s) => *s == sym,
-            NTerm::Var(v) => match b.get(*v) {
-                Some(s) => s == sym,
-                None => {
-                    b.bind(*v, sym);
-                    true
-                }
-            },
+            NTerm::Var(v) => b.unify(*v, sym),
             NTerm::Fun { name, neg, args } => match syms.get(sym) {
                 SymData::Fun {
                     name: n2,
@@ -549,19 +567,7 @@ impl NTerm {
                 } if n2 == *name && g2 == *neg && len as usize == args.len() => {
                     for (i, a) in args.iter().enumerate() {
                         let s = syms.args(sym)[i];
-                        // Constants and variables (most arguments) without a call.
-                        let ok = match a {
-                            NTerm::Sym(x) => *x == s,
-                            NTerm::Var(v) => match b.get(*v) {
-                                Some(x) => x == s,
-                                None => {
-                                    b.bind(*v, s);
-                                    true
-                                }
-                            },
-                            _ => a.matches(syms, s, b),
-                        };
-                        if !ok {
+                        if !a.matches_arg(syms, s, b) {
                             return false;
                         }
                     }

@@ -174,18 +174,7 @@ impl<'a> Grounder<'a> {
                     let mut ok = true;
                     for (j, t) in atom.args.iter().enumerate() {
                         let s = self.syms.args(sym)[j];
-                        // Constants and variables (most arguments) without a call.
-                        ok = match t {
-                            NTerm::Sym(x) => *x == s,
-                            NTerm::Var(v) => match ctx.binding.get(*v) {
-                                Some(x) => x == s,
-                                None => {
-                                    ctx.binding.bind(*v, s);
-                                    true
-                                }
-                            },
-                            _ => t.matches(&mut self.syms, s, &mut ctx.binding),
-                        };
+                        ok = t.matches_arg(&mut self.syms, s, &mut ctx.binding);
                         if !ok {
                             break;
                         }
