@@ -5,7 +5,8 @@ each time. Lucent runs examples/learner_loop.rs (library calls through control::
 with the release-lto profile, mimalloc as its allocator);
 clingo runs Control(), add, ground, solve with the model's atoms read as symbols.
 Prints calls per second for both and the ratio, and the CPU time per call of both (clingo's:
-this process's `time.process_time()` over its loop; Lucent's: the child's user+sys time).
+this process's `time.process_time()` over its loop; Lucent's: the child's user+sys time); with
+--rounds, the medians of both ratios over the rounds come last.
 
 With --bin (repeatable), prebuilt learner_loop binaries (say main's and a branch's) run instead
 of building one, in --rounds rounds of clingo then each binary, so that a loaded machine's
@@ -15,6 +16,7 @@ usage: scripts/bench_learner_loop.py [--n N] [--rounds R] [--bin BIN]... [PROGRA
        (default benches/data/learner_step.lp)
 """
 import argparse
+import statistics
 import os
 import re
 import resource
@@ -73,6 +75,8 @@ def main():
     with open(a.program) as fh:
         text = fh.read()
     import clingo
+    rate_ratios = {exe: [] for exe in exes}
+    cpu_ratios = {exe: [] for exe in exes}
     for r in range(a.rounds):
         if a.rounds > 1 or a.bin:
             print("round {} (load average {:.1f})".format(r, os.getloadavg()[0]))
@@ -90,8 +94,16 @@ def main():
                   clingo.__version__, a.n, secs, clingo_rate, atoms, 1e6 * clingo_cpu))
         for exe, (out, rate, cpu) in zip(exes, runs):
             name = " ({})".format(exe) if a.bin else ""
+            rate_ratios[exe].append(rate / clingo_rate)
+            cpu_ratios[exe].append(clingo_cpu / (cpu / a.n))
             print("ratio lucent/clingo = {:.2f}, cpu ratio clingo/lucent = {:.2f}{}".format(
                 rate / clingo_rate, clingo_cpu / (cpu / a.n), name))
+    if a.rounds > 1:
+        for exe in exes:
+            name = " ({})".format(exe) if a.bin else ""
+            print("median over {} rounds: ratio lucent/clingo = {:.2f}, cpu ratio "
+                  "clingo/lucent = {:.2f}{}".format(a.rounds, statistics.median(rate_ratios[exe]),
+                                                    statistics.median(cpu_ratios[exe]), name))
 
 if __name__ == "__main__":
     sys.exit(main())
