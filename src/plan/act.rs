@@ -202,20 +202,8 @@ fn positive(f: &Symbol) -> (Symbol, bool) {
 pub fn goal_literal(text: &str) -> Result<Symbol, String> {
     let s = Symbol::parse(text.trim()).map_err(|e| format!("goal `{text}`: {e}"))?;
     let (p, sign) = positive(&s);
-    const RELATIONS: [&str; 10] = [
-        "above",
-        "below",
-        "front",
-        "behind",
-        "left",
-        "right",
-        "touch",
-        "not_touch",
-        "far",
-        "on",
-    ];
     let lifted = match p.name() {
-        Some(n) if p.args().len() == 2 && RELATIONS.contains(&n) => Symbol::function(
+        Some(n) if p.args().len() == 2 && super::scene::RELATIONS.contains(&n) => Symbol::function(
             "relation",
             vec![
                 Symbol::constant(n),
