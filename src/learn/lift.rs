@@ -94,6 +94,23 @@ impl Algebra {
         }
     }
 
+    /// The name of relation `name` with its arguments swapped: itself for a symmetric relation,
+    /// the other of its pair for a converse; `None` for any other relation.
+    pub fn other_name(&self, name: &str) -> Option<String> {
+        if self.symmetric.iter().any(|s| s == name) {
+            return Some(name.to_string());
+        }
+        self.converse.iter().find_map(|(x, y)| {
+            if x == name {
+                Some(y.clone())
+            } else if y == name {
+                Some(x.clone())
+            } else {
+                None
+            }
+        })
+    }
+
     /// The normal form of a lifted relation literal: if the arguments are variables out of
     /// order (second smaller), a converse or symmetric relation is flipped.
     pub fn normalize(&self, lit: &Literal) -> Literal {
@@ -106,20 +123,7 @@ impl Algebra {
         let Term::Const(name) = &lit.args[0] else {
             return lit.clone();
         };
-        let flipped_name = if self.symmetric.contains(name) {
-            Some(name.clone())
-        } else {
-            self.converse.iter().find_map(|(x, y)| {
-                if x == name {
-                    Some(y.clone())
-                } else if y == name {
-                    Some(x.clone())
-                } else {
-                    None
-                }
-            })
-        };
-        let Some(flipped_name) = flipped_name else {
+        let Some(flipped_name) = self.other_name(name) else {
             return lit.clone();
         };
         // Keep the form whose first argument is the smaller variable; for converses with equal
@@ -347,19 +351,7 @@ fn flip(f: &Literal, algebra: &Algebra) -> Option<Literal> {
     let Term::Const(name) = &f.args[0] else {
         return None;
     };
-    let other = if algebra.symmetric.contains(name) {
-        name.clone()
-    } else {
-        algebra.converse.iter().find_map(|(x, y)| {
-            if x == name {
-                Some(y.clone())
-            } else if y == name {
-                Some(x.clone())
-            } else {
-                None
-            }
-        })?
-    };
+    let other = algebra.other_name(name)?;
     Some(Literal {
         positive: f.positive,
         name: f.name.clone(),
