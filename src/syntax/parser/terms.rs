@@ -17,23 +17,13 @@ impl<'a> Parser<'a> {
     /// A term whose binary operators bind at least as tightly as `min_level`.
     /// Levels: `..` 0, `^` 1, `?` 2, `&` 3, `+ -` 4, `* / \` 5, `**` 6 (right-associative).
     pub(super) fn binary(&mut self, min_level: u8) -> PResult<Term> {
+        if let Some(leaf) = self.leaf() {
+            return Ok(leaf);
+        }
         self.enter()?;
         let mut lhs = self.unary()?;
         let mut folds = 0;
-        loop {
-            let (level, op) = match self.tok.kind {
-                T::Dots => (0, None),
-                T::Caret => (1, Some(BinaryOp::BitXor)),
-                T::Question => (2, Some(BinaryOp::BitOr)),
-                T::Amp => (3, Some(BinaryOp::BitAnd)),
-                T::Plus => (4, Some(BinaryOp::Add)),
-                T::Minus => (4, Some(BinaryOp::Sub)),
-                T::Star => (5, Some(BinaryOp::Mul)),
-                T::Slash => (5, Some(BinaryOp::Div)),
-                T::Backslash => (5, Some(BinaryOp::Mod)),
-                T::Pow => (6, Some(BinaryOp::Pow)),
-                _ => break,
-            };
+        while let Some((level, op)) = binary_operator(self.tok.kind) {
             if level < min_level {
                 break;
             }
@@ -65,6 +55,31 @@ impl<'a> Parser<'a> {
         self.depth -= folds;
         self.leave();
         Ok(lhs)
+    }
+
+    /// The fast path of [`Parser::binary`] for the commonest terms: a variable, a constant or a
+    /// decimal number that no operator, argument list or interval follows, read here without the
+    /// precedence chain. `None` (nothing consumed) for any other term, and at the nesting cap,
+    /// where the chain reports it.
+    #[inline]
+    fn leaf(&mut self) -> Option<Term> {
+        if !matches!(self.tok.kind, T::Variable | T::Ident | T::Number) || self.depth >= MAX_DEPTH {
+            return None;
+        }
+        let next = self.peek().kind;
+        if binary_operator(next).is_some() || next == T::LParen {
+            return None;
+        }
+        let tok = self.bump();
+        let kind = match tok.kind {
+            T::Variable => TermKind::Variable(Name::new(self.word(tok))),
+            T::Ident => TermKind::Constant(Name::new(self.word(tok))),
+            _ => TermKind::Integer(self.integer(tok)),
+        };
+        Some(Term {
+            span: self.span(tok.start, tok.end),
+            kind,
+        })
     }
 
     /// A term with prefix operators `-` and `~`.
@@ -292,4 +307,23 @@ impl<'a> Parser<'a> {
         }
         out
     }
+}
+
+/// The level and operator of a token that continues a term (`None` for `..`, an interval), as
+/// [`Parser::binary`] reads them; `None` for any other token.
+#[inline]
+fn binary_operator(kind: T) -> Option<(u8, Option<BinaryOp>)> {
+    Some(match kind {
+        T::Dots => (0, None),
+        T::Caret => (1, Some(BinaryOp::BitXor)),
+        T::Question => (2, Some(BinaryOp::BitOr)),
+        T::Amp => (3, Some(BinaryOp::BitAnd)),
+        T::Plus => (4, Some(BinaryOp::Add)),
+        T::Minus => (4, Some(BinaryOp::Sub)),
+        T::Star => (5, Some(BinaryOp::Mul)),
+        T::Slash => (5, Some(BinaryOp::Div)),
+        T::Backslash => (5, Some(BinaryOp::Mod)),
+        T::Pow => (6, Some(BinaryOp::Pow)),
+        _ => return None,
+    })
 }
