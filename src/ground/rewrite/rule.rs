@@ -91,7 +91,13 @@ impl Rewriter<'_> {
         kind: &ast::RuleKind,
     ) {
         let mut vars = Vars::default();
-        let mut out = Vec::new();
+        // The body's literals, and a few interval binders and guard checks (a fact's stays
+        // unallocated).
+        let mut out = if body.is_empty() {
+            Vec::new()
+        } else {
+            Vec::with_capacity(body.len() + 2)
+        };
         let mut extra = Vec::new();
         let kind = match kind {
             ast::RuleKind::Normal => NKind::Rule,

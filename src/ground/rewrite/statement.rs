@@ -28,6 +28,14 @@ impl Rewriter<'_> {
         } else {
             program
         };
+        // A statement gives one rewritten statement, or a few for pools and bound checks:
+        // growing `stmts` by doubling from empty moved every large `NStmt` again at each step
+        // (five reallocations, ~12 K instructions, for the 36 statements of the learner
+        // program). Room for one each and an eighth more (at least 16) avoids most of them and
+        // over-allocates less than doubling does.
+        let n = program.statements.len();
+        self.out.stmt_spans.reserve(n);
+        self.out.stmts.reserve(n + (n / 8).max(16));
         let mut in_base = true;
         for (i, st) in program.statements.iter().enumerate() {
             self.out.stmt_spans.push(st.span);
