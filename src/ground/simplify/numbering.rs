@@ -1,0 +1,112 @@
+//! The aspif numbering of the output: atoms numbered in order of first occurrence in the
+//! output rules, heads before bodies, normal bodies ordered as gringo prints them. The
+//! numbering is the solver's initial variable order, so it follows gringo's to make search on
+//! our ground program behave as on gringo's.
+//!
+//! Invariant: numbers are `1..=next`, given once each, and `atom_syms`/`atom_gatoms` are
+//! indexed by number minus one.
+
+use crate::ground::instantiate::{AtomId, AtomInfo};
+use crate::ground::program::{BodyRef, HeadKind, Lit, Rules, Weight};
+use crate::ground::symbol::SymId;
+
+/// The aspif numbering, made as the output rules are written (gringo's: atoms in order of
+/// first occurrence, each rule's heads before its body), and the scratch vectors that write
+/// each rule renumbered, so the rules are not passed over again to number and renumber them.
+pub(super) struct Numbering {
+    /// The aspif number of each grounder atom (0: none yet).
+    pub(super) number: Vec<u32>,
+    /// The last number given.
+    pub(super) next: u32,
+    /// The symbol of each numbered atom, by number.
+    pub(super) atom_syms: Vec<Option<SymId>>,
+    /// The grounder atom of each numbered atom, by number.
+    pub(super) atom_gatoms: Vec<AtomId>,
+    /// Scratch: the head, body and weight body of a rule being written.
+    head: Vec<AtomId>,
+    lits: Vec<Lit>,
+    wlits: Vec<(Lit, Weight)>,
+}
+
+impl Numbering {
+    pub(super) fn new(n: usize) -> Numbering {
+        Numbering {
+            number: vec![0; n + 1],
+            next: 0,
+            atom_syms: Vec::new(),
+            atom_gatoms: Vec::new(),
+            head: Vec::new(),
+            lits: Vec::new(),
+            wlits: Vec::new(),
+        }
+    }
+
+    /// The number of grounder atom `a`, given now if it has none.
+    pub(super) fn assign(&mut self, a: usize, atoms: &[AtomInfo]) -> u32 {
+        if a >= self.number.len() {
+            self.number.resize(a + 1, 0);
+        }
+        if self.number[a] == 0 {
+            self.next += 1;
+            self.number[a] = self.next;
+            self.atom_syms.push(atoms[a - 1].sym);
+            self.atom_gatoms.push(a as AtomId);
+        }
+        self.number[a]
+    }
+
+    fn assign_lit(&mut self, l: Lit, atoms: &[AtomInfo]) -> Lit {
+        let m = self.assign(l.unsigned_abs() as usize, atoms) as Lit;
+        if l < 0 {
+            -m
+        } else {
+            m
+        }
+    }
+
+    /// Numbers the atoms of a rule over grounder atoms and appends it, renumbered, to `rules`.
+    pub(super) fn push(
+        &mut self,
+        rules: &mut Rules,
+        kind: HeadKind,
+        head: &[AtomId],
+        body: BodyRef<'_>,
+        atoms: &[AtomInfo],
+    ) {
+        let mut h = std::mem::take(&mut self.head);
+        h.clear();
+        for &a in head {
+            h.push(self.assign(a as usize, atoms));
+        }
+        match body {
+            BodyRef::Normal(ls) => {
+                let mut b = std::mem::take(&mut self.lits);
+                b.clear();
+                for &l in ls {
+                    b.push(self.assign_lit(l, atoms));
+                }
+                rules.push_parts(kind, &h, BodyRef::Normal(&b));
+                self.lits = b;
+            }
+            BodyRef::Weight { lower, lits } => {
+                let mut b = std::mem::take(&mut self.wlits);
+                b.clear();
+                for &(l, w) in lits {
+                    b.push((self.assign_lit(l, atoms), w));
+                }
+                rules.push_parts(kind, &h, BodyRef::Weight { lower, lits: &b });
+                self.wlits = b;
+            }
+        }
+        self.head = h;
+    }
+}
+
+/// Orders a normal body as gringo prints it, into `out`: the positive literals in reverse
+/// order of the rule's body, then the negative ones in order. Only the solver's initial
+/// variable order depends on it (atoms are numbered by first occurrence).
+pub(super) fn gringo_body_order(lits: &[Lit], out: &mut Vec<Lit>) {
+    out.clear();
+    out.extend(lits.iter().rev().copied().filter(|&l| l > 0));
+    out.extend(lits.iter().copied().filter(|&l| l < 0));
+}

@@ -1,0 +1,264 @@
+//! Propagation of false atoms: decides which atoms are certainly false (no surviving rule can
+//! derive them) and which rules are dead, by a worklist over the body occurrences of atoms.
+//!
+//! Rules implemented:
+//! - an atom that is not kept (external, or frozen by an earlier grounding) and heads no live
+//!   rule is false;
+//! - a rule with a positive body literal over a false atom, or `not a` with `a` a fact, is dead
+//!   (a weight body loses the literal's weight and dies once its bound is out of reach);
+//! - a disjunctive rule with a fact among its heads (other than the fact's own rule) is dead,
+//!   and so is a rule whose body contains a literal and its negation.
+//!
+//! Invariant: each rule is killed at most once and each atom made false at most once, so the
+//! pass is linear in the size of the rules.
+
+use super::Status;
+use crate::ground::instantiate::{AtomId, Grounder};
+use crate::ground::program::{BodyRef, DeadReason, HeadKind, Lit, Rules};
+
+/// The two passes that build [`Occurrences`]: count, then fill.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Pass {
+    Count,
+    Fill,
+}
+
+/// Body occurrences of atoms `0..=n` in one flat array (compressed rows): the entries of atom
+/// `a` are `items[start[a]..start[a + 1]]`, in rule order.
+struct Occurrences {
+    start: Vec<usize>,
+    items: Vec<(u32, i64)>,
+}
+
+impl Occurrences {
+    fn new(n: usize) -> Occurrences {
+        Occurrences {
+            start: vec![0; n + 2],
+            items: Vec::new(),
+        }
+    }
+
+    /// Counts (first pass) or places (second pass) one occurrence of `atom`.
+    fn add(&mut self, pass: Pass, atom: u32, item: (u32, i64)) {
+        let a = atom as usize;
+        match pass {
+            Pass::Count => self.start[a + 1] += 1,
+            Pass::Fill => {
+                // During filling, `start[a]` is the next free slot of atom `a`.
+                self.items[self.start[a]] = item;
+                self.start[a] += 1;
+            }
+        }
+    }
+
+    /// After counting: turns counts into start offsets; after filling: restores them.
+    fn end(&mut self, pass: Pass) {
+        match pass {
+            Pass::Count => {
+                for i in 1..self.start.len() {
+                    self.start[i] += self.start[i - 1];
+                }
+                // start[a] is now atom a's first slot, the next free one while filling.
+                self.items = vec![(0, 0); *self.start.last().unwrap_or(&0)];
+            }
+            Pass::Fill => {
+                // Each start[a] now holds the end of atom a, which is the start of a + 1.
+                self.start.rotate_right(1);
+                self.start[0] = 0;
+            }
+        }
+    }
+
+    /// The occurrences of atom `a`.
+    fn of(&self, a: usize) -> &[(u32, i64)] {
+        &self.items[self.start[a]..self.start[a + 1]]
+    }
+}
+
+/// Whether a normal body contains a literal and its negation (it can never hold). Only short
+/// bodies are checked (quadratic scan, no allocation); missing a long one is only less simple.
+pub(super) fn contradictory(body: BodyRef<'_>) -> bool {
+    match body {
+        BodyRef::Normal(lits) => contradictory_lits(lits),
+        BodyRef::Weight { .. } => false,
+    }
+}
+
+/// [`contradictory`] for a conjunction of literals.
+pub(super) fn contradictory_lits(lits: &[Lit]) -> bool {
+    lits.len() <= 16
+        && lits
+            .iter()
+            .enumerate()
+            .any(|(i, &l)| lits[i + 1..].contains(&-l))
+}
+
+/// The false atoms by propagation from `status` (facts known, everything else unknown): marks
+/// them in `status` and returns which rules are dead, and whether a rule was killed because its
+/// body holds a literal and its negation (only with `kill_contradictory`; gringo keeps such
+/// rules, so their heads stay possible for gringo). Atoms with `keep[a]` are never made false.
+///
+/// With `why`, records there why each dead rule died (provenance).
+pub(super) fn propagate(
+    g: &Grounder<'_>,
+    keep: &[bool],
+    status: &mut [Status],
+    kill_contradictory: bool,
+    why: Option<&mut Vec<Option<DeadReason>>>,
+) -> (Vec<bool>, bool) {
+    let mut no_why = Vec::new();
+    let why = match why {
+        Some(w) => {
+            *w = vec![None; g.rules.len()];
+            w
+        }
+        None => &mut no_why,
+    };
+    let n = g.atoms.len();
+    let mut killed_contradictory = false;
+    let mut head_count = vec![0u32; n + 1];
+    // Occurrences in bodies: (rule, weight); weight 0 marks a normal body.
+    let mut pos_occ = Occurrences::new(n);
+    let mut neg_occ = Occurrences::new(n);
+    // For weight bodies: the weight still reachable minus the bound; below 0 the rule is dead.
+    let mut slack: Vec<i64> = vec![0; g.rules.len()];
+    // A disjunctive rule with a fact among its heads is satisfied in every model and, by
+    // minimality, supports none of its other heads: it is dead from the start (as in gringo),
+    // so atoms only it could derive become false. The fact's own rule `a.` is kept. So is a
+    // rule whose body holds `a` and `not a` (a weak constraint `:~ r, not r.` costs nothing).
+    // Found in the counting pass, killed once the head counts are complete.
+    let mut dead_at_start: Vec<(u32, DeadReason)> = Vec::new();
+    for pass in [Pass::Count, Pass::Fill] {
+        for (ri, r) in g.rules.iter().enumerate() {
+            if pass == Pass::Count {
+                for &h in r.head {
+                    head_count[h as usize] += 1;
+                }
+                if let BodyRef::Weight { lower, lits } = r.body {
+                    slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
+                }
+                let fact_head = r
+                    .head
+                    .iter()
+                    .copied()
+                    .find(|&h| status[h as usize - 1] == Status::Fact);
+                let satisfied_head = r.head_kind == HeadKind::Disjunction
+                    && fact_head.is_some()
+                    && !(r.head.len() == 1 && r.body.is_empty_normal());
+                let contra = kill_contradictory && contradictory(r.body);
+                killed_contradictory |= contra;
+                if satisfied_head || contra {
+                    let reason = match fact_head {
+                        Some(h) if satisfied_head => DeadReason::HeadFact(h),
+                        _ => DeadReason::Contradictory,
+                    };
+                    dead_at_start.push((ri as u32, reason));
+                }
+            }
+            match r.body {
+                BodyRef::Normal(lits) => {
+                    for &l in lits {
+                        let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
+                        occ.add(pass, l.unsigned_abs(), (ri as u32, 0));
+                    }
+                }
+                BodyRef::Weight { lits, .. } => {
+                    for &(l, w) in lits {
+                        let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
+                        occ.add(pass, l.unsigned_abs(), (ri as u32, w.max(1)));
+                    }
+                }
+            }
+        }
+        pos_occ.end(pass);
+        neg_occ.end(pass);
+    }
+    let mut p = Propagation {
+        rules: &g.rules,
+        keep,
+        status,
+        why,
+        dead: vec![false; g.rules.len()],
+        head_count,
+        slack,
+        work: Vec::new(),
+    };
+    for a in 1..=n {
+        p.falsify_if_unsupported(a);
+    }
+    for (ri, reason) in dead_at_start {
+        p.kill(ri as usize, reason);
+    }
+    // Rules with `not a`, a a fact, lose that literal from the start.
+    for a in 1..=n {
+        if p.status[a - 1] == Status::Fact {
+            for &(ri, w) in neg_occ.of(a) {
+                p.lose(ri as usize, w, false, a as AtomId);
+            }
+        }
+    }
+    while let Some(a) = p.work.pop() {
+        for &(ri, w) in pos_occ.of(a as usize) {
+            p.lose(ri as usize, w, true, a);
+        }
+    }
+    (p.dead, killed_contradictory)
+}
+
+/// The state of [`propagate`] once the occurrences are counted: which rules are dead (and
+/// why), how many live rules head each atom, the slack of each weight body, and the atoms made
+/// false whose positive occurrences are still to visit.
+///
+/// Invariant: an atom is made false (and queued) exactly once, when it is unknown, not kept,
+/// and no live rule heads it.
+struct Propagation<'a> {
+    rules: &'a Rules,
+    keep: &'a [bool],
+    status: &'a mut [Status],
+    why: &'a mut Vec<Option<DeadReason>>,
+    dead: Vec<bool>,
+    head_count: Vec<u32>,
+    slack: Vec<i64>,
+    work: Vec<AtomId>,
+}
+
+impl Propagation<'_> {
+    /// Makes atom `a` false and queues it if nothing can derive it any more.
+    fn falsify_if_unsupported(&mut self, a: usize) {
+        if self.head_count[a] == 0 && !self.keep[a] && self.status[a - 1] == Status::Unknown {
+            self.status[a - 1] = Status::False;
+            self.work.push(a as AtomId);
+        }
+    }
+
+    /// Rule `ri` is dead for `reason`: its heads lose a supporting rule.
+    fn kill(&mut self, ri: usize, reason: DeadReason) {
+        if self.dead[ri] {
+            return;
+        }
+        self.dead[ri] = true;
+        if let Some(w) = self.why.get_mut(ri) {
+            *w = Some(reason);
+        }
+        for &h in self.rules.get(ri).head {
+            self.head_count[h as usize] -= 1;
+            self.falsify_if_unsupported(h as usize);
+        }
+    }
+
+    /// A literal over `atom` (`positive` or `not atom`) in the body of rule `ri` became false,
+    /// with weight `w` in a weight body (0: a normal body). A normal body dies; a weight body
+    /// loses the weight and dies once its bound is out of reach.
+    fn lose(&mut self, ri: usize, w: i64, positive: bool, atom: AtomId) {
+        let reason = if w > 0 {
+            self.slack[ri] -= w;
+            if self.slack[ri] >= 0 {
+                return;
+            }
+            DeadReason::Unreachable
+        } else {
+            DeadReason::Literal { positive, atom }
+        };
+        self.kill(ri, reason);
+    }
+}
