@@ -62,6 +62,7 @@ mod model;
 mod parts;
 pub mod symbol;
 
+use std::cell::OnceCell;
 use std::path::Path;
 use std::time::Instant;
 
@@ -628,17 +629,23 @@ impl Control {
                 if !on_model(&Model {
                     raw: &m,
                     names: &names,
+                    lazy_support: None,
+                    full: OnceCell::new(),
                 }) {
                     break;
                 }
             }
             r
         } else {
-            solver.for_each_model(&assumptions, &mut |m| {
+            // Supports are built only for the models whose reader asks for them.
+            let want_supports = solver.config_mut().supports;
+            solver.for_each_model_lazy(&assumptions, &mut |m, prog| {
                 count += 1;
                 on_model(&Model {
                     raw: m,
                     names: &names,
+                    lazy_support: want_supports.then_some(prog),
+                    full: OnceCell::new(),
                 })
             })
         };
@@ -846,5 +853,40 @@ mod tests {
         ctl.release_external(&sym("e(1)"));
         ctl.assign_external(&sym("e(1)"), TruthValue::True);
         assert_eq!(answers(&mut ctl), ["", "e(2) q"]);
+    }
+
+    #[test]
+    fn supports_are_built_when_read_and_only_when_configured() {
+        let text = "a. b :- a. c :- b, not d. {d}.";
+        let read = |supports: bool| {
+            let mut config = ControlConfig::default();
+            config.solve.supports = supports;
+            let mut ctl = Control::new(config);
+            ctl.add("s", text).unwrap();
+            ctl.ground(&[Part::base()]).unwrap();
+            let mut out = Vec::new();
+            ctl.solve(&SolveOptions::default(), |m| {
+                let via_raw = m.raw().support.clone();
+                let pairs: Vec<(AtomId, Option<usize>)> = m.supports().collect();
+                // Computed independently from the program the lazy supports are built from.
+                let expect = m
+                    .lazy_support
+                    .map(|p| solve::solver::supports(p, &m.raw.atoms));
+                out.push((via_raw, pairs, expect, m.to_owned_model().raw.support));
+                true
+            });
+            out
+        };
+        for (via_raw, pairs, expect, owned) in read(true) {
+            assert_eq!(via_raw.len(), pairs.len());
+            assert!(!via_raw.is_empty() && via_raw.iter().all(Option::is_some));
+            assert_eq!(Some(via_raw.clone()), expect);
+            assert_eq!(pairs.iter().map(|p| p.1).collect::<Vec<_>>(), via_raw);
+            assert_eq!(owned, via_raw);
+        }
+        for (via_raw, pairs, expect, owned) in read(false) {
+            assert!(via_raw.is_empty() && pairs.is_empty() && owned.is_empty());
+            assert_eq!(expect, None);
+        }
     }
 }

@@ -2,8 +2,11 @@
 //! membership by symbol or atom, costs, applied CR rules and supporting rules; [`OwnedModel`]
 //! keeps one after its solve call.
 //!
-//! Invariant: a [`Model`] borrows the Control's atom tables for the duration of the callback,
-//! so reading it never copies the program.
+//! Invariants: a [`Model`] borrows the Control's atom tables for the duration of the callback,
+//! so reading it never copies the program. Supporting rules are computed on the first read
+//! that needs them ([`Model::supports`], [`Model::raw`], [`Model::to_owned_model`]), once per
+//! model: most callers only read atoms, and building supports for every model was ~7% of a
+//! small program's solve call.
 
 use super::*;
 
@@ -18,6 +21,11 @@ pub(super) struct Names<'a> {
 pub struct Model<'a> {
     pub(super) raw: &'a solve::Model,
     pub(super) names: &'a Names<'a>,
+    /// The program `raw` is a model of, when `raw` came without the supports the solver
+    /// configuration asks for (`Solver::for_each_model_lazy`); `None` when `raw` is complete.
+    pub(super) lazy_support: Option<&'a GroundProgram>,
+    /// `raw` with its supports, once something asked for them.
+    pub(super) full: OnceCell<solve::Model>,
 }
 
 impl Model<'_> {
@@ -85,16 +93,21 @@ impl Model<'_> {
     /// For every true atom, the index of one rule of [`Control::program`] that supports it
     /// (`None` for externals and assumptions without a rule).
     pub fn supports(&self) -> impl Iterator<Item = (AtomId, Option<usize>)> + '_ {
-        self.raw
-            .atoms
-            .iter()
-            .copied()
-            .zip(self.raw.support.iter().copied())
+        let raw = self.raw();
+        raw.atoms.iter().copied().zip(raw.support.iter().copied())
     }
 
-    /// The solver's form of the model (true atoms as numbers, shown symbols as text).
+    /// The solver's form of the model (true atoms as numbers, shown symbols as text), with
+    /// its supports when the solver configuration asks for them (computed on the first call).
     pub fn raw(&self) -> &solve::Model {
-        self.raw
+        match self.lazy_support {
+            None => self.raw,
+            Some(prog) => self.full.get_or_init(|| {
+                let mut m = self.raw.clone();
+                m.support = solve::solver::supports(prog, &m.atoms);
+                m
+            }),
+        }
     }
 
     /// An owned copy, with the whole answer set as symbols.
@@ -108,7 +121,7 @@ impl Model<'_> {
             costs: self.raw.costs.clone(),
             cr_applied: self.cr_applied(),
             optimal: self.raw.optimal,
-            raw: self.raw.clone(),
+            raw: self.raw().clone(),
         }
     }
 }

@@ -25,7 +25,8 @@ pub struct Model {
     /// For every true atom (parallel to `atoms`), the index into `GroundProgram::rules` of one
     /// rule whose body holds and that supports the atom (well-founded order: following the
     /// supports of the positive body atoms never cycles); `None` for atoms that are true as
-    /// externals or assumptions without a rule. Empty when `Config::supports` is off.
+    /// externals or assumptions without a rule. Empty when `Config::supports` is off, and in the
+    /// models of `Solver::for_each_model_lazy` (whose caller computes them on demand).
     pub support: Vec<Option<usize>>,
     /// True when this model is known to be optimal (optN enumeration phase, or the last model of
     /// an optimization whose optimum was proven).

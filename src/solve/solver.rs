@@ -128,8 +128,12 @@ struct Call<'a> {
     /// Models reported in the current phase (optN restarts numbering for the optimal models,
     /// as clasp does); numbers models and is compared against `Config::models`.
     phase_count: usize,
-    /// The caller's callback; returns false to stop.
-    sink: &'a mut dyn FnMut(&Model) -> bool,
+    /// The caller's callback, given each model and the program it is a model of; returns
+    /// false to stop.
+    sink: &'a mut dyn FnMut(&Model, &GroundProgram) -> bool,
+    /// Set when the caller computes the models' supports itself, on demand
+    /// (`for_each_model_lazy`): `Model::support` stays empty whatever `Config::supports` says.
+    lazy_support: bool,
     /// Set while the model limit does not apply (optN's branch-and-bound phase).
     unlimited: bool,
     /// Set when the callback asked to stop or the model limit was reached.
@@ -516,6 +520,29 @@ impl Solver {
         assumptions: &[i32],
         sink: &mut dyn FnMut(&Model) -> bool,
     ) -> SolveResult {
+        self.run_call(assumptions, &mut |m, _| sink(m), false)
+    }
+
+    /// [`Solver::for_each_model`] for callers that read the models' supports rarely: every
+    /// model comes without [`Model::support`] (whatever `Config::supports` says), and `sink`
+    /// gets the program too, so that it can compute them on demand with [`supports`] (the
+    /// same answer). Building the supports of every model was ~7% of a small program's solve
+    /// call, its largest part after the translation (docs/bench/learner-loop-2026-12-08-solve.md).
+    pub fn for_each_model_lazy(
+        &mut self,
+        assumptions: &[i32],
+        sink: &mut dyn FnMut(&Model, &GroundProgram) -> bool,
+    ) -> SolveResult {
+        self.run_call(assumptions, sink, true)
+    }
+
+    /// One solve call under `assumptions` (see [`Solver::for_each_model`]).
+    fn run_call(
+        &mut self,
+        assumptions: &[i32],
+        sink: &mut dyn FnMut(&Model, &GroundProgram) -> bool,
+        lazy_support: bool,
+    ) -> SolveResult {
         let start = Instant::now();
         let (d0, c0, r0) = (
             self.engine.decisions,
@@ -540,6 +567,7 @@ impl Solver {
             phase_count: 0,
             unlimited: false,
             sink,
+            lazy_support,
             done: false,
             stopped: false,
             seen: HashSet::new(),

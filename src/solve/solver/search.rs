@@ -250,8 +250,8 @@ impl Solver {
             .collect()
     }
 
-    /// Builds the model on the trail.
-    pub(super) fn model(&self, number: usize, optimal: bool) -> Model {
+    /// Builds the model on the trail; its supports only `with_support`.
+    pub(super) fn model(&self, number: usize, optimal: bool, with_support: bool) -> Model {
         let atoms = self.true_atoms();
         let mut symbols = Vec::new();
         let mut shown: HashSet<&str> = HashSet::new();
@@ -269,7 +269,7 @@ impl Solver {
             .map(|(c, _)| c.label.clone())
             .collect();
         cr_applied.sort();
-        let support = if self.config.supports {
+        let support = if with_support {
             supports(&self.prog, &atoms)
         } else {
             Vec::new()
@@ -288,7 +288,8 @@ impl Solver {
     /// Reports the model on the trail unless its projection was seen; returns false when the
     /// call must stop.
     pub(super) fn report(&mut self, call: &mut Call<'_>, optimal: bool, dedup: bool) -> bool {
-        let mut m = self.model(call.phase_count + 1, optimal);
+        let with_support = self.config.supports && !call.lazy_support;
+        let mut m = self.model(call.phase_count + 1, optimal, with_support);
         if self.config.check_models {
             if let Err(v) = crate::solve::check::check(&self.prog, &m.atoms) {
                 panic!("internal error: the solver found a model that is not stable: {v:?}");
@@ -311,7 +312,7 @@ impl Solver {
         if !m.costs.is_empty() {
             call.has_costs = true;
         }
-        if !(call.sink)(&m) {
+        if !(call.sink)(&m, &self.prog) {
             call.done = true;
             return false;
         }

@@ -188,7 +188,8 @@ impl Solver {
                             })
                             .collect(),
                     };
-                    let mut m = self.model(call.count + 1, false);
+                    let with_support = self.config.supports && !call.lazy_support;
+                    let mut m = self.model(call.count + 1, false, with_support);
                     m.symbols.clear();
                     let mut shown: HashSet<&str> = HashSet::new();
                     for (i, o) in self.prog.outputs.iter().enumerate() {
@@ -197,7 +198,7 @@ impl Solver {
                         }
                     }
                     call.note_model();
-                    if !(call.sink)(&m) {
+                    if !(call.sink)(&m, &self.prog) {
                         call.done = true;
                         break;
                     }
