@@ -208,6 +208,21 @@ impl Rules {
         })
     }
 
+    /// Makes room for `rules` more rules with `heads` head atoms and `lits` body literals in
+    /// all, so that a store whose size is known roughly does not grow step by step.
+    pub fn reserve(&mut self, rules: usize, heads: usize, lits: usize) {
+        self.ends.reserve(rules);
+        self.heads.reserve(heads);
+        self.lits.reserve(lits);
+    }
+
+    /// Makes room for as many more rules, head atoms and literals as `other` holds (for a
+    /// store that is written from `other`, such as the simplified program from the ground one).
+    pub fn reserve_like(&mut self, other: &Rules) {
+        self.reserve(other.ends.len(), other.heads.len(), other.lits.len());
+        self.wlits.reserve(other.wlits.len());
+    }
+
     /// Appends a rule.
     pub fn push_parts(&mut self, head_kind: HeadKind, head: &[Atom], body: BodyRef<'_>) {
         self.heads.extend_from_slice(head);

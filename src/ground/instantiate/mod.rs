@@ -619,6 +619,8 @@ impl<'a> Grounder<'a> {
         self.rule_set.reserve(n, |&i| hashes[i as usize]);
         self.rule_hashes.reserve(n);
         self.atoms.reserve(n);
+        // About two body literals per rule.
+        self.rules.reserve(n, n, 2 * n);
     }
 
     /// Frees the rule deduplication table once instantiation is over (simplification does

@@ -143,8 +143,11 @@ pub fn finish_after(
     // Simplify the surviving rules.
     // Stored flat (`Rules`): the program outlives grounding and is held beside the solver.
     // They are written numbered for aspif as they come (see `Numbering`).
+    // The output is at most the ground rules (a few constraints on complementary atoms
+    // aside): room for them at once instead of growing step by step.
     let mut rules = Rules::new();
-    let mut numbering = Numbering::new(n);
+    rules.reserve_like(&g.rules);
+    let mut numbering = Numbering::new(n, n.saturating_sub(before.len().saturating_sub(1)));
     // With provenance: the origins of each output rule, and the removed rules that headed a
     // false atom.
     let mut origins = Provenance::new();

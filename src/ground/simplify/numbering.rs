@@ -29,12 +29,14 @@ pub(super) struct Numbering {
 }
 
 impl Numbering {
-    pub(super) fn new(n: usize) -> Numbering {
+    /// A numbering of grounder atoms `1..=n`, with room for `fresh` numbered atoms (the atoms
+    /// this grounding added: most of them get a number).
+    pub(super) fn new(n: usize, fresh: usize) -> Numbering {
         Numbering {
             number: vec![0; n + 1],
             next: 0,
-            atom_syms: Vec::new(),
-            atom_gatoms: Vec::new(),
+            atom_syms: Vec::with_capacity(fresh),
+            atom_gatoms: Vec::with_capacity(fresh),
             head: Vec::new(),
             lits: Vec::new(),
             wlits: Vec::new(),
