@@ -87,17 +87,7 @@ pub fn finish_after(
     let frozen = |a: usize| before.get(a).is_some_and(|&f| f & NUMBERED != 0);
     add_classical_constraints(g, prog, &frozen);
     let n = g.atoms.len();
-    let mut status: Vec<Status> = g
-        .atoms
-        .iter()
-        .map(|a| {
-            if a.fact {
-                Status::Fact
-            } else {
-                Status::Unknown
-            }
-        })
-        .collect();
+    let mut status = initial_status(g);
     let mut external = vec![false; n + 1];
     for &(a, _) in &g.externals {
         external[a as usize] = true;
@@ -118,17 +108,7 @@ pub fn finish_after(
     // where a dropped statement would make the answer plain SATISFIABLE).
     let gringo_status: Option<Vec<Status>> = (killed_contradictory && !g.minimize_order.is_empty())
         .then(|| {
-            let mut st: Vec<Status> = g
-                .atoms
-                .iter()
-                .map(|a| {
-                    if a.fact {
-                        Status::Fact
-                    } else {
-                        Status::Unknown
-                    }
-                })
-                .collect();
+            let mut st = initial_status(g);
             propagate(g, &keep, &mut st, false, None);
             st
         });
@@ -740,6 +720,20 @@ pub fn finish_after(
         atom_gatoms,
         prefer_atoms,
     }
+}
+
+/// Each grounder atom's status before propagation: facts known, every other atom unknown.
+fn initial_status(g: &Grounder<'_>) -> Vec<Status> {
+    g.atoms
+        .iter()
+        .map(|a| {
+            if a.fact {
+                Status::Fact
+            } else {
+                Status::Unknown
+            }
+        })
+        .collect()
 }
 
 fn new_aux(g: &mut Grounder<'_>, status: &mut Vec<Status>) -> AtomId {
