@@ -131,9 +131,9 @@ struct Call<'a> {
     /// The caller's callback, given each model and the program it is a model of; returns
     /// false to stop.
     sink: &'a mut dyn FnMut(&Model, &GroundProgram) -> bool,
-    /// Set when the caller computes the models' supports itself, on demand
-    /// (`for_each_model_lazy`): `Model::support` stays empty whatever `Config::supports` says.
-    lazy_support: bool,
+    /// Whether the models reported carry their supports: `Config::supports`, unless the
+    /// caller computes them itself on demand (`for_each_model_lazy`).
+    with_support: bool,
     /// Set while the model limit does not apply (optN's branch-and-bound phase).
     unlimited: bool,
     /// Set when the callback asked to stop or the model limit was reached.
@@ -567,7 +567,7 @@ impl Solver {
             phase_count: 0,
             unlimited: false,
             sink,
-            lazy_support,
+            with_support: self.config.supports && !lazy_support,
             done: false,
             stopped: false,
             seen: HashSet::new(),

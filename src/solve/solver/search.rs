@@ -288,8 +288,7 @@ impl Solver {
     /// Reports the model on the trail unless its projection was seen; returns false when the
     /// call must stop.
     pub(super) fn report(&mut self, call: &mut Call<'_>, optimal: bool, dedup: bool) -> bool {
-        let with_support = self.config.supports && !call.lazy_support;
-        let mut m = self.model(call.phase_count + 1, optimal, with_support);
+        let mut m = self.model(call.phase_count + 1, optimal, call.with_support);
         if self.config.check_models {
             if let Err(v) = crate::solve::check::check(&self.prog, &m.atoms) {
                 panic!("internal error: the solver found a model that is not stable: {v:?}");

@@ -188,8 +188,7 @@ impl Solver {
                             })
                             .collect(),
                     };
-                    let with_support = self.config.supports && !call.lazy_support;
-                    let mut m = self.model(call.count + 1, false, with_support);
+                    let mut m = self.model(call.count + 1, false, call.with_support);
                     m.symbols.clear();
                     let mut shown: HashSet<&str> = HashSet::new();
                     for (i, o) in self.prog.outputs.iter().enumerate() {
