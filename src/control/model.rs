@@ -5,8 +5,7 @@
 //! Invariants: a [`Model`] borrows the Control's atom tables for the duration of the callback,
 //! so reading it never copies the program. Supporting rules are computed on the first read
 //! that needs them ([`Model::supports`], [`Model::raw`], [`Model::to_owned_model`]), once per
-//! model: most callers only read atoms, and building supports for every model was ~7% of a
-//! small program's solve call.
+//! model: most callers only read atoms.
 
 use super::*;
 

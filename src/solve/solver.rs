@@ -526,8 +526,7 @@ impl Solver {
     /// [`Solver::for_each_model`] for callers that read the models' supports rarely: every
     /// model comes without [`Model::support`] (whatever `Config::supports` says), and `sink`
     /// gets the program too, so that it can compute them on demand with [`supports`] (the
-    /// same answer). Building the supports of every model was ~7% of a small program's solve
-    /// call, its largest part after the translation (docs/bench/learner-loop-2026-12-08-solve.md).
+    /// same answer); a caller that reads few of them skips building the rest.
     pub fn for_each_model_lazy(
         &mut self,
         assumptions: &[i32],

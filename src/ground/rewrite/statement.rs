@@ -29,10 +29,9 @@ impl Rewriter<'_> {
             program
         };
         // A statement gives one rewritten statement, or a few for pools and bound checks:
-        // growing `stmts` by doubling from empty moved every large `NStmt` again at each step
-        // (five reallocations, ~12 K instructions, for the 36 statements of the learner
-        // program). Room for one each and an eighth more (at least 16) avoids most of them and
-        // over-allocates less than doubling does.
+        // growing `stmts` by doubling from empty would move every large `NStmt` again at each
+        // step. Room for one each and an eighth more (at least 16) avoids most of those moves
+        // and over-allocates less than doubling does.
         let n = program.statements.len();
         self.out.stmt_spans.reserve(n);
         self.out.stmts.reserve(n + (n / 8).max(16));
