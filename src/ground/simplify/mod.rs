@@ -252,10 +252,7 @@ pub fn finish_after(
         head.clear();
         head.extend_from_slice(r.head);
         if r.head_kind == HeadKind::Disjunction {
-            if let Some(&f) = head
-                .iter()
-                .find(|&&h| status[h as usize - 1] == Status::Fact)
-            {
+            if let Some(f) = fact_among(&head, &status) {
                 if !(head.len() == 1 && body.is_empty_normal()) {
                     bury(
                         ri,
@@ -272,11 +269,7 @@ pub fn finish_after(
             head.retain(|&h| status[h as usize - 1] == Status::Unknown || external[h as usize]);
             if head.is_empty() {
                 // A choice among facts (and false atoms): kept as satisfied by a fact.
-                if let Some(&f) = r
-                    .head
-                    .iter()
-                    .find(|&&h| status[h as usize - 1] == Status::Fact)
-                {
+                if let Some(f) = fact_among(r.head, &status) {
                     bury(
                         ri,
                         r.head,
@@ -720,6 +713,13 @@ pub fn finish_after(
         atom_gatoms,
         prefer_atoms,
     }
+}
+
+/// The first atom of `head` known to be a fact.
+fn fact_among(head: &[AtomId], status: &[Status]) -> Option<AtomId> {
+    head.iter()
+        .copied()
+        .find(|&h| status[h as usize - 1] == Status::Fact)
 }
 
 /// Each grounder atom's status before propagation: facts known, every other atom unknown.
