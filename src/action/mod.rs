@@ -12,6 +12,7 @@
 //! (label, span, kind) or the translation schema it instantiates.
 
 pub mod ast;
+pub mod build;
 pub mod check;
 pub mod fuzzing;
 pub mod parser;
@@ -23,6 +24,10 @@ pub use parser::{parse, Parse};
 pub use translate::{translate, AxiomOrigin, OriginKind, Translation};
 
 use crate::base::{Diagnostic, FileId, SourceMap};
+
+/// KB_full, the robot assistant's knowledge base (`domains/ra/kb_full.ald`), built in so that
+/// the binary and the library work outside the checkout.
+pub const KB_FULL: &str = include_str!("../../domains/ra/kb_full.ald");
 
 /// How deep `include`s may nest.
 pub const MAX_INCLUDE_DEPTH: usize = 16;

@@ -24,7 +24,7 @@ pub mod run;
 
 /// KB_full (`domains/ra/kb_full.ald`), built in so that `run`, `demo`, `explain` and `ask` work
 /// from any directory, with or without the `sim` feature.
-pub const KB_FULL: &str = include_str!("../../domains/ra/kb_full.ald");
+pub const KB_FULL: &str = crate::action::KB_FULL;
 
 use std::io::{Read, Write};
 use std::time::{Duration, Instant};

@@ -269,6 +269,12 @@ pub fn learn(
                 tally.iter().filter(|(_, c)| *c >= need).cloned().collect()
             }
         }
+        AxiomKind::Constraint { .. } => {
+            // State constraints are voted as causal laws are, without an unconditional
+            // fallback: a constraint with no condition would say its head of everything.
+            let need = (params.causal_vote * params.trees as f64).ceil() as usize;
+            tally.iter().filter(|(_, c)| *c >= need).cloned().collect()
+        }
         AxiomKind::Executability => {
             let max = tally.first().map_or(0, |(_, c)| *c);
             tally

@@ -74,6 +74,9 @@ impl fmt::Display for Term {
 pub const RELATION: &str = "relation";
 /// The predicate of the hand fluent `in_hand(R, O)`.
 pub const IN_HAND: &str = "in_hand";
+/// Predicates whose first argument is an entity and the rest values (`has_size(O1, small)`,
+/// `tower_height(O1, 2)`): the values stay constants when lifted.
+pub const VALUED: [&str; 4] = ["has_size", "has_surface", "has_shape", "tower_height"];
 
 /// A literal `name(args)` or its classical negation; also used for action atoms.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -120,10 +123,13 @@ impl Literal {
         self
     }
 
-    /// The argument positions that hold objects or the robot (not a relation name).
+    /// The argument positions that hold objects or the robot (not a relation name, not an
+    /// attribute's value).
     pub fn entity_positions(&self) -> std::ops::Range<usize> {
         if self.name == RELATION {
             1.min(self.args.len())..self.args.len()
+        } else if VALUED.contains(&self.name.as_str()) {
+            0..1.min(self.args.len())
         } else {
             0..self.args.len()
         }
@@ -188,6 +194,13 @@ pub enum AxiomKind {
     },
     /// `impossible a if body`.
     Executability,
+    /// `head if body`: a state constraint. Its axiom's `action` holds the constraint's
+    /// *subject*, the head's atom taken positively (`stable(O1)`), which names the variables
+    /// first as an action does.
+    Constraint {
+        /// The consequence.
+        head: Literal,
+    },
 }
 
 /// A lifted causal law or executability condition.
@@ -212,7 +225,7 @@ impl Axiom {
     /// The head literal of a causal law.
     pub fn head(&self) -> Option<&Literal> {
         match &self.kind {
-            AxiomKind::Causal { head } => Some(head),
+            AxiomKind::Causal { head } | AxiomKind::Constraint { head } => Some(head),
             AxiomKind::Executability => None,
         }
     }
@@ -250,6 +263,9 @@ impl Axiom {
             AxiomKind::Causal { head } => AxiomKind::Causal {
                 head: head.rename(map),
             },
+            AxiomKind::Constraint { head } => AxiomKind::Constraint {
+                head: head.rename(map),
+            },
             AxiomKind::Executability => AxiomKind::Executability,
         };
         Axiom::new(
@@ -280,6 +296,9 @@ impl Axiom {
             AxiomKind::Causal { head } => AxiomKind::Causal {
                 head: head.rename(&map_fixed),
             },
+            AxiomKind::Constraint { head } => AxiomKind::Constraint {
+                head: head.rename(&map_fixed),
+            },
             AxiomKind::Executability => AxiomKind::Executability,
         };
         Axiom::new(kind, self.action.rename(&map_fixed), body)
@@ -307,6 +326,7 @@ impl Axiom {
                 format!("{} causes {}{cond}", lit(&self.action), lit(head))
             }
             AxiomKind::Executability => format!("impossible {}{cond}", lit(&self.action)),
+            AxiomKind::Constraint { head } => format!("{}{cond}", lit(head)),
         }
     }
 }
@@ -339,7 +359,11 @@ impl Axiom {
             let action = parse_literal(action)?;
             return Some(Axiom::new(AxiomKind::Executability, action, body));
         }
-        let (action, head) = main.split_once(" causes ")?;
+        let Some((action, head)) = main.split_once(" causes ") else {
+            let head = parse_literal(main)?;
+            let subject = head.clone().with_sign(true);
+            return Some(Axiom::new(AxiomKind::Constraint { head }, subject, body));
+        };
         Some(Axiom::new(
             AxiomKind::Causal {
                 head: parse_literal(head)?,
