@@ -14,6 +14,8 @@ pub mod action;
 pub mod sim;
 pub mod plan;
 pub mod learn;
+#[cfg(feature = "sim")]
+pub mod vision;
 pub mod explain;
 pub mod experiment;
 pub mod cli;

@@ -216,6 +216,10 @@ pub fn run_experiment(
             0
         });
     }
+    #[cfg(feature = "sim")]
+    if args.first().map(String::as_str) == Some("classify") {
+        return super::classify::run_experiment(&args[1..], out, err);
+    }
     let (mut parsed, positional) = match parse(args) {
         Ok(p) => p,
         Err(e) => return error(err, &e, super::EXIT_USAGE),

@@ -11,6 +11,8 @@
 #[cfg(feature = "sim")]
 pub mod sim;
 pub mod action;
+#[cfg(feature = "sim")]
+pub mod classify;
 pub mod demo;
 pub mod experiment;
 pub mod explain;
@@ -143,6 +145,8 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
             return Ok(EXIT_UNAVAILABLE);
         }
         Some("learn") => return learn::run_learn(&args[1..], io.out, io.err),
+        #[cfg(feature = "sim")]
+        Some("classify") => return classify::run_classify(&args[1..], io.out, io.err),
         Some("experiment") => return experiment::run_experiment(&args[1..], io.out, io.err),
         Some("explain") => return explain::run_explain(&args[1..], io.out, io.err),
         Some("ask") => {

@@ -19,6 +19,8 @@
 //! - Nothing here reads or writes files or prints: `cli` implements [`Store`] over a directory
 //!   and draws the progress bar from [`run`]'s callback.
 
+#[cfg(feature = "sim")]
+pub mod classify;
 pub mod h1;
 pub mod h2;
 pub mod h34;

@@ -101,7 +101,7 @@ fn pick<T: Copy>(rng: &mut SplitMix64, items: &[T]) -> T {
 }
 
 /// Plausible colours of a kind.
-fn colours(kind: ObjectKind) -> &'static [Colour] {
+pub(crate) fn colours(kind: ObjectKind) -> &'static [Colour] {
     use Colour::*;
     match kind {
         ObjectKind::Cube => &[Red, Green, Blue, Yellow, White, Orange, Purple],
@@ -121,7 +121,7 @@ fn colours(kind: ObjectKind) -> &'static [Colour] {
 }
 
 /// Plausible sizes of a kind.
-fn sizes(kind: ObjectKind) -> &'static [Size] {
+pub(crate) fn sizes(kind: ObjectKind) -> &'static [Size] {
     use Size::*;
     match kind {
         ObjectKind::Cube => &[Small, Medium, Large, Large],

@@ -1,0 +1,333 @@
+//! `lucent classify SCENE.json` and `lucent experiment classify`: scene understanding on the
+//! command line. `classify` reads a simulator scene (as `lucent sim` writes it), looks at it
+//! (renders the camera image, perceives, crops the regions of interest), trains the classifier
+//! on generated scenes unless told not to, and prints each object's stability and occlusion with
+//! the source of each decision; `experiment classify` runs the classification experiment and
+//! writes its report.
+//!
+//! Invariants: files are read and written only here; a bad command line exits 1, an unreadable
+//! or malformed scene 65; `--outf=2` prints JSON.
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use serde_json::json;
+
+use crate::experiment::classify::{self as exp, ClassifyConfig, REMOVED};
+use crate::sim::Scene;
+use crate::vision::classify::{reason_all, Classifier, System, TrainConfig};
+use crate::vision::constraints::Label;
+use crate::vision::dataset;
+use crate::vision::reason::{Knowledge, View};
+
+const HELP: &str = "\
+usage: lucent classify SCENE.json [--train N] [--seed N] [--outf=0|2]
+
+Looks at a simulator scene (a file `lucent sim generate --out` writes): renders the camera
+image, perceives relations and attributes, and decides for every object whether it is stable
+(objects standing on another) and whether it is occluded. Reasoning decides first, with KB_full
+less ST1, D1 and OC2 plus the state constraints learned from N generated training scenes; the
+CNN (trained on the regions of interest reasoning failed on) decides where reasoning cannot.
+Each decision names its source: reasoning, a learned constraint, or the CNN. The scene's own
+physics labels are printed beside for comparison.
+  --train N     training scenes (default 200; 0: reasoning with KB_full only, no training)
+  --seed N      seed of the training scenes and the learner (default 0)
+  --outf=0|2    0: a table (default); 2: JSON
+";
+
+const EXPERIMENT_HELP: &str = "\
+usage: lucent experiment classify [--sizes 50,100,200,500,1000] [--test N] [--runs N]
+                                  [--seed N] [--out DIR] [--outf=0|2]
+
+The classification experiment: accuracy, precision and recall of stability and occlusion on
+held-apart test scenes for training sets of the given sizes, for four systems (the CNN alone,
+reasoning alone, reasoning with the CNN where it cannot decide, and that with learned state
+constraints); the learning of the removed constraints (ST1, D1, OC2) over independent runs,
+scored strictly and relaxed; and which constraints of KB_full decide the labels.
+  --sizes LIST  training-set sizes in scenes (default 50,100,200,500,1000)
+  --test N      test scenes (default 300)
+  --runs N      learning runs (default 20)
+  --seed N      the base seed (default 0)
+  --out DIR     write DIR/classify.md, DIR/classify.json and the SVG plots
+  --outf=0|2    0: markdown (default); 2: JSON
+";
+
+fn usage(err: &mut dyn Write, message: &str) -> std::io::Result<i32> {
+    writeln!(err, "*** ERROR: (lucent): {message}")?;
+    Ok(super::EXIT_USAGE)
+}
+
+/// `lucent experiment classify ...` (`args` after `classify`).
+pub fn run_experiment(
+    args: &[String],
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<i32> {
+    let mut config = ClassifyConfig::default();
+    let (mut dir, mut json) = (None, false);
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let (name, inline) = match a.split_once('=') {
+            Some((n, v)) => (n, Some(v.to_string())),
+            None => (a.as_str(), None),
+        };
+        let mut value = || inline.clone().or_else(|| it.next().cloned());
+        let number = |v: Option<String>| -> Result<u64, String> {
+            let v = v.ok_or_else(|| format!("'{name}' needs a value"))?;
+            v.parse::<u64>()
+                .map_err(|_| format!("'{name}': '{v}' is not a number"))
+        };
+        let parsed: Result<(), String> = match name {
+            "-h" | "--help" => {
+                write!(out, "{EXPERIMENT_HELP}")?;
+                return Ok(0);
+            }
+            "--sizes" => match value() {
+                Some(v) => v
+                    .split(',')
+                    .map(|x| x.trim().parse::<usize>())
+                    .collect::<Result<Vec<_>, _>>()
+                    .map(|s| config.sizes = s)
+                    .map_err(|_| format!("'--sizes {v}': expected numbers separated by commas")),
+                None => Err("'--sizes' needs a value".into()),
+            },
+            "--test" => number(value()).map(|n| config.test_scenes = n as usize),
+            "--runs" => number(value()).map(|n| config.runs = n as usize),
+            "--seed" => number(value()).map(|n| {
+                config.seed = n;
+                config.train.seed = n;
+            }),
+            "--out" => match value() {
+                Some(v) => {
+                    dir = Some(PathBuf::from(v));
+                    Ok(())
+                }
+                None => Err("'--out' needs a value".into()),
+            },
+            "--outf" => match value().as_deref() {
+                Some("0") => {
+                    json = false;
+                    Ok(())
+                }
+                Some("2") => {
+                    json = true;
+                    Ok(())
+                }
+                v => Err(format!("'--outf={}': expected 0 or 2", v.unwrap_or(""))),
+            },
+            _ => Err(format!("unknown option '{a}'")),
+        };
+        if let Err(e) = parsed {
+            return usage(err, &e);
+        }
+    }
+    if config.sizes.is_empty() || config.test_scenes == 0 {
+        return usage(
+            err,
+            "the experiment needs at least one training size and one test scene",
+        );
+    }
+    let progress = |line: &str| eprintln!("classify: {line}");
+    let result = match exp::run(&config, &progress) {
+        Ok(r) => r,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    };
+    let markdown = exp::markdown(&result);
+    let value = serde_json::to_value(&result).unwrap_or_default();
+    if let Some(dir) = dir {
+        std::fs::create_dir_all(&dir)?;
+        std::fs::write(dir.join("classify.md"), &markdown)?;
+        std::fs::write(
+            dir.join("classify.json"),
+            serde_json::to_string_pretty(&value).unwrap_or_default() + "\n",
+        )?;
+        for (name, svg) in exp::plots(&result) {
+            std::fs::write(dir.join(name), svg)?;
+        }
+    }
+    if json {
+        writeln!(
+            out,
+            "{}",
+            serde_json::to_string_pretty(&value).unwrap_or_default()
+        )?;
+    } else {
+        write!(out, "{markdown}")?;
+    }
+    Ok(0)
+}
+
+/// `lucent classify SCENE.json ...`.
+pub fn run_classify(
+    args: &[String],
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<i32> {
+    let (mut file, mut train, mut seed, mut json) = (None, 200usize, 0u64, false);
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "-h" | "--help" => {
+                write!(out, "{HELP}")?;
+                return Ok(0);
+            }
+            "--train" | "--seed" => {
+                let Some(v) = it.next().and_then(|v| v.parse::<u64>().ok()) else {
+                    return usage(err, &format!("'{a}' needs a number"));
+                };
+                if a == "--train" {
+                    train = v as usize;
+                } else {
+                    seed = v;
+                }
+            }
+            "--outf=2" => json = true,
+            "--outf=0" => json = false,
+            _ if a.starts_with('-') => return usage(err, &format!("unknown option '{a}'")),
+            _ if file.is_none() => file = Some(a.clone()),
+            _ => return usage(err, "one scene file, please"),
+        }
+    }
+    let Some(file) = file else {
+        write!(err, "{HELP}")?;
+        return Ok(super::EXIT_USAGE);
+    };
+    let text = match std::fs::read_to_string(&file) {
+        Ok(t) => t,
+        Err(e) => {
+            writeln!(err, "{file}:1:1: error: cannot read the scene: {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    };
+    let scene = match Scene::from_json(&text) {
+        Ok(s) => s,
+        Err(e) => {
+            writeln!(err, "{file}:1:1: error: {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    };
+    let config = crate::experiment::classify::classification_dataset();
+    let looked = match dataset::labelled_from(&config, scene) {
+        Ok(l) => l,
+        Err(e) => {
+            writeln!(err, "{file}:1:1: error: {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    };
+    let (classifier, knowledge_only) = if train == 0 {
+        let k = Knowledge::kb_full();
+        let c = Classifier::train(System::Reasoning, &k, &[], &TrainConfig::default());
+        (c, true)
+    } else {
+        let base = seed.wrapping_mul(10_000_000);
+        let scenes = dataset::generate(&config, base..base + train as u64);
+        let incomplete = Knowledge::kb_full().without(&REMOVED);
+        let reasoned = match reason_all(&incomplete, &scenes) {
+            Ok(r) => r,
+            Err(e) => {
+                writeln!(err, "*** ERROR: (lucent): {e}")?;
+                return Ok(super::EXIT_INPUT);
+            }
+        };
+        let tc = TrainConfig {
+            seed,
+            ..TrainConfig::default()
+        };
+        (
+            Classifier::train(System::ReasoningCnnLearned, &incomplete, &reasoned, &tc),
+            false,
+        )
+    };
+    let classifier = match classifier {
+        Ok(c) => c,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    };
+    let view = View::from_percept(&looked.scene, &looked.percept);
+    let decisions = match crate::vision::classify::explain_scene(&classifier, &view, &looked) {
+        Ok(d) => d,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(super::EXIT_INPUT);
+        }
+    };
+    if json {
+        let objects: Vec<_> = decisions
+            .iter()
+            .map(|d| {
+                json!({
+                    "object": d.name,
+                    "stable": d.stable.as_ref().map(|x| json!({"value": x.value, "source": x.source.words()})),
+                    "occluded": {"value": d.occluded.value, "source": d.occluded.source.words()},
+                    "truth": {"stable": d.true_stable, "occluded": d.true_occluded},
+                })
+            })
+            .collect();
+        let learned: Vec<_> = classifier
+            .learned
+            .iter()
+            .map(|(l, a, v)| json!({"label": l, "axiom": a.to_ald(), "votes": v}))
+            .collect();
+        let value = json!({
+            "Solver": "lucent classify",
+            "Scene": file,
+            "Knowledge": if knowledge_only { "KB_full" } else { "KB_full less ST1, D1, OC2, plus learned" },
+            "Learned": learned,
+            "Objects": objects,
+        });
+        writeln!(
+            out,
+            "{}",
+            serde_json::to_string_pretty(&value).unwrap_or_default()
+        )?;
+        return Ok(0);
+    }
+    for (l, a, v) in &classifier.learned {
+        writeln!(out, "learned {l}: {} ({v} votes)", a.to_ald())?;
+    }
+    writeln!(
+        out,
+        "{:<24} {:<34} {:<30} physics",
+        "object", "stability", "occlusion"
+    )?;
+    for d in &decisions {
+        let st = match &d.stable {
+            Some(x) => format!(
+                "{} ({})",
+                if x.value { "stable" } else { "unstable" },
+                x.source.words()
+            ),
+            None => "on the table".into(),
+        };
+        let oc = format!(
+            "{} ({})",
+            if d.occluded.value {
+                "occluded"
+            } else {
+                "visible"
+            },
+            d.occluded.source.words()
+        );
+        let truth = format!(
+            "{}{}",
+            match d.true_stable {
+                Some(true) => "stable, ",
+                Some(false) => "unstable, ",
+                None => "",
+            },
+            if d.true_occluded {
+                "occluded"
+            } else {
+                "visible"
+            }
+        );
+        writeln!(out, "{:<24} {:<34} {:<30} {truth}", d.name, st, oc)?;
+    }
+    let _ = Label::ALL;
+    Ok(0)
+}
