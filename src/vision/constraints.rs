@@ -121,6 +121,11 @@ pub struct ConstraintParams {
     pub ensemble: EnsembleParams,
     /// At most this many samples per episode (a seeded subset), to bound the trees' cost.
     pub max_samples: usize,
+    /// Class balance (as DOMAIN 5.4 balances the action learner's datasets): the majority
+    /// class keeps at most this many samples per sample of the minority class. Without it a
+    /// rare class (an object hidden by a given other object) makes almost every leaf pure,
+    /// and any literal passes as a constraint.
+    pub max_ratio: usize,
 }
 
 impl Default for ConstraintParams {
@@ -128,6 +133,7 @@ impl Default for ConstraintParams {
         ConstraintParams {
             ensemble: EnsembleParams::default(),
             max_samples: 1500,
+            max_ratio: 10,
         }
     }
 }
@@ -148,6 +154,22 @@ pub fn learn(label: Label, examples: &[Example], params: &ConstraintParams, seed
     let mut rng = SplitMix64::new(seed);
     let mut order: Vec<usize> = (0..examples.len()).collect();
     rng.shuffle_modulo(&mut order);
+    let ones = order.iter().filter(|&&i| examples[i].class).count();
+    let zeros = order.len() - ones;
+    let (cap_one, cap_zero) = (
+        (zeros * params.max_ratio).max(1),
+        (ones * params.max_ratio).max(1),
+    );
+    let (mut kept_one, mut kept_zero) = (0, 0);
+    order.retain(|&i| {
+        let (kept, cap) = if examples[i].class {
+            (&mut kept_one, cap_one)
+        } else {
+            (&mut kept_zero, cap_zero)
+        };
+        *kept += 1;
+        *kept <= cap
+    });
     order.truncate(params.max_samples);
     order.sort_unstable();
     let mut lifter = Lifter::new(
