@@ -126,6 +126,9 @@ pub struct ConstraintParams {
     /// rare class (an object hidden by a given other object) makes almost every leaf pure,
     /// and any literal passes as a constraint.
     pub max_ratio: usize,
+    /// A kept constraint must decide at least this many class-1 samples that the constraints
+    /// with more votes do not.
+    pub min_new: usize,
 }
 
 impl Default for ConstraintParams {
@@ -134,6 +137,7 @@ impl Default for ConstraintParams {
             ensemble: EnsembleParams::default(),
             max_samples: 1500,
             max_ratio: 10,
+            min_new: 5,
         }
     }
 }
@@ -221,8 +225,65 @@ pub fn learn(label: Label, examples: &[Example], params: &ConstraintParams, seed
         &params.ensemble,
         rng.next_u64(),
     );
-    episode.kept = learned.kept;
+    episode.kept = cover(learned.kept, &table, &lifter.features, params.min_new);
     episode
+}
+
+/// Keeps, in order of votes, the constraints that decide at least `min_new` class-1 samples
+/// that no constraint kept before them decides: a constraint whose every conclusion another
+/// already draws (`-partially_occluded(O1, O2) if relation(right, O1, O2)` beside OC2: an
+/// object to the right is never behind) adds nothing to the knowledge.
+fn cover(
+    kept: Vec<(Axiom, usize)>,
+    table: &Table,
+    features: &[Literal],
+    min_new: usize,
+) -> Vec<(Axiom, usize)> {
+    let tests = |a: &Axiom| -> Option<Vec<(usize, bool)>> {
+        a.body
+            .iter()
+            .map(|l| {
+                let positive = l.clone().with_sign(true);
+                features
+                    .iter()
+                    .position(|f| *f == positive)
+                    .map(|i| (i, l.positive))
+            })
+            .collect()
+    };
+    let matches = |t: &[(usize, bool)]| -> Vec<usize> {
+        (0..table.labels.len())
+            .filter(|&i| table.labels[i] && t.iter().all(|&(f, v)| table.rows[i][f] == v))
+            .collect()
+    };
+    // Votes first; among equal votes, the constraint that decides more samples first.
+    let mut ranked: Vec<(Axiom, usize, Option<Vec<usize>>)> = kept
+        .into_iter()
+        .map(|(a, v)| {
+            let m = tests(&a).map(|t| matches(&t));
+            (a, v, m)
+        })
+        .collect();
+    ranked.sort_by(|(a, va, ma), (b, vb, mb)| {
+        let len = |m: &Option<Vec<usize>>| m.as_ref().map_or(0, Vec::len);
+        vb.cmp(va).then(len(mb).cmp(&len(ma))).then(a.cmp(b))
+    });
+    let mut covered = vec![false; table.labels.len()];
+    let mut out = Vec::new();
+    for (axiom, votes, matches) in ranked {
+        let Some(matches) = matches else {
+            out.push((axiom, votes));
+            continue;
+        };
+        let new = matches.iter().filter(|&&i| !covered[i]).count();
+        if new >= min_new {
+            for i in matches {
+                covered[i] = true;
+            }
+            out.push((axiom, votes));
+        }
+    }
+    out
 }
 
 /// The constraints removed from KB_full for the experiment, lifted, with their labels.
