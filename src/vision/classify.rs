@@ -127,7 +127,7 @@ impl Default for TrainConfig {
                 steps: 400,
                 ..CnnConfig::default()
             },
-            epochs: 5,
+            epochs: 20,
             min_steps: 100,
             constraints: ConstraintParams::default(),
             seed: 0,

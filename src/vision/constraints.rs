@@ -134,7 +134,16 @@ pub struct ConstraintParams {
 impl Default for ConstraintParams {
     fn default() -> Self {
         ConstraintParams {
-            ensemble: EnsembleParams::default(),
+            // Each tree validates on half of its samples (the action learner holds out 5%,
+            // DOMAIN 5.6): with a rare class, a literal that merely correlates with the
+            // majority (`-has_size(O1, large)`: a large object is seldom hidden) passes the
+            // 0.98 precision test on a handful of held-out samples by luck, and on a few
+            // hundred it does not. Measured over 10 runs of 200 scenes: strict precision
+            // 63.8% at 5%, 88.2% at 25%, 100% at 50%, recall 100% throughout.
+            ensemble: EnsembleParams {
+                held_out: 0.5,
+                ..EnsembleParams::default()
+            },
             max_samples: 1500,
             max_ratio: 10,
             min_new: 5,

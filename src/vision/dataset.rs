@@ -148,8 +148,14 @@ pub fn labelled_from(config: &DatasetConfig, scene: Scene) -> Result<LabelledSce
     for (id, labels) in scene.ids().zip(labels) {
         let chain = &chains[id.index()];
         let stability_box = boxed(std::iter::once(id).chain(chain.iter().copied()).collect())?;
+        // The occlusion ROI is centred on the object, twice its size, so that the object
+        // asked about is always the one in the middle and what stands in front of it shows
+        // over it (a union box of several objects leaves the network guessing which one is
+        // asked about); the occluders' union box is kept for pictures.
         let occluders = occluder_ids(&scene, id, &truth, &labels);
+        let own = boxed(vec![id])?;
         let occlusion_box = boxed(std::iter::once(id).chain(occluders).collect())?;
+        let centred = centred_box(&own, 2.0);
         objects.push(LabelledObject {
             name: scene.object(id).name.clone(),
             stacked: !chain.is_empty(),
@@ -159,7 +165,7 @@ pub fn labelled_from(config: &DatasetConfig, scene: Scene) -> Result<LabelledSce
                 .collect(),
             labels,
             stability_roi: crop_resize(&picture, &stability_box, config.margin, ROI_SIZE),
-            occlusion_roi: crop_resize(&picture, &occlusion_box, config.margin, ROI_SIZE),
+            occlusion_roi: crop_resize(&picture, &centred, 0.0, ROI_SIZE),
             stability_box,
             occlusion_box,
         });
@@ -172,6 +178,18 @@ pub fn labelled_from(config: &DatasetConfig, scene: Scene) -> Result<LabelledSce
         truth,
         objects,
     })
+}
+
+/// The square box centred on `b` whose side is `scale` times `b`'s longer side.
+fn centred_box(b: &PixelBox, scale: f32) -> PixelBox {
+    let (cx, cy) = ((b.x0 + b.x1) / 2.0, (b.y0 + b.y1) / 2.0);
+    let half = scale * b.width().max(b.height()) / 2.0;
+    PixelBox {
+        x0: cx - half,
+        y0: cy - half,
+        x1: cx + half,
+        y1: cy + half,
+    }
 }
 
 /// Generates the labelled scenes of a range of seeds in parallel (rayon, one scene per task),
