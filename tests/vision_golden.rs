@@ -110,3 +110,52 @@ fn one_small_scene_is_classified_as_derived_by_hand() {
         assert_eq!(line(name).1, (false, Source::Reasoning), "{name}");
     }
 }
+
+/// The explanations of the same scene, derived by hand: the red cube is unstable because of
+/// ST1 through IB (an irregular object, the ball, is below it); the white cube is stable
+/// because it stands on the large flat green cube on the table and nothing makes it unstable;
+/// the ball is behind no object, so OC2 rules out every occluder.
+#[test]
+fn the_scene_is_explained_from_the_proof_tree() {
+    let mut config = DatasetConfig::default();
+    config.error = lucent::sim::ErrorModel::exact();
+    let looked = labelled_from(&config, scene()).expect("the scene looks fine");
+    let knowledge = Knowledge::kb_full();
+    let c = Classifier::train(System::Reasoning, &knowledge, &[], &TrainConfig::default())
+        .expect("no training needed");
+    let view = View::from_percept(&looked.scene, &looked.percept);
+    let report = explain_scene(&c, &view, &looked).unwrap();
+    let decided = |object: &str, label: &str| {
+        let r = report.iter().find(|r| r.name == object)?;
+        match label {
+            "stability" => r.stable.clone(),
+            _ => Some(r.occluded.clone()),
+        }
+    };
+    let lexicon = lucent::explain::lexicon::Lexicon::ra();
+    let ask = |q: &str| {
+        lucent::explain::scene::why(&knowledge, &view, q, &lexicon, &decided)
+            .unwrap()
+            .text
+    };
+    let unstable = ask("why is the red cube unstable?");
+    assert!(
+        unstable.contains("blue ball") && unstable.contains("irregular"),
+        "{unstable}"
+    );
+    assert_eq!(
+        ask("why is the white cube stable?"),
+        "Because nothing I know makes the white cube unstable: it stands on the green cube \
+         (large, flat), which stands on the table."
+    );
+    assert_eq!(
+        ask("why is the blue ball not occluded?"),
+        "Because the blue ball is behind no other object, and OC2 says an object is hidden only \
+         by an object it is behind."
+    );
+    let hidden = ask("why is the yellow cube occluded?");
+    assert!(
+        hidden.starts_with("My knowledge could not decide"),
+        "{hidden}"
+    );
+}

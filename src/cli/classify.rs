@@ -16,12 +16,11 @@ use serde_json::json;
 use crate::experiment::classify::{self as exp, ClassifyConfig, REMOVED};
 use crate::sim::Scene;
 use crate::vision::classify::{reason_all, Classifier, System, TrainConfig};
-use crate::vision::constraints::Label;
 use crate::vision::dataset;
 use crate::vision::reason::{Knowledge, View};
 
 const HELP: &str = "\
-usage: lucent classify SCENE.json [--train N] [--seed N] [--outf=0|2]
+usage: lucent classify SCENE.json [--train N] [--seed N] [--why QUESTION]... [--outf=0|2]
 
 Looks at a simulator scene (a file `lucent sim generate --out` writes): renders the camera
 image, perceives relations and attributes, and decides for every object whether it is stable
@@ -32,6 +31,9 @@ Each decision names its source: reasoning, a learned constraint, or the CNN. The
 physics labels are printed beside for comparison.
   --train N     training scenes (default 200; 0: reasoning with KB_full only, no training)
   --seed N      seed of the training scenes and the learner (default 0)
+  --why Q       answer a question about what the robot sees (\"why is the red cube unstable?\",
+                \"why is the mug not occluded?\") from the proof tree of its reasoning, or say
+                that the network decided; may be repeated
   --outf=0|2    0: a table (default); 2: JSON
 ";
 
@@ -167,6 +169,7 @@ pub fn run_classify(
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
     let (mut file, mut train, mut seed, mut json) = (None, 200usize, 0u64, false);
+    let mut questions: Vec<String> = Vec::new();
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -183,6 +186,12 @@ pub fn run_classify(
                 } else {
                     seed = v;
                 }
+            }
+            "--why" => {
+                let Some(q) = it.next() else {
+                    return usage(err, "'--why' needs a question");
+                };
+                questions.push(q.clone());
             }
             "--outf=2" => json = true,
             "--outf=0" => json = false,
@@ -256,6 +265,24 @@ pub fn run_classify(
             return Ok(super::EXIT_INPUT);
         }
     };
+    let lexicon = crate::explain::lexicon::Lexicon::ra();
+    let decided = |object: &str, label: &str| {
+        let d = decisions.iter().find(|d| d.name == object)?;
+        match label {
+            "stability" => d.stable.clone(),
+            "occlusion" => Some(d.occluded.clone()),
+            _ => None,
+        }
+    };
+    let mut answers = Vec::new();
+    for q in &questions {
+        let text =
+            match crate::explain::scene::why(&classifier.knowledge, &view, q, &lexicon, &decided) {
+                Ok(a) => a.text,
+                Err(e) => e.to_string(),
+            };
+        answers.push((q.clone(), text));
+    }
     if json {
         let objects: Vec<_> = decisions
             .iter()
@@ -279,6 +306,7 @@ pub fn run_classify(
             "Knowledge": if knowledge_only { "KB_full" } else { "KB_full less ST1, D1, OC2, plus learned" },
             "Learned": learned,
             "Objects": objects,
+            "Answers": answers.iter().map(|(q, a)| json!({"question": q, "answer": a})).collect::<Vec<_>>(),
         });
         writeln!(
             out,
@@ -328,6 +356,8 @@ pub fn run_classify(
         );
         writeln!(out, "{:<24} {:<34} {:<30} {truth}", d.name, st, oc)?;
     }
-    let _ = Label::ALL;
+    for (q, a) in &answers {
+        writeln!(out, "\n> {q}\n{a}")?;
+    }
     Ok(0)
 }

@@ -20,6 +20,8 @@
 //!   (a minimal set of goal literals, observations and constraints, by deletion over
 //!   assumptions);
 //! - [`generic`]: why and why-not of an atom of any program's answer set, as text;
+//! - `scene` (feature `sim`): why the robot believes an object of a looked-at scene is
+//!   (un)stable or (not) occluded, over the classification-mode answer set of `vision::reason`;
 //! - [`draw`]: proof trees as DOT text and as SVG drawn here;
 //! - [`h3`]: the H3 experiment's pieces: generated scenes (DOMAIN.md 1.6, 7.1), the three
 //!   checks of a proof tree (DOMAIN.md 7.5) and one trial over a history.
@@ -38,6 +40,8 @@ pub mod questions;
 pub mod oracle;
 pub mod history;
 pub mod generic;
+#[cfg(feature = "sim")]
+pub mod scene;
 pub mod counterfactual;
 pub mod draw;
 pub mod h3;

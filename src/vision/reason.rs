@@ -28,6 +28,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use crate::action::ast::{Description, Statement, StatementKind};
 use crate::action::build::{self, Arg};
 use crate::action::check::Options;
+use crate::action::translate::Translation;
 use crate::action::{self, ast::Value};
 use crate::base::SourceMap;
 use crate::control::{Control, ControlConfig, Part, Symbol};
@@ -237,8 +238,8 @@ impl Knowledge {
         Description { statements }
     }
 
-    /// Classifies every object of the view.
-    pub fn classify(&self, view: &View) -> Result<Reasoning, ReasonError> {
+    /// The classification-mode program of a view: one step, no planning module.
+    pub fn translation(&self, view: &View) -> Result<Translation, ReasonError> {
         let desc = self.description(view);
         let options = Options {
             profile: None,
@@ -256,6 +257,12 @@ impl Knowledge {
                 .collect();
             return Err(ReasonError::Translate(msgs.join("; ")));
         }
+        Ok(translation)
+    }
+
+    /// Classifies every object of the view.
+    pub fn classify(&self, view: &View) -> Result<Reasoning, ReasonError> {
+        let translation = self.translation(view)?;
         let mut config = ControlConfig::default();
         config.solve.models = MAX_MODELS;
         config.solve.supports = false;
