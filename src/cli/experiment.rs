@@ -24,6 +24,7 @@ use crate::experiment::{
 
 const HELP: &str = "\
 usage: lucent experiment h1|h2|h3|h4|all [OPTIONS]
+       lucent experiment classify [OPTIONS]   (scene understanding; `classify --help`)
        lucent experiment trial ID --out DIR
        lucent experiment merge DIR [--outf=0|2]
 
@@ -331,7 +332,22 @@ pub fn run_experiment(
         Ok(r) => r,
         Err(e) => return error(err, &e, super::EXIT_INPUT),
     };
-    finish(&report, parsed.out.as_deref(), parsed.json, Some(secs), out)
+    let code = finish(&report, parsed.out.as_deref(), parsed.json, Some(secs), out)?;
+    // `all` also runs the classification experiment (scene understanding), with the same seed
+    // and output directory; its report is `classify.md` beside `report.md`.
+    #[cfg(feature = "sim")]
+    if code == 0 && positional.iter().any(|p| p == "all") {
+        let mut args = vec!["--seed".to_string(), parsed.setup.seed.to_string()];
+        if let Some(dir) = &parsed.out {
+            args.push("--out".into());
+            args.push(dir.to_string_lossy().into_owned());
+        }
+        if parsed.json {
+            args.push("--outf=2".into());
+        }
+        return super::classify::run_experiment(&args, out, err);
+    }
+    Ok(code)
 }
 
 /// The progress bar: `[#####     ] 12/40 trials (3 reused)`.

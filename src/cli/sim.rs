@@ -49,6 +49,12 @@ const OPTIONS: &[OptionSpec] = &[
         help: "number of objects, 5 to 9 (default: the preset's range)",
     },
     OptionSpec {
+        name: "--risky",
+        value: None,
+        commands: &["generate"],
+        help: "a risky scene as placed, not settled (towers on irregular, small and flat supports: what `lucent classify` looks at)",
+    },
+    OptionSpec {
         name: "-o",
         value: Some("FILE"),
         commands: &["generate", "act", "step", "render"],
@@ -317,7 +323,15 @@ fn run_command(args: &Args) -> Result<String, Fail> {
             if args.value("--objects").is_some() {
                 config.count = Some(args.number("--objects", 0usize).map_err(usage)?);
             }
-            let scene = generate(&config)?;
+            let scene = if args.flag("--risky") {
+                crate::vision::scenes::generate_risky(&crate::vision::scenes::RiskyConfig {
+                    preset: config.preset,
+                    seed: config.seed,
+                    count: config.count,
+                })?
+            } else {
+                generate(&config)?
+            };
             match args.value("-o") {
                 Some(path) => {
                     save(path, scene.to_json().as_bytes())?;
