@@ -675,7 +675,16 @@ mod tests {
                 .map(|a| a.body),
             Some(vec![rel("below", o(1), o(2))])
         );
-        assert_eq!(Axiom::parse_ald("pickup(R1, O1) if in_hand(R1, O2)"), None);
+        // Without `impossible` or `causes`, the text is a state constraint (the reader is
+        // syntactic: whether the head is a fluent is the checker's business).
+        assert_eq!(
+            Axiom::parse_ald("-stable(O1) if irreg_below(O1)").map(|a| a.kind),
+            Some(AxiomKind::Constraint {
+                head: Literal::new("stable", vec![o(1)]).with_sign(false)
+            })
+        );
+        let st1 = Axiom::parse_ald("-stable(O1) if irreg_below(O1)").unwrap();
+        assert_eq!(Axiom::parse_ald(&st1.to_ald()), Some(st1));
         assert_eq!(Axiom::parse_ald("impossible pickup(R1, O1) if (("), None);
     }
 
