@@ -15,7 +15,10 @@ use std::process::Command;
 use serde_json::Value;
 
 /// The small configuration: two short learning runs, one (scene, goal) pair per preset.
-const SMALL: [&str; 10] = [
+// `--no-classify`: the classification experiment is not part of the trial store and its job
+// list; `all` runs it in process after H1-H4.
+const SMALL: [&str; 11] = [
+    "--no-classify",
     "--seed",
     "3",
     "--runs",

@@ -137,16 +137,27 @@ pub fn run_experiment(
             return Ok(super::EXIT_INPUT);
         }
     };
-    let markdown = exp::markdown(&result);
-    let value = serde_json::to_value(&result).unwrap_or_default();
+    write_result(&result, dir.as_deref(), json, out)?;
+    Ok(0)
+}
+
+/// Writes the classification experiment's report files into `dir` (if given) and prints it.
+pub fn write_result(
+    result: &exp::ClassifyResult,
+    dir: Option<&std::path::Path>,
+    json: bool,
+    out: &mut dyn Write,
+) -> std::io::Result<()> {
+    let markdown = exp::markdown(result);
+    let value = serde_json::to_value(result).unwrap_or_default();
     if let Some(dir) = dir {
-        std::fs::create_dir_all(&dir)?;
+        std::fs::create_dir_all(dir)?;
         std::fs::write(dir.join("classify.md"), &markdown)?;
         std::fs::write(
             dir.join("classify.json"),
             serde_json::to_string_pretty(&value).unwrap_or_default() + "\n",
         )?;
-        for (name, svg) in exp::plots(&result) {
+        for (name, svg) in exp::plots(result) {
             std::fs::write(dir.join(name), svg)?;
         }
     }
@@ -159,7 +170,7 @@ pub fn run_experiment(
     } else {
         write!(out, "{markdown}")?;
     }
-    Ok(0)
+    Ok(())
 }
 
 /// `lucent classify SCENE.json ...`.

@@ -53,6 +53,9 @@ pieces this build lacks is reported as \"not available: <reason>\".
                        to FILE (for `parallel < FILE` or a Slurm array) and run nothing; then
                        `lucent experiment merge DIR` makes the report
   --outf=0|2           0: the markdown report (default); 2: JSON, one key per hypothesis
+  --no-classify        `all` without the classification experiment (which `all` otherwise
+                       runs after H1-H4, with --seed and --runs, writing DIR/classify.md; with
+                       --outf=2 it prints a second JSON document, the classification result)
 ";
 
 /// The parsed command line.
@@ -64,6 +67,7 @@ struct Args {
     out: Option<PathBuf>,
     emit_jobs: Option<PathBuf>,
     json: bool,
+    no_classify: bool,
 }
 
 /// What the run directory's `run.json` records.
@@ -106,6 +110,7 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
         out: None,
         emit_jobs: None,
         json: false,
+        no_classify: false,
     };
     let mut positional = Vec::new();
     let mut words = super::options::VerbArgs::new(args);
@@ -134,6 +139,7 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
                 out.setup.oracle.availability()?;
             }
             "--out" => out.out = Some(PathBuf::from(value()?)),
+            "--no-classify" => out.no_classify = true,
             "--emit-jobs" => out.emit_jobs = Some(PathBuf::from(value()?)),
             "--outf" => match value()?.as_str() {
                 "0" => out.json = false,
@@ -332,20 +338,28 @@ pub fn run_experiment(
         Ok(r) => r,
         Err(e) => return error(err, &e, super::EXIT_INPUT),
     };
-    let code = finish(&report, parsed.out.as_deref(), parsed.json, Some(secs), out)?;
-    // `all` also runs the classification experiment (scene understanding), with the same seed
-    // and output directory; its report is `classify.md` beside `report.md`.
     #[cfg(feature = "sim")]
-    if code == 0 && positional.iter().any(|p| p == "all") {
-        let mut args = vec!["--seed".to_string(), parsed.setup.seed.to_string()];
-        if let Some(dir) = &parsed.out {
-            args.push("--out".into());
-            args.push(dir.to_string_lossy().into_owned());
+    let classify = if positional.iter().any(|p| p == "all") && !parsed.no_classify {
+        let config = crate::experiment::classify::ClassifyConfig {
+            seed: parsed.setup.seed,
+            runs: parsed.setup.runs,
+            ..Default::default()
+        };
+        let progress = |line: &str| eprintln!("classify: {line}");
+        match crate::experiment::classify::run(&config, &progress) {
+            Ok(r) => Some(r),
+            Err(e) => return error(err, &e, super::EXIT_INPUT),
         }
-        if parsed.json {
-            args.push("--outf=2".into());
-        }
-        return super::classify::run_experiment(&args, out, err);
+    } else {
+        None
+    };
+    #[cfg(not(feature = "sim"))]
+    let classify: Option<()> = None;
+    let code = finish(&report, parsed.out.as_deref(), parsed.json, Some(secs), out)?;
+    if let Some(result) = classify {
+        #[cfg(feature = "sim")]
+        super::classify::write_result(&result, parsed.out.as_deref(), parsed.json, out)?;
+        let _ = result;
     }
     Ok(code)
 }
