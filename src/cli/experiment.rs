@@ -353,13 +353,10 @@ pub fn run_experiment(
     } else {
         None
     };
-    #[cfg(not(feature = "sim"))]
-    let classify: Option<()> = None;
     let code = finish(&report, parsed.out.as_deref(), parsed.json, Some(secs), out)?;
+    #[cfg(feature = "sim")]
     if let Some(result) = classify {
-        #[cfg(feature = "sim")]
         super::classify::write_result(&result, parsed.out.as_deref(), parsed.json, out)?;
-        let _ = result;
     }
     Ok(code)
 }
