@@ -67,8 +67,10 @@ fn scene() -> Scene {
 
 #[test]
 fn one_small_scene_is_classified_as_derived_by_hand() {
-    let mut config = DatasetConfig::default();
-    config.error = lucent::sim::ErrorModel::exact();
+    let config = DatasetConfig {
+        error: lucent::sim::ErrorModel::exact(),
+        ..DatasetConfig::default()
+    };
     let looked = labelled_from(&config, scene()).expect("the scene looks fine");
     let knowledge = Knowledge::kb_full();
     let c = Classifier::train(System::Reasoning, &knowledge, &[], &TrainConfig::default())
@@ -117,8 +119,10 @@ fn one_small_scene_is_classified_as_derived_by_hand() {
 /// the ball is behind no object, so OC2 rules out every occluder.
 #[test]
 fn the_scene_is_explained_from_the_proof_tree() {
-    let mut config = DatasetConfig::default();
-    config.error = lucent::sim::ErrorModel::exact();
+    let config = DatasetConfig {
+        error: lucent::sim::ErrorModel::exact(),
+        ..DatasetConfig::default()
+    };
     let looked = labelled_from(&config, scene()).expect("the scene looks fine");
     let knowledge = Knowledge::kb_full();
     let c = Classifier::train(System::Reasoning, &knowledge, &[], &TrainConfig::default())

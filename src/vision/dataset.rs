@@ -22,7 +22,8 @@ use crate::sim::perceive::perceive_world;
 use crate::sim::render::{render_camera, render_camera_world};
 use crate::sim::truth::relations;
 use crate::sim::{
-    ErrorModel, Image, ObjectId, Percept, Preset, Relation, Scene, SimError, TruthConfig, World,
+    Camera, ErrorModel, Image, ObjectId, Percept, Preset, Relation, Scene, SimError, TruthConfig,
+    World,
 };
 use serde::{Deserialize, Serialize};
 
@@ -144,18 +145,29 @@ pub fn labelled_from(config: &DatasetConfig, scene: Scene) -> Result<LabelledSce
             SimError::MalformedScene("an object is behind the camera or held".into())
         })
     };
+    // The frontal camera (the paper's robot has a top and a frontal view): at the height of
+    // the objects, looking along the depth axis of `front`/`behind`, so the occlusion the
+    // labels measure is what its picture shows.
+    let mut frontal = scene.clone();
+    frontal.camera = frontal_camera(&scene.camera);
+    let front_picture = render_camera_world(&frontal, &world, w, h);
+    let front_box = |id: ObjectId| {
+        group_box(&frontal, &world, &[id], w, h).ok_or_else(|| {
+            SimError::MalformedScene("an object is behind the frontal camera or held".into())
+        })
+    };
     let mut objects = Vec::with_capacity(scene.objects.len());
     for (id, labels) in scene.ids().zip(labels) {
         let chain = &chains[id.index()];
         let stability_box = boxed(std::iter::once(id).chain(chain.iter().copied()).collect())?;
-        // The occlusion ROI is centred on the object, twice its size, so that the object
-        // asked about is always the one in the middle and what stands in front of it shows
-        // over it (a union box of several objects leaves the network guessing which one is
-        // asked about); the occluders' union box is kept for pictures.
+        // The occlusion ROI is cut from the frontal picture, centred on the object, twice its
+        // size, so that the object asked about is always the one in the middle and what stands
+        // in front of it shows over it (a union box of several objects leaves the network
+        // guessing which one is asked about); the occluders' union box in the main camera's
+        // picture is kept for drawing.
         let occluders = occluder_ids(&scene, id, &truth, &labels);
-        let own = boxed(vec![id])?;
         let occlusion_box = boxed(std::iter::once(id).chain(occluders).collect())?;
-        let centred = centred_box(&own, 2.0);
+        let centred = centred_box(&front_box(id)?, 2.0);
         objects.push(LabelledObject {
             name: scene.object(id).name.clone(),
             stacked: !chain.is_empty(),
@@ -165,7 +177,7 @@ pub fn labelled_from(config: &DatasetConfig, scene: Scene) -> Result<LabelledSce
                 .collect(),
             labels,
             stability_roi: crop_resize(&picture, &stability_box, config.margin, ROI_SIZE),
-            occlusion_roi: crop_resize(&picture, &centred, 0.0, ROI_SIZE),
+            occlusion_roi: crop_resize(&front_picture, &centred, 0.0, ROI_SIZE),
             stability_box,
             occlusion_box,
         });
@@ -178,6 +190,18 @@ pub fn labelled_from(config: &DatasetConfig, scene: Scene) -> Result<LabelledSce
         truth,
         objects,
     })
+}
+
+/// The frontal camera of a scene's camera: on the same side of the table, 8 cm above it and
+/// looking horizontally along the main camera's depth axis at the table's middle.
+pub fn frontal_camera(main: &Camera) -> Camera {
+    let target = main.target;
+    let depth = main.depth_axis();
+    Camera {
+        eye: [target[0] - 1.0 * depth.x, 0.08, target[2] - 1.0 * depth.z],
+        target: [target[0], 0.08, target[2]],
+        fov_y_degrees: 36.0,
+    }
 }
 
 /// The square box centred on `b` whose side is `scale` times `b`'s longer side.
