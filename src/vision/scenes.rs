@@ -827,34 +827,3 @@ mod measure {
         }
     }
 }
-#[cfg(test)]
-mod dbg {
-    use super::*;
-    #[test]
-    fn dbg_seed97() {
-        let scene = generate_risky(&RiskyConfig::new(Preset::Simulated, 97)).unwrap();
-        for o in &scene.objects { println!("{} {:?} {:?} {:?}", o.name, o.size, o.position, o.rotation); }
-        let a = scene.find("red_apple").unwrap();
-        let c = scene.find("red_can").unwrap();
-        let (oa, oc) = (scene.object(a), scene.object(c));
-        let sa = placement_shape(&oa.kind.shape(oa.size));
-        let sc = placement_shape(&oc.kind.shape(oc.size));
-        let (pa, pc) = (oa.pose(), oc.pose());
-        let foot = sa.compute_aabb(&pa);
-        let d = deepest(&sa, &pa, &[(pc, sc.clone())], f32::NEG_INFINITY, (foot.mins.x, foot.mins.z, foot.maxs.x, foot.maxs.z), 64);
-        println!("{:?}", &d[..5]);
-        let mut p0 = pa; p0.translation.y = 0.0;
-        let supports = [(pc, sc.clone())];
-        for &(_, x, z) in &d[..3] {
-            println!("need at {x},{z}: {:?}", lift_needed(&sa, &p0, &supports, 0.0, (x, z)));
-        }
-        use parry3d::query::RayCast;
-        let cyl = oc.kind.shape(oc.size);
-        for (x, z) in [(0.1529397f32, 0.20624547f32), (0.1463, 0.2062), (0.1463, 0.2030), (0.1463, 0.2040), (0.17, 0.1812)] {
-            let ray = Ray::new(Vector::new(x, 0.06, z), -Vector::Y);
-            let tilted = Ray::new(Vector::new(x, 0.06, z), Vector::new(1e-4, -1.0, 2e-4).normalize());
-            println!("({x},{z}) r={:.4}: prism {:?} cyl {:?} prism-tilted {:?} cyl-tilted {:?}", ((x-0.14627177f32).powi(2)+(z-0.18123189f32).powi(2)).sqrt(), sc.cast_ray(&pc, &ray, 1.0, true), cyl.cast_ray(&pc, &ray, 1.0, true), sc.cast_ray(&pc, &tilted, 1.0, true), cyl.cast_ray(&pc, &tilted, 1.0, true));
-        }
-        println!("can aabb {:?}\napple aabb {:?}", sc.compute_aabb(&pc), foot);
-    }
-}
