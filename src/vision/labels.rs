@@ -22,7 +22,9 @@
 //! Invariants: labels are a deterministic function of the scene and the configuration; a held
 //! object (not in the physics) is labelled stable, with no displacement and nothing hidden.
 
-use crate::sim::truth::{stability, TruthConfig};
+use crate::sim::object::{Size, Surface};
+use crate::sim::scene::TABLE;
+use crate::sim::truth::{stability, Rel, Relation, TruthConfig};
 use crate::sim::world::Hit;
 use crate::sim::{ObjectId, Scene, World};
 use parry3d::math::Vector;
@@ -199,6 +201,91 @@ pub fn label_world(scene: &Scene, world: &World, config: &LabelConfig) -> Vec<Ob
             }
         })
         .collect()
+}
+
+/// What a stacked object stands on, judged by the riskiest support below it in its tower: a
+/// tower falls from its risky support up, so everything above that support shares its fate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Footing {
+    /// Not stacked: it stands on the table.
+    Table,
+    /// Some support below it has an irregular top.
+    Irregular,
+    /// Some support below it is a small flat object (and none is irregular).
+    Small,
+    /// Every support below it is a medium or large flat object.
+    Flat,
+}
+
+impl Footing {
+    /// The category's name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Footing::Table => "table",
+            Footing::Irregular => "on irregular",
+            Footing::Small => "on small support",
+            Footing::Flat => "on medium/large flat",
+        }
+    }
+}
+
+/// Per object, the objects below it in its tower, nearest first: those reached from it by
+/// following `on(A, B)` relations down to the table (breadth first; ties by scene order).
+pub fn supports(scene: &Scene, relations: &[Relation]) -> Vec<Vec<ObjectId>> {
+    let under: Vec<Vec<ObjectId>> = scene
+        .ids()
+        .map(|id| {
+            let name = &scene.object(id).name;
+            let mut below: Vec<ObjectId> = relations
+                .iter()
+                .filter(|r| r.rel == Rel::On && &r.a == name && r.b != TABLE)
+                .filter_map(|r| scene.find(&r.b))
+                .collect();
+            below.sort();
+            below
+        })
+        .collect();
+    scene
+        .ids()
+        .map(|id| {
+            let mut chain: Vec<ObjectId> = Vec::new();
+            let mut frontier = vec![id];
+            while !frontier.is_empty() {
+                let mut next = Vec::new();
+                for o in frontier {
+                    for &b in &under[o.index()] {
+                        if b != id && !chain.contains(&b) && !next.contains(&b) {
+                            next.push(b);
+                        }
+                    }
+                }
+                next.sort();
+                chain.extend(&next);
+                frontier = next;
+            }
+            chain
+        })
+        .collect()
+}
+
+/// The footing of an object whose supports (from [`supports`]) are given.
+pub fn footing(scene: &Scene, supports: &[ObjectId]) -> Footing {
+    if supports.is_empty() {
+        Footing::Table
+    } else if supports
+        .iter()
+        .any(|&s| scene.object(s).surface() == Surface::Irregular)
+    {
+        Footing::Irregular
+    } else if supports
+        .iter()
+        .any(|&s| scene.object(s).size == Size::Small)
+    {
+        Footing::Small
+    } else {
+        Footing::Flat
+    }
 }
 
 #[cfg(test)]

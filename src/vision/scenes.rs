@@ -13,7 +13,8 @@
 //! The scene is NOT settled: it is the configuration as placed, which the camera sees; physics
 //! then decides whether it stays put (`labels`). Placement rule (the world's design):
 //! - towers are built bottom up; each support below a tower's top is a flat-topped object (cube,
-//!   can, box), except the irregular base of an "irregular" tower (below);
+//!   can, box), except the irregular base of an "irregular" tower (below); cans serve only as
+//!   small supports;
 //! - an object placed on a **small** support lands off-centre: its centre is displaced from the
 //!   support's centre by a distance drawn uniformly between 1.1 and 1.5 times the support's
 //!   half-width (a small top is too narrow to centre anything on), in a random horizontal
@@ -29,40 +30,26 @@
 //! - about 1/3 of towers have an irregular object below the top, about 1/3 have a small support,
 //!   the rest are safe (every support medium/large flat); a risky tower has exactly one risky
 //!   support, **its base**, and every support above it is medium/large flat;
-//! - a can carries no object standing on a cylinder's flat end (can, bottle, mug, pitcher, pot);
-//! - every object rests exactly on what is below it, no gap: its resting height is found by
-//!   casting its shape straight down (parry's `cast_shapes`) onto the objects already in the
-//!   tower (or the table), then lifting it out of any overlap parry's `distance` still finds,
-//!   so its lowest point touches the highest point under it; it is then
-//!   sunk by [`SINK`] = 0.1 mm into it. The sinking is far below rapier's allowed penetration
-//!   (1 mm), so the physics sees a resting contact; it is there for `sim::truth`'s `touch`:
-//!   parry 0.31.1's cuboid-cuboid distance is wrong for *separated* boxes in some relative poses
-//!   (those whose rotation has `-0.0` components, as an inverted yaw has): a cube touching
-//!   another within 1e-7 m, or a duck's foot plate on a cube, measured 5 mm apart, and `on` was
-//!   lost; interpenetrating shapes measure 0 whatever the pose.
+//! - every object rests exactly on what is below it, no gap and no overlap: its resting height
+//!   is the largest lift its underside needs to clear the tops of the objects already in the
+//!   tower (or the table) along vertical lines through its footprint (a lattice of at most
+//!   1 mm steps, refined twice around the highest points; heights along a line in closed form,
+//!   `vertical_span`), so its lowest point touches the highest point under it; it is then sunk
+//!   by [`SINK`] = 0.1 mm into it. The sinking is far below rapier's allowed penetration (1 mm),
+//!   so the physics sees a resting contact; it is there for `sim::truth`'s `touch`: parry
+//!   0.31.1's cuboid-cuboid distance is wrong for *separated* boxes in some relative poses (those
+//!   whose rotation has `-0.0` components, as an inverted yaw has): a cube touching another
+//!   within 1e-7 m, or a duck's foot plate on a cube, measured 5 mm apart, and `on` was lost;
+//!   interpenetrating shapes measure 0 whatever the pose. (parry's shape casts, distances and
+//!   ray casts each failed on some pair here, hence `vertical_span`.)
 //!
-//! Measured (`measure::physics_rates_per_footing`, 300 scenes per preset, `labels`' defaults),
-//! with [`Footing`] as the category: with this rule, stacked objects on an irregular support are
-//! unstable in 99.2% (Real, 249 objects) and 98.4% (Simulated, 305), on a small support in 100%
-//! (256, 278), and on medium/large flat supports stable in 98.7% (317) and 99.4% (329). The rule
-//! as first specified (half-width = half the side, risky support anywhere below the top, every
-//! irregular kind and every flat kind as supports) gave 85%/82% (irregular), 83%/89% (small) and
-//! 97.0%/88.9% (flat). The changes and why:
-//! - half-width along the displacement direction: towards a cube's corner its top reaches
-//!   `sqrt(2)` half-sides, so 1.1-1.5 half-sides left the centre of mass over a yawed small cube
-//!   in 18-23% of the placements, and those stayed put;
-//! - no vessels (mug, pitcher, pot) as supports: their rim holds what is wider than the opening
-//!   and what is narrower drops onto the flat body inside (all 18 objects put on a medium pot
-//!   stayed); no bottle or capsicum either: their cap and stem are flat discs of 4-8 mm radius,
-//!   on which the simulation balances an object centred within 1 cm (a bottle held 8 of 47, a
-//!   medium capsicum 5 of 17);
-//! - the risky support is the tower's base: when a risky support carries a toppling object, the
-//!   fall pushes the risky support and whatever is under it (a ball on a cube rolls off it, a
-//!   small cube slides): 27 of the 31 unstable objects on medium/large flat supports (of 834)
-//!   lay under a toppling object, with nothing wrong under them;
-//! - a can carries no cylinder-ended object: rapier's cylinder-on-cylinder contact rocks (a
-//!   medium can centred on a medium can fell in 6 of 20 trials, a pitcher on a can in 13 of 20),
-//!   while a can under a cube or a ball and a can on a cube hold (100 of 100 each).
+//! The rule as first specified (half-width = half the side, risky support anywhere below the
+//! top, every irregular and flat kind as a support) missed the expected physics; the changes
+//! (half-width along the direction, no vessel, bottle or capsicum under anything, the risky
+//! support at the base, cans only as small supports) and the measurements behind them are in
+//! `dataset`'s `measure` test module: with this rule, over 300 scenes per preset, stacked
+//! objects on an irregular or a small support are unstable in 99.2-100% of cases and those on
+//! medium/large flat supports stable in 99.7-100%.
 //!
 //! Invariants: the same `(preset, seed, count)` gives the same scene, bit for bit (one SplitMix64
 //! stream seeded with the seed); objects are listed tower by tower, bottom up, then the loose
@@ -71,14 +58,12 @@
 use crate::base::rng::SplitMix64;
 use crate::sim::generate::{colours, sizes};
 use crate::sim::object::{Colour, ObjectKind, Size, Surface};
-use crate::sim::scene::{Scene, SceneObject, TABLE};
-use crate::sim::truth::{Rel, Relation};
-use crate::sim::{ObjectId, Preset, SimError};
+use crate::sim::scene::{Scene, SceneObject};
+use crate::sim::{Preset, SimError};
 use parry3d::bounding_volume::BoundingVolume;
 use parry3d::math::{Pose, Rot3, Vector};
 use parry3d::query::Ray;
-use parry3d::shape::SharedShape;
-use serde::{Deserialize, Serialize};
+use parry3d::shape::{Shape, SharedShape};
 
 /// What to generate.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -102,37 +87,12 @@ impl RiskyConfig {
     }
 }
 
-/// What a stacked object stands on, judged by the riskiest support below it in its tower: a
-/// tower falls from its risky support up, so everything above that support shares its fate.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Footing {
-    /// Not stacked: it stands on the table.
-    Table,
-    /// Some support below it has an irregular top.
-    Irregular,
-    /// Some support below it is a small flat object (and none is irregular).
-    Small,
-    /// Every support below it is a medium or large flat object.
-    Flat,
-}
-
-impl Footing {
-    /// The category's name in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            Footing::Table => "table",
-            Footing::Irregular => "on irregular",
-            Footing::Small => "on small support",
-            Footing::Flat => "on medium/large flat",
-        }
-    }
-}
-
 /// The kinds of a preset.
 struct Family {
     /// Flat-topped kinds.
     flat: &'static [ObjectKind],
+    /// Flat-topped kinds that serve as small supports.
+    small: &'static [ObjectKind],
     /// Irregular kinds that may support something (no vessels, see the module doc).
     supports: &'static [ObjectKind],
     /// Every kind of the preset.
@@ -144,11 +104,13 @@ fn family(preset: Preset) -> Result<Family, SimError> {
     match preset {
         Preset::Real => Ok(Family {
             flat: &[Cube],
+            small: &[Cube],
             supports: &[Ball, Apple, Orange, Pig],
             all: &[Cube, Ball, Apple, Orange, Capsicum, Pig, Pot],
         }),
         Preset::Simulated => Ok(Family {
-            flat: &[Cube, Can, Box],
+            flat: &[Cube, Box],
+            small: &[Cube, Can],
             supports: &[Ball, Duck, Apple],
             all: &[
                 Cube, Can, Box, Ball, Duck, Apple, Pitcher, Bottle, Mug, Box, Cube, Can,
@@ -188,19 +150,6 @@ impl Placed {
     fn pose(&self) -> Pose {
         Pose::from_parts(self.position, self.rotation)
     }
-}
-
-/// True for the kinds standing on a cylinder's flat end (can, bottle and the vessels), which a
-/// can does not carry (see the module documentation).
-fn cylinder_based(kind: ObjectKind) -> bool {
-    matches!(
-        kind,
-        ObjectKind::Can
-            | ObjectKind::Bottle
-            | ObjectKind::Mug
-            | ObjectKind::Pitcher
-            | ObjectKind::Pot
-    )
 }
 
 /// Radius of a disc around the origin that holds the object's footprint at any yaw.
@@ -266,75 +215,110 @@ fn edge_distance(kind: ObjectKind, size: Size, rotation: Rot3, dir: Vector) -> f
 /// How far every object is sunk into what it rests on, in metres (see the module documentation).
 pub const SINK: f32 = 1e-4;
 
-/// The shape used to find resting heights: every cuboid, also inside a compound, replaced by the
-/// convex hull of its corners (the same solid, measured by parry's general distance rather than
-/// its cuboid-cuboid one), and every cylinder by the hull of a 48-sided prism inscribed in it
-/// (parry's distance between two cylinders' parallel flat ends was 0 at 1 mm apart, 2.5 mm at
-/// 1 mm and 2.1 mm at 2 mm; prisms are measured exactly).
-fn placement_shape(shape: &SharedShape) -> SharedShape {
-    if let Some(cylinder) = shape.as_cylinder() {
-        let (h, r) = (cylinder.half_height, cylinder.radius);
-        let rim: Vec<Vector> = (0..48)
-            .flat_map(|k| {
-                let phi = std::f32::consts::TAU * k as f32 / 48.0;
-                let (x, z) = (r * phi.cos(), r * phi.sin());
-                [Vector::new(x, -h, z), Vector::new(x, h, z)]
-            })
-            .collect();
-        SharedShape::convex_hull(&rim).expect("a prism's corners span three dimensions")
-    } else if let Some(cuboid) = shape.as_cuboid() {
-        let h = cuboid.half_extents;
-        let corners: Vec<Vector> = (0..8)
-            .map(|i| {
-                let sign = |bit: u32| if i & bit == 0 { -1.0 } else { 1.0 };
-                Vector::new(sign(1) * h.x, sign(2) * h.y, sign(4) * h.z)
-            })
-            .collect();
-        SharedShape::convex_hull(&corners).expect("a box's corners span three dimensions")
-    } else if let Some(compound) = shape.as_compound() {
-        SharedShape::compound(
-            compound
-                .shapes()
-                .iter()
-                .map(|(pose, part)| (*pose, placement_shape(part)))
-                .collect(),
-        )
+/// The interval of heights `(bottom, top)` that a posed shape occupies on the vertical line
+/// through (x, z), or `None` if the line misses it. Computed in closed form for the upright
+/// primitives the object kinds are made of (cuboid, cylinder, cone, ball, horizontal capsule,
+/// convex polyhedron as half-spaces, and compounds of them), because parry's ray casts on
+/// support-map shapes are unreliable for rays parallel to a side (a vertical ray 2.5 mm outside a
+/// prism hit it); anything else, or a tilted shape, falls back to parry's ray cast.
+fn vertical_span(shape: &dyn Shape, pose: &Pose, x: f32, z: f32) -> Option<(f32, f32)> {
+    if let Some(compound) = shape.as_compound() {
+        return compound
+            .shapes()
+            .iter()
+            .filter_map(|(part_pose, part)| vertical_span(&**part, &(*pose * *part_pose), x, z))
+            .reduce(|a, b| (a.0.min(b.0), a.1.max(b.1)));
+    }
+    let local = pose.inverse() * Vector::new(x, 0.0, z);
+    let up = pose.rotation.inverse() * Vector::Y;
+    let span = if up.y < 0.99999 {
+        None
     } else {
-        shape.clone()
+        let (lx, lz) = (local.x, local.z);
+        let d2 = lx * lx + lz * lz;
+        let within = |r: f32| d2 <= r * r;
+        if let Some(c) = shape.as_cuboid() {
+            let h = c.half_extents;
+            Some((lx.abs() <= h.x && lz.abs() <= h.z).then_some((-h.y, h.y)))
+        } else if let Some(c) = shape.as_cylinder() {
+            Some(within(c.radius).then_some((-c.half_height, c.half_height)))
+        } else if let Some(c) = shape.as_cone() {
+            let h = c.half_height;
+            Some(within(c.radius).then(|| (-h, h - 2.0 * h * d2.sqrt() / c.radius)))
+        } else if let Some(b) = shape.as_ball() {
+            Some(within(b.radius).then(|| {
+                let y = (b.radius * b.radius - d2).sqrt();
+                (-y, y)
+            }))
+        } else if let Some(c) = shape
+            .as_capsule()
+            .filter(|c| c.segment.a.y == c.segment.b.y)
+        {
+            // The segment's point nearest the line depends on x and z only.
+            let (a, b) = (c.segment.a, c.segment.b);
+            let ab = Vector::new(b.x - a.x, 0.0, b.z - a.z);
+            let t = (Vector::new(lx - a.x, 0.0, lz - a.z).dot(ab) / ab.length_squared().max(1e-12))
+                .clamp(0.0, 1.0);
+            let (cx, cz) = (a.x + t * ab.x, a.z + t * ab.z);
+            let rest = c.radius * c.radius - (lx - cx).powi(2) - (lz - cz).powi(2);
+            Some((rest >= 0.0).then(|| (a.y - rest.sqrt(), a.y + rest.sqrt())))
+        } else {
+            shape.as_convex_polyhedron().map(|hull| {
+                let (mut low, mut high) = (f32::NEG_INFINITY, f32::INFINITY);
+                for face in hull.faces() {
+                    let corner = hull.vertices_adj_to_face()[face.first_vertex_or_edge as usize];
+                    let n = face.normal;
+                    // n . (lx, y, lz) <= n . corner
+                    let rest = n.dot(hull.points()[corner as usize]) - n.x * lx - n.z * lz;
+                    if n.y > 1e-6 {
+                        high = high.min(rest / n.y);
+                    } else if n.y < -1e-6 {
+                        low = low.max(rest / n.y);
+                    } else if rest < 0.0 {
+                        return None;
+                    }
+                }
+                (low <= high).then_some((low, high))
+            })
+        }
+    };
+    match span {
+        // Local heights to world heights: the rotation is a yaw, so only the offset changes.
+        Some(found) => found.map(|(low, high)| (low - local.y, high - local.y)),
+        None => {
+            let aabb = shape.compute_aabb(pose);
+            let (below, above) = (aabb.mins.y - 0.01, aabb.maxs.y + 0.01);
+            let up = Ray::new(Vector::new(x, below, z), Vector::Y);
+            let down = Ray::new(Vector::new(x, above, z), -Vector::Y);
+            let low = below + shape.cast_ray(pose, &up, 1.0, true)?;
+            let high = above - shape.cast_ray(pose, &down, 1.0, true)?;
+            Some((low, high))
+        }
     }
 }
 
-/// How far an object of placement shape `shape` at `pose` must rise so that, along the vertical
-/// line through (x, z), its underside clears the tops of `supports` and the plane `floor`
-/// (negative: the gap between them); `None` if the line misses the object. Ray casts, which
-/// parry does exactly for convex polyhedra.
+/// How far an object of shape `shape` at `pose` must rise so that, along the vertical line
+/// through (x, z), its underside clears the tops of `supports` and the plane `floor` (negative:
+/// the gap between them); `None` if the line misses the object.
 fn lift_needed(
-    shape: &SharedShape,
+    shape: &dyn Shape,
     pose: &Pose,
     supports: &[(Pose, SharedShape)],
     floor: f32,
     (x, z): (f32, f32),
 ) -> Option<f32> {
-    let own = shape.compute_aabb(pose);
-    let below = own.mins.y - 0.01;
-    let up = Ray::new(Vector::new(x, below, z), Vector::Y);
-    let bottom = below + shape.cast_ray(pose, &up, 1.0, true)?;
-    let top = supports
-        .iter()
-        .map(|(p, s)| s.compute_aabb(p).maxs.y)
-        .fold(floor, f32::max);
-    let down = Ray::new(Vector::new(x, top + 0.01, z), -Vector::Y);
+    let bottom = vertical_span(shape, pose, x, z)?.0;
     let ground = supports
         .iter()
-        .filter_map(|(p, s)| s.cast_ray(p, &down, 10.0, true))
-        .map(|t| top + 0.01 - t)
+        .filter_map(|(p, s)| vertical_span(&**s, p, x, z))
+        .map(|span| span.1)
         .fold(floor, f32::max);
     Some(ground - bottom)
 }
 
 /// The largest [`lift_needed`] over an `n x n` lattice covering the object's footprint, and where.
 fn deepest(
-    shape: &SharedShape,
+    shape: &dyn Shape,
     pose: &Pose,
     supports: &[(Pose, SharedShape)],
     floor: f32,
@@ -359,21 +343,18 @@ fn deepest(
 /// The height of the origin at which an object of this shape at (x, z) with this rotation rests
 /// on the highest of `below` under it (or on the table), then sunk by [`SINK`]: the largest lift
 /// it needs along vertical lines through its footprint over the supports, on a lattice of steps
-/// of at most 2.5 mm refined twice by 9 x 9 lattices around the four highest points (steps of a
+/// of at most 1 mm refined twice by 9 x 9 lattices around the four highest points (steps of a
 /// few hundredths of a millimetre near the contact).
 fn resting_height(below: &[Placed], shape: &SharedShape, x: f32, z: f32, rotation: Rot3) -> f32 {
-    let shape = placement_shape(shape);
-    let supports: Vec<(Pose, SharedShape)> = below
-        .iter()
-        .map(|p| (p.pose(), placement_shape(&p.shape())))
-        .collect();
+    let supports: Vec<(Pose, SharedShape)> = below.iter().map(|p| (p.pose(), p.shape())).collect();
     let pose = Pose::from_parts(Vector::new(x, 0.0, z), rotation);
     // On the table, the lowest point of the upright shape rests on it exactly.
     let on_table = -shape.compute_local_aabb().mins.y;
     if supports.is_empty() {
         return on_table - SINK;
     }
-    // Over the supports, a lattice whose step (at most 2.5 mm) cannot miss a stem or a leg.
+    // Over the supports, a lattice whose step (at most 1 mm) cannot miss a stem (the thinnest,
+    // a small apple's, is 3 mm wide) or a leg.
     let foot = shape.compute_aabb(&pose);
     let under = supports
         .iter()
@@ -386,8 +367,8 @@ fn resting_height(below: &[Placed], shape: &SharedShape, x: f32, z: f32, rotatio
         foot.maxs.x.min(under.maxs.x),
         foot.maxs.z.min(under.maxs.z),
     );
-    let n = (((area.2 - area.0).max(area.3 - area.1) / 0.0025).ceil() as usize).max(8);
-    let mut best = deepest(&shape, &pose, &supports, 0.0, area, n);
+    let n = (((area.2 - area.0).max(area.3 - area.1) / 0.001).ceil() as usize).max(8);
+    let mut best = deepest(&**shape, &pose, &supports, 0.0, area, n);
     best.truncate(4);
     let (mut cx, mut cz) = ((area.2 - area.0) / n as f32, (area.3 - area.1) / n as f32);
     // Twice: around the four highest points so far, a 9 x 9 lattice one cell either side.
@@ -396,7 +377,7 @@ fn resting_height(below: &[Placed], shape: &SharedShape, x: f32, z: f32, rotatio
             .iter()
             .flat_map(|&(_, px, pz)| {
                 let near = (px - cx, pz - cz, px + cx, pz + cz);
-                deepest(&shape, &pose, &supports, 0.0, near, 9)
+                deepest(&**shape, &pose, &supports, 0.0, near, 9)
             })
             .chain(best.iter().copied())
             .collect();
@@ -417,29 +398,21 @@ fn yaw(rng: &mut SplitMix64) -> Rot3 {
 /// Builds one tower of height `height` around the local origin, bottom up.
 fn build_tower(height: usize, risk: Risk, family: &Family, rng: &mut SplitMix64) -> Vec<Placed> {
     // The risky support is the base (see the module documentation); a safe tower has none.
-    let risky_level = if risk == Risk::Safe { usize::MAX } else { 0 };
+    let risky_level = (risk != Risk::Safe).then_some(0);
     let mut tower: Vec<Placed> = Vec::with_capacity(height);
     // The size of the medium/large flat support directly below, which caps what it carries.
     let mut cap: Option<Size> = None;
     for level in 0..height {
         let fits = |s: Size| cap.is_none_or(|c| s <= c);
         let big_flat = |s: Size| s >= Size::Medium && cap.is_none_or(|c| s <= c);
-        let on_can = tower.last().is_some_and(|p| p.kind == ObjectKind::Can);
-        let allowed = |kinds: &'static [ObjectKind]| -> Vec<ObjectKind> {
-            kinds
-                .iter()
-                .copied()
-                .filter(|&k| !(on_can && cylinder_based(k)))
-                .collect()
-        };
         let (kind, size) = if level + 1 == height {
-            draw(rng, &allowed(family.all), fits)
-        } else if level == risky_level && risk == Risk::Irregular {
-            draw(rng, &allowed(family.supports), fits)
-        } else if level == risky_level && risk == Risk::Small {
-            draw(rng, &allowed(family.flat), |s| s == Size::Small)
+            draw(rng, family.all, fits)
+        } else if risky_level == Some(level) && risk == Risk::Irregular {
+            draw(rng, family.supports, fits)
+        } else if risky_level == Some(level) && risk == Risk::Small {
+            draw(rng, family.small, |s| s == Size::Small)
         } else {
-            draw(rng, &allowed(family.flat), big_flat)
+            draw(rng, family.flat, big_flat)
         };
         let colour = *rng.pick(colours(kind));
         let rotation = yaw(rng);
@@ -449,7 +422,7 @@ fn build_tower(height: usize, risk: Risk, family: &Family, rng: &mut SplitMix64)
                 let centre = support.position;
                 let angle = rng.range_f32(0.0, std::f32::consts::TAU);
                 let dir = Vector::new(angle.cos(), 0.0, angle.sin());
-                let distance = if level == risky_level + 1 && risk == Risk::Small {
+                let distance = if risky_level.map(|r| r + 1) == Some(level) && risk == Risk::Small {
                     let edge = edge_distance(support.kind, support.size, support.rotation, dir);
                     rng.range_f32(1.1, 1.5) * edge
                 } else {
@@ -576,69 +549,13 @@ pub fn generate_risky(config: &RiskyConfig) -> Result<Scene, SimError> {
     Ok(scene)
 }
 
-/// Per object, the objects below it in its tower, nearest first: those reached from it by
-/// following `on(A, B)` relations down to the table (breadth first; ties by scene order).
-pub fn supports(scene: &Scene, relations: &[Relation]) -> Vec<Vec<ObjectId>> {
-    let under: Vec<Vec<ObjectId>> = scene
-        .ids()
-        .map(|id| {
-            let name = &scene.object(id).name;
-            let mut below: Vec<ObjectId> = relations
-                .iter()
-                .filter(|r| r.rel == Rel::On && &r.a == name && r.b != TABLE)
-                .filter_map(|r| scene.find(&r.b))
-                .collect();
-            below.sort();
-            below
-        })
-        .collect();
-    scene
-        .ids()
-        .map(|id| {
-            let mut chain: Vec<ObjectId> = Vec::new();
-            let mut frontier = vec![id];
-            while !frontier.is_empty() {
-                let mut next = Vec::new();
-                for o in frontier {
-                    for &b in &under[o.index()] {
-                        if b != id && !chain.contains(&b) && !next.contains(&b) {
-                            next.push(b);
-                        }
-                    }
-                }
-                next.sort();
-                chain.extend(&next);
-                frontier = next;
-            }
-            chain
-        })
-        .collect()
-}
-
-/// The footing of an object whose supports (from [`supports`]) are given.
-pub fn footing(scene: &Scene, supports: &[ObjectId]) -> Footing {
-    if supports.is_empty() {
-        Footing::Table
-    } else if supports
-        .iter()
-        .any(|&s| scene.object(s).surface() == Surface::Irregular)
-    {
-        Footing::Irregular
-    } else if supports
-        .iter()
-        .any(|&s| scene.object(s).size == Size::Small)
-    {
-        Footing::Small
-    } else {
-        Footing::Flat
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sim::truth::{relations, TruthConfig};
-    use crate::sim::World;
+    use crate::sim::scene::TABLE;
+    use crate::sim::truth::{relations, Rel, Relation, TruthConfig};
+    use crate::sim::{ObjectId, World};
+    use crate::vision::labels::supports;
 
     #[test]
     fn same_seed_same_scene_and_counts_in_range() {
@@ -701,10 +618,7 @@ mod tests {
                 // `on` above).
                 let shape = |o: ObjectId| {
                     let object = scene.object(o);
-                    (
-                        object.pose(),
-                        placement_shape(&object.kind.shape(object.size)),
-                    )
+                    (object.pose(), object.kind.shape(object.size))
                 };
                 let (pose, own) = shape(id);
                 let foot = own.compute_aabb(&pose);
@@ -713,7 +627,7 @@ mod tests {
                     if scene.object(other).position[1] > scene.object(id).position[1] {
                         continue;
                     }
-                    let lift = deepest(&own, &pose, &[shape(other)], f32::NEG_INFINITY, area, 64)
+                    let lift = deepest(&*own, &pose, &[shape(other)], f32::NEG_INFINITY, area, 64)
                         .first()
                         .map_or(f32::NEG_INFINITY, |d| d.0);
                     let o = &scene.object(other).name;
@@ -747,6 +661,42 @@ mod tests {
     }
 
     #[test]
+    fn vertical_spans_by_hand() {
+        let span = |kind: ObjectKind, size: Size, yaw: f32, (x, z): (f32, f32)| {
+            let pose = Pose::from_parts(Vector::new(0.0, 0.1, 0.0), Rot3::from_rotation_y(yaw));
+            vertical_span(&*kind.shape(size), &pose, x, z).map(|(lo, hi)| (lo - 0.1, hi - 0.1))
+        };
+        let close = |got: Option<(f32, f32)>, (lo, hi): (f32, f32)| {
+            let (a, b) = got.expect("the line meets the shape");
+            assert!((a - lo).abs() < 1e-5 && (b - hi).abs() < 1e-5, "{got:?}");
+        };
+        use ObjectKind::*;
+        use Size::*;
+        // A small cube (5 cm) turned 45 degrees: its corner reaches 3.54 cm from the axis.
+        close(
+            span(Cube, Small, std::f32::consts::FRAC_PI_4, (0.034, 0.0)),
+            (-0.025, 0.025),
+        );
+        assert!(span(Cube, Small, std::f32::consts::FRAC_PI_4, (0.0, 0.036)).is_none());
+        // A medium ball (radius 3.75 cm) 3 cm off its centre: +-sqrt(3.75^2 - 3^2) = +-2.25 cm.
+        close(span(Ball, Medium, 0.0, (0.03, 0.0)), (-0.0225, 0.0225));
+        // A small can: radius 2.25 cm, half height 2.5 cm.
+        close(span(Can, Small, 1.0, (0.0, 0.022)), (-0.025, 0.025));
+        assert!(span(Can, Small, 1.0, (0.0226, 0.0)).is_none());
+        // A medium pig: its capsule body (radius and half length 1.875 cm, along x) over its
+        // axis; through its head ball's centre (radius 1.5 cm at x = 3.75 cm, y = 0.9 cm), the
+        // head alone (the body ends at x = 3.75 cm, the legs stand at x = +-1.65 cm).
+        close(span(Pig, Medium, 0.0, (0.0, 0.0)), (-0.01875, 0.01875));
+        close(span(Pig, Medium, 0.0, (0.0375, 0.0)), (-0.006, 0.024));
+        // The apple (s = 7.5 cm): foot plate down to -0.45 s, stem (radius 0.03 s, half height
+        // 0.08 s at 0.48 s) up to 0.56 s; off the stem, the ellipsoid hull, top vertex 0.42 s.
+        let s = Medium.width();
+        close(span(Apple, Medium, 0.0, (0.0, 0.0)), (-0.45 * s, 0.56 * s));
+        let (low, high) = span(Apple, Medium, 0.0, (0.2 * s, 0.0)).unwrap();
+        assert!(high < 0.42 * s && high > 0.35 * s && low < -0.35 * s);
+    }
+
+    #[test]
     fn edge_distance_of_a_cube_grows_towards_its_corner() {
         let (kind, size) = (ObjectKind::Cube, Size::Small);
         let face = edge_distance(kind, size, Rot3::IDENTITY, Vector::X);
@@ -761,69 +711,5 @@ mod tests {
             diagonal,
         );
         assert!((turned - 0.025).abs() < 1e-5);
-    }
-}
-
-#[cfg(test)]
-mod measure {
-    use super::*;
-    use crate::sim::truth::{relations, TruthConfig};
-    use crate::sim::World;
-    use crate::vision::labels::{label, LabelConfig};
-    use rayon::prelude::*;
-
-    /// Per preset, the fraction of stacked objects stable per footing over 300 scenes, and per
-    /// kind of the support directly below. Run with
-    /// `cargo test --release --lib vision::scenes::measure -- --ignored --nocapture`.
-    #[test]
-    #[ignore]
-    fn physics_rates_per_footing() {
-        let truth = TruthConfig::default();
-        let labels = LabelConfig::default();
-        for preset in [Preset::Real, Preset::Simulated] {
-            let rows: Vec<Vec<(Footing, String, bool)>> = (0..300u64)
-                .into_par_iter()
-                .map(|seed| {
-                    let scene = generate_risky(&RiskyConfig::new(preset, seed)).unwrap();
-                    let world = World::build(&scene);
-                    let chains = supports(&scene, &relations(&scene, &world, &truth));
-                    let l = label(&scene, &labels);
-                    scene
-                        .ids()
-                        .filter(|id| !chains[id.index()].is_empty())
-                        .map(|id| {
-                            let below = scene.object(chains[id.index()][0]);
-                            let what = format!("{}/{}", below.kind.name(), below.size.name());
-                            (
-                                footing(&scene, &chains[id.index()]),
-                                what,
-                                l[id.index()].stable,
-                            )
-                        })
-                        .collect()
-                })
-                .collect();
-            let all: Vec<_> = rows.into_iter().flatten().collect();
-            println!("{}: {} stacked objects", preset.name(), all.len());
-            for f in [Footing::Irregular, Footing::Small, Footing::Flat] {
-                let of: Vec<_> = all.iter().filter(|r| r.0 == f).collect();
-                let stable = of.iter().filter(|r| r.2).count();
-                println!(
-                    "  {:22} {:4} objects, stable {:.3}, unstable {:.3}",
-                    f.name(),
-                    of.len(),
-                    stable as f64 / of.len().max(1) as f64,
-                    1.0 - stable as f64 / of.len().max(1) as f64
-                );
-                let mut kinds: Vec<&String> = of.iter().map(|r| &r.1).collect();
-                kinds.sort();
-                kinds.dedup();
-                for k in kinds {
-                    let n = of.iter().filter(|r| &r.1 == k).count();
-                    let s = of.iter().filter(|r| &r.1 == k && r.2).count();
-                    println!("      directly on {k:18} {n:4}, stable {s:4}");
-                }
-            }
-        }
     }
 }
