@@ -187,6 +187,35 @@ pub fn crop_resize(image: &Image, b: &PixelBox, margin: f32, size: usize) -> Vec
     out
 }
 
+/// Re-expresses an ROI relative to the colour of the object asked about, in place: for each
+/// pixel `p`, channels 0 and 1 are twice the absolute differences of its red and green
+/// chromaticities (`p / sum(p)`) from the object's, channel 2 is half its brightness (`sum(p)`)
+/// over the object's unshaded brightness; each clamped to `[0, 1]`. The renderer shades a colour
+/// `c` as `(k c)^(1/1.2)` with one factor `k` per pixel, so the object's own pixels have
+/// chromaticity differences 0 whatever their shading and brightness ratios in `[0.2, 0.5]`,
+/// while an occluder of another hue or lightness stands out. A black pixel (padding) counts as
+/// neutral grey chromaticity with brightness 0.
+pub fn relative_to_colour(roi: &mut [f32], colour: [f32; 3]) {
+    let target = colour.map(|c| c.max(0.0).powf(1.0 / 1.2));
+    let total = target.iter().sum::<f32>().max(1e-6);
+    let chroma = |p: [f32; 3], sum: f32| -> [f32; 2] {
+        if sum <= 1e-6 {
+            [1.0 / 3.0; 2]
+        } else {
+            [p[0] / sum, p[1] / sum]
+        }
+    };
+    let t = chroma(target, total);
+    for px in roi.chunks_exact_mut(3) {
+        let p = [px[0], px[1], px[2]];
+        let sum: f32 = p.iter().sum();
+        let q = chroma(p, sum);
+        px[0] = (2.0 * (q[0] - t[0]).abs()).clamp(0.0, 1.0);
+        px[1] = (2.0 * (q[1] - t[1]).abs()).clamp(0.0, 1.0);
+        px[2] = (0.5 * sum / total).clamp(0.0, 1.0);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -335,5 +364,25 @@ mod tests {
         let (x, _) = b.centre();
         assert!((x - 128.0).abs() < 1e-3, "{b:?}");
         assert!(b.y0 < 96.0 && b.y1 > 96.0);
+    }
+
+    #[test]
+    fn relative_to_colour_by_hand() {
+        // The object's colour (0.5, 0.25, 0.25) renders unshaded as c^(1/1.2); call it (a, b, b)
+        // with a = 0.5^(1/1.2) = 0.5612, b = 0.25^(1/1.2) = 0.3150, sum 1.1912, chromaticity
+        // (0.4711, 0.2644). Pixel 1 is the object at half shading (k = 0.5): every channel times
+        // 0.5^(1/1.2) = 0.5612, so differences 0 and brightness 0.5 * 0.5612 = 0.2806. Pixel 2
+        // is pure green (0, 1, 0): differences 2 * 0.4711 = 0.9422 and 2 * 0.7356 -> 1 (clamped),
+        // brightness 0.5 / 1.1912 = 0.4197. Pixel 3 is padding (0, 0, 0): chromaticity 1/3,
+        // differences 2 * 0.1378 = 0.2756 and 2 * 0.0689 = 0.1378, brightness 0.
+        let a = 0.5f32.powf(1.0 / 1.2);
+        let b = 0.25f32.powf(1.0 / 1.2);
+        let k = 0.5f32.powf(1.0 / 1.2);
+        let mut roi = vec![a * k, b * k, b * k, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0];
+        relative_to_colour(&mut roi, [0.5, 0.25, 0.25]);
+        let expected = [0.0, 0.0, 0.2806, 0.9422, 1.0, 0.4197, 0.2756, 0.1378, 0.0];
+        for (got, want) in roi.iter().zip(expected) {
+            assert!((got - want).abs() < 1e-3, "{roi:?}");
+        }
     }
 }
