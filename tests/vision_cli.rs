@@ -99,3 +99,44 @@ fn a_tiny_classification_experiment_reports_every_system() {
     assert_eq!(v["learning"]["runs"], 1);
     assert_eq!(v["removals"].as_array().unwrap().len(), 6);
 }
+
+/// `lucent run --see-occlusion N` trains a network at the start, decides occlusion at every
+/// look and lists the decisions with their source; zero training scenes is a bad command line.
+#[test]
+fn a_run_sees_occlusion_from_the_image() {
+    let (code, _, err) = lucent(&["run", "--preset", "simulated", "--see-occlusion", "0"]);
+    assert_eq!(code, 1, "{err}");
+    let (code, out, err) = lucent(&[
+        "run",
+        "--preset",
+        "simulated",
+        "--seed",
+        "1",
+        "--see-occlusion",
+        "3",
+        "--max-actions",
+        "1",
+    ]);
+    assert!(code == 0 || code == 20, "{err}");
+    assert!(err.contains("seeing occlusion: a network trained"), "{err}");
+    let line = out
+        .lines()
+        .find(|l| l.starts_with("Occlusion: "))
+        .unwrap_or_else(|| panic!("no occlusion line in {out}"));
+    // "Occlusion: R decisions by reasoning (r as the world says), N by the network from the
+    // image (n as the world says)": every object in view is judged at every look.
+    let numbers: Vec<usize> = line
+        .split(|c: char| !c.is_ascii_digit())
+        .filter(|w| !w.is_empty())
+        .map(|w| w.parse().unwrap())
+        .collect();
+    assert_eq!(numbers.len(), 4, "{line}");
+    assert!(
+        numbers[0] + numbers[2] >= 6,
+        "a simulated scene has 6 or more objects: {line}"
+    );
+    assert!(
+        numbers[1] <= numbers[0] && numbers[3] <= numbers[2],
+        "{line}"
+    );
+}

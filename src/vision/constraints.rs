@@ -127,7 +127,9 @@ pub struct ConstraintParams {
     /// and any literal passes as a constraint.
     pub max_ratio: usize,
     /// A kept constraint must decide at least this many class-1 samples that the constraints
-    /// with more votes do not.
+    /// with more votes do not. Measured over the 20 learning runs of `lucent experiment
+    /// classify --sizes 1000 --test 10` (200-scene subsets): strict precision 89.6% at 5, 96.8%
+    /// at 10, 98.4% at 20, recall 100% throughout; the removed constraints decide hundreds.
     pub min_new: usize,
 }
 
@@ -146,7 +148,7 @@ impl Default for ConstraintParams {
             },
             max_samples: 1500,
             max_ratio: 10,
-            min_new: 5,
+            min_new: 10,
         }
     }
 }

@@ -151,33 +151,16 @@ pub fn labelled_from(config: &DatasetConfig, scene: Scene) -> Result<LabelledSce
             SimError::MalformedScene("an object is behind the camera or held".into())
         })
     };
-    // The frontal camera (the paper's robot has a top and a frontal view): at the height of
-    // the objects, looking along the depth axis of `front`/`behind`, so the occlusion the
-    // labels measure is what its picture shows.
-    let mut frontal = scene.clone();
-    frontal.camera = frontal_camera(&scene.camera);
-    let front_picture = render_camera_world(&frontal, &world, w, h);
-    let front_box = |id: ObjectId| {
-        group_box(&frontal, &world, &[id], w, h).ok_or_else(|| {
-            SimError::MalformedScene("an object is behind the frontal camera or held".into())
-        })
-    };
+    let mut occlusion_rois = occlusion_rois(&scene, &world, w, h).into_iter();
     let mut objects = Vec::with_capacity(scene.objects.len());
     for (id, labels) in scene.ids().zip(labels) {
         let chain = &chains[id.index()];
         let stability_box = boxed(std::iter::once(id).chain(chain.iter().copied()).collect())?;
-        // The occlusion ROI is cut from the frontal picture, centred on the object, twice its
-        // size, so that the object asked about is always the one in the middle and what stands
-        // in front of it shows over it (a union box of several objects leaves the network
-        // guessing which one is asked about); the occluders' union box in the main camera's
-        // picture is kept for drawing.
         let occluders = occluder_ids(&scene, id, &truth, &labels);
         let occlusion_box = boxed(std::iter::once(id).chain(occluders).collect())?;
-        let centred = centred_box(&front_box(id)?, 2.0);
-        // ... and expressed relative to the object's perceived colour, so that the network
-        // knows which of the objects in the crop it is asked about (`roi::relative_to_colour`).
-        let mut occlusion_roi = crop_resize(&front_picture, &centred, 0.0, ROI_SIZE);
-        relative_to_colour(&mut occlusion_roi, scene.object(id).colour.rgb());
+        let occlusion_roi = occlusion_rois.next().flatten().ok_or_else(|| {
+            SimError::MalformedScene("an object is behind the frontal camera or held".into())
+        })?;
         objects.push(LabelledObject {
             name: scene.object(id).name.clone(),
             stacked: !chain.is_empty(),
@@ -200,6 +183,34 @@ pub fn labelled_from(config: &DatasetConfig, scene: Scene) -> Result<LabelledSce
         truth,
         objects,
     })
+}
+
+/// Per object of the scene, in scene order, its occlusion ROI: cut from the picture of the
+/// [`frontal_camera`] (the paper's robot has a top and a frontal view; this one looks along the
+/// depth axis of `front`/`behind`, so the occlusion the labels measure is what its picture
+/// shows), centred on the object, twice its size, so that the object asked about is always the
+/// one in the middle and what stands in front of it shows over it (a union box of several
+/// objects leaves the network guessing which one is asked about), and expressed relative to
+/// the object's perceived colour (`roi::relative_to_colour`). `None` for an object held or
+/// behind the frontal camera.
+pub fn occlusion_rois(
+    scene: &Scene,
+    world: &World,
+    width: u32,
+    height: u32,
+) -> Vec<Option<Vec<f32>>> {
+    let mut frontal = scene.clone();
+    frontal.camera = frontal_camera(&scene.camera);
+    let picture = render_camera_world(&frontal, world, width, height);
+    scene
+        .ids()
+        .map(|id| {
+            let b = group_box(&frontal, world, &[id], width, height)?;
+            let mut roi = crop_resize(&picture, &centred_box(&b, 2.0), 0.0, ROI_SIZE);
+            relative_to_colour(&mut roi, scene.object(id).colour.rgb());
+            Some(roi)
+        })
+        .collect()
 }
 
 /// The frontal camera of a scene's camera: on the same side of the table, 8 cm above it and

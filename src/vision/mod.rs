@@ -8,7 +8,8 @@
 //! `roi` crops and resizes the image regions the labels depend on; `dataset` puts them together
 //! in parallel, by seed; `reason` is the classification mode of the knowledge base; `cnn` is the
 //! LeNet-sized network; `constraints` learns missing state constraints with `learn`'s trees;
-//! `classify` combines them into one classifier whose every decision names its source.
+//! `classify` combines them into one classifier whose every decision names its source; `see`
+//! lets the sense-plan-act loop judge occlusion from its picture at every look.
 //!
 //! Invariants: values cross the boundaries typed (scenes, ROIs, labels, axioms), never as
 //! program text; everything random is drawn from seeded streams, so a seed determines a dataset,
@@ -22,3 +23,4 @@ pub mod cnn;
 pub mod reason;
 pub mod constraints;
 pub mod classify;
+pub mod see;

@@ -187,6 +187,20 @@ pub fn crop_resize(image: &Image, b: &PixelBox, margin: f32, size: usize) -> Vec
     out
 }
 
+/// The ROI mirrored left to right (`size x size x 3`, HWC): the labels do not change under
+/// the mirror (a tower topples, an object hides another, whichever side it is on), so the
+/// mirrored ROIs double a training set.
+pub fn mirrored(roi: &[f32], size: usize) -> Vec<f32> {
+    let mut out = vec![0.0; roi.len()];
+    for y in 0..size {
+        for x in 0..size {
+            let (from, to) = ((y * size + x) * 3, (y * size + size - 1 - x) * 3);
+            out[to..to + 3].copy_from_slice(&roi[from..from + 3]);
+        }
+    }
+    out
+}
+
 /// Re-expresses an ROI relative to the colour of the object asked about, in place: for each
 /// pixel `p`, channels 0 and 1 are twice the absolute differences of its red and green
 /// chromaticities (`p / sum(p)`) from the object's, channel 2 is half its brightness (`sum(p)`)
@@ -384,5 +398,19 @@ mod tests {
         for (got, want) in roi.iter().zip(expected) {
             assert!((got - want).abs() < 1e-3, "{roi:?}");
         }
+    }
+
+    #[test]
+    fn mirrored_swaps_columns() {
+        // A 2 x 2 ROI, pixels numbered 0..4 row by row (channel c of pixel i is 10 i + c):
+        // mirrored, row 0 reads pixel 1 then 0, row 1 pixel 3 then 2.
+        let roi: Vec<f32> = (0..4)
+            .flat_map(|i| (0..3).map(move |c| (10 * i + c) as f32))
+            .collect();
+        let expected: Vec<f32> = [1, 0, 3, 2]
+            .iter()
+            .flat_map(|&i| (0..3).map(move |c| (10 * i + c) as f32))
+            .collect();
+        assert_eq!(mirrored(&roi, 2), expected);
     }
 }
