@@ -331,7 +331,7 @@ pub fn run_classify(
     }
     writeln!(
         out,
-        "{:<24} {:<34} {:<30} physics",
+        "{:<24} {:<34} {:<36} physics",
         "object", "stability", "occlusion"
     )?;
     for d in &decisions {
@@ -365,7 +365,7 @@ pub fn run_classify(
                 "visible"
             }
         );
-        writeln!(out, "{:<24} {:<34} {:<30} {truth}", d.name, st, oc)?;
+        writeln!(out, "{:<24} {:<34} {:<36} {truth}", d.name, st, oc)?;
     }
     for (q, a) in &answers {
         writeln!(out, "\n> {q}\n{a}")?;

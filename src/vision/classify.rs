@@ -519,19 +519,37 @@ pub struct ObjectReport {
 }
 
 /// Classifies a looked-at scene and says where each decision came from: a decision reasoning
-/// makes only with the learned constraints names them.
+/// makes only with the learned constraints names the ones that make it by themselves (each
+/// tried alone beside the rest of the knowledge), or all of the label's when only several
+/// together make it.
 pub fn explain_scene(
     c: &Classifier,
     view: &View,
     scene: &LabelledScene,
 ) -> Result<Vec<ObjectReport>, ReasonError> {
     let with = c.knowledge.classify(view)?;
-    let without = if c.learned.is_empty() {
-        None
+    let (without, alone) = if c.knowledge.learned.is_empty() {
+        (None, Vec::new())
     } else {
         let mut k = c.knowledge.clone();
         k.learned.clear();
-        Some(k.classify(view)?)
+        // Each learned constraint alone beside the rest of the knowledge: the ones that decide
+        // an object by themselves are the ones its decision names.
+        let alone = c
+            .knowledge
+            .learned
+            .iter()
+            .map(|one| {
+                let mut k1 = k.clone();
+                k1.learned.push(one.clone());
+                Ok((
+                    one.0.clone(),
+                    constraints::label_of(&one.1),
+                    k1.classify(view)?,
+                ))
+            })
+            .collect::<Result<Vec<_>, ReasonError>>()?;
+        (Some(k.classify(view)?), alone)
     };
     let name_learned = |label: Label, d: Decision, o: &LabelledObject| {
         let (Some(w), Source::Reasoning) = (&without, &d.source) else {
@@ -540,12 +558,15 @@ pub fn explain_scene(
         if reasoned(label, w, &o.name) == Some(d.value) {
             return d;
         }
-        let labels = c
-            .learned
-            .iter()
-            .filter(|(_, a, _)| constraints::label_of(a) == Some(label))
-            .map(|(l, _, _)| l.clone())
+        let of_label = || alone.iter().filter(|(_, l, _)| *l == Some(label));
+        let mut labels: Vec<String> = of_label()
+            .filter(|(_, _, r)| reasoned(label, r, &o.name) == Some(d.value))
+            .map(|(n, _, _)| n.clone())
             .collect();
+        if labels.is_empty() {
+            // Only several together decide it: name every one of the label.
+            labels = of_label().map(|(n, _, _)| n.clone()).collect();
+        }
         Decision {
             source: Source::Learned(labels),
             ..d
