@@ -36,10 +36,11 @@ use crate::explain::counterfactual::{what_if, why_no_plan};
 use crate::explain::draw;
 use crate::explain::english::{Parser, Question};
 use crate::explain::generic;
-use crate::explain::history::{explain_history, parse_actions, History, HistoryConfig};
+use crate::explain::history::{explain_history, parse_actions, History, HistoryConfig, Surprise};
 use crate::explain::lexicon::Lexicon;
 use crate::explain::oracle::{Labels, ProgramOracle};
 use crate::explain::questions::{answer, Answer, AnswerError, Mode, Session};
+use crate::explain::verbalize::Verbalizer;
 use crate::plan::{plan, PlanConfig};
 
 /// `lucent explain --help`.
@@ -189,7 +190,7 @@ pub fn run_explain(
     let lexicon = Lexicon::ra();
     let mut session = Session::default();
     let reply = respond(&history, no_plan, &lexicon, &question, &a, &mut session);
-    emit(&reply, &a, out, err)?;
+    emit(&reply, &history.surprises, &a, out, err)?;
     Ok(if reply.understood {
         0
     } else {
@@ -387,7 +388,7 @@ pub fn run_ask(
             }
         };
         let reply = respond(&history, no_plan, &lexicon, &q, &a, &mut session);
-        emit(&reply, &a, out, err)?;
+        emit(&reply, &history.surprises, &a, out, err)?;
         lines.remember(&q);
         asked.push(q);
     }
@@ -497,10 +498,28 @@ fn respond(
     let scn = history.scenario();
     let mode = if a.full { Mode::Full } else { Mode::Concise };
     match answer(&scn, lexicon, &q, mode, session) {
-        Ok(answer) => Reply {
-            answer,
-            understood: true,
-        },
+        Ok(mut answer) => {
+            // Where the answer is about a surprising action, say the surprise.
+            let v = Verbalizer::new(lexicon);
+            for s in &history.surprises {
+                let matters = match &q {
+                    Question::DescribePlan => true,
+                    Question::WhyAction { action, step } => {
+                        step.is_none_or(|i| i == s.step)
+                            && action.matches(&s.action, &mut Default::default())
+                    }
+                    _ => false,
+                };
+                if matters {
+                    answer.text.push(' ');
+                    answer.text.push_str(&s.say(&v));
+                }
+            }
+            Reply {
+                answer,
+                understood: true,
+            }
+        }
         Err(AnswerError::NeedsSolver) => Reply {
             answer: Answer {
                 kind: q.kind(),
@@ -527,9 +546,19 @@ fn respond(
     }
 }
 
-fn emit(reply: &Reply, a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<()> {
+fn emit(
+    reply: &Reply,
+    surprises: &[Surprise],
+    a: &Args,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<()> {
     if a.json {
-        writeln!(out, "{}", reply.answer.to_json())?;
+        let mut json = reply.answer.to_json();
+        if !surprises.is_empty() {
+            json["surprises"] = surprises.iter().map(Surprise::to_json).collect();
+        }
+        writeln!(out, "{json}")?;
     } else {
         writeln!(out, "{}", reply.answer.text)?;
     }
@@ -785,6 +814,6 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
         answer,
         understood: true,
     };
-    emit(&reply, a, out, err)?;
+    emit(&reply, &[], a, out, err)?;
     Ok(0)
 }

@@ -82,10 +82,14 @@ pub fn what_if(
     let mut problem = h.problem.clone();
     let mut found = None;
     for (k, acts) in tried.iter().enumerate() {
+        // A hypothetical history counts only as the knowledge allows it: one that needs a
+        // surprise (an action the robot believes impossible) could not have happened.
         if let Ok(new) = explain_history(&problem.desc, &mut problem.sources, acts, &problem.config)
         {
-            found = Some((new, k + 1 < tried.len() || tried.len() == 1));
-            break;
+            if new.surprises.is_empty() {
+                found = Some((new, k + 1 < tried.len() || tried.len() == 1));
+                break;
+            }
         }
     }
     let Some((new, kept_rest)) = found else {

@@ -6,9 +6,14 @@
 //! horizon = the number of actions; grounded once with provenance through a [`Control`] and
 //! solved for one answer set (CR rules applied minimally, as the solver does).
 //!
+//! A history without an answer set is repaired when it can be: every executability condition
+//! becomes defeasible for the actions that happened (a CR rule per condition, so the solver
+//! applies the fewest), and the conditions it had to set aside are the history's
+//! [`Surprise`]s: an action that worked although the robot believed it could not.
+//!
 //! Invariants: nothing here reads files (the caller parsed the description into `sources`);
 //! an executed plan need not be minimal, nor reach the goal; a history without an answer set
-//! (an action that is not executable, an inconsistent scene) is [`HistoryError::Inconsistent`],
+//! even with surprises allowed (an inconsistent scene) is [`HistoryError::Inconsistent`],
 //! never a panic.
 
 use super::oracle::{Labels, ProgramOracle};
@@ -71,6 +76,147 @@ pub struct History {
     objects: Vec<String>,
     /// The learned axioms among the description's files (see [`learned_axioms`]).
     pub learned: Vec<LearnedAxiom>,
+    /// The surprises the history needed (empty when it is consistent as given).
+    pub surprises: Vec<Surprise>,
+}
+
+/// An executed action whose executability condition held in the robot's belief: the history
+/// is impossible under its knowledge unless the action is taken to have been executable
+/// anyway. The least set of such surprises makes the history consistent (see
+/// [`explain_history`]); they are the discrepancies the learner starts from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Surprise {
+    /// The step of the action.
+    pub step: u32,
+    /// The action.
+    pub action: Symbol,
+    /// The executability condition's label (`E11`) or schema name.
+    pub label: String,
+    /// The condition's AL_d text (`impossible putdown(R, A, B) if has_size(B, small)`).
+    pub axiom: String,
+    /// The ground body literals that held (`has_size(blue_block,small)`).
+    pub because: Vec<Symbol>,
+}
+
+impl Surprise {
+    /// The surprise in English: "I put the ball on the blue block at step 1 although I
+    /// believed I could not (E11: impossible putdown(R, A, B) if has_size(B, small)): the
+    /// blue block is small."
+    pub fn say(&self, v: &super::verbalize::Verbalizer<'_>) -> String {
+        use super::verbalize::{ActionForm, Tense};
+        let mut text = format!(
+            "I {} {} although I believed I could not ({}: {})",
+            v.action(&self.action, ActionForm::Past),
+            v.step(i64::from(self.step)),
+            self.label,
+            self.axiom
+        );
+        if !self.because.is_empty() {
+            text.push_str(&format!(": {}", v.join(&self.because, Tense::Past)));
+        }
+        text.push('.');
+        text
+    }
+
+    /// The surprise as JSON: `{"step", "action", "label", "axiom", "because"}`.
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "step": self.step,
+            "action": self.action.to_string(),
+            "label": self.label,
+            "axiom": self.axiom,
+            "because": self.because.iter().map(Symbol::to_string).collect::<Vec<_>>(),
+        })
+    }
+}
+
+/// The predicate of the surprise assumptions: `lucent_surprise(K, A, I)` says the executability
+/// condition of statement K did not stop action A at step I.
+pub const SURPRISE: &str = "lucent_surprise";
+
+/// Makes every executability condition of the translation defeasible for actions that
+/// happened: statement K, `-occurs(A, I) :- body.`, gets the extra body literal
+/// `not lucent_surprise(K, A, I)`, and the CR rule `lucent_surprise(K, A, I) :+ body,
+/// hpd(A, I).` is appended, so the solver applies as few as it can and only when the history
+/// is otherwise inconsistent. Returns the statement ids made defeasible.
+fn allow_surprises(program: &mut ast::Program, origins: &[AxiomOrigin]) -> Vec<usize> {
+    use ast::{Atom, BodyLiteral, ConditionalLiteral, Head, Literal, Sign, SymbolicAtom};
+    use ast::{Term, TermKind};
+    let mut made = Vec::new();
+    let mut extra = Vec::new();
+    for (k, st) in program.statements.iter_mut().enumerate() {
+        let Some(o) = origins.get(k) else { continue };
+        if o.kind != OriginKind::ExecutabilityCondition {
+            continue;
+        }
+        let ast::StatementKind::Rule(rule) = &mut st.kind else {
+            continue;
+        };
+        let Head::Disjunction(h) = &rule.head else {
+            continue;
+        };
+        let [ConditionalLiteral { literal, .. }] = h.as_slice() else {
+            continue;
+        };
+        let Atom::Symbolic(occurs) = &literal.atom else {
+            continue;
+        };
+        if !occurs.negated || occurs.name.as_str() != "occurs" || occurs.args.len() != 1 {
+            continue;
+        }
+        let [action, step] = occurs.args[0].as_slice() else {
+            continue;
+        };
+        let span = st.span;
+        let atom = |name: &str, args: Vec<Term>| SymbolicAtom {
+            span,
+            negated: false,
+            name: name.into(),
+            args: vec![args],
+        };
+        let surprise = atom(
+            SURPRISE,
+            vec![
+                Term {
+                    span,
+                    kind: TermKind::Integer(k as i64),
+                },
+                action.clone(),
+                step.clone(),
+            ],
+        );
+        let mut cr_body = rule.body.clone();
+        cr_body.push(BodyLiteral::Literal(Literal {
+            span,
+            sign: Sign::Positive,
+            atom: Atom::Symbolic(atom("hpd", vec![action.clone(), step.clone()])),
+        }));
+        rule.body.push(BodyLiteral::Literal(Literal {
+            span,
+            sign: Sign::Not,
+            atom: Atom::Symbolic(surprise.clone()),
+        }));
+        extra.push(ast::Statement {
+            span,
+            kind: ast::StatementKind::Rule(ast::Rule {
+                head: Head::Disjunction(vec![ConditionalLiteral {
+                    span,
+                    literal: Literal {
+                        span,
+                        sign: Sign::Positive,
+                        atom: Atom::Symbolic(surprise),
+                    },
+                    condition: Vec::new(),
+                    has_colon: false,
+                }]),
+                body: cr_body,
+                kind: ast::RuleKind::ConsistencyRestoring { label: None },
+            }),
+        });
+        made.push(k);
+    }
+    program.statements.extend(extra);
+    made
 }
 
 /// The learned axioms in the files of `sources`: every file that `lucent learn` wrote (its
@@ -338,17 +484,30 @@ pub fn explain_history(
         provenance: true,
         ..ControlConfig::default()
     };
-    let mut ctl = Control::with_sources(ctl_config, sources.clone());
-    ctl.add_program(program)
-        .map_err(|e| HistoryError::Input(e.message))?;
-    ctl.ground(&[Part::base()])
-        .map_err(|e| HistoryError::Input(e.message))?;
-    ctl.assign_external(&Symbol::constant(HISTORY_GATE), TruthValue::True);
-    let mut model = None;
-    ctl.solve(&SolveOptions::default(), |m| {
-        model = Some(m.raw().clone());
-        false
-    });
+    let solve = |program: ast::Program| -> Result<_, HistoryError> {
+        let mut ctl = Control::with_sources(ctl_config.clone(), sources.clone());
+        ctl.add_program(program)
+            .map_err(|e| HistoryError::Input(e.message))?;
+        ctl.ground(&[Part::base()])
+            .map_err(|e| HistoryError::Input(e.message))?;
+        ctl.assign_external(&Symbol::constant(HISTORY_GATE), TruthValue::True);
+        let mut model = None;
+        ctl.solve(&SolveOptions::default(), |m| {
+            model = Some(m.raw().clone());
+            false
+        });
+        Ok((ctl, model))
+    };
+    let mut repaired = (!actions.is_empty()).then(|| program.clone());
+    let (mut ctl, mut model) = solve(program)?;
+    let mut defeasible = Vec::new();
+    if model.is_none() {
+        if let Some(mut p) = repaired.take() {
+            defeasible = allow_surprises(&mut p, &t.origins);
+            labels.hidden_predicates.push(SURPRISE.to_string());
+            (ctl, model) = solve(p)?;
+        }
+    }
     let Some(model) = model else {
         let plan: Vec<String> = actions
             .iter()
@@ -363,7 +522,13 @@ pub fn explain_history(
     };
     let oracle =
         ProgramOracle::new(ctl, model, labels).map_err(|e| HistoryError::Input(e.to_string()))?;
+    let surprises = if defeasible.is_empty() {
+        Vec::new()
+    } else {
+        surprises_of(&oracle, &t.origins)
+    };
     Ok(History {
+        surprises,
         learned: learned_axioms(&problem.sources),
         problem,
         objects: History::objects_of(&oracle),
@@ -376,6 +541,76 @@ pub fn explain_history(
         goal: goal_of(&desc),
         last_step: actions.len() as u32,
     })
+}
+
+/// The surprises of a repaired history's answer set: each true `lucent_surprise(K, A, I)`
+/// with statement K's label and text, and the body literals of the ground instance of K that
+/// would have forbidden A at I.
+fn surprises_of(oracle: &ProgramOracle, origins: &[AxiomOrigin]) -> Vec<Surprise> {
+    use super::tree::{BodyLiteral, Oracle};
+    let mut out = Vec::new();
+    for lit in oracle.true_literals() {
+        if !lit.is(SURPRISE, 3) {
+            continue;
+        }
+        let args = lit.args();
+        let (Some(k), Some(step)) = (args[0].as_number(), args[2].as_number()) else {
+            continue;
+        };
+        let Some(origin) = origins.get(k as usize) else {
+            continue;
+        };
+        let action = args[1].clone();
+        let label = origin.label.clone().unwrap_or_else(|| origin.text.clone());
+        let head = Symbol::function("occurs", vec![action.clone(), Symbol::number(step)]);
+        let forbidden = match head {
+            Symbol::Function { name, args, .. } => Symbol::Function {
+                name,
+                args,
+                negative: true,
+            },
+            other => other,
+        };
+        let because = oracle
+            .rules_for(&forbidden)
+            .into_iter()
+            .filter(|r| r.label == label)
+            .find(|r| {
+                r.body.iter().all(|b| match b {
+                    BodyLiteral::Pos(t) => oracle.holds(t),
+                    BodyLiteral::Not(t) => !oracle.holds(t),
+                    BodyLiteral::Test(_) => true,
+                })
+            })
+            .map(|r| {
+                r.body
+                    .into_iter()
+                    .filter_map(|b| match b {
+                        BodyLiteral::Pos(t) if !is_sort_atom(&t) => Some(t),
+                        _ => None,
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        out.push(Surprise {
+            step: step as u32,
+            action,
+            label,
+            axiom: origin.text.clone(),
+            because,
+        });
+    }
+    out.sort_by(|a, b| (a.step, &a.label).cmp(&(b.step, &b.label)));
+    out
+}
+
+/// Sort and step atoms of a rule body (`robot(rob1)`, `step(1)`), which say nothing about why.
+fn is_sort_atom(t: &Symbol) -> bool {
+    t.args().len() == 1
+        && matches!(
+            t.name(),
+            Some("robot" | "object" | "location" | "thing" | "step" | "movable" | "height")
+        )
 }
 
 /// Parses actions written `a@0; b@1` or one per line or `;` (`pickup(rob1,a)`), in step order;

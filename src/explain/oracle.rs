@@ -41,6 +41,9 @@ pub struct Labels {
     /// Body atoms the caller added to its program and that proofs do not show (the gate of
     /// the history's facts, see `explain::history`).
     pub hidden: Vec<Symbol>,
+    /// Predicates whose default-negated body literals proofs do not show (the surprise
+    /// assumptions of a repaired history, see `explain::history`).
+    pub hidden_predicates: Vec<String>,
 }
 
 impl Labels {
@@ -78,6 +81,7 @@ impl Labels {
         Labels {
             by_statement,
             hidden: Vec::new(),
+            hidden_predicates: Vec::new(),
         }
     }
 
@@ -106,6 +110,7 @@ impl Labels {
         Labels {
             by_statement,
             hidden: Vec::new(),
+            hidden_predicates: Vec::new(),
         }
     }
 
@@ -391,9 +396,13 @@ impl ProgramOracle {
                         }
                     }
                 }
-                body.retain(
-                    |b| !matches!(b, BodyLiteral::Pos(t) if self.labels.hidden.contains(t)),
-                );
+                body.retain(|b| match b {
+                    BodyLiteral::Pos(t) => !self.labels.hidden.contains(t),
+                    BodyLiteral::Not(t) => !t
+                        .name()
+                        .is_some_and(|n| self.labels.hidden_predicates.iter().any(|h| h == n)),
+                    BodyLiteral::Test(_) => true,
+                });
                 let (label, mut kind) = match o {
                     Some(o) => self.labels.get(&o.rule),
                     None => ("rule".into(), AxiomKind::Rule),
