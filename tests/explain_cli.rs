@@ -267,8 +267,10 @@ fn ask_keeps_a_history_of_its_questions() {
 /// the format `lucent run --save-history` writes (`plan::history::History`): the step-0
 /// perception with one doubted reading (`on(mug,pitcher)`, not taken as a belief), the paper's
 /// six actions plus a failed `pickup(rob1,pitcher)` at step 4 that the robot repeated, and the
-/// goal. Explained over the built-in KB_full, the failed action is left out, so the questions
-/// are the paper's and so are the answers.
+/// goal. Explained over the built-in KB_full, the failed action keeps its step as an attempt
+/// (the plan description tells it in its place: "I tried to pick up the pitcher at step 4, but
+/// the gripper slipped."), so the later actions keep the run's step numbers; the other answers
+/// are the paper's.
 #[test]
 fn ask_over_a_saved_run() {
     let questions = "Please describe the plan.\n\
@@ -355,4 +357,59 @@ fn an_answer_that_uses_a_learned_axiom_says_so() {
         .collect::<Vec<_>>());
     assert_eq!(code, 0, "{err}");
     assert!(!out.contains("learned"), "{out}");
+}
+
+/// A run whose actions failed keeps its steps: `lucent ask --run` answers over it, tells each
+/// failed attempt in its place, and takes what the robot saw after a slip as an unexpected
+/// observation. The run (simulated preset, seed 7, default noise) is made by `lucent run`;
+/// its failed steps are read from the saved JSON, so the test follows the run whatever it is.
+#[test]
+fn a_run_with_failed_actions_keeps_its_steps() {
+    let dir = std::env::temp_dir().join(format!("lucent-explain-run-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("run.json");
+    let path = file.to_str().unwrap();
+    let (code, _, err) = run(&[
+        "run",
+        "--preset",
+        "simulated",
+        "--seed",
+        "7",
+        "--save-history",
+        path,
+    ]);
+    assert!(code == 0 || code == 20, "{err}");
+    let saved: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&file).unwrap()).unwrap();
+    let failed: Vec<(u64, String)> = saved["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| s["failure"].is_string())
+        .map(|s| {
+            (
+                s["step"].as_u64().unwrap(),
+                s["happened"].as_str().unwrap().to_string(),
+            )
+        })
+        .collect();
+    assert!(!failed.is_empty(), "seed 7 has a failed action: {saved}");
+    let (code, out, err) = run_with(&["ask", "--run", path, "--outf=2"], "describe the plan\n");
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(out.lines().next().unwrap()).unwrap();
+    let text = v["answer"].as_str().unwrap();
+    assert!(text.contains("I tried to"), "{text}");
+    let listed: Vec<(u64, String)> = v["failed"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| {
+            (
+                f["step"].as_u64().unwrap(),
+                f["action"].as_str().unwrap().to_string(),
+            )
+        })
+        .collect();
+    assert_eq!(listed, failed);
+    let _ = std::fs::remove_dir_all(&dir);
 }

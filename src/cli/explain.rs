@@ -36,7 +36,9 @@ use crate::explain::counterfactual::{what_if, why_no_plan};
 use crate::explain::draw;
 use crate::explain::english::{Parser, Question};
 use crate::explain::generic;
-use crate::explain::history::{explain_history, parse_actions, History, HistoryConfig, Surprise};
+use crate::explain::history::{
+    explain_steps, parse_actions, Failed, History, HistoryConfig, Steps, Surprise, Unexpected,
+};
 use crate::explain::lexicon::Lexicon;
 use crate::explain::oracle::{Labels, ProgramOracle};
 use crate::explain::questions::{answer, Answer, AnswerError, Mode, Session};
@@ -55,8 +57,11 @@ X, why did you not X, why did you believe Y. The history is the scene (AL_d file
 scene that includes domains/ra/kb_full.ald) with an executed plan (--happened \"a@0; b@1\" or
 one action per `;`), or else the first minimal plan the planner finds for the goal.
 With --run, the history is a run saved by `lucent run` (--save-history FILE or its --outf=2
-output) over the domain files given (default: the built-in KB_full); actions the world
-reported as failed are left out. With --why/--why-not, explains an atom of the first answer set
+output) over the domain files given (default: the built-in KB_full); an action the world
+reported as failed keeps its step as an attempt without effect, and what the robot saw of
+its object right after is taken as observed. A history the knowledge calls impossible is
+repaired with the fewest surprises (an action executed although the robot believed it could
+not be), which the answers name. With --why/--why-not, explains an atom of the first answer set
 of any clingo program. In `ask`, `history` lists the questions asked so far, `!N` asks question
 N again, `!!` the last one; an empty line or `quit` ends the session. On a terminal the
 line can be edited, and the up and down keys recall earlier questions.
@@ -190,7 +195,7 @@ pub fn run_explain(
     let lexicon = Lexicon::ra();
     let mut session = Session::default();
     let reply = respond(&history, no_plan, &lexicon, &question, &a, &mut session);
-    emit(&reply, &history.surprises, &a, out, err)?;
+    emit(&reply, Some(&history), &a, out, err)?;
     Ok(if reply.understood {
         0
     } else {
@@ -388,7 +393,7 @@ pub fn run_ask(
             }
         };
         let reply = respond(&history, no_plan, &lexicon, &q, &a, &mut session);
-        emit(&reply, &history.surprises, &a, out, err)?;
+        emit(&reply, Some(&history), &a, out, err)?;
         lines.remember(&q);
         asked.push(q);
     }
@@ -501,6 +506,45 @@ fn respond(
         Ok(mut answer) => {
             // Where the answer is about a surprising action, say the surprise.
             let v = Verbalizer::new(lexicon);
+            if matches!(q, Question::DescribePlan) && !history.failed.is_empty() {
+                // The attempts that failed, in their places.
+                let mut said: Vec<(u32, String)> = history
+                    .plan
+                    .iter()
+                    .map(|(i, x)| (*i, v.plan(&[(*i, x.clone())], true)))
+                    .collect();
+                said.extend(history.failed.iter().map(|f| (f.step, f.say(&v))));
+                said.sort_by_key(|(i, _)| *i);
+                answer.text = said
+                    .into_iter()
+                    .map(|(_, t)| t)
+                    .collect::<Vec<_>>()
+                    .join(" ");
+            }
+            if let Question::WhyAction { action, step } = &q {
+                // An attempt that failed: say so, rather than "I did not do that".
+                let tried: Vec<String> = history
+                    .failed
+                    .iter()
+                    .filter(|f| {
+                        step.is_none_or(|i| i == f.step)
+                            && action.matches(&f.action, &mut Default::default())
+                    })
+                    .map(|f| f.say(&v))
+                    .collect();
+                let did = history.plan.iter().any(|(i, x)| {
+                    step.is_none_or(|s| s == *i) && action.matches(x, &mut Default::default())
+                });
+                if !tried.is_empty() && !did {
+                    answer.text = tried.join(" ");
+                }
+            }
+            if matches!(q, Question::DescribePlan) {
+                for u in &history.unexpected {
+                    answer.text.push(' ');
+                    answer.text.push_str(&u.say(&v));
+                }
+            }
             for s in &history.surprises {
                 let matters = match &q {
                     Question::DescribePlan => true,
@@ -548,15 +592,23 @@ fn respond(
 
 fn emit(
     reply: &Reply,
-    surprises: &[Surprise],
+    history: Option<&History>,
     a: &Args,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<()> {
     if a.json {
         let mut json = reply.answer.to_json();
-        if !surprises.is_empty() {
-            json["surprises"] = surprises.iter().map(Surprise::to_json).collect();
+        if let Some(h) = history {
+            if !h.surprises.is_empty() {
+                json["surprises"] = h.surprises.iter().map(Surprise::to_json).collect();
+            }
+            if !h.unexpected.is_empty() {
+                json["unexpected"] = h.unexpected.iter().map(Unexpected::to_json).collect();
+            }
+            if !h.failed.is_empty() {
+                json["failed"] = h.failed.iter().map(Failed::to_json).collect();
+            }
         }
         writeln!(out, "{json}")?;
     } else {
@@ -656,15 +708,18 @@ fn load_history(
         .map(|(n, v)| (n.clone(), super::action::value_of(v)))
         .collect();
     let mut no_plan = None;
-    let actions: Vec<Symbol> = match (&a.happened, run_actions) {
+    let steps: Steps = match (&a.happened, run_actions) {
         (Some(text), _) => match parse_actions(text) {
-            Ok(x) => x,
+            Ok(x) => Steps {
+                actions: x.into_iter().map(Some).collect(),
+                ..Steps::default()
+            },
             Err(m) => {
                 writeln!(err, "*** ERROR: (lucent): --happened: {m}")?;
                 return Ok(Err(super::EXIT_INPUT));
             }
         },
-        (None, Some(actions)) => actions,
+        (None, Some(steps)) => steps,
         (None, None) => {
             let config = PlanConfig {
                 max_horizon: a.max_horizon.unwrap_or(10),
@@ -673,11 +728,14 @@ fn load_history(
                 ..PlanConfig::default()
             };
             match plan(&desc, &sources, &config) {
-                Ok(found) => found.plans[0].actions.clone(),
+                Ok(found) => Steps {
+                    actions: found.plans[0].actions.iter().cloned().map(Some).collect(),
+                    ..Steps::default()
+                },
                 Err(crate::plan::PlanError::NoPlanWithin(h)) => {
                     // No history: the initial state alone, for "why is there no plan?".
                     no_plan = Some(h);
-                    Vec::new()
+                    Steps::default()
                 }
                 Err(e) => {
                     writeln!(err, "*** ERROR: (lucent): {e}")?;
@@ -693,7 +751,7 @@ fn load_history(
         profile: a.profile.clone(),
         overrides,
     };
-    match explain_history(&desc, &mut sources, &actions, &config) {
+    match explain_steps(&desc, &mut sources, &steps, &config) {
         Ok(h) => Ok(Ok((h, no_plan))),
         Err(e) => {
             writeln!(err, "*** ERROR: (lucent): {}", e.to_string().trim_end())?;
@@ -814,6 +872,6 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
         answer,
         understood: true,
     };
-    emit(&reply, &[], a, out, err)?;
+    emit(&reply, None, a, out, err)?;
     Ok(0)
 }

@@ -78,6 +78,10 @@ pub struct History {
     pub learned: Vec<LearnedAxiom>,
     /// The surprises the history needed (empty when it is consistent as given).
     pub surprises: Vec<Surprise>,
+    /// The observations it had to take as unexpected changes.
+    pub unexpected: Vec<Unexpected>,
+    /// The attempts that failed (their steps have no action).
+    pub failed: Vec<Failed>,
 }
 
 /// An executed action whose executability condition held in the robot's belief: the history
@@ -379,13 +383,15 @@ fn declares_switch(desc: &Description, name: &str) -> bool {
 }
 
 /// A run saved by `lucent run` (its `--save-history` file, the JSON `--outf=2` prints) as the
-/// planning problem it started from and the actions it executed: AL_d scene text (the movable
-/// objects as `sort movable`, the statics as facts, what was perceived at step 0 and not doubted
-/// as `initially` statements, the goal) for a description that provides the domain, and the
-/// executed actions in order. An action the world reported as failed is left out (the robot's
-/// model says what an action does; a failed one did not do it), so the explained steps count
-/// the actions that succeeded. `Err` names what the run lacks.
-pub fn scene_of_run(run: &crate::plan::history::History) -> Result<(String, Vec<Symbol>), String> {
+/// planning problem it started from and what happened: AL_d scene text (the movable objects as
+/// `sort movable`, the statics as facts, what was perceived at step 0 and not doubted as
+/// `initially` statements, the goal) for a description that provides the domain, and the
+/// [`Steps`]. Every step keeps its number: an action the world reported as failed is an attempt
+/// (the step has no action with an effect), and what the robot perceived (and did not doubt)
+/// right after a failed attempt becomes observations of the next step, so the history follows
+/// what the world did instead (an object that fell is where it was seen). `Err` names what the
+/// run lacks.
+pub fn scene_of_run(run: &crate::plan::history::History) -> Result<(String, Steps), String> {
     let first = run
         .steps
         .first()
@@ -421,36 +427,171 @@ pub fn scene_of_run(run: &crate::plan::history::History) -> Result<(String, Vec<
             .collect::<Result<_, _>>()?;
         text.push_str(&format!("goal {}.\n", goal.join(", ")));
     }
-    let actions = run
-        .steps
-        .iter()
-        .filter(|s| s.failure.is_none())
-        .filter_map(|s| s.happened.as_deref())
-        .map(|a| parse("action", a))
-        .collect::<Result<Vec<_>, _>>()?;
-    Ok((text, actions))
+    let mut steps = Steps::default();
+    for (k, s) in run.steps.iter().enumerate() {
+        let Some(a) = s.happened.as_deref() else {
+            break;
+        };
+        let action = parse("action", a)?;
+        match &s.failure {
+            None => steps.actions.push(Some(action)),
+            Some(why) => {
+                steps.actions.push(None);
+                steps.failed.push(Failed {
+                    step: k as u32,
+                    action,
+                    why: why.clone(),
+                });
+                // What the next look saw of the attempted object: whether it is in the hand and
+                // what it is on (the fluents the run loop compares with its predictions).
+                let object = steps.failed.last().and_then(|f| f.action.arg(1)).cloned();
+                if let (Some(next), Some(object)) = (run.steps.get(k + 1), object) {
+                    let mut taken: Vec<&str> = Vec::new();
+                    for o in &next.observed {
+                        if next.doubted.contains(&o.fluent) || taken.contains(&o.fluent.as_str()) {
+                            continue;
+                        }
+                        let f = parse("observation", &o.fluent)?;
+                        let about = (f.is("in_hand", 2) && f.arg(1) == Some(&object))
+                            || (f.is("relation", 3)
+                                && f.arg(0).and_then(Symbol::name) == Some("on")
+                                && f.arg(1) == Some(&object));
+                        if about {
+                            taken.push(&o.fluent);
+                            steps.observed.push(((k + 1) as u32, f, o.value));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    Ok((text, steps))
+}
+
+/// What happened, step by step, beyond the description's initial state: per step the action
+/// that had its effect (`None`: none did, as when an attempt failed), the attempts that failed,
+/// and observations of later steps.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Steps {
+    /// Per step from 0, the action executed with its effect.
+    pub actions: Vec<Option<Symbol>>,
+    /// Attempts that failed in the world: step, action, why.
+    pub failed: Vec<Failed>,
+    /// Observations after step 0: step, fluent, value.
+    pub observed: Vec<(u32, Symbol, bool)>,
+}
+
+/// An action the robot attempted that did not have its effect.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Failed {
+    /// The step.
+    pub step: u32,
+    /// The action attempted.
+    pub action: Symbol,
+    /// Why it failed, as the world reported it.
+    pub why: String,
+}
+
+impl Failed {
+    /// "I tried to put the white pitcher on the table at step 1, but the release slipped."
+    pub fn say(&self, v: &super::verbalize::Verbalizer<'_>) -> String {
+        format!(
+            "I tried to {} {}, but {}.",
+            v.action(&self.action, super::verbalize::ActionForm::Base),
+            v.step(i64::from(self.step)),
+            self.why.trim_end_matches('.')
+        )
+    }
+
+    /// `{"step", "action", "why"}`.
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({"step": self.step, "action": self.action.to_string(), "why": self.why})
+    }
+}
+
+/// An observation the history's knowledge did not predict, taken as it was seen.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Unexpected {
+    /// The step.
+    pub step: u32,
+    /// The fluent observed.
+    pub fluent: Symbol,
+    /// Its observed value.
+    pub value: bool,
+}
+
+impl Unexpected {
+    /// "At step 2 I saw that the white pitcher was not in my hand, which I had not expected."
+    pub fn say(&self, v: &super::verbalize::Verbalizer<'_>) -> String {
+        let lit = if self.value {
+            self.fluent.clone()
+        } else {
+            match &self.fluent {
+                Symbol::Function { name, args, .. } => Symbol::Function {
+                    name: name.clone(),
+                    args: args.clone(),
+                    negative: true,
+                },
+                other => other.clone(),
+            }
+        };
+        let step = v.step(i64::from(self.step));
+        let mut step = step.trim().to_string();
+        if let Some(first) = step.get(..1) {
+            step = first.to_uppercase() + &step[1..];
+        }
+        format!(
+            "{step} I saw that {}, which I had not expected.",
+            v.join(&[lit], super::verbalize::Tense::Past)
+        )
+    }
+
+    /// `{"step", "fluent", "value"}`.
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({"step": self.step, "fluent": self.fluent.to_string(), "value": self.value})
+    }
 }
 
 /// The history of `desc` with `actions` (one per step, from step 0) executed, explained.
-/// `sources` holds the description's files; the happened statements are added to it as
-/// `<history>`.
 pub fn explain_history(
     desc: &Description,
     sources: &mut SourceMap,
     actions: &[Symbol],
     config: &HistoryConfig,
 ) -> Result<History, HistoryError> {
+    let steps = Steps {
+        actions: actions.iter().cloned().map(Some).collect(),
+        ..Steps::default()
+    };
+    explain_steps(desc, sources, &steps, config)
+}
+
+/// The history of `desc` with `steps` (actions, failed attempts, later observations),
+/// explained; see [`explain_history`].
+/// `sources` holds the description's files; the happened statements are added to it as
+/// `<history>`.
+pub fn explain_steps(
+    desc: &Description,
+    sources: &mut SourceMap,
+    steps: &Steps,
+    config: &HistoryConfig,
+) -> Result<History, HistoryError> {
+    let actions = &steps.actions;
     let problem = Problem {
         desc: desc.clone(),
         sources: sources.clone(),
         config: config.clone(),
     };
     let mut desc = desc.clone();
-    let text: String = actions
+    let mut text: String = actions
         .iter()
         .enumerate()
-        .map(|(i, a)| format!("happened {a} at {i}.\n"))
+        .filter_map(|(i, a)| a.as_ref().map(|a| format!("happened {a} at {i}.\n")))
         .collect();
+    for (i, f, v) in &steps.observed {
+        let sign = if *v { "" } else { "-" };
+        text.push_str(&format!("observed {sign}{f} at {i}.\n"));
+    }
     if !text.is_empty() {
         let file = sources.add("<history>", text.clone());
         let parse = action::parse(file, &text);
@@ -484,7 +625,7 @@ pub fn explain_history(
         provenance: true,
         ..ControlConfig::default()
     };
-    let solve = |program: ast::Program| -> Result<_, HistoryError> {
+    let solve = |program: ast::Program, sources: &SourceMap| -> Result<_, HistoryError> {
         let mut ctl = Control::with_sources(ctl_config.clone(), sources.clone());
         ctl.add_program(program)
             .map_err(|e| HistoryError::Input(e.message))?;
@@ -498,21 +639,24 @@ pub fn explain_history(
         });
         Ok((ctl, model))
     };
-    let mut repaired = (!actions.is_empty()).then(|| program.clone());
-    let (mut ctl, mut model) = solve(program)?;
+    let mut repaired = (actions.iter().any(Option::is_some) || !steps.observed.is_empty())
+        .then(|| program.clone());
+    let (mut ctl, mut model) = solve(program, sources)?;
     let mut defeasible = Vec::new();
     if model.is_none() {
         if let Some(mut p) = repaired.take() {
             defeasible = allow_surprises(&mut p, &t.origins);
+            allow_unexpected(&mut p, sources);
             labels.hidden_predicates.push(SURPRISE.to_string());
-            (ctl, model) = solve(p)?;
+            labels.hidden_predicates.push(UNEXPECTED.to_string());
+            (ctl, model) = solve(p, sources)?;
         }
     }
     let Some(model) = model else {
         let plan: Vec<String> = actions
             .iter()
             .enumerate()
-            .map(|(i, a)| format!("{a}@{i}"))
+            .filter_map(|(i, a)| a.as_ref().map(|a| format!("{a}@{i}")))
             .collect();
         return Err(HistoryError::Inconsistent(if plan.is_empty() {
             "the initial state is inconsistent".into()
@@ -527,8 +671,24 @@ pub fn explain_history(
     } else {
         surprises_of(&oracle, &t.origins)
     };
+    let mut unexpected: Vec<Unexpected> = oracle
+        .true_literals()
+        .into_iter()
+        .filter(|l| l.is(UNEXPECTED, 3))
+        .filter_map(|l| {
+            let a = l.args();
+            Some(Unexpected {
+                step: u32::try_from(a[2].as_number()?).ok()?,
+                fluent: a[0].clone(),
+                value: a[1].name() == Some("true"),
+            })
+        })
+        .collect();
+    unexpected.sort_by_key(|u| (u.step, u.fluent.to_string()));
     Ok(History {
         surprises,
+        unexpected,
+        failed: steps.failed.clone(),
         learned: learned_axioms(&problem.sources),
         problem,
         objects: History::objects_of(&oracle),
@@ -536,11 +696,30 @@ pub fn explain_history(
         plan: actions
             .iter()
             .enumerate()
-            .map(|(i, a)| (i as u32, a.clone()))
+            .filter_map(|(i, a)| a.clone().map(|a| (i as u32, a)))
             .collect(),
         goal: goal_of(&desc),
         last_step: actions.len() as u32,
     })
+}
+
+/// The predicate of unexpected observations: `lucent_unexpected(F, V, I)` says fluent F was
+/// observed with value V at step I > 0 although the history did not predict it.
+pub const UNEXPECTED: &str = "lucent_unexpected";
+
+/// Lets an observation after step 0 set its fluent's value where the history predicted
+/// otherwise (a CR rule per value: applied only when needed, as few as possible); inertia
+/// then carries the observed value on.
+fn allow_unexpected(program: &mut ast::Program, sources: &mut SourceMap) {
+    let text = format!(
+        "{UNEXPECTED}(F, true, I) :+ obs(F, true, I), I > 0.\n\
+         {UNEXPECTED}(F, false, I) :+ obs(F, false, I), I > 0.\n\
+         holds(F, I) :- {UNEXPECTED}(F, true, I).\n\
+         -holds(F, I) :- {UNEXPECTED}(F, false, I).\n"
+    );
+    let file = sources.add("<unexpected observations>", text.clone());
+    let parse = crate::syntax::parse(file, &text, ast::Dialect::Clingo);
+    program.statements.extend(parse.program.statements);
 }
 
 /// The surprises of a repaired history's answer set: each true `lucent_surprise(K, A, I)`
