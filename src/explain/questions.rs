@@ -316,8 +316,11 @@ impl Answering<'_, '_> {
         }
         // 1-3: for each later action a_j, its executability conditions grounded at `step`;
         // a body fluent literal that holds at `step` and not at `step + 1` is a reason; the
-        // furthest a_j wins.
+        // nearest a_j on another object than the queried action's wins, else the nearest of
+        // all (the queried action's own follow-up gives the trivia "X was not in my hand").
+        let own = self.planned(action, step).and_then(|a| a.arg(1).cloned());
         let mut best: Option<(u32, Symbol, Symbol)> = None;
+        let mut best_other: Option<(u32, Symbol, Symbol)> = None;
         for (j, later) in &self.scn.plan {
             if *j <= step {
                 continue;
@@ -333,15 +336,19 @@ impl Answering<'_, '_> {
                     }
                     let next = at_step(lit, step + 1);
                     if self.scn.oracle.holds(lit) && !self.scn.oracle.holds(&next) {
-                        let better = best.as_ref().is_none_or(|(bj, _, _)| j > bj);
-                        if better {
-                            best = Some((*j, later.clone(), lit.clone()));
+                        let slot = if own.is_some() && later.arg(1) != own.as_ref() {
+                            &mut best_other
+                        } else {
+                            &mut best
+                        };
+                        if slot.as_ref().is_none_or(|(bj, _, _)| j < bj) {
+                            *slot = Some((*j, later.clone(), lit.clone()));
                         }
                     }
                 }
             }
         }
-        let (text, literals) = match best {
+        let (text, literals) = match best_other.or(best) {
             Some((j, later, lit)) => (
                 self.v.why_action(&later, &lit, self.tense()),
                 vec![lit, occurs(&later, j)],
