@@ -413,3 +413,35 @@ fn a_run_with_failed_actions_keeps_its_steps() {
     assert_eq!(listed, failed);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// People's phrasing and the paper's answers over the execution example (expected answers
+/// derived by hand from execution_example.ald: green can on white block on red block):
+/// - no article ("has flat surface") and "first" (step 0) are understood;
+/// - why not pick up the red block at step 0: E7 holds with two groundings, the white block
+///   (directly on it) and the green can (above it through the white block); concise mode names
+///   both, as the paper's robot does ("the red block was below the white block and the green
+///   can"), each normalized as 6.2 says (the direct one to `on`).
+#[test]
+fn people_phrasing_and_every_blocker_of_the_top_axiom() {
+    let (code, out, err) = ask_example("Why did you believe the red block has flat surface?", &[]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.trim(), "That is a fact stored in my knowledge base.");
+    let (code, first, err) = ask_example("why did you pick up the green can first", &[]);
+    assert_eq!(code, 0, "{err}");
+    let (_, at_zero, _) = ask_example("Why did you pick up the green can at step 0?", &[]);
+    assert_eq!(first, at_zero);
+    let (code, out, err) = ask_example(
+        "Why didn't you pick up the red block at step 0?",
+        &["--outf=2"],
+    );
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        v["literals"],
+        serde_json::json!([
+            "holds(relation(on,white_block,red_block),0)",
+            "holds(relation(above,green_can,red_block),0)"
+        ]),
+        "{out}"
+    );
+}

@@ -468,8 +468,8 @@ impl Lexicon {
 
     /// Normalizes text into tokens: lower case; words are runs of letters, digits and
     /// apostrophes (anything else separates words, so `green_can` and `time-step` are two
-    /// words); contractions expanded; a final `'s` dropped; numbers and number words read;
-    /// then lemmas and synonyms.
+    /// words); contractions expanded; a final `'s` dropped; the indefinite articles `a` and `an`
+    /// dropped; numbers and number words read; then lemmas and synonyms.
     pub fn normalize(&self, text: &str) -> Vec<Token> {
         self.normalize_with(text, false)
     }
@@ -499,6 +499,11 @@ impl Lexicon {
                 None => vec![raw.strip_suffix("'s").unwrap_or(raw).to_string()],
             };
             for w in words {
+                // Indefinite articles carry nothing the grammar uses, and people leave them
+                // out ("has flat surface"): dropped from questions and phrases alike.
+                if w == "a" || w == "an" {
+                    continue;
+                }
                 let num = if w.bytes().all(|b| b.is_ascii_digit()) {
                     w.parse::<u32>().ok()
                 } else {

@@ -451,8 +451,21 @@ impl Answering<'_, '_> {
                 tree: Some(tree),
             });
         }
+        let label_of = |id: &NodeId| match &tree.node(*id).kind {
+            Kind::Axiom { label, .. } => Some(label.clone()),
+            _ => None,
+        };
         let chosen: Vec<NodeId> = match self.mode {
-            Mode::Concise => conditions[..1].to_vec(),
+            // The top-ranked axiom with every grounding of it that holds (6.5 step 4: "the red
+            // block was below the white block and the green can").
+            Mode::Concise => {
+                let top = label_of(&conditions[0]);
+                conditions
+                    .iter()
+                    .copied()
+                    .filter(|c| label_of(c) == top)
+                    .collect()
+            }
             Mode::Full => conditions.clone(),
         };
         let inner = root.arg(0).cloned();
