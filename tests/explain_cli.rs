@@ -444,4 +444,16 @@ fn people_phrasing_and_every_blocker_of_the_top_axiom() {
         ]),
         "{out}"
     );
+    // The red block is below the green can through the white block (SR5): the belief rests on
+    // both observed `on` relations, and the answer names both (the paper's answer).
+    let (code, out, err) = ask_example(
+        "Why did you believe the red block was below the green can in the initial state?",
+        &[],
+    );
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        out.trim(),
+        "Because I observed the green can on the white block and the white block on the red \
+         block at step 0."
+    );
 }

@@ -607,6 +607,29 @@ impl Answering<'_, '_> {
             });
         }
         if inertial {
+            // A relation derived through transitivity (SR5) rests on two relations: when both
+            // trace back to observations of one step, name them all (6.6).
+            if let Some(observed) = self.branching_observations(&tree) {
+                let step_j = tree.node(observed[0]).step.unwrap_or(step);
+                let lits: Vec<Symbol> = observed
+                    .iter()
+                    .map(|id| tree.node(*id).literal.clone())
+                    .collect();
+                let said: Vec<String> = lits.iter().map(|l| self.v.bare(l)).collect();
+                let text = self.v.template(
+                    "belief_observed",
+                    &[
+                        ("literal", &super::english::join_and(&said)),
+                        ("step", &self.v.step(i64::from(step_j))),
+                    ],
+                );
+                return Ok(Answer {
+                    kind: "belief",
+                    text,
+                    literals: lits,
+                    tree: Some(tree),
+                });
+            }
             // Follow spatial algebra and inertia back to the origin.
             let leaf_node = tree.node(leaf);
             let (text, literals) = match &leaf_node.kind {
@@ -664,6 +687,71 @@ impl Answering<'_, '_> {
             text: self.v.belief_frontier(&frontier, Tense::Past),
             literals: frontier,
             tree: Some(tree),
+        })
+    }
+
+    /// The observations a transitive relation on the tree's path rests on: from the first
+    /// SR5 node of the path, each of its relation children traced down (preferring an
+    /// observation or action child, else the first child with a step) to its origin. `Some`
+    /// only when there are at least two origins, all observations of one step.
+    fn branching_observations(&self, tree: &ProofTree) -> Option<Vec<NodeId>> {
+        let sr5 = tree.path.iter().copied().find(|id| {
+            matches!(&tree.node(*id).kind, Kind::Axiom { label, .. } if label.starts_with("SR5"))
+        })?;
+        let mut out: Vec<NodeId> = Vec::new();
+        let mut todo: Vec<NodeId> = tree
+            .node(sr5)
+            .children
+            .iter()
+            .copied()
+            .filter(|c| tree.node(*c).step.is_some())
+            .collect();
+        let mut budget = 10_000;
+        while let Some(id) = todo.pop() {
+            budget -= 1;
+            if budget == 0 {
+                return None;
+            }
+            let n = tree.node(id);
+            match &n.kind {
+                Kind::Observation => {
+                    if !out.contains(&id) {
+                        out.push(id);
+                    }
+                    continue;
+                }
+                Kind::Action => return None,
+                Kind::Axiom { label, .. } if label.starts_with("SR5") => {
+                    todo.extend(
+                        n.children
+                            .iter()
+                            .copied()
+                            .filter(|c| tree.node(*c).step.is_some()),
+                    );
+                    continue;
+                }
+                _ => {}
+            }
+            let next = n
+                .children
+                .iter()
+                .copied()
+                .find(|c| matches!(tree.node(*c).kind, Kind::Observation | Kind::Action))
+                .or_else(|| {
+                    n.children
+                        .iter()
+                        .copied()
+                        .find(|c| tree.node(*c).step.is_some())
+                });
+            match next {
+                Some(c) => todo.push(c),
+                None => return None,
+            }
+        }
+        let step = tree.node(*out.first()?).step;
+        (out.len() >= 2 && out.iter().all(|id| tree.node(*id).step == step)).then(|| {
+            out.sort_by_key(|id| tree.node(*id).literal.to_string());
+            out
         })
     }
 
