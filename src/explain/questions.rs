@@ -630,7 +630,28 @@ impl Answering<'_, '_> {
                     tree: Some(tree),
                 });
             }
-            // Follow spatial algebra and inertia back to the origin.
+            // Follow spatial algebra and inertia back to the origin. A causal law on the path
+            // is the origin: its action made the literal so, whatever the path says of the
+            // action's other preconditions (a pickup's effect rests on where the object was).
+            let caused = tree.path.iter().find_map(|id| {
+                let n = tree.node(*id);
+                let is_law = matches!(
+                    &n.kind,
+                    Kind::Axiom {
+                        kind: AxiomKind::CausalLaw,
+                        ..
+                    }
+                );
+                is_law
+                    .then(|| {
+                        n.children
+                            .iter()
+                            .copied()
+                            .find(|c| tree.node(*c).kind == Kind::Action)
+                    })
+                    .flatten()
+            });
+            let leaf = caused.unwrap_or(leaf);
             let leaf_node = tree.node(leaf);
             let (text, literals) = match &leaf_node.kind {
                 Kind::Action => {
