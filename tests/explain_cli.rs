@@ -75,6 +75,40 @@ fn ask_takes_follow_up_steps_from_the_previous_question() {
     insta::assert_snapshot!(out);
 }
 
+/// The paper's dialogue habit: later questions without a step take the previous question's
+/// step. Expected by hand over the execution example (green can on the white block on the red
+/// block; the plan moves the can to the table at 1, the white block onto the can at 3, the
+/// pitcher onto the red block at 5): at step 2 the robot picked up the white block; the can was
+/// on the table at 2 because of the putdown at 1; the red block could not be picked up at 2
+/// because the white block was still on it; the last action is the pitcher's putdown at 5, and
+/// at the end (step 6) the pitcher is on the red block because of it.
+#[test]
+fn a_dialogue_keeps_the_step_of_the_previous_question() {
+    let questions = "What did you do at step 2?\n\
+                     Why did you believe the green can was on the table?\n\
+                     why didn't you pick up red block\n\
+                     What did you do last?\n\
+                     Why was the pitcher on the red block at the end\n\
+                     quit\n";
+    let (code, out, err) = run_with(&["ask", EXAMPLE, "--happened", PAPER_PLAN], questions);
+    assert_eq!(code, 0, "{err}");
+    let answers: Vec<&str> = out
+        .lines()
+        .filter(|l| !l.starts_with('>') && !l.starts_with("History") && !l.starts_with("Ask"))
+        .collect();
+    assert_eq!(
+        answers,
+        [
+            "I picked up the white block at step 2.",
+            "Because I put the green can on the table at step 1.",
+            "Because the white block was on the red block.",
+            "I put the pitcher on the red block at step 5.",
+            "Because I put the pitcher on the red block at step 5.",
+        ],
+        "{out}"
+    );
+}
+
 #[test]
 fn explain_plans_by_itself_when_no_plan_is_given() {
     let (code, out, err) = run(&["explain", TABLETOP, "-q", "describe the plan"]);

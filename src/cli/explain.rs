@@ -453,7 +453,7 @@ fn respond(
             return Reply {
                 answer: Answer {
                     kind: "not_understood",
-                    text: e.reply(lexicon),
+                    text: parser.reply(&e),
                     literals: Vec::new(),
                     tree: None,
                 },

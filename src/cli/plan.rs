@@ -201,7 +201,8 @@ fn goal_text(goal: &str, desc: &action::ast::Description) -> Result<String, Stri
                 .collect()
         })
         .unwrap_or_default();
-    match crate::explain::english::Parser::new(&lexicon, &objects).parse(goal) {
+    let parser = crate::explain::english::Parser::new(&lexicon, &objects);
+    match parser.parse(goal) {
         Ok(crate::explain::english::Question::Goal { literals }) => Ok(format!(
             "goal {}.",
             literals
@@ -211,7 +212,7 @@ fn goal_text(goal: &str, desc: &action::ast::Description) -> Result<String, Stri
                 .join(", ")
         )),
         Ok(q) => Err(format!("`{goal}` is a {} question, not a goal", q.kind())),
-        Err(e) => Err(format!("`{goal}`: {}", e.reply(&lexicon))),
+        Err(e) => Err(format!("`{goal}`: {}", parser.reply(&e))),
     }
 }
 

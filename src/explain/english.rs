@@ -5,26 +5,31 @@
 //! the grammar, a handful of patterns over normalized tokens:
 //!
 //! ```text
-//! request  = goal ("and" (goal | object on object))*           -> Question::Goal
+//! request  = goal (["and"] (goal | object on object))*          -> Question::Goal
 //!          | describe-phrase                                   -> Question::DescribePlan
+//!          | describe-step-phrase (with a step in its {S})      -> DescribeStep
 //!          | no-plan-phrase | "why" "can" ("not" "you" | "you" "not") goal   -> WhyNoPlan
-//!          | "why" ["do"] "you" "believe" ["that"] belief [step] -> Belief
-//!          | "why" "be" belief [step]                          -> Belief
-//!          | "why" ["do"] "you" "not" action [step]            -> WhyNotAction
-//!          | "why" "not" action [step]                         -> WhyNotAction
-//!          | "why" ["do"] "you" action [step]                  -> WhyAction
+//!          | why aux* "believe" ["that"] belief [step]          -> Belief
+//!          | why aux* belief [step] | why aux* hold object [step]   -> Belief
+//!          | why aux* action [step]   (aux has "not")          -> WhyNotAction
+//!          | why aux* action [step]   (aux has no "not")       -> WhyAction
 //!          | "what" ["would" "happen"] "if" ["you"] ["have"] action [step] ["instead"] -> WhatIf
-//! goal     = verb [particle] object [particle] [relation-on object]
-//! action   = verb [particle] object [particle] [relation-on object]
-//! belief   = object ["be"] ["not"] (relation object | property)
-//! step     = [at|in|on|during] ["the"] ["time"] "step" number | step-phrase
-//! object   = ["the"|"a"|"an"|"your"|"my"] object-word+   (resolved against the scene)
+//! why      = "why" | "how come" | "what was the reason (for)" | ... (lexicon)
+//! aux      = do | be | have | can | could | will | would | you | not   (at most four)
+//! goal     = verb [particle] object (["and"] object)* [particle] [on-phrase object]
+//! action   = verb [particle] object [particle] [on-phrase object]
+//! belief   = object ["be"|"do"] ["not"] (relation object | property)
+//! step     = [at|in|on|during] ["the"] ["time"] "step" number | step-phrase | last-phrase
+//! object   = ["the"|"your"|"my"] object-word+   (resolved against the scene; "a"/"an" and
+//!            commas are dropped by normalization)
 //! ```
 //!
 //! Invariants: parsing never panics and never guesses: a question is either fully understood
 //! (every word consumed by the grammar, every object resolved to exactly one scene constant) or
-//! answered by [`NotUnderstood`], whose [`NotUnderstood::reply`] names the words or the object
-//! that were not understood and lists what the robot can answer. Resolution of a missing step
+//! answered by [`NotUnderstood`], whose reply ([`Parser::reply`]) names the words or the object
+//! that were not understood (for known words in an unknown order, the words after the longest
+//! partial match) and lists example questions about the scene's own objects. "Last" is the
+//! step [`LAST`], resolved by the answerer against the history. Resolution of a missing step
 //! is not the parser's job: the step stays `None` (DOMAIN.md 6.1, "missing step").
 
 use std::fmt;
@@ -46,6 +51,11 @@ pub enum Question {
     },
     /// "Describe the plan."
     DescribePlan,
+    /// "What did you do at step N / first / last?"
+    DescribeStep {
+        /// The step ([`LAST`] for the last action of the plan).
+        step: u32,
+    },
     /// "Why did you ⟨action⟩ [at step N]?"
     WhyAction {
         /// The action pattern.
@@ -90,6 +100,7 @@ impl Question {
         match self {
             Question::Goal { .. } => "goal",
             Question::DescribePlan => "plan",
+            Question::DescribeStep { .. } => "plan_step",
             Question::WhyAction { .. } => "why",
             Question::WhyNotAction { .. } => "why_not",
             Question::Belief { .. } => "belief",
@@ -105,8 +116,23 @@ impl Question {
             | Question::WhyNotAction { step, .. }
             | Question::Belief { step, .. }
             | Question::WhatIf { step, .. } => *step,
+            Question::DescribeStep { step } => Some(*step),
             _ => None,
         }
+    }
+}
+
+/// The step a question names with "last", "at the end", "in the final state": the last step of
+/// the history for a belief, the last action's step for a question about actions. The answerer
+/// resolves it against the history; the parser has none.
+pub const LAST: u32 = u32::MAX;
+
+/// A step in words for [`Question`]'s display: the number, `last`, or `?` when not named.
+fn step_text(s: Option<u32>) -> String {
+    match s {
+        Some(LAST) => "last".to_string(),
+        Some(n) => n.to_string(),
+        None => "?".to_string(),
     }
 }
 
@@ -132,10 +158,7 @@ pub fn occurs(action: &Symbol, step: u32) -> Symbol {
 
 impl fmt::Display for Question {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let step = |s: &Option<u32>| match s {
-            Some(n) => n.to_string(),
-            None => "?".to_string(),
-        };
+        let step = |s: &Option<u32>| step_text(*s);
         let list = |ts: &[Symbol]| {
             ts.iter()
                 .map(Symbol::to_string)
@@ -145,6 +168,7 @@ impl fmt::Display for Question {
         match self {
             Question::Goal { literals } => write!(f, "goal {}", list(literals)),
             Question::DescribePlan => write!(f, "describe the plan"),
+            Question::DescribeStep { step: s } => write!(f, "describe step {}", step(&Some(*s))),
             Question::WhyAction { action, step: s } => write!(f, "why {action} at {}", step(s)),
             Question::WhyNotAction { action, step: s } => {
                 write!(f, "why not {action} at {}", step(s))
@@ -188,13 +212,25 @@ pub enum NotUnderstood {
         /// The objects it could name, in words.
         candidates: Vec<String>,
     },
-    /// Every word is known, but the sentence fits no pattern.
-    NoPattern,
+    /// Every word is known, but the sentence fits no pattern: `understood` are the words the
+    /// longest partial match took, `rest` the words after them (as written).
+    NoPattern {
+        /// The words a pattern matched before it failed.
+        understood: Vec<String>,
+        /// The words no pattern could take.
+        rest: Vec<String>,
+    },
 }
 
 impl NotUnderstood {
-    /// The reply to the human: what was not understood, and what the robot can answer.
+    /// The reply to the human: what was not understood, and what the robot can answer (the
+    /// examples name the lexicon's help objects; [`Parser::reply`] names the scene's).
     pub fn reply(&self, lexicon: &Lexicon) -> String {
+        self.reply_about(lexicon, &lexicon.help_objects)
+    }
+
+    /// The reply, with the examples about these objects (in words, "the pot").
+    pub fn reply_about(&self, lexicon: &Lexicon, objects: &[String]) -> String {
         let first = match self {
             NotUnderstood::Empty => "I did not hear a question.".to_string(),
             NotUnderstood::UnknownWords(words) => {
@@ -219,16 +255,46 @@ impl NotUnderstood {
                 "\"{phrase}\" could be {}; please say which.",
                 join_or(candidates)
             ),
-            NotUnderstood::NoPattern => {
-                "I know these words, but I did not understand the question.".to_string()
+            NotUnderstood::NoPattern { understood, rest } => {
+                let quote = |ws: &[String]| format!("\"{}\"", ws.join(" "));
+                match (understood.is_empty(), rest.is_empty()) {
+                    (_, true) => {
+                        "I know these words, but I did not understand the question.".to_string()
+                    }
+                    (true, false) => format!(
+                        "I know these words, but I did not understand {}.",
+                        quote(rest)
+                    ),
+                    (false, false) => format!(
+                        "I understood {} but not {}.",
+                        quote(understood),
+                        quote(rest)
+                    ),
+                }
             }
         };
         let mut out = first;
         if !lexicon.help.is_empty() {
             out.push_str(" I can answer requests and questions such as:");
+            let pick = |i: usize| {
+                objects
+                    .get(i)
+                    .or_else(|| lexicon.help_objects.get(i))
+                    .map_or("it", String::as_str)
+            };
+            let capital = |s: &str| {
+                let mut c = s.chars();
+                c.next()
+                    .map(|f| f.to_uppercase().chain(c).collect::<String>())
+                    .unwrap_or_default()
+            };
             for h in &lexicon.help {
+                let line = h
+                    .replace("{X}", pick(0))
+                    .replace("{Y}", pick(1))
+                    .replace("{Z}", pick(2));
                 out.push_str("\n  ");
-                out.push_str(h);
+                out.push_str(&capital(&line));
             }
         }
         out
@@ -335,15 +401,39 @@ impl<'a> Parser<'a> {
             p: self,
             toks: words,
             pos: 0,
+            furthest: 0,
             error: None,
         };
         let result = m.request();
+        let originals = |ts: &[Token]| {
+            let mut out: Vec<String> = Vec::new();
+            for t in ts {
+                // A contraction is one written word for several tokens.
+                if !(out.last() == Some(&t.original) && t.original.contains('\'')) {
+                    out.push(t.original.clone());
+                }
+            }
+            out
+        };
         match (result, m.error) {
             (Some(_), Some(e)) => Err(e),
             (Some(q), None) => Ok(q),
             (None, Some(e)) => Err(e),
-            (None, None) => Err(NotUnderstood::NoPattern),
+            (None, None) => Err(NotUnderstood::NoPattern {
+                understood: originals(&words[..m.furthest]),
+                rest: originals(&words[m.furthest..]),
+            }),
         }
+    }
+
+    /// The reply to a question this parser did not understand, its examples about objects of
+    /// the scene.
+    pub fn reply(&self, e: &NotUnderstood) -> String {
+        let mut objects = self.known_objects();
+        if objects.len() < 3 {
+            objects.extend(self.lexicon.help_objects.iter().cloned());
+        }
+        e.reply_about(self.lexicon, &objects)
     }
 
     /// The object constants in words, for replies ("the red cube" for `red_cube_large`).
@@ -472,6 +562,8 @@ struct Matcher<'p, 'a, 't> {
     p: &'p Parser<'a>,
     toks: &'t [Token],
     pos: usize,
+    /// The furthest position any alternative reached (what the reply says was understood).
+    furthest: usize,
     /// The first object that failed to resolve inside an otherwise matching pattern.
     error: Option<NotUnderstood>,
 }
@@ -515,6 +607,7 @@ impl Matcher<'_, '_, '_> {
         let pos = self.pos;
         let error = self.error.clone();
         let r = f(self);
+        self.furthest = self.furthest.max(self.pos);
         if r.is_none() {
             self.pos = pos;
             self.error = error;
@@ -523,8 +616,9 @@ impl Matcher<'_, '_, '_> {
     }
 
     fn request(&mut self) -> Step<Question> {
-        let alternatives: [fn(&mut Self) -> Step<Question>; 8] = [
+        let alternatives: [fn(&mut Self) -> Step<Question>; 9] = [
             Self::describe,
+            Self::describe_step,
             Self::no_plan_phrase,
             Self::why_no_plan,
             Self::belief,
@@ -556,6 +650,52 @@ impl Matcher<'_, '_, '_> {
             })
     }
 
+    /// A describe-step phrase with its `{S}` step: "what did you do first", "what was your last
+    /// action".
+    fn describe_step(&mut self) -> Step<Question> {
+        let lex = self.p.lexicon;
+        for phrase in &lex.describe_step {
+            let found = self.attempt(|m| {
+                let mut step = None;
+                for w in phrase {
+                    if w == "{S}" {
+                        step = Some(m.step_phrase()?);
+                    } else if !m.eat(w) {
+                        return None;
+                    }
+                }
+                m.at_end().then_some(step).flatten()
+            });
+            if let Some(step) = found {
+                return Some(Question::DescribeStep { step });
+            }
+        }
+        None
+    }
+
+    /// A phrase that opens a why question ("why", "how come", "what was the reason for").
+    fn why_word(&mut self) -> bool {
+        let lex = self.p.lexicon;
+        lex.why.iter().any(|p| self.eat_phrase(p))
+    }
+
+    /// The auxiliaries between the why phrase and the verb, in any order ("did you not",
+    /// "didn't you", "were you", "have you", "couldn't you", "you"): whether "you" and "not"
+    /// were among them.
+    fn auxiliaries(&mut self) -> (bool, bool) {
+        let (mut you, mut not) = (false, false);
+        for _ in 0..4 {
+            match self.peek() {
+                Some("do" | "be" | "have" | "can" | "could" | "will" | "would") => {}
+                Some("you") => you = true,
+                Some("not") if !not => not = true,
+                _ => break,
+            }
+            self.pos += 1;
+        }
+        (you, not)
+    }
+
     fn no_plan_phrase(&mut self) -> Step<Question> {
         let lex = self.p.lexicon;
         let rest = &self.toks[self.pos..];
@@ -579,26 +719,63 @@ impl Matcher<'_, '_, '_> {
         Some(Question::WhyNoPlan { goal })
     }
 
-    // "why" ["do"] "you" "believe" ["that"] belief [step] | "why" "be" belief [step]
+    // why aux* "believe" ["that"] belief [step] | why aux* belief [step]
+    // | why aux* hold object [step]   (aux: do, be, have, can, you, not)
     fn belief(&mut self) -> Step<Question> {
-        if !self.eat("why") {
+        if !self.why_word() {
             return None;
         }
-        if self.eat("be") {
-            return self.belief_body();
+        let (you, not) = self.auxiliaries();
+        if you {
+            if self.eat("believe") {
+                if not {
+                    return None;
+                }
+                self.eat("that");
+                // "why do you think you are holding the pot"
+                if let Some(q) = self.attempt(|m| {
+                    let (you, not) = m.auxiliaries();
+                    if you {
+                        m.holding(not)
+                    } else {
+                        None
+                    }
+                }) {
+                    return Some(q);
+                }
+                return self.belief_body(false);
+            }
+            return self.holding(not);
         }
-        self.eat("do");
-        if !(self.eat("you") && self.eat("believe")) {
-            return None;
-        }
-        self.eat("that");
-        self.belief_body()
+        self.belief_body(not)
     }
 
-    fn belief_body(&mut self) -> Step<Question> {
+    /// hold object [step] after "you": "why were you holding the pot" asks about the robot's
+    /// hand.
+    fn holding(&mut self, not: bool) -> Step<Question> {
+        let lex = self.p.lexicon;
+        if !lex.holding.iter().any(|w| self.eat(w)) {
+            return None;
+        }
+        let x = self.object()?;
+        let literal = Symbol::function("in_hand", vec![Symbol::constant(&lex.robot), x]);
+        let literal = if not { literal.complement()? } else { literal };
+        let step = self.step_phrase();
+        Some(Question::Belief {
+            literal,
+            is_static: false,
+            step,
+        })
+    }
+
+    /// object ["be"|"do"] ["not"] (property | relation object) [step]; `negated` when the
+    /// auxiliaries before the subject said "not" ("why isn't the mug on the table").
+    fn belief_body(&mut self, negated: bool) -> Step<Question> {
         let subject = self.object()?;
-        self.eat("be");
-        let negated = self.eat("not");
+        if !self.eat("be") {
+            self.eat("do");
+        }
+        let negated = self.eat("not") != negated;
         let (literal, is_static) = self
             .attempt(|m| m.property_literal(&subject))
             .or_else(|| self.attempt(|m| m.relation_literal(&subject)))?;
@@ -611,7 +788,7 @@ impl Matcher<'_, '_, '_> {
         Some(Question::Belief {
             literal,
             is_static,
-            step,
+            step: if is_static { None } else { step },
         })
     }
 
@@ -681,30 +858,29 @@ impl Matcher<'_, '_, '_> {
         None
     }
 
-    // "why" ["do"] "you" "not" action [step] | "why" "not" action [step]
+    // why aux* action [step] with "not" among the auxiliaries ("why didn't you", "why not",
+    // "how come you did not", "why couldn't you")
     fn why_not(&mut self) -> Step<Question> {
-        if !self.eat("why") {
+        if !self.why_word() {
             return None;
         }
-        if !self.eat("not") {
-            self.eat("do");
-            let negated = self.attempt(|m| (m.eat("not") && m.eat("you")).then_some(()));
-            let negated =
-                negated.or_else(|| self.attempt(|m| (m.eat("you") && m.eat("not")).then_some(())));
-            negated?;
+        let (_, not) = self.auxiliaries();
+        if !not {
+            return None;
         }
         let action = self.action()?;
         let step = self.step_phrase();
         Some(Question::WhyNotAction { action, step })
     }
 
-    // "why" ["do"] "you" action [step]
+    // why aux* action [step] without "not" ("why did you", "how come you", "what was the reason
+    // for", "why have you")
     fn why(&mut self) -> Step<Question> {
-        if !self.eat("why") {
+        if !self.why_word() {
             return None;
         }
-        self.eat("do");
-        if !self.eat("you") {
+        let (_, not) = self.auxiliaries();
+        if not {
             return None;
         }
         let action = self.action()?;
@@ -741,19 +917,83 @@ impl Matcher<'_, '_, '_> {
 
     /// goal ("and" (goal | object on object))*
     fn goals(&mut self) -> Step<Vec<Symbol>> {
-        let mut goals = vec![self.goal()?];
-        while self.eat("and") {
-            let g = self
-                .attempt(Self::goal)
-                .or_else(|| self.attempt(Self::placement))?;
-            goals.push(g);
+        let mut goals = self.goal()?;
+        // Items are joined by "and" or by commas, which normalization drops.
+        while !self.at_end() {
+            let and = self.eat("and");
+            match self.attempt(Self::goal) {
+                Some(g) => goals.extend(g),
+                None => match self.attempt(Self::placement) {
+                    Some(g) => goals.push(g),
+                    None if and => return None,
+                    None => break,
+                },
+            }
         }
         Some(goals)
     }
 
-    /// A goal: "put X on Y" -> `relation(on,X,Y)`; "pick up X" -> `in_hand(rob1,X)`.
-    fn goal(&mut self) -> Step<Symbol> {
+    /// A goal: "put X on Y" -> `relation(on,X,Y)`; "pick up X" -> `in_hand(rob1,X)`; "put X
+    /// and Y on Z" -> one literal per object.
+    fn goal(&mut self) -> Step<Vec<Symbol>> {
+        if let Some(goals) = self.attempt(Self::shared_goal) {
+            return Some(goals);
+        }
         let action = self.action()?;
+        Some(vec![self.goal_literal(&action)?])
+    }
+
+    /// verb [particle] object ("and" object)+ [particle] [on-phrase object]: several objects
+    /// with one verb and one target.
+    fn shared_goal(&mut self) -> Step<Vec<Symbol>> {
+        let lex = self.p.lexicon;
+        for verb in &lex.verbs {
+            let found = self.attempt(|m| {
+                if !m.eat(&verb.verb) {
+                    return None;
+                }
+                let particle = |m: &mut Self| {
+                    if let Some(p) = &verb.particle {
+                        m.eat(p);
+                    }
+                };
+                particle(m);
+                let mut xs = vec![m.object()?];
+                // "X, Y and Z": commas are gone, so "and" is optional between items.
+                while let Some(x) = m.attempt(|m| {
+                    m.eat("and");
+                    m.object()
+                }) {
+                    xs.push(x);
+                }
+                if xs.len() < 2 {
+                    return None;
+                }
+                particle(m);
+                let robot = Pattern::from(&Symbol::constant(&lex.robot));
+                let mut bindings = vec![("R".to_string(), robot)];
+                if verb.action.args().iter().any(|a| a.is_var("Y")) {
+                    m.on_phrase()?;
+                    let y = m.object()?;
+                    bindings.push(("Y".to_string(), Pattern::from(&y)));
+                }
+                xs.iter()
+                    .map(|x| {
+                        let mut b = bindings.clone();
+                        b.push(("X".to_string(), Pattern::from(x)));
+                        m.goal_literal(&verb.action.substitute(&b))
+                    })
+                    .collect::<Option<Vec<Symbol>>>()
+            });
+            if found.is_some() {
+                return found;
+            }
+        }
+        None
+    }
+
+    /// The goal an action asks for: its effect (`relation(on,X,Y)`, `in_hand(rob1,X)`).
+    fn goal_literal(&self, action: &Pattern) -> Option<Symbol> {
         match action.name()? {
             "putdown" => {
                 let (x, y) = (action.arg(1)?.to_symbol()?, action.arg(2)?.to_symbol()?);
@@ -844,6 +1084,7 @@ impl Matcher<'_, '_, '_> {
     /// does not resolve records the error (the first one) and still matches, so the question's
     /// shape is recognized and the reply can name the object.
     fn object(&mut self) -> Step<Symbol> {
+        let before = self.pos;
         for det in ["the", "a", "an", "your", "my"] {
             if self.eat(det) {
                 break;
@@ -859,6 +1100,7 @@ impl Matcher<'_, '_, '_> {
             self.pos -= 1;
         }
         if self.pos == start {
+            self.pos = before;
             return None;
         }
         let words: Vec<&Token> = self.toks[start..self.pos].iter().collect();
@@ -886,6 +1128,11 @@ impl Matcher<'_, '_, '_> {
         for (phrase, n) in &lex.step_phrases {
             if self.eat_phrase(phrase) {
                 return Some(*n);
+            }
+        }
+        for phrase in &lex.last_step_phrases {
+            if self.eat_phrase(phrase) {
+                return Some(LAST);
             }
         }
         self.attempt(|m| {

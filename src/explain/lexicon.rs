@@ -42,6 +42,7 @@ pub const TEMPLATES: &[(&str, &[&str])] = &[
     ("belief_default", &["literal"]),
     ("complement_instead", &["literal"]),
     ("step_chosen", &["steps"]),
+    ("nothing_done", &["step"]),
     ("outside_history", &["step", "last"]),
     ("not_done", &["action", "step"]),
     ("no_reason", &[]),
@@ -70,6 +71,8 @@ struct LexiconFile {
     numbers: HashMap<String, u32>,
     politeness: Vec<String>,
     step_phrases: HashMap<String, u32>,
+    last_step_phrases: Vec<String>,
+    holding: Vec<String>,
     kinds: Vec<Vec<String>>,
     colours: Vec<String>,
     sizes: Vec<String>,
@@ -79,6 +82,7 @@ struct LexiconFile {
     properties: Vec<PropertyFile>,
     requests: RequestsFile,
     templates: HashMap<String, String>,
+    help_objects: Vec<String>,
     help: Vec<String>,
 }
 
@@ -115,6 +119,8 @@ struct PropertyFile {
 #[serde(deny_unknown_fields)]
 struct RequestsFile {
     describe: Vec<String>,
+    describe_step: Vec<String>,
+    why: Vec<String>,
     no_plan: Vec<String>,
 }
 
@@ -205,6 +211,11 @@ pub struct Lexicon {
     pub politeness: Vec<Vec<String>>,
     /// Normalized phrases naming a step, longest first.
     pub step_phrases: Vec<(Vec<String>, u32)>,
+    /// Normalized phrases naming the last step of the history ("at the end"), longest first.
+    pub last_step_phrases: Vec<Vec<String>>,
+    /// Normalized verbs of holding ("hold", "carry"): "why were you holding X" asks about
+    /// `in_hand(robot, X)`.
+    pub holding: Vec<String>,
     /// Kind word -> the first word of its class ("cube" -> "block").
     kind_class: HashMap<String, String>,
     /// Colour words.
@@ -221,12 +232,20 @@ pub struct Lexicon {
     pub properties: Vec<Property>,
     /// Normalized phrases asking for the plan.
     pub describe: Vec<Vec<String>>,
+    /// Normalized phrases asking what was done at one step; `{S}` stands for a step phrase.
+    pub describe_step: Vec<Vec<String>>,
+    /// Normalized phrases opening a why question ("why", "how come", "what be the reason
+    /// for"), longest first.
+    pub why: Vec<Vec<String>>,
     /// Normalized phrases asking why there is no plan.
     pub no_plan: Vec<Vec<String>>,
     /// Answer templates by name (DOMAIN.md 6.7), see [`TEMPLATES`].
     pub templates: HashMap<String, String>,
-    /// Example questions, said when a question was not understood.
+    /// Example questions, said when a question was not understood; `{X}`, `{Y}`, `{Z}` are
+    /// filled with objects of the scene.
     pub help: Vec<String>,
+    /// The objects the examples name when the scene has too few (in words).
+    pub help_objects: Vec<String>,
     /// Every word some phrase or grammar rule uses (normalized).
     known: HashSet<String>,
 }
@@ -270,6 +289,8 @@ impl Lexicon {
                 .collect(),
             politeness: Vec::new(),
             step_phrases: Vec::new(),
+            last_step_phrases: Vec::new(),
+            holding: Vec::new(),
             kind_class: HashMap::new(),
             colours: HashSet::new(),
             sizes: HashSet::new(),
@@ -278,9 +299,12 @@ impl Lexicon {
             relations: Vec::new(),
             properties: Vec::new(),
             describe: Vec::new(),
+            describe_step: Vec::new(),
+            why: Vec::new(),
             no_plan: Vec::new(),
             templates: file.templates,
             help: file.help,
+            help_objects: file.help_objects,
             known: HashSet::new(),
         };
         for (name, holes) in TEMPLATES {
@@ -305,6 +329,13 @@ impl Lexicon {
             .collect();
         steps.sort_by(|a, b| b.0.len().cmp(&a.0.len()).then(a.0.cmp(&b.0)));
         lex.step_phrases = steps;
+        lex.last_step_phrases = longest_first(
+            file.last_step_phrases
+                .iter()
+                .map(|p| lex.phrase(p))
+                .collect(),
+        );
+        lex.holding = file.holding.iter().map(|w| lex.word(w)).collect();
         for class in &file.kinds {
             let class: Vec<String> = class.iter().map(|w| lex.word(w)).collect();
             let Some(first) = class.first() else {
@@ -379,10 +410,29 @@ impl Lexicon {
                 .map(|p| lex.phrase(p))
                 .collect(),
         );
+        let phrases = |list: &[String]| longest_first(list.iter().map(|p| lex.phrase(p)).collect());
+        let (describe_step, why) = (
+            phrases(&file.requests.describe_step),
+            phrases(&file.requests.why),
+        );
+        lex.describe_step = describe_step;
+        lex.why = why;
+        if lex
+            .describe_step
+            .iter()
+            .any(|p| !p.iter().any(|w| w == "{S}"))
+        {
+            return Err(LexiconError::Entry(
+                "every describe_step phrase must have its step {S}".into(),
+            ));
+        }
         if lex
             .politeness
             .iter()
             .chain(lex.describe.iter())
+            .chain(lex.describe_step.iter())
+            .chain(lex.why.iter())
+            .chain(lex.last_step_phrases.iter())
             .chain(lex.no_plan.iter())
             .any(Vec::is_empty)
         {
@@ -406,10 +456,14 @@ impl Lexicon {
             .politeness
             .iter()
             .chain(&self.describe)
+            .chain(&self.describe_step)
+            .chain(&self.why)
+            .chain(&self.last_step_phrases)
             .chain(&self.no_plan)
         {
             add(p);
         }
+        add(&self.holding);
         for (p, _) in &self.step_phrases {
             add(p);
         }

@@ -12,13 +12,13 @@
 //! planning problem runs them (`explain::counterfactual`, the planner).
 
 use super::build::{normalize, origin_alternative, BuildConfig, Builder};
-use super::english::{holds, occurs, Question};
+use super::english::{holds, occurs, Question, LAST};
 use super::lexicon::Lexicon;
 use super::pattern::{Pattern, SymbolExt};
 use super::tree::{
     recheck, AxiomKind, Kind, LearnedAxiom, NodeId, Oracle, ProofTree, RecheckError,
 };
-use super::verbalize::{Tense, Verbalizer};
+use super::verbalize::{ActionForm, Tense, Verbalizer};
 use crate::control::Symbol;
 
 /// How much an answer says.
@@ -132,8 +132,10 @@ pub fn answer(
 ) -> Result<Answer, AnswerError> {
     let v = Verbalizer::new(lexicon);
     let a = Answering { scn, v, mode };
+    let question = &a.resolve_last(question);
     let mut answer = match question {
         Question::DescribePlan => Ok(a.plan()),
+        Question::DescribeStep { step } => Ok(a.describe_step(*step, session)),
         Question::WhyAction { action, step } => a.why(action, *step, session),
         Question::WhyNotAction { action, step } => a.why_not(action, *step, session),
         Question::Belief {
@@ -228,6 +230,85 @@ impl Answering<'_, '_> {
             kind: "plan",
             text: self.v.plan(&self.scn.plan, self.scn.executed),
             literals: self.scn.plan.iter().map(|(i, a)| occurs(a, *i)).collect(),
+            tree: None,
+        }
+    }
+
+    /// The question with "last" ([`LAST`]) resolved against the history: the last step of the
+    /// history for a belief; for an action question the last step at which the plan has such
+    /// an action (else the last action's step, for why-not and what-if).
+    fn resolve_last(&self, question: &Question) -> Question {
+        let last_action = self
+            .scn
+            .plan
+            .iter()
+            .map(|(i, _)| *i)
+            .max()
+            .unwrap_or(self.scn.last_step.saturating_sub(1));
+        let last_matching = |action: &Pattern| {
+            self.scn
+                .plan
+                .iter()
+                .filter(|(_, a)| {
+                    a.name() == action.name()
+                        && action.arg(1).and_then(Pattern::to_symbol).as_ref() == object_arg(a)
+                })
+                .map(|(i, _)| *i)
+                .max()
+        };
+        let mut q = question.clone();
+        match &mut q {
+            Question::Belief { step, .. } if *step == Some(LAST) => {
+                *step = Some(self.scn.last_step);
+            }
+            Question::WhyAction { action, step } if *step == Some(LAST) => {
+                *step = last_matching(action);
+            }
+            Question::WhyNotAction { step, .. } | Question::WhatIf { step, .. }
+                if *step == Some(LAST) =>
+            {
+                *step = Some(last_action);
+            }
+            Question::DescribeStep { step } if *step == LAST => *step = last_action,
+            _ => {}
+        }
+        q
+    }
+
+    /// What was done at one step: "I picked up the green can at step 0."
+    fn describe_step(&self, step: u32, session: &mut Session) -> Answer {
+        session.last_step = Some(step);
+        if let Some(a) = self.outside("plan_step", step) {
+            return a;
+        }
+        let done: Vec<&Symbol> = self
+            .scn
+            .plan
+            .iter()
+            .filter(|(i, _)| *i == step)
+            .map(|(_, a)| a)
+            .collect();
+        if done.is_empty() {
+            let text = self
+                .v
+                .template("nothing_done", &[("step", &self.v.step(i64::from(step)))]);
+            return Self::simple("plan_step", text);
+        }
+        let form = if self.scn.executed {
+            ActionForm::Past
+        } else {
+            ActionForm::Future
+        };
+        let actions: Vec<String> = done.iter().map(|a| self.v.action(a, form)).collect();
+        let said = format!(
+            "{} {}",
+            super::english::join_and(&actions),
+            self.v.step(i64::from(step))
+        );
+        Answer {
+            kind: "plan_step",
+            text: self.v.template("plan_step", &[("action", &said)]),
+            literals: done.iter().map(|a| occurs(a, step)).collect(),
             tree: None,
         }
     }

@@ -60,7 +60,7 @@ pub fn why(
     let parser = Parser::new(lexicon, &names);
     let q = parser
         .parse(question)
-        .map_err(|e| SceneWhyError::NotUnderstood(e.reply(lexicon)))?;
+        .map_err(|e| SceneWhyError::NotUnderstood(parser.reply(&e)))?;
     let Question::Belief { literal, .. } = &q else {
         return Err(SceneWhyError::NotABelief);
     };
