@@ -556,7 +556,12 @@ fn respond(
                 };
                 if matters {
                     answer.text.push(' ');
-                    answer.text.push_str(&s.say(&v));
+                    // Without --happened or --run the plan is the planner's own.
+                    if a.happened.is_none() && a.run.is_none() {
+                        answer.text.push_str(&s.say_planned(&v));
+                    } else {
+                        answer.text.push_str(&s.say(&v));
+                    }
                 }
             }
             Reply {

@@ -122,6 +122,26 @@ impl Surprise {
         text
     }
 
+    /// The same difference in a plan the robot's planner made itself (not executed): the
+    /// planner's knowledge allowed what the explainer's rule base forbids. "My planner let me
+    /// put the ball on the blue block at step 1, but my rule E11 forbids it (impossible
+    /// putdown(R, A, B) if has_size(B, small)): the blue block is small."
+    pub fn say_planned(&self, v: &super::verbalize::Verbalizer<'_>) -> String {
+        use super::verbalize::{ActionForm, Tense};
+        let mut text = format!(
+            "My planner let me {} {}, but my rule {} forbids it ({})",
+            v.action(&self.action, ActionForm::Base),
+            v.step(i64::from(self.step)),
+            self.label,
+            self.axiom
+        );
+        if !self.because.is_empty() {
+            text.push_str(&format!(": {}", v.join(&self.because, Tense::Present)));
+        }
+        text.push('.');
+        text
+    }
+
     /// The surprise as JSON: `{"step", "action", "label", "axiom", "because"}`.
     pub fn to_json(&self) -> serde_json::Value {
         serde_json::json!({
@@ -542,7 +562,7 @@ impl Unexpected {
         }
         format!(
             "{step} I saw that {}, which I had not expected.",
-            v.join(&[lit], super::verbalize::Tense::Past)
+            v.fluent(&lit, super::verbalize::Tense::Past)
         )
     }
 
