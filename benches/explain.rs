@@ -25,6 +25,29 @@ fn history(scene: &str, plan: &str) -> History {
     ra_scenes::history(&desc, &mut sources, &actions, None)
 }
 
+/// The ball scene of the tests (`tests/data/explain/ball_on_small_block.ald`), where putting
+/// the ball on the small blue block is a surprise to the explainer's rule base (E11).
+fn ball_history(plan: &str) -> History {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/explain/ball_on_small_block.ald");
+    let (desc, mut sources) = ra_scenes::load_at(&path, &std::fs::read_to_string(&path).unwrap());
+    let actions = parse_actions(plan).unwrap();
+    ra_scenes::history(&desc, &mut sources, &actions, None)
+}
+
+/// Median milliseconds of `f` over `runs` runs.
+fn median_ms(runs: usize, mut f: impl FnMut()) -> f64 {
+    let mut times: Vec<f64> = (0..runs)
+        .map(|_| {
+            let t = Instant::now();
+            f();
+            t.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[runs / 2]
+}
+
 fn ask(h: &History, lexicon: &Lexicon, q: &str) -> usize {
     let objects = h.objects();
     let names: Vec<&str> = objects.iter().map(String::as_str).collect();
@@ -53,6 +76,21 @@ fn bench(c: &mut Criterion) {
         "tabletop_task.ald",
         "pickup(rob1,pitcher); putdown(rob1,pitcher,table); pickup(rob1,red_cube_large)",
     );
+    // A history with a surprise against the same scene's history without one: the repair is a
+    // solve with one CR assumption per executability condition, in the history's making.
+    let surprising = "pickup(rob1,ball); putdown(rob1,ball,blue_block)";
+    let consistent = "pickup(rob1,ball); putdown(rob1,ball,table)";
+    let surprised = ball_history(surprising);
+    let plain = ball_history(consistent);
+    assert_eq!(surprised.surprises.len(), 1);
+    assert!(plain.surprises.is_empty());
+    let with = median_ms(20, || drop(std::hint::black_box(ball_history(surprising))));
+    let without = median_ms(20, || drop(std::hint::black_box(ball_history(consistent))));
+    println!(
+        "history with a surprise: {with:.2} ms, without: {without:.2} ms (median of 20), \
+         ratio {:.2}",
+        with / without
+    );
     let cases: Vec<(&str, &History, &str)> = vec![
         ("example/plan", &example, "Please describe the plan."),
         (
@@ -71,6 +109,17 @@ fn bench(c: &mut Criterion) {
             "Why did you believe the white block was on the green can at step 5?",
         ),
         ("tabletop/plan", &tabletop, "Describe the plan."),
+        ("surprise/plan", &surprised, "Describe the plan."),
+        (
+            "surprise/why",
+            &surprised,
+            "Why did you put the ball on the blue block?",
+        ),
+        (
+            "plain/why",
+            &plain,
+            "Why did you put the ball on the table?",
+        ),
         (
             "tabletop/why",
             &tabletop,

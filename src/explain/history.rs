@@ -428,16 +428,26 @@ pub fn scene_of_run(run: &crate::plan::history::History) -> Result<(String, Step
     for st in &run.statics {
         text.push_str(&format!("{}.\n", parse("static", st)?));
     }
+    // The robot's belief after its first look, when the run recorded it: consistent by
+    // construction, where the raw readings of a noisy camera may contradict each other.
+    // Else the readings it did not doubt.
+    let initial: Vec<&String> = if first.belief.is_empty() {
+        first
+            .observed
+            .iter()
+            .filter(|o| o.value && !first.doubted.contains(&o.fluent))
+            .map(|o| &o.fluent)
+            .collect()
+    } else {
+        first.belief.iter().collect()
+    };
     let mut seen = Vec::new();
-    for o in first.observed.iter().filter(|o| o.value) {
-        if first.doubted.contains(&o.fluent) || seen.contains(&o.fluent) {
+    for f in initial {
+        if seen.contains(&f) {
             continue;
         }
-        seen.push(o.fluent.clone());
-        text.push_str(&format!(
-            "initially {}.\n",
-            parse("observation", &o.fluent)?
-        ));
+        seen.push(f);
+        text.push_str(&format!("initially {}.\n", parse("observation", f)?));
     }
     if !run.goal.is_empty() {
         let goal: Vec<String> = run
