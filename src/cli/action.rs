@@ -44,7 +44,7 @@ pub fn translate_input(
     diags: &mut Diagnostics,
 ) -> Option<Translation> {
     let mut read =
-        |path: &std::path::Path| std::fs::read_to_string(path).map_err(|e| e.to_string());
+        |path: &std::path::Path| super::builtin::read_to_string(path).map_err(|e| e.to_string());
     let parsed = action::load(sources, file, &mut read);
     let parse_errors = parsed.has_errors();
     diags.extend(parsed.diagnostics);

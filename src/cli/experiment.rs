@@ -11,7 +11,7 @@
 //! exit 65. The progress bar goes to standard error, only on a terminal; one summary line
 //! (trials computed and reused, wall time) always goes to standard error.
 
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -89,7 +89,7 @@ fn absolute(path: &str) -> String {
 
 /// Reads the H2-H4 domain.
 fn read_domain(path: &str, err: &mut dyn Write) -> std::io::Result<Option<Domain>> {
-    match std::fs::read_to_string(path) {
+    match super::builtin::read_to_string(path) {
         Ok(text) => Ok(Some(Domain {
             path: path.to_string(),
             text,
@@ -215,6 +215,11 @@ pub fn run_experiment(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
+    // `experiment classify --help` is classify's own help.
+    #[cfg(feature = "sim")]
+    if args.first().map(String::as_str) == Some("classify") {
+        return super::classify::run_experiment(&args[1..], out, err);
+    }
     if args.is_empty() || args.iter().any(|a| a == "--help" || a == "-h") {
         write!(out, "{HELP}")?;
         return Ok(if args.is_empty() {
@@ -222,10 +227,6 @@ pub fn run_experiment(
         } else {
             0
         });
-    }
-    #[cfg(feature = "sim")]
-    if args.first().map(String::as_str) == Some("classify") {
-        return super::classify::run_experiment(&args[1..], out, err);
     }
     let (mut parsed, positional) = match parse(args) {
         Ok(p) => p,
@@ -314,18 +315,18 @@ pub fn run_experiment(
         caches: Default::default(),
     };
     let start = Instant::now();
-    let terminal = std::io::stderr().is_terminal();
+    let bar = super::progress::bar(trials.len() as u64, "trials");
     let reused = std::sync::atomic::AtomicUsize::new(0);
     let progress = |p: Progress| {
         reused.store(p.reused, std::sync::atomic::Ordering::SeqCst);
-        if terminal {
-            draw_progress(p);
-        }
+        bar.set_position(p.done as u64);
+        bar.set_message(format!("({} reused)", p.reused));
     };
     let records = match experiment::run(&ctx, &trials, &progress) {
         Ok(r) => r,
         Err(e) => return error(err, &e.to_string(), super::EXIT_INPUT),
     };
+    bar.finish_and_clear();
     let secs = start.elapsed().as_secs_f64();
     let reused = reused.into_inner();
     writeln!(
@@ -359,23 +360,6 @@ pub fn run_experiment(
         super::classify::write_result(&result, parsed.out.as_deref(), parsed.json, out)?;
     }
     Ok(code)
-}
-
-/// The progress bar: `[#####     ] 12/40 trials (3 reused)`.
-fn draw_progress(p: Progress) {
-    let width = 30;
-    let filled = width * p.done / p.total.max(1);
-    eprint!(
-        "\r[{}{}] {}/{} trials ({} reused)",
-        "#".repeat(filled),
-        " ".repeat(width - filled),
-        p.done,
-        p.total,
-        p.reused
-    );
-    if p.done == p.total {
-        eprintln!();
-    }
 }
 
 /// Writes the report files (with `dir`) and prints the report.

@@ -653,13 +653,13 @@ fn load_history(
     let mut sources = SourceMap::new();
     let mut desc = action::ast::Description::default();
     let mut read =
-        |path: &std::path::Path| std::fs::read_to_string(path).map_err(|e| e.to_string());
+        |path: &std::path::Path| super::builtin::read_to_string(path).map_err(|e| e.to_string());
     let mut diags = crate::base::Diagnostics::default();
     let mut files: Vec<(String, Option<String>)> =
         a.files.iter().map(|f| (f.clone(), None)).collect();
     let mut run_actions = None;
     if let Some(path) = &a.run {
-        let loaded = std::fs::read_to_string(path)
+        let loaded = super::builtin::read_to_string(path)
             .map_err(|e| e.to_string())
             .and_then(|t| crate::plan::history::History::from_json(&t))
             .and_then(|run| crate::explain::history::scene_of_run(&run));
@@ -680,7 +680,7 @@ fn load_history(
         run_actions = Some(actions);
     }
     for (name, given) in files {
-        let text = match given.map_or_else(|| std::fs::read_to_string(&name), Ok) {
+        let text = match given.map_or_else(|| super::builtin::read_to_string(&name), Ok) {
             Ok(t) => t,
             Err(e) => {
                 writeln!(err, "*** ERROR: (lucent): {name}: {e}")?;
@@ -789,7 +789,7 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
     let mut program = crate::syntax::ast::Program::default();
     let mut diags = crate::base::Diagnostics::default();
     for name in &a.files {
-        let text = match std::fs::read_to_string(name) {
+        let text = match super::builtin::read_to_string(name) {
             Ok(t) => t,
             Err(e) => {
                 writeln!(err, "*** ERROR: (lucent): {name}: {e}")?;

@@ -110,7 +110,7 @@ fn config(args: &Args) -> LearnConfig {
 
 /// Reads and parses the knowledge base; diagnostics go to `err`.
 pub(super) fn load(path: &str, err: &mut dyn Write) -> std::io::Result<Option<KbSpec>> {
-    let text = match std::fs::read_to_string(path) {
+    let text = match super::builtin::read_to_string(path) {
         Ok(t) => t,
         Err(e) => {
             writeln!(err, "*** ERROR: (lucent): {path}: {e}")?;
@@ -119,7 +119,8 @@ pub(super) fn load(path: &str, err: &mut dyn Write) -> std::io::Result<Option<Kb
     };
     let mut sources = SourceMap::new();
     let file = sources.add(path.to_string(), text);
-    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let mut read =
+        |p: &std::path::Path| super::builtin::read_to_string(p).map_err(|e| e.to_string());
     let parsed = action::load(&mut sources, file, &mut read);
     if parsed.has_errors() {
         let mut diags = crate::base::Diagnostics::default();

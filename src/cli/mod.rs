@@ -20,6 +20,8 @@ pub mod learn;
 pub mod input;
 pub mod options;
 pub mod plan;
+mod progress;
+mod builtin;
 pub mod report;
 #[cfg(feature = "sim")]
 pub mod run;
@@ -79,10 +81,11 @@ pub const MAIN_STACK: usize = 4 << 30;
 fn main_on_this_thread() -> i32 {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let stdin = std::io::stdin();
-    let stdout = std::io::stdout();
-    let stderr = std::io::stderr();
-    let mut out = std::io::BufWriter::new(stdout.lock());
-    let mut err = stderr.lock();
+    // The streams are not locked for the whole run: a worker thread that writes to standard
+    // error (a progress bar drawn from rayon's pool) would wait forever on a lock this thread
+    // holds while it waits for the workers. Each write takes the lock for its own duration.
+    let mut out = std::io::BufWriter::new(std::io::stdout());
+    let mut err = std::io::stderr();
     let code = if explain::wants_line_editor(&args) {
         // `lucent ask` on a terminal: a line editor reads the terminal itself.
         explain::run_ask_on_terminal(&args[1..], &mut out, &mut err)

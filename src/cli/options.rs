@@ -624,15 +624,57 @@ fn apply_warn(o: &mut Options, v: &str) -> Result<(), UsageError> {
     Ok(())
 }
 
+/// The verbs beside clingo mode, one line each (every one takes `--help`).
+pub const VERBS: &[(&str, &str)] = &[
+    (
+        "demo",
+        "the tabletop task end to end: plan, act in physics, replan, pictures",
+    ),
+    (
+        "run",
+        "the sense-plan-act loop on a generated or given scene, with noise",
+    ),
+    (
+        "plan",
+        "minimal plans for an AL_d scene's goal (or an English --goal)",
+    ),
+    ("translate", "an AL_d description as its CR-Prolog program"),
+    (
+        "explain",
+        "answers one question about a history, or why/why-not of any program",
+    ),
+    (
+        "ask",
+        "a dialogue of questions about a history or a saved run",
+    ),
+    (
+        "learn",
+        "learns missing axioms from surprises (decision trees)",
+    ),
+    (
+        "classify",
+        "stability and occlusion of a scene: reasoning, CNN, learned constraints",
+    ),
+    (
+        "experiment",
+        "the paper's experiments H1-H4 and scene classification, with reports",
+    ),
+    (
+        "sim",
+        "the simulated tabletop world: scenes, pictures, actions",
+    ),
+];
+
 /// The `--help` text, generated from [`OPTIONS`].
 pub fn help_text() -> String {
     let mut out = String::new();
     out.push_str(&format!("lucent version {}\n", env!("CARGO_PKG_VERSION")));
     out.push_str("usage: lucent [number] [options] [files]\n");
-    out.push_str("       lucent demo [--help]      the tabletop planning task, end to end\n");
-    out.push_str(
-        "       lucent sim <command>      the simulated tabletop world (lucent sim --help)\n\n",
-    );
+    out.push_str("       lucent VERB [--help]      the robot's verbs:\n");
+    for (verb, what) in VERBS {
+        out.push_str(&format!("         {verb:<12} {what}\n"));
+    }
+    out.push('\n');
     out.push_str(
         "Grounds and solves answer-set programs (clingo dialect, CR-Prolog rules, SPARC\n",
     );

@@ -233,7 +233,7 @@ pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> st
         )?;
         Ok(super::EXIT_INPUT)
     };
-    let text = match std::fs::read_to_string(&name) {
+    let text = match super::builtin::read_to_string(&name) {
         Ok(t) => t,
         Err(e) => {
             writeln!(err, "*** ERROR: (lucent): {name}: {e}")?;
@@ -243,7 +243,7 @@ pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> st
     let mut sources = SourceMap::new();
     let id = sources.add(name.clone(), text);
     let mut read =
-        |path: &std::path::Path| std::fs::read_to_string(path).map_err(|e| e.to_string());
+        |path: &std::path::Path| super::builtin::read_to_string(path).map_err(|e| e.to_string());
     let parsed = action::load(&mut sources, id, &mut read);
     if parsed.has_errors() {
         let mut d = Diagnostics::default();
@@ -252,7 +252,7 @@ pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> st
     }
     let mut desc = parsed.description;
     if let Some(scene) = &a.scene {
-        let text = match std::fs::read_to_string(scene) {
+        let text = match super::builtin::read_to_string(scene) {
             Ok(t) => t,
             Err(e) => {
                 writeln!(err, "*** ERROR: (lucent): {scene}: {e}")?;

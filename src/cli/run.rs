@@ -170,7 +170,7 @@ pub fn load_domain(path: Option<&str>) -> Result<Domain, String> {
     let mut sources = SourceMap::new();
     let file = match path {
         Some(p) => {
-            let text = std::fs::read_to_string(p).map_err(|e| format!("{p}: {e}"))?;
+            let text = super::builtin::read_to_string(p).map_err(|e| format!("{p}: {e}"))?;
             sources.add(p.to_string(), text)
         }
         None => sources.add(
@@ -178,7 +178,8 @@ pub fn load_domain(path: Option<&str>) -> Result<Domain, String> {
             KB_FULL.to_string(),
         ),
     };
-    let mut read = |p: &std::path::Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
+    let mut read =
+        |p: &std::path::Path| super::builtin::read_to_string(p).map_err(|e| e.to_string());
     let parsed = action::load(&mut sources, file, &mut read);
     if parsed.has_errors() {
         let mut d = crate::base::Diagnostics::default();
@@ -194,7 +195,7 @@ pub fn load_domain(path: Option<&str>) -> Result<Domain, String> {
 /// The scene: read from a file or generated.
 pub fn load_scene(args: &RunArgs) -> Result<(Scene, String), String> {
     if let Some(path) = &args.scene {
-        let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
+        let text = super::builtin::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
         let scene = Scene::from_json(&text).map_err(|e| format!("{path}: {e}"))?;
         return Ok((scene, path.clone()));
     }
