@@ -64,14 +64,15 @@ fn header(out: &mut String, width: f64, height: f64, title: &str) {
     );
 }
 
-fn legend(out: &mut String, names: &[String]) {
+/// The legend: series `i` in `COLOURS[i + first]`, the colour its marks are drawn in.
+fn legend(out: &mut String, names: &[String], first: usize) {
     let mut x = LEFT;
     for (i, name) in names.iter().enumerate() {
         let _ = writeln!(
             out,
             "<rect x=\"{x:.1}\" y=\"30\" width=\"10\" height=\"10\" fill=\"{}\"/>\
              <text x=\"{:.1}\" y=\"39\">{}</text>",
-            COLOURS[i % COLOURS.len()],
+            COLOURS[(i + first) % COLOURS.len()],
             x + 14.0,
             xml_escape(name)
         );
@@ -123,7 +124,7 @@ pub fn bar_chart(b: &Bars) -> String {
     let height = TOP + PLOT_H + BOTTOM;
     let mut out = String::new();
     header(&mut out, width, height, &b.title);
-    legend(&mut out, &b.series);
+    legend(&mut out, &b.series, 0);
     y_axis(&mut out, width, b.y_max);
     for (gi, (label, values)) in b.groups.iter().enumerate() {
         let gx = LEFT + label_w * gi as f64 + (label_w - bar_w * values.len() as f64) / 2.0;
@@ -181,6 +182,9 @@ pub struct Stacks {
     pub y_max: f64,
 }
 
+/// The colour index of a stacked chart's first part.
+const STACK_COLOUR: usize = 2;
+
 /// Draws stacked bars.
 pub fn stacked_chart(s: &Stacks) -> String {
     let label_w = s
@@ -192,7 +196,8 @@ pub fn stacked_chart(s: &Stacks) -> String {
     let height = TOP + PLOT_H + BOTTOM;
     let mut out = String::new();
     header(&mut out, width, height, &s.title);
-    legend(&mut out, &s.parts);
+    // Stacks start at the third colour (the first two are the bar charts' with/without).
+    legend(&mut out, &s.parts, STACK_COLOUR);
     y_axis(&mut out, width, s.y_max);
     for (bi, (label, parts)) in s.bars.iter().enumerate() {
         let x = LEFT + label_w * bi as f64 + (label_w - 28.0) / 2.0;
@@ -206,7 +211,7 @@ pub fn stacked_chart(s: &Stacks) -> String {
                         out,
                         "<rect x=\"{x:.1}\" y=\"{base:.1}\" width=\"28\" height=\"{h:.1}\" fill=\"{}\">\
                          <title>{}: {}</title></rect>",
-                        COLOURS[(pi + 2) % COLOURS.len()],
+                        COLOURS[(pi + STACK_COLOUR) % COLOURS.len()],
                         xml_escape(&s.parts.get(pi).cloned().unwrap_or_default()),
                         tick((v * 100.0).round() / 100.0)
                     );
@@ -262,7 +267,7 @@ pub fn scatter(s: &Scatter) -> String {
     let mut out = String::new();
     header(&mut out, width, height, &s.title);
     let names: Vec<String> = s.series.iter().map(|(n, _)| n.clone()).collect();
-    legend(&mut out, &names);
+    legend(&mut out, &names, 0);
     y_axis(&mut out, width, y_max);
     let _ = writeln!(
         out,
@@ -337,5 +342,15 @@ mod tests {
         let y_b = y_a - PLOT_H * 0.25;
         assert!(svg.contains(&format!("y=\"{y_a:.1}\"")), "{svg}");
         assert!(svg.contains(&format!("y=\"{y_b:.1}\"")), "{svg}");
+        // Each part's legend swatch has the colour of its bar segment.
+        for (i, part) in ["a", "b"].iter().enumerate() {
+            let colour = COLOURS[(i + STACK_COLOUR) % COLOURS.len()];
+            let swatch = format!("fill=\"{colour}\"/><text x=");
+            let segment = format!("fill=\"{colour}\"><title>{part}:");
+            assert!(
+                svg.contains(&swatch) && svg.contains(&segment),
+                "{part}: {svg}"
+            );
+        }
     }
 }
