@@ -245,6 +245,30 @@ fn project_atom_ranges_over_its_predicate() {
 }
 
 #[test]
+fn project_signature_projects_every_atom_of_the_predicate() {
+    // `#project p/1.` is `#project p(X).`: four projections of the eight answer sets, each
+    // shown once (clingo 5.8.3: `clingo 0 --project` on this program gives these four, c with
+    // the first answer set of each projection; the test compares the p/1 part only).
+    let prog = "{p(1..2); c}. #project p/1. #show p/1. #show c/0.";
+    let (code, out, _) = lucent(&["0", "--project"], prog);
+    assert_eq!(code, 30);
+    let mut projected: Vec<Vec<String>> = answer_sets(&out)
+        .into_iter()
+        .map(|s| s.into_iter().filter(|a| *a != "c").collect())
+        .collect();
+    projected.sort();
+    let want: Vec<Vec<&str>> = vec![vec![], vec!["p(1)"], vec!["p(1)", "p(2)"], vec!["p(2)"]];
+    assert_eq!(projected, want);
+    // The ground program says what it projects, as gringo's text output does.
+    let (code, out, _) = lucent(&["--text"], prog);
+    assert_eq!(code, 0);
+    assert!(
+        out.contains("#project p(1).") && out.contains("#project p(2)."),
+        "{out}"
+    );
+}
+
+#[test]
 fn external_value_is_a_term_of_the_instance() {
     // `[X]` takes each instance's value; values other than true, false, free and release leave
     // the instance out (clingo 5.8.3: `clingo 0` on this program gives these two answer sets).

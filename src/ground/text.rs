@@ -191,6 +191,9 @@ pub fn write_text_to(
             .collect();
         let _ = writeln!(out, "#minimize{{{}}}.", elems.join(";"));
     }
+    for &a in &p.projections {
+        let _ = writeln!(out, "#project {}.", atom(&names, a));
+    }
     for &(a, v) in &p.externals {
         let _ = writeln!(
             out,

@@ -276,8 +276,6 @@ pub struct Compiled {
     pub stmts: Vec<NStmt>,
     /// `#show` configuration.
     pub show: ShowConfig,
-    /// `#project p/n.` signatures.
-    pub project_sigs: Vec<PredId>,
     /// Predicates declared by `#defined`.
     pub defined: Vec<PredId>,
     /// Spans of the source statements, by statement index.

@@ -271,9 +271,33 @@ impl Rewriter<'_> {
                 self.out.defined.push(p);
             }
             K::Project(project) => match &**project {
+                // `#project p/2.` is `#project p(X0,X1).`: every p/2 atom the program can
+                // derive is projected, as gringo does.
                 ast::Project::Signature(s) => {
-                    let p = self.sig_pred(s);
-                    self.out.project_sigs.push(p);
+                    let args: Vec<ast::Term> = (0..s.arity)
+                        .map(|i| ast::Term {
+                            span: st.span,
+                            kind: ast::TermKind::Variable(ast::Name::new(&format!("X{i}"))),
+                        })
+                        .collect();
+                    let atom = ast::SymbolicAtom {
+                        span: st.span,
+                        negated: s.negated,
+                        name: ast::Name::new(&s.name),
+                        args: vec![args],
+                    };
+                    let project = ast::Project::Atom {
+                        atom,
+                        body: Vec::new(),
+                    };
+                    let kind = K::Project(Box::new(project));
+                    self.statement(
+                        index,
+                        &ast::Statement {
+                            span: st.span,
+                            kind,
+                        },
+                    );
                 }
                 ast::Project::Atom { atom, body } => {
                     for a in unpool_atom(atom) {
