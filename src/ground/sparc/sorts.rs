@@ -54,7 +54,7 @@ impl Cond {
 }
 
 /// The identifiers `s` with `lo <= s <= hi` and `|lo| <= |s| <= |hi|` (characters of
-/// [`ID_CHARS`] compared by code, first character a lower-case letter); `false` when there are
+/// [`ID_CHARS`], lower-case letters, compared by code); `false` when there are
 /// more than [`MAX_GENERATED`].
 fn identifier_range(lo: &[u8], hi: &[u8], out: &mut Vec<String>) -> bool {
     fn go(
