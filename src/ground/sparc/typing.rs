@@ -7,6 +7,7 @@
 //! a rule with a typing error is reported and left out (`None`), never lowered half-typed.
 
 use super::*;
+use crate::base::WarningKind;
 
 fn has_interval(t: &ast::Term) -> bool {
     match &t.kind {
@@ -254,16 +255,18 @@ impl Typing {
                     }
                     let elements = self.sorts.get(sort).map_or(&[][..], |v| &v[..]);
                     if !elements.iter().any(|&v| p.matches(rw.syms, v)) {
+                        // SPARC accepts the rule with a warning; its typing literal can never
+                        // hold, so the rule never applies.
                         let shown = snippet(rw, u.span);
                         rw.diags.push(
-                            Diagnostic::error(
+                            Diagnostic::warning(
+                                WarningKind::Other,
                                 u.span,
-                                format!("'{shown}' does not belong to sort #{sort}: no element has its form"),
+                                format!("'{shown}' does not belong to sort #{sort}: no element has its form; the literal never holds"),
                             )
                             .with_snippet(snippet(rw, a.span))
-                            .with_note(None, note),
+                            .with_note(None, note.clone()),
                         );
-                        return None;
                     }
                 }
                 out.push(sort_literal(t.span, sort, t.clone()));
@@ -408,6 +411,47 @@ impl Typing {
                     }
                 }
             }
+        }
+        // Without #maxint, a variable that occurs only inside an arithmetic argument of a head
+        // atom ranges over that argument's sort, as SPARC grounds it: `p(((X-1)/3)*3+(Y+2)/3).`
+        // with `p(#num)` and `#num = 1..9` gives p(1)..p(9).
+        if self.maxint.is_none() {
+            let mut bound = HashSet::new();
+            for l in &extra {
+                bound_vars(l, &mut bound);
+            }
+            for b in &r.body {
+                if let ast::BodyLiteral::Literal(l) = b {
+                    bound_vars(l, &mut bound);
+                }
+            }
+            let mut ranged = Vec::new();
+            if let ast::Head::Disjunction(es) = &r.head {
+                for e in es.iter().filter(|e| e.condition.is_empty()) {
+                    let ast::Atom::Symbolic(a) = &e.literal.atom else {
+                        continue;
+                    };
+                    let Some(sorts) = self.decls.get(a.name.as_str()) else {
+                        continue;
+                    };
+                    let args = a.args.first().map_or(&[][..], |v| &v[..]);
+                    for (t, sort) in args.iter().zip(sorts) {
+                        if !is_arithmetic(t) || !self.numeric.contains(sort) {
+                            continue;
+                        }
+                        let mut vars = HashSet::new();
+                        term_vars(t, false, &mut vars);
+                        let mut vars: Vec<String> =
+                            vars.into_iter().filter(|v| !bound.contains(v)).collect();
+                        vars.sort();
+                        for v in vars {
+                            bound.insert(v.clone());
+                            ranged.push(sort_literal(t.span, sort, variable(t.span, &v)));
+                        }
+                    }
+                }
+            }
+            extra.extend(ranged);
         }
         // Rule variables bound by no atom range over #nat (with #maxint).
         if self.maxint.is_some() {
