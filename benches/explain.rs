@@ -1,4 +1,4 @@
-//! Explanation benchmarks (criterion): the four question types of DOMAIN.md 6.3-6.6 on the
+//! Explanation benchmarks (criterion): the four question types of docs/domain.md 6.3-6.6 on the
 //! golden scenes of `domains/ra` under KB_full (the paper's execution example after its six
 //! actions; the tabletop task after its first minimal plan), each question parsed, answered and
 //! its proof tree built and re-checked. The history (translation, grounding with provenance,

@@ -1,4 +1,4 @@
-//! Planning on the golden scenes of DOMAIN.md 4.5 (tabletop task, exception goal, execution
+//! Planning on the golden scenes of docs/domain.md 4.5 (tabletop task, exception goal, execution
 //! example): the incremental search (one Control, one step part per horizon) against the
 //! reference that translates and grounds every horizon afresh, first minimal plan and all
 //! minimal plans. The comparison with clingo is `scripts/bench_plan.py`.

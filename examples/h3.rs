@@ -1,8 +1,8 @@
-//! The H3 run (DOMAIN.md 7.5): N generated scenes per preset (real-scene-like and
+//! The H3 run (docs/domain.md 7.5): N generated scenes per preset (real-scene-like and
 //! simulated-scene-like, `explain::h3::generate`, seeds 0..N), each planned under KB_full
 //! (`lucent::plan`, first minimal plan), its plan executed as a history (`explain::history`), and
 //! the H3 questions and beliefs asked over it (`explain::h3::check_history`): every proof tree
-//! re-checked, no literal repeated on a path, every leaf of a DOMAIN.md 6.2 kind.
+//! re-checked, no literal repeated on a path, every leaf of a docs/domain.md 6.2 kind.
 //!
 //! `cargo run --release --example h3 -- N` prints one line per triple and a summary (the record
 //! is docs/bench/h3-2026-12-01.txt). Exit status 1 if any tree failed.

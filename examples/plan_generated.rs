@@ -1,4 +1,4 @@
-//! Generated planning tasks (DOMAIN.md 7.1) over the `real` and `simulated` scene presets:
+//! Generated planning tasks (docs/domain.md 7.1) over the `real` and `simulated` scene presets:
 //! for each seed, a scene and a goal; the planner's minimal plans (all of them) are checked
 //! against the independent checks of `plan::check` (the state search's L* and E*, and
 //! the replay one transition at a time) and replayed in the physics world without noise.

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Episodes of the sense-plan-act loop (issue 13): `lucent run` on generated scenes of both
-presets with a random goal each (DOMAIN.md 7.1), 15% perception and 15% actuation noise by
+presets with a random goal each (docs/domain.md 7.1), 15% perception and 15% actuation noise by
 default, and a table of how many reach the goal, the replans per episode and why each failure
 failed. Every episode is a function of its preset and seed.
 

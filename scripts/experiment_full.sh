@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The paper's experiments H1-H4 at the paper's sizes (DOMAIN.md 7), in process, into
+# The paper's experiments H1-H4 at the paper's sizes (docs/domain.md 7), in process, into
 # docs/experiments/: report.md (our tables beside the paper's), report.json, the SVG plots, the
 # per-trial results (results/, reused when the script is run again: an interrupted run resumes),
 # and command.txt with the command line, the machine and the wall time.

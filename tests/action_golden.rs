@@ -1,4 +1,4 @@
-//! The golden tests of the AL_d translation (issue 12, DOMAIN.md 4.5): descriptions in
+//! The golden tests of the AL_d translation (issue 12, docs/domain.md 4.5): descriptions in
 //! `domains/ra/` translated, grounded and solved with Lucent's own pipeline, every answer set
 //! checked independently.
 //!

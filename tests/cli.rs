@@ -1,5 +1,5 @@
 //! Command-line tests: exit codes, output sections and diagnostic format, through the real
-//! binary. Expected outputs are derived from REFERENCE.md (exit codes) and from gringo's
+//! binary. Expected outputs are derived from docs/reference.md (exit codes) and from gringo's
 //! diagnostic format (`file:line:col-col: error: message`).
 
 #[path = "support/cli.rs"]

@@ -2,7 +2,7 @@
 //! against the reference tools:
 //! (a) `lucent --mode=gringo F | clasp` against `gringo F | clasp` (clingo 5.4's gringo and
 //!     clasp 3.3.5), which checks the grounder with the reference solver;
-//! (b) `lucent F` against clingo 5.8.3 (the Python module, REFERENCE.md's semantic reference),
+//! (b) `lucent F` against clingo 5.8.3 (the Python module, docs/reference.md's semantic reference),
 //! result word included (`SATISFIABLE`, `UNSATISFIABLE`, `OPTIMUM FOUND`).
 //! Every run is `-n 0 --opt-mode=optN --outf=2`.
 //!

@@ -57,7 +57,7 @@ fn tabletop_answer_sets_match_clingo() {
             v
         })
         .collect();
-    // Each answer set is printed once (REFERENCE.md), so the count must match too.
+    // Each answer set is printed once (docs/reference.md), so the count must match too.
     assert_eq!(
         json["Call"][0]["Witnesses"].as_array().unwrap().len(),
         got.len()

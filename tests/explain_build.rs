@@ -1,7 +1,8 @@
-//! Proof trees built over hand-written ground programs shaped like the RA translation (DOMAIN.md
-//! 3), each re-checked independently: support, preference (facts, spatial algebra, domain axioms,
-//! inertia, closed world), cycles cut, inertia chains carried back to the action that caused a
-//! value, CR assumptions, literals that do not hold, normalization, and the branch limit.
+//! Proof trees built over hand-written ground programs shaped like the RA translation
+//! (docs/domain.md 3), each re-checked independently: support, preference (facts, spatial
+//! algebra, domain axioms, inertia, closed world), cycles cut, inertia chains carried back to the
+//! action that caused a value, CR assumptions, literals that do not hold, normalization, and the
+//! branch limit.
 
 use std::collections::HashSet;
 

@@ -1,4 +1,4 @@
-//! The controlled-English parser (DOMAIN.md 6.1) over the built-in lexicon: every request
+//! The controlled-English parser (docs/domain.md 6.1) over the built-in lexicon: every request
 //! pattern, synonyms, contractions, number words, step phrases, and the replies to questions
 //! that are not understood. Snapshots list `question => parse`.
 
@@ -7,7 +7,7 @@ use lucent::explain::english::{NotUnderstood, Parser, Question};
 use lucent::explain::lexicon::Lexicon;
 use lucent::explain::pattern::Pattern;
 
-/// The execution-example scene of DOMAIN.md 1.6.
+/// The execution-example scene of docs/domain.md 1.6.
 const SCENE: &[&str] = &["red_block", "white_block", "green_can", "pitcher", "mug"];
 
 fn run(objects: &[&str], questions: &[&str]) -> String {

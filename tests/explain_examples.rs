@@ -1,4 +1,4 @@
-//! The paper's execution examples 1-3 (DOMAIN.md 6.8) over a REAL run: the execution-example
+//! The paper's execution examples 1-3 (docs/domain.md 6.8) over a REAL run: the execution-example
 //! scene (`domains/ra/scenes/execution_example.ald`, KB_full) with the paper's six actions
 //! executed as a history, grounded and solved through `control::Control` and explained through
 //! the adapter (`explain::history`, `explain::oracle`). Each question goes from English to an

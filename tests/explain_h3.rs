@@ -1,6 +1,6 @@
-//! H3 (DOMAIN.md 7.5): on generated (scene, goal, plan) triples over KB_full, every proof tree
-//! passes the re-check, no literal repeats on a path, and every leaf is of a kind DOMAIN.md 6.2
-//! lists (`explain::h3::check_tree`). By default a subset of the triples runs (the first seeds
+//! H3 (docs/domain.md 7.5): on generated (scene, goal, plan) triples over KB_full, every proof tree
+//! passes the re-check, no literal repeats on a path, and every leaf is of a kind docs/domain.md
+//! 6.2 lists (`explain::h3::check_tree`). By default a subset of the triples runs (the first seeds
 //! of each preset); the full 200 run with `cargo run --release --example h3 -- 100`, whose
 //! figures are in docs/bench/h3-2026-12-01.txt.
 //!

@@ -1,4 +1,4 @@
-//! H4 (DOMAIN.md 6.9, 7.5): literal precision and recall of the answers to a curated set of
+//! H4 (docs/domain.md 6.9, 7.5): literal precision and recall of the answers to a curated set of
 //! questions over generated scenes (tests/data/h4: real-scene-like and simulated-scene-like,
 //! drawn by `explain::h3::generate`), each question's expected literals derived by hand from
 //! KB_full and explained beside it. With KB_full, every answer must match exactly: precision
@@ -9,10 +9,10 @@
 //! Format of `tests/data/h4/NAME.questions` (NAME.ald is the scene): `plan: a@0; b@1; ...` (the
 //! plan KB_full's planner must return first, checked by hand to be minimal), then one question
 //! per line, `TYPE | English | lit; lit; ... | why these literals` (`-` for no literals), with
-//! `#` comments. Answers are asked in full mode (DOMAIN.md 6.9: the truth lists every condition). Matching
-//! canonicalizes converse relations (`below(A,B)` is `above(B,A)`, `behind`/`front`,
-//! `left`/`right`). An empty answer has precision 100% when the truth is empty too, else 0%; an
-//! empty truth has recall 100%.
+//! `#` comments. Answers are asked in full mode (docs/domain.md 6.9: the truth lists every
+//! condition). Matching canonicalizes converse relations (`below(A,B)` is `above(B,A)`,
+//! `behind`/`front`, `left`/`right`). An empty answer has precision 100% when the truth is empty
+//! too, else 0%; an empty truth has recall 100%.
 
 #[path = "support/ra_scenes.rs"]
 mod ra_scenes;

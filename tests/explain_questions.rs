@@ -1,7 +1,7 @@
-//! The four questions (DOMAIN.md 6.3-6.6) end to end, from English to the answer's text and
+//! The four questions (docs/domain.md 6.3-6.6) end to end, from English to the answer's text and
 //! literals, over the hand-written program of the execution example (tests/support/ra_oracle.rs):
-//! the paper's examples 1-3 (DOMAIN.md 6.8), the missing-step rule, follow-up steps, concise and
-//! full modes, and questions outside the history. Every proof tree is re-checked by `answer`.
+//! the paper's examples 1-3 (docs/domain.md 6.8), the missing-step rule, follow-up steps, concise
+//! and full modes, and questions outside the history. Every proof tree is re-checked by `answer`.
 
 use lucent::control::Symbol;
 use lucent::explain::english::Parser;

@@ -1,8 +1,8 @@
 //! Proof trees: the data type, its independent re-check (accepting a correct tree and rejecting
 //! each kind of wrong one), and the drawings (DOT and SVG snapshots). The tree is the paper's
-//! execution example 2 (DOMAIN.md 6.8), written out by hand from the tabletop encoding's rules:
-//! `-occurs(pickup(rob1,white_block),0)` by E7 from `below(white_block, green_can)@0`, by SR3
-//! from `above(green_can, white_block)@0`, by SR1b from the observation
+//! execution example 2 (docs/domain.md 6.8), written out by hand from the tabletop encoding's
+//! rules: `-occurs(pickup(rob1,white_block),0)` by E7 from `below(white_block, green_can)@0`, by
+//! SR3 from `above(green_can, white_block)@0`, by SR1b from the observation
 //! `on(green_can, white_block)@0`; the action-CWA branch beside it.
 
 use std::collections::HashSet;

@@ -1,5 +1,5 @@
-//! Literal verbalization and the answer templates of DOMAIN.md 6.7 over the built-in lexicon:
-//! every literal kind in each tense, merging, the plan and the paper's answers (DOMAIN.md 6.8)
+//! Literal verbalization and the answer templates of docs/domain.md 6.7 over the built-in lexicon:
+//! every literal kind in each tense, merging, the plan and the paper's answers (docs/domain.md 6.8)
 //! from their literals.
 
 use lucent::control::Symbol;
@@ -112,7 +112,7 @@ fn merging_literals_with_the_same_predicate_and_first_argument() {
     );
 }
 
-/// The paper's answers (DOMAIN.md 6.8) said from the literals the questions select.
+/// The paper's answers (docs/domain.md 6.8) said from the literals the questions select.
 #[test]
 fn the_papers_answers() {
     let lex = Lexicon::ra();

@@ -1,6 +1,6 @@
 //! `learn::kb` over the RA domain's AL_d files (domains/ra): the oracle (KB_full with the
 //! learner's switches) and the learner (`learner` profile) disagree exactly where the five H1
-//! targets are missing, surprises are classified as DOMAIN.md 5.1 says, and a learned axiom
+//! targets are missing, surprises are classified as docs/domain.md 5.1 says, and a learned axiom
 //! added to the learner changes its predictions at once.
 
 use lucent::learn::episode::{LearnerKb, World};

@@ -1,6 +1,6 @@
 //! The learning loop (`learn::episode`) over a test double of the RA one-step transition.
 //!
-//! The double is written here from DOMAIN.md 2.1.1 (on, above by transitivity, below as its
+//! The double is written here from docs/domain.md 2.1.1 (on, above by transitivity, below as its
 //! converse, touch both ways), 2.2 (C1-C5) and 2.3 (E1, E2, E4, E5, E5', E7) for the H1 scene,
 //! with no stability, occlusion or absence (the H1 generator never produces them). It is not
 //! the experiment's oracle (that is KB_full through `control`); it checks that the loop

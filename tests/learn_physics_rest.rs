@@ -1,6 +1,6 @@
 //! The physics oracle reports a pickup's effect, never a fall that the pickup did not cause:
 //! in every realisable state, picking up one object leaves the `on` facts of every other object
-//! as they were (DOMAIN.md C3, C4; I3 makes the rest persist). States from the H1 generator
+//! as they were (docs/domain.md C3, C4; I3 makes the rest persist). States from the H1 generator
 //! (`learn::state`) with a pickup, against `learn::physics::PhysicsWorld`.
 //!
 //! Before the rebuilt-world stand test (`PhysicsWorld::stands`), 10 of 116 executable pickups

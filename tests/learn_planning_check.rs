@@ -5,13 +5,13 @@
 //!
 //! A one-action plan is incorrect when its prediction differs from the KB_full transition:
 //! the learner takes the action to be executable and KB_full does not, or the reverse, or the
-//! successor states differ in the observable vocabulary (the discrepancy of DOMAIN.md 5.1, which
-//! is what `learn::surprise::classify` reports).
+//! successor states differ in the observable vocabulary (the discrepancy of docs/domain.md 5.1,
+//! which is what `learn::surprise::classify` reports).
 //!
 //! The multi-step version (issue 15's judged item): on a fixed set of generated (scene, goal)
-//! pairs (`experiment::h2::pair`, DOMAIN.md 7.1), the planner with the `learner` profile makes
+//! pairs (`experiment::h2::pair`, docs/domain.md 7.1), the planner with the `learner` profile makes
 //! incorrect plans, and with the learned axioms added it makes none; plans are judged by
-//! `plan::check` (replay against KB_full, DOMAIN.md 4.3).
+//! `plan::check` (replay against KB_full, docs/domain.md 4.3).
 
 use lucent::base::rng::SplitMix64;
 use lucent::explain::h3::ScenePreset;

@@ -1,4 +1,4 @@
-//! `plan::check` (DOMAIN.md 4.3): plans replayed one transition at a time and classified
+//! `plan::check` (docs/domain.md 4.3): plans replayed one transition at a time and classified
 //! against the minimal length and CR count that a search over states finds.
 //!
 //! - the planner's minimal plans for the golden scenes are optimal, with L* and E* as 4.5

@@ -1,4 +1,4 @@
-//! Generated planning tasks (DOMAIN.md 7.1) over both scene presets, a fixed subset of the
+//! Generated planning tasks (docs/domain.md 7.1) over both scene presets, a fixed subset of the
 //! 200-pair run of `examples/plan_generated.rs` (figures in
 //! docs/bench/plan-generated-2026-12-05.md): every distinct minimal plan the planner returns is
 //! optimal under the independent checks of `plan::check` (replay one transition at a time;

@@ -1,4 +1,4 @@
-//! The golden tests of DOMAIN.md 4.5 through the planner (`lucent::plan`), on the scenes of
+//! The golden tests of docs/domain.md 4.5 through the planner (`lucent::plan`), on the scenes of
 //! `domains/ra/scenes` under KB_full: the iterative horizon finds the minimal length itself.
 //!
 //! - tabletop task: length 3 and exactly the four plans (the pitcher to the table or to the

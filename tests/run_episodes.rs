@@ -1,9 +1,9 @@
 //! A handful of episodes of the sense-plan-act loop in the rapier tabletop world, with the
-//! paper's noise (15% perception errors, 15% manipulation failures) and random goals (DOMAIN.md
-//! 7.1): each reaches its goal in the world's ground truth, or ends with a recorded reason that
-//! the test prints; every discrepancy names a failure or a differing literal and is followed by
-//! a plan made at the next step; an episode is deterministic per seed. The 100-episode record is
-//! `scripts/episodes.py` (docs/bench/episodes-2026-12-05.md).
+//! paper's noise (15% perception errors, 15% manipulation failures) and random goals
+//! (docs/domain.md 7.1): each reaches its goal in the world's ground truth, or ends with a recorded
+//! reason that the test prints; every discrepancy names a failure or a differing literal and is
+//! followed by a plan made at the next step; an episode is deterministic per seed. The 100-episode
+//! record is `scripts/episodes.py` (docs/bench/episodes-2026-12-05.md).
 #![cfg(feature = "sim")]
 
 use lucent::plan::act::{run, Domain, RunConfig};

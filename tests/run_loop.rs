@@ -8,7 +8,7 @@
 //! instead of executed, that a look contradicting the expectation is confirmed by more looks (a
 //! single misreading outvoted, a repeated one believed), that a putdown after which the next
 //! action was blocked is not repeated, and that a recorded discrepancy is what the learner's
-//! surprise classification (DOMAIN.md 5.1) consumes.
+//! surprise classification (docs/domain.md 5.1) consumes.
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -216,7 +216,7 @@ fn a_failed_action_is_a_discrepancy_and_the_robot_replans_from_what_it_sees() {
     );
 
     // The learner's classification consumes the discrepancy as it is: the hand was predicted
-    // full and observed empty, a literal predicted but not observed (DOMAIN.md 5.1).
+    // full and observed empty, a literal predicted but not observed (docs/domain.md 5.1).
     let lit = |t: &str| {
         let s = sym(t);
         let a: Vec<String> = s.args().iter().map(|a| a.to_string()).collect();

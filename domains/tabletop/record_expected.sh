@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Records expected/plans.json from clingo (the reference, never part of Lucent).
 # clingo has no CR rules, so the one CR rule `d1` is rewritten into its cardinality-minimal
-# encoding (REFERENCE.md, DOMAIN.md 3.4): guess the application atom when the body holds,
+# encoding (docs/reference.md, docs/domain.md 3.4): guess the application atom when the body holds,
 # derive the head, minimize the number of applications. Then all optimal models are kept.
 set -euo pipefail
 cd "$(dirname "$0")"

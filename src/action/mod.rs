@@ -1,5 +1,5 @@
 //! AL_d: action-language system descriptions and histories (grammar/action.ebnf), translated to
-//! CR-Prolog programs (DOMAIN.md section 3).
+//! CR-Prolog programs (docs/domain.md section 3).
 //!
 //! Pipeline: [`parse`] (text to [`ast::Description`], never fails), [`load`] (resolves
 //! `include`s through a caller-supplied reader: only `cli` and tests touch files), [`check`]

@@ -17,7 +17,7 @@ const HELP: &str = "\
 usage: lucent translate FILE.ald [--profile NAME] [-c NAME=VALUE]...
 
 Translates an AL_d system description and history (grammar/action.ebnf) into a CR-Prolog
-program (DOMAIN.md section 3) and prints it. Each group of rules is preceded by a comment that
+program (docs/domain.md section 3) and prints it. Each group of rules is preceded by a comment that
 names the AL_d statement it came from (label, kind, text). --profile chooses a switch bundle the
 description declares (e.g. tabletop, learner, main2019); -c sets a switch (e.g. -c horizon=3).
 ";

@@ -8,7 +8,7 @@
 //! Invariants: the demo is a client of the same library paths as `lucent run` (`plan::act`,
 //! `plan::tabletop`, `explain::verbalize`); it is deterministic for its seed; it exits 0 when
 //! the goal was reached, 20 when not, 65 for bad input, 1 for a bad command line. Built without
-//! the `sim` feature it plans the built-in tabletop task of DOMAIN.md 4.5 instead and says so.
+//! the `sim` feature it plans the built-in tabletop task of docs/domain.md 4.5 instead and says so.
 
 use std::io::Write;
 
@@ -18,7 +18,7 @@ use crate::plan::{plan, PlanConfig};
 
 use super::KB_FULL;
 
-/// The tabletop task of DOMAIN.md 4.5 (it includes `../kb_full.ald`).
+/// The tabletop task of docs/domain.md 4.5 (it includes `../kb_full.ald`).
 const H1_SCENE: &str = include_str!("../../domains/ra/scenes/h1.ald");
 const TABLETOP_TASK: &str = include_str!("../../domains/ra/scenes/tabletop_task.ald");
 
@@ -56,7 +56,7 @@ fn plan_only(out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
     writeln!(
         out,
         "This build has no simulator (built without the `sim` feature): planning the tabletop \
-         task of DOMAIN.md 4.5 only."
+         task of docs/domain.md 4.5 only."
     )?;
     match plan(&parsed.description, &sources, &PlanConfig::default()) {
         Ok(found) => {

@@ -28,7 +28,7 @@ usage: lucent experiment h1|h2|h3|h4|all [OPTIONS]
        lucent experiment trial ID --out DIR
        lucent experiment merge DIR [--outf=0|2]
 
-The paper's experiments (DOMAIN.md 7): H1 learning accuracy (Table 1), H2 plan quality
+The paper's experiments (docs/domain.md 7): H1 learning accuracy (Table 1), H2 plan quality
 (Tables 2 and 3), H3 proof-tree checks, H4 explanation precision and recall (Tables 4 and 5).
 Trials run in parallel (rayon); every table is printed beside the paper's. A hypothesis whose
 pieces this build lacks is reported as \"not available: <reason>\".
@@ -42,7 +42,7 @@ pieces this build lacks is reported as \"not available: <reason>\".
                        domains/ra/kb_full.ald)
   --code-balance       H1: store capped inconsistent trials with label 0 (the authors' code)
   --code-samples       H1: take samples from every trial (the authors' code)
-  --count-every-trial  H1: end a run after 100 quiet trials of any kind (DOMAIN.md 5.2 as
+  --count-every-trial  H1: end a run after 100 quiet trials of any kind (docs/domain.md 5.2 as
                        written; by default only trials the learner would act in count)
   --oracle kb_full|physics
                        H1's oracle: KB_full (default) or the physics world (feature `sim`);

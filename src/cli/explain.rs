@@ -1,4 +1,4 @@
-//! `lucent explain` and `lucent ask`: the robot's explanations (DOMAIN.md section 6) on the
+//! `lucent explain` and `lucent ask`: the robot's explanations (docs/domain.md section 6) on the
 //! command line, and `--why`/`--why-not` for any clingo program.
 //!
 //! - `lucent explain SCENE.ald... [--happened PLAN] [--goal LITS] -q QUESTION`: one question
@@ -52,7 +52,7 @@ usage: lucent explain SCENE.ald... [--happened PLAN] [--goal LITERALS] -q QUESTI
        lucent ask SCENE.ald... [--happened PLAN] [--goal LITERALS] [options]
        lucent ask --run RUN.json [DOMAIN.ald] [options]
 
-Answers questions about a history of the robot (DOMAIN.md 6): plan description, why did you
+Answers questions about a history of the robot (docs/domain.md 6): plan description, why did you
 X, why did you not X, why did you believe Y. The history is the scene (AL_d files, usually a
 scene that includes domains/ra/kb_full.ald) with an executed plan (--happened \"a@0; b@1\" or
 one action per `;`), or else the first minimal plan the planner finds for the goal.

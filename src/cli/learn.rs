@@ -1,4 +1,4 @@
-//! `lucent learn` (one learning run, DOMAIN.md 5.2): the knowledge base is read here (also for
+//! `lucent learn` (one learning run, docs/domain.md 5.2): the knowledge base is read here (also for
 //! `lucent experiment`, `cli::experiment`), everything else is `learn`.
 //!
 //! Invariants: files are read and written only here; bad AL_d input is a gringo-style
@@ -18,7 +18,7 @@ const HELP_LEARN: &str = "\
 usage: lucent learn [--kb FILE.ald] [--seed N] [--run I] [--episodes N] [-o FILE] [--tables DIR]
                     [--oracle kb_full|physics] [--outf=0|2]
 
-One axiom-learning run (DOMAIN.md section 5): random one-step trials against the oracle
+One axiom-learning run (docs/domain.md section 5): random one-step trials against the oracle
 (KB_full with the learner's switches), a learner knowledge base with the `learner` profile,
 and after each surprise a 100-tree ensemble whose kept axioms join the learner at once.
 Prints what was learned, when and from which surprise; -o writes the learned axioms as an
@@ -28,7 +28,7 @@ of `lucent experiment h1 --seed N` (default 0).
   --code-samples   take samples from every trial, as the authors' code does
   --tables DIR     write each episode's feature table (the lifted samples the trees were
                    trained on) to DIR/episode-N.csv: one column per feature, then the label
-  --count-every-trial  end the run after 100 quiet trials of any kind (DOMAIN.md 5.2 as
+  --count-every-trial  end the run after 100 quiet trials of any kind (docs/domain.md 5.2 as
                    written); by default only trials whose action the learner takes to be
                    executable count
   --oracle kb_full|physics  the oracle: KB_full (default) or the physics world (feature

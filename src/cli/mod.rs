@@ -1,7 +1,7 @@
 //! The command line: arguments, clingo-compatible output and exit codes. The only module that
 //! does I/O (files, standard streams, the clock).
 //!
-//! Invariants: every run ends with one of the exit codes of REFERENCE.md (10, 20, 30 after
+//! Invariants: every run ends with one of the exit codes of docs/reference.md (10, 20, 30 after
 //! solving; 1 interrupted or a bad command line, as clingo 5.4; 65 input or grounding error, after
 //! `UNKNOWN` and the summary on standard output as clingo prints them; 70 a verb or stage this
 //! build does not provide, or an I/O failure); diagnostics go to

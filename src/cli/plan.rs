@@ -27,7 +27,7 @@ usage: lucent plan FILE.ald [--scene FILE] [--goal GOAL] [--all] [--max-horizon 
                    [--search incremental|retranslate] [--check] [--profile NAME]
                    [-c NAME=VALUE]... [--outf=2]
 
-Finds a minimal plan for the goal of an AL_d planning problem (DOMAIN.md 4.1-4.2): horizons
+Finds a minimal plan for the goal of an AL_d planning problem (docs/domain.md 4.1-4.2): horizons
 0, 1, ..., H are tried in turn (default H = max(9, 2 * objects + 2)) on one multi-shot solver;
 plans are ordered by length, then by CR rule applications.
 
@@ -38,7 +38,7 @@ plans are ordered by length, then by CR rule applications.
                  English (\"put the pitcher on the red block\"); replaces FILE's goal
   --all          print every distinct minimal plan
   --fixed N      the authors' fixed horizon N: every plan reaching the goal by step N
-  --check        classify each printed plan (optimal, sub-optimal, incorrect; DOMAIN.md 4.3)
+  --check        classify each printed plan (optimal, sub-optimal, incorrect; docs/domain.md 4.3)
   --outf=2       JSON output
   --emit-problem print the problem (FILE with the scene and goal added) as one AL_d file
 ";

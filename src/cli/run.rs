@@ -1,6 +1,6 @@
 //! `lucent run`: the sense-plan-act loop of [`crate::plan::act`] in the simulated tabletop
 //! world, on a scene file or a generated scene (preset and seed), towards a goal given as
-//! literals or drawn at random (DOMAIN.md 7.1). A progress line per event goes to standard
+//! literals or drawn at random (docs/domain.md 7.1). A progress line per event goes to standard
 //! error (and to `--log FILE`); the summary goes to standard output, as text or, with
 //! `--outf=2`, as the run's history in JSON (the `--save-history` format).
 //!
@@ -33,7 +33,7 @@ const HELP: &str = "\
 usage: lucent run [DOMAIN.ald] (--scene FILE.json | --preset NAME --seed N) [--goal LITERAL]...
                   [options]
 
-Runs the sense-plan-act loop (DOMAIN.md 4.4) in the simulated tabletop world: perceive (with
+Runs the sense-plan-act loop (docs/domain.md 4.4) in the simulated tabletop world: perceive (with
 noise), doubt what is inconsistent, plan a minimal plan, execute one action at a time in the
 physics world, perceive again, compare the prediction with the observation, and replan after a
 discrepancy or a failed action, until the goal is observed (and confirmed by a second look) or
@@ -43,7 +43,7 @@ a budget runs out. DOMAIN.ald defaults to the built-in KB_full (domains/ra/kb_fu
   --preset NAME           generate a scene: real, simulated or h1 (default real)
   --seed N                the scene's seed (default 0); it also seeds noise and failures
   --goal LITERAL          a goal literal: on(X,Y), relation(S,X,Y) or in_hand(rob1,X);
-                          repeat for a conjunction; without it a goal is drawn (DOMAIN.md 7.1)
+                          repeat for a conjunction; without it a goal is drawn (docs/domain.md 7.1)
   --goal-seed N           the seed of the drawn goal (default: the scene's seed)
   --perception-noise P    probability that a perceived relation is wrong (default 0.15)
   --actuation-noise P     probability that an action slips (default 0.15)

@@ -1,5 +1,5 @@
-//! H1, learning accuracy (DOMAIN.md 7.3, the paper's Table 1): one trial is one learning run of
-//! `learn::h1` against the setup's oracle (KB_full, or the physics world with `--oracle
+//! H1, learning accuracy (docs/domain.md 7.3, the paper's Table 1): one trial is one learning run
+//! of `learn::h1` against the setup's oracle (KB_full, or the physics world with `--oracle
 //! physics`, reported under its own name); the table sums the runs' strict and relaxed counts
 //! (5.10).
 //!
@@ -105,8 +105,8 @@ pub fn learned_axioms(ctx: &Context, run: usize) -> Result<String, TrialError> {
 pub struct Summary {
     /// The oracle the runs learned against (`kb_full`, `physics`).
     pub oracle: String,
-    /// Whether a run ended after 100 quiet trials of any kind (DOMAIN.md 5.2 as written) rather
-    /// than 100 the learner would act in (`LearnConfig::count_every_trial`).
+    /// Whether a run ended after 100 quiet trials of any kind (docs/domain.md 5.2 as written)
+    /// rather than 100 the learner would act in (`LearnConfig::count_every_trial`).
     pub count_every_trial: bool,
     /// Strict precision and recall over all runs, %.
     pub strict: PrecisionRecall,
@@ -179,7 +179,7 @@ pub fn markdown(s: &Summary) -> String {
     let mut out = String::new();
     out.push_str("## H1: learning accuracy (Table 1)\n\n");
     out.push_str(&format!(
-        "{} learning runs against {} (DOMAIN.md 7.3), scored against the five targets \
+        "{} learning runs against {} (docs/domain.md 7.3), scored against the five targets \
          E7, E5, E2, C3, C2 (5.10). Counts summed over the runs: strict TP {} FP {} FN {}, \
          relaxed TP {} FP {} FN {}. A run ends after 100 quiet trials {}.\n\n",
         s.runs.len(),
@@ -196,7 +196,7 @@ pub fn markdown(s: &Summary) -> String {
         s.relaxed_counts.fp,
         s.relaxed_counts.fn_,
         if s.count_every_trial {
-            "of any kind (DOMAIN.md 5.2 as written, `--count-every-trial`)"
+            "of any kind (docs/domain.md 5.2 as written, `--count-every-trial`)"
         } else {
             "in which the learner would act, i.e. takes the action to be executable [ours; \
              `--count-every-trial` counts every trial as 5.2 is written]"

@@ -1,4 +1,4 @@
-//! H2, plan quality with and without the learned axioms (DOMAIN.md 7.4, the paper's Tables 2
+//! H2, plan quality with and without the learned axioms (docs/domain.md 7.4, the paper's Tables 2
 //! and 3). A trial is one (scene, goal) pair of a preset, planned under both knowledge-base
 //! conditions of 7.2 (without: the `learner` profile; with: plus the axioms of H1 run
 //! `configuration mod runs`), in the authors' fixed-horizon mode and with our iterative planner,
@@ -34,7 +34,7 @@ use crate::explain::h3::{generate, Goal, Scene, ScenePreset};
 use crate::plan::check::{State, Successor};
 use crate::plan::{self, replay, PlanConfig, Search, StateSearch};
 
-/// The authors' horizon (DOMAIN.md 7.4: 9 by default).
+/// The authors' horizon (docs/domain.md 7.4: 9 by default).
 pub const FIXED_HORIZON: usize = 9;
 
 /// Answer sets kept per fixed-horizon solve.
@@ -72,7 +72,7 @@ fn level(scene: &Scene, x: &str) -> usize {
     n
 }
 
-/// A goal for `scene` by DOMAIN.md 7.1's rule: with probability 0.2 `in_hand(rob1, X)`, else
+/// A goal for `scene` by docs/domain.md 7.1's rule: with probability 0.2 `in_hand(rob1, X)`, else
 /// `on(X, Y)` with X movable, Y the table or an object with a flat top that is not small,
 /// Y != X, not already true, and Y's tower low enough that X would stand at level 4 at most.
 pub fn draw_goal(scene: &Scene, rng: &mut SplitMix64) -> Goal {
@@ -779,7 +779,7 @@ pub fn markdown(s: &Summary) -> String {
     let mut out = String::from("## H2: plan quality (Tables 2 and 3)\n\n");
     out.push_str(
         "Each (scene, goal) pair is planned without the learned axioms (`learner` profile) and \
-         with the axioms one H1 run learned (DOMAIN.md 7.2); plans are classified against \
+         with the axioms one H1 run learned (docs/domain.md 7.2); plans are classified against \
          KB_full (4.3). The authors' fixed-horizon mode first, then our iterative planner, which \
          by construction returns only minimal plans.\n\n",
     );
@@ -788,8 +788,8 @@ pub fn markdown(s: &Summary) -> String {
     out.push_str(&format!(
         "Why the fixed horizon's plans with the learned axioms are mostly sub-optimal: at \
          horizon {FIXED_HORIZON} every trajectory that reaches the goal by step \
-         {FIXED_HORIZON} is an answer set and nothing minimizes length (DOMAIN.md 4.1), so the \
-         first {FIXED_CAP} answer sets the solver enumerates are mostly long detours. Their \
+         {FIXED_HORIZON} is an answer set and nothing minimizes length (docs/domain.md 4.1), so \
+         the first {FIXED_CAP} answer sets the solver enumerates are mostly long detours. Their \
          distinct plans average {} steps where the least plan has {} (real, {} pairs) and {} \
          against {} (simulated, {} pairs); the enumeration hit the cap in {} and {} pairs; no \
          least plan needs a CR exception in {} and {} of those pairs, so sub-optimal means \

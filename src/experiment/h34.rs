@@ -1,4 +1,4 @@
-//! H3, proof-tree checks, and H4, explanation precision and recall (DOMAIN.md 7.5, the paper's
+//! H3, proof-tree checks, and H4, explanation precision and recall (docs/domain.md 7.5, the paper's
 //! Tables 4 and 5). A trial is one (scene, goal) pair of a preset, the same pair as H2's trial
 //! with that id (`h2::pair`: configuration `index / goals`, goal `index mod goals`, so the
 //! paper's 20 configurations with 5 goals each, shared by H2, H3 and H4), planned under KB_full
@@ -40,7 +40,8 @@ pub fn availability(_h: Hypothesis) -> Result<(), String> {
     Ok(())
 }
 
-/// The planner's horizon budget for the generated scenes (DOMAIN.md 7.1 scenes need at most 8).
+/// The planner's horizon budget for the generated scenes (docs/domain.md 7.1 scenes
+/// need at most 8).
 const MAX_HORIZON: usize = 10;
 
 /// The scene of a trial, loaded against the domain: H2's (scene, goal) pair with the trial's
@@ -177,13 +178,13 @@ fn h3_trial(trial: &Trial, full: Option<&History>, seed: u64) -> H3Trial {
     };
     t.rechecked = report.trees - count("recheck:");
     t.repeats = count("repeats on a path");
-    t.bad_leaves = count("not one of DOMAIN.md 6.2");
+    t.bad_leaves = count("not one of docs/domain.md 6.2");
     t.failures = report.failures;
     t
 }
 
 /// The answer literals of `questions` asked in order (one session) over a history, converse
-/// relations canonicalized (DOMAIN.md 6.9); an answer that fails is the empty set.
+/// relations canonicalized (docs/domain.md 6.9); an answer that fails is the empty set.
 fn literal_sets(h: &History, questions: &[Question]) -> Vec<BTreeSet<String>> {
     let lexicon = Lexicon::ra();
     let scn = h.scenario();
@@ -199,8 +200,8 @@ fn literal_sets(h: &History, questions: &[Question]) -> Vec<BTreeSet<String>> {
         .collect()
 }
 
-/// H4: the four questions of DOMAIN.md 7.5 (those `h3::check_history` asks first: the plan, why
-/// X for a random plan action, why not X with one argument changed, a related belief) drawn
+/// H4: the four questions of docs/domain.md 7.5 (those `h3::check_history` asks first: the plan,
+/// why X for a random plan action, why not X with one argument changed, a related belief) drawn
 /// over KB_full's history; the truth is KB_full's full-mode answer (6.9); the same questions
 /// are asked over the learner profile's own history (without) and over the learner profile
 /// plus the axioms H1 run `configuration mod runs` learned (with), and each answer scored.
@@ -278,7 +279,7 @@ fn learned_axioms(ctx: &Context, trial: &Trial) -> Result<String, TrialError> {
         .ok_or_else(|| TrialError::Input(format!("{}: no learned axioms", h1.id())))
 }
 
-/// The converse-canonical text of a literal (DOMAIN.md 6.9): inside `holds`,
+/// The converse-canonical text of a literal (docs/domain.md 6.9): inside `holds`,
 /// `relation(below,A,B)` is `relation(above,B,A)`, `behind` is `front` and `right` is `left`.
 pub fn canonical(t: &Symbol) -> String {
     let flip = |f: &Symbol| -> Symbol {
@@ -312,7 +313,7 @@ pub fn canonical(t: &Symbol) -> String {
     }
 }
 
-/// Precision and recall of an answer's literals against the truth (DOMAIN.md 6.9): an empty
+/// Precision and recall of an answer's literals against the truth (docs/domain.md 6.9): an empty
 /// answer has precision 1 when the truth is empty too, else 0; an empty truth has recall 1.
 pub fn score(answer: &BTreeSet<String>, truth: &BTreeSet<String>) -> (f64, f64) {
     let hit = answer.intersection(truth).count() as f64;
@@ -329,7 +330,7 @@ pub fn score(answer: &BTreeSet<String>, truth: &BTreeSet<String>) -> (f64, f64) 
     (p, r)
 }
 
-/// The four question types of DOMAIN.md 6.3-6.6, in the tables' order.
+/// The four question types of docs/domain.md 6.3-6.6, in the tables' order.
 pub const QUERY_TYPES: [&str; 4] = ["plan", "why", "why_not", "belief"];
 
 /// The rows' names in the paper.
@@ -370,7 +371,7 @@ pub struct H3Trial {
     pub rechecked: usize,
     /// Trees with a literal repeated on a path.
     pub repeats: usize,
-    /// Trees with a leaf of a kind DOMAIN.md 6.2 does not list.
+    /// Trees with a leaf of a kind docs/domain.md 6.2 does not list.
     pub bad_leaves: usize,
     /// Trials whose scene KB_full cannot plan within the horizon budget (no trees).
     #[serde(default)]
@@ -492,7 +493,7 @@ fn cell(v: Option<f64>) -> String {
 pub fn markdown_h3(s: &H3Summary) -> String {
     let mut out = String::from("## H3: belief tracing (proof-tree checks)\n\n");
     out.push_str(
-        "The paper shows H3 through its execution traces; our checks (DOMAIN.md 7.5): every \
+        "The paper shows H3 through its execution traces; our checks (docs/domain.md 7.5): every \
          tree passes the independent re-check, no literal repeats on a path, every leaf is of a \
          kind 6.2 lists.\n\n| preset | trees | re-check passed | repeats on a path | bad leaves | scenes without a plan |\n|---|---|---|---|---|---|\n",
     );
@@ -517,8 +518,8 @@ pub fn markdown_h3(s: &H3Summary) -> String {
 pub fn markdown_h4(s: &H4Summary) -> String {
     let mut out = String::from("## H4: explanation accuracy (Tables 4 and 5)\n\n");
     out.push_str(
-        "Literal precision and recall in % (DOMAIN.md 6.9), averaged per question type, without \
-         (w/o) and with (w/) the learned axioms; each cell ours / paper.\n\n",
+        "Literal precision and recall in % (docs/domain.md 6.9), averaged per question type, \
+         without (w/o) and with (w/) the learned axioms; each cell ours / paper.\n\n",
     );
     for (t, (name, cols)) in [("real", &s.real), ("simulated", &s.simulated)]
         .iter()

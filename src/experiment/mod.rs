@@ -1,5 +1,5 @@
-//! The H1-H4 experiment harness (DOMAIN.md 7): trials from a recorded seed, one JSON result per
-//! trial in a [`Store`], rayon over trials, and aggregation into the paper's tables
+//! The H1-H4 experiment harness (docs/domain.md 7): trials from a recorded seed, one JSON result
+//! per trial in a [`Store`], rayon over trials, and aggregation into the paper's tables
 //! ([`report`]) with SVG plots ([`svg`]).
 //!
 //! Invariants:
@@ -39,7 +39,7 @@ use crate::learn::episode::LearnConfig;
 use crate::learn::h1::{Caches, Oracle};
 use crate::learn::kb::KbSpec;
 
-/// The paper's four hypotheses (DOMAIN.md 7.1).
+/// The paper's four hypotheses (docs/domain.md 7.1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub enum Hypothesis {
     /// Learning accuracy (Table 1).
@@ -88,13 +88,13 @@ pub struct Setup {
     pub configurations: usize,
     /// Goals per configuration (the paper: 5).
     pub goals: usize,
-    /// Episodes per learning run (DOMAIN.md 5.2: 10).
+    /// Episodes per learning run (docs/domain.md 5.2: 10).
     pub episodes: usize,
     /// Store capped inconsistent trials with label 0, as the authors' code does.
     pub code_balance: bool,
     /// Take samples from every trial, as the authors' code does.
     pub code_samples: bool,
-    /// End a learning run after 100 quiet trials of any kind, as DOMAIN.md 5.2 is written
+    /// End a learning run after 100 quiet trials of any kind, as docs/domain.md 5.2 is written
     /// (`LearnConfig::count_every_trial`); by default only trials the learner would act in
     /// count.
     #[serde(default)]
@@ -144,7 +144,7 @@ impl Setup {
     }
 }
 
-/// The scene presets of H2-H4 (DOMAIN.md 7.1), as trial configs.
+/// The scene presets of H2-H4 (docs/domain.md 7.1), as trial configs.
 pub const PRESETS: [&str; 2] = ["real", "simulated"];
 
 /// The config of H1 trials against KB_full (the default oracle); against the physics world it

@@ -88,7 +88,7 @@ impl Report {
         let mut out = String::from("# Lucent: the paper's experiments H1-H4\n\n");
         out.push_str(&format!(
             "Seed {}; H1: {} learning runs of at most {} episodes; H2-H4: {} configurations per \
-             preset (real, simulated), {} goals each (DOMAIN.md 7.1); {} trials in all. Each \
+             preset (real, simulated), {} goals each (docs/domain.md 7.1); {} trials in all. Each \
              table shows our figures beside the paper's.\n\n",
             s.seed, s.runs, s.episodes, s.configurations, s.goals, self.trials
         ));

@@ -1,4 +1,4 @@
-//! Building proof trees (DOMAIN.md 6.2) over a ground program and one of its answer sets, seen
+//! Building proof trees (docs/domain.md 6.2) over a ground program and one of its answer sets, seen
 //! through the [`Oracle`] of `explain::tree`: the rule instances for a head (with their axiom
 //! labels and categories), the model's literals, and which CR rules are applied.
 //!
@@ -284,7 +284,7 @@ impl<'o> Builder<'o> {
         }
     }
 
-    /// The preference rank of a support (DOMAIN.md 6.2, path choice).
+    /// The preference rank of a support (docs/domain.md 6.2, path choice).
     fn rank(&self, rule: &RuleInstance) -> u8 {
         match rule.kind {
             AxiomKind::Fact | AxiomKind::Sort | AxiomKind::History
@@ -459,9 +459,9 @@ fn collect_constants(t: &Symbol, out: &mut Vec<Symbol>) {
     }
 }
 
-/// The literal a relation literal normalizes to (DOMAIN.md 6.2): follow spatial-algebra supports
-/// down the preferred path from `start` to the first literal whose own support is not spatial
-/// algebra. Returns that node.
+/// The literal a relation literal normalizes to (docs/domain.md 6.2): follow spatial-algebra
+/// supports down the preferred path from `start` to the first literal whose own support is not
+/// spatial algebra. Returns that node.
 ///
 /// Only *rewrites* are followed: spatial supports with one fluent body literal (SR1b
 /// `above(A,B)` from `on(A,B)`, SR1c, SR2, SR3), which restate a literal as an equivalent one.

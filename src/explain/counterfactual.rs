@@ -1,4 +1,5 @@
-//! The two questions beyond the paper, which need new solves (DOMAIN.md 6 extended by issue 14):
+//! The two questions beyond the paper, which need new solves (docs/domain.md 6 extended by
+//! issue 14):
 //!
 //! - **What if** ⟨action X at step I⟩: the history with X at step I instead of the plan's
 //!   action, the later actions kept; if they cannot all be executed any more, the history cut

@@ -1,4 +1,4 @@
-//! Controlled English in: questions and requests to the robot (DOMAIN.md 6.1) parsed into a
+//! Controlled English in: questions and requests to the robot (docs/domain.md 6.1) parsed into a
 //! structured [`Question`].
 //!
 //! The words come from the [`Lexicon`] (data, `domains/ra/lexicon.json`); this module holds only
@@ -30,7 +30,7 @@
 //! that were not understood (for known words in an unknown order, the words after the longest
 //! partial match) and lists example questions about the scene's own objects. "Last" is the
 //! step [`LAST`], resolved by the answerer against the history. Resolution of a missing step
-//! is not the parser's job: the step stays `None` (DOMAIN.md 6.1, "missing step").
+//! is not the parser's job: the step stays `None` (docs/domain.md 6.1, "missing step").
 
 use std::fmt;
 

@@ -1,8 +1,8 @@
-//! The H3 experiment (DOMAIN.md 7.5): belief tracing retrieves the supporting axioms of a belief.
-//! This module holds the two pieces the tests and the experiment harness share:
+//! The H3 experiment (docs/domain.md 7.5): belief tracing retrieves the supporting axioms of a
+//! belief. This module holds the two pieces the tests and the experiment harness share:
 //!
 //! - **Scenes** ([`generate`]): symbolic tabletop scenes from a seed, in the two families of
-//!   DOMAIN.md 1.6 and 7.1: [`ScenePreset::Real`] (5-7 objects: cubes, a tennis ball, fruit, a
+//!   docs/domain.md 1.6 and 7.1: [`ScenePreset::Real`] (5-7 objects: cubes, a tennis ball, fruit, a
 //!   pig, a pot; stacks or spread on the table) and [`ScenePreset::Simulated`] (7-9 objects, 3-5
 //!   of them stacked: cylinders, spheres, cubes, a duck and household objects), with the
 //!   attribute defaults of 1.6, a few `behind` pairs on the table (what the frontal camera sees),
@@ -11,11 +11,11 @@
 //! - **Tree checks** ([`check_tree`]): the three H3 criteria on one proof tree, written here
 //!   independently of `tree::recheck` (which they also run): every branch body holds in the
 //!   answer set, no literal repeats on a path from a root, and every leaf is one of the five
-//!   kinds DOMAIN.md 6.2 lists (Static, Observation, Action, Assumption, ClosedWorld). A literal
-//!   that does not hold ends in an `Unsupported` node only when the program has no rule for it,
-//!   which we count apart (`false_leaves`): DOMAIN.md 6.2 has no kind for it.
-//! - **Trials** ([`check_history`]): over an executed plan, the questions of DOMAIN.md 7.5 (the
-//!   plan; why a random plan action; why not that action with one argument changed; a belief
+//!   kinds docs/domain.md 6.2 lists (Static, Observation, Action, Assumption, ClosedWorld). A
+//!   literal that does not hold ends in an `Unsupported` node only when the program has no rule for
+//!   it, which we count apart (`false_leaves`): docs/domain.md 6.2 has no kind for it.
+//! - **Trials** ([`check_history`]): over an executed plan, the questions of docs/domain.md 7.5
+//!   (the plan; why a random plan action; why not that action with one argument changed; a belief
 //!   related to both) and more beliefs (the goal at the last step, where each object of the
 //!   chosen action stood and whether it was held at every step, a tower height, a relation
 //!   that did not hold), every proof tree built checked by [`check_tree`].
@@ -37,7 +37,7 @@ use super::tree::{recheck, BodyLiteral, Kind, NodeId, Oracle, ProofTree};
 use crate::base::rng::SplitMix64;
 use crate::control::Symbol;
 
-/// A family of scenes (DOMAIN.md 1.6).
+/// A family of scenes (docs/domain.md 1.6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ScenePreset {
     /// Like the paper's real scenes: 5-7 objects, stacked or spread.
@@ -58,7 +58,7 @@ impl ScenePreset {
         }
     }
 
-    /// The object pool: name, size, top surface (DOMAIN.md 1.6 and its attribute defaults).
+    /// The object pool: name, size, top surface (docs/domain.md 1.6 and its attribute defaults).
     /// Cubes and cylinders may be drawn medium instead of large (see [`generate`]).
     fn pool(self) -> &'static [(&'static str, &'static str, &'static str)] {
         match self {
@@ -111,7 +111,7 @@ pub struct SceneObject {
     pub surface: &'static str,
 }
 
-/// A planning goal (DOMAIN.md 7.1).
+/// A planning goal (docs/domain.md 7.1).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Goal {
     /// `on(X, Y)`.
@@ -218,7 +218,7 @@ impl Scene {
     }
 }
 
-/// Draws a scene (DOMAIN.md 1.6, 7.1): the object count from the preset's range, the objects
+/// Draws a scene (docs/domain.md 1.6, 7.1): the object count from the preset's range, the objects
 /// from its pool (cubes and cylinders medium with probability 0.3); then towers: stacked objects
 /// (the preset's range, at least two) are split into towers of two to four, each built bottom up
 /// from objects with a flat top that are not small, any object on top; the others stand on the
@@ -447,7 +447,7 @@ impl TreeCounts {
     }
 }
 
-/// Names of the leaf kinds DOMAIN.md 6.2 lists, in [`TreeCounts::leaves`] order.
+/// Names of the leaf kinds docs/domain.md 6.2 lists, in [`TreeCounts::leaves`] order.
 pub const LEAF_KINDS: [&str; 5] = [
     "static",
     "observation",
@@ -512,7 +512,7 @@ pub fn check_tree(tree: &ProofTree, oracle: &dyn Oracle) -> Result<TreeCounts, S
                 }
                 _ => {
                     return Err(format!(
-                        "leaf {} is of kind `{}`, not one of DOMAIN.md 6.2",
+                        "leaf {} is of kind `{}`, not one of docs/domain.md 6.2",
                         n.literal,
                         n.kind.words()
                     ))
@@ -544,7 +544,7 @@ pub struct TrialReport {
     pub counts: TreeCounts,
     /// Each failure: the literal or question, and what failed.
     pub failures: Vec<String>,
-    /// The questions asked, in order (the first four are DOMAIN.md 7.5's: the plan, why X,
+    /// The questions asked, in order (the first four are docs/domain.md 7.5's: the plan, why X,
     /// why not X with one argument changed, a related belief; H4 asks them again elsewhere).
     pub asked: Vec<Question>,
 }

@@ -1,4 +1,4 @@
-//! Histories to explain (DOMAIN.md 6.1, "Program Analyzer"): an AL_d planning problem (a
+//! Histories to explain (docs/domain.md 6.1, "Program Analyzer"): an AL_d planning problem (a
 //! description with its initial state and goal) and the actions that were executed (or are
 //! planned), turned into the program the questions are answered over: the description's
 //! translation with the actions as `happened` statements, the planning module off, the

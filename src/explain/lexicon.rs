@@ -1,4 +1,4 @@
-//! The controlled vocabulary (DOMAIN.md 6.1, 6.7) as data: the words the explainer hears and
+//! The controlled vocabulary (docs/domain.md 6.1, 6.7) as data: the words the explainer hears and
 //! the phrases it says, read from JSON text (`domains/ra/lexicon.json`, built into the library
 //! as [`Lexicon::ra`]; `cli` may pass another file's text to [`Lexicon::from_json`]).
 //!
@@ -239,7 +239,7 @@ pub struct Lexicon {
     pub why: Vec<Vec<String>>,
     /// Normalized phrases asking why there is no plan.
     pub no_plan: Vec<Vec<String>>,
-    /// Answer templates by name (DOMAIN.md 6.7), see [`TEMPLATES`].
+    /// Answer templates by name (docs/domain.md 6.7), see [`TEMPLATES`].
     pub templates: HashMap<String, String>,
     /// Example questions, said when a question was not understood; `{X}`, `{Y}`, `{Z}` are
     /// filled with objects of the scene.

@@ -1,5 +1,5 @@
-//! Explanations (DOMAIN.md section 6): the robot says why it did what it did, why it did not do
-//! something else, and why it believes what it believes, by tracing beliefs through the axioms
+//! Explanations (docs/domain.md section 6): the robot says why it did what it did, why it did not
+//! do something else, and why it believes what it believes, by tracing beliefs through the axioms
 //! that produced them.
 //!
 //! Parts, in dependency order:
@@ -8,11 +8,12 @@
 //!   ground data here (atoms cross the front door as structured symbols, never as text);
 //! - [`lexicon`]: the controlled vocabulary, data read from `domains/ra/lexicon.json`;
 //! - [`english`]: questions in controlled English parsed into a [`english::Question`];
-//! - [`verbalize`]: literals, actions and the answer templates of DOMAIN.md 6.7 in English;
+//! - [`verbalize`]: literals, actions and the answer templates of docs/domain.md 6.7 in English;
 //! - [`tree`]: the proof-tree data type (flat, children before parents) and its independent
 //!   re-check against the ground program and the model;
-//! - [`build`]: proof trees built over a ground program and an answer set (DOMAIN.md 6.2);
-//! - [`questions`]: the four questions of DOMAIN.md 6.3-6.6 over a program, answer set and plan;
+//! - [`build`]: proof trees built over a ground program and an answer set (docs/domain.md 6.2);
+//! - [`questions`]: the four questions of docs/domain.md 6.3-6.6 over a program, answer set and
+//!   plan;
 //! - [`oracle`]: the adapter from a `control::Control` (ground program, provenance, a model)
 //!   to the trees' `Oracle`;
 //! - [`history`]: an AL_d planning problem and its executed actions, solved into an oracle;
@@ -23,8 +24,8 @@
 //! - `scene` (feature `sim`): why the robot believes an object of a looked-at scene is
 //!   (un)stable or (not) occluded, over the classification-mode answer set of `vision::reason`;
 //! - [`draw`]: proof trees as DOT text and as SVG drawn here;
-//! - [`h3`]: the H3 experiment's pieces: generated scenes (DOMAIN.md 1.6, 7.1), the three
-//!   checks of a proof tree (DOMAIN.md 7.5) and one trial over a history.
+//! - [`h3`]: the H3 experiment's pieces: generated scenes (docs/domain.md 1.6, 7.1), the three
+//!   checks of a proof tree (docs/domain.md 7.5) and one trial over a history.
 //!
 //! Invariants: nothing here reads files or the clock (the lexicon is passed as text or built
 //! in); user input (questions) never panics, it is answered by a reply that says what was not

@@ -1,7 +1,7 @@
-//! The four questions of DOMAIN.md 6.3-6.6 answered over a ground program and one answer set
+//! The four questions of docs/domain.md 6.3-6.6 answered over a ground program and one answer set
 //! (an [`Oracle`]), a plan (executed or not) and its goal: plan description, why action X at
 //! step I, why not action X at step I, why belief Y at step I; with the missing-step rule and
-//! follow-up steps ([`Session`]), concise and full modes, and the answer's literals (DOMAIN.md
+//! follow-up steps ([`Session`]), concise and full modes, and the answer's literals (docs/domain.md
 //! 6.9) beside the English.
 //!
 //! Invariants: answers are computed from the oracle's rules and model, never from the question's
@@ -105,7 +105,7 @@ pub struct Answer {
     pub kind: &'static str,
     /// The English answer.
     pub text: String,
-    /// The answer's ground literals in the program's syntax (DOMAIN.md 6.9).
+    /// The answer's ground literals in the program's syntax (docs/domain.md 6.9).
     pub literals: Vec<Symbol>,
     /// The proof tree the answer used, with the answer's path.
     pub tree: Option<ProofTree>,
@@ -224,7 +224,7 @@ impl Answering<'_, '_> {
         })
     }
 
-    /// DOMAIN.md 6.3.
+    /// docs/domain.md 6.3.
     fn plan(&self) -> Answer {
         Answer {
             kind: "plan",
@@ -348,7 +348,7 @@ impl Answering<'_, '_> {
         })
     }
 
-    /// DOMAIN.md 6.4.
+    /// docs/domain.md 6.4.
     fn why(
         &self,
         action: &Pattern,
@@ -449,7 +449,7 @@ impl Answering<'_, '_> {
         })
     }
 
-    /// DOMAIN.md 6.5.
+    /// docs/domain.md 6.5.
     fn why_not(
         &self,
         action: &Pattern,
@@ -606,7 +606,7 @@ impl Answering<'_, '_> {
         })
     }
 
-    /// DOMAIN.md 6.6.
+    /// docs/domain.md 6.6.
     fn belief(
         &self,
         literal: &Symbol,

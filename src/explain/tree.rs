@@ -1,5 +1,5 @@
-//! Proof trees (DOMAIN.md 6.2): why a literal holds in an answer set, as the rule instances that
-//! support it, recursively down to leaves; or why it does not hold, as the body literal that
+//! Proof trees (docs/domain.md 6.2): why a literal holds in an answer set, as the rule instances
+//! that support it, recursively down to leaves; or why it does not hold, as the body literal that
 //! blocks each rule for it. This module is the contract between the tree builder and its users
 //! (questions, drawings, JSON): the data type, and an independent re-check of a tree against the
 //! ground program and the model, reached through the [`Oracle`] trait.
@@ -24,9 +24,9 @@ use std::fmt;
 
 use crate::control::Symbol;
 
-/// Maximum depth of a tree (DOMAIN.md 6.2).
+/// Maximum depth of a tree (docs/domain.md 6.2).
 pub const MAX_DEPTH: usize = 50;
-/// Maximum number of children of a node (DOMAIN.md 6.2).
+/// Maximum number of children of a node (docs/domain.md 6.2).
 pub const MAX_BRANCHES: usize = 16;
 
 /// Index of a node in [`ProofTree::nodes`].
@@ -40,7 +40,7 @@ impl NodeId {
     }
 }
 
-/// The category of a ground rule, from the action language's translation (DOMAIN.md 6.2).
+/// The category of a ground rule, from the action language's translation (docs/domain.md 6.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum AxiomKind {
     /// A state constraint (`l if p`), spatial algebra included.
@@ -177,7 +177,7 @@ pub enum Kind {
 }
 
 impl Kind {
-    /// Whether a node of this kind ends a path (DOMAIN.md 6.2's leaf kinds).
+    /// Whether a node of this kind ends a path (docs/domain.md 6.2's leaf kinds).
     pub fn is_leaf_kind(&self) -> bool {
         matches!(
             self,
@@ -271,7 +271,7 @@ pub struct Edge<'t> {
     pub rule: &'t RuleInstance,
 }
 
-/// A learned axiom (DOMAIN.md 5.9, written by `lucent learn`) as an explanation cites it.
+/// A learned axiom (docs/domain.md 5.9, written by `lucent learn`) as an explanation cites it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LearnedAxiom {
     /// Its AL_d label (`L2`), the label of its rule instances.

@@ -1,4 +1,4 @@
-//! English out: ground literals, actions and answers in words (DOMAIN.md 6.7).
+//! English out: ground literals, actions and answers in words (docs/domain.md 6.7).
 //!
 //! The phrases and answer templates are the lexicon's (data); this module fills them: constants
 //! become "the" plus their words with a size suffix dropped (`green_can_large` -> "the green
@@ -432,8 +432,8 @@ impl<'a> Verbalizer<'a> {
             .join(" ")
     }
 
-    /// Why-X (DOMAIN.md 6.4): "Because I had to ⟨a_j⟩, and ⟨ℓ⟩." with "it" for ℓ's subject when
-    /// it is `a_j`'s object.
+    /// Why-X (docs/domain.md 6.4): "Because I had to ⟨a_j⟩, and ⟨ℓ⟩." with "it" for ℓ's subject
+    /// when it is `a_j`'s object.
     pub fn why_action(&self, later: &Symbol, reason: &Symbol, tense: Tense) -> String {
         let object = later.arg(1);
         let subject = reason_subject(reason);
@@ -454,7 +454,7 @@ impl<'a> Verbalizer<'a> {
         self.template("why_goal", &[("goal", &join_and(&parts))])
     }
 
-    /// Why-not (DOMAIN.md 6.5): "Because ⟨ℓ1⟩[, and ⟨ℓ2⟩]."
+    /// Why-not (docs/domain.md 6.5): "Because ⟨ℓ1⟩[, and ⟨ℓ2⟩]."
     pub fn why_not(&self, lits: &[Symbol], tense: Tense) -> String {
         self.template("why_not", &[("literals", &self.join(lits, tense))])
     }

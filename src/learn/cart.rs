@@ -1,4 +1,4 @@
-//! Binary CART decision trees over binary features and binary labels (DOMAIN.md 5.6).
+//! Binary CART decision trees over binary features and binary labels (docs/domain.md 5.6).
 //!
 //! The trees of the axiom learner: the entropy criterion, `min_samples_split = 15`,
 //! `min_samples_leaf = 5`, no depth limit, and ties between equally good splits broken by a

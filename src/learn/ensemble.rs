@@ -1,4 +1,4 @@
-//! The tree ensemble, candidate axioms and the vote (DOMAIN.md 5.6-5.8).
+//! The tree ensemble, candidate axioms and the vote (docs/domain.md 5.6-5.8).
 //!
 //! Per tree: a fresh seeded split with 5% of the samples held out; branch selection over the
 //! held-out samples' paths (purity > 0.98, support > 0.02, majority class 1); candidates are
@@ -21,7 +21,7 @@ use super::cart::{CartParams, Table, Test, Tree};
 use super::term::{Axiom, AxiomKind, Literal};
 use crate::base::rng::SplitMix64;
 
-/// Ensemble parameters (defaults: DOMAIN.md 5.6-5.8).
+/// Ensemble parameters (defaults: docs/domain.md 5.6-5.8).
 #[derive(Clone, Debug, PartialEq)]
 pub struct EnsembleParams {
     /// Number of trees.

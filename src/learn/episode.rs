@@ -1,4 +1,4 @@
-//! Runs, episodes and trials of axiom learning (DOMAIN.md 5.2), over any one-step world.
+//! Runs, episodes and trials of axiom learning (docs/domain.md 5.2), over any one-step world.
 //!
 //! A run starts from a fresh learner knowledge base and has at most `episodes` episodes. An
 //! episode first looks for a discrepancy (an action type drawn uniformly, a random state and
@@ -68,7 +68,7 @@ pub struct LearnConfig {
     pub episodes: usize,
     /// Quiet trials (without a discrepancy) after which the run ends.
     pub detect_trials: usize,
-    /// Which quiet trials count towards `detect_trials`: every one (DOMAIN.md 5.2 as written),
+    /// Which quiet trials count towards `detect_trials`: every one (docs/domain.md 5.2 as written),
     /// or [ours, the default] only those the robot would act in, i.e. whose action its
     /// knowledge takes to be executable. The paper's robot stops after "executing a number of
     /// actions without detecting any inconsistency"; a trial whose action the learner already

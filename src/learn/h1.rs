@@ -1,4 +1,4 @@
-//! The H1 experiment (DOMAIN.md 7.3): independent learning runs from a fresh `learner`
+//! The H1 experiment (docs/domain.md 7.3): independent learning runs from a fresh `learner`
 //! knowledge base against the KB_full oracle, scored strictly and relaxed against the five
 //! targets (5.10).
 //!
@@ -23,7 +23,7 @@ use super::score::{relaxed, strict, Counts};
 use super::term::{in_hand, o, r, rel, Axiom, AxiomKind, Literal};
 use crate::base::rng::SplitMix64;
 
-/// The five H1 targets in lifted form (DOMAIN.md 2.2-2.3, ★T1-★T5: E7, E5, E2, C3, C2).
+/// The five H1 targets in lifted form (docs/domain.md 2.2-2.3, ★T1-★T5: E7, E5, E2, C3, C2).
 pub fn targets() -> Vec<Axiom> {
     let pickup = Literal::new("pickup", vec![r(1), o(1)]);
     let putdown = Literal::new("putdown", vec![r(1), o(1), o(2)]);
@@ -177,7 +177,7 @@ pub struct Caches {
     pub learner: Arc<Cache>,
 }
 
-/// What plays the world in a learning run (DOMAIN.md 5.1: the oracle program or a physics
+/// What plays the world in a learning run (docs/domain.md 5.1: the oracle program or a physics
 /// simulator).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]

@@ -18,8 +18,8 @@
 //!
 //! Invariants: the program a trial solves is exactly the translation of the description (plus
 //! the external declarations); a trial never re-grounds; CR rules are applied
-//! cardinality-minimally as in DOMAIN.md 3.4. The cache assumes what these programs guarantee: a
-//! complete step-0 state and deterministic laws give at most one answer set, so an answer is a
+//! cardinality-minimally as in docs/domain.md 3.4. The cache assumes what these programs guarantee:
+//! a complete step-0 state and deterministic laws give at most one answer set, so an answer is a
 //! function of the program text, the facts and the action (observed: no solve of the 4341 of
 //! seed 0's run had a second model; docs/bench/h1.md).
 

@@ -1,12 +1,12 @@
-//! Relevant literals and lifting to variables (DOMAIN.md 5.5), and the choice of a causal law's
-//! head.
+//! Relevant literals and lifting to variables (docs/domain.md 5.5), and the choice of a causal
+//! law's head.
 //!
 //! Relevant literals: the step-0 literals of the observable vocabulary (positive `relation`,
 //! `in_hand` of either sign) that contain a constant of the ground action, one hop only.
 //!
 //! Lifting (the code's heuristic, made deterministic): variables get a sort prefix and an index
 //! in order of first appearance over the action, the unexpected literals, then the relevant
-//! literals sorted canonically. (DOMAIN.md lists the unexpected literal before the action; we
+//! literals sorted canonically. (docs/domain.md lists the unexpected literal before the action; we
 //! put the action first [ours] so that its variables are the same in every sample of a dataset,
 //! label 0 samples included; for the heads of the H1 targets both orders agree.) A literal with a constant that has no variable yet is matched,
 //! with that constant as a wildcard, against the features already in the vocabulary; a match
@@ -57,7 +57,7 @@ pub struct Algebra {
 }
 
 impl Algebra {
-    /// The RA domain's algebra (DOMAIN.md 2.1.1: SR2 and SR3 over `complement`).
+    /// The RA domain's algebra (docs/domain.md 2.1.1: SR2 and SR3 over `complement`).
     pub fn ra() -> Algebra {
         Algebra {
             converse: [("below", "above"), ("behind", "front"), ("left", "right")]
@@ -445,7 +445,7 @@ mod tests {
         );
     }
 
-    /// DOMAIN.md 5.5: the action and the unexpected literal first, then the relevant literals
+    /// docs/domain.md 5.5: the action and the unexpected literal first, then the relevant literals
     /// sorted; a new constant reuses the variable of a matching vocabulary feature.
     #[test]
     fn lifting_example_reuse_across_samples() {

@@ -1,4 +1,4 @@
-//! Axiom learning (DOMAIN.md section 5): surprises, samples, decision trees, candidate axioms,
+//! Axiom learning (docs/domain.md section 5): surprises, samples, decision trees, candidate axioms,
 //! the ensemble vote, scoring against the targets, and learned axioms with a strength.
 //!
 //! Data flow: a one-step trial (a random state and action, `state`) is run against the learner's

@@ -1,4 +1,4 @@
-//! The physics world as the learning oracle (DOMAIN.md 5.1 and 7.6, feature `sim`): a one-step
+//! The physics world as the learning oracle (docs/domain.md 5.1 and 7.6, feature `sim`): a one-step
 //! trial is built as a rapier scene, the action is executed by `sim::execute`, and the observed
 //! successor state is measured geometrically, in place of KB_full's answer.
 //!
@@ -55,7 +55,7 @@ pub struct Catalogue {
 }
 
 impl Catalogue {
-    /// The H1 scene (DOMAIN.md 1.6): four large cubes, the small can, the ball, the pitcher
+    /// The H1 scene (docs/domain.md 1.6): four large cubes, the small can, the ball, the pitcher
     /// and the duck.
     pub fn h1() -> Catalogue {
         let o = |n: &str, k, c, s| (n.to_string(), k, c, s);

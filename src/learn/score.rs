@@ -1,4 +1,4 @@
-//! Scoring learned axioms against the targets (DOMAIN.md 5.10).
+//! Scoring learned axioms against the targets (docs/domain.md 5.10).
 //!
 //! Two axioms are **equal** when they are the same up to a sort-preserving renaming of their
 //! variables (same literal patterns, same co-occurrence structure). One is a **version** of the
@@ -175,7 +175,7 @@ mod tests {
         Axiom::new(AxiomKind::Causal { head }, action, body)
     }
 
-    /// The five H1 targets (DOMAIN.md 2.2-2.3: E7, E5, E2, C3, C2).
+    /// The five H1 targets (docs/domain.md 2.2-2.3: E7, E5, E2, C3, C2).
     fn targets() -> Vec<Axiom> {
         vec![
             ec(pickup(), vec![rel("below", o(1), o(2))]),

@@ -1,5 +1,5 @@
-//! The random one-step state generator (DOMAIN.md 5.3) and sample collection with class balance
-//! (5.4).
+//! The random one-step state generator (docs/domain.md 5.3) and sample collection with class
+//! balance (5.4).
 //!
 //! Generator: pools of movable objects and places (the H1 scene: eight objects; four large
 //! cubes, the small can and the table as places). `pickup` draws its object uniformly, and the
@@ -37,7 +37,7 @@ pub struct Pools {
 }
 
 impl Pools {
-    /// The H1 learning scene (DOMAIN.md 1.6): eight objects; the four large cubes, the small
+    /// The H1 learning scene (docs/domain.md 1.6): eight objects; the four large cubes, the small
     /// can and the table as places.
     pub fn h1() -> Pools {
         let cubes = [
@@ -147,7 +147,7 @@ pub fn generate(pools: &Pools, ty: ActionType, rng: &mut SplitMix64) -> OneStep 
     OneStep { on, held, action }
 }
 
-/// The outcome of comparing the learner with the oracle on one trial (DOMAIN.md 5.1).
+/// The outcome of comparing the learner with the oracle on one trial (docs/domain.md 5.1).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Outcome {
     /// Literals observed but not predicted (with `¬f` for inertia-persisted extras).

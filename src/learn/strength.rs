@@ -1,4 +1,4 @@
-//! Learned axioms as knowledge, with a strength that decays (DOMAIN.md 5.9 [ours]).
+//! Learned axioms as knowledge, with a strength that decays (docs/domain.md 5.9 [ours]).
 //!
 //! A learned axiom starts at strength 1; after each learning episode its strength is multiplied
 //! by `e^(-λ)` with `λ = ln 2 / 5` (a half-life of five episodes); learning it again (equal or a
@@ -217,7 +217,8 @@ impl Store {
     /// The store as an AL_d file.
     pub fn to_ald(&self) -> String {
         let mut out = String::from(
-            "% Axioms learned by `lucent learn` (DOMAIN.md 5.9): strength, origin, statement.\n",
+            "% Axioms learned by `lucent learn` (docs/domain.md 5.9): strength, origin, \
+             statement.\n",
         );
         for l in &self.axioms {
             out.push_str(&format!(

@@ -1,5 +1,5 @@
 //! Surprises: comparing the learner's predicted successor state with the observed one and
-//! classifying the discrepancy (DOMAIN.md 5.1, the code's refinement).
+//! classifying the discrepancy (docs/domain.md 5.1, the code's refinement).
 //!
 //! Only positive step-1 literals of the observable vocabulary (`relation`, `in_hand`) are
 //! compared. `unexpected` = observed but not predicted; `extra` = predicted but not observed.

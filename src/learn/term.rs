@@ -4,12 +4,12 @@
 //! Invariants: a literal is structured data (name, signed, arguments), never text to be sliced;
 //! `relation(S, X, Y)` keeps the relation name `S` as a constant in argument 0; an axiom's body
 //! is kept sorted and free of duplicates; [`Axiom::canonical`] is equal for two axioms exactly
-//! when they are equal up to a sort-preserving renaming of their variables (DOMAIN.md 5.8).
+//! when they are equal up to a sort-preserving renaming of their variables (docs/domain.md 5.8).
 
 use std::collections::BTreeMap;
 use std::fmt;
 
-/// The sort of a variable: its name prefix (DOMAIN.md 5.5).
+/// The sort of a variable: its name prefix (docs/domain.md 5.5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Sort {
     /// The robot (`R`).
@@ -167,7 +167,7 @@ impl Literal {
         }
     }
 
-    /// The short form for people: `on(O1, O2)` for `relation(on, O1, O2)` (DOMAIN.md 0).
+    /// The short form for people: `on(O1, O2)` for `relation(on, O1, O2)` (docs/domain.md 0).
     pub fn short(&self) -> String {
         if self.name == RELATION && self.args.len() == 3 {
             let sign = if self.positive { "" } else { "-" };

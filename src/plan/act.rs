@@ -1,4 +1,4 @@
-//! The sense-plan-act loop of DOMAIN.md 4.4: perceive, make the observations consistent, plan
+//! The sense-plan-act loop of docs/domain.md 4.4: perceive, make the observations consistent, plan
 //! from what is believed, execute one action, perceive again, compare the predicted with the
 //! observed state, and on a mismatch or a failed action record a [`Discrepancy`] and replan from
 //! the observed state; until the goal is observed (and confirmed by looking again) or a budget
@@ -16,8 +16,8 @@
 //! minimizes length before CR applications and would otherwise doubt an obstacle away to find a
 //! shorter plan.
 //!
-//! What is compared (DOMAIN.md 5.1): the prediction is the robot's own domain projected one step
-//! (horizon 1, `happened a at 0.`), the observation the next step's belief; a discrepancy is
+//! What is compared (docs/domain.md 5.1): the prediction is the robot's own domain projected one
+//! step (horizon 1, `happened a at 0.`), the observation the next step's belief; a discrepancy is
 //! recorded when they differ on `relation(on, X, Y)` (positive) or `in_hand(R, O)`, or when the
 //! world reports a failed action. The discrepancy carries all positive observable literals.
 //!
@@ -29,7 +29,7 @@
 //! discrepancy with the prediction, or the next action not executable in the new belief) is
 //! confirmed by `RunConfig::confirm_looks` more looks at the same step, the majority of all of
 //! them ([`fuse`]) being believed, before a discrepancy is recorded or the plan given up
-//! (DOMAIN.md 4.4 lets the robot perceive again; with one look per step a single misreading
+//! (docs/domain.md 4.4 lets the robot perceive again; with one look per step a single misreading
 //! made plans move objects back and forth, docs/bench/episodes-2026-12-04.md). And when the
 //! next action is not executable after a putdown (the object put down now hides another from
 //! the camera, which the domain does not predict, and E8 forbids the pickup), later plans
@@ -175,7 +175,7 @@ struct Belief {
     statics: Vec<Symbol>,
 }
 
-/// True for the fluents of the observable vocabulary (DOMAIN.md 5.1).
+/// True for the fluents of the observable vocabulary (docs/domain.md 5.1).
 fn observable(f: &Symbol) -> bool {
     f.is("relation", 3) || f.is("in_hand", 2)
 }

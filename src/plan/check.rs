@@ -1,4 +1,4 @@
-//! Plan checks independent of the planner's search (DOMAIN.md 4.3).
+//! Plan checks independent of the planner's search (docs/domain.md 4.3).
 //!
 //! [`StateSearch`] holds the one-step transition program of a description: its history
 //! removed, translated at horizon 1 with `horizon_mode = transition` (exactly one action at
@@ -869,7 +869,7 @@ pub fn replay(search: &mut StateSearch, plan: &[Symbol]) -> Replay {
     out
 }
 
-/// DOMAIN.md 4.3's classes.
+/// docs/domain.md 4.3's classes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Quality {
     /// Minimal length, and the least CR count at that length.
@@ -906,7 +906,7 @@ pub struct Verdict {
     pub reason: Option<String>,
 }
 
-/// Classifies `plan` for the planning problem `desc` (DOMAIN.md 4.3): replay, then L* and E*
+/// Classifies `plan` for the planning problem `desc` (docs/domain.md 4.3): replay, then L* and E*
 /// by the search over states within `max_depth` steps (the plan's own length when larger) and
 /// `max_states` states. A correct plan whose optimum the search could not establish is
 /// sub-optimal with a reason.

@@ -9,7 +9,7 @@
 //! vocabulary (`relation(on,a,b)`, `-in_hand(rob1,a)`, `pickup(rob1,a)`), which
 //! [`crate::control::Symbol::parse`] reads back; `steps[i].step == i`; an action recorded at step
 //! `I` was executed between the observations of steps `I` and `I + 1`; a `Discrepancy` carries
-//! the positive observable literals DOMAIN.md 5.1 compares (`relation`, `in_hand`), sorted, so
+//! the positive observable literals docs/domain.md 5.1 compares (`relation`, `in_hand`), sorted, so
 //! `learn::surprise::classify(before, predicted, Some(observed))` consumes it unchanged.
 //! The format is written down in `domains/ra/README.md` ("Run histories").
 
@@ -67,7 +67,7 @@ pub struct PlanRecord {
     pub alternatives: usize,
 }
 
-/// A mismatch between the predicted and the observed outcome of an action (DOMAIN.md 4.4 and
+/// A mismatch between the predicted and the observed outcome of an action (docs/domain.md 4.4 and
 /// 5.1): what the learner consumes.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Discrepancy {

@@ -1,4 +1,4 @@
-//! The planner (DOMAIN.md 4): a client of [`crate::control::Control`] and
+//! The planner (docs/domain.md 4): a client of [`crate::control::Control`] and
 //! [`crate::action::translate`].
 //!
 //! - [`plan`] finds the minimal plans of an AL_d planning problem (a description with an
@@ -13,7 +13,7 @@
 //!   per state), not by the planner's search.
 //! - `act`, `history` and `tabletop` (feature `sim`): the sense-plan-act loop, its record and
 //!   the simulated world it runs in.
-//! - `physics` (feature `sim`) draws planning tasks from generated scenes (DOMAIN.md 7.1) and
+//! - `physics` (feature `sim`) draws planning tasks from generated scenes (docs/domain.md 7.1) and
 //!   replays plans in the rapier world without noise (actions succeed, goal measured, every
 //!   object stable).
 //!
@@ -53,7 +53,7 @@ pub enum Search {
     Incremental,
     /// Horizons 0, 1, ..., each translated and grounded afresh (the reference).
     Retranslate,
-    /// The authors' fixed horizon n (DOMAIN.md 4.1, 7.4): every plan reaching the goal by step
+    /// The authors' fixed horizon n (docs/domain.md 4.1, 7.4): every plan reaching the goal by step
     /// n, lengths not minimized.
     Fixed(usize),
 }
@@ -118,7 +118,7 @@ pub struct Plans {
     pub cr_applied: usize,
     /// The horizons solved.
     pub horizons_tried: usize,
-    /// The answer sets behind the plans (the fixed mode's "number of plans", DOMAIN.md 7.4).
+    /// The answer sets behind the plans (the fixed mode's "number of plans", docs/domain.md 7.4).
     pub answer_sets: usize,
 }
 
@@ -129,7 +129,7 @@ pub enum PlanError {
     NoPlanWithin(usize),
     /// The initial state (with the history) has no answer set.
     Inconsistent,
-    /// The initial state has unstable objects (DOMAIN.md 2.5), named here.
+    /// The initial state has unstable objects (docs/domain.md 2.5), named here.
     InitiallyUnstable(Vec<String>),
     /// The description is not a valid planning problem; the rendered diagnostics.
     Input(String),
@@ -158,7 +158,7 @@ impl std::fmt::Display for PlanError {
 
 impl std::error::Error for PlanError {}
 
-/// DOMAIN.md 4.1's default H_max: max(9, 2·|object| + 2), the objects being the members of the
+/// docs/domain.md 4.1's default H_max: max(9, 2·|object| + 2), the objects being the members of the
 /// sort `object` (or `movable` when there is no `object` sort) under `config`'s switches.
 pub fn default_max_horizon(desc: &Description, config: &PlanConfig) -> usize {
     let checked = action::check(

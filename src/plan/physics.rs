@@ -1,9 +1,9 @@
 //! Plans against the physics world (feature `sim`): generated planning tasks (a simulator
-//! scene and a goal drawn as DOMAIN.md 7.1 describes) and the replay of a plan in rapier
+//! scene and a goal drawn as docs/domain.md 7.1 describes) and the replay of a plan in rapier
 //! without noise, checking that every action succeeds, the goal holds at the end as the
 //! simulator measures it, and every object is stable.
 //!
-//! Goal generation [ours, DOMAIN.md 7.1]: with probability 0.2 `in_hand(rob1, X)`, otherwise
+//! Goal generation [ours, docs/domain.md 7.1]: with probability 0.2 `in_hand(rob1, X)`, otherwise
 //! `on(X, Y)` with X a movable object and Y a location (an object or the table) other than X
 //! whose top is flat and which is not small, the goal not already true in the scene.
 //!
@@ -119,7 +119,7 @@ impl std::fmt::Display for Skip {
 /// Rounds of extra settling (2 simulated seconds each) [`settle_to_rest`] tries.
 pub const REST_ROUNDS: usize = 4;
 
-/// The objects that move in the stability test (DOMAIN.md 7.6: settle, test displacement).
+/// The objects that move in the stability test (docs/domain.md 7.6: settle, test displacement).
 pub fn unstable_objects(scene: &Scene) -> Vec<String> {
     stability(scene, &TruthConfig::default())
         .into_iter()

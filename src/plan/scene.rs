@@ -7,7 +7,7 @@
 //! - `object(a).` (or `movable(a).`) declares an object; `has_size(a, small).`,
 //!   `has_surface(a, irregular).` and `has_shape(a, duck).` give its attributes and declare
 //!   it too. Missing attributes default to `large` and `flat`.
-//! - `on(a, b).`, `above(a, b).`, ... (any spatial relation of DOMAIN.md 1.2),
+//! - `on(a, b).`, `above(a, b).`, ... (any spatial relation of docs/domain.md 1.2),
 //!   `relation(on, a, b).`, `in_hand(rob1, a).`, `holds(F, 0).` and `-holds(F, 0).` give the
 //!   step-0 state; everything not stated is false (D0).
 //!
@@ -22,7 +22,7 @@ use crate::base::{Diagnostic, FileId, Span};
 use crate::syntax::ast::{Atom, Head, StatementKind, Term, TermKind};
 use crate::syntax::{self, ast::Dialect};
 
-/// The spatial relations of DOMAIN.md 1.2.
+/// The spatial relations of docs/domain.md 1.2.
 pub const RELATIONS: [&str; 10] = [
     "above",
     "below",

@@ -1,4 +1,4 @@
-//! The planner's search (DOMAIN.md 4.1-4.2) over one multi-shot [`Control`].
+//! The planner's search (docs/domain.md 4.1-4.2) over one multi-shot [`Control`].
 //!
 //! - [`Search::Incremental`] (default): the description is translated once with
 //!   `horizon_mode = incremental` ([`crate::action::parts`]); `base` and `check(0)` are
@@ -7,7 +7,7 @@
 //! - [`Search::Retranslate`]: the description is translated, grounded and solved afresh with
 //!   `horizon = k`, `horizon_mode = iterative` for each k (the reference the incremental search
 //!   is tested against).
-//! - [`Search::Fixed`]: the authors' behaviour (DOMAIN.md 4.1, 7.4): one program at horizon n
+//! - [`Search::Fixed`]: the authors' behaviour (docs/domain.md 4.1, 7.4): one program at horizon n
 //!   with `success` and `:- not success`; every trajectory reaching the goal by step n is an
 //!   answer set, lengths are not minimized, only CR applications are.
 //!

@@ -1,5 +1,5 @@
 //! The rapier tabletop of [`crate::sim`] as a [`World`] of the sense-plan-act loop, and the
-//! random goals of DOMAIN.md 7.1.
+//! random goals of docs/domain.md 7.1.
 //!
 //! Perception goes through `sim::perceive_look` with the configured error model and confidence
 //! threshold: perceived relations are doubtable readings with their confidence, the hand
@@ -105,7 +105,7 @@ impl World for SimWorld {
     }
 }
 
-/// A random goal for the scene (DOMAIN.md 7.1): with probability 0.2 `in_hand(rob1, X)`,
+/// A random goal for the scene (docs/domain.md 7.1): with probability 0.2 `in_hand(rob1, X)`,
 /// otherwise `relation(on, X, Y)` with X movable and Y the table or a flat, non-small object
 /// other than X; never a goal that already holds. `None` if the scene admits none.
 pub fn random_goal(world: &mut SimWorld, seed: u64) -> Option<Symbol> {

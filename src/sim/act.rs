@@ -1,5 +1,5 @@
 //! Actuation: `pickup(R, O)` and `putdown(R, O, L)` executed physically in the world, with a
-//! configurable rate of manipulation failures (DOMAIN.md §7.6: about 15%).
+//! configurable rate of manipulation failures (docs/domain.md §7.6: about 15%).
 //!
 //! A pickup fails physically when the hand is full or something rests on the object; a putdown
 //! fails when the robot does not hold the object. A putdown lowers the object, upright, onto the

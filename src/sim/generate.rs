@@ -1,4 +1,4 @@
-//! Scene generation from a seed: presets of the paper's real and simulated scenes (DOMAIN.md
+//! Scene generation from a seed: presets of the paper's real and simulated scenes (docs/domain.md
 //! §1.6) and the H1 learning scene, stacks built on flat supports, the rest spread on the table,
 //! then physical settling.
 //!

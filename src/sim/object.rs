@@ -1,10 +1,10 @@
 //! Object kinds and their attributes: shape, size class, top surface, colour, and the parry
 //! shape that models each kind.
 //!
-//! Invariants: the top surface follows from the kind alone (DOMAIN.md §1.6 attribute defaults),
-//! and every shape is built upright with its local origin inside it, so a body's pose places the
-//! object and `shape(kind, size).compute_local_aabb()` gives its extent when upright. Lengths are
-//! metres: a size class is the object's characteristic width.
+//! Invariants: the top surface follows from the kind alone (docs/domain.md §1.6 attribute
+//! defaults), and every shape is built upright with its local origin inside it, so a body's pose
+//! places the object and `shape(kind, size).compute_local_aabb()` gives its extent when upright.
+//! Lengths are metres: a size class is the object's characteristic width.
 
 use parry3d::math::{Pose, Rot3, Vector};
 use parry3d::shape::SharedShape;

@@ -1,7 +1,7 @@
 //! Perception: turns the measured state into observations in the domain's vocabulary, through a
 //! configurable error model, and prints them as program facts.
 //!
-//! Error model (DOMAIN.md §7.6: about 15% of relations are misrecognised): each true relation
+//! Error model (docs/domain.md §7.6: about 15% of relations are misrecognised): each true relation
 //! literal is independently erroneous with probability `relation_error`; an error either drops the
 //! literal or, with probability `substitute_share`, replaces it by a confusable one (arguments
 //! swapped for positional relations and `on`; a neighbouring distance class for touch, not_touch
@@ -142,7 +142,7 @@ pub struct Percept {
 /// How observations are printed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FactStyle {
-    /// `obs(relation(on,a,b),true,0).` (DOMAIN.md §3.2 history).
+    /// `obs(relation(on,a,b),true,0).` (docs/domain.md §3.2 history).
     Obs,
     /// `holds(relation(on,a,b),0).` and `-holds(...)` for false ones (the 2020 code's style).
     Holds,

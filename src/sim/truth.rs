@@ -1,8 +1,8 @@
 //! Ground truth measured physically: spatial relations from geometry, stability by stepping a
 //! copy of the world, and occlusion by ray casting from the camera.
 //!
-//! Relations (DOMAIN.md §7.6), with A and B objects and the camera's axes taken parallel to the
-//! table:
+//! Relations (docs/domain.md §7.6), with A and B objects and the camera's axes taken parallel to
+//! the table:
 //! * `above(A, B)`: the footprints (x-z boxes) overlap and A's lowest point is at least B's
 //!   mid-height while A's centre is above B's top; `below` is the converse.
 //! * `front(A, B)`: A's depth interval ends before B's begins (within a tolerance) and their
@@ -16,7 +16,7 @@
 //!   an object touching it is also `touch` and `on` it.
 //!
 //! Invariants: relations are computed from one world state and are deterministic; the held
-//! object has no relations (lifting removes them, DOMAIN.md C4).
+//! object has no relations (lifting removes them, docs/domain.md C4).
 
 use super::scene::{Scene, TABLE};
 use super::world::{Hit, World};

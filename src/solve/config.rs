@@ -1,8 +1,8 @@
 //! Solver configuration: every knob the command line maps clingo/clasp options onto.
 //!
 //! Invariant: a `Config` is a plain value; the solver never reads the clock or the environment
-//! except through the deadline and the interrupt flag given here (STYLE.md: limits reach the
-//! solver as values, it answers with a stop reason).
+//! except through the deadline and the interrupt flag given here (ARCHITECTURE.md, invariants:
+//! limits reach the solver as values, it answers with a stop reason).
 
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;

@@ -16,8 +16,8 @@
 //!   `-partially_occluded(O1, O2)`, class 1 when B hides less than the occluder threshold of A;
 //!   relevant literals: the relations between A and B and the two objects' sizes and surfaces.
 //!
-//! The targets, for scoring as H1 scores the action axioms (strict and relaxed, DOMAIN 5.10):
-//! ST1 `-stable(O1) if irreg_below(O1)`, D1 (as the constraint its default states)
+//! The targets, for scoring as H1 scores the action axioms (strict and relaxed, docs/domain.md
+//! 5.10): ST1 `-stable(O1) if irreg_below(O1)`, D1 (as the constraint its default states)
 //! `-stable(O1) if small_base(O1)` and OC2 `-partially_occluded(O1, O2) if
 //! -relation(behind, O1, O2)`.
 //!
@@ -117,11 +117,11 @@ pub fn relevant(label: Label, state: &[Literal], subject: &[&str], roi: &[&str])
 /// Parameters of a learning episode.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConstraintParams {
-    /// The ensemble's parameters (DOMAIN 5.6-5.8 defaults).
+    /// The ensemble's parameters (docs/domain.md 5.6-5.8 defaults).
     pub ensemble: EnsembleParams,
     /// At most this many samples per episode (a seeded subset), to bound the trees' cost.
     pub max_samples: usize,
-    /// Class balance (as DOMAIN 5.4 balances the action learner's datasets): the majority
+    /// Class balance (as docs/domain.md 5.4 balances the action learner's datasets): the majority
     /// class keeps at most this many samples per sample of the minority class. Without it a
     /// rare class (an object hidden by a given other object) makes almost every leaf pure,
     /// and any literal passes as a constraint.
@@ -137,7 +137,7 @@ impl Default for ConstraintParams {
     fn default() -> Self {
         ConstraintParams {
             // Each tree validates on half of its samples (the action learner holds out 5%,
-            // DOMAIN 5.6): with a rare class, a literal that merely correlates with the
+            // docs/domain.md 5.6): with a rare class, a literal that merely correlates with the
             // majority (`-has_size(O1, large)`: a large object is seldom hidden) passes the
             // 0.98 precision test on a handful of held-out samples by luck, and on a few
             // hundred it does not. Measured over 10 runs of 200 scenes: strict precision

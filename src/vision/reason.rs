@@ -39,8 +39,8 @@ use crate::sim::{Percept, Relation, Scene, Size, Surface};
 /// beyond these.
 pub const MAX_MODELS: usize = 16;
 
-/// The labels of the knowledge base's statements that decide the labels (DOMAIN 2.1.2-2.1.3),
-/// the candidates for removal in the learning experiment.
+/// The labels of the knowledge base's statements that decide the labels (docs/domain.md
+/// 2.1.2-2.1.3), the candidates for removal in the learning experiment.
 pub const DECIDING: [&str; 5] = ["ST1", "ST2", "ST3", "D1", "OC2"];
 
 /// What the robot perceives of one scene, as values.

@@ -16,7 +16,7 @@ mod cli;
 #[path = "ra_scenes.rs"]
 mod ra_scenes;
 
-/// The golden scenes of DOMAIN.md 4.5.
+/// The golden scenes of docs/domain.md 4.5.
 pub const TABLETOP: &str = "domains/ra/scenes/tabletop_task.ald";
 pub const EXCEPTION_GOAL: &str = "domains/ra/scenes/exception_goal.ald";
 /// KB_full, the domain the scenes of facts are added to.

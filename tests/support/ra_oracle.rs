@@ -1,5 +1,5 @@
-//! Hand-written ground programs shaped like the RA translation (DOMAIN.md 3), as oracles for the
-//! proof-tree and question tests: rules written `head :- body` with `h(F,I)` for `holds(F,I)`.
+//! Hand-written ground programs shaped like the RA translation (docs/domain.md 3), as oracles for
+//! the proof-tree and question tests: rules written `head :- body` with `h(F,I)` for `holds(F,I)`.
 #![allow(dead_code)]
 
 use std::collections::HashSet;
@@ -57,7 +57,7 @@ pub fn rule(label: &str, kind: AxiomKind, text: &str) -> RuleInstance {
     }
 }
 
-/// Example 3 of DOMAIN.md 6.8 in small: the white block was put on the green can at step 3,
+/// Example 3 of docs/domain.md 6.8 in small: the white block was put on the green can at step 3,
 /// the pitcher picked up at step 4; steps 3 to 5.
 pub fn example3() -> ModelOracle {
     let on = |i| format!("h(relation(on,white_block,green_can),{i})");
@@ -120,7 +120,7 @@ pub fn example3() -> ModelOracle {
     ModelOracle { rules, model }
 }
 
-/// The execution example of DOMAIN.md 6.8 in small: the rules the paper's questions touch at
+/// The execution example of docs/domain.md 6.8 in small: the rules the paper's questions touch at
 /// steps 0 to 5 (observation of the stack at step 0, E7 and E2 grounded at step 0, E10 for the
 /// mug at step 3), on top of [`example3`]. Plan: the paper's six actions.
 pub fn paper() -> (ModelOracle, Vec<(u32, Symbol)>) {

@@ -1,5 +1,5 @@
 //! The translation of an AL_d description and history to a CR-Prolog syntax tree, Π(D, H) of
-//! DOMAIN.md section 3, with a side table saying where every generated statement came from.
+//! docs/domain.md section 3, with a side table saying where every generated statement came from.
 //!
 //! Invariants:
 //! - `origins[k]` describes `program.statements[k]` (same length), and every generated
@@ -39,7 +39,7 @@ pub struct AxiomOrigin {
     pub text: String,
 }
 
-/// The kinds of origins (DOMAIN.md sections 3.1-3.3).
+/// The kinds of origins (docs/domain.md sections 3.1-3.3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum OriginKind {
     /// Sort members, the step range, fluent and action domains, `#defined` declarations.

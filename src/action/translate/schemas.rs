@@ -1,4 +1,4 @@
-//! The fixed schemas of DOMAIN.md 3.2-3.3, generated once per program rather than per AL_d
+//! The fixed schemas of docs/domain.md 3.2-3.3, generated once per program rather than per AL_d
 //! statement: inertia, closed-world assumptions, history and reality checks, and the planning
 //! module (only with a goal and the `planning` switch on). Their origins name the schema.
 
@@ -137,7 +137,7 @@ impl Translator<'_> {
         }
     }
 
-    /// The planning module of DOMAIN.md 3.3.
+    /// The planning module of docs/domain.md 3.3.
     pub(super) fn planning(&mut self) {
         if !self.planning_on() {
             return;
@@ -197,9 +197,9 @@ impl Translator<'_> {
         self.time = Time::Before;
         self.rule(&from, Head::Disjunction(vec![alt(false), alt(true)]), b);
         // One action per step: `:- #count { A1 : occurs(A1, I) } > 1, step(I), I < horizon.`
-        // DOMAIN.md 3.3 writes it pairwise (`:- occurs(A1, I), occurs(A2, I), A1 != A2.`), which
-        // has the same answer sets but grounds to |actions|^2 rules per step (6,320 of the 17,000
-        // rules of a step with 80 actions); the aggregate is one weight constraint per step.
+        // docs/domain.md 3.3 writes it pairwise (`:- occurs(A1, I), occurs(A2, I), A1 != A2.`),
+        // which has the same answer sets but grounds to |actions|^2 rules per step (6,320 of the
+        // 17,000 rules of a step with 80 actions); the aggregate is one weight constraint per step.
         let a1 = var(sp, "A1");
         let count = ast::BodyAggregate {
             span: sp,

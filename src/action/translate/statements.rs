@@ -1,4 +1,4 @@
-//! The rules each AL_d statement translates to (DOMAIN.md 3.1): the signature (sort members,
+//! The rules each AL_d statement translates to (docs/domain.md 3.1): the signature (sort members,
 //! steps, fluent and action domains), causal laws, state constraints, executability
 //! conditions, defaults and their CR exceptions, `never` constraints, the goal, and the history
 //! entries (observations, happened actions, the initial state and its defaults). Every rule is

@@ -6,7 +6,7 @@ Run from this directory: python3 generate.py   (needs clingo 5.8.3: pip install 
 Each NNN.aspif is also translated, statement by statement, into a clingo source program
 (NNN.lp: atom i becomes a(i), weight bodies and minimize statements become #sum and #minimize
 with one tuple per literal, externals stay free) and clingo 5.8.3, the semantic reference
-(REFERENCE.md), solves that source. It does not read the aspif file directly because clasp
+(docs/reference.md), solves that source. It does not read the aspif file directly because clasp
 (3.3.5, and the clasp inside clingo 5.8.3) loses answer sets on some raw aspif rules that gringo
 never writes: e.g. on `{a2; a5} :- #sum{2: not a6; 1: not a7; 3: a2} >= 3` written as
 `1 1 2 2 5 1 3 3 -6 2 -7 1 2 3` it finds only {} and {a5} (programs 000, 006 and 046 of this
