@@ -29,6 +29,16 @@ fn the_demo_plans_acts_and_pictures_the_scene() {
     assert!(out.contains("executed "), "{out}");
     assert!(out.contains("What I did: I picked up the"), "{out}");
     assert!(out.contains("Result: GOAL REACHED"), "{out}");
+    // The robot explains its own run: the run is saved and three questions are answered, each
+    // with a reason (seed 3's run moves the pot and the red cube, so every question has one).
+    assert!(dir.join("run.json").exists());
+    assert!(out.contains("Asked about my run:"), "{out}");
+    let answers: Vec<&str> = out.lines().filter(|l| l.starts_with("  A: ")).collect();
+    assert_eq!(answers.len(), 3, "{out}");
+    assert!(
+        answers.iter().all(|a| a.starts_with("  A: Because ")),
+        "{out}"
+    );
     // Deterministic: the same seed tells the same story (timings aside).
     let (_, again, _) = demo(&["--out", dir.to_str().unwrap()]);
     let story = |t: &str| -> Vec<String> {

@@ -278,7 +278,32 @@ mod simulated {
             .filter_map(|s| Some((s.step, Symbol::parse(s.happened.as_deref()?).ok()?)))
             .collect();
         writeln!(out)?;
-        writeln!(out, "What I did: {}", v.plan(&done, true))?;
+        // The robot explains its own run: the run is saved beside the pictures (so the user can
+        // go on with `lucent ask --run`), and a few questions are asked over it.
+        let saved = Path::new(&dir).join("run.json");
+        let asked = std::fs::write(&saved, history.to_json())
+            .map_err(|e| format!("cannot write {}: {e}", saved.display()))
+            .and_then(|()| {
+                let questions = super::own_questions(&history, &goal, &v);
+                super::super::explain::ask_run(&saved.to_string_lossy(), &questions)
+            });
+        match &asked {
+            Ok(answers) if !answers.is_empty() => {
+                // The first answer describes what was done, failed attempts included.
+                writeln!(out, "What I did: {}", answers[0].1)?;
+                writeln!(out, "\nAsked about my run:")?;
+                for (q, a) in &answers[1..] {
+                    writeln!(out, "  Q: {q}\n  A: {a}")?;
+                }
+                writeln!(out, "  (ask more: lucent ask --run {})\n", saved.display())?;
+            }
+            _ => {
+                writeln!(out, "What I did: {}", v.plan(&done, true))?;
+                if let Err(m) = &asked {
+                    writeln!(out, "(I could not explain my run: {m})")?;
+                }
+            }
+        }
         write!(out, "{}", super::super::run::summary(&history))?;
         writeln!(out, "Picture : {} (the camera view after)", after.display())?;
         writeln!(
@@ -292,6 +317,55 @@ mod simulated {
             super::super::EXIT_UNSAT
         })
     }
+}
+
+/// The questions the demo asks about its own run: describe the plan; why its first successful
+/// action; why not pick up an object it never touched at that step; why it believed the first
+/// `on` goal at the end.
+#[cfg(feature = "sim")]
+fn own_questions(
+    history: &crate::plan::history::History,
+    goal: &[crate::control::Symbol],
+    v: &crate::explain::verbalize::Verbalizer<'_>,
+) -> Vec<String> {
+    use crate::control::Symbol;
+    use crate::explain::pattern::SymbolExt;
+    use crate::explain::verbalize::{ActionForm, Tense};
+    let mut qs = vec!["Describe the plan.".to_string()];
+    let done: Vec<(u32, Symbol)> = history
+        .steps
+        .iter()
+        .filter(|s| s.failure.is_none())
+        .filter_map(|s| Some((s.step, Symbol::parse(s.happened.as_deref()?).ok()?)))
+        .collect();
+    if let Some((i, a)) = done.first() {
+        qs.push(format!(
+            "Why did you {} at step {i}?",
+            v.action(a, ActionForm::Base)
+        ));
+        let touched: Vec<&Symbol> = done.iter().filter_map(|(_, a)| a.arg(1)).collect();
+        let untouched = history
+            .objects
+            .iter()
+            .filter_map(|o| Symbol::parse(o).ok())
+            .find(|o| !touched.contains(&o) && o.name() != Some("table"));
+        if let Some(o) = untouched {
+            qs.push(format!(
+                "Why didn't you pick up {} at step {i}?",
+                v.object(&o)
+            ));
+        }
+    }
+    if let Some(g) = goal
+        .iter()
+        .find(|g| g.is("relation", 3) && g.arg(0).and_then(Symbol::name) == Some("on"))
+    {
+        qs.push(format!(
+            "Why did you believe that {} at the end?",
+            v.fluent(g, Tense::Past)
+        ));
+    }
+    qs
 }
 
 #[cfg(test)]

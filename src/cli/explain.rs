@@ -880,3 +880,25 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
     emit(&reply, None, a, out, err)?;
     Ok(0)
 }
+
+/// Answers questions about a run saved by `lucent run` (the file at `path`), as `lucent ask
+/// --run FILE` would: one `(question, answer)` pair per question, in order; the step of a
+/// question carries to the next. `Err` with the error's text when the run cannot be read or
+/// has no history.
+pub(super) fn ask_run(path: &str, questions: &[String]) -> Result<Vec<(String, String)>, String> {
+    let a = parse_args(&["--run".to_string(), path.to_string()])?;
+    let mut err = Vec::new();
+    let loaded = load_history(&a, &mut err).map_err(|e| e.to_string())?;
+    let Ok((history, no_plan)) = loaded else {
+        return Err(String::from_utf8_lossy(&err).trim().to_string());
+    };
+    let lexicon = Lexicon::ra();
+    let mut session = Session::default();
+    Ok(questions
+        .iter()
+        .map(|q| {
+            let reply = respond(&history, no_plan, &lexicon, q, &a, &mut session);
+            (q.clone(), reply.answer.text)
+        })
+        .collect())
+}
