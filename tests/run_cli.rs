@@ -45,7 +45,7 @@ fn a_noise_free_run_reaches_its_goal_and_saves_its_history() {
     assert_eq!(code, 0, "{out}\n{err}");
     assert!(out.contains("Result: GOAL REACHED"), "{out}");
     assert!(
-        err.contains("[step 0] plan 1 (initial): pickup(rob1,red_capsicum)"),
+        err.contains("[step 0] plan of 1 action (initial): pickup(rob1,red_capsicum)"),
         "{err}"
     );
     assert!(

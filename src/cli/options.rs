@@ -708,7 +708,10 @@ pub fn help_text() -> String {
     out.push_str("\nExit codes: 10 model found, 20 no model, 30 search exhausted with a model\n");
     out.push_str("(all models or optimum), 11 model found before a time limit, 1 interrupted\n");
     out.push_str("or bad command line (as clingo), 65 input error, 70 a verb this build does\n");
-    out.push_str("not have or an I/O failure; `lucent demo` and `lucent sim` exit 0 when done.\n");
+    out.push_str("not have or an I/O failure. `lucent run` and `lucent demo` exit 0 when the\n");
+    out.push_str(
+        "robot reached its goal and 20 when it did not; the other verbs exit 0 when done.\n",
+    );
     out
 }
 

@@ -256,9 +256,10 @@ pub fn describe(event: &Event) -> String {
             format!("[step {step}] perceived{again}; {doubted} observation(s) doubted")
         }
         Event::Planned(p) => format!(
-            "[step {}] plan {} ({}): {}",
+            "[step {}] plan of {} action{} ({}): {}",
             p.step,
             p.actions.len(),
+            if p.actions.len() == 1 { "" } else { "s" },
             p.reason,
             if p.actions.is_empty() {
                 "nothing to do".to_string()

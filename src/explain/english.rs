@@ -607,7 +607,11 @@ impl Matcher<'_, '_, '_> {
         let pos = self.pos;
         let error = self.error.clone();
         let r = f(self);
-        self.furthest = self.furthest.max(self.pos);
+        // Only what a pattern matched counts as understood (a failed alternative may have
+        // taken words it then gave back).
+        if r.is_some() {
+            self.furthest = self.furthest.max(self.pos);
+        }
         if r.is_none() {
             self.pos = pos;
             self.error = error;
@@ -1105,7 +1109,11 @@ impl Matcher<'_, '_, '_> {
         }
         let words: Vec<&Token> = self.toks[start..self.pos].iter().collect();
         match self.p.resolve(&words) {
-            Ok(t) => Some(t),
+            Ok(t) => {
+                // A resolved object phrase is understood, whatever follows it.
+                self.furthest = self.furthest.max(self.pos);
+                Some(t)
+            }
             Err(e) => {
                 if self.error.is_none() {
                     self.error = Some(e);
