@@ -269,6 +269,19 @@ fn project_signature_projects_every_atom_of_the_predicate() {
 }
 
 #[test]
+fn show_option_adds_show_statements() {
+    // `--show=q/0,-r/1` is `#show q/0. #show -r/1.` in the program: the only answer set
+    // {p(1), q, -r(1), s} is shown as `q -r(1)` (derived by hand from clingo's #show semantics).
+    let prog = "p(1). q :- p(1). -r(1). s.";
+    let (code, out, _) = lucent(&["--show=q/0,-r/1"], prog);
+    assert_eq!(code, 30);
+    assert_eq!(answer_sets(&out), vec![vec!["-r(1)", "q"]]);
+    let (code, _, err) = lucent(&["--show=q"], prog);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("invalid value for: 'show'"), "{err}");
+}
+
+#[test]
 fn external_value_is_a_term_of_the_instance() {
     // `[X]` takes each instance's value; values other than true, false, free and release leave
     // the instance out (clingo 5.8.3: `clingo 0` on this program gives these two answer sets).

@@ -451,6 +451,24 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
         }
         diags.extend(control.take_diagnostics().items().iter().cloned());
     }
+    if !options.show.is_empty() {
+        use crate::syntax::ast;
+        let statements = options
+            .show
+            .iter()
+            .map(|sig| ast::Statement {
+                span: crate::base::Span::default(),
+                kind: ast::StatementKind::Show(Box::new(ast::Show::Signature(sig.clone()))),
+            })
+            .collect();
+        let shown = ast::Program {
+            dialect: ast::Dialect::Clingo,
+            statements,
+        };
+        if let Err(e) = control.add_program(shown) {
+            diags.extend(e.diagnostics.items().iter().cloned());
+        }
+    }
     if diags.has_errors() {
         flush_diagnostics(io, &diags, control.sources())?;
         writeln!(io.err, "*** ERROR: (lucent): parsing failed")?;

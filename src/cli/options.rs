@@ -64,6 +64,7 @@ pub const OPTIONS: &[OptionSpec] = &[
     opt("output", Some('o'), Value, "<fmt>", "Ground program format in gringo mode: {aspif|intermediate|text} [aspif]", "Basic"),
     opt("dialect", None, Value, "<lang>", "Input language {auto|clingo|sparc} [auto: .sp files are SPARC]", "Basic"),
     opt("profile", None, Value, "<name>", "Profile of an AL_d (.ald) input: a switch bundle it declares, e.g. tabletop", "Basic"),
+    opt("show", None, Value, "<sigs>", "Show only atoms of these signatures, as #show p/n. in the program: --show=occurs/2,goal/1 (an AL_d input's plan)", "Basic"),
     opt("models", Some('n'), Value, "<n>", "Compute at most <n> models (0 for all) [1]", "Solving"),
     opt("const", Some('c'), Value, "<id>=<term>", "Replace term occurrences of <id> with <term>", "Grounding"),
     opt("warn", Some('W'), Value, "<warn>", "Enable/disable warnings: none, all, [no-]{atom-undefined|file-included|operation-undefined|variable-unbounded|global-variable|other}", "Grounding"),
@@ -188,6 +189,8 @@ pub struct Options {
     pub consts: Vec<(String, String)>,
     /// `--profile`: the profile of AL_d inputs.
     pub profile: Option<String>,
+    /// `--show`: signatures to show, as `#show p/n.` statements added to the program.
+    pub show: Vec<crate::syntax::ast::Signature>,
     /// Warning kinds switched off.
     pub disabled_warnings: Vec<WarningKind>,
     /// Maximum number of messages printed.
@@ -239,6 +242,7 @@ impl Default for Options {
             models_given: false,
             consts: Vec::new(),
             profile: None,
+            show: Vec::new(),
             disabled_warnings: Vec::new(),
             message_limit: 20,
             provenance: false,
@@ -479,6 +483,15 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
             o.consts.push((name.to_string(), val.trim().to_string()));
         }
         "profile" => o.profile = Some(v.to_string()),
+        "show" => {
+            for part in v.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+                o.show
+                    .push(signature(part).ok_or_else(|| UsageError::InvalidValue {
+                        option: "show".into(),
+                        value: v.to_string(),
+                    })?);
+            }
+        }
         "warn" => apply_warn(o, v)?,
         "message-limit" => o.message_limit = parse_num(long, v)?,
         "provenance" => o.provenance = true,
@@ -603,6 +616,26 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
         _ => return Err(UsageError::Unknown(long.to_string())),
     }
     Ok(())
+}
+
+/// `name/arity` or `-name/arity` as a signature.
+fn signature(text: &str) -> Option<crate::syntax::ast::Signature> {
+    let (negated, text) = match text.strip_prefix('-') {
+        Some(t) => (true, t),
+        None => (false, text),
+    };
+    let (name, arity) = text.rsplit_once('/')?;
+    let starts = name.chars().next()?;
+    let ok = (starts.is_ascii_lowercase() || starts == '_')
+        && name
+            .chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '\'');
+    let arity = arity.parse().ok()?;
+    ok.then(|| crate::syntax::ast::Signature {
+        negated,
+        name: name.to_string(),
+        arity,
+    })
 }
 
 fn apply_warn(o: &mut Options, v: &str) -> Result<(), UsageError> {
