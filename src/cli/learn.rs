@@ -156,13 +156,16 @@ pub fn run_learn(
         return Ok(super::EXIT_INPUT);
     };
     let start = Instant::now();
-    let report = match h1::one_run_with(
+    let spinner = super::progress::spinner("learning");
+    let report = h1::one_run_with(
         &spec,
         &config(&args),
         h1::run_seed(args.seed, args.run),
         args.oracle,
         &h1::Caches::default(),
-    ) {
+    );
+    spinner.finish_and_clear();
+    let report = match report {
         Ok(r) => r,
         Err(e) => {
             writeln!(err, "*** ERROR: (lucent): {e}")?;
