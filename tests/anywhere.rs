@@ -97,5 +97,17 @@ fn progress_is_drawn_on_a_terminal_without_hanging() {
         drawn.contains("2/2 trials"),
         "no progress bar was drawn:\n{drawn}"
     );
+    // `learn` shows a spinner while it learns.
+    let inner = format!("{} learn --episodes 2", lucent());
+    let (code, _, err) = run_within(
+        Command::new("script")
+            .args(["-qec", &inner])
+            .arg(&log)
+            .current_dir(&dir),
+        Duration::from_secs(300),
+    );
+    assert_eq!(code, 0, "{err}");
+    let drawn = std::fs::read_to_string(&log).unwrap_or_default();
+    assert!(drawn.contains("learning"), "no spinner was drawn:\n{drawn}");
     let _ = std::fs::remove_dir_all(&dir);
 }
