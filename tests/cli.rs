@@ -282,6 +282,17 @@ fn show_option_adds_show_statements() {
 }
 
 #[test]
+fn heuristic_statements_are_not_silently_ignored() {
+    // Lucent does not follow #heuristic; it says so once, and the answers stay those of the
+    // program without the statements ({a;b}. has four answer sets, by hand).
+    let prog = "{a;b}. #heuristic a. [1,true] #heuristic b. [1,false]";
+    let (code, out, err) = lucent(&["0"], prog);
+    assert_eq!(code, 30);
+    assert_eq!(answer_sets(&out).len(), 4);
+    assert_eq!(err.matches("#heuristic:").count(), 1, "{err}");
+}
+
+#[test]
 fn external_value_is_a_term_of_the_instance() {
     // `[X]` takes each instance's value; values other than true, false, free and release leave
     // the instance out (clingo 5.8.3: `clingo 0` on this program gives these two answer sets).

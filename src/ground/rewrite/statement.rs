@@ -357,6 +357,21 @@ impl Rewriter<'_> {
                 }
             }
             K::Heuristic(h) => {
+                // Said once per program: Lucent's solver decides with VSIDS alone.
+                if !self
+                    .diags
+                    .items()
+                    .iter()
+                    .any(|d| d.message.starts_with("#heuristic"))
+                {
+                    self.diags.push(Diagnostic::warning(
+                        crate::base::WarningKind::Other,
+                        st.span,
+                        "#heuristic: Lucent's solver does not follow domain heuristics (it \
+                         decides with VSIDS, also under --heuristic=domain); they change no \
+                         answer set, only which one clingo finds first",
+                    ));
+                }
                 for a in unpool_atom(&h.atom) {
                     for b in unpool_body(&h.body) {
                         let mut vars = Vars::default();
