@@ -282,14 +282,35 @@ fn show_option_adds_show_statements() {
 }
 
 #[test]
-fn heuristic_statements_are_not_silently_ignored() {
-    // Lucent does not follow #heuristic; it says so once, and the answers stay those of the
-    // program without the statements ({a;b}. has four answer sets, by hand).
+fn heuristic_statements_are_followed_under_domain() {
+    // What #heuristic statements Lucent follows is said once; the answers stay those of the
+    // program without them ({a;b}. has four answer sets, by hand).
     let prog = "{a;b}. #heuristic a. [1,true] #heuristic b. [1,false]";
     let (code, out, err) = lucent(&["0"], prog);
     assert_eq!(code, 30);
     assert_eq!(answer_sets(&out).len(), 4);
     assert_eq!(err.matches("#heuristic:").count(), 1, "{err}");
+    // Under --heuristic=domain the first answer follows them (recorded from clingo 5.4.1:
+    // `clingo --heuristic=domain` on each program, its first answer).
+    let cases = [
+        (
+            "{a;b;c}. #heuristic a. [1,true] #heuristic b. [1,false] #heuristic c. [1,sign]",
+            vec!["a", "c"],
+        ),
+        (
+            "{a;b;c}. #heuristic a. [1,false] #heuristic b. [1,true] #heuristic c. [-1,sign]",
+            vec!["b"],
+        ),
+        (
+            "1{p(1..5)}1. #heuristic p(4). [2,true] #heuristic p(2). [1,true]",
+            vec!["p(4)"],
+        ),
+    ];
+    for (prog, first) in cases {
+        let (code, out, _) = lucent(&["--heuristic=domain"], prog);
+        assert_eq!(code, 10, "{prog}");
+        assert_eq!(answer_sets(&out), vec![first], "{prog}");
+    }
 }
 
 #[test]

@@ -279,6 +279,7 @@ fn solve_config(
         deadline,
         seed: options.seed,
         random_freq_permille: options.rand_freq_permille,
+        domain_heuristic: options.domain_heuristic,
         check_models: options.check,
         threads: options.threads as usize,
         ..solve::Config::default()

@@ -76,7 +76,7 @@ pub const OPTIONS: &[OptionSpec] = &[
     opt("cr", None, Value, "<mode>", "CR-rule semantics {card|subset}: cardinality-minimal applied CR rules, or subset-minimal with prefer/2 [card]", "Solving"),
     opt("time-limit", None, Value, "<s>", "Stop after <s> seconds and answer UNKNOWN [0 = none]", "Solving"),
     opt("parallel-mode", Some('t'), Value, "<n>", "Run a portfolio of <n> threads [1]", "Solving"),
-    opt("heuristic", None, Value, "<h>", "Decision heuristic {berkmin|vmtf|vsids|domain|unit|none}: accepted for clasp compatibility; Lucent always uses VSIDS, which changes search order, never answers", "Solving"),
+    opt("heuristic", None, Value, "<h>", "Decision heuristic {berkmin|vmtf|vsids|domain|unit|none}: domain follows #heuristic statements without a condition (level, sign, true, false) before VSIDS; the others are VSIDS. Changes search order, never answers", "Solving"),
     opt("seed", None, Value, "<n>", "Seed of the solver's random choices [1]", "Solving"),
     opt("rand-freq", None, Value, "<p>", "Make a random decision with probability <p> in [0.0,1.0] [0.0]", "Solving"),
     opt("check", None, Flag, "", "Verify every reported model with an independent stable-model check", "Solving"),
@@ -215,6 +215,8 @@ pub struct Options {
     pub seed: u64,
     /// Probability of a random decision, in 1/1000 (`--rand-freq`).
     pub rand_freq_permille: u32,
+    /// `--heuristic=domain`: follow `#heuristic` statements.
+    pub domain_heuristic: bool,
     /// Check every model independently.
     pub check: bool,
     /// Output format.
@@ -255,6 +257,7 @@ impl Default for Options {
             threads: 1,
             seed: 1,
             rand_freq_permille: 0,
+            domain_heuristic: false,
             check: false,
             outf: OutputFormat::Text,
             quiet: [0, 0, 0],
@@ -558,6 +561,7 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
             if !known.contains(&name.as_str()) {
                 return Err(invalid(long, v));
             }
+            o.domain_heuristic = name == "domain";
         }
         "seed" => o.seed = parse_num(long, v)?,
         "rand-freq" => {

@@ -69,6 +69,9 @@ pub struct Config {
     pub seed: u64,
     /// Probability, in 1/1000, of a random decision instead of the VSIDS choice.
     pub random_freq_permille: u32,
+    /// Follow the program's `#heuristic` statements (`--heuristic=domain`): those without a
+    /// condition, with the modifiers level, sign, true and false.
+    pub domain_heuristic: bool,
     /// VSIDS decay factor, in (0, 1). 0.92 as clasp's tweety (ARCHITECTURE.md, "Search
     /// settings", has the measurements).
     pub var_decay: f64,
@@ -210,6 +213,7 @@ impl Default for Config {
             deadline: None,
             interrupt: None,
             seed: 1,
+            domain_heuristic: false,
             random_freq_permille: 0,
             var_decay: 0.92,
             default_phase_false: true,

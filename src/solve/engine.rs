@@ -222,6 +222,11 @@ pub struct Engine {
     phase: Vec<bool>,
     /// Per variable: whether `phase` was saved by a backjump (not the initial sign).
     phase_saved: Vec<bool>,
+    /// Domain heuristic: per variable, the sign to decide it with (-1 false, 1 true, 0 none).
+    dom_sign: Vec<i8>,
+    /// Domain heuristic: variables with a positive level, highest level first; decided before
+    /// any other.
+    dom_order: Vec<(i32, Var)>,
     /// Per variable: occurrences in learnt clauses, +1 per positive and -1 per negative
     /// literal (clasp's sign score, used when `sign_from_learnts` is set).
     occ: Vec<i32>,
@@ -410,6 +415,8 @@ impl Engine {
             stored: Vec::new(),
             phase: Vec::new(),
             phase_saved: Vec::new(),
+            dom_sign: Vec::new(),
+            dom_order: Vec::new(),
             occ: Vec::new(),
             activity: Vec::new(),
             heap_pos: Vec::new(),

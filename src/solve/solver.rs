@@ -227,6 +227,9 @@ impl Solver {
             engine.save_progress = 160;
             engine.sign_from_learnts = true;
         }
+        if config.domain_heuristic {
+            apply_domain_heuristics(&prog, &tr, &mut engine);
+        }
         let cr_lits = prog
             .cr_rules
             .iter()
@@ -859,4 +862,33 @@ pub fn supports(p: &GroundProgram, atoms: &[u32]) -> Vec<Option<usize>> {
         }
     }
     atoms.iter().map(|&a| support[a as usize]).collect()
+}
+
+/// The program's unconditional `#heuristic` statements as decision preferences, lower
+/// priorities first so a higher one wins: level sets the atom's level, sign its polarity (a
+/// positive bias true, a negative false), true and false both (level = bias).
+fn apply_domain_heuristics(prog: &GroundProgram, tr: &Translation, engine: &mut Engine) {
+    use crate::ground::program::HeuristicModifier as M;
+    let mut hs: Vec<&crate::ground::program::Heuristic> = prog
+        .heuristics
+        .iter()
+        .filter(|h| h.condition.is_empty())
+        .collect();
+    hs.sort_by_key(|h| h.priority);
+    for h in hs {
+        let Some(&lit) = tr.atom_lit.get(h.atom as usize) else {
+            continue;
+        };
+        let v = lit.var();
+        // The sign of `v` that makes the atom true.
+        let atom_true = !lit.is_neg();
+        let towards = |yes: bool| if yes { atom_true } else { !atom_true };
+        match h.modifier {
+            M::Level => engine.prefer(v, Some(h.bias), None),
+            M::Sign if h.bias != 0 => engine.prefer(v, None, Some(towards(h.bias > 0))),
+            M::True => engine.prefer(v, Some(h.bias), Some(towards(true))),
+            M::False => engine.prefer(v, Some(h.bias), Some(towards(false))),
+            _ => {}
+        }
+    }
 }

@@ -160,7 +160,13 @@ impl Grounder<'_> {
                     atom: id,
                     bias: w,
                     priority: p.max(0) as u32,
-                    condition: ctx.body.clone(),
+                    // The atom's own literal only ranged over its domain (see the rewrite).
+                    condition: ctx
+                        .body
+                        .iter()
+                        .copied()
+                        .filter(|&l| l != id as crate::ground::program::Lit)
+                        .collect(),
                 });
             }
             NKind::Edge(u, v) => {

@@ -357,7 +357,7 @@ impl Rewriter<'_> {
                 }
             }
             K::Heuristic(h) => {
-                // Said once per program: Lucent's solver decides with VSIDS alone.
+                // Said once per program: what of the statements Lucent's solver follows.
                 if !self
                     .diags
                     .items()
@@ -367,9 +367,10 @@ impl Rewriter<'_> {
                     self.diags.push(Diagnostic::warning(
                         crate::base::WarningKind::Other,
                         st.span,
-                        "#heuristic: Lucent's solver does not follow domain heuristics (it \
-                         decides with VSIDS, also under --heuristic=domain); they change no \
-                         answer set, only which one clingo finds first",
+                        "#heuristic: Lucent follows these only under --heuristic=domain, and only \
+                         those without a condition (modifiers level, sign, true, false; init \
+                         and factor are ignored); they change no answer set, only the order \
+                         in which answer sets are found",
                     ));
                 }
                 for a in unpool_atom(&h.atom) {
@@ -394,6 +395,13 @@ impl Rewriter<'_> {
                         if self.body(&b, &mut vars, &mut out).is_none() {
                             continue;
                         }
+                        // As for #project, the atom ranges over its predicate's atoms (so the
+                        // statement waits for them and binds its own variables, as gringo);
+                        // emit leaves it out of the condition.
+                        out.push(NLit::Pred {
+                            sign: Sign::Positive,
+                            atom: a.clone(),
+                        });
                         out.append(&mut extra);
                         let kind = NKind::Heuristic {
                             atom: a,

@@ -133,13 +133,44 @@ impl Engine {
     /// polarity occurring more often in learnt clauses, else its initial sign.
     pub(super) fn decision_sign(&self, v: Var) -> bool {
         let i = v.index();
+        match self.dom_sign.get(i) {
+            Some(1) => return true,
+            Some(-1) => return false,
+            _ => {}
+        }
         if self.sign_from_learnts && !self.phase_saved[i] && self.occ[i] != 0 {
             return self.occ[i] > 0;
         }
         self.phase[i]
     }
 
+    /// A domain preference (clingo's `#heuristic` under `--heuristic=domain`): decide `v`
+    /// with `sign` (when given), and before every variable of a lower level (when `level` is
+    /// positive; the default level is 0).
+    pub fn prefer(&mut self, v: Var, level: Option<i32>, sign: Option<bool>) {
+        if let Some(s) = sign {
+            if self.dom_sign.len() <= v.index() {
+                self.dom_sign.resize(v.index() + 1, 0);
+            }
+            self.dom_sign[v.index()] = if s { 1 } else { -1 };
+        }
+        if let Some(l) = level {
+            self.dom_order.retain(|&(_, x)| x != v);
+            if l > 0 {
+                self.dom_order.push((l, v));
+                // Stable: equal levels keep the order the statements gave.
+                self.dom_order.sort_by_key(|&(l, _)| std::cmp::Reverse(l));
+            }
+        }
+    }
+
     pub(super) fn pick_branch(&mut self) -> Option<Lit> {
+        for k in 0..self.dom_order.len() {
+            let v = self.dom_order[k].1;
+            if self.val(v.positive()) == 0 && self.decidable[v.index()] {
+                return Some(Lit::new(v, self.decision_sign(v)));
+            }
+        }
         if self.random_permille > 0
             && !self.heap.is_empty()
             && self.next_random() % 1000 < self.random_permille as u64
