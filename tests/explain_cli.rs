@@ -220,6 +220,25 @@ fn why_and_why_not_on_any_program() {
     assert_eq!(code, 65, "{err}");
 }
 
+/// A choice is shown as the choice it is, not as an ordinary rule: the only answer set of
+/// this program (by hand: the constraint forces the choice) has color(1,green) by the choice
+/// rule's ground instance `{color(1,green)} :- node(1).`
+#[test]
+fn a_chosen_atom_is_explained_by_its_choice_rule() {
+    let dir = std::env::temp_dir().join(format!("lucent-choice-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("choice.lp");
+    std::fs::write(
+        &file,
+        "node(1).\n{color(1,green)} :- node(1).\n:- not color(1,green).\n",
+    )
+    .unwrap();
+    let (code, out, err) = run(&["explain", file.to_str().unwrap(), "--why", "color(1,green)"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("`{color(1,green)} :- node(1).`"), "{out}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn what_if_resolves_the_history_with_another_action() {
     let (code, out, err) = ask_example(

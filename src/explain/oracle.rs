@@ -411,9 +411,9 @@ impl ProgramOracle {
                     kind = AxiomKind::CrRule;
                 }
                 if r.head_kind == HeadKind::Choice
-                    && matches!(kind, AxiomKind::Fact | AxiomKind::Sort)
+                    && matches!(kind, AxiomKind::Fact | AxiomKind::Sort | AxiomKind::Rule)
                 {
-                    kind = AxiomKind::Rule;
+                    kind = AxiomKind::Choice;
                 }
                 Some(RuleInstance {
                     label,

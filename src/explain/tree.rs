@@ -68,6 +68,8 @@ pub enum AxiomKind {
     Planning,
     /// A rule of a program that is not an action description (the generic `--why`).
     Rule,
+    /// A choice rule of such a program: its head atom was chosen, not derived (`{a} :- b.`).
+    Choice,
 }
 
 impl AxiomKind {
@@ -86,6 +88,7 @@ impl AxiomKind {
             AxiomKind::Sort => "sort",
             AxiomKind::Planning => "planning",
             AxiomKind::Rule => "rule",
+            AxiomKind::Choice => "choice",
         }
     }
 }
@@ -137,7 +140,12 @@ impl RuleInstance {
 
 impl fmt::Display for RuleInstance {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.head)?;
+        // A choice instance is written as the choice it is: `{color(1,green)} :- node(1).`
+        if self.kind == AxiomKind::Choice {
+            write!(f, "{{{}}}", self.head)?;
+        } else {
+            write!(f, "{}", self.head)?;
+        }
         for (i, b) in self.body.iter().enumerate() {
             f.write_str(if i == 0 { " :- " } else { ", " })?;
             match b {
