@@ -2,7 +2,7 @@
 //! (exit 0), saves a history that loads back and prints it with `--outf=2`; bad input (an
 //! unknown object in the goal, a malformed goal, a malformed scene file, an unknown option)
 //! gets a message and a non-zero exit, never a panic; an impossible goal and a horizon budget
-//! too small end the run with `no_plan_within(H)` and exit 20.
+//! too small end the run with "no plan of at most H steps" and exit 20.
 #![cfg(feature = "sim")]
 
 use lucent::plan::history::{Ending, History};
@@ -131,7 +131,7 @@ fn bad_input_is_a_message_and_a_non_zero_exit() {
         ]);
         assert_eq!(code, 20, "{goal}: {out}{err}");
         assert!(
-            out.contains(&format!("no_plan_within({budget})")),
+            out.contains(&format!("no plan of at most {budget} steps")),
             "{goal}: {out}"
         );
         assert!(out.contains("GOAL NOT REACHED"), "{goal}: {out}");

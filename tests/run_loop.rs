@@ -320,7 +320,7 @@ fn no_plan_from_a_misreading_makes_the_robot_look_again() {
     assert_eq!(h.plans.len(), 1);
     assert_eq!(
         h.plans[0].reason,
-        "no_plan_within(4) at step 0, looked again"
+        "no plan of at most 4 steps at step 0, looked again"
     );
     assert_eq!(h.actions(), vec!["pickup(rob1,c)"]);
 

@@ -689,7 +689,7 @@ fn run_steps(
                         Err(e) => return e,
                     };
                     let why = match e {
-                        PlanError::NoPlanWithin(h) => format!("no_plan_within({h})"),
+                        PlanError::NoPlanWithin(h) => format!("no plan of at most {h} steps"),
                         _ => "no consistent stable state".to_string(),
                     };
                     reason = Some(format!("{why} at step {step}, looked again"));

@@ -61,7 +61,8 @@ pub struct PlanRecord {
     /// The CR rules its answer set applies (`d1x(a,2)`, steps relative to the plan).
     pub cr_applied: Vec<String>,
     /// Why it was made: `initial`, `discrepancy at step I`, `A not executable in the belief at
-    /// step I`, `no_plan_within(H) at step I, looked again`, `goal not confirmed at step I`.
+    /// step I`, `no plan of at most H steps at step I, looked again`, `goal not confirmed at
+    /// step I`.
     pub reason: String,
     /// How many distinct minimal plans there were.
     pub alternatives: usize,
@@ -116,7 +117,7 @@ impl std::fmt::Display for Ending {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Ending::GoalObserved => write!(f, "the goal was observed"),
-            Ending::NoPlan { horizon } => write!(f, "no_plan_within({horizon})"),
+            Ending::NoPlan { horizon } => write!(f, "no plan of at most {horizon} steps"),
             Ending::Inconsistent => write!(f, "the observations are inconsistent"),
             Ending::ActionBudget => write!(f, "the action budget ran out"),
             Ending::ReplanBudget => write!(f, "the replanning budget ran out"),
