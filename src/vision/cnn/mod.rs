@@ -357,17 +357,25 @@ impl Cnn {
         &self.params[self.shape.offsets[g]..self.shape.offsets[g + 1]]
     }
 
-    fn check_input(&self, input: &[f32], caller: &str) {
+    /// Why `input` is not an input of this network (its length is wrong), or `None`.
+    pub fn input_error(&self, input: &[f32]) -> Option<String> {
         let s = &self.shape;
-        assert!(
-            input.len() == s.input_len(),
-            "Cnn::{caller}: the input has {} values, the network takes {}x{}x{} = {}",
-            input.len(),
-            s.height,
-            s.width,
-            s.channels,
-            s.input_len()
-        );
+        (input.len() != s.input_len()).then(|| {
+            format!(
+                "the input has {} values, the network takes {}x{}x{} = {}",
+                input.len(),
+                s.height,
+                s.width,
+                s.channels,
+                s.input_len()
+            )
+        })
+    }
+
+    fn check_input(&self, input: &[f32], caller: &str) {
+        if let Some(e) = self.input_error(input) {
+            panic!("Cnn::{caller}: {e}");
+        }
     }
 
     fn check_examples(&self, inputs: &[&[f32]], labels: &[Vec<bool>], caller: &str) {
@@ -737,8 +745,13 @@ mod tests {
     }
 
     #[test]
-    #[should_panic(expected = "the input has 15 values, the network takes 4x4x1 = 16")]
-    fn a_wrong_input_length_panics_with_a_sentence() {
-        Cnn::new(tiny(4, 4, 1)).forward(&[0.0; 15]);
+    fn a_wrong_input_length_is_said_in_a_sentence() {
+        // `forward`, `logits` and training panic with this sentence (API misuse).
+        let cnn = Cnn::new(tiny(4, 4, 1));
+        assert_eq!(
+            cnn.input_error(&[0.0; 15]).as_deref(),
+            Some("the input has 15 values, the network takes 4x4x1 = 16")
+        );
+        assert_eq!(cnn.input_error(&[0.0; 16]), None);
     }
 }
