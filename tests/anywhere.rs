@@ -77,37 +77,29 @@ fn progress_is_drawn_on_a_terminal_without_hanging() {
          apt-get install -y util-linux"
     );
     let dir = elsewhere("pty");
-    let log = dir.join("typescript");
-    let inner = format!(
-        "{} experiment h1 --runs 2 --out {}",
-        lucent(),
-        dir.join("out").display()
-    );
-    let (code, _, err) = run_within(
-        Command::new("script")
-            .args(["-qec", &inner])
-            .arg(&log)
-            .current_dir(&dir),
-        // The job takes seconds; the hang it guards against never ends.
-        Duration::from_secs(300),
-    );
-    assert_eq!(code, 0, "{err}");
-    let drawn = std::fs::read_to_string(&log).unwrap_or_default();
+    // Runs `lucent ARGS` on a pseudo-terminal in `dir`; what the terminal showed.
+    let on_terminal = |args: &str| -> String {
+        let log = dir.join("typescript");
+        let inner = format!("{} {args}", lucent());
+        let (code, _, err) = run_within(
+            Command::new("script")
+                .args(["-qec", &inner])
+                .arg(&log)
+                .current_dir(&dir),
+            // The jobs take seconds; the hang this guards against never ends.
+            Duration::from_secs(300),
+        );
+        assert_eq!(code, 0, "lucent {args}: {err}");
+        std::fs::read_to_string(&log).unwrap_or_default()
+    };
+    let out = dir.join("out");
+    let drawn = on_terminal(&format!("experiment h1 --runs 2 --out {}", out.display()));
     assert!(
         drawn.contains("2/2 trials"),
         "no progress bar was drawn:\n{drawn}"
     );
     // `learn` shows a spinner while it learns.
-    let inner = format!("{} learn --episodes 2", lucent());
-    let (code, _, err) = run_within(
-        Command::new("script")
-            .args(["-qec", &inner])
-            .arg(&log)
-            .current_dir(&dir),
-        Duration::from_secs(300),
-    );
-    assert_eq!(code, 0, "{err}");
-    let drawn = std::fs::read_to_string(&log).unwrap_or_default();
+    let drawn = on_terminal("learn --episodes 2");
     assert!(drawn.contains("learning"), "no spinner was drawn:\n{drawn}");
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -284,7 +284,7 @@ mod simulated {
         let asked = std::fs::write(&saved, history.to_json())
             .map_err(|e| format!("cannot write {}: {e}", saved.display()))
             .and_then(|()| {
-                let questions = super::own_questions(&history, &goal, &v);
+                let questions = super::own_questions(&history, &done, &goal, &v);
                 super::super::explain::ask_run(&saved.to_string_lossy(), &questions)
             });
         match &asked {
@@ -319,12 +319,13 @@ mod simulated {
     }
 }
 
-/// The questions the demo asks about its own run: describe the plan; why its first successful
-/// action; why not pick up an object it never touched at that step; why it believed the first
-/// `on` goal at the end.
+/// The questions the demo asks about its own run (`done`: its successful actions with their
+/// steps): describe the plan; why its first successful action; why not pick up an object it
+/// never touched at that step; why it believed the first `on` goal at the end.
 #[cfg(feature = "sim")]
 fn own_questions(
     history: &crate::plan::history::History,
+    done: &[(u32, crate::control::Symbol)],
     goal: &[crate::control::Symbol],
     v: &crate::explain::verbalize::Verbalizer<'_>,
 ) -> Vec<String> {
@@ -332,12 +333,6 @@ fn own_questions(
     use crate::explain::pattern::SymbolExt;
     use crate::explain::verbalize::{ActionForm, Tense};
     let mut qs = vec!["Describe the plan.".to_string()];
-    let done: Vec<(u32, Symbol)> = history
-        .steps
-        .iter()
-        .filter(|s| s.failure.is_none())
-        .filter_map(|s| Some((s.step, Symbol::parse(s.happened.as_deref()?).ok()?)))
-        .collect();
     if let Some((i, a)) = done.first() {
         qs.push(format!(
             "Why did you {} at step {i}?",
