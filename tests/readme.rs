@@ -4,6 +4,9 @@
 //! when any of its commands does). Lines starting with `lucent sim` are run only in builds with
 //! the `sim` feature. The README's Rust example is a doctest (`src/lib.rs`, `cargo test --doc`).
 //!
+//! With the `sim` feature, a command whose comment says "the picture above" must make the
+//! README's picture above it pixel for pixel.
+//!
 //! Commands with `clasp` or `gringo` need clingo 5.4's tools (`scripts/test.sh` installs them).
 
 use std::path::{Path, PathBuf};
@@ -90,6 +93,68 @@ fn every_readme_command_runs_as_written() {
             ));
         }
     }
+    #[cfg(feature = "sim")]
+    failures.extend(pictures_reproduced(
+        include_str!("../README.md"),
+        root,
+        &dir,
+    ));
     let _ = std::fs::remove_dir_all(&dir);
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The decoded RGB pixels and size of a PNG file.
+#[cfg(feature = "sim")]
+fn pixels(path: &Path) -> Result<(u32, u32, Vec<u8>), String> {
+    let file = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut reader = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut buf = vec![0; reader.output_buffer_size().unwrap_or(0)];
+    let info = reader
+        .next_frame(&mut buf)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    buf.truncate(info.buffer_size());
+    Ok((info.width, info.height, buf))
+}
+
+/// The README's pictures are what its commands make: a command whose comment says "the picture
+/// above" writes (`-o FILE.png`) the picture the README showed last before that command's
+/// block, pixel for pixel.
+#[cfg(feature = "sim")]
+fn pictures_reproduced(readme: &str, root: &Path, dir: &Path) -> Vec<String> {
+    let mut failures = Vec::new();
+    let mut shown: Option<&str> = None;
+    let mut checked = 0;
+    for line in readme.lines() {
+        if let Some((_, rest)) = line.split_once("](") {
+            if line.trim_start().starts_with("![") {
+                shown = rest.split_once(')').map(|(p, _)| p);
+            }
+        }
+        if !line.contains("the picture above") {
+            continue;
+        }
+        let Some(picture) = shown else {
+            failures.push(format!("`{line}` names a picture above, but none is shown"));
+            continue;
+        };
+        let Some(made) = line.split_whitespace().skip_while(|w| *w != "-o").nth(1) else {
+            failures.push(format!("`{line}` writes no `-o FILE`"));
+            continue;
+        };
+        checked += 1;
+        match (pixels(&dir.join(made)), pixels(&root.join(picture))) {
+            (Ok(a), Ok(b)) if a == b => (),
+            (Ok(_), Ok(_)) => failures.push(format!(
+                "`{}` does not reproduce {picture}: the pixels differ (remake the picture with it)",
+                line.split("  #").next().unwrap_or(line).trim()
+            )),
+            (a, b) => failures.push(format!("{:?} {:?}", a.err(), b.err())),
+        }
+    }
+    if checked == 0 {
+        failures.push("no README command makes \"the picture above\"".to_string());
+    }
+    failures
 }

@@ -103,6 +103,12 @@ const OPTIONS: &[OptionSpec] = &[
         help: "render the top view instead of the camera view",
     },
     OptionSpec {
+        name: "--labelled",
+        value: None,
+        commands: &["render"],
+        help: "the camera view widened to frame every object, each labelled (as in run reports)",
+    },
+    OptionSpec {
         name: "--width",
         value: Some("W"),
         commands: &["render"],
@@ -440,6 +446,8 @@ fn run_command(args: &Args) -> Result<String, Fail> {
             }
             let image = if args.flag("--top") {
                 render_top(&scene, width, height)
+            } else if args.flag("--labelled") {
+                crate::sim::picture(&scene, width, height).image
             } else {
                 render_camera(&scene, width, height)
             };

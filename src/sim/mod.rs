@@ -5,7 +5,7 @@
 //! Pipeline: `generate` builds and settles a `Scene` from a seed; `World` mirrors a scene in
 //! rapier; `truth` measures relations, stability and occlusion; `perceive` turns them into
 //! observations through an error model; `act` executes `pickup`/`putdown` and reports what is
-//! observed afterwards; `render` draws the camera and top views.
+//! observed afterwards; `render` draws the camera and top views; `picture` frames and labels the camera view for people.
 //!
 //! Versions and math types: rapier3d is pinned to exactly 0.36.1 and parry3d to 0.31.1 (the
 //! parry version that rapier uses, so shapes and poses pass between them unchanged). Since
@@ -25,6 +25,7 @@ pub mod act;
 pub mod generate;
 pub mod object;
 pub mod perceive;
+pub mod picture;
 pub mod render;
 pub mod scene;
 pub mod truth;
@@ -37,6 +38,7 @@ pub use object::{Colour, ObjectKind, Size, Surface};
 pub use perceive::{
     perceive, perceive_look, perceive_world, ErrorModel, FactStyle, Literal, Observation, Percept,
 };
+pub use picture::{picture, Picture};
 pub use render::{render_camera, render_top, Image};
 pub use scene::{Camera, ObjectId, Scene, SceneObject, ROBOT, TABLE};
 pub use truth::{measure, GroundTruth, Rel, Relation, TruthConfig};
