@@ -30,6 +30,13 @@ if ! command -v parallel >/dev/null; then
   as_root apt-get install -y -qq parallel
 fi
 
+# tests/demo.rs renders the run reports in headless Chromium.
+if ! command -v chromium >/dev/null && ! command -v chromium-browser >/dev/null; then
+  echo "== installing Chromium (the run report test renders HTML headless)"
+  as_root apt-get update -qq
+  as_root apt-get install -y -qq chromium
+fi
+
 echo "== cargo fmt --check"
 cargo fmt --all -- --check
 echo "== cargo clippy"

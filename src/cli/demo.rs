@@ -102,6 +102,7 @@ mod simulated {
     use std::time::Instant;
 
     use crate::cli::run::{describe, goal_of, load_domain, RunArgs};
+    use crate::cli::run_report::{self, Filming};
     use crate::control::Symbol;
     use crate::explain::lexicon::Lexicon;
     use crate::explain::verbalize::{Tense, Verbalizer};
@@ -113,7 +114,8 @@ mod simulated {
     const SEED: u64 = 3;
 
     fn picture(scene: &sim::Scene, path: &Path) -> Result<(), String> {
-        let png = sim::render_camera(scene, 640, 480)
+        let png = sim::picture(scene, 640, 480)
+            .image
             .to_png()
             .map_err(|e| e.to_string())?;
         std::fs::write(path, png).map_err(|e| format!("cannot write {}: {e}", path.display()))
@@ -244,9 +246,10 @@ mod simulated {
             100.0 * run.actuation
         )?;
         let mut lines: Vec<String> = Vec::new();
+        let mut filming = Filming::new(&mut world);
         let history = act::run(
             &domain,
-            &mut world,
+            &mut filming,
             &goal,
             &format!("generated {} seed {}", preset.name(), run.seed),
             &RunConfig::default(),
@@ -268,32 +271,29 @@ mod simulated {
         for l in &lines {
             writeln!(out, "{l}")?;
         }
+        let frames = std::mem::take(&mut filming.frames);
         if let Err(m) = picture(&world.scene, &after) {
             return input(err, m);
         }
-        let done: Vec<(u32, Symbol)> = history
-            .steps
-            .iter()
-            .filter(|s| s.failure.is_none())
-            .filter_map(|s| Some((s.step, Symbol::parse(s.happened.as_deref()?).ok()?)))
-            .collect();
+        let done = run_report::done_actions(&history);
         writeln!(out)?;
         // The robot explains its own run: the run is saved beside the pictures (so the user can
-        // go on with `lucent ask --run`), and a few questions are asked over it.
+        // go on with `lucent ask --run`), a few questions are asked over it, and the report
+        // shows it all.
         let saved = Path::new(&dir).join("run.json");
+        let questions = run_report::own_questions(&history, &done, &goal, &v);
         let asked = std::fs::write(&saved, history.to_json())
             .map_err(|e| format!("cannot write {}: {e}", saved.display()))
             .and_then(|()| {
-                let questions = super::own_questions(&history, &done, &goal, &v);
-                super::super::explain::ask_run(&saved.to_string_lossy(), &questions)
+                super::super::explain::ask_run(&history, &saved.to_string_lossy(), &questions)
             });
         match &asked {
             Ok(answers) if !answers.is_empty() => {
                 // The first answer describes what was done, failed attempts included.
-                writeln!(out, "What I did: {}", answers[0].1)?;
+                writeln!(out, "What I did: {}", answers[0].1.text)?;
                 writeln!(out, "\nAsked about my run:")?;
                 for (q, a) in &answers[1..] {
-                    writeln!(out, "  Q: {q}\n  A: {a}")?;
+                    writeln!(out, "  Q: {q}\n  A: {}", a.text)?;
                 }
                 writeln!(out, "  (ask more: lucent ask --run {})\n", saved.display())?;
             }
@@ -304,8 +304,29 @@ mod simulated {
                 }
             }
         }
+        let report_path = Path::new(&dir).join("report.html");
+        let (answers, unanswered) = match asked {
+            Ok(a) => (a, None),
+            Err(m) => (Vec::new(), Some(m)),
+        };
+        let report = run_report::Report {
+            title: format!("Lucent demo: {} preset, seed {}", preset.name(), run.seed),
+            history: &history,
+            frames: &frames,
+            answers: &answers,
+            unanswered,
+            v,
+        };
+        if let Err(e) = std::fs::write(&report_path, report.html()) {
+            return input(err, format!("cannot write {}: {e}", report_path.display()));
+        }
         write!(out, "{}", super::super::run::summary(&history))?;
         writeln!(out, "Picture : {} (the camera view after)", after.display())?;
+        writeln!(
+            out,
+            "Report  : {} (the run with pictures and proof trees; open it in a browser)",
+            report_path.display()
+        )?;
         writeln!(
             out,
             "Time    : {:.1}s. Try `lucent run --help` for scene files, budgets and saved histories.",
@@ -317,50 +338,6 @@ mod simulated {
             super::super::EXIT_UNSAT
         })
     }
-}
-
-/// The questions the demo asks about its own run (`done`: its successful actions with their
-/// steps): describe the plan; why its first successful action; why not pick up an object it
-/// never touched at that step; why it believed the first `on` goal at the end.
-#[cfg(feature = "sim")]
-fn own_questions(
-    history: &crate::plan::history::History,
-    done: &[(u32, crate::control::Symbol)],
-    goal: &[crate::control::Symbol],
-    v: &crate::explain::verbalize::Verbalizer<'_>,
-) -> Vec<String> {
-    use crate::control::Symbol;
-    use crate::explain::pattern::SymbolExt;
-    use crate::explain::verbalize::{ActionForm, Tense};
-    let mut qs = vec!["Describe the plan.".to_string()];
-    if let Some((i, a)) = done.first() {
-        qs.push(format!(
-            "Why did you {} at step {i}?",
-            v.action(a, ActionForm::Base)
-        ));
-        let touched: Vec<&Symbol> = done.iter().filter_map(|(_, a)| a.arg(1)).collect();
-        let untouched = history
-            .objects
-            .iter()
-            .filter_map(|o| Symbol::parse(o).ok())
-            .find(|o| !touched.contains(&o) && o.name() != Some("table"));
-        if let Some(o) = untouched {
-            qs.push(format!(
-                "Why didn't you pick up {} at step {i}?",
-                v.object(&o)
-            ));
-        }
-    }
-    if let Some(g) = goal
-        .iter()
-        .find(|g| g.is("relation", 3) && g.arg(0).and_then(Symbol::name) == Some("on"))
-    {
-        qs.push(format!(
-            "Why did you believe that {} at the end?",
-            v.fluent(g, Tense::Past)
-        ));
-    }
-    qs
 }
 
 #[cfg(test)]

@@ -97,6 +97,8 @@ struct Args {
     why: Option<String>,
     why_not: Option<String>,
     run: Option<String>,
+    /// The run itself, when the caller has it as a value (`run` then only names it).
+    run_value: Option<crate::plan::history::History>,
 }
 
 fn usage(err: &mut dyn Write, verb: &str, msg: &str) -> std::io::Result<i32> {
@@ -659,10 +661,13 @@ fn load_history(
         a.files.iter().map(|f| (f.clone(), None)).collect();
     let mut run_actions = None;
     if let Some(path) = &a.run {
-        let loaded = super::builtin::read_to_string(path)
-            .map_err(|e| e.to_string())
-            .and_then(|t| crate::plan::history::History::from_json(&t))
-            .and_then(|run| crate::explain::history::scene_of_run(&run));
+        let loaded = match &a.run_value {
+            Some(run) => crate::explain::history::scene_of_run(run),
+            None => super::builtin::read_to_string(path)
+                .map_err(|e| e.to_string())
+                .and_then(|t| crate::plan::history::History::from_json(&t))
+                .and_then(|run| crate::explain::history::scene_of_run(&run)),
+        };
         let (scene, actions) = match loaded {
             Ok(x) => x,
             Err(e) => {
@@ -881,12 +886,17 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
     Ok(0)
 }
 
-/// Answers questions about a run saved by `lucent run` (the file at `path`), as `lucent ask
-/// --run FILE` would: one `(question, answer)` pair per question, in order; the step of a
-/// question carries to the next. `Err` with the error's text when the run cannot be read or
-/// has no history.
-pub(super) fn ask_run(path: &str, questions: &[String]) -> Result<Vec<(String, String)>, String> {
-    let a = parse_args(&["--run".to_string(), path.to_string()])?;
+/// Answers questions about a run of `lucent run` as `lucent ask --run FILE` would (`name`
+/// names the run in messages): one `(question, answer)` pair per question, in order, each
+/// answer with its proof tree when it has one; the step of a question carries to the next.
+/// `Err` with the error's text when the run has no history.
+pub(super) fn ask_run(
+    run: &crate::plan::history::History,
+    name: &str,
+    questions: &[String],
+) -> Result<Vec<(String, Answer)>, String> {
+    let mut a = parse_args(&["--run".to_string(), name.to_string()])?;
+    a.run_value = Some(run.clone());
     let mut err = Vec::new();
     let loaded = load_history(&a, &mut err).map_err(|e| e.to_string())?;
     let Ok((history, no_plan)) = loaded else {
@@ -898,7 +908,7 @@ pub(super) fn ask_run(path: &str, questions: &[String]) -> Result<Vec<(String, S
         .iter()
         .map(|q| {
             let reply = respond(&history, no_plan, &lexicon, q, &a, &mut session);
-            (q.clone(), reply.answer.text)
+            (q.clone(), reply.answer)
         })
         .collect())
 }

@@ -25,6 +25,8 @@ mod builtin;
 pub mod report;
 #[cfg(feature = "sim")]
 pub mod run;
+#[cfg(feature = "sim")]
+pub mod run_report;
 
 /// KB_full (`domains/ra/kb_full.ald`), built in so that `run`, `demo`, `explain` and `ask` work
 /// from any directory, with or without the `sim` feature.

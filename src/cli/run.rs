@@ -24,6 +24,7 @@ use crate::vision::dataset::DatasetConfig;
 use crate::vision::reason::Knowledge;
 use crate::vision::see::{train_seer, Seeing, SeenOcclusion};
 
+use super::run_report::{self, Filming, Frame, Pictured};
 use super::KB_FULL;
 
 /// Exit code of a run that did not reach its goal.
@@ -59,6 +60,10 @@ a budget runs out. DOMAIN.ald defaults to the built-in KB_full (domains/ra/kb_fu
   --no-confirm            stop at the first observation of the goal, without looking again
   --log FILE              write the progress lines and the summary to FILE
   --save-history FILE     write the run's history as JSON (domains/ra/README.md)
+  --report FILE.html      write a report of the run to open in a browser: the camera picture
+                          after every action, the plans and replans in English with their
+                          reasons, the discrepancies, and the robot's answers to a few
+                          questions about its run with their proof trees (one file, no network)
   --outf=2                print the history as JSON instead of the text summary
 
 Exit code: 0 when the goal was reached, 20 when not, 65 for bad input, 1 for a bad command line.
@@ -91,6 +96,8 @@ pub struct RunArgs {
     pub log: Option<String>,
     /// `--save-history FILE`.
     pub save: Option<String>,
+    /// `--report FILE.html`.
+    pub report: Option<String>,
     /// `--outf=2`.
     pub json: bool,
     /// `--see-occlusion N`: train on N scenes and see occlusion from the image.
@@ -143,6 +150,7 @@ fn parse(args: &[String]) -> Result<RunArgs, String> {
             },
             "--log" => out.log = Some(value()?),
             "--save-history" => out.save = Some(value()?),
+            "--report" => out.report = Some(value()?),
             "--outf" => match value()?.as_str() {
                 "2" => out.json = true,
                 "0" => out.json = false,
@@ -374,6 +382,46 @@ fn seen_summary(seen: &[SeenOcclusion]) -> String {
     out
 }
 
+/// Runs `act` on `world`, filmed when `film` is set: the history and the pictures.
+fn filmed<W: act::World + Pictured>(
+    world: &mut W,
+    film: bool,
+    act: impl FnOnce(&mut dyn act::World) -> History,
+) -> (History, Vec<Frame>) {
+    if !film {
+        return (act(world), Vec::new());
+    }
+    let mut filming = Filming::new(world);
+    let history = act(&mut filming);
+    (history, filming.frames)
+}
+
+/// Writes the HTML report of a run to `path`, with the run's answers to its own questions.
+fn write_report(
+    path: &str,
+    history: &History,
+    frames: &[Frame],
+    goal: &[Symbol],
+) -> Result<(), String> {
+    let lexicon = crate::explain::lexicon::Lexicon::ra();
+    let v = crate::explain::verbalize::Verbalizer::new(&lexicon);
+    let done = run_report::done_actions(history);
+    let questions = run_report::own_questions(history, &done, goal, &v);
+    let (answers, unanswered) = match super::explain::ask_run(history, path, &questions) {
+        Ok(a) => (a, None),
+        Err(m) => (Vec::new(), Some(m)),
+    };
+    let report = run_report::Report {
+        title: format!("Lucent run: {}", history.scene),
+        history,
+        frames,
+        answers: &answers,
+        unanswered,
+        v,
+    };
+    std::fs::write(path, report.html()).map_err(|e| format!("cannot write {path}: {e}"))
+}
+
 /// `lucent run`.
 pub fn run_run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
     let args = match parse(args) {
@@ -451,12 +499,8 @@ pub fn run_run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std
             Some(Seeing::new(inner, classifier, dataset))
         }
     };
-    let acting: &mut dyn act::World = match seeing.as_mut() {
-        Some(s) => s,
-        None => &mut world,
-    };
     let mut io_error = None;
-    let history = act::run(&domain, acting, &goal, &name, &args.config, &mut |e| {
+    let mut on_event = |e: Event| {
         let line = format!("{:7.2}s {}", start.elapsed().as_secs_f64(), describe(&e));
         let mut write = || -> std::io::Result<()> {
             writeln!(err, "{line}")?;
@@ -468,13 +512,27 @@ pub fn run_run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std
         if let Err(e) = write() {
             io_error.get_or_insert(e);
         }
-    });
+    };
+    let film = args.report.is_some();
+    let (history, frames) = match seeing.as_mut() {
+        Some(s) => filmed(s, film, |w| {
+            act::run(&domain, w, &goal, &name, &args.config, &mut on_event)
+        }),
+        None => filmed(&mut world, film, |w| {
+            act::run(&domain, w, &goal, &name, &args.config, &mut on_event)
+        }),
+    };
     if let Some(e) = io_error {
         return Err(e);
     }
     if let Some(path) = &args.save {
         if let Err(e) = std::fs::write(path, history.to_json()) {
             return input_error(err, format!("cannot write {path}: {e}"));
+        }
+    }
+    if let Some(path) = &args.report {
+        if let Err(m) = write_report(path, &history, &frames, &goal) {
+            return input_error(err, m);
         }
     }
     let mut text = summary(&history);

@@ -323,6 +323,49 @@ impl ProofTree {
         &self.nodes[id.index()]
     }
 
+    /// The tree cut down to the answer's path: the path's nodes with all their children, a
+    /// child off the path kept as a leaf (its own children dropped), and the other roots
+    /// dropped. A tree without a path is returned whole. The node order is kept, so children
+    /// still come before their parents.
+    pub fn around_path(&self) -> ProofTree {
+        if self.path.is_empty() {
+            return self.clone();
+        }
+        let mut on = vec![false; self.nodes.len()];
+        let mut keep = vec![false; self.nodes.len()];
+        for &id in &self.path {
+            on[id.index()] = true;
+            keep[id.index()] = true;
+            for &c in &self.node(id).children {
+                keep[c.index()] = true;
+            }
+        }
+        let mut map = vec![None; self.nodes.len()];
+        let mut out = ProofTree {
+            learned: self.learned.clone(),
+            ..ProofTree::default()
+        };
+        for (i, node) in self.nodes.iter().enumerate() {
+            if !keep[i] {
+                continue;
+            }
+            let mut n = node.clone();
+            if on[i] {
+                n.children = n
+                    .children
+                    .iter()
+                    .map(|c| map[c.index()].expect("children come first"))
+                    .collect();
+            } else {
+                n.children.clear();
+            }
+            map[i] = Some(out.add(n));
+        }
+        out.roots = self.roots.iter().filter_map(|r| map[r.index()]).collect();
+        out.path = self.path.iter().filter_map(|p| map[p.index()]).collect();
+        out
+    }
+
     /// Every edge with its rule instance.
     pub fn edges(&self) -> Vec<Edge<'_>> {
         let mut out = Vec::new();
@@ -663,5 +706,52 @@ impl Oracle for ModelOracle {
 
     fn applied(&self, rule: &RuleInstance) -> bool {
         rule.kind == AxiomKind::CrRule && self.model.contains(&rule.head)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn leaf(tree: &mut ProofTree, name: &str, children: Vec<NodeId>) -> NodeId {
+        let mut n = Node::unsupported(Symbol::parse(name).unwrap());
+        n.children = children;
+        tree.add(n)
+    }
+
+    /// r has children a and b, a has child d, b has child c; the path is r, b, c. Cut down to
+    /// the path, d goes (a is off the path), and every kept node keeps its literal.
+    #[test]
+    fn around_the_path_keeps_the_path_and_its_childrens_literals() {
+        let mut t = ProofTree::default();
+        let d = leaf(&mut t, "d", vec![]);
+        let a = leaf(&mut t, "a", vec![d]);
+        let c = leaf(&mut t, "c", vec![]);
+        let b = leaf(&mut t, "b", vec![c]);
+        let r = leaf(&mut t, "r", vec![a, b]);
+        let other = leaf(&mut t, "r2", vec![]);
+        t.roots = vec![r, other];
+        t.path = vec![r, b, c];
+        let cut = t.around_path();
+        let names: Vec<String> = cut.nodes.iter().map(|n| n.literal.to_string()).collect();
+        assert_eq!(names, ["a", "c", "b", "r"]);
+        assert!(cut.nodes[0].children.is_empty(), "a loses its child d");
+        let path: Vec<String> = cut
+            .path
+            .iter()
+            .map(|p| cut.node(*p).literal.to_string())
+            .collect();
+        assert_eq!(path, ["r", "b", "c"]);
+        assert_eq!(cut.roots.len(), 1);
+        let root = cut.node(cut.roots[0]);
+        let kids: Vec<String> = root
+            .children
+            .iter()
+            .map(|k| cut.node(*k).literal.to_string())
+            .collect();
+        assert_eq!(kids, ["a", "b"]);
+        // Without a path the tree is whole.
+        t.path.clear();
+        assert_eq!(t.around_path(), t);
     }
 }
