@@ -98,8 +98,17 @@ fn progress_is_drawn_on_a_terminal_without_hanging() {
         drawn.contains("2/2 trials"),
         "no progress bar was drawn:\n{drawn}"
     );
-    // `learn` shows a spinner while it learns.
+    // `learn` shows a bar over its episodes while it learns.
     let drawn = on_terminal("learn --episodes 2");
-    assert!(drawn.contains("learning"), "no spinner was drawn:\n{drawn}");
+    assert!(
+        drawn.contains("/2 episodes learning"),
+        "no episode bar was drawn:\n{drawn}"
+    );
+    // Generating a dataset shows a bar over its scenes.
+    let drawn = on_terminal("run --preset real --seed 2 --see-occlusion 4");
+    assert!(
+        drawn.contains("/4 training scenes generated"),
+        "no dataset bar was drawn:\n{drawn}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -129,8 +129,11 @@ pub fn run_experiment(
             "the experiment needs at least one training size and one test scene",
         );
     }
-    let progress = |line: &str| eprintln!("classify: {line}");
-    let result = match exp::run(&config, &progress) {
+    let bar = super::progress::bar(exp::scene_count(&config) as u64, "scenes generated");
+    let progress = |line: &str| bar.suspend(|| eprintln!("classify: {line}"));
+    let result = exp::run(&config, &progress, &|| bar.inc(1));
+    bar.finish_and_clear();
+    let result = match result {
         Ok(r) => r,
         Err(e) => {
             writeln!(err, "*** ERROR: (lucent): {e}")?;
@@ -243,7 +246,9 @@ pub fn run_classify(
         (c, true)
     } else {
         let base = seed.wrapping_mul(10_000_000);
-        let scenes = dataset::generate(&config, base..base + train as u64);
+        let bar = super::progress::bar(train as u64, "training scenes generated");
+        let scenes = dataset::generate_with(&config, base..base + train as u64, &|| bar.inc(1));
+        bar.finish_and_clear();
         let incomplete = Knowledge::kb_full().without(&REMOVED);
         let reasoned = match reason_all(&incomplete, &scenes) {
             Ok(r) => r,

@@ -346,8 +346,14 @@ pub fn run_experiment(
             runs: parsed.setup.runs,
             ..Default::default()
         };
-        let progress = |line: &str| eprintln!("classify: {line}");
-        match crate::experiment::classify::run(&config, &progress) {
+        let bar = super::progress::bar(
+            crate::experiment::classify::scene_count(&config) as u64,
+            "scenes generated",
+        );
+        let progress = |line: &str| bar.suspend(|| eprintln!("classify: {line}"));
+        let result = crate::experiment::classify::run(&config, &progress, &|| bar.inc(1));
+        bar.finish_and_clear();
+        match result {
             Ok(r) => Some(r),
             Err(e) => return error(err, &e, super::EXIT_INPUT),
         }

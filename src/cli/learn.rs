@@ -156,15 +156,23 @@ pub fn run_learn(
         return Ok(super::EXIT_INPUT);
     };
     let start = Instant::now();
-    let spinner = super::progress::spinner("learning");
+    let mut learn_config = config(&args);
+    // A bar over the episodes: a run ends early once it detects nothing new.
+    let progress = super::progress::bar(learn_config.episodes as u64, "episodes");
+    progress.set_message("learning");
+    let bar = progress.clone();
+    learn_config.on_episode =
+        crate::learn::episode::EpisodeObserver(Some(std::sync::Arc::new(move |e| {
+            bar.set_position(e as u64)
+        })));
     let report = h1::one_run_with(
         &spec,
-        &config(&args),
+        &learn_config,
         h1::run_seed(args.seed, args.run),
         args.oracle,
         &h1::Caches::default(),
     );
-    spinner.finish_and_clear();
+    progress.finish_and_clear();
     let report = match report {
         Ok(r) => r,
         Err(e) => {

@@ -18,14 +18,3 @@ pub fn bar(total: u64, unit: &str) -> ProgressBar {
     }
     bar
 }
-
-/// A spinner for a job whose size is not known in advance: `⠋ learning 00:12`, redrawn ten
-/// times a second from its own thread until [`ProgressBar::finish_and_clear`].
-pub fn spinner(what: &str) -> ProgressBar {
-    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr_with_hz(10));
-    if let Ok(style) = ProgressStyle::with_template(&format!("{{spinner}} {what} {{elapsed}}")) {
-        bar.set_style(style);
-    }
-    bar.enable_steady_tick(std::time::Duration::from_millis(100));
-    bar
-}

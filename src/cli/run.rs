@@ -481,7 +481,10 @@ pub fn run_run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std
             };
             let started = Instant::now();
             let knowledge = Knowledge::kb_full();
-            let classifier = match train_seer(&knowledge, &dataset, n, args.seed) {
+            let bar = super::progress::bar(n, "training scenes generated");
+            let trained = train_seer(&knowledge, &dataset, n, args.seed, &|| bar.inc(1));
+            bar.finish_and_clear();
+            let classifier = match trained {
                 Ok(c) => c,
                 Err(e) => return input_error(err, format!("training the occlusion network: {e}")),
             };

@@ -199,16 +199,27 @@ fn evaluate(c: &Classifier, test: &[Reasoned<'_>], label: Label) -> (usize, f64,
     )
 }
 
-/// Runs the experiment; `progress` hears a line per stage.
-pub fn run(config: &ClassifyConfig, progress: &dyn Fn(&str)) -> Result<ClassifyResult, String> {
+/// How many scenes [`run`] generates (training and test): the length of its progress.
+pub fn scene_count(config: &ClassifyConfig) -> usize {
+    config.sizes.iter().copied().max().unwrap_or(0) + config.test_scenes
+}
+
+/// Runs the experiment; `progress` hears a line per stage, `scene_done` each generated scene
+/// ([`scene_count`] in all).
+pub fn run(
+    config: &ClassifyConfig,
+    progress: &dyn Fn(&str),
+    scene_done: &(dyn Fn() + Sync),
+) -> Result<ClassifyResult, String> {
     let start = Instant::now();
     let max = config.sizes.iter().copied().max().unwrap_or(0);
     let base = config.seed.wrapping_mul(10_000_000);
-    let train_scenes = dataset::generate(&config.dataset, base..base + max as u64);
+    let train_scenes = dataset::generate_with(&config.dataset, base..base + max as u64, scene_done);
     let test_base = base + 1_000_000;
-    let test_scenes = dataset::generate(
+    let test_scenes = dataset::generate_with(
         &config.dataset,
         test_base..test_base + config.test_scenes as u64,
+        scene_done,
     );
     let dataset_seconds = start.elapsed().as_secs_f64();
     progress(&format!(

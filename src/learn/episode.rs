@@ -97,6 +97,22 @@ pub struct LearnConfig {
     pub pools: Pools,
     /// Normalization of converse and symmetric relations in lifting.
     pub algebra: Algebra,
+    /// Hears the index of each episode as it starts (a progress bar); nobody by default.
+    pub on_episode: EpisodeObserver,
+}
+
+/// A listener for the start of each episode, shared across threads.
+#[derive(Clone, Default)]
+pub struct EpisodeObserver(pub Option<std::sync::Arc<dyn Fn(usize) + Send + Sync>>);
+
+impl std::fmt::Debug for EpisodeObserver {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.is_some() {
+            "EpisodeObserver(set)"
+        } else {
+            "EpisodeObserver(none)"
+        })
+    }
 }
 
 impl Default for LearnConfig {
@@ -114,6 +130,7 @@ impl Default for LearnConfig {
             ensemble: EnsembleParams::default(),
             pools: Pools::h1(),
             algebra: Algebra::ra(),
+            on_episode: EpisodeObserver::default(),
         }
     }
 }
@@ -235,6 +252,9 @@ pub fn run(
     let robot = config.pools.robot.clone();
     let root = SplitMix64::new(seed);
     for episode in 0..config.episodes {
+        if let Some(hear) = &config.on_episode.0 {
+            hear(episode);
+        }
         let mut rng = root.fork(episode as u64);
         let mut ep = EpisodeReport {
             episode,

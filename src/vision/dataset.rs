@@ -251,6 +251,16 @@ fn centred_box(b: &PixelBox, scale: f32) -> PixelBox {
 /// in seed order; seed `i` uses `presets[i % presets.len()]`. Seeds whose scene cannot be
 /// generated are skipped (see the module documentation). Panics if `presets` is empty.
 pub fn generate(config: &DatasetConfig, seeds: std::ops::Range<u64>) -> Vec<LabelledScene> {
+    generate_with(config, seeds, &|| ())
+}
+
+/// [`generate`], calling `done` once per seed as its scene is finished (from any thread, in
+/// any order): a progress bar's tick.
+pub fn generate_with(
+    config: &DatasetConfig,
+    seeds: std::ops::Range<u64>,
+    done: &(dyn Fn() + Sync),
+) -> Vec<LabelledScene> {
     use rayon::prelude::*;
     assert!(!config.presets.is_empty(), "a dataset needs a preset");
     let seeds: Vec<u64> = seeds.collect();
@@ -258,7 +268,9 @@ pub fn generate(config: &DatasetConfig, seeds: std::ops::Range<u64>) -> Vec<Labe
         .par_iter()
         .map(|&seed| {
             let preset = config.presets[(seed % config.presets.len() as u64) as usize];
-            labelled_scene(config, preset, seed).ok()
+            let scene = labelled_scene(config, preset, seed).ok();
+            done();
+            scene
         })
         .collect::<Vec<_>>()
         .into_iter()

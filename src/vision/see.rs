@@ -18,7 +18,7 @@
 
 use super::classify::{reason_all, Classifier, Decision, Source, System, TrainConfig};
 use super::constraints::Label;
-use super::dataset::{generate, occlusion_rois, DatasetConfig};
+use super::dataset::{generate_with, occlusion_rois, DatasetConfig};
 use super::labels::frontal;
 use super::reason::{Knowledge, ReasonError, Reasoning, View};
 use crate::control::Symbol;
@@ -63,14 +63,16 @@ pub struct Seeing {
 /// Trains the classifier a seeing robot uses: reasoning with `knowledge`, and a network on the
 /// occlusion ROIs of `scenes` generated scenes (seeds from [`TRAINING_SEEDS`] + `seed`) that
 /// reasoning cannot decide. Returns the classifier and the number of network examples.
+/// `scene_done` hears each generated training scene (a progress bar's tick).
 pub fn train_seer(
     knowledge: &Knowledge,
     dataset: &DatasetConfig,
     scenes: u64,
     seed: u64,
+    scene_done: &(dyn Fn() + Sync),
 ) -> Result<Classifier, ReasonError> {
     let start = TRAINING_SEEDS + seed.wrapping_mul(scenes.max(1));
-    let train = generate(dataset, start..start + scenes);
+    let train = generate_with(dataset, start..start + scenes, scene_done);
     let reasoned = reason_all(knowledge, &train)?;
     Classifier::train(
         System::ReasoningCnn,
