@@ -103,6 +103,132 @@ fn every_readme_command_runs_as_written() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
+/// The exit codes the README promises ("Exit codes"), one command each, run from the clone:
+/// solving as clingo (10, 20, 30), a bad command line 1, bad input and an unwritable file 65, jobs
+/// 0 when done, `run` 0 when the goal is reached and 20 when not.
+#[test]
+fn the_exit_codes_the_readme_promises() {
+    let readme = include_str!("../README.md");
+    for promise in [
+        "10 a model found, 20 no model",
+        "30 search exhausted with models",
+        "1 a bad command line",
+        "65 an error in the input or a file that cannot be read or written",
+        "exit 0 when done",
+        "exit 0 when the robot reached its goal and 20 when it did not",
+    ] {
+        let flat = readme.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(
+            flat.contains(promise),
+            "the README no longer says `{promise}`"
+        );
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let lucent = env!("CARGO_BIN_EXE_lucent");
+    let dir = std::env::temp_dir().join(format!("lucent-exits-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let code = |args: &[&str], stdin: &str| -> i32 {
+        use std::io::Write;
+        let mut child = Command::new(lucent)
+            .args(args)
+            .current_dir(root)
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(stdin.as_bytes())
+            .unwrap();
+        child.wait().unwrap().code().unwrap_or(-1)
+    };
+    let unwritable = dir.join("no/such/dir/out.json");
+    let unwritable = unwritable.to_str().unwrap();
+    let mut cases: Vec<(Vec<&str>, &str, i32)> = vec![
+        (vec![], "{a}.", 10),
+        (vec![], "a :- not a.", 20),
+        (vec![], "a.", 30),
+        (vec!["-n", "0"], "{a}.", 30),
+        (vec!["--frobnicate"], "a.", 1),
+        (vec![], "a(.", 65),
+        (vec!["no-such-file.lp"], "", 65),
+        (
+            vec![
+                "translate",
+                "domains/ra/scenes/tabletop_task.ald",
+                "-c",
+                "horizon=3",
+            ],
+            "",
+            0,
+        ),
+    ];
+    if cfg!(feature = "sim") {
+        let sim: Vec<(Vec<&str>, &str, i32)> = vec![
+            (
+                vec![
+                    "run",
+                    "--preset",
+                    "real",
+                    "--seed",
+                    "3",
+                    "--goal",
+                    "on(brown_pot,green_cube)",
+                ],
+                "",
+                0,
+            ),
+            (
+                vec![
+                    "run",
+                    "--preset",
+                    "real",
+                    "--seed",
+                    "3",
+                    "--max-actions",
+                    "0",
+                ],
+                "",
+                20,
+            ),
+            (
+                vec![
+                    "run",
+                    "--preset",
+                    "real",
+                    "--seed",
+                    "3",
+                    "--save-history",
+                    unwritable,
+                ],
+                "",
+                65,
+            ),
+            (
+                vec!["sim", "generate", "--seed", "1", "-o", unwritable],
+                "",
+                65,
+            ),
+        ];
+        cases.extend(sim);
+    }
+    let mut wrong = Vec::new();
+    for (args, stdin, want) in &cases {
+        let got = code(args, stdin);
+        if got != *want {
+            wrong.push(format!(
+                "lucent {args:?} < {stdin:?}: exit {got}, the README says {want}"
+            ));
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
 /// The decoded RGB pixels and size of a PNG file.
 #[cfg(feature = "sim")]
 fn pixels(path: &Path) -> Result<(u32, u32, Vec<u8>), String> {
