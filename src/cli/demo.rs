@@ -31,8 +31,13 @@ The robot at work in the simulated tabletop world: a generated scene (default: p
 seed 3), a goal (drawn at random unless given), perception with 15% errors, a minimal plan
 from the built-in knowledge base KB_full, the plan in English, execution in the physics world
 with 15% manipulation failures, replanning after every discrepancy, until the robot sees the
-goal. Writes the camera view before and after to DIR (default lucent-demo/) as PNG files.
+goal; then the robot answers questions about its own run. Writes to DIR (default lucent-demo/)
+the labelled camera views before and after (before.png, after.png), the run (run.json, for
+`lucent ask --run DIR/run.json`) and report.html, the whole run with a picture after every
+action, the plans in English and the answers with their proof trees, to open in a browser.
 For more control (scene files, budgets, histories) use `lucent run`.
+
+Exit code: 0 when the goal was reached, 20 when not, 65 for bad input, 1 for a bad command line.
 ";
 
 /// The plans of the built-in tabletop task, for builds without the simulator.
@@ -121,7 +126,8 @@ mod simulated {
         std::fs::write(path, png).map_err(|e| format!("cannot write {}: {e}", path.display()))
     }
 
-    pub fn run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
+    /// The demo's command line: the run's settings and the output folder.
+    fn parse(args: &[String]) -> Result<(RunArgs, String), String> {
         let mut run = RunArgs {
             seed: SEED,
             perception: 0.15,
@@ -130,54 +136,46 @@ mod simulated {
             ..RunArgs::default()
         };
         let mut dir = "lucent-demo".to_string();
-        let mut i = 0;
-        while i < args.len() {
-            let a = args[i].as_str();
-            let (name, inline) = match a.split_once('=') {
-                Some((n, v)) => (n, Some(v.to_string())),
-                None => (a, None),
+        let mut words = super::super::options::VerbArgs::new(args);
+        while let Some(w) = words.next_arg() {
+            let (arg, name) = (w.word, w.name);
+            let mut value = || words.value(&w);
+            let probability = |v: String| -> Result<f64, String> {
+                v.parse::<f64>()
+                    .ok()
+                    .filter(|p| (0.0..=1.0).contains(p))
+                    .ok_or_else(|| format!("{name} needs a probability, got `{v}`"))
             };
-            let value = inline.or_else(|| {
-                i += 1;
-                args.get(i).cloned()
-            });
-            let Some(value) = value else {
-                writeln!(err, "*** ERROR: (lucent): {name} needs a value")?;
-                return Ok(super::super::EXIT_USAGE);
-            };
-            let bad = |what: &str| format!("{name} needs {what}, got `{value}`");
-            let probability = |v: &str| v.parse::<f64>().ok().filter(|p| (0.0..=1.0).contains(p));
-            let parsed: Result<(), String> = match name {
-                "--seed" => value
-                    .parse()
-                    .map(|s| run.seed = s)
-                    .map_err(|_| bad("a number")),
-                "--preset" => {
-                    run.preset = Some(value.clone());
-                    Ok(())
+            match name {
+                "--seed" => {
+                    let v = value()?;
+                    run.seed = v
+                        .parse()
+                        .map_err(|_| format!("{name} needs a number, got `{v}`"))?;
                 }
-                "--goal" => {
-                    run.goals.push(value.clone());
-                    Ok(())
+                "--preset" => run.preset = Some(value()?),
+                "--goal" => run.goals.push(value()?),
+                "--out" => dir = value()?,
+                "--perception-noise" => run.perception = probability(value()?)?,
+                "--actuation-noise" => run.actuation = probability(value()?)?,
+                _ => {
+                    return Err(format!(
+                        "unknown argument `{arg}` (try `lucent demo --help`)"
+                    ))
                 }
-                "--out" => {
-                    dir = value.clone();
-                    Ok(())
-                }
-                "--perception-noise" => probability(&value)
-                    .map(|p| run.perception = p)
-                    .ok_or_else(|| bad("a probability")),
-                "--actuation-noise" => probability(&value)
-                    .map(|p| run.actuation = p)
-                    .ok_or_else(|| bad("a probability")),
-                _ => Err(format!("unknown argument `{a}` (try `lucent demo --help`)")),
-            };
-            if let Err(m) = parsed {
+            }
+        }
+        Ok((run, dir))
+    }
+
+    pub fn run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
+        let (run, dir) = match parse(args) {
+            Ok(x) => x,
+            Err(m) => {
                 writeln!(err, "*** ERROR: (lucent): {m}")?;
                 return Ok(super::super::EXIT_USAGE);
             }
-            i += 1;
-        }
+        };
         let start = Instant::now();
         let input = |err: &mut dyn Write, m: String| -> std::io::Result<i32> {
             writeln!(err, "*** ERROR: (lucent): {m}")?;
