@@ -263,7 +263,11 @@ proptest::proptest! {
         let parsed = lucent::action::parse(lucent::base::FileId(0), &text);
         let options = lucent::action::Options {
             profile: None,
-            overrides: vec![("horizon".into(), lucent::action::ast::Value::Int(2))],
+            switches: lucent::action::Switches {
+                horizon: Some(2),
+                ..Default::default()
+            },
+            ..Default::default()
         };
         let t = lucent::action::translate(&parsed.description, &options);
         if !parsed.has_errors() && !t.has_errors() {

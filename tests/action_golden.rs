@@ -42,6 +42,7 @@ fn translate_scene(
             .iter()
             .map(|(n, v)| (n.to_string(), v.clone()))
             .collect(),
+        ..Options::default()
     };
     let t = action::translate(&description, &options);
     assert!(!t.has_errors(), "{:?}", t.diagnostics);

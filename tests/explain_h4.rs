@@ -24,7 +24,6 @@ use lucent::control::Symbol;
 use lucent::explain::english::Parser;
 use lucent::explain::history::{parse_actions, History};
 use lucent::explain::lexicon::Lexicon;
-use lucent::explain::pattern::SymbolExt;
 use lucent::explain::questions::{answer, Mode, Session};
 
 /// One curated question.

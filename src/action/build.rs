@@ -19,6 +19,8 @@ pub enum Arg {
     Var(String),
     /// An integer.
     Int(i64),
+    /// Any other term (a nested function, a string).
+    Term(Term),
 }
 
 impl Arg {
@@ -32,6 +34,7 @@ impl Arg {
             Arg::Const(c) => TermKind::Constant(c.as_str().into()),
             Arg::Var(v) => TermKind::Variable(v.as_str().into()),
             Arg::Int(n) => TermKind::Integer(*n),
+            Arg::Term(t) => return t.clone(),
         };
         Term {
             span: Span::default(),
@@ -47,16 +50,21 @@ fn name(text: &str) -> Name {
     }
 }
 
+/// The atom `name(args)`.
+pub fn atom(predicate: &str, args: &[Arg]) -> Atom {
+    Atom {
+        span: Span::default(),
+        name: name(predicate),
+        args: args.iter().map(Arg::term).collect(),
+    }
+}
+
 /// The literal `[-]name(args)`.
 pub fn lit(negated: bool, predicate: &str, args: &[Arg]) -> Lit {
     Lit {
         span: Span::default(),
         negated,
-        atom: Atom {
-            span: Span::default(),
-            name: name(predicate),
-            args: args.iter().map(Arg::term).collect(),
-        },
+        atom: atom(predicate, args),
     }
 }
 
@@ -98,6 +106,61 @@ pub fn fact(l: Lit) -> Statement {
 /// `initially l.`
 pub fn initially(l: Lit) -> Statement {
     statement(None, StatementKind::Initially { lit: l })
+}
+
+/// `goal l1, ..., lk.`: one goal, the conjunction of `lits`.
+pub fn goal(lits: Vec<Lit>) -> Statement {
+    statement(
+        None,
+        StatementKind::Goal {
+            body: lits.into_iter().map(BodyItem::Lit).collect(),
+        },
+    )
+}
+
+/// `happened a at step.`
+pub fn happened(action: Atom, step: i64) -> Statement {
+    statement(
+        None,
+        StatementKind::Happened {
+            action,
+            step: Arg::Int(step).term(),
+        },
+    )
+}
+
+/// `observed l at step.`
+pub fn observed(l: Lit, step: i64) -> Statement {
+    statement(
+        None,
+        StatementKind::Observed {
+            lit: l,
+            step: Arg::Int(step).term(),
+        },
+    )
+}
+
+/// `label: a causes effect if body.`: a causal law.
+pub fn causal(label: &str, action: Atom, effect: Lit, body: Vec<Lit>) -> Statement {
+    statement(
+        Some(label),
+        StatementKind::Causal {
+            action,
+            effect,
+            body: body.into_iter().map(BodyItem::Lit).collect(),
+        },
+    )
+}
+
+/// `label: impossible a if body.`: an executability condition.
+pub fn impossible(label: &str, action: Atom, body: Vec<Lit>) -> Statement {
+    statement(
+        Some(label),
+        StatementKind::Impossible {
+            action,
+            body: body.into_iter().map(BodyItem::Lit).collect(),
+        },
+    )
 }
 
 /// `label: head if body.`: a state constraint.

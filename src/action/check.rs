@@ -9,7 +9,8 @@
 //!   variable has at least one sort ([`StatementInfo::var_sorts`]), so the translation is sorted
 //!   and safe.
 //! - Switch precedence, lowest first: built-in defaults, `switch` declarations, `set`
-//!   statements, the chosen profile, then [`Options::overrides`].
+//!   statements, the chosen profile, [`Options::overrides`], then the typed [`Switches`] (the
+//!   only place where the built-in switches' names meet the values the robot layers set).
 //! - Guards are read before anything else; statements whose guards fail, or whose label the
 //!   profile drops, are not checked (so alternative versions of an axiom may share a label).
 
@@ -50,14 +51,107 @@ pub fn builtin_switches() -> Vec<(&'static str, Value)> {
     ]
 }
 
-/// What the caller chooses: a profile and switch values (`-c name=value`).
+/// What the caller chooses: a profile, switch values by name (`-c name=value`, the
+/// description's own switches) and the built-in switches as typed values.
 #[derive(Clone, Debug, Default)]
 pub struct Options {
     /// A profile declared in the description.
     pub profile: Option<String>,
-    /// Switch values that override everything else; names that are not switches are ignored
-    /// (on the command line they may be grounding constants).
+    /// Switch values by name that override the description and the profile; names that are not
+    /// switches are ignored (on the command line they may be grounding constants).
     pub overrides: Vec<(String, Value)>,
+    /// The built-in switches the robot layers set, overriding everything else.
+    pub switches: Switches,
+}
+
+impl Options {
+    /// Options with the profile `profile` and nothing overridden.
+    pub fn profile(profile: Option<&str>) -> Options {
+        Options {
+            profile: profile.map(str::to_string),
+            ..Options::default()
+        }
+    }
+}
+
+/// How the translation lays out the steps of its horizon (the switch `horizon_mode`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HorizonMode {
+    /// Steps `0..=horizon`, with `:- not success` when planning: every plan reaching the goal
+    /// by the horizon.
+    Fixed,
+    /// Steps `0..=horizon`, with the goal required exactly at the last step.
+    Iterative,
+    /// One `step(k)` part per step (see [`crate::action::parts`]).
+    Incremental,
+    /// One action at every step before the horizon, goal or not: the transitions a plan
+    /// checker explores.
+    Transition,
+}
+
+impl HorizonMode {
+    /// The switch value's word.
+    pub fn word(self) -> &'static str {
+        match self {
+            HorizonMode::Fixed => "fixed",
+            HorizonMode::Iterative => "iterative",
+            HorizonMode::Incremental => "incremental",
+            HorizonMode::Transition => "transition",
+        }
+    }
+}
+
+/// Typed values of the built-in switches; `None` keeps the value the description, its profile
+/// or the overrides give.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Switches {
+    /// The last step (`horizon`).
+    pub horizon: Option<usize>,
+    /// The planning module (`planning`): the goal, `success`, action choice.
+    pub planning: Option<bool>,
+    /// The layout of the steps (`horizon_mode`).
+    pub horizon_mode: Option<HorizonMode>,
+    /// `false` turns the state constraints written `never` off (`stability_constraint = off`).
+    pub stability_constraint: Option<bool>,
+}
+
+impl Switches {
+    /// Horizon `n`, planning module off: a history or a prediction over `n` steps.
+    pub fn history(n: usize) -> Switches {
+        Switches {
+            horizon: Some(n),
+            planning: Some(false),
+            ..Switches::default()
+        }
+    }
+
+    /// Horizon `n` with the planning module and steps laid out as `mode`.
+    pub fn planning(n: usize, mode: HorizonMode) -> Switches {
+        Switches {
+            horizon: Some(n),
+            planning: Some(true),
+            horizon_mode: Some(mode),
+            ..Switches::default()
+        }
+    }
+
+    /// The switches as (name, value) pairs, in the checker's vocabulary.
+    fn named(&self) -> Vec<(&'static str, Value)> {
+        let mut out = Vec::new();
+        if let Some(h) = self.horizon {
+            out.push(("horizon", Value::Int(h as i64)));
+        }
+        if let Some(p) = self.planning {
+            out.push(("planning", Value::Bool(p)));
+        }
+        if let Some(m) = self.horizon_mode {
+            out.push(("horizon_mode", Value::Word(m.word().to_string())));
+        }
+        if self.stability_constraint == Some(false) {
+            out.push(("stability_constraint", Value::Word("off".to_string())));
+        }
+        out
+    }
 }
 
 /// A ground member of a sort.
@@ -400,6 +494,9 @@ fn resolve_switches(desc: &Description, options: &Options, c: &mut Checked) {
                 c.switches.insert(name.clone(), value.clone());
             }
         }
+    }
+    for (name, value) in options.switches.named() {
+        c.switches.insert(name.to_string(), value);
     }
 }
 

@@ -43,7 +43,11 @@ pub fn check_action_invariants(bytes: &[u8]) -> Result<(), String> {
     for profile in profiles {
         let options = Options {
             profile,
-            overrides: vec![("horizon".into(), super::ast::Value::Int(2))],
+            switches: super::Switches {
+                horizon: Some(2),
+                ..Default::default()
+            },
+            ..Default::default()
         };
         let t = translate(&parsed.description, &options);
         for d in &t.diagnostics {

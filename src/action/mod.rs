@@ -19,7 +19,7 @@ pub mod parser;
 pub mod parts;
 pub mod translate;
 
-pub use check::{check, Checked, Options};
+pub use check::{check, Checked, HorizonMode, Options, Switches};
 pub use parser::{parse, Parse};
 pub use translate::{translate, AxiomOrigin, OriginKind, Translation};
 

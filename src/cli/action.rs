@@ -57,6 +57,7 @@ pub fn translate_input(
             .iter()
             .map(|(n, v)| (n.clone(), value_of(v)))
             .collect(),
+        ..Options::default()
     };
     let translation = action::translate(&parsed.description, &options);
     let errors = translation.has_errors();

@@ -660,6 +660,7 @@ fn load_history(
     let mut files: Vec<(String, Option<String>)> =
         a.files.iter().map(|f| (f.clone(), None)).collect();
     let mut run_actions = None;
+    let mut run_scene = None;
     if let Some(path) = &a.run {
         let loaded = match &a.run_value {
             Some(run) => crate::explain::history::scene_of_run(run),
@@ -681,7 +682,7 @@ fn load_history(
                 Some(super::KB_FULL.to_string()),
             ));
         }
-        files.push((format!("{path} (as AL_d)"), Some(scene)));
+        run_scene = Some(scene);
         run_actions = Some(actions);
     }
     for (name, given) in files {
@@ -696,6 +697,10 @@ fn load_history(
         let parsed = action::load(&mut sources, id, &mut read);
         diags.extend(parsed.diagnostics);
         desc.statements.extend(parsed.description.statements);
+    }
+    // The run's scene (objects, statics, initial state, goal) as statements built from values.
+    if let Some(scene) = run_scene {
+        desc.statements.extend(scene.statements());
     }
     if let Some(goal) = &a.goal {
         let text = format!("goal {goal}.\n");

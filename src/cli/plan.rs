@@ -18,7 +18,6 @@ use std::time::Instant;
 
 use crate::action;
 use crate::base::{Diagnostics, SourceMap};
-use crate::plan::scene::add_statements;
 use crate::plan::{plan, PlanConfig, PlanError, Search};
 
 /// `lucent plan --help`.
@@ -159,30 +158,35 @@ fn parse_args(
     Ok(Ok(a))
 }
 
-/// The scene file as AL_d text: a simulator scene (`.json`) or facts.
-fn scene_text(sources: &mut SourceMap, name: &str, text: String) -> Result<String, String> {
+/// The scene file's facts: a simulator scene (`.json`) or facts.
+fn scene_facts(
+    sources: &mut SourceMap,
+    name: &str,
+    text: String,
+) -> Result<crate::plan::SceneFacts, String> {
     if name.ends_with(".json") {
         #[cfg(feature = "sim")]
         {
             return crate::sim::Scene::from_json(&text)
-                .map(|s| crate::plan::SceneFacts::from_sim(&s).to_ald())
+                .map(|s| crate::plan::SceneFacts::from_sim(&s))
                 .map_err(|e| format!("{name}: {e}"));
         }
         #[cfg(not(feature = "sim"))]
         return Err(format!("{name}: simulator scenes need the `sim` feature"));
     }
     let file = sources.add(name.to_string(), text.clone());
-    crate::plan::SceneFacts::parse(file, &text)
-        .map(|s| s.to_ald())
-        .map_err(|errors| {
-            let mut d = Diagnostics::default();
-            d.extend(errors);
-            d.render(sources)
-        })
+    crate::plan::SceneFacts::parse(file, &text).map_err(|errors| {
+        let mut d = Diagnostics::default();
+        d.extend(errors);
+        d.render(sources)
+    })
 }
 
 /// The goal as an AL_d statement: literals, or controlled English over the scene's objects.
-fn goal_text(goal: &str, desc: &action::ast::Description) -> Result<String, String> {
+fn goal_statement(
+    goal: &str,
+    desc: &action::ast::Description,
+) -> Result<action::ast::Statement, String> {
     if let Some(g) = crate::plan::goal_statement(goal) {
         return Ok(g);
     }
@@ -203,13 +207,8 @@ fn goal_text(goal: &str, desc: &action::ast::Description) -> Result<String, Stri
         .unwrap_or_default();
     let parser = crate::explain::english::Parser::new(&lexicon, &objects);
     match parser.parse(goal) {
-        Ok(crate::explain::english::Question::Goal { literals }) => Ok(format!(
-            "goal {}.",
-            literals
-                .iter()
-                .map(|l| l.to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
+        Ok(crate::explain::english::Question::Goal { literals }) => Ok(action::build::goal(
+            literals.iter().map(crate::plan::problem::ald_lit).collect(),
         )),
         Ok(q) => Err(format!("`{goal}` is a {} question, not a goal", q.kind())),
         Err(e) => Err(format!("`{goal}`: {}", parser.reply(&e))),
@@ -251,6 +250,8 @@ pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> st
         return bad(err, &d.render(&sources));
     }
     let mut desc = parsed.description;
+    // What the scene and the goal added, as AL_d text for `--emit`.
+    let mut added: Vec<(String, String)> = Vec::new();
     if let Some(scene) = &a.scene {
         let text = match super::builtin::read_to_string(scene) {
             Ok(t) => t,
@@ -259,33 +260,29 @@ pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> st
                 return Ok(super::EXIT_INPUT);
             }
         };
-        let ald = match scene_text(&mut sources, scene, text) {
+        let facts = match scene_facts(&mut sources, scene, text) {
             Ok(t) => t,
             Err(m) => return bad(err, &m),
         };
-        if let Err(m) = add_statements(&mut desc, &mut sources, &format!("<scene {scene}>"), ald) {
-            return bad(err, &m);
-        }
+        desc.statements.extend(facts.statements());
+        added.push((format!("<scene {scene}>"), facts.to_ald()));
     }
     if let Some(goal) = &a.goal {
-        let statement = match goal_text(goal, &desc) {
+        let statement = match goal_statement(goal, &desc) {
             Ok(s) => s,
             Err(m) => return bad(err, &format!("*** ERROR: (lucent): goal {m}")),
         };
         desc.statements
             .retain(|s| !matches!(s.kind, action::ast::StatementKind::Goal { .. }));
-        if let Err(m) = add_statements(&mut desc, &mut sources, "<goal>", statement) {
-            return bad(err, &m);
-        }
+        let shown = action::translate::show_statement(&statement.kind);
+        added.push(("<goal>".to_string(), format!("{shown}.\n")));
+        desc.statements.push(statement);
     }
     if a.emit {
         let path = std::fs::canonicalize(&name).unwrap_or_else(|_| name.clone().into());
         writeln!(out, "include \"{}\".", path.display())?;
-        for i in 0..sources.len() {
-            let f = sources.get(crate::base::FileId(i as u32));
-            if f.name.starts_with('<') {
-                writeln!(out, "% {}\n{}", f.name, f.text)?;
-            }
+        for (name, text) in &added {
+            writeln!(out, "% {name}\n{text}")?;
         }
         return Ok(0);
     }

@@ -47,6 +47,39 @@ impl Control {
         self.add_parsed(parse.program, d)
     }
 
+    /// Adds `facts` (functions, a negative one as a classically negated fact) to the base part,
+    /// as values: nothing is printed and parsed. Clingo's Python API does this through its
+    /// backend; here the facts join the program like any statement of `base`.
+    pub fn add_facts(&mut self, facts: &[Symbol]) -> Result<(), Error> {
+        let statements = facts
+            .iter()
+            .map(|f| {
+                let positive = if f.is_negative() {
+                    f.complement().unwrap_or_else(|| f.clone())
+                } else {
+                    f.clone()
+                };
+                let ast::TermKind::Function { name, args, .. } = positive.to_term().kind else {
+                    return Err(Error {
+                        diagnostics: Diagnostics::default(),
+                        message: format!("`{f}` is not an atom and cannot be a fact"),
+                    });
+                };
+                let atom = ast::SymbolicAtom {
+                    span: Span::default(),
+                    negated: f.is_negative(),
+                    name,
+                    args,
+                };
+                Ok(crate::syntax::build::fact(Span::default(), atom))
+            })
+            .collect::<Result<Vec<_>, Error>>()?;
+        self.add_program(Program {
+            dialect: Dialect::Clingo,
+            statements,
+        })
+    }
+
     /// Keeps the statements of an already parsed program. Spans refer to files of
     /// [`Control::sources`] (a generated program may use default spans).
     pub fn add_program(&mut self, program: Program) -> Result<(), Error> {

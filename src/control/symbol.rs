@@ -169,6 +169,23 @@ impl Symbol {
         Symbol::String(s.into())
     }
 
+    /// The same literal with its classical sign flipped; `None` for numbers, strings and
+    /// tuples, which have no sign.
+    pub fn complement(&self) -> Option<Symbol> {
+        match self {
+            Symbol::Function {
+                name,
+                args,
+                negative,
+            } if !name.is_empty() => Some(Symbol::Function {
+                name: name.clone(),
+                args: args.clone(),
+                negative: !negative,
+            }),
+            _ => None,
+        }
+    }
+
     /// The constant `name`.
     pub fn constant(name: impl Into<Name>) -> Symbol {
         Symbol::function(name, Vec::new())

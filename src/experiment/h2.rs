@@ -26,7 +26,8 @@ use serde::{Deserialize, Serialize};
 
 use super::svg;
 use super::{Context, Domain, Record, Trial, TrialError};
-use crate::action::{self, ast::Description, ast::Value, Options};
+use crate::action::ast::{Description, Statement, Value};
+use crate::action::{self, HorizonMode, Options, Switches};
 use crate::base::rng::SplitMix64;
 use crate::base::SourceMap;
 use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol};
@@ -125,33 +126,25 @@ pub fn pair(preset: ScenePreset, seed: u64, configuration: usize, goal: usize) -
 }
 
 /// The switches both conditions and the ground truth share: the `learner` profile's sorts and
-/// sticky support fluents, the planning module on.
+/// sticky support fluents (the planner turns the planning module on itself).
 fn shared_overrides() -> Vec<(String, Value)> {
     vec![
         ("table_is_object".into(), Value::Bool(true)),
         ("sticky_support_fluents".into(), Value::Bool(true)),
-        ("planning".into(), Value::Bool(true)),
     ]
 }
 
-/// Loads `text` (a scene including the domain) as a description.
-fn load(domain: &Domain, name: &str, text: &str) -> Result<(Description, SourceMap), TrialError> {
+/// The learned-axiom file of an H1 run (AL_d text from its stored record) as statements.
+pub(super) fn learned_statements(name: &str, learned: &str) -> Result<Vec<Statement>, TrialError> {
     let mut sources = SourceMap::new();
-    let file = sources.add(name.to_string(), text.to_string());
-    let mut read = |p: &std::path::Path| {
-        if p == std::path::Path::new(&domain.path) {
-            Ok(domain.text.clone())
-        } else {
-            Err(format!("only the domain {} can be included", domain.path))
-        }
-    };
-    let parsed = action::load(&mut sources, file, &mut read);
+    let file = sources.add(format!("{name} (learned axioms)"), learned.to_string());
+    let parsed = action::parse(file, learned);
     if parsed.has_errors() {
         let mut d = crate::base::Diagnostics::default();
         d.extend(parsed.diagnostics);
         return Err(TrialError::Input(d.render(&sources)));
     }
-    Ok((parsed.description, sources))
+    Ok(parsed.description.statements)
 }
 
 /// A plan as action terms, from a model's `occurs(a, i)` atoms in step order.
@@ -174,12 +167,8 @@ fn fixed_plans(
     n: usize,
 ) -> Result<(usize, Vec<Vec<Symbol>>, bool), String> {
     let mut options = options.clone();
-    options
-        .overrides
-        .push(("horizon".into(), Value::Int(n as i64)));
-    options
-        .overrides
-        .push(("horizon_mode".into(), Value::Word("fixed".into())));
+    options.switches.horizon = Some(n);
+    options.switches.horizon_mode = Some(HorizonMode::Fixed);
     let t = action::translate(desc, &options);
     if t.has_errors() {
         let mut d = crate::base::Diagnostics::default();
@@ -394,9 +383,13 @@ pub fn plan_pair(
     learned: &str,
     fixed: bool,
 ) -> Result<PairResult, TrialError> {
-    let text = scene.to_ald(&domain.path, true);
-    let (plain, sources) = load(domain, name, &text)?;
-    let (taught, taught_sources) = load(domain, name, &format!("{text}\n{learned}"))?;
+    let problem = domain.scene_problem(scene)?;
+    let (plain, sources) = (problem.description(), problem.sources.clone());
+    let taught_problem = crate::plan::Problem {
+        axioms: learned_statements(name, learned)?,
+        ..problem
+    };
+    let (taught, taught_sources) = (taught_problem.description(), taught_problem.sources);
     let truth_config = PlanConfig {
         overrides: shared_overrides(),
         ..PlanConfig::default()
@@ -414,6 +407,10 @@ pub fn plan_pair(
     let learner = Options {
         profile: Some("learner".into()),
         overrides: shared_overrides(),
+        switches: Switches {
+            planning: Some(true),
+            ..Switches::default()
+        },
     };
     let mut condition = |desc: &Description, sources: &SourceMap| Condition {
         fixed: if fixed {

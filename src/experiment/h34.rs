@@ -18,20 +18,18 @@
 //! file; a scene KB_full cannot plan within the budget is counted, not failed.
 
 use std::collections::BTreeSet;
-use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
 use super::svg;
 use super::{Context, Hypothesis, Record, Trial, TrialError};
-use crate::action::{self, ast::Description, ast::Value};
+use crate::action::ast::Description;
 use crate::base::SourceMap;
 use crate::control::Symbol;
 use crate::explain::english::Question;
 use crate::explain::h3::{check_history, ScenePreset};
 use crate::explain::history::{explain_history, History, HistoryConfig};
 use crate::explain::lexicon::Lexicon;
-use crate::explain::pattern::SymbolExt;
 use crate::explain::questions::{answer, Mode, Session};
 use crate::plan::{plan, PlanConfig, PlanError};
 
@@ -45,8 +43,8 @@ pub fn availability(_h: Hypothesis) -> Result<(), String> {
 const MAX_HORIZON: usize = 10;
 
 /// The scene of a trial, loaded against the domain: H2's (scene, goal) pair with the trial's
-/// index (`h2::pair`) as AL_d text that includes the domain, which is read from the context,
-/// never from a file.
+/// index (`h2::pair`) as a problem over the domain, which is read from the context, never from
+/// a file.
 fn load_scene(
     ctx: &Context,
     preset: ScenePreset,
@@ -59,31 +57,8 @@ fn load_scene(
         trial.index / goals,
         trial.index % goals,
     );
-    let domain = Path::new(&ctx.domain.path);
-    let dir = domain.parent().unwrap_or(Path::new("."));
-    let text = scene.to_ald(&ctx.domain.path, true);
-    let mut sources = SourceMap::new();
-    let file = sources.add(
-        dir.join(format!("{}.ald", scene.name()))
-            .to_string_lossy()
-            .into_owned(),
-        text,
-    );
-    let mut read = |p: &Path| {
-        if p == domain {
-            Ok(ctx.domain.text.clone())
-        } else {
-            Err(format!(
-                "{}: only the domain can be included here",
-                p.display()
-            ))
-        }
-    };
-    let parsed = action::load(&mut sources, file, &mut read);
-    if parsed.has_errors() {
-        return Err(TrialError::Input(render(parsed.diagnostics, &sources)));
-    }
-    Ok((parsed.description, sources))
+    let problem = ctx.domain.scene_problem(&scene)?;
+    Ok((problem.description(), problem.sources))
 }
 
 /// A planned and executed history under a profile (`None`: KB_full): the planner's first
@@ -94,17 +69,12 @@ fn run_history(
     sources: &SourceMap,
     profile: Option<&str>,
 ) -> Result<Option<History>, TrialError> {
-    let mut config = PlanConfig {
+    // The learner profile turns the planning module off; the planner turns it on.
+    let config = PlanConfig {
         max_horizon: MAX_HORIZON,
         profile: profile.map(str::to_string),
         ..PlanConfig::default()
     };
-    if profile.is_some() {
-        // The learner profile turns the planning module off; the planner needs it.
-        config
-            .overrides
-            .push(("planning".into(), Value::Bool(true)));
-    }
     let actions = match plan(desc, sources, &config) {
         Ok(found) => found.plans[0].actions.clone(),
         Err(PlanError::NoPlanWithin(_)) if profile.is_none() => return Ok(None),
@@ -121,13 +91,6 @@ fn run_history(
         Ok(h) => Ok(Some(h)),
         Err(e) => Err(TrialError::Input(format!("history: {e}"))),
     }
-}
-
-/// Diagnostics as gringo renders them.
-fn render(diagnostics: Vec<crate::base::diag::Diagnostic>, sources: &SourceMap) -> String {
-    let mut d = crate::base::Diagnostics::default();
-    d.extend(diagnostics);
-    d.render(sources).trim_end().to_string()
 }
 
 fn preset_of(trial: &Trial) -> Result<ScenePreset, TrialError> {
@@ -227,14 +190,10 @@ fn h4_trial(
     let learned = learned_axioms(ctx, trial)?;
     for with in [false, true] {
         let mut d = desc.clone();
-        let mut s = sources.clone();
+        let s = sources.clone();
         if with {
-            let file = s.add("<learned axioms>".to_string(), learned.clone());
-            let parsed = action::parse(file, &learned);
-            if parsed.has_errors() {
-                return Err(TrialError::Input(render(parsed.diagnostics, &s)));
-            }
-            d.statements.extend(parsed.description.statements);
+            d.statements
+                .extend(super::h2::learned_statements("<learned axioms>", &learned)?);
         }
         let Some(h) = run_history(&d, &s, Some("learner"))? else {
             continue;

@@ -308,6 +308,36 @@ pub struct Domain {
     pub text: String,
 }
 
+impl Domain {
+    /// The problem of `scene` (with its goal) over this domain, built as values; the domain's
+    /// text is parsed (it includes nothing).
+    pub fn scene_problem(
+        &self,
+        scene: &crate::explain::h3::Scene,
+    ) -> Result<crate::plan::Problem, TrialError> {
+        let mut sources = crate::base::SourceMap::new();
+        let file = sources.add(self.path.clone(), self.text.clone());
+        let mut read = |p: &std::path::Path| {
+            Err(format!(
+                "{}: the domain {} cannot include files here",
+                p.display(),
+                self.path
+            ))
+        };
+        let parsed = crate::action::load(&mut sources, file, &mut read);
+        if parsed.has_errors() {
+            let mut d = crate::base::Diagnostics::default();
+            d.extend(parsed.diagnostics);
+            return Err(TrialError::Input(d.render(&sources)));
+        }
+        Ok(crate::plan::Problem {
+            domain: parsed.description,
+            sources,
+            ..scene.problem(true)
+        })
+    }
+}
+
 /// What trials read: the setup, the inputs loaded by `cli`, and the store.
 pub struct Context<'a> {
     /// The setup.

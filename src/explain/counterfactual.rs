@@ -24,9 +24,10 @@ use super::lexicon::Lexicon;
 use super::pattern::{Pattern, SymbolExt};
 use super::questions::{answer, Answer, Mode, Session};
 use super::verbalize::{ActionForm, Tense, Verbalizer};
-use crate::action::{self, ast::Value, AxiomOrigin, Options, OriginKind};
-use crate::base::{Diagnostics, SourceMap};
+use crate::action::{self, AxiomOrigin, HorizonMode, Options, OriginKind, Switches};
+use crate::base::Diagnostics;
 use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol, TruthValue};
+use crate::plan::problem::symbol_of_term;
 use crate::syntax::ast;
 
 /// What if the robot had done `action` at `step` (default: the step of the plan's action with
@@ -215,31 +216,18 @@ impl NoPlan {
     /// The planning problem of `problem` at `horizon` (with `goal` instead of the description's
     /// goal when it is not empty).
     pub fn new(problem: &Problem, goal: &[Symbol], horizon: usize) -> Result<NoPlan, HistoryError> {
-        let mut desc = problem.desc.clone();
-        let mut sources: SourceMap = problem.sources.clone();
-        if !goal.is_empty() {
-            desc.statements
-                .retain(|s| !matches!(s.kind, action::ast::StatementKind::Goal { .. }));
-            // One statement: the goal is the conjunction (separate `goal` statements would be
-            // alternatives).
-            let text = format!(
-                "goal {}.\n",
-                goal.iter()
-                    .map(Symbol::to_string)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            );
-            let file = sources.add("<question goal>", text.clone());
-            desc.statements
-                .extend(action::parse(file, &text).description.statements);
-        }
-        let mut overrides = problem.config.overrides.clone();
-        overrides.push(("horizon".into(), Value::Int(horizon as i64)));
-        overrides.push(("horizon_mode".into(), Value::Word("iterative".into())));
-        overrides.push(("planning".into(), Value::Bool(true)));
+        // One statement: the goal is the conjunction (separate `goal` statements would be
+        // alternatives).
+        let task = crate::plan::Problem {
+            goal: goal.to_vec(),
+            ..crate::plan::Problem::new(problem.desc.clone(), problem.sources.clone())
+        };
+        let desc = task.description();
+        let sources = task.sources;
         let options = Options {
             profile: problem.config.profile.clone(),
-            overrides,
+            overrides: problem.config.overrides.clone(),
+            switches: Switches::planning(horizon, HorizonMode::Iterative),
         };
         let t = action::translate(&desc, &options);
         if t.has_errors() {
@@ -248,7 +236,7 @@ impl NoPlan {
             return Err(HistoryError::Input(d.render(&sources)));
         }
         let mut program = t.program;
-        let hyps = gate(&mut program, &t.origins, &mut sources);
+        let hyps = gate(&mut program, &t.origins);
         let mut ctl = Control::with_sources(ControlConfig::default(), sources);
         ctl.add_program(program)
             .map_err(|e| HistoryError::Input(e.message))?;
@@ -395,79 +383,162 @@ pub fn why_no_plan(
 }
 
 /// Puts the goal literals, the initial-state facts and the `never` constraints of a translated
-/// planning problem behind assumption atoms `lucent_hyp(k)`.
-fn gate(program: &mut ast::Program, origins: &[AxiomOrigin], sources: &mut SourceMap) -> Vec<Hyp> {
+/// planning problem behind assumption atoms `lucent_hyp(k)`, editing the syntax tree:
+/// - an initial-state fact `l.` (a history fact whose last argument is step 0) becomes
+///   `l :- lucent_hyp(k).`;
+/// - a `never` constraint `:- body.` becomes `:- body, lucent_hyp(k).`;
+/// - each literal `[-]holds(f, I)` of the goal rule `goal(I) :- ...` becomes
+///   `lucent_goal_ok(k, I)`, with `lucent_goal_ok(k, I) :- [-]holds(f, I), step(I).` and
+///   `lucent_goal_ok(k, I) :- step(I), not lucent_hyp(k).`;
+///
+/// and every `lucent_hyp(k)` is declared `#external`.
+fn gate(program: &mut ast::Program, origins: &[AxiomOrigin]) -> Vec<Hyp> {
+    use crate::syntax::build::{atom, external, head_of, int, neg, pos, rule};
+    let sp = crate::base::Span::default();
+    let hyp = |n: usize| pos(sp, false, HYP, vec![int(sp, n as i64)]);
     let mut hyps = Vec::new();
-    let mut extra = String::new();
+    let mut extra = Vec::new();
     for (k, st) in program.statements.iter_mut().enumerate() {
         let Some(o) = origins.get(k) else { continue };
-        let mut text = String::new();
-        crate::syntax::printer::statement(&mut text, &st.kind);
-        let text = text.trim().trim_end_matches('.').to_string();
-        let replaced = match o.kind {
-            OriginKind::History if !text.contains(":-") && text.ends_with(", 0)") => {
-                let Ok(t) = Symbol::parse(&text) else {
+        let ast::StatementKind::Rule(r) = &mut st.kind else {
+            continue;
+        };
+        match o.kind {
+            OriginKind::History if r.body.is_empty() => {
+                let Some(t) = head_symbol(&r.head) else {
                     continue;
                 };
-                let n = hyps.len();
+                if t.args().last() != Some(&Symbol::number(0)) {
+                    continue;
+                }
+                r.body.push(hyp(hyps.len()));
                 hyps.push(Hyp::Observation(t));
-                format!("{text} :- {HYP}({n}).")
             }
             OriginKind::Never => {
-                let n = hyps.len();
+                r.body.push(hyp(hyps.len()));
                 hyps.push(Hyp::Constraint(match &o.label {
                     Some(l) => format!("{l} ({})", o.text),
                     None => o.text.clone(),
                 }));
-                format!("{text}, {HYP}({n}).")
             }
-            OriginKind::Planning if text.starts_with("goal(") => {
-                let Some((head, body)) = text.split_once(":-") else {
+            OriginKind::Planning => {
+                let Some(step) = goal_variable(&r.head) else {
                     continue;
                 };
-                let var = head
-                    .trim()
-                    .trim_start_matches("goal(")
-                    .trim_end_matches(')')
-                    .to_string();
-                let mut parts = Vec::new();
-                for lit in super::history::split_top(body) {
-                    let is_fluent = lit.starts_with("holds(") || lit.starts_with("-holds(");
-                    let fluent = is_fluent
-                        .then(|| Symbol::parse(&lit.replace(&format!(", {var})"), ", 0)")).ok())
-                        .flatten()
-                        .and_then(|t| t.arg(0).cloned().map(|f| (t.is_negative(), f)));
-                    match fluent {
-                        Some((neg, f)) => {
-                            let n = hyps.len();
-                            let f = if neg { f.complement().unwrap_or(f) } else { f };
-                            hyps.push(Hyp::Goal(f));
-                            extra.push_str(&format!(
-                                "lucent_goal_ok({n}, {var}) :- {lit}, step({var}).\n\
-                                 lucent_goal_ok({n}, {var}) :- step({var}), not {HYP}({n}).\n"
-                            ));
-                            parts.push(format!("lucent_goal_ok({n}, {var})"));
-                        }
-                        None => parts.push(lit),
-                    }
+                for item in r.body.iter_mut() {
+                    let Some(fluent) = goal_fluent(item, &step) else {
+                        continue;
+                    };
+                    let n = hyps.len();
+                    hyps.push(Hyp::Goal(fluent));
+                    let ok = || {
+                        atom(
+                            sp,
+                            false,
+                            "lucent_goal_ok",
+                            vec![int(sp, n as i64), step.clone()],
+                        )
+                    };
+                    let step_lit = || pos(sp, false, "step", vec![step.clone()]);
+                    let lit = std::mem::replace(
+                        item,
+                        ast::BodyLiteral::Literal(ast::Literal {
+                            span: sp,
+                            sign: ast::Sign::Positive,
+                            atom: ast::Atom::Symbolic(ok()),
+                        }),
+                    );
+                    extra.push(rule(sp, head_of(sp, ok()), vec![lit, step_lit()]));
+                    extra.push(rule(
+                        sp,
+                        head_of(sp, ok()),
+                        vec![step_lit(), neg(sp, false, HYP, vec![int(sp, n as i64)])],
+                    ));
                 }
-                format!("{head}:- {}.", parts.join(", "))
             }
-            _ => continue,
-        };
-        let file = sources.add(format!("<why-no-plan {k}>"), replaced.clone());
-        let parse = crate::syntax::parse(file, &replaced, ast::Dialect::Clingo);
-        if let Some(new) = parse.program.statements.into_iter().next() {
-            if !parse.diagnostics.iter().any(|d| d.is_error()) {
-                st.kind = new.kind;
-            }
+            _ => {}
         }
     }
     for k in 0..hyps.len() {
-        extra.push_str(&format!("#external {HYP}({k}).\n"));
+        extra.push(external(
+            sp,
+            atom(sp, false, HYP, vec![int(sp, k as i64)]),
+            Vec::new(),
+            None,
+        ));
     }
-    let file = sources.add("<why-no-plan>", extra.clone());
-    let parse = crate::syntax::parse(file, &extra, ast::Dialect::Clingo);
-    program.statements.extend(parse.program.statements);
+    program.statements.extend(extra);
     hyps
+}
+
+/// The ground symbol of a head of one unconditional literal (`-holds(f, 0)`).
+fn head_symbol(head: &ast::Head) -> Option<Symbol> {
+    let ast::Head::Disjunction(d) = head else {
+        return None;
+    };
+    let [c] = d.as_slice() else { return None };
+    let ast::Atom::Symbolic(a) = &c.literal.atom else {
+        return None;
+    };
+    if !c.condition.is_empty() || c.literal.sign != ast::Sign::Positive {
+        return None;
+    }
+    syntax_atom_symbol(a)
+}
+
+/// The ground symbol of a syntax-tree atom, negative when it is classically negated.
+fn syntax_atom_symbol(a: &ast::SymbolicAtom) -> Option<Symbol> {
+    let [args] = a.args.as_slice() else {
+        return (a.args.is_empty() && !a.negated).then(|| Symbol::constant(a.name.as_str()));
+    };
+    let args: Option<Vec<Symbol>> = args.iter().map(symbol_of_term).collect();
+    let s = Symbol::function(a.name.as_str(), args?);
+    if a.negated {
+        s.complement()
+    } else {
+        Some(s)
+    }
+}
+
+/// The step variable `I` of the goal rule's head `goal(I)`.
+fn goal_variable(head: &ast::Head) -> Option<ast::Term> {
+    let ast::Head::Disjunction(d) = head else {
+        return None;
+    };
+    let [c] = d.as_slice() else { return None };
+    let ast::Atom::Symbolic(a) = &c.literal.atom else {
+        return None;
+    };
+    match a.args.as_slice() {
+        [args] if a.name.as_str() == "goal" && args.len() == 1 => {
+            matches!(args[0].kind, ast::TermKind::Variable(_)).then(|| args[0].clone())
+        }
+        _ => None,
+    }
+}
+
+/// The goal fluent of a body literal `[-]holds(f, I)` (`f`, or its complement under `-`).
+fn goal_fluent(item: &ast::BodyLiteral, step: &ast::Term) -> Option<Symbol> {
+    let ast::BodyLiteral::Literal(l) = item else {
+        return None;
+    };
+    let ast::Atom::Symbolic(a) = &l.atom else {
+        return None;
+    };
+    if l.sign != ast::Sign::Positive || a.name.as_str() != "holds" {
+        return None;
+    }
+    let [args] = a.args.as_slice() else {
+        return None;
+    };
+    let [f, i] = args.as_slice() else { return None };
+    if i.kind != step.kind {
+        return None;
+    }
+    let f = symbol_of_term(f)?;
+    if a.negated {
+        f.complement()
+    } else {
+        Some(f)
+    }
 }

@@ -181,6 +181,42 @@ impl Scene {
             .map(|(_, b)| b.as_str())
     }
 
+    /// The scene as a problem without its domain: the objects, their sizes and surfaces, the
+    /// initial `on` and `behind` relations and, when `with_goal`, the goal (the statements of
+    /// [`Scene::to_ald`], as values).
+    pub fn problem(&self, with_goal: bool) -> crate::plan::Problem {
+        let c = |n: &str| Symbol::constant(n);
+        let attribute =
+            |p: &str, o: &SceneObject, v: &str| Symbol::function(p, vec![c(&o.name), c(v)]);
+        let relation =
+            |r: &str, a: &str, b: &str| Symbol::function("relation", vec![c(r), c(a), c(b)]);
+        let mut statics: Vec<Symbol> = self
+            .objects
+            .iter()
+            .map(|o| attribute("has_size", o, o.size))
+            .collect();
+        statics.extend(
+            self.objects
+                .iter()
+                .map(|o| attribute("has_surface", o, o.surface)),
+        );
+        let mut initially: Vec<Symbol> =
+            self.on.iter().map(|(a, b)| relation("on", a, b)).collect();
+        initially.extend(self.behind.iter().map(|(a, b)| relation("behind", a, b)));
+        let goal = match (&self.goal, with_goal) {
+            (_, false) => Vec::new(),
+            (Goal::On(x, y), true) => vec![relation("on", x, y)],
+            (Goal::InHand(x), true) => vec![Symbol::function("in_hand", vec![c("rob1"), c(x)])],
+        };
+        crate::plan::Problem {
+            objects: Some(self.object_names().iter().map(|n| n.to_string()).collect()),
+            statics,
+            initially,
+            goal,
+            ..Default::default()
+        }
+    }
+
     /// The scene as AL_d text including `include` (the path of `kb_full.ald` as the scene file
     /// names it), with the goal when `with_goal`.
     pub fn to_ald(&self, include: &str, with_goal: bool) -> String {

@@ -21,7 +21,7 @@ use super::pattern::SymbolExt;
 use super::questions::Scenario;
 use super::tree::LearnedAxiom;
 use crate::action::{self, ast::Description, ast::StatementKind, ast::Value, Options};
-use crate::action::{AxiomOrigin, OriginKind};
+use crate::action::{AxiomOrigin, OriginKind, Switches};
 use crate::base::{Diagnostics, SourceMap};
 use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol, TruthValue};
 use crate::learn::strength::{Store, LEARNED_PREFIX};
@@ -304,41 +304,16 @@ impl History {
     }
 }
 
-/// The goal fluents of a description: the literals of its `goal` statements.
+/// The goal fluents of a description: the ground literals of its `goal` statements.
 pub fn goal_of(desc: &Description) -> Vec<Symbol> {
     let mut out = Vec::new();
     for s in &desc.statements {
-        if let StatementKind::Goal { .. } = &s.kind {
-            let text = action::translate::show_statement(&s.kind);
-            let text = text.strip_prefix("goal ").unwrap_or(&text);
-            for part in split_top(text) {
-                if let Ok(t) = Symbol::parse(&part) {
-                    out.push(t);
-                }
-            }
+        if let StatementKind::Goal { body } = &s.kind {
+            out.extend(body.iter().filter_map(|item| match item {
+                action::ast::BodyItem::Lit(l) => crate::plan::problem::symbol_of_lit(l),
+                action::ast::BodyItem::Compare { .. } => None,
+            }));
         }
-    }
-    out
-}
-
-/// Splits at commas outside parentheses.
-pub(crate) fn split_top(s: &str) -> Vec<String> {
-    let (mut depth, mut cur, mut out) = (0i32, String::new(), Vec::new());
-    for c in s.chars() {
-        match c {
-            '(' => depth += 1,
-            ')' => depth -= 1,
-            ',' if depth == 0 => {
-                out.push(cur.trim().to_string());
-                cur.clear();
-                continue;
-            }
-            _ => {}
-        }
-        cur.push(c);
-    }
-    if !cur.trim().is_empty() {
-        out.push(cur.trim().to_string());
     }
     out
 }
@@ -353,12 +328,7 @@ pub const HISTORY_GATE: &str = "lucent_history_given";
 /// the fact's rule when a head is a fact, and with the others would go supports a proof tree
 /// needs, such as E7 next to E5). For the same reason every `hpd(a, i)` is external (false
 /// unless it happened). Statement ids do not change; the declarations are appended.
-fn gate_history(
-    program: &mut ast::Program,
-    origins: &[AxiomOrigin],
-    labels: &mut Labels,
-    sources: &mut SourceMap,
-) {
+fn gate_history(program: &mut ast::Program, origins: &[AxiomOrigin], labels: &mut Labels) {
     let gate = Symbol::constant(HISTORY_GATE);
     for (k, st) in program.statements.iter_mut().enumerate() {
         let Some(o) = origins.get(k) else { continue };
@@ -386,12 +356,26 @@ fn gate_history(
         }));
     }
     // The gate, and every action at every step as a possible happening (false unless it
-    // happened), so that the action CWA is not a fact and E7 keeps its instances beside it.
-    let text =
-        format!("#external {HISTORY_GATE}.\n#external hpd(A, I) : action(A), step(I). [false]\n");
-    let file = sources.add("<history gate>", text.clone());
-    let parse = crate::syntax::parse(file, &text, ast::Dialect::Clingo);
-    program.statements.extend(parse.program.statements);
+    // happened), so that the action CWA is not a fact and E7 keeps its instances beside it:
+    // `#external lucent_history_given.` and `#external hpd(A, I) : action(A), step(I). [false]`.
+    use crate::syntax::build::{atom, external, pos, var};
+    let sp = crate::base::Span::default();
+    let (a, i) = (var(sp, "A"), var(sp, "I"));
+    program.statements.push(external(
+        sp,
+        atom(sp, false, HISTORY_GATE, Vec::new()),
+        Vec::new(),
+        None,
+    ));
+    program.statements.push(external(
+        sp,
+        atom(sp, false, "hpd", vec![a.clone(), i.clone()]),
+        vec![
+            pos(sp, false, "action", vec![a]),
+            pos(sp, false, "step", vec![i]),
+        ],
+        Some("false"),
+    ));
     labels.hidden.push(gate);
 }
 
@@ -403,30 +387,30 @@ fn declares_switch(desc: &Description, name: &str) -> bool {
 }
 
 /// A run saved by `lucent run` (its `--save-history` file, the JSON `--outf=2` prints) as the
-/// planning problem it started from and what happened: AL_d scene text (the movable objects as
-/// `sort movable`, the statics as facts, what was perceived at step 0 and not doubted as
-/// `initially` statements, the goal) for a description that provides the domain, and the
+/// planning problem it started from and what happened: a [`Problem`](crate::plan::Problem)
+/// without a domain (the movable objects, the statics, what was perceived at step 0 and not
+/// doubted as the initial state, the goal) for a description that provides the domain, and the
 /// [`Steps`]. Every step keeps its number: an action the world reported as failed is an attempt
 /// (the step has no action with an effect), and what the robot perceived (and did not doubt)
 /// right after a failed attempt becomes observations of the next step, so the history follows
 /// what the world did instead (an object that fell is where it was seen). `Err` names what the
 /// run lacks.
-pub fn scene_of_run(run: &crate::plan::history::History) -> Result<(String, Steps), String> {
+pub fn scene_of_run(
+    run: &crate::plan::history::History,
+) -> Result<(crate::plan::Problem, Steps), String> {
     let first = run
         .steps
         .first()
         .ok_or("the run has no step: nothing was perceived")?;
-    let mut text = format!(
-        "% The run on {} saved by `lucent run`: step 0 as perceived, the goal.\n\
-         sort movable = {{{}}}.\nsort unknown = {{}}.\n",
-        run.scene,
-        run.objects.join(", ")
-    );
+    let mut problem = crate::plan::Problem {
+        objects: Some(run.objects.clone()),
+        ..Default::default()
+    };
     let parse = |what: &str, t: &str| {
         Symbol::parse(t).map_err(|e| format!("the run's {what} `{t}` is not a ground term: {e}"))
     };
     for st in &run.statics {
-        text.push_str(&format!("{}.\n", parse("static", st)?));
+        problem.statics.push(parse("static", st)?);
     }
     // The robot's belief after its first look, when the run recorded it: consistent by
     // construction, where the raw readings of a noisy camera may contradict each other.
@@ -447,15 +431,10 @@ pub fn scene_of_run(run: &crate::plan::history::History) -> Result<(String, Step
             continue;
         }
         seen.push(f);
-        text.push_str(&format!("initially {}.\n", parse("observation", f)?));
+        problem.initially.push(parse("observation", f)?);
     }
-    if !run.goal.is_empty() {
-        let goal: Vec<String> = run
-            .goal
-            .iter()
-            .map(|g| parse("goal", g).map(|s| s.to_string()))
-            .collect::<Result<_, _>>()?;
-        text.push_str(&format!("goal {}.\n", goal.join(", ")));
+    for g in &run.goal {
+        problem.goal.push(parse("goal", g)?);
     }
     let mut steps = Steps::default();
     for (k, s) in run.steps.iter().enumerate() {
@@ -495,7 +474,7 @@ pub fn scene_of_run(run: &crate::plan::history::History) -> Result<(String, Step
             }
         }
     }
-    Ok((text, steps))
+    Ok((problem, steps))
 }
 
 /// What happened, step by step, beyond the description's initial state: per step the action
@@ -598,8 +577,7 @@ pub fn explain_history(
 
 /// The history of `desc` with `steps` (actions, failed attempts, later observations),
 /// explained; see [`explain_history`].
-/// `sources` holds the description's files; the happened statements are added to it as
-/// `<history>`.
+/// `sources` holds the description's files.
 pub fn explain_steps(
     desc: &Description,
     sources: &mut SourceMap,
@@ -612,35 +590,35 @@ pub fn explain_steps(
         sources: sources.clone(),
         config: config.clone(),
     };
-    let mut desc = desc.clone();
-    let mut text: String = actions
-        .iter()
-        .enumerate()
-        .filter_map(|(i, a)| a.as_ref().map(|a| format!("happened {a} at {i}.\n")))
-        .collect();
-    for (i, f, v) in &steps.observed {
-        let sign = if *v { "" } else { "-" };
-        text.push_str(&format!("observed {sign}{f} at {i}.\n"));
-    }
-    if !text.is_empty() {
-        let file = sources.add("<history>", text.clone());
-        let parse = action::parse(file, &text);
-        if parse.diagnostics.iter().any(|d| d.is_error()) {
-            let mut d = Diagnostics::default();
-            d.extend(parse.diagnostics);
-            return Err(HistoryError::Input(d.render(sources)));
-        }
-        desc.statements.extend(parse.description.statements);
-    }
+    let history = crate::plan::Problem {
+        happened: actions
+            .iter()
+            .enumerate()
+            .filter_map(|(i, a)| a.clone().map(|a| (a, i)))
+            .collect(),
+        observed: steps
+            .observed
+            .iter()
+            .map(|(i, f, v)| {
+                let l = if *v {
+                    f.clone()
+                } else {
+                    f.complement().unwrap_or_else(|| f.clone())
+                };
+                (l, *i as usize)
+            })
+            .collect(),
+        ..crate::plan::Problem::new(desc.clone(), sources.clone())
+    };
+    let desc = history.description();
     let mut overrides = config.overrides.clone();
-    overrides.push(("horizon".into(), Value::Int(actions.len() as i64)));
-    overrides.push(("planning".into(), Value::Bool(false)));
     if declares_switch(&desc, "explanation_rule_base") {
         overrides.push(("explanation_rule_base".into(), Value::Bool(true)));
     }
     let options = Options {
         profile: config.profile.clone(),
         overrides,
+        switches: Switches::history(actions.len()),
     };
     let t = action::translate(&desc, &options);
     if t.has_errors() {
@@ -650,7 +628,7 @@ pub fn explain_steps(
     }
     let mut labels = Labels::from_origins(&t.origins);
     let mut program = t.program;
-    gate_history(&mut program, &t.origins, &mut labels, sources);
+    gate_history(&mut program, &t.origins, &mut labels);
     let ctl_config = ControlConfig {
         provenance: true,
         ..ControlConfig::default()

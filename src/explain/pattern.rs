@@ -26,9 +26,6 @@ use crate::control::Symbol;
 pub trait SymbolExt {
     /// The `i`-th argument of a function.
     fn arg(&self, i: usize) -> Option<&Symbol>;
-    /// The same literal with its classical sign flipped; `None` for numbers, strings and
-    /// tuples, which have no sign.
-    fn complement(&self) -> Option<Symbol>;
     /// The same term without classical negation.
     fn positive(&self) -> Symbol;
     /// Whether this is a constant (a function without arguments and with a name).
@@ -38,21 +35,6 @@ pub trait SymbolExt {
 impl SymbolExt for Symbol {
     fn arg(&self, i: usize) -> Option<&Symbol> {
         self.args().get(i)
-    }
-
-    fn complement(&self) -> Option<Symbol> {
-        match self {
-            Symbol::Function {
-                name,
-                args,
-                negative,
-            } if !name.is_empty() => Some(Symbol::Function {
-                name: name.clone(),
-                args: args.clone(),
-                negative: !negative,
-            }),
-            _ => None,
-        }
     }
 
     fn positive(&self) -> Symbol {

@@ -15,7 +15,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::action::ast::Value;
-use crate::action::Options;
+use crate::action::{Options, Switches};
 
 use super::episode::{run, LearnConfig, RunReport, World};
 use super::kb::{Cache, KbError, KbSpec, KbWorld};
@@ -62,10 +62,7 @@ pub fn targets() -> Vec<Axiom> {
 
 /// The learner's options: the `learner` profile.
 pub fn learner_options() -> Options {
-    Options {
-        profile: Some("learner".into()),
-        overrides: Vec::new(),
-    }
+    Options::profile(Some("learner"))
 }
 
 /// The oracle's options: KB_full with the learner's switches (the code's sorts and sticky
@@ -76,9 +73,8 @@ pub fn oracle_options() -> Options {
         overrides: vec![
             ("table_is_object".into(), Value::Bool(true)),
             ("sticky_support_fluents".into(), Value::Bool(true)),
-            ("horizon".into(), Value::Int(1)),
-            ("planning".into(), Value::Bool(false)),
         ],
+        switches: Switches::history(1),
     }
 }
 

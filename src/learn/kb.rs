@@ -262,23 +262,16 @@ pub fn symbol_of(lit: &Literal) -> Symbol {
 impl KbWorld {
     /// Translates and grounds the knowledge base with these learned axioms.
     pub fn new(spec: KbSpec, learned: &[(String, Axiom)]) -> Result<KbWorld, KbError> {
-        let mut sources = spec.sources.clone();
-        let mut description = spec.description.clone();
+        let sources = spec.sources.clone();
+        // The learned axioms' text is a cache key only; the statements are built as values.
         let text: String = learned
             .iter()
             .map(|(label, a)| format!("{label}: {}.\n", a.to_ald()))
             .collect();
-        if !learned.is_empty() {
-            let file = sources.add("<learned>".to_string(), text.clone());
-            let parsed = action::parse(file, &text);
-            if parsed.has_errors() {
-                return Err(KbError::Translate(format!(
-                    "learned axioms: {:?}",
-                    parsed.diagnostics
-                )));
-            }
-            description.statements.extend(parsed.description.statements);
-        }
+        let mut description = spec.description.clone();
+        description
+            .statements
+            .extend(learned.iter().map(|(label, axiom)| axiom.statement(label)));
         let translation = action::translate(&description, &spec.options);
         if translation.has_errors() {
             return Err(KbError::Translate(format!("{:?}", translation.diagnostics)));

@@ -259,8 +259,7 @@ impl OneStepWorld for PhysicsWorld {
             Some(a) => a,
             None => return not_executable,
         };
-        let text = format!("{}({})", action.name, args.join(","));
-        let Ok(act) = Action::parse(&text) else {
+        let Ok(act) = Action::from_parts(&action.name, &args) else {
             return not_executable;
         };
         match execute(&mut scene, &act, &config) {

@@ -157,6 +157,24 @@ impl Literal {
     }
 
     /// AL_d text as the knowledge base spells it: `relation(on, O1, O2)`, `-in_hand(R1, O1)`.
+    /// The literal as an AL_d syntax-tree literal: constants that read as integers become
+    /// integers, variables keep their names (`O1`).
+    pub fn ald(&self) -> crate::action::ast::Lit {
+        use crate::action::build::{self, Arg};
+        let args: Vec<Arg> = self
+            .args
+            .iter()
+            .map(|t| match t {
+                Term::Const(c) => match c.parse::<i64>() {
+                    Ok(n) => Arg::Int(n),
+                    Err(_) => Arg::Const(c.clone()),
+                },
+                Term::Var(v) => Arg::Var(v.to_string()),
+            })
+            .collect();
+        build::lit(!self.positive, &self.name, &args)
+    }
+
     pub fn to_ald(&self) -> String {
         let sign = if self.positive { "" } else { "-" };
         let args: Vec<String> = self.args.iter().map(Term::to_string).collect();
@@ -307,6 +325,19 @@ impl Axiom {
     /// AL_d text of the statement as the knowledge base spells it, without the final period.
     pub fn to_ald(&self) -> String {
         self.render(Literal::to_ald)
+    }
+
+    /// The axiom as the labelled AL_d statement [`Axiom::to_ald`] writes, built as a value.
+    pub fn statement(&self, label: &str) -> crate::action::ast::Statement {
+        use crate::action::build;
+        let body: Vec<_> = self.body.iter().map(Literal::ald).collect();
+        match &self.kind {
+            AxiomKind::Causal { head } => {
+                build::causal(label, self.action.ald().atom, head.ald(), body)
+            }
+            AxiomKind::Executability => build::impossible(label, self.action.ald().atom, body),
+            AxiomKind::Constraint { head } => build::constraint(label, head.ald(), body),
+        }
     }
 
     /// The statement for people, with relations in their short form (`below(O1, O2)`).

@@ -43,9 +43,10 @@
 use std::collections::{BTreeSet, VecDeque};
 
 use super::history::{Discrepancy, Ending, History, Observed, PlanRecord, StepRecord};
+use super::Problem;
 use super::{plan, PlanConfig, PlanError};
-use crate::action::{self, ast::Description, ast::Value, Options};
-use crate::base::{Diagnostics, SourceMap};
+use crate::action::{ast::Description, Options, Switches};
+use crate::base::SourceMap;
 use crate::control::{Control, ControlConfig, Part, Symbol};
 
 /// One perceived fluent literal.
@@ -232,35 +233,6 @@ pub fn goal_literal(text: &str) -> Result<Symbol, String> {
     })
 }
 
-/// The scene part of a problem as AL_d text: objects, statics, the believed state, and
-/// optionally a goal and an action at step 0.
-fn scene_text(
-    objects: &[String],
-    statics: &[Symbol],
-    initially: &[Symbol],
-    goal: &[Symbol],
-    happened: Option<&Symbol>,
-) -> String {
-    let mut out = format!(
-        "sort movable = {{{}}}.\nsort unknown = {{}}.\n",
-        objects.join(", ")
-    );
-    for s in statics {
-        out.push_str(&format!("{s}.\n"));
-    }
-    for f in initially {
-        out.push_str(&format!("initially {f}.\n"));
-    }
-    if !goal.is_empty() {
-        let g: Vec<String> = goal.iter().map(Symbol::to_string).collect();
-        out.push_str(&format!("goal {}.\n", g.join(", ")));
-    }
-    if let Some(a) = happened {
-        out.push_str(&format!("happened {a} at 0.\n"));
-    }
-    out
-}
-
 /// The rules of the diagnosis solve besides the `seen(f)` facts: each perceived relation holds
 /// at step 0 unless doubted (a doubt costs one CR rule), and what a camera can misread but a
 /// tabletop cannot be is excluded: the table rests on nothing, an object rests on one thing at
@@ -320,51 +292,60 @@ struct Runner<'a> {
 }
 
 impl Runner<'_> {
-    /// The domain's description with the scene text appended, and the sources to render it.
-    fn problem(&self, text: &str) -> Result<(Description, SourceMap), Ending> {
-        let mut sources = self.domain.sources.clone();
-        let file = sources.add("<scene>".to_string(), text.to_string());
-        let parsed = action::parse(file, text);
-        if parsed.has_errors() {
-            let mut d = Diagnostics::default();
-            d.extend(parsed.diagnostics);
-            return Err(Ending::Input(d.render(&sources)));
+    /// The problem of the domain with the objects, `statics`, the step-0 literals `initially`,
+    /// the runner's goal when `with_goal`, and `happened` at step 0.
+    fn problem(
+        &self,
+        statics: &[Symbol],
+        initially: &[Symbol],
+        with_goal: bool,
+        happened: Option<&Symbol>,
+    ) -> Problem {
+        Problem {
+            objects: Some(self.objects.clone()),
+            statics: statics.to_vec(),
+            initially: initially.to_vec(),
+            goal: if with_goal {
+                self.goal.clone()
+            } else {
+                Vec::new()
+            },
+            happened: happened.map(|a| (a.clone(), 0)).into_iter().collect(),
+            ..Problem::new(self.domain.description.clone(), self.domain.sources.clone())
         }
-        let mut description = self.domain.description.clone();
-        description.statements.extend(parsed.description.statements);
-        Ok((description, sources))
     }
 
-    /// Translates and grounds `desc` at `horizon` without the planning module, with `extra`
-    /// clingo-dialect text, and returns its answer sets.
+    /// Translates and grounds `problem` at `horizon` without the planning module (with
+    /// `diagnosis`, the diagnosis rules and a `seen(f)` fact per doubtable reading), and returns
+    /// its answer sets.
     fn solve(
         &self,
-        desc: &Description,
-        sources: &SourceMap,
-        horizon: i64,
-        extra: &str,
+        problem: &Problem,
+        horizon: usize,
+        diagnosis: Option<&[Symbol]>,
     ) -> Result<Vec<crate::control::OwnedModel>, Ending> {
-        let mut overrides = self.config.plan.overrides.clone();
-        overrides.push(("horizon".into(), Value::Int(horizon)));
-        overrides.push(("planning".into(), Value::Bool(false)));
         let options = Options {
             profile: self.config.plan.profile.clone(),
-            overrides,
+            overrides: self.config.plan.overrides.clone(),
+            ..Options::default()
         };
-        let t = action::translate(desc, &options);
-        if t.has_errors() {
-            let mut d = Diagnostics::default();
-            d.extend(t.diagnostics);
-            return Err(Ending::Input(d.render(sources)));
-        }
+        let t = problem
+            .translate(&options, Switches::history(horizon))
+            .map_err(Ending::Input)?;
         let mut config = ControlConfig::default();
         // Enough answer sets to choose the doubts among (ties of conflicting readings).
         config.solve.models = 64;
-        let mut ctl = Control::with_sources(config, sources.clone());
+        let mut ctl = Control::with_sources(config, problem.sources.clone());
         let input = |e: crate::control::Error| Ending::Input(e.message);
         ctl.add_program(t.program).map_err(input)?;
-        if !extra.is_empty() {
-            ctl.add("<doubts>", extra).map_err(input)?;
+        if let Some(seen) = diagnosis {
+            let facts: Vec<Symbol> = seen
+                .iter()
+                .map(|f| Symbol::function("seen", vec![f.clone()]))
+                .collect();
+            ctl.add_facts(&facts).map_err(input)?;
+            // Each perceived relation holds at step 0 unless doubted; a doubt costs one CR rule.
+            ctl.add("<doubts>", DIAGNOSIS).map_err(input)?;
         }
         ctl.ground(&[Part::base()]).map_err(input)?;
         Ok(ctl.solve_all(&Default::default()).models)
@@ -381,15 +362,9 @@ impl Runner<'_> {
                 soft.push(s);
             }
         }
-        let text = scene_text(&self.objects, &percept.statics, &hard, &[], None);
-        let (desc, sources) = self.problem(&text)?;
-        let mut extra = String::new();
-        for s in &soft {
-            extra.push_str(&format!("seen({}).\n", s.fluent));
-        }
-        // Each perceived relation holds at step 0 unless doubted; a doubt costs one CR rule.
-        extra.push_str(DIAGNOSIS);
-        let models = self.solve(&desc, &sources, 0, &extra)?;
+        let problem = self.problem(&percept.statics, &hard, false, None);
+        let seen: Vec<Symbol> = soft.iter().map(|s| s.fluent.clone()).collect();
+        let models = self.solve(&problem, 0, Some(&seen))?;
         let confidence = |f: &Symbol| {
             soft.iter()
                 .find(|s| &s.fluent == f)
@@ -448,15 +423,8 @@ impl Runner<'_> {
         belief: &Belief,
         action: &Symbol,
     ) -> Result<Option<BTreeSet<Symbol>>, Ending> {
-        let text = scene_text(
-            &self.objects,
-            &belief.statics,
-            &belief.kept,
-            &[],
-            Some(action),
-        );
-        let (desc, sources) = self.problem(&text)?;
-        let models = self.solve(&desc, &sources, 1, "")?;
+        let problem = self.problem(&belief.statics, &belief.kept, false, Some(action));
+        let models = self.solve(&problem, 1, None)?;
         let mut common: Option<BTreeSet<Symbol>> = None;
         for m in &models {
             let here: BTreeSet<Symbol> = m
@@ -662,18 +630,8 @@ fn run_steps(
             if history.plans.len() >= config.max_plans {
                 return Ending::ReplanBudget;
             }
-            let text = scene_text(
-                &runner.objects,
-                &belief.statics,
-                &belief.kept,
-                &runner.goal,
-                None,
-            );
-            let (desc, sources) = match runner.problem(&text) {
-                Ok(p) => p,
-                Err(e) => return e,
-            };
-            let found = match plan(&desc, &sources, &config.plan) {
+            let problem = runner.problem(&belief.statics, &belief.kept, true, None);
+            let found = match plan(&problem.description(), &problem.sources, &config.plan) {
                 Ok(found) => found,
                 Err(
                     e @ (PlanError::NoPlanWithin(_)
@@ -836,22 +794,5 @@ mod tests {
         );
         assert!(goal_literal("stable(a)").is_err());
         assert!(goal_literal("on(a,").is_err());
-    }
-
-    #[test]
-    fn scene_text_lists_objects_state_goal_and_action() {
-        let s = |t: &str| Symbol::parse(t).unwrap();
-        let text = scene_text(
-            &["a".into(), "b".into()],
-            &[s("has_size(a,large)")],
-            &[s("relation(on,a,table)")],
-            &[s("in_hand(rob1,a)")],
-            Some(&s("pickup(rob1,a)")),
-        );
-        assert_eq!(
-            text,
-            "sort movable = {a, b}.\nsort unknown = {}.\nhas_size(a,large).\n\
-             initially relation(on,a,table).\ngoal in_hand(rob1,a).\nhappened pickup(rob1,a) at 0.\n"
-        );
     }
 }

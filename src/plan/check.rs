@@ -38,7 +38,8 @@ use std::rc::Rc;
 
 use super::search::{control, translate};
 use super::{PlanConfig, PlanError};
-use crate::action::ast::{Description, StatementKind, Value};
+use crate::action::ast::{Description, StatementKind};
+use crate::action::{HorizonMode, Switches};
 use crate::base::SourceMap;
 use crate::control::{AtomId, Control, Model, OwnedModel, Part, SolveOptions, Symbol, TruthValue};
 use crate::syntax::ast::{self, Atom, Head, Literal, Program, RuleKind, Sign};
@@ -174,6 +175,7 @@ impl Bound {
             &crate::action::Options {
                 profile: config.profile.clone(),
                 overrides: config.overrides.clone(),
+                ..Default::default()
             },
         );
         let mut actions: Vec<(String, usize)> = checked
@@ -484,11 +486,7 @@ impl StateSearch {
             &stateless,
             sources,
             config,
-            &[
-                ("horizon", Value::Int(1)),
-                ("horizon_mode", Value::Word("transition".into())),
-                ("planning", Value::Bool(true)),
-            ],
+            Switches::planning(1, HorizonMode::Transition),
         )?;
         if !t
             .origins
@@ -535,12 +533,7 @@ impl StateSearch {
             stats: SearchStats::default(),
         };
         // The description's own initial state, at horizon 0 without the planning module.
-        let t = translate(
-            desc,
-            sources,
-            config,
-            &[("horizon", Value::Int(0)), ("planning", Value::Bool(false))],
-        )?;
+        let t = translate(desc, sources, config, Switches::history(0))?;
         let mut first = control(sources, t.program, 1)?;
         first
             .ground(&[Part::base()])

@@ -4,6 +4,8 @@
 //! - [`plan`] finds the minimal plans of an AL_d planning problem (a description with an
 //!   initial state and a goal): `search` grounds one new step part per horizon on one
 //!   multi-shot Control (clingo's incmode), or reproduces the authors' fixed horizon.
+//! - `problem`: the typed [`Problem`] value (domain, scene, goal, history, learned axioms)
+//!   that plan, learn, explain and experiment build and translate, never as text.
 //! - `scene` reads initial states written as facts (or simulator scenes) and goals as
 //!   literals, as AL_d statements for a domain description.
 //! - `check` replays a plan one transition at a time against the domain (the one-step
@@ -33,6 +35,7 @@ pub mod check;
 pub mod history;
 #[cfg(feature = "sim")]
 pub mod physics;
+pub mod problem;
 pub mod scene;
 pub mod search;
 #[cfg(feature = "sim")]
@@ -43,6 +46,7 @@ use crate::base::SourceMap;
 use crate::control::Symbol;
 
 pub use check::{classify, replay, Quality, Replay, StateSearch, Verdict};
+pub use problem::Problem;
 pub use scene::{goal_statement, SceneFacts};
 
 /// How the horizon is searched.
@@ -166,6 +170,7 @@ pub fn default_max_horizon(desc: &Description, config: &PlanConfig) -> usize {
         &Options {
             profile: config.profile.clone(),
             overrides: config.overrides.clone(),
+            ..Options::default()
         },
     );
     let objects = ["object", "movable"]

@@ -18,7 +18,7 @@
 
 use crate::control::Symbol;
 use crate::sim::truth::{relations, stability, TruthConfig};
-use crate::sim::{execute, ActConfig, Action, ErrorModel, Preset, Scene, SplitMix64, World};
+use crate::sim::{execute, ActConfig, ErrorModel, Preset, Scene, SplitMix64, World};
 use crate::sim::{GenerateConfig, Size, Surface};
 
 /// A goal literal of a generated task.
@@ -193,10 +193,10 @@ pub fn replay_physics(scene: &Scene, plan: &[Symbol], goal: &Goal) -> PhysicsRep
         unstable: Vec::new(),
     };
     for (i, a) in plan.iter().enumerate() {
-        let action = match Action::parse(&a.to_string()) {
+        let action = match super::tabletop::sim_action(a) {
             Ok(a) => a,
             Err(e) => {
-                out.failed = Some((i, e.to_string()));
+                out.failed = Some((i, e));
                 return out;
             }
         };

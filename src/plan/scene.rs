@@ -11,13 +11,15 @@
 //!   `relation(on, a, b).`, `in_hand(rob1, a).`, `holds(F, 0).` and `-holds(F, 0).` give the
 //!   step-0 state; everything not stated is false (D0).
 //!
-//! Invariants: the output is AL_d text whose statements the caller parses with the domain;
+//! Invariants: the output is AL_d statements built as values ([`SceneFacts::statements`]), added
+//! to the domain's description without printing and parsing them again;
 //! every problem with the input is a [`Diagnostic`] at the offending fact (unknown predicate,
 //! a step other than 0, an object named in a relation but never declared), never a panic.
 
 use std::collections::BTreeMap;
-use std::fmt::Write;
 
+use crate::action::ast::{Lit, Statement};
+use crate::action::build::{self, Arg};
 use crate::base::{Diagnostic, FileId, Span};
 use crate::syntax::ast::{Atom, Head, StatementKind, Term, TermKind};
 use crate::syntax::{self, ast::Dialect};
@@ -36,13 +38,13 @@ pub const RELATIONS: [&str; 10] = [
     "on",
 ];
 
-/// A scene: objects with attributes and the step-0 literals, as AL_d text pieces.
+/// A scene: objects with attributes and the step-0 literals.
 #[derive(Clone, Debug, Default)]
 pub struct SceneFacts {
     /// Objects and their attributes (size, surface, shape), by name.
     pub objects: BTreeMap<String, Attributes>,
-    /// Step-0 literals (`relation(on, a, b)`, `-in_hand(rob1, a)`), in AL_d syntax.
-    pub initially: Vec<String>,
+    /// Step-0 literals (`relation(on, a, b)`, `-in_hand(rob1, a)`).
+    pub initially: Vec<Lit>,
     /// Where each initial literal was written, for diagnostics on unknown objects.
     spans: Vec<(Span, Vec<String>)>,
 }
@@ -62,6 +64,28 @@ fn term_text(t: &Term) -> String {
     let mut s = String::new();
     syntax::printer::term(&mut s, t);
     s.replace(' ', "")
+}
+
+/// The AL_d literal `[-]f` of a fluent term `f` (`relation(on, a, b)`); `None` for a term that
+/// is not a constant or a function.
+fn fluent_lit(negated: bool, f: &Term) -> Option<Lit> {
+    match &f.kind {
+        TermKind::Constant(c) => Some(build::lit(negated, c.as_str(), &[])),
+        TermKind::Function { name, args, .. } if args.len() == 1 => {
+            let args: Vec<Arg> = args[0].iter().cloned().map(Arg::Term).collect();
+            Some(build::lit(negated, name.as_str(), &args))
+        }
+        _ => None,
+    }
+}
+
+/// `[-]relation(r, x, y)`.
+fn relation(negated: bool, r: &str, x: &str, y: &str) -> Lit {
+    build::lit(
+        negated,
+        "relation",
+        &[Arg::constant(r), Arg::constant(x), Arg::constant(y)],
+    )
 }
 
 fn name(t: &Term) -> Option<String> {
@@ -119,7 +143,7 @@ impl SceneFacts {
             };
             let args: Vec<&Term> = atom.args.iter().flatten().collect();
             let names: Vec<Option<String>> = args.iter().map(|a| name(a)).collect();
-            let neg = if atom.negated { "-" } else { "" };
+            let neg = atom.negated;
             match (atom.name.as_str(), names.as_slice()) {
                 ("object" | "movable", [Some(o)]) if !atom.negated => {
                     out.objects.entry(o.clone()).or_default();
@@ -134,30 +158,27 @@ impl SceneFacts {
                     *slot = Some(v.clone());
                 }
                 (r, [Some(x), Some(y)]) if RELATIONS.contains(&r) => {
-                    out.push(
-                        st.span,
-                        format!("{neg}relation({r}, {x}, {y})"),
-                        vec![x.clone(), y.clone()],
-                    );
+                    out.push(st.span, relation(neg, r, x, y), vec![x.clone(), y.clone()]);
                 }
                 ("relation", [Some(r), Some(x), Some(y)]) if RELATIONS.contains(&r.as_str()) => {
-                    out.push(
-                        st.span,
-                        format!("{neg}relation({r}, {x}, {y})"),
-                        vec![x.clone(), y.clone()],
-                    );
+                    out.push(st.span, relation(neg, r, x, y), vec![x.clone(), y.clone()]);
                 }
                 ("in_hand", [Some(r), Some(o)]) => {
-                    out.push(st.span, format!("{neg}in_hand({r}, {o})"), vec![o.clone()]);
+                    let l = build::lit(neg, "in_hand", &[Arg::constant(r), Arg::constant(o)]);
+                    out.push(st.span, l, vec![o.clone()]);
                 }
                 ("holds", [_, _]) => {
                     if !matches!(args[1].kind, TermKind::Integer(0)) {
                         errors.push(bad("only the initial state (step 0) can be given"));
                         continue;
                     }
+                    let Some(l) = fluent_lit(neg, args[0]) else {
+                        errors.push(bad("expected a fluent such as relation(on, a, b)"));
+                        continue;
+                    };
                     let mut objs = Vec::new();
                     names_in(args[0], &mut objs);
-                    out.push(st.span, format!("{neg}{}", term_text(args[0])), objs);
+                    out.push(st.span, l, objs);
                 }
                 _ => errors.push(bad(&format!(
                     "unknown fact `{}`: expected object/1, has_size/2, has_surface/2, a relation \
@@ -185,34 +206,50 @@ impl SceneFacts {
         }
     }
 
-    fn push(&mut self, span: Span, literal: String, objects: Vec<String>) {
+    fn push(&mut self, span: Span, literal: Lit, objects: Vec<String>) {
         self.initially.push(literal);
         self.spans.push((span, objects));
     }
 
-    /// The scene as AL_d statements to add to a domain description.
+    /// The scene as AL_d statements to add to a domain description: the objects as
+    /// `sort movable`, an empty `sort unknown`, each object's size and surface (default
+    /// `large`, `flat`) and shape, and an `initially` statement per step-0 literal.
+    pub fn statements(&self) -> Vec<Statement> {
+        let names: Vec<&str> = self.objects.keys().map(String::as_str).collect();
+        let mut out = vec![build::sort("movable", &names), build::sort("unknown", &[])];
+        let attribute = |p: &str, o: &str, v: &str| {
+            build::fact(build::lit(false, p, &[Arg::constant(o), Arg::constant(v)]))
+        };
+        for (o, a) in &self.objects {
+            out.push(attribute(
+                "has_size",
+                o,
+                a.size.as_deref().unwrap_or("large"),
+            ));
+            out.push(attribute(
+                "has_surface",
+                o,
+                a.surface.as_deref().unwrap_or("flat"),
+            ));
+            if let Some(shape) = &a.shape {
+                out.push(attribute("has_shape", o, shape));
+            }
+        }
+        out.extend(self.initially.iter().cloned().map(build::initially));
+        out
+    }
+
+    /// The scene as AL_d text, the statements of [`SceneFacts::statements`] one per line.
     pub fn to_ald(&self) -> String {
         let mut s = String::new();
         let names: Vec<&str> = self.objects.keys().map(String::as_str).collect();
-        let _ = writeln!(s, "sort movable = {{{}}}.", names.join(", "));
-        let _ = writeln!(s, "sort unknown = {{}}.");
-        for (o, a) in &self.objects {
-            let _ = writeln!(
-                s,
-                "has_size({o}, {}).",
-                a.size.as_deref().unwrap_or("large")
-            );
-            let _ = writeln!(
-                s,
-                "has_surface({o}, {}).",
-                a.surface.as_deref().unwrap_or("flat")
-            );
-            if let Some(shape) = &a.shape {
-                let _ = writeln!(s, "has_shape({o}, {shape}).");
-            }
-        }
-        for l in &self.initially {
-            let _ = writeln!(s, "initially {l}.");
+        s.push_str(&format!(
+            "sort movable = {{{}}}.\nsort unknown = {{}}.\n",
+            names.join(", ")
+        ));
+        for st in self.statements().iter().skip(2) {
+            s.push_str(&crate::action::translate::show_statement(&st.kind));
+            s.push_str(".\n");
         }
         s
     }
@@ -238,16 +275,17 @@ impl SceneFacts {
         for r in crate::sim::truth::relations(scene, &world, &truth) {
             out.push(
                 Span::default(),
-                format!("relation({}, {}, {})", r.rel.name(), r.a, r.b),
+                relation(false, r.rel.name(), &r.a, &r.b),
                 Vec::new(),
             );
         }
         if let Some(h) = &scene.in_hand {
-            out.push(
-                Span::default(),
-                format!("in_hand({}, {h})", scene.robot),
-                Vec::new(),
+            let l = build::lit(
+                false,
+                "in_hand",
+                &[Arg::constant(&scene.robot), Arg::constant(h)],
             );
+            out.push(Span::default(), l, Vec::new());
         }
         out
     }
@@ -285,7 +323,7 @@ fn text_atom(name: &str, args: &[&Term]) -> String {
 /// A goal written as AL_d literals (`on(a, b)`, `relation(on, a, b), -in_hand(rob1, c)`),
 /// as the AL_d statement `goal relation(on, a, b).`; relation names stand for
 /// `relation(R, ..)`. `None` when it is not a comma-separated list of literals.
-pub fn goal_statement(text: &str) -> Option<String> {
+pub fn goal_statement(text: &str) -> Option<Statement> {
     let src = format!("g :- {}.", text.trim().trim_end_matches('.'));
     let parsed = syntax::parse(FileId(0), &src, Dialect::Clingo);
     if parsed.has_errors() {
@@ -308,25 +346,18 @@ pub fn goal_statement(text: &str) -> Option<String> {
         let Atom::Symbolic(a) = &l.atom else {
             return None;
         };
-        let args: Vec<&Term> = a.args.iter().flatten().collect();
-        let neg = if a.negated { "-" } else { "" };
-        let inner = args
-            .iter()
-            .map(|t| term_text(t))
-            .collect::<Vec<_>>()
-            .join(", ");
+        let mut args: Vec<Arg> = a.args.iter().flatten().cloned().map(Arg::Term).collect();
         if RELATIONS.contains(&a.name.as_str()) && args.len() == 2 {
-            lits.push(format!("{neg}relation({}, {inner})", a.name));
-        } else if args.is_empty() {
-            lits.push(format!("{neg}{}", a.name));
+            args.insert(0, Arg::constant(a.name.as_str()));
+            lits.push(build::lit(a.negated, "relation", &args));
         } else {
-            lits.push(format!("{neg}{}({inner})", a.name));
+            lits.push(build::lit(a.negated, a.name.as_str(), &args));
         }
     }
     if lits.is_empty() {
         return None;
     }
-    Some(format!("goal {}.", lits.join(", ")))
+    Some(build::goal(lits))
 }
 
 #[cfg(test)]
@@ -346,8 +377,8 @@ mod tests {
         assert!(ald.contains("has_size(a, large)."), "{ald}");
         assert!(ald.contains("has_surface(b, irregular)."), "{ald}");
         assert!(ald.contains("initially relation(on, a, b)."), "{ald}");
-        assert!(ald.contains("initially relation(above,a,b)."), "{ald}");
-        assert!(ald.contains("initially -in_hand(rob1,a)."), "{ald}");
+        assert!(ald.contains("initially relation(above, a, b)."), "{ald}");
+        assert!(ald.contains("initially -in_hand(rob1, a)."), "{ald}");
     }
 
     #[test]
@@ -363,14 +394,16 @@ mod tests {
 
     #[test]
     fn goals_are_literal_lists() {
+        let shown =
+            |t: &str| goal_statement(t).map(|g| crate::action::translate::show_statement(&g.kind));
         assert_eq!(
-            goal_statement("on(a, b)").as_deref(),
-            Some("goal relation(on, a, b).")
+            shown("on(a, b)").as_deref(),
+            Some("goal relation(on, a, b)")
         );
         assert_eq!(
-            goal_statement("in_hand(rob1, a), -on(a, table).").as_deref(),
-            Some("goal in_hand(rob1, a), -relation(on, a, table).")
+            shown("in_hand(rob1, a), -on(a, table).").as_deref(),
+            Some("goal in_hand(rob1, a), -relation(on, a, table)")
         );
-        assert_eq!(goal_statement("put the a on b"), None);
+        assert_eq!(shown("put the a on b"), None);
     }
 }

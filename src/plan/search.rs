@@ -19,24 +19,24 @@
 //! [`PlanError::Inconsistent`].
 
 use super::{Plan, PlanConfig, PlanError, Plans};
-use crate::action::{self, ast::Description, ast::Value, Options};
+use crate::action::{self, ast::Description, HorizonMode, Options, Switches};
 use crate::base::{Diagnostics, SourceMap};
 use crate::control::{
     AtomId, Control, ControlConfig, Model, Part, SolveOptions, Symbol, TruthValue,
 };
 
-/// Translates `desc` with the config's switches plus `extra`; bad input is `PlanError::Input`.
+/// Translates `desc` with the config's switches and `switches`; bad input is
+/// `PlanError::Input`.
 pub(crate) fn translate(
     desc: &Description,
     sources: &SourceMap,
     config: &PlanConfig,
-    extra: &[(&str, Value)],
+    switches: Switches,
 ) -> Result<action::Translation, PlanError> {
-    let mut overrides = config.overrides.clone();
-    overrides.extend(extra.iter().map(|(n, v)| (n.to_string(), v.clone())));
     let options = Options {
         profile: config.profile.clone(),
-        overrides,
+        overrides: config.overrides.clone(),
+        switches,
     };
     let t = action::translate(desc, &options);
     if t.has_errors() {
@@ -146,11 +146,10 @@ fn diagnose(desc: &Description, sources: &SourceMap, config: &PlanConfig) -> Pla
         desc,
         sources,
         config,
-        &[
-            ("horizon", Value::Int(0)),
-            ("planning", Value::Bool(false)),
-            ("stability_constraint", Value::Word("off".into())),
-        ],
+        Switches {
+            stability_constraint: Some(false),
+            ..Switches::history(0)
+        },
     ) else {
         return PlanError::Inconsistent;
     };
@@ -199,14 +198,7 @@ fn check_initial(
     sources: &SourceMap,
     config: &PlanConfig,
 ) -> Result<(), PlanError> {
-    let initial = solve_fresh(
-        desc,
-        sources,
-        config,
-        &[("horizon", Value::Int(0)), ("planning", Value::Bool(false))],
-        0,
-        false,
-    )?;
+    let initial = solve_fresh(desc, sources, config, Switches::history(0), 0, false)?;
     if initial.is_empty() {
         return Err(diagnose(desc, sources, config));
     }
@@ -242,7 +234,11 @@ pub(crate) fn incremental(
         desc,
         sources,
         config,
-        &[("horizon_mode", Value::Word("incremental".into()))],
+        Switches {
+            planning: Some(true),
+            horizon_mode: Some(HorizonMode::Incremental),
+            ..Switches::default()
+        },
     )?;
     let mut ctl = control(sources, t.program, if config.all { 0 } else { 1 })?;
     let ground = |ctl: &mut Control, parts: &[Part]| {
@@ -291,11 +287,11 @@ fn solve_fresh(
     desc: &Description,
     sources: &SourceMap,
     config: &PlanConfig,
-    extra: &[(&str, Value)],
+    switches: Switches,
     horizon: usize,
     all: bool,
 ) -> Result<Vec<Plan>, PlanError> {
-    let t = translate(desc, sources, config, extra)?;
+    let t = translate(desc, sources, config, switches)?;
     let mut ctl = control(sources, t.program, if all { 0 } else { 1 })?;
     ctl.ground(&[Part::base()])
         .map_err(|e| PlanError::Input(e.message))?;
@@ -317,10 +313,7 @@ pub(crate) fn retranslate(
             desc,
             sources,
             config,
-            &[
-                ("horizon", Value::Int(k as i64)),
-                ("horizon_mode", Value::Word("iterative".into())),
-            ],
+            Switches::planning(k, HorizonMode::Iterative),
             k,
             config.all,
         )?;
@@ -343,10 +336,7 @@ pub(crate) fn fixed(
         desc,
         sources,
         config,
-        &[
-            ("horizon", Value::Int(n as i64)),
-            ("horizon_mode", Value::Word("fixed".into())),
-        ],
+        Switches::planning(n, HorizonMode::Fixed),
         n,
         config.all,
     )?;

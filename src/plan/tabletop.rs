@@ -48,8 +48,36 @@ impl SimWorld {
     }
 }
 
+/// A perceived literal as a symbol (`relation(on,a,b)`).
 fn literal_symbol(literal: &Literal) -> Symbol {
-    Symbol::parse(&literal.term()).expect("perception prints ground terms")
+    let c = |n: &str| Symbol::constant(n);
+    match literal {
+        Literal::Relation(r) => relation_symbol(r),
+        Literal::InHand(r, o) => Symbol::function("in_hand", vec![c(r), c(o)]),
+        Literal::HasSize(o, s) => Symbol::function("has_size", vec![c(o), c(s.name())]),
+        Literal::HasSurface(o, s) => Symbol::function("has_surface", vec![c(o), c(s.name())]),
+    }
+}
+
+/// `relation(rel, a, b)`.
+fn relation_symbol(r: &sim::Relation) -> Symbol {
+    let c = |n: &str| Symbol::constant(n);
+    Symbol::function("relation", vec![c(r.rel.name()), c(&r.a), c(&r.b)])
+}
+
+/// An action symbol (`pickup(rob1,a)`) as the simulator's action; `Err` for any other term.
+pub fn sim_action(action: &Symbol) -> Result<Action, String> {
+    let args: Option<Vec<&str>> = action
+        .args()
+        .iter()
+        .map(|a| a.args().is_empty().then(|| a.name()).flatten())
+        .collect();
+    match (action.name(), args, action.is_negative()) {
+        (Some(name), Some(args), false) => {
+            Action::from_parts(name, &args).map_err(|e| e.to_string())
+        }
+        _ => Err(format!("`{action}` is not an action of the tabletop")),
+    }
 }
 
 impl World for SimWorld {
@@ -86,7 +114,7 @@ impl World for SimWorld {
     }
 
     fn execute(&mut self, action: &Symbol) -> Result<Option<String>, String> {
-        let action = Action::parse(&action.to_string()).map_err(|e| e.to_string())?;
+        let action = sim_action(action)?;
         let report =
             sim::execute(&mut self.scene, &action, &self.act).map_err(|e| e.to_string())?;
         Ok(report.failure.map(|f| f.to_string()))
@@ -120,7 +148,7 @@ pub fn random_goal(world: &mut SimWorld, seed: u64) -> Option<Symbol> {
         .collect();
     supports.push(TABLE.to_string());
     let robot = scene.robot.clone();
-    let truth: Vec<String> = world.truth().iter().map(|r| r.to_string()).collect();
+    let truth: Vec<Symbol> = world.truth().iter().map(relation_symbol).collect();
     let held = scene.in_hand.clone();
     for _ in 0..64 {
         let x = &names[rng.range_usize(0, names.len() - 1)];
@@ -128,16 +156,20 @@ pub fn random_goal(world: &mut SimWorld, seed: u64) -> Option<Symbol> {
             if held.as_deref() == Some(x.as_str()) {
                 continue;
             }
-            format!("in_hand({robot},{x})")
+            Symbol::function(
+                "in_hand",
+                vec![Symbol::constant(&robot), Symbol::constant(x)],
+            )
         } else {
             let y = &supports[rng.range_usize(0, supports.len() - 1)];
-            let g = format!("relation(on,{x},{y})");
+            let c = Symbol::constant;
+            let g = Symbol::function("relation", vec![c("on"), c(x), c(y)]);
             if y == x || truth.contains(&g) {
                 continue;
             }
             g
         };
-        return Some(Symbol::parse(&goal).expect("a ground term"));
+        return Some(goal);
     }
     None
 }

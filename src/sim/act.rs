@@ -71,10 +71,17 @@ impl Action {
         let (head, rest) = compact.split_once('(').ok_or_else(bad)?;
         let args = rest.strip_suffix(')').ok_or_else(bad)?;
         let args: Vec<&str> = args.split(',').collect();
+        Action::from_parts(head, &args).map_err(|_| bad())
+    }
+
+    /// The action `name(args)`: `pickup` with a robot and an object, `putdown` with a robot, an
+    /// object and a destination, every argument a constant.
+    pub fn from_parts(name: &str, args: &[&str]) -> Result<Action, SimError> {
+        let bad = || SimError::MalformedAction(format!("{name}({})", args.join(",")));
         if !args.iter().all(|a| super::scene::is_constant(a)) {
             return Err(bad());
         }
-        match (head, args.as_slice()) {
+        match (name, args) {
             ("pickup", [r, o]) => Ok(Action::Pickup {
                 robot: r.to_string(),
                 object: o.to_string(),

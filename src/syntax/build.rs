@@ -1,25 +1,35 @@
-//! Builders of the CR-Prolog syntax tree that the translation emits: terms, atoms, literals,
-//! heads. Pure functions; every node carries the span it is given.
+//! Builders of the clingo-dialect syntax tree from values: terms, atoms, literals, heads, rules,
+//! `#external` declarations. The AL_d translation emits its program through them, and the robot
+//! layers build the statements they add to a program (facts of symbols, gated rules) with them
+//! instead of printing text and parsing it again.
+//!
+//! Invariants: pure functions; every node carries the span it is given (the default span for
+//! nodes that nothing was written for); a built statement prints, through
+//! [`crate::syntax::printer`], as the text that parses back to it.
 
-use super::*;
+use super::ast::{
+    self, BinaryOp, BodyLiteral, CmpOp, ConditionalLiteral, Head, Literal, Rule, RuleKind, Sign,
+    Statement, StatementKind, SymbolicAtom, Term, TermKind,
+};
+use crate::base::Span;
 
-pub(super) fn term(span: Span, kind: TermKind) -> Term {
+pub fn term(span: Span, kind: TermKind) -> Term {
     Term { span, kind }
 }
 
-pub(super) fn var(span: Span, name: &str) -> Term {
+pub fn var(span: Span, name: &str) -> Term {
     term(span, TermKind::Variable(name.into()))
 }
 
-pub(super) fn constant(span: Span, name: &str) -> Term {
+pub fn constant(span: Span, name: &str) -> Term {
     term(span, TermKind::Constant(name.into()))
 }
 
-pub(super) fn int(span: Span, n: i64) -> Term {
+pub fn int(span: Span, n: i64) -> Term {
     term(span, TermKind::Integer(n))
 }
 
-pub(super) fn plus(span: Span, lhs: Term, n: i64) -> Term {
+pub fn plus(span: Span, lhs: Term, n: i64) -> Term {
     term(
         span,
         TermKind::Binary {
@@ -31,7 +41,7 @@ pub(super) fn plus(span: Span, lhs: Term, n: i64) -> Term {
 }
 
 /// `name(args)`, or the constant `name` without arguments.
-pub(super) fn function(span: Span, name: &str, args: Vec<Term>) -> Term {
+pub fn function(span: Span, name: &str, args: Vec<Term>) -> Term {
     if args.is_empty() {
         constant(span, name)
     } else {
@@ -46,7 +56,7 @@ pub(super) fn function(span: Span, name: &str, args: Vec<Term>) -> Term {
     }
 }
 
-pub(super) fn atom(span: Span, negated: bool, name: &str, args: Vec<Term>) -> SymbolicAtom {
+pub fn atom(span: Span, negated: bool, name: &str, args: Vec<Term>) -> SymbolicAtom {
     SymbolicAtom {
         span,
         negated,
@@ -55,7 +65,7 @@ pub(super) fn atom(span: Span, negated: bool, name: &str, args: Vec<Term>) -> Sy
     }
 }
 
-pub(super) fn lit(span: Span, sign: Sign, a: SymbolicAtom) -> Literal {
+pub fn lit(span: Span, sign: Sign, a: SymbolicAtom) -> Literal {
     Literal {
         span,
         sign,
@@ -63,15 +73,15 @@ pub(super) fn lit(span: Span, sign: Sign, a: SymbolicAtom) -> Literal {
     }
 }
 
-pub(super) fn pos(span: Span, negated: bool, name: &str, args: Vec<Term>) -> BodyLiteral {
+pub fn pos(span: Span, negated: bool, name: &str, args: Vec<Term>) -> BodyLiteral {
     BodyLiteral::Literal(lit(span, Sign::Positive, atom(span, negated, name, args)))
 }
 
-pub(super) fn neg(span: Span, negated: bool, name: &str, args: Vec<Term>) -> BodyLiteral {
+pub fn neg(span: Span, negated: bool, name: &str, args: Vec<Term>) -> BodyLiteral {
     BodyLiteral::Literal(lit(span, Sign::Not, atom(span, negated, name, args)))
 }
 
-pub(super) fn compare(span: Span, lhs: Term, op: CmpOp, rhs: Term) -> BodyLiteral {
+pub fn compare(span: Span, lhs: Term, op: CmpOp, rhs: Term) -> BodyLiteral {
     BodyLiteral::Literal(Literal {
         span,
         sign: Sign::Positive,
@@ -83,11 +93,45 @@ pub(super) fn compare(span: Span, lhs: Term, op: CmpOp, rhs: Term) -> BodyLitera
     })
 }
 
-pub(super) fn head_of(span: Span, a: SymbolicAtom) -> Head {
+pub fn head_of(span: Span, a: SymbolicAtom) -> Head {
     Head::Disjunction(vec![ConditionalLiteral {
         span,
         literal: lit(span, Sign::Positive, a),
         condition: Vec::new(),
         has_colon: false,
     }])
+}
+
+/// The rule `head :- body.`
+pub fn rule(span: Span, head: Head, body: Vec<BodyLiteral>) -> Statement {
+    Statement {
+        span,
+        kind: StatementKind::Rule(Rule {
+            head,
+            body,
+            kind: RuleKind::Normal,
+        }),
+    }
+}
+
+/// The fact `a.`
+pub fn fact(span: Span, a: SymbolicAtom) -> Statement {
+    rule(span, head_of(span, a), Vec::new())
+}
+
+/// `#external a : body. [value]`, the value a constant (`false`, `true`, `free`) or none.
+pub fn external(
+    span: Span,
+    a: SymbolicAtom,
+    body: Vec<BodyLiteral>,
+    value: Option<&str>,
+) -> Statement {
+    Statement {
+        span,
+        kind: StatementKind::External(Box::new(ast::External {
+            atom: a,
+            body,
+            value: value.map(|v| constant(span, v)),
+        })),
+    }
 }

@@ -8,6 +8,7 @@
 //! converted text, which is what the [`crate::base::SourceMap`] should hold.
 
 pub mod ast;
+pub mod build;
 pub mod fuzzing;
 pub mod lexer;
 pub mod name;

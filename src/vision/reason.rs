@@ -29,10 +29,10 @@ use crate::action::ast::{Description, Statement, StatementKind};
 use crate::action::build::{self, Arg};
 use crate::action::check::Options;
 use crate::action::translate::Translation;
-use crate::action::{self, ast::Value};
+use crate::action::{self, Switches};
 use crate::base::SourceMap;
 use crate::control::{Control, ControlConfig, Part, Symbol};
-use crate::learn::term::{Axiom, AxiomKind, Literal, Term};
+use crate::learn::term::{Axiom, AxiomKind, Literal};
 use crate::sim::{Percept, Relation, Scene, Size, Surface};
 
 /// Answer sets compared per decision; a view with more is "cannot decide" where they differ
@@ -242,11 +242,8 @@ impl Knowledge {
     pub fn translation(&self, view: &View) -> Result<Translation, ReasonError> {
         let desc = self.description(view);
         let options = Options {
-            profile: None,
-            overrides: vec![
-                ("planning".into(), Value::Bool(false)),
-                ("horizon".into(), Value::Int(0)),
-            ],
+            switches: Switches::history(0),
+            ..Options::default()
         };
         let translation = action::translate(&desc, &options);
         if translation.has_errors() {
@@ -430,32 +427,9 @@ fn decide(name: &str, names: &[&str], models: &[Facts]) -> Belief {
     }
 }
 
-/// The AL_d arguments of a lifted literal: relation names and values stay constants, variables
-/// keep their names (`O1`).
-fn args_of(lit: &Literal) -> Vec<Arg> {
-    lit.args
-        .iter()
-        .map(|t| match t {
-            Term::Const(c) => match c.parse::<i64>() {
-                Ok(n) => Arg::Int(n),
-                Err(_) => Arg::Const(c.clone()),
-            },
-            Term::Var(v) => Arg::Var(v.to_string()),
-        })
-        .collect()
-}
-
 /// A learned state constraint as a labelled AL_d statement (`None` for other kinds).
 pub fn constraint_statement(label: &str, axiom: &Axiom) -> Option<Statement> {
-    let AxiomKind::Constraint { head } = &axiom.kind else {
-        return None;
-    };
-    let lit = |l: &Literal| build::lit(!l.positive, &l.name, &args_of(l));
-    Some(build::constraint(
-        label,
-        lit(head),
-        axiom.body.iter().map(lit).collect(),
-    ))
+    matches!(axiom.kind, AxiomKind::Constraint { .. }).then(|| axiom.statement(label))
 }
 
 #[cfg(test)]

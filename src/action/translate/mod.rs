@@ -15,8 +15,8 @@
 
 use crate::base::{Diagnostic, Span};
 use crate::syntax::ast::{
-    self, BinaryOp, BodyLiteral, CmpOp, ConditionalLiteral, Dialect, Head, Literal, Program,
-    RuleKind, Sign, Signature, StatementKind as K, SymbolicAtom, Term, TermKind,
+    self, BodyLiteral, CmpOp, ConditionalLiteral, Dialect, Head, Literal, Program, RuleKind, Sign,
+    Signature, StatementKind as K, SymbolicAtom, Term, TermKind,
 };
 
 use super::ast::*;
@@ -203,12 +203,11 @@ fn for_each_term(kind: &StatementKind, f: &mut dyn FnMut(&Term)) {
     }
 }
 
-mod build;
 mod schemas;
 mod show;
 mod statements;
 
-use build::*;
+use crate::syntax::build::*;
 pub use show::show_statement;
 
 struct Translator<'d> {
@@ -453,6 +452,7 @@ mod tests {
         let options = Options {
             profile: None,
             overrides: vec![("planning".into(), Value::Bool(false))],
+            ..Options::default()
         };
         let t = translate(&parsed.description, &options);
         assert!(!t.origins.iter().any(|o| o.kind == OriginKind::Planning));
