@@ -267,55 +267,10 @@ impl Grounder<'_> {
                 .collect();
             let appl = match self.cr_appl.get(&(stmt.stmt, key.clone())) {
                 Some(&a) => a,
-                None => {
-                    let text = match label {
-                        Some(t) => match self.eval(t, &ctx.binding) {
-                            Some(v) => self.syms.show(v),
-                            None => return,
-                        },
-                        None => {
-                            let mut s = format!("r{}", stmt.stmt);
-                            let named: Vec<String> = stmt
-                                .globals
-                                .iter()
-                                .filter(|&&v| {
-                                    !self
-                                        .syms
-                                        .names
-                                        .resolve(stmt.var_names[v as usize])
-                                        .starts_with('#')
-                                })
-                                .filter_map(|&v| ctx.binding.get(v))
-                                .map(|v| self.syms.show(v))
-                                .collect();
-                            if !named.is_empty() {
-                                s.push('(');
-                                s.push_str(&named.join(","));
-                                s.push(')');
-                            }
-                            s
-                        }
-                    };
-                    let a = self.aux();
-                    self.cr_appl.insert((stmt.stmt, key), a);
-                    self.cr_rules.push((a, text));
-                    self.add_rule(
-                        Rule {
-                            head_kind: HeadKind::Choice,
-                            head: vec![a],
-                            body: Body::Normal(Vec::new()),
-                        },
-                        |g| Origin {
-                            rule: RuleOrigin::Auxiliary {
-                                of_stmt: stmt.stmt,
-                                kind: AuxKind::CrApplication,
-                                bindings: g.bindings(&ctx.binding),
-                            },
-                            removed: Vec::new(),
-                        },
-                    );
-                    a
-                }
+                None => match self.new_cr_appl(stmt, label.as_ref(), key, ctx) {
+                    Some(a) => a,
+                    None => return,
+                },
             };
             ctx.body.push(appl as Lit);
         }
@@ -400,6 +355,65 @@ impl Grounder<'_> {
             },
             |g| g.origin(stmt, ctx),
         );
+    }
+
+    /// A new application atom for the instance of CR rule `stmt` with the global values `key`:
+    /// `{appl}.` is added and the rule recorded with its label (`label` evaluated, or `r<stmt>`
+    /// with the named global values); `None` when the label is undefined.
+    fn new_cr_appl(
+        &mut self,
+        stmt: &NStmt,
+        label: Option<&NTerm>,
+        key: Vec<SymId>,
+        ctx: &Ctx,
+    ) -> Option<AtomId> {
+        let text = match label {
+            Some(t) => {
+                let v = self.eval(t, &ctx.binding)?;
+                self.syms.show(v)
+            }
+            None => {
+                let mut s = format!("r{}", stmt.stmt);
+                let named: Vec<String> = stmt
+                    .globals
+                    .iter()
+                    .filter(|&&v| {
+                        !self
+                            .syms
+                            .names
+                            .resolve(stmt.var_names[v as usize])
+                            .starts_with('#')
+                    })
+                    .filter_map(|&v| ctx.binding.get(v))
+                    .map(|v| self.syms.show(v))
+                    .collect();
+                if !named.is_empty() {
+                    s.push('(');
+                    s.push_str(&named.join(","));
+                    s.push(')');
+                }
+                s
+            }
+        };
+        let a = self.aux();
+        self.cr_appl.insert((stmt.stmt, key), a);
+        self.cr_rules.push((a, text));
+        self.add_rule(
+            Rule {
+                head_kind: HeadKind::Choice,
+                head: vec![a],
+                body: Body::Normal(Vec::new()),
+            },
+            |g| Origin {
+                rule: RuleOrigin::Auxiliary {
+                    of_stmt: stmt.stmt,
+                    kind: AuxKind::CrApplication,
+                    bindings: g.bindings(&ctx.binding),
+                },
+                removed: Vec::new(),
+            },
+        );
+        Some(a)
     }
 
     /// Grounds the instances of a conditional disjunction element (`l : c` with gringo's
