@@ -24,7 +24,7 @@ pub(super) fn cr_rules(
     out: &mut GroundProgram,
 ) -> Vec<AtomId> {
     let n = g.atoms.len();
-    for (a, label) in &g.cr_rules {
+    for (a, label) in &g.directives.cr_rules {
         if number[*a as usize] != 0 && status[*a as usize - 1] == Status::Unknown {
             out.cr_rules.push(CrRule {
                 appl: number[*a as usize],

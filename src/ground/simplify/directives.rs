@@ -39,17 +39,19 @@ pub(super) fn directives(
     out: &mut GroundProgram,
 ) {
     out.externals = g
+        .directives
         .externals
         .iter()
         .map(|&(a, v)| (number[a as usize], v))
         .collect();
     out.projections = g
+        .directives
         .projections
         .iter()
         .filter(|&&a| number[a as usize] != 0)
         .map(|&a| number[a as usize])
         .collect();
-    for h in &g.heuristics {
+    for h in &g.directives.heuristics {
         if number[h.atom as usize] == 0 {
             continue;
         }
@@ -60,7 +62,7 @@ pub(super) fn directives(
             out.heuristics.push(h2);
         }
     }
-    for e in &g.edges {
+    for e in &g.directives.edges {
         if let Some(condition) = cond_map(&e.condition, status, number) {
             let mut e2 = e.clone();
             e2.condition = condition;

@@ -28,19 +28,19 @@ pub(super) fn minimize(
     let mut removed: Vec<RemovedLit> = Vec::new();
     // Minimize statements: one per priority, highest first.
     let mut minimize: Vec<Minimize> = Vec::new();
-    let keys = std::mem::take(&mut g.minimize_order);
+    let keys = std::mem::take(&mut g.directives.minimize_order);
     let mut elements: Vec<(i32, i32, Lit)> = Vec::new();
     // Priorities whose every element Lucent simplified away but gringo would keep (a condition
     // holding a literal and its negation, or an atom only a contradictory rule derives): they
     // stay as empty statements, so the answer is an optimum of 0 as clingo's.
     let mut empty_prios: Vec<i32> = Vec::new();
     for key in keys {
-        let conds = g.minimize.get(&key).cloned().unwrap_or_default();
+        let conds = g.directives.minimize.get(&key).cloned().unwrap_or_default();
         let gstatus = gringo_status.unwrap_or(&status[..]);
         let gringo_keeps = conds
             .iter()
             .any(|c| c.iter().all(|&l| truth(l, gstatus) != Some(false)));
-        let mut cond_origins = g.minimize_origins.remove(&key).unwrap_or_default();
+        let mut cond_origins = g.prov.minimize_origins.remove(&key).unwrap_or_default();
         let mut alts: Vec<Vec<Lit>> = Vec::new();
         // With provenance: the origins of each alternative, and of the certain ones.
         let mut alt_origins: Vec<Vec<Origin>> = Vec::new();

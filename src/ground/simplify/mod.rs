@@ -208,7 +208,7 @@ fn decide(g: &Grounder<'_>, before: &[u8], frozen: &dyn Fn(usize) -> bool) -> De
     let n = g.atoms.len();
     let mut status = initial_status(g);
     let mut external = vec![false; n + 1];
-    for &(a, _) in &g.externals {
+    for &(a, _) in &g.directives.externals {
         external[a as usize] = true;
     }
     // What propagation may not make false: externals and frozen atoms.
@@ -225,8 +225,8 @@ fn decide(g: &Grounder<'_>, before: &[u8], frozen: &dyn Fn(usize) -> bool) -> De
     // What gringo would still find possible: it keeps rules with contradictory bodies, so atoms
     // only they derive stay in its minimize statements (clingo then reports an optimum of 0
     // where a dropped statement would make the answer plain SATISFIABLE).
-    let gringo_status: Option<Vec<Status>> = (killed_contradictory && !g.minimize_order.is_empty())
-        .then(|| {
+    let gringo_status: Option<Vec<Status>> =
+        (killed_contradictory && !g.directives.minimize_order.is_empty()).then(|| {
             let mut st = initial_status(g);
             propagate(g, &keep, &mut st, false, None);
             st

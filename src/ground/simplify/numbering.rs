@@ -136,7 +136,7 @@ pub(super) fn number_remaining(
     for m in minimize {
         m.lits.iter().for_each(|&(l, _)| use_lit(l, &mut used));
     }
-    for &(a, _) in &g.externals {
+    for &(a, _) in &g.directives.externals {
         used[a as usize] = true;
     }
     for a in 1..=n {
@@ -161,17 +161,17 @@ pub(super) fn number_remaining(
                 used[a] = true;
             }
         };
-        for (_, cond) in &g.shows {
+        for (_, cond) in &g.directives.shows {
             cond.iter().for_each(|&l| mark(l));
         }
-        for h in &g.heuristics {
+        for h in &g.directives.heuristics {
             mark(h.atom as Lit);
             h.condition.iter().for_each(|&l| mark(l));
         }
-        for e in &g.edges {
+        for e in &g.directives.edges {
             e.condition.iter().for_each(|&l| mark(l));
         }
-        for &a in &g.projections {
+        for &a in &g.directives.projections {
             mark(a as Lit);
         }
     }

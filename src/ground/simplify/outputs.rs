@@ -65,7 +65,7 @@ pub(super) fn show_terms(
     number: &[u32],
     outputs: &mut Vec<Output>,
 ) {
-    let shows = std::mem::take(&mut g.shows);
+    let shows = std::mem::take(&mut g.directives.shows);
     let mut seen: hashbrown::HashSet<(SymId, Vec<Lit>)> = hashbrown::HashSet::new();
     for (sym, cond) in shows {
         let mut c = Vec::new();

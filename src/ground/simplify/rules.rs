@@ -52,9 +52,9 @@ pub(super) fn simplify_rules(
     let mut origins = Provenance::new();
     // Origins of second rules for facts, added to the fact's rule at the end.
     let mut late: Vec<(u32, Origin)> = Vec::new();
-    let mut dead_rules: Vec<DeadRule> = std::mem::take(&mut g.dead);
-    let mut g_origins = std::mem::take(&mut g.origins);
-    let mut g_more = std::mem::take(&mut g.more_origins);
+    let mut dead_rules: Vec<DeadRule> = std::mem::take(&mut g.prov.dead);
+    let mut g_origins = std::mem::take(&mut g.prov.origins);
+    let mut g_more = std::mem::take(&mut g.prov.more_origins);
     let mut take_origins = |ri: usize| -> Vec<Origin> {
         let mut os = vec![std::mem::replace(
             &mut g_origins[ri],
