@@ -5,10 +5,10 @@
 //! part adds, not what was grounded before.
 //!
 //! Invariants:
-//! - The first grounding of a session is exactly [`super::ground`]'s (same atoms, numbering,
-//!   output); each later one numbers only the atoms that occur in its own output, from 1,
-//!   and [`Session::last_gatoms`] maps those numbers to the session's grounder atoms, which
-//!   never change.
+//! - [`super::ground`] is a session used once (one grounding pipeline); the first grounding of
+//!   a session is exactly its grounding (same atoms, numbering, output); each later one numbers
+//!   only the atoms that occur in its own output, from 1, and [`Session::last_gatoms`] maps
+//!   those numbers to the session's grounder atoms, which never change.
 //! - An atom an earlier grounding numbered is *frozen*: it stays in its domain, is possible or
 //!   a fact, and later groundings never make it false (`simplify::finish_after`).
 //! - Grounder-made `#projN` predicates are numbered across the session (a later part's
@@ -81,7 +81,21 @@ impl Session {
         program: &ast::Program,
         sources: Option<&SourceMap>,
         config: &GroundConfig,
+        syms: Symbols,
+    ) -> Grounding {
+        self.ground_part(program, sources, config, syms, true)
+    }
+
+    /// [`Session::ground`]; `carry`: keep what a later grounding needs (the frozen and fact
+    /// atoms, the domains, the predicate table). A session used once ([`super::ground`])
+    /// leaves it, and its reserves, out: it does exactly the one-shot grounding's work.
+    pub(super) fn ground_part(
+        &mut self,
+        program: &ast::Program,
+        sources: Option<&SourceMap>,
+        config: &GroundConfig,
         mut syms: Symbols,
+        carry: bool,
     ) -> Grounding {
         let mut diags = Diagnostics::new(config.message_limit.unwrap_or(20));
         let empty = |diags, syms, statement_spans| Grounding {
@@ -105,7 +119,7 @@ impl Session {
             ));
             return empty(diags, syms, Vec::new());
         }
-        if self.groundings == 0 {
+        if carry && self.groundings == 0 {
             // A first grounding makes a few symbols per statement at least (atoms, their
             // arguments): reserved at once instead of rehashing the table from empty.
             syms.reserve(SYMBOLS_PER_STATEMENT * program.statements.len());
@@ -135,16 +149,41 @@ impl Session {
             config.provenance,
             limits,
         );
-        if self.groundings == 0 {
+        if carry && self.groundings == 0 {
             g.reserve(RULES_PER_STATEMENT * compiled.stmts.len());
         }
         g.run(&compiled);
         g.release_dedup();
         let stopped = g.stopped;
         let mut fin = simplify::finish_after(&mut g, &compiled, &self.flags, &self.prefer);
-        // What the next grounding starts from: the atoms this one numbered are frozen (and in
-        // their domains, as the one-shot context of facts and externals had them), its facts
-        // are facts for good.
+        if carry {
+            self.carry(&mut g, &fin);
+        }
+        let syms = std::mem::take(&mut g.syms);
+        drop(g);
+        if carry {
+            self.preds = compiled.preds;
+            self.projections = projections;
+        } else {
+            // Nothing was kept for a later grounding.
+            self.spent = true;
+        }
+        self.groundings += 1;
+        let gatoms = std::mem::take(&mut fin.atom_gatoms);
+        let grounding = super::finished(fin, diags, statement_spans, syms, stopped);
+        if grounding.diagnostics.has_errors() {
+            self.spent = true;
+            self.last_gatoms = Vec::new();
+        } else {
+            self.last_gatoms = gatoms;
+        }
+        grounding
+    }
+
+    /// What the next grounding starts from: the atoms the grounding `fin` of `g` numbered are
+    /// frozen (and in their domains, as the one-shot context of facts and externals had them),
+    /// its facts are facts for good; the atoms and domains move into the session.
+    fn carry(&mut self, g: &mut Grounder<'_>, fin: &simplify::Finished) {
         self.flags.resize(g.atoms.len() + 1, 0);
         for &a in &fin.atom_gatoms {
             self.flags[a as usize] |= NUMBERED;
@@ -156,19 +195,5 @@ impl Session {
         }
         self.prefer.extend_from_slice(&fin.prefer_atoms);
         self.state = g.suspend();
-        let syms = std::mem::take(&mut g.syms);
-        drop(g);
-        self.preds = compiled.preds;
-        self.projections = projections;
-        self.groundings += 1;
-        let gatoms = std::mem::take(&mut fin.atom_gatoms);
-        let grounding = super::finished(fin, diags, statement_spans, syms, stopped);
-        if grounding.diagnostics.has_errors() {
-            self.spent = true;
-            self.last_gatoms = Vec::new();
-        } else {
-            self.last_gatoms = gatoms;
-        }
-        grounding
     }
 }

@@ -142,45 +142,14 @@ impl Grounding {
     }
 }
 
-/// Grounds `program`. `sources`, when given, supplies the text shown in diagnostics.
+/// Grounds `program`. `sources`, when given, supplies the text shown in diagnostics. One
+/// grounding pipeline: this is a multi-shot [`incremental::Session`] used once.
 pub fn ground(
     program: &ast::Program,
     sources: Option<&SourceMap>,
     config: &GroundConfig,
 ) -> Grounding {
-    let mut diags = Diagnostics::new(config.message_limit.unwrap_or(20));
-    let mut syms = symbol::Symbols::new();
-    let compiled = {
-        let mut rw = rewrite::Rewriter::new(&mut syms, &mut diags, sources);
-        rw.program(program, &config.consts);
-        rw.out
-    };
-    let statement_spans = compiled.stmt_spans.clone();
-    if diags.has_errors() {
-        return Grounding {
-            program: GroundProgram::new(),
-            diagnostics: diags,
-            atom_syms: Vec::new(),
-            fact_syms: Vec::new(),
-            statement_spans,
-            symbols: syms,
-            stopped: None,
-        };
-    }
-    let limits = Limits {
-        max_size: config.max_size,
-        deadline: config.deadline,
-    };
-    let npreds = compiled.preds.len();
-    let mut g =
-        instantiate::Grounder::new(syms, npreds, &mut diags, sources, config.provenance, limits);
-    g.run(&compiled);
-    g.release_dedup();
-    let stopped = g.stopped;
-    let fin = simplify::finish(&mut g, &compiled);
-    let syms = std::mem::take(&mut g.syms);
-    drop(g);
-    finished(fin, diags, statement_spans, syms, stopped)
+    incremental::Session::new().ground_part(program, sources, config, symbol::Symbols::new(), false)
 }
 
 /// The [`Grounding`] of a finished instantiation, one-shot or incremental: the limit error added

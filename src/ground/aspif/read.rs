@@ -348,68 +348,13 @@ impl<'a> Reader<'a> {
                     self.cur.end_of_line()?;
                     break;
                 }
-                1 => {
-                    let head_kind = match self.cur.int("head type", 0, i64::MAX)? {
-                        0 => HeadKind::Disjunction,
-                        1 => HeadKind::Choice,
-                        v => {
-                            return Err(self.bad_value(
-                                "head type",
-                                "0 (disjunction), 1 (choice)",
-                                v,
-                            ))
-                        }
-                    };
-                    let head = self.atoms()?;
-                    let body = match self.cur.int("body type", 0, i64::MAX)? {
-                        0 => Body::Normal(self.lits()?),
-                        1 => {
-                            self.cur.skip_blanks();
-                            let at = self.cur.pos;
-                            let lower = self.cur.int("lower bound", i64::MIN, i64::MAX)?;
-                            let mut total = i128::from(lower).abs();
-                            if total > WEIGHT_SUM_MAX {
-                                return Err(self.cur.error_at(
-                                    at,
-                                    AspifErrorKind::WeightsTooLarge(WEIGHT_BODY.into()),
-                                ));
-                            }
-                            Body::Weight {
-                                lower,
-                                lits: self.wlits(false, WEIGHT_BODY, &mut total)?,
-                            }
-                        }
-                        v => return Err(self.bad_value("body type", "0 (normal), 1 (weight)", v)),
-                    };
-                    let p = &mut step.program;
-                    step.layout.push(Stmt::Rule(p.rules.len() as u32));
-                    p.rules.push_parts(head_kind, &head, body.as_ref());
-                }
-                2 => {
-                    let priority = self.cur.int("priority", i64::MIN, i64::MAX)?;
-                    let mut total = self.minimize_totals.get(&priority).copied().unwrap_or(0);
-                    let what =
-                        format!("the weights of the minimize statements of priority {priority}");
-                    let lits = self.wlits(true, &what, &mut total)?;
-                    self.minimize_totals.insert(priority, total);
-                    if let Some((expected, marker_pos)) = expect_cr_minimize.take() {
-                        if priority != expected {
-                            return Err(self.cur.error_at(stmt_pos, AspifErrorKind::BadLucentComment(
-                                format!("CR minimize has priority {priority}, the comment says {expected}"),
-                            )));
-                        }
-                        step.layout.push(Stmt::CrMinimize(priority));
-                        cr_minimize = Some(CrMinimizeSeen {
-                            priority,
-                            lits,
-                            pos: marker_pos,
-                        });
-                    } else {
-                        let p = &mut step.program;
-                        step.layout.push(Stmt::Minimize(p.minimize.len() as u32));
-                        p.minimize.push(Minimize { priority, lits });
-                    }
-                }
+                1 => self.rule_statement(&mut step)?,
+                2 => self.minimize_statement(
+                    &mut step,
+                    stmt_pos,
+                    &mut expect_cr_minimize,
+                    &mut cr_minimize,
+                )?,
                 3 => {
                     let atoms = self.atoms()?;
                     let p = &mut step.program;
@@ -449,34 +394,7 @@ impl<'a> Reader<'a> {
                     });
                     p.assumptions.extend(lits);
                 }
-                7 => {
-                    let modifier = match self.cur.int("heuristic modifier", 0, i64::MAX)? {
-                        0 => HeuristicModifier::Level,
-                        1 => HeuristicModifier::Sign,
-                        2 => HeuristicModifier::Factor,
-                        3 => HeuristicModifier::Init,
-                        4 => HeuristicModifier::True,
-                        5 => HeuristicModifier::False,
-                        v => return Err(self.bad_value("heuristic modifier", "0..=5", v)),
-                    };
-                    let atom = self.cur.atom()?;
-                    self.note_atom(atom);
-                    let bias = self
-                        .cur
-                        .int("heuristic bias", i32::MIN.into(), i32::MAX.into())?
-                        as i32;
-                    let priority = self.cur.int("heuristic priority", 0, u32::MAX.into())? as u32;
-                    let condition = self.lits()?;
-                    let p = &mut step.program;
-                    step.layout.push(Stmt::Heuristic(p.heuristics.len() as u32));
-                    p.heuristics.push(Heuristic {
-                        modifier,
-                        atom,
-                        bias,
-                        priority,
-                        condition,
-                    });
-                }
+                7 => self.heuristic_statement(&mut step)?,
                 8 => {
                     let from = self
                         .cur
@@ -561,6 +479,107 @@ impl<'a> Reader<'a> {
         }
         step.program.num_atoms = self.num_atoms;
         Ok(step)
+    }
+
+    /// Reads the rest of a rule statement (aspif statement 1) into `step`.
+    fn rule_statement(&mut self, step: &mut AspifStep) -> Result<(), AspifError> {
+        let head_kind = match self.cur.int("head type", 0, i64::MAX)? {
+            0 => HeadKind::Disjunction,
+            1 => HeadKind::Choice,
+            v => return Err(self.bad_value("head type", "0 (disjunction), 1 (choice)", v)),
+        };
+        let head = self.atoms()?;
+        let body = match self.cur.int("body type", 0, i64::MAX)? {
+            0 => Body::Normal(self.lits()?),
+            1 => {
+                self.cur.skip_blanks();
+                let at = self.cur.pos;
+                let lower = self.cur.int("lower bound", i64::MIN, i64::MAX)?;
+                let mut total = i128::from(lower).abs();
+                if total > WEIGHT_SUM_MAX {
+                    return Err(self
+                        .cur
+                        .error_at(at, AspifErrorKind::WeightsTooLarge(WEIGHT_BODY.into())));
+                }
+                Body::Weight {
+                    lower,
+                    lits: self.wlits(false, WEIGHT_BODY, &mut total)?,
+                }
+            }
+            v => return Err(self.bad_value("body type", "0 (normal), 1 (weight)", v)),
+        };
+        let p = &mut step.program;
+        step.layout.push(Stmt::Rule(p.rules.len() as u32));
+        p.rules.push_parts(head_kind, &head, body.as_ref());
+        Ok(())
+    }
+
+    /// Reads the rest of a minimize statement (aspif statement 2) into `step`: the CR minimize
+    /// when a `CR_MINIMIZE_TAG` comment announced it (`expect_cr_minimize`, then taken, the
+    /// statement recorded in `cr_minimize` to be checked at the end of the step).
+    fn minimize_statement(
+        &mut self,
+        step: &mut AspifStep,
+        stmt_pos: usize,
+        expect_cr_minimize: &mut Option<(Weight, usize)>,
+        cr_minimize: &mut Option<CrMinimizeSeen>,
+    ) -> Result<(), AspifError> {
+        let priority = self.cur.int("priority", i64::MIN, i64::MAX)?;
+        let mut total = self.minimize_totals.get(&priority).copied().unwrap_or(0);
+        let what = format!("the weights of the minimize statements of priority {priority}");
+        let lits = self.wlits(true, &what, &mut total)?;
+        self.minimize_totals.insert(priority, total);
+        if let Some((expected, marker_pos)) = expect_cr_minimize.take() {
+            if priority != expected {
+                return Err(self.cur.error_at(
+                    stmt_pos,
+                    AspifErrorKind::BadLucentComment(format!(
+                        "CR minimize has priority {priority}, the comment says {expected}"
+                    )),
+                ));
+            }
+            step.layout.push(Stmt::CrMinimize(priority));
+            *cr_minimize = Some(CrMinimizeSeen {
+                priority,
+                lits,
+                pos: marker_pos,
+            });
+        } else {
+            let p = &mut step.program;
+            step.layout.push(Stmt::Minimize(p.minimize.len() as u32));
+            p.minimize.push(Minimize { priority, lits });
+        }
+        Ok(())
+    }
+
+    /// Reads the rest of a heuristic statement (aspif statement 7) into `step`.
+    fn heuristic_statement(&mut self, step: &mut AspifStep) -> Result<(), AspifError> {
+        let modifier = match self.cur.int("heuristic modifier", 0, i64::MAX)? {
+            0 => HeuristicModifier::Level,
+            1 => HeuristicModifier::Sign,
+            2 => HeuristicModifier::Factor,
+            3 => HeuristicModifier::Init,
+            4 => HeuristicModifier::True,
+            5 => HeuristicModifier::False,
+            v => return Err(self.bad_value("heuristic modifier", "0..=5", v)),
+        };
+        let atom = self.cur.atom()?;
+        self.note_atom(atom);
+        let bias = self
+            .cur
+            .int("heuristic bias", i32::MIN.into(), i32::MAX.into())? as i32;
+        let priority = self.cur.int("heuristic priority", 0, u32::MAX.into())? as u32;
+        let condition = self.lits()?;
+        let p = &mut step.program;
+        step.layout.push(Stmt::Heuristic(p.heuristics.len() as u32));
+        p.heuristics.push(Heuristic {
+            modifier,
+            atom,
+            bias,
+            priority,
+            condition,
+        });
+        Ok(())
     }
 
     /// Handles a comment statement: Lucent's tags are parsed, other text is kept.

@@ -40,11 +40,11 @@ impl<'a> Grounder<'a> {
         };
         let mut other = outer;
         f(self, ctx, &mut |g: &mut Self, ctx: &mut Ctx| {
-            std::mem::swap(&mut g.prov_aux, &mut other);
+            std::mem::swap(&mut g.prov.aux, &mut other);
             k(g, ctx);
-            std::mem::swap(&mut g.prov_aux, &mut other);
+            std::mem::swap(&mut g.prov.aux, &mut other);
         });
-        self.prov_aux = other;
+        self.prov.aux = other;
     }
 
     pub(super) fn aggregate_inner(

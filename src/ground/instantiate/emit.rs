@@ -46,11 +46,11 @@ impl Grounder<'_> {
                     },
                     removed: self.origin(stmt, ctx).removed,
                 });
-                let v = match self.minimize.get_mut(&key) {
+                let v = match self.directives.minimize.get_mut(&key) {
                     Some(v) => v,
                     None => {
-                        self.minimize_order.push(key.clone());
-                        self.minimize.entry(key.clone()).or_default()
+                        self.directives.minimize_order.push(key.clone());
+                        self.directives.minimize.entry(key.clone()).or_default()
                     }
                 };
                 let i = match v.iter().position(|c| *c == body) {
@@ -61,7 +61,7 @@ impl Grounder<'_> {
                     }
                 };
                 if let Some(o) = origin {
-                    let os = self.minimize_origins.entry(key).or_default();
+                    let os = self.prov.minimize_origins.entry(key).or_default();
                     if os.len() <= i {
                         os.resize(i + 1, Vec::new());
                     }
@@ -74,15 +74,15 @@ impl Grounder<'_> {
                 let Some(v) = self.eval(t, &ctx.binding) else {
                     return;
                 };
-                self.shows.push((v, ctx.body.clone()));
+                self.directives.shows.push((v, ctx.body.clone()));
             }
             NKind::Project(a) => {
                 let Some(s) = self.atom_sym(a, &ctx.binding) else {
                     return;
                 };
                 if let Some(id) = self.find_atom(s) {
-                    if !self.projections.contains(&id) {
-                        self.projections.push(id);
+                    if !self.directives.projections.contains(&id) {
+                        self.directives.projections.push(id);
                     }
                 }
             }
@@ -114,8 +114,8 @@ impl Grounder<'_> {
                     return;
                 }
                 self.derive(id);
-                if !self.externals.iter().any(|(x, _)| *x == id) {
-                    self.externals.push((id, value));
+                if !self.directives.externals.iter().any(|(x, _)| *x == id) {
+                    self.directives.externals.push((id, value));
                 }
             }
             NKind::Heuristic {
@@ -155,30 +155,32 @@ impl Grounder<'_> {
                 let (Some(w), Some(p)) = (self.syms.num(w), self.syms.num(p)) else {
                     return;
                 };
-                self.heuristics.push(crate::ground::program::Heuristic {
-                    modifier,
-                    atom: id,
-                    bias: w,
-                    priority: p.max(0) as u32,
-                    // The atom's own literal only ranged over its domain (see the rewrite).
-                    condition: ctx
-                        .body
-                        .iter()
-                        .copied()
-                        .filter(|&l| l != id as crate::ground::program::Lit)
-                        .collect(),
-                });
+                self.directives
+                    .heuristics
+                    .push(crate::ground::program::Heuristic {
+                        modifier,
+                        atom: id,
+                        bias: w,
+                        priority: p.max(0) as u32,
+                        // The atom's own literal only ranged over its domain (see the rewrite).
+                        condition: ctx
+                            .body
+                            .iter()
+                            .copied()
+                            .filter(|&l| l != id as crate::ground::program::Lit)
+                            .collect(),
+                    });
             }
             NKind::Edge(u, v) => {
                 let (Some(u), Some(v)) = (self.eval(u, &ctx.binding), self.eval(v, &ctx.binding))
                 else {
                     return;
                 };
-                let n = self.edge_nodes.len() as i32;
-                let from = *self.edge_nodes.entry(u).or_insert(n);
-                let n = self.edge_nodes.len() as i32;
-                let to = *self.edge_nodes.entry(v).or_insert(n);
-                self.edges.push(crate::ground::program::Edge {
+                let n = self.directives.edge_nodes.len() as i32;
+                let from = *self.directives.edge_nodes.entry(u).or_insert(n);
+                let n = self.directives.edge_nodes.len() as i32;
+                let to = *self.directives.edge_nodes.entry(v).or_insert(n);
+                self.directives.edges.push(crate::ground::program::Edge {
                     from,
                     to,
                     condition: ctx.body.clone(),
@@ -267,55 +269,10 @@ impl Grounder<'_> {
                 .collect();
             let appl = match self.cr_appl.get(&(stmt.stmt, key.clone())) {
                 Some(&a) => a,
-                None => {
-                    let text = match label {
-                        Some(t) => match self.eval(t, &ctx.binding) {
-                            Some(v) => self.syms.show(v),
-                            None => return,
-                        },
-                        None => {
-                            let mut s = format!("r{}", stmt.stmt);
-                            let named: Vec<String> = stmt
-                                .globals
-                                .iter()
-                                .filter(|&&v| {
-                                    !self
-                                        .syms
-                                        .names
-                                        .resolve(stmt.var_names[v as usize])
-                                        .starts_with('#')
-                                })
-                                .filter_map(|&v| ctx.binding.get(v))
-                                .map(|v| self.syms.show(v))
-                                .collect();
-                            if !named.is_empty() {
-                                s.push('(');
-                                s.push_str(&named.join(","));
-                                s.push(')');
-                            }
-                            s
-                        }
-                    };
-                    let a = self.aux();
-                    self.cr_appl.insert((stmt.stmt, key), a);
-                    self.cr_rules.push((a, text));
-                    self.add_rule(
-                        Rule {
-                            head_kind: HeadKind::Choice,
-                            head: vec![a],
-                            body: Body::Normal(Vec::new()),
-                        },
-                        |g| Origin {
-                            rule: RuleOrigin::Auxiliary {
-                                of_stmt: stmt.stmt,
-                                kind: AuxKind::CrApplication,
-                                bindings: g.bindings(&ctx.binding),
-                            },
-                            removed: Vec::new(),
-                        },
-                    );
-                    a
-                }
+                None => match self.new_cr_appl(stmt, label.as_ref(), key, ctx) {
+                    Some(a) => a,
+                    None => return,
+                },
             };
             ctx.body.push(appl as Lit);
         }
@@ -339,7 +296,7 @@ impl Grounder<'_> {
                 // A choice among facts: satisfied (with provenance, kept as removed).
                 if let Some((f, facts)) = facts.and_then(|h| Some((*h.first()?, h))) {
                     let origin = self.origin(stmt, ctx);
-                    self.dead.push(DeadRule {
+                    self.prov.dead.push(DeadRule {
                         head: facts,
                         origins: vec![origin],
                         why: DeadReason::HeadFact(f),
@@ -367,7 +324,7 @@ impl Grounder<'_> {
                 self.attach_origin(Rule::normal(&[f], &[]), |g| g.origin(stmt, ctx));
             } else if self.provenance && !self.naive {
                 let origin = self.origin(stmt, ctx);
-                self.dead.push(DeadRule {
+                self.prov.dead.push(DeadRule {
                     head: head.to_vec(),
                     origins: vec![origin],
                     why: DeadReason::HeadFact(f),
@@ -400,6 +357,65 @@ impl Grounder<'_> {
             },
             |g| g.origin(stmt, ctx),
         );
+    }
+
+    /// A new application atom for the instance of CR rule `stmt` with the global values `key`:
+    /// `{appl}.` is added and the rule recorded with its label (`label` evaluated, or `r<stmt>`
+    /// with the named global values); `None` when the label is undefined.
+    fn new_cr_appl(
+        &mut self,
+        stmt: &NStmt,
+        label: Option<&NTerm>,
+        key: Vec<SymId>,
+        ctx: &Ctx,
+    ) -> Option<AtomId> {
+        let text = match label {
+            Some(t) => {
+                let v = self.eval(t, &ctx.binding)?;
+                self.syms.show(v)
+            }
+            None => {
+                let mut s = format!("r{}", stmt.stmt);
+                let named: Vec<String> = stmt
+                    .globals
+                    .iter()
+                    .filter(|&&v| {
+                        !self
+                            .syms
+                            .names
+                            .resolve(stmt.var_names[v as usize])
+                            .starts_with('#')
+                    })
+                    .filter_map(|&v| ctx.binding.get(v))
+                    .map(|v| self.syms.show(v))
+                    .collect();
+                if !named.is_empty() {
+                    s.push('(');
+                    s.push_str(&named.join(","));
+                    s.push(')');
+                }
+                s
+            }
+        };
+        let a = self.aux();
+        self.cr_appl.insert((stmt.stmt, key), a);
+        self.directives.cr_rules.push((a, text));
+        self.add_rule(
+            Rule {
+                head_kind: HeadKind::Choice,
+                head: vec![a],
+                body: Body::Normal(Vec::new()),
+            },
+            |g| Origin {
+                rule: RuleOrigin::Auxiliary {
+                    of_stmt: stmt.stmt,
+                    kind: AuxKind::CrApplication,
+                    bindings: g.bindings(&ctx.binding),
+                },
+                removed: Vec::new(),
+            },
+        );
+        Some(a)
     }
 
     /// Grounds the instances of a conditional disjunction element (`l : c` with gringo's

@@ -147,7 +147,7 @@ impl<'a> Grounder<'a> {
                         // With provenance, a fully bound atom that does not exist stops an
                         // instance: record it (not when a semi-naive range hid the atom).
                         if self.provenance
-                            && self.prov_aux.is_none()
+                            && self.prov.aux.is_none()
                             && ranges.get(i).copied().flatten().is_none()
                             && atom.args.iter().all(|t| t.bound_by(&ctx.binding))
                         {
@@ -337,7 +337,7 @@ impl Grounder<'_> {
                 }
                 _ => None,
             };
-            self.prov_stmt = ProvStmt {
+            self.prov.stmt = ProvStmt {
                 stmt: stmt.stmt,
                 aux: stmt.aux,
                 names: stmt

@@ -202,19 +202,9 @@ pub struct Grounder<'a> {
     domains: Vec<Domain>,
     /// Ground rules over internal ids, stored flat (a program may ground to millions).
     pub rules: Rules,
-    /// Origins parallel to `rules` (when provenance is on): the first instance of each rule.
-    pub origins: Vec<Origin>,
-    /// Further origins of rules that several instances ground to (when provenance is on).
-    pub more_origins: HashMap<u32, Vec<Origin>>,
-    /// Provenance: the statement being grounded.
-    prov_stmt: ProvStmt,
-    /// Provenance: the auxiliary being built (its kind and the bindings when it started).
-    prov_aux: Option<(AuxKind, Bindings)>,
-    /// Provenance: instances dropped during instantiation because a fact among their heads
-    /// satisfies them (`simplify` keeps those with a head atom that ends up false).
-    pub dead: Vec<DeadRule>,
-    /// Provenance: the origins of each minimize element's conditions, parallel to `minimize`.
-    pub minimize_origins: HashMap<MinKey, Vec<Vec<Origin>>>,
+    /// Provenance records (when provenance is on): origins, dead instances, the statement and
+    /// auxiliary being grounded.
+    pub prov: ProvRecords,
     /// Deduplication of `rules`.
     rule_set: HashTable<u32>,
     /// Hash of each rule in `rules` (so that growing `rule_set` does not rehash rules).
@@ -235,6 +225,46 @@ pub struct Grounder<'a> {
     notnot: HashMap<AtomId, AtomId>,
     /// CR application atoms by (statement, ground global values).
     cr_appl: HashMap<(u32, Vec<SymId>), AtomId>,
+    /// The directives besides rules: CR rules, minimize elements, shows, projections,
+    /// externals, heuristics and edges.
+    pub directives: Directives,
+    /// Rules emitted since the last deadline check.
+    since_check: u32,
+    /// Grounding a component naively: derived atoms are not marked as facts, since a later
+    /// round may withdraw the rule that derived them.
+    naive: bool,
+    /// Computing a naive component's domain: aggregates over its predicates are assumed true.
+    optimistic: bool,
+    /// Multi-shot: atoms `1..=old_atoms` existed before this grounding (0 for one-shot).
+    pub old_atoms: usize,
+    /// Predicates some statement of this or an earlier grounding heads (or `#defined`).
+    defined: Vec<bool>,
+    /// Vectors reused from one statement to the next.
+    scratch: Scratch,
+}
+
+/// What the grounder records for provenance (when provenance is on; empty otherwise).
+#[derive(Default)]
+pub struct ProvRecords {
+    /// Origins parallel to `rules` (when provenance is on): the first instance of each rule.
+    pub origins: Vec<Origin>,
+    /// Further origins of rules that several instances ground to (when provenance is on).
+    pub more_origins: HashMap<u32, Vec<Origin>>,
+    /// Provenance: the statement being grounded.
+    stmt: ProvStmt,
+    /// Provenance: the auxiliary being built (its kind and the bindings when it started).
+    aux: Option<(AuxKind, Bindings)>,
+    /// Provenance: instances dropped during instantiation because a fact among their heads
+    /// satisfies them (`simplify` keeps those with a head atom that ends up false).
+    pub dead: Vec<DeadRule>,
+    /// Provenance: the origins of each minimize element's conditions, parallel to `minimize`.
+    pub minimize_origins: HashMap<MinKey, Vec<Vec<Origin>>>,
+}
+
+/// The directives a grounding collects besides its rules, over internal atom ids (`simplify`
+/// renumbers them for aspif).
+#[derive(Default)]
+pub struct Directives {
     /// Ground CR rules: application atom and label.
     pub cr_rules: Vec<(AtomId, String)>,
     /// Minimize elements: key to alternative conditions.
@@ -253,19 +283,6 @@ pub struct Grounder<'a> {
     pub edges: Vec<super::program::Edge>,
     /// Node numbers of `#edge` terms.
     edge_nodes: HashMap<SymId, i32>,
-    /// Rules emitted since the last deadline check.
-    since_check: u32,
-    /// Grounding a component naively: derived atoms are not marked as facts, since a later
-    /// round may withdraw the rule that derived them.
-    naive: bool,
-    /// Computing a naive component's domain: aggregates over its predicates are assumed true.
-    optimistic: bool,
-    /// Multi-shot: atoms `1..=old_atoms` existed before this grounding (0 for one-shot).
-    pub old_atoms: usize,
-    /// Predicates some statement of this or an earlier grounding heads (or `#defined`).
-    defined: Vec<bool>,
-    /// Vectors reused from one statement to the next.
-    scratch: Scratch,
 }
 
 /// Vectors the grounding of a statement reuses from the previous one instead of allocating
@@ -437,12 +454,7 @@ impl<'a> Grounder<'a> {
             sym_atom: Vec::new(),
             domains,
             rules: Rules::new(),
-            origins: Vec::new(),
-            more_origins: HashMap::new(),
-            prov_stmt: ProvStmt::default(),
-            prov_aux: None,
-            minimize_origins: HashMap::new(),
-            dead: Vec::new(),
+            prov: ProvRecords::default(),
             rule_set: HashTable::new(),
             rule_hashes: Vec::new(),
             diags,
@@ -453,15 +465,7 @@ impl<'a> Grounder<'a> {
             reported: hashbrown::HashSet::new(),
             notnot: HashMap::new(),
             cr_appl: HashMap::new(),
-            cr_rules: Vec::new(),
-            minimize: HashMap::new(),
-            minimize_order: Vec::new(),
-            shows: Vec::new(),
-            projections: Vec::new(),
-            externals: Vec::new(),
-            heuristics: Vec::new(),
-            edges: Vec::new(),
-            edge_nodes: HashMap::new(),
+            directives: Directives::default(),
             since_check: 0,
             naive: false,
             optimistic: false,
@@ -662,7 +666,7 @@ impl<'a> Grounder<'a> {
         self.rule_hashes.push(hash);
         if self.provenance {
             let o = origin(self);
-            self.origins.push(o);
+            self.prov.origins.push(o);
         }
         let hashes = &self.rule_hashes;
         self.rule_set
@@ -682,10 +686,10 @@ impl<'a> Grounder<'a> {
 
     /// Records one more origin for rule `i` (unless it has that origin already).
     fn add_origin(&mut self, i: u32, o: Origin) {
-        if self.origins[i as usize] == o {
+        if self.prov.origins[i as usize] == o {
             return;
         }
-        let more = self.more_origins.entry(i).or_default();
+        let more = self.prov.more_origins.entry(i).or_default();
         if !more.contains(&o) {
             more.push(o);
         }

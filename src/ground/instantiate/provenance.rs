@@ -15,13 +15,13 @@ impl Grounder<'_> {
     }
 
     pub(super) fn aux_origin(&self, kind: AuxKind) -> Origin {
-        let (kind, bindings) = match &self.prov_aux {
-            Some((k, b)) => (self.prov_stmt.aux.unwrap_or(*k), b.clone()),
-            None => (self.prov_stmt.aux.unwrap_or(kind), Vec::new()),
+        let (kind, bindings) = match &self.prov.aux {
+            Some((k, b)) => (self.prov.stmt.aux.unwrap_or(*k), b.clone()),
+            None => (self.prov.stmt.aux.unwrap_or(kind), Vec::new()),
         };
         Origin {
             rule: RuleOrigin::Auxiliary {
-                of_stmt: self.prov_stmt.stmt,
+                of_stmt: self.prov.stmt.stmt,
                 kind,
                 bindings,
             },
@@ -31,7 +31,8 @@ impl Grounder<'_> {
 
     /// The bindings of the statement being grounded under `b` (provenance).
     pub(super) fn bindings(&self, b: &Binding) -> Bindings {
-        self.prov_stmt
+        self.prov
+            .stmt
             .names
             .iter()
             .enumerate()
@@ -49,16 +50,16 @@ impl Grounder<'_> {
         kind: AuxKind,
         b: &Binding,
     ) -> Option<Option<(AuxKind, Bindings)>> {
-        if !self.provenance || self.prov_aux.is_some() {
+        if !self.provenance || self.prov.aux.is_some() {
             return None;
         }
         let bindings = self.bindings(b);
-        Some(self.prov_aux.replace((kind, bindings)))
+        Some(self.prov.aux.replace((kind, bindings)))
     }
 
     pub(super) fn leave_aux(&mut self, saved: Option<Option<(AuxKind, Bindings)>>) {
         if let Some(s) = saved {
-            self.prov_aux = s;
+            self.prov.aux = s;
         }
     }
 
@@ -69,10 +70,10 @@ impl Grounder<'_> {
     /// is still decided that way). Only the statement's own body counts, not the conditions
     /// of its aggregates; naive components (rounds repeated) record nothing.
     pub(super) fn blocked(&mut self, ctx: &Ctx, positive: bool, sym: SymId, pred: PredId) {
-        if self.prov_aux.is_some() || self.naive || self.optimistic {
+        if self.prov.aux.is_some() || self.naive || self.optimistic {
             return;
         }
-        let Some(atoms) = self.prov_stmt.head.take() else {
+        let Some(atoms) = self.prov.stmt.head.take() else {
             return;
         };
         let mut head = Vec::with_capacity(atoms.len());
@@ -94,14 +95,14 @@ impl Grounder<'_> {
             head.push(self.atom_of(s, a.pred));
         }
         let complete = head.len() == atoms.len();
-        self.prov_stmt.head = Some(atoms);
+        self.prov.stmt.head = Some(atoms);
         if !complete || head.is_empty() {
             return;
         }
         let atom = self.atom_of(sym, pred);
         let bindings = self.bindings(&ctx.binding);
-        let stmt = self.prov_stmt.stmt;
-        let rule = match self.prov_stmt.aux {
+        let stmt = self.prov.stmt.stmt;
+        let rule = match self.prov.stmt.aux {
             None => RuleOrigin::Statement { stmt, bindings },
             Some(kind) => RuleOrigin::Auxiliary {
                 of_stmt: stmt,
@@ -109,7 +110,7 @@ impl Grounder<'_> {
                 bindings,
             },
         };
-        self.dead.push(DeadRule {
+        self.prov.dead.push(DeadRule {
             head,
             origins: vec![Origin {
                 rule,

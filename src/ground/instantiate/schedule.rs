@@ -231,7 +231,7 @@ impl Grounder<'_> {
         self.optimistic = true;
         loop {
             let rules_start = self.rules.len();
-            let cr_start = self.cr_rules.len();
+            let cr_start = self.directives.cr_rules.len();
             let size_before: usize = comp
                 .iter()
                 .map(|&p| self.domains[p as usize].atoms.len())
@@ -244,7 +244,7 @@ impl Grounder<'_> {
                 .map(|&p| self.domains[p as usize].atoms.len())
                 .sum();
             self.forget_rules_from(rules_start);
-            for (a, _) in self.cr_rules.drain(cr_start..) {
+            for (a, _) in self.directives.cr_rules.drain(cr_start..) {
                 self.cr_appl.retain(|_, v| *v != a);
             }
             if self.stopped.is_some() || size_after == size_before {
@@ -265,11 +265,11 @@ impl Grounder<'_> {
                 e.remove();
             }
             if self.provenance {
-                self.origins.pop();
+                self.prov.origins.pop();
             }
         }
         if self.provenance {
-            self.more_origins.retain(|&i, _| (i as usize) < start);
+            self.prov.more_origins.retain(|&i, _| (i as usize) < start);
         }
         self.rules.truncate(start);
         // Their defining rules may be gone; fresh auxiliaries are made next round.

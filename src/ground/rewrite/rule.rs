@@ -215,50 +215,10 @@ impl Rewriter<'_> {
                 NHead::Choice(es)
             }
             ast::Head::Aggregate(h) => {
-                // l #f { w,t : a : c } u :- B.  ==  { a : c } :- B.  and
-                // :- B, not l #f { w,t,a : a, c } u.
-                let mut es = Vec::new();
-                let mut elements = Vec::new();
-                for e in &h.elements {
-                    let ce = ast::ConditionalLiteral {
-                        span: e.span,
-                        literal: e.literal.clone(),
-                        condition: e.condition.clone(),
-                        has_colon: !e.condition.is_empty(),
-                    };
-                    for ce in unpool_cond(&ce) {
-                        let Some(mut n) = self.head_elem(&ce, &mut vars, &mut extra) else {
-                            return;
-                        };
-                        if !self.tuple_checks(h.function, &e.terms, &mut vars, &mut n.cond) {
-                            continue;
-                        }
-                        es.push(n);
-                        let mut condition = vec![ce.literal.clone()];
-                        condition.extend(ce.condition.iter().cloned());
-                        let mut terms = e.terms.clone();
-                        if let ast::Atom::Symbolic(sa) = &ce.literal.atom {
-                            terms.push(atom_as_term(sa));
-                        }
-                        elements.push(ast::BodyAggregateElement {
-                            span: e.span,
-                            terms,
-                            condition,
-                        });
-                    }
+                match self.aggregate_head(index, span, body, h, &mut vars, &mut extra) {
+                    Some(head) => head,
+                    None => return,
                 }
-                if lower_upper(&h.lower, &h.upper) {
-                    let agg = ast::BodyAggregate {
-                        span: h.span,
-                        function: h.function,
-                        lower: h.lower.clone(),
-                        elements,
-                        set_syntax: Vec::new(),
-                        upper: h.upper.clone(),
-                    };
-                    self.bound_check(index, span, body, agg);
-                }
-                NHead::Choice(es)
             }
         };
         if self.body(body, &mut vars, &mut out).is_none() {
@@ -284,6 +244,61 @@ impl Rewriter<'_> {
         }
         out.append(&mut extra);
         self.finish(index, span, head, out, kind, vars);
+    }
+
+    /// The head of a head aggregate instance, with the constraint that checks its bounds;
+    /// `None`: an element is undefined, and the rule instance is dropped.
+    fn aggregate_head(
+        &mut self,
+        index: u32,
+        span: Span,
+        body: &[ast::BodyLiteral],
+        h: &ast::HeadAggregate,
+        vars: &mut Vars,
+        extra: &mut Vec<NLit>,
+    ) -> Option<NHead> {
+        // l #f { w,t : a : c } u :- B.  ==  { a : c } :- B.  and
+        // :- B, not l #f { w,t,a : a, c } u.
+        let mut es = Vec::new();
+        let mut elements = Vec::new();
+        for e in &h.elements {
+            let ce = ast::ConditionalLiteral {
+                span: e.span,
+                literal: e.literal.clone(),
+                condition: e.condition.clone(),
+                has_colon: !e.condition.is_empty(),
+            };
+            for ce in unpool_cond(&ce) {
+                let mut n = self.head_elem(&ce, vars, extra)?;
+                if !self.tuple_checks(h.function, &e.terms, vars, &mut n.cond) {
+                    continue;
+                }
+                es.push(n);
+                let mut condition = vec![ce.literal.clone()];
+                condition.extend(ce.condition.iter().cloned());
+                let mut terms = e.terms.clone();
+                if let ast::Atom::Symbolic(sa) = &ce.literal.atom {
+                    terms.push(atom_as_term(sa));
+                }
+                elements.push(ast::BodyAggregateElement {
+                    span: e.span,
+                    terms,
+                    condition,
+                });
+            }
+        }
+        if lower_upper(&h.lower, &h.upper) {
+            let agg = ast::BodyAggregate {
+                span: h.span,
+                function: h.function,
+                lower: h.lower.clone(),
+                elements,
+                set_syntax: Vec::new(),
+                upper: h.upper.clone(),
+            };
+            self.bound_check(index, span, body, agg);
+        }
+        Some(NHead::Choice(es))
     }
 
     /// Emits the constraint `:- B, not AGG.` that checks a choice or head aggregate's bounds,

@@ -324,95 +324,8 @@ impl Rewriter<'_> {
                     }
                 }
             },
-            K::External(e) => {
-                for a in unpool_atom(&e.atom) {
-                    for b in unpool_body(&e.body) {
-                        let mut vars = Vars::default();
-                        let mut out = Vec::new();
-                        let mut extra = Vec::new();
-                        let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
-                            continue;
-                        };
-                        // The value is a term of the instance (`[X]`); omitted, it is false.
-                        let value = match &e.value {
-                            Some(t) => match self.term(t, &mut vars, &mut extra) {
-                                Some(v) => v,
-                                None => continue,
-                            },
-                            None => NTerm::Sym(self.syms.fun_str("false", false, &[])),
-                        };
-                        if self.body(&b, &mut vars, &mut out).is_none() {
-                            continue;
-                        }
-                        out.append(&mut extra);
-                        self.finish(
-                            index,
-                            st.span,
-                            NHead::None,
-                            out,
-                            NKind::External(a, value),
-                            vars,
-                        );
-                    }
-                }
-            }
-            K::Heuristic(h) => {
-                // Said once per program: what of the statements Lucent's solver follows.
-                if !self
-                    .diags
-                    .items()
-                    .iter()
-                    .any(|d| d.message.starts_with("#heuristic"))
-                {
-                    self.diags.push(Diagnostic::warning(
-                        crate::base::WarningKind::Other,
-                        st.span,
-                        "#heuristic: Lucent follows these only under --heuristic=domain, and only \
-                         those without a condition (modifiers level, sign, true, false; init \
-                         and factor are ignored); they change no answer set, only the order \
-                         in which answer sets are found",
-                    ));
-                }
-                for a in unpool_atom(&h.atom) {
-                    for b in unpool_body(&h.body) {
-                        let mut vars = Vars::default();
-                        let mut out = Vec::new();
-                        let mut extra = Vec::new();
-                        let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
-                            continue;
-                        };
-                        let Some(weight) = self.term(&h.weight, &mut vars, &mut extra) else {
-                            continue;
-                        };
-                        let priority = match &h.priority {
-                            Some(p) => self.term(p, &mut vars, &mut extra),
-                            None => Some(NTerm::Sym(self.syms.int(0))),
-                        };
-                        let Some(priority) = priority else { continue };
-                        let Some(modifier) = self.term(&h.modifier, &mut vars, &mut extra) else {
-                            continue;
-                        };
-                        if self.body(&b, &mut vars, &mut out).is_none() {
-                            continue;
-                        }
-                        // As for #project, the atom ranges over its predicate's atoms (so the
-                        // statement waits for them and binds its own variables, as gringo);
-                        // emit leaves it out of the condition.
-                        out.push(NLit::Pred {
-                            sign: Sign::Positive,
-                            atom: a.clone(),
-                        });
-                        out.append(&mut extra);
-                        let kind = NKind::Heuristic {
-                            atom: a,
-                            weight,
-                            priority,
-                            modifier,
-                        };
-                        self.finish(index, st.span, NHead::None, out, kind, vars);
-                    }
-                }
-            }
+            K::External(e) => self.external(index, st.span, e),
+            K::Heuristic(h) => self.heuristic(index, st.span, h),
             K::Edge(e) => {
                 for from in unpool_term(&e.from) {
                     for to in unpool_term(&e.to) {
@@ -450,6 +363,100 @@ impl Rewriter<'_> {
             | K::DisplaySort(_)
             | K::MaxInt(_) => {
                 self.unsupported(st.span, "SPARC sections in a clingo-dialect program");
+            }
+        }
+    }
+
+    /// `#external a : body. [value]`: one statement per unpooled atom and body.
+    fn external(&mut self, index: u32, span: Span, e: &ast::External) {
+        for a in unpool_atom(&e.atom) {
+            for b in unpool_body(&e.body) {
+                let mut vars = Vars::default();
+                let mut out = Vec::new();
+                let mut extra = Vec::new();
+                let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
+                    continue;
+                };
+                // The value is a term of the instance (`[X]`); omitted, it is false.
+                let value = match &e.value {
+                    Some(t) => match self.term(t, &mut vars, &mut extra) {
+                        Some(v) => v,
+                        None => continue,
+                    },
+                    None => NTerm::Sym(self.syms.fun_str("false", false, &[])),
+                };
+                if self.body(&b, &mut vars, &mut out).is_none() {
+                    continue;
+                }
+                out.append(&mut extra);
+                self.finish(
+                    index,
+                    span,
+                    NHead::None,
+                    out,
+                    NKind::External(a, value),
+                    vars,
+                );
+            }
+        }
+    }
+
+    /// `#heuristic a : body. [weight@priority, modifier]`: one statement per unpooled atom
+    /// and body (and, once per program, a warning on what Lucent's solver follows).
+    fn heuristic(&mut self, index: u32, span: Span, h: &ast::Heuristic) {
+        // Said once per program: what of the statements Lucent's solver follows.
+        if !self
+            .diags
+            .items()
+            .iter()
+            .any(|d| d.message.starts_with("#heuristic"))
+        {
+            self.diags.push(Diagnostic::warning(
+                crate::base::WarningKind::Other,
+                span,
+                "#heuristic: Lucent follows these only under --heuristic=domain, and only \
+                 those without a condition (modifiers level, sign, true, false; init \
+                 and factor are ignored); they change no answer set, only the order \
+                 in which answer sets are found",
+            ));
+        }
+        for a in unpool_atom(&h.atom) {
+            for b in unpool_body(&h.body) {
+                let mut vars = Vars::default();
+                let mut out = Vec::new();
+                let mut extra = Vec::new();
+                let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
+                    continue;
+                };
+                let Some(weight) = self.term(&h.weight, &mut vars, &mut extra) else {
+                    continue;
+                };
+                let priority = match &h.priority {
+                    Some(p) => self.term(p, &mut vars, &mut extra),
+                    None => Some(NTerm::Sym(self.syms.int(0))),
+                };
+                let Some(priority) = priority else { continue };
+                let Some(modifier) = self.term(&h.modifier, &mut vars, &mut extra) else {
+                    continue;
+                };
+                if self.body(&b, &mut vars, &mut out).is_none() {
+                    continue;
+                }
+                // As for #project, the atom ranges over its predicate's atoms (so the
+                // statement waits for them and binds its own variables, as gringo);
+                // emit leaves it out of the condition.
+                out.push(NLit::Pred {
+                    sign: Sign::Positive,
+                    atom: a.clone(),
+                });
+                out.append(&mut extra);
+                let kind = NKind::Heuristic {
+                    atom: a,
+                    weight,
+                    priority,
+                    modifier,
+                };
+                self.finish(index, span, NHead::None, out, kind, vars);
             }
         }
     }

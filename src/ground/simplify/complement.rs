@@ -93,7 +93,7 @@ pub(super) fn add_classical_constraints(
             body: Body::Normal(body),
         });
         if g.provenance {
-            g.origins.push(Origin {
+            g.prov.origins.push(Origin {
                 rule: RuleOrigin::Complement,
                 removed,
             });

@@ -6,8 +6,9 @@
 //! Invariant: numbers are `1..=next`, given once each, and `atom_syms`/`atom_gatoms` are
 //! indexed by number minus one.
 
-use crate::ground::instantiate::{AtomId, AtomInfo};
-use crate::ground::program::{BodyRef, HeadKind, Lit, Rules, Weight};
+use super::{shown_pred, Status};
+use crate::ground::instantiate::{AtomId, AtomInfo, Grounder};
+use crate::ground::program::{BodyRef, HeadKind, Lit, Minimize, Rules, Weight};
 use crate::ground::symbol::SymId;
 
 /// The aspif numbering, made as the output rules are written (gringo's: atoms in order of
@@ -111,4 +112,74 @@ pub(super) fn gringo_body_order(lits: &[Lit], out: &mut Vec<Lit>) {
     out.clear();
     out.extend(lits.iter().rev().copied().filter(|&l| l > 0));
     out.extend(lits.iter().copied().filter(|&l| l < 0));
+}
+
+/// Numbers the atoms no output rule numbered that still need one: those of the minimize
+/// statements, externals, shown atoms that are not false and not `frozen`, and (multi-shot)
+/// frozen atoms in conditions of shows, heuristics and edges and projected ones. They come in
+/// creation order, after the atoms of the rules, as in gringo's output; the solver's initial
+/// variable order follows it.
+pub(super) fn number_remaining(
+    numbering: &mut Numbering,
+    g: &Grounder<'_>,
+    status: &[Status],
+    minimize: &[Minimize],
+    shown: &[bool],
+    multi_shot: bool,
+    frozen: &dyn Fn(usize) -> bool,
+) {
+    // Which atoms get a number: every atom that occurs (those of the rules have theirs), and
+    // shown atoms.
+    let n = g.atoms.len();
+    let mut used = vec![false; n + 1];
+    let use_lit = |l: Lit, used: &mut Vec<bool>| used[l.unsigned_abs() as usize] = true;
+    for m in minimize {
+        m.lits.iter().for_each(|&(l, _)| use_lit(l, &mut used));
+    }
+    for &(a, _) in &g.directives.externals {
+        used[a as usize] = true;
+    }
+    for a in 1..=n {
+        if frozen(a) {
+            continue;
+        }
+        let info = g.atoms[a - 1];
+        if info.sym.is_some()
+            && status[a - 1] != Status::False
+            && info.in_domain
+            && shown_pred(shown, info.pred)
+        {
+            used[a] = true;
+        }
+    }
+    // Frozen atoms in conditions of shows, heuristics and edges, and projected ones, are
+    // possible (a later part may show an atom of an earlier one).
+    if multi_shot {
+        let mut mark = |l: Lit| {
+            let a = l.unsigned_abs() as usize;
+            if frozen(a) {
+                used[a] = true;
+            }
+        };
+        for (_, cond) in &g.directives.shows {
+            cond.iter().for_each(|&l| mark(l));
+        }
+        for h in &g.directives.heuristics {
+            mark(h.atom as Lit);
+            h.condition.iter().for_each(|&l| mark(l));
+        }
+        for e in &g.directives.edges {
+            e.condition.iter().for_each(|&l| mark(l));
+        }
+        for &a in &g.directives.projections {
+            mark(a as Lit);
+        }
+    }
+    // Numbering as gringo's output does it: atoms in order of first occurrence in the rules
+    // (each rule's heads before its body; given as the rules were written), then those only in
+    // minimize statements, externals and shown atoms, in creation order. The solver's initial
+    // variable order follows it.
+    for (a, _) in used.iter().enumerate().filter(|&(_, &u)| u) {
+        numbering.assign(a, &g.atoms);
+    }
 }

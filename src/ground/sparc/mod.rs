@@ -225,6 +225,29 @@ pub fn lower(rw: &mut Rewriter<'_>, program: &ast::Program) -> ast::Program {
             });
         }
     }
+    displays_to_shows(rw, &typing, displays, &mut statements);
+    // Without a display section everything is shown.
+    if program
+        .statements
+        .iter()
+        .any(|s| matches!(s.kind, StatementKind::Section(ast::Section::Display)))
+    {
+        rw.out.show.restricted = true;
+    }
+    ast::Program {
+        dialect: ast::Dialect::Clingo,
+        statements,
+    }
+}
+
+/// The display items as `#show` statements, appended to `statements`: `p.` shows the
+/// predicate, `#s.` the sort, a pattern the atoms matching it.
+fn displays_to_shows(
+    rw: &mut Rewriter<'_>,
+    typing: &Typing,
+    displays: Vec<(Span, &StatementKind)>,
+    statements: &mut Vec<ast::Statement>,
+) {
     // display: `p.` shows the predicate, `#s.` the sort, a pattern the atoms matching it.
     for (span, item) in displays {
         let sort_item;
@@ -301,17 +324,5 @@ pub fn lower(rw: &mut Rewriter<'_>, program: &ast::Program) -> ast::Program {
             }
             _ => {}
         }
-    }
-    // Without a display section everything is shown.
-    if program
-        .statements
-        .iter()
-        .any(|s| matches!(s.kind, StatementKind::Section(ast::Section::Display)))
-    {
-        rw.out.show.restricted = true;
-    }
-    ast::Program {
-        dialect: ast::Dialect::Clingo,
-        statements,
     }
 }

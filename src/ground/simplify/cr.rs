@@ -1,0 +1,69 @@
+//! CR-Prolog output: the ground CR rules whose application atom is still possible, with their
+//! labels, and the `prefer(l1, l2)` facts between labels turned into pairs of application
+//! atoms.
+//!
+//! Invariants: a CR rule whose application atom is unnumbered or decided is dropped; the
+//! `prefer` facts of earlier groundings come first, so a later grounding of a multi-shot
+//! session pairs them with its own CR rules; only the fresh `prefer` facts are returned, to be
+//! remembered for later groundings.
+
+use super::Status;
+use crate::ground::instantiate::{AtomId, Grounder};
+use crate::ground::program::{CrRule, GroundProgram, Prefer};
+use crate::ground::symbol::SymData;
+
+/// Sets the CR rules of `out` (those whose application atom is possible) and the `prefer`
+/// pairs between their labels, from the `prefer(l1, l2)` facts of `prefer_before` and the
+/// fresh facts; returns the fresh ones.
+pub(super) fn cr_rules(
+    g: &Grounder<'_>,
+    status: &[Status],
+    number: &[u32],
+    prefer_before: &[AtomId],
+    frozen: &dyn Fn(usize) -> bool,
+    out: &mut GroundProgram,
+) -> Vec<AtomId> {
+    let n = g.atoms.len();
+    for (a, label) in &g.directives.cr_rules {
+        if number[*a as usize] != 0 && status[*a as usize - 1] == Status::Unknown {
+            out.cr_rules.push(CrRule {
+                appl: number[*a as usize],
+                label: label.clone(),
+            });
+        }
+    }
+    // prefer(l1, l2) facts between labels of CR rules (those of earlier groundings first).
+    let mut prefer_atoms = Vec::new();
+    let prefer_name = g.syms.names.get("prefer");
+    let fresh = (1..=n).filter(|&a| !frozen(a) && status[a - 1] == Status::Fact);
+    for a in prefer_before.iter().map(|&a| a as usize).chain(fresh) {
+        let info = g.atoms[a - 1];
+        let Some(sym) = info.sym else { continue };
+        if status[a - 1] != Status::Fact {
+            continue;
+        }
+        let args = g.syms.args(sym);
+        let prefer = match g.syms.get(sym) {
+            SymData::Fun {
+                name, neg: false, ..
+            } => Some(name) == prefer_name,
+            _ => false,
+        };
+        if args.len() != 2 || !prefer {
+            continue;
+        }
+        if !frozen(a) {
+            prefer_atoms.push(a as AtomId);
+        }
+        let (l1, l2) = (g.syms.show(args[0]), g.syms.show(args[1]));
+        for better in out.cr_rules.iter().filter(|c| c.label == l1) {
+            for worse in out.cr_rules.iter().filter(|c| c.label == l2) {
+                out.prefers.push(Prefer {
+                    better: better.appl,
+                    worse: worse.appl,
+                });
+            }
+        }
+    }
+    prefer_atoms
+}
