@@ -92,9 +92,41 @@ impl Control {
     pub(super) fn merge(&mut self, mut g: Grounding, stmt_offset: u32) -> Result<(), Diagnostic> {
         let local = std::mem::take(&mut g.program);
         let old_atoms = self.atom_sym.len() as AtomId;
+        let gatoms = self.session.last_gatoms().to_vec();
+        let map = self.map_atoms(&g, &local, &gatoms);
+        let gmap = self.translate_atom_records(&local, &map);
+        let MergedRules {
+            mut delta,
+            defined_here,
+            redefined,
+            first_redefinition,
+            kept,
+        } = self.merge_rules(&local, &map, old_atoms, &gatoms);
+        self.mark_merged_atoms(&g, &local, &map, old_atoms, &defined_here, &redefined);
+        map_statements(&local, &map, &mut delta);
+        self.merge_outputs(&local, &map, &mut delta);
+        if let Some(gmap) = &gmap {
+            delta.provenance = self.merge_provenance(&local, gmap, &kept, stmt_offset);
+        }
+        delta.num_atoms = self.atom_sym.len() as AtomId;
+        self.append_pending(delta);
+        self.last = Some(g);
+        match redefined.first() {
+            None => Ok(()),
+            Some(&a) => Err(self.redefinition_error(a, &local, first_redefinition, stmt_offset)),
+        }
+    }
+
+    /// The Control's atom of each atom of the grounding `g` (index 0 unused), by the session's
+    /// grounder atom `gatoms`: atoms new to the Control are numbered after the old ones.
+    fn map_atoms(
+        &mut self,
+        g: &Grounding,
+        local: &GroundProgram,
+        gatoms: &[AtomId],
+    ) -> Vec<AtomId> {
         // Local atoms to the Control's, by the session's grounder atom.
         let mut map = vec![0 as AtomId; local.num_atoms as usize + 1];
-        let gatoms = self.session.last_gatoms().to_vec();
         for (a, slot) in map.iter_mut().enumerate().skip(1) {
             let ga = gatoms[a - 1];
             if let Some(&x) = self.ctl_of_gatom.get(ga as usize) {
@@ -112,15 +144,22 @@ impl Control {
             *slot = self.new_atom(sym);
             set_gatom(&mut self.ctl_of_gatom, ga, *slot);
         }
+        map
+    }
+
+    /// The rules of a later grounding in the Control's atoms, without those that add nothing
+    /// (all heads old facts) and without the rules of redefined atoms (gringo's redefinition
+    /// error; the session forgets their facts). Externals defined by a rule become ordinary
+    /// atoms.
+    fn merge_rules(
+        &mut self,
+        local: &GroundProgram,
+        map: &[AtomId],
+        old_atoms: AtomId,
+        gatoms: &[AtomId],
+    ) -> MergedRules {
         let is_old = |a: AtomId| a <= old_atoms;
-        let lit = |l: i32| -> i32 {
-            let a = map[l.unsigned_abs() as usize] as i32;
-            if l < 0 {
-                -a
-            } else {
-                a
-            }
-        };
+        let lit = |l: i32| map_lit(map, l);
         // Atoms an earlier solve call completed: in the solver and no longer external there,
         // or released since.
         let solver_atoms = self.solver.as_ref().map_or(0, |s| s.program().num_atoms);
@@ -130,7 +169,6 @@ impl Control {
                     || matches!(ext.get(&a), Some(None)))
         };
         let old_fact = |a: AtomId, flags: &[u8]| is_old(a) && flags[a as usize - 1] & FACT != 0;
-        let gmap = self.translate_atom_records(&local, &map);
         let mut delta = GroundProgram::new();
         let mut defined_here: HashSet<AtomId> = HashSet::new();
         let mut redefined: Vec<AtomId> = Vec::new();
@@ -192,7 +230,29 @@ impl Control {
                 }
             }
         }
-        for &h in &defined_here {
+        MergedRules {
+            delta,
+            defined_here,
+            redefined,
+            first_redefinition,
+            kept,
+        }
+    }
+
+    /// Flags the atoms the merged rules define and the grounding's facts (redefined atoms
+    /// excepted), and records the grounding's new externals (not old, not defined, not
+    /// released).
+    fn mark_merged_atoms(
+        &mut self,
+        g: &Grounding,
+        local: &GroundProgram,
+        map: &[AtomId],
+        old_atoms: AtomId,
+        defined_here: &HashSet<AtomId>,
+        redefined: &[AtomId],
+    ) {
+        let is_old = |a: AtomId| a <= old_atoms;
+        for &h in defined_here {
             self.flags[h as usize - 1] |= DEFINED;
         }
         for &s in &g.fact_syms {
@@ -212,40 +272,12 @@ impl Control {
                 self.new_externals.push(ga);
             }
         }
-        for m in &local.minimize {
-            let mut m = m.clone();
-            m.lits.iter_mut().for_each(|(l, _)| *l = lit(*l));
-            delta.minimize.push(m);
-        }
-        for c in &local.cr_rules {
-            delta.cr_rules.push(ground::program::CrRule {
-                appl: map[c.appl as usize],
-                label: c.label.clone(),
-            });
-        }
-        for p in &local.prefers {
-            delta.prefers.push(ground::program::Prefer {
-                better: map[p.better as usize],
-                worse: map[p.worse as usize],
-            });
-        }
-        for h in &local.heuristics {
-            let mut h = h.clone();
-            h.atom = map[h.atom as usize];
-            h.condition.iter_mut().for_each(|l| *l = lit(*l));
-            delta.heuristics.push(h);
-        }
-        for e in &local.edges {
-            let mut e = e.clone();
-            e.condition.iter_mut().for_each(|l| *l = lit(*l));
-            delta.edges.push(e);
-        }
-        for &p in &local.projections {
-            delta.projections.push(map[p as usize]);
-        }
-        for &l in &local.assumptions {
-            delta.assumptions.push(lit(l));
-        }
+    }
+
+    /// Adds to `delta` the outputs of `local` in the Control's atoms, without those already
+    /// present (the context shows old atoms again).
+    fn merge_outputs(&mut self, local: &GroundProgram, map: &[AtomId], delta: &mut GroundProgram) {
+        let lit = |l: i32| map_lit(map, l);
         // Outputs, without those already present (the context shows old atoms again).
         if self.outputs_seen.is_none() {
             let solver_outputs = match &self.solver {
@@ -269,40 +301,52 @@ impl Control {
                 });
             }
         }
-        if let Some(gmap) = &gmap {
-            let mut prov = ground::program::Provenance::new();
-            for &i in &kept {
-                let origins: Vec<_> = local
-                    .provenance
-                    .origins(i)
+    }
+
+    /// The provenance of the kept rules (`kept`: their indexes in `local`) and of the dead
+    /// rules of `local`, in the Control's ids (`gmap`: grounder atoms).
+    fn merge_provenance(
+        &mut self,
+        local: &GroundProgram,
+        gmap: &[GAtom],
+        kept: &[usize],
+        stmt_offset: u32,
+    ) -> ground::program::Provenance {
+        let mut prov = ground::program::Provenance::new();
+        for &i in kept {
+            let origins: Vec<_> = local
+                .provenance
+                .origins(i)
+                .iter()
+                .filter_map(|o| self.translate_origin(o, gmap, stmt_offset))
+                .collect();
+            prov.push_rule(origins);
+        }
+        for d in &local.provenance.dead {
+            let why = match d.why {
+                DeadReason::Literal { positive, atom } => DeadReason::Literal {
+                    positive,
+                    atom: gmap[atom as usize],
+                },
+                DeadReason::HeadFact(a) => DeadReason::HeadFact(gmap[a as usize]),
+                w => w,
+            };
+            prov.dead.push(ground::program::DeadRule {
+                head: d.head.iter().map(|&h| gmap[h as usize]).collect(),
+                origins: d
+                    .origins
                     .iter()
                     .filter_map(|o| self.translate_origin(o, gmap, stmt_offset))
-                    .collect();
-                prov.push_rule(origins);
-            }
-            for d in &local.provenance.dead {
-                let why = match d.why {
-                    DeadReason::Literal { positive, atom } => DeadReason::Literal {
-                        positive,
-                        atom: gmap[atom as usize],
-                    },
-                    DeadReason::HeadFact(a) => DeadReason::HeadFact(gmap[a as usize]),
-                    w => w,
-                };
-                prov.dead.push(ground::program::DeadRule {
-                    head: d.head.iter().map(|&h| gmap[h as usize]).collect(),
-                    origins: d
-                        .origins
-                        .iter()
-                        .filter_map(|o| self.translate_origin(o, gmap, stmt_offset))
-                        .collect(),
-                    why,
-                });
-            }
-            prov.set_atoms(self.gatoms.clone());
-            delta.provenance = prov;
+                    .collect(),
+                why,
+            });
         }
-        delta.num_atoms = self.atom_sym.len() as AtomId;
+        prov.set_atoms(self.gatoms.clone());
+        prov
+    }
+
+    /// Appends the merged `delta` to what is pending.
+    fn append_pending(&mut self, mut delta: GroundProgram) {
         // Append the delta to what is pending.
         let p = &mut self.pending;
         if !delta.provenance.is_empty() {
@@ -319,29 +363,31 @@ impl Control {
         p.edges.extend(delta.edges);
         p.cr_rules.extend(delta.cr_rules);
         p.prefers.extend(delta.prefers);
-        self.last = Some(g);
-        match redefined.first() {
-            None => Ok(()),
-            Some(&a) => {
-                let name = self.symbol(a).map_or_else(String::new, |s| s.to_string());
-                // The statement of the first rule dropped (known with provenance on).
-                let span = first_redefinition
-                    .and_then(|i| {
-                        local
-                            .provenance
-                            .origins(i)
-                            .iter()
-                            .find_map(|o| o.rule.stmt())
-                    })
-                    .and_then(|k| self.stmts.get((k + stmt_offset) as usize))
-                    .map(|st| st.statement.span);
-                let span = span.unwrap_or_else(|| self.no_position());
-                Err(Diagnostic::error(
-                    span,
-                    format!("redefinition of atom <'{name}',{a}>"),
-                ))
-            }
-        }
+    }
+
+    /// gringo's redefinition error for atom `a`, at the statement of the first rule dropped
+    /// (`first_redefinition`, its index in `local`; known with provenance on).
+    fn redefinition_error(
+        &mut self,
+        a: AtomId,
+        local: &GroundProgram,
+        first_redefinition: Option<usize>,
+        stmt_offset: u32,
+    ) -> Diagnostic {
+        let name = self.symbol(a).map_or_else(String::new, |s| s.to_string());
+        // The statement of the first rule dropped (known with provenance on).
+        let span = first_redefinition
+            .and_then(|i| {
+                local
+                    .provenance
+                    .origins(i)
+                    .iter()
+                    .find_map(|o| o.rule.stmt())
+            })
+            .and_then(|k| self.stmts.get((k + stmt_offset) as usize))
+            .map(|st| st.statement.span);
+        let span = span.unwrap_or_else(|| self.no_position());
+        Diagnostic::error(span, format!("redefinition of atom <'{name}',{a}>"))
     }
 
     /// A span for errors without a source position (gringo's `<cmd>`-like pseudo files).
@@ -466,4 +512,68 @@ fn set_gatom(table: &mut Vec<AtomId>, ga: AtomId, a: AtomId) {
         table.resize(i + 1, 0);
     }
     table[i] = a;
+}
+
+/// What `Control::merge_rules` makes of a later grounding's rules.
+struct MergedRules {
+    /// The kept rules, in the Control's atoms.
+    delta: GroundProgram,
+    /// The atoms the kept rules define.
+    defined_here: HashSet<AtomId>,
+    /// Atoms an earlier solve call completed that the grounding gave rules (dropped).
+    redefined: Vec<AtomId>,
+    /// The index in the grounding of the first rule dropped as a redefinition.
+    first_redefinition: Option<usize>,
+    /// Per kept rule: its index in the grounding.
+    kept: Vec<usize>,
+}
+
+/// An aspif literal of a later grounding in the Control's atoms (`map`).
+fn map_lit(map: &[AtomId], l: i32) -> i32 {
+    let a = map[l.unsigned_abs() as usize] as i32;
+    if l < 0 {
+        -a
+    } else {
+        a
+    }
+}
+
+/// Adds to `delta` the minimize statements, CR rules, preferences, heuristics, edges,
+/// projections and assumptions of `local`, in the Control's atoms (`map`).
+fn map_statements(local: &GroundProgram, map: &[AtomId], delta: &mut GroundProgram) {
+    let lit = |l: i32| map_lit(map, l);
+    for m in &local.minimize {
+        let mut m = m.clone();
+        m.lits.iter_mut().for_each(|(l, _)| *l = lit(*l));
+        delta.minimize.push(m);
+    }
+    for c in &local.cr_rules {
+        delta.cr_rules.push(ground::program::CrRule {
+            appl: map[c.appl as usize],
+            label: c.label.clone(),
+        });
+    }
+    for p in &local.prefers {
+        delta.prefers.push(ground::program::Prefer {
+            better: map[p.better as usize],
+            worse: map[p.worse as usize],
+        });
+    }
+    for h in &local.heuristics {
+        let mut h = h.clone();
+        h.atom = map[h.atom as usize];
+        h.condition.iter_mut().for_each(|l| *l = lit(*l));
+        delta.heuristics.push(h);
+    }
+    for e in &local.edges {
+        let mut e = e.clone();
+        e.condition.iter_mut().for_each(|l| *l = lit(*l));
+        delta.edges.push(e);
+    }
+    for &p in &local.projections {
+        delta.projections.push(map[p as usize]);
+    }
+    for &l in &local.assumptions {
+        delta.assumptions.push(lit(l));
+    }
 }

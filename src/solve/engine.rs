@@ -14,7 +14,13 @@
 //! techniques live in submodules: `clauses` (clause arena, weight constraints), `propagate`,
 //! `analyze` (conflict analysis, LBD), `heuristic` (VSIDS, phases), `database` (learnt-clause
 //! reduction, garbage collection, level-0 simplification), `search` (the CDCL loop, restarts)
-//! and `loops` (shared loop formulas).
+//! and `loops` (shared loop formulas). The state is grouped into parts, as varisat's solver
+//! context is: `asg` (assignment and trail), `heur` (VSIDS, phases, domain heuristic), `db`
+//! (clause arena, watch lists, learnt clauses, loop formulas), `wc` (weight constraints), `an`
+//! (conflict analysis), `uf` (unfounded-set propagator), `sched` (restarts, reductions,
+//! simplification), `limits`, `stats`, `settings` (from `solve::Config`) and `pool` (variable
+//! recycling). Techniques access the parts' fields directly (`self.asg.values[..]`), so
+//! disjoint parts borrow independently and the code compiles as with one flat struct.
 //!
 //! Invariants:
 //! - The first two literals of every long clause are its watched literals; when a clause is the
@@ -37,7 +43,7 @@ mod loops;
 mod propagate;
 mod search;
 
-use super::config::{Deletion, ReduceSchedule};
+use super::config::{Config, Deletion, ReduceSchedule};
 use super::lit::{Lit, Var};
 use super::unfounded::Unfounded;
 use loops::{is_loop_watch, Loops, LOOP_TAG};
@@ -66,7 +72,7 @@ enum Reason {
     Binary(Lit),
     /// Implied by a long clause.
     Long(ClauseRef),
-    /// Implied with the explanation stored in `Engine::stored[var]` (weight constraints).
+    /// Implied with the explanation stored in `Assignment::stored` (weight constraints).
     Stored,
     /// Implied by a shared loop formula (`loops`), by its id.
     Loop(u32),
@@ -140,7 +146,7 @@ fn prefetch<T>(p: *const T) {
     let _ = p;
 }
 
-/// `Engine::save_progress` after a phase switch (`Engine::phase_switch`): clasp's tweety value.
+/// `Settings::save_progress` after a phase switch (`Settings::phase_switch`): clasp's tweety value.
 const PHASE_SWITCH_PROGRESS: u32 = 160;
 
 /// How many trail positions ahead of the propagation queue head watch lists are prefetched.
@@ -203,8 +209,9 @@ pub enum Restarts {
     Never,
 }
 
-/// The CDCL engine.
-pub struct Engine {
+/// The assignment: per-literal values, per-variable levels and reasons, the trail and the
+/// propagation queue.
+struct Assignment {
     /// Per literal code: 1 true, -1 false, 0 unassigned.
     values: Vec<i8>,
     /// Per variable: decision level of the assignment.
@@ -218,6 +225,19 @@ pub struct Engine {
     /// Stored explanations (implied literal first, then false literals), one buffer per
     /// variable that had one; reused when the variable is implied again.
     stored: Vec<Vec<Lit>>,
+    /// Assigned literals in order.
+    trail: Vec<Lit>,
+    /// Trail length at the start of each decision level.
+    trail_lim: Vec<usize>,
+    /// Next trail position to propagate.
+    qhead: usize,
+    /// Trail position up to which watch lists were prefetched (may lag behind `qhead`).
+    pf_head: usize,
+}
+
+/// The decision heuristic: VSIDS activities and their heap, saved phases, the domain heuristic and
+/// random decisions.
+struct Heuristic {
     /// Per variable: saved phase (last value).
     phase: Vec<bool>,
     /// Per variable: whether `phase` was saved by a backjump (not the initial sign).
@@ -234,18 +254,23 @@ pub struct Engine {
     activity: Vec<f64>,
     /// Per variable: position in `heap`, or `NO_SLOT`.
     heap_pos: Vec<u32>,
+    /// Binary heap of decision candidates ordered by activity.
+    heap: Vec<Var>,
     /// Per variable: whether it may be chosen as a decision.
     decidable: Vec<bool>,
-    /// Per variable: scratch mark used by conflict analysis.
-    seen: Vec<u8>,
-    /// Per variable: its list in `weight_watch`, or `NO_SLOT` when the variable occurs in no
-    /// weight constraint. Four bytes per variable, so that the (usually many) variables
-    /// outside every weight constraint cost no `Vec` header, and their propagation and
-    /// backtracking test one small word instead of loading a header from a cold cache line.
-    weight_slot: Vec<u32>,
-    /// Occurrences in weight constraints (the head occurs with weight 0), one list per
-    /// variable that has a `weight_slot`.
-    weight_watch: Vec<Vec<WeightWatch>>,
+    /// Activity increment.
+    var_inc: f64,
+    /// Activity decay factor.
+    var_decay: f64,
+    /// Pseudo-random state.
+    rng: u64,
+    /// The configured `save_progress` and `sign_from_learnts` while a phase switch is in force.
+    phase_switched: Option<(u32, bool)>,
+}
+
+/// The clause database: the arena of long clauses, the watch lists, learnt clauses and shared loop
+/// formulas.
+struct ClauseDb {
     /// Per literal code: watches of clauses in which that literal is watched.
     watches: Vec<Vec<Watch>>,
     /// The clause arena: headers followed by literal codes.
@@ -256,95 +281,32 @@ pub struct Engine {
     learnts: Vec<ClauseRef>,
     /// Shared loop formulas (learnt, watched in `watches` with tagged references).
     loops: Loops,
-    /// Weight constraints.
-    weights: Vec<WeightConstraint>,
-    /// Assigned literals in order.
-    trail: Vec<Lit>,
-    /// Trail length at the start of each decision level.
-    trail_lim: Vec<usize>,
-    /// Next trail position to propagate.
-    qhead: usize,
-    /// Trail position up to which watch lists were prefetched (may lag behind `qhead`).
-    pf_head: usize,
-    /// Binary heap of decision candidates ordered by activity.
-    heap: Vec<Var>,
-    /// Activity increment.
-    var_inc: f64,
-    /// Activity decay factor.
-    var_decay: f64,
     /// Clause activity increment.
     cla_inc: f64,
-    /// True once a conflict at level 0 was found.
-    inconsistent: bool,
-    /// After a search that answered `Unsat` under assumptions: the assumptions (true on the
-    /// trail, as assumed) that imply the failed one's complement, the failed one first; empty
-    /// when no assumption took part (a level-0 conflict).
-    failed: Vec<Lit>,
-    /// Literals of the last conflict (all false).
-    conflict: Vec<Lit>,
-    /// Unfounded-set propagator for non-tight programs (install with `set_unfounded`).
-    unfounded: Option<Unfounded>,
-    /// Per variable: whether its value can affect foundedness (a support or weight-body
-    /// literal of a cyclic atom's support).
-    uf_relevant: Vec<bool>,
-    /// Trail length up to which the assignment is known to have no unfounded cyclic atom; the
-    /// check reruns only when a relevant variable was assigned after it (foundedness is lost
-    /// only when a support literal becomes false).
-    uf_clean_upto: usize,
-    /// Set when the propagator was (re)installed and the assignment was never checked.
-    uf_dirty: bool,
-    /// Restart state.
-    pub restarts: Restarts,
-    /// Maximum number of learnt clauses before a reduction (`ReduceSchedule::Size`).
-    max_learnts: f64,
-    /// When the learnt clause database is reduced.
-    pub reduce: ReduceSchedule,
-    /// Conflict count at which the next reduction is due (`ReduceSchedule::Conflicts`).
-    next_reduce: u64,
-    /// Number of reductions so far.
-    reductions: u64,
-    /// Position in the current run of `ReduceSchedule::Conflicts` intervals.
-    reduce_idx: u64,
-    /// Length of the current run (0 before the first reduction).
-    reduce_len: u64,
-    /// Which learnt clauses a reduction deletes.
-    pub deletion: Deletion,
-    /// Pseudo-random state.
-    rng: u64,
-    /// Random decision probability in 1/1000.
-    pub random_permille: u32,
-    /// Phase of a variable never assigned before.
-    pub default_phase: bool,
-    /// Phase of a new body variable (`new_body_var`): clasp's `--sign-def=asp` tries bodies
-    /// true and atoms false.
-    pub body_phase: bool,
-    /// Save phases only on backjumps over more than this many levels (clasp
-    /// `--save-progress`); 0 saves on every backtrack.
-    pub save_progress: u32,
-    /// Deadline, checked every few hundred conflicts or decisions.
-    pub deadline: Option<Instant>,
-    /// Interrupt flag, checked like the deadline.
-    pub interrupt: Option<Arc<AtomicBool>>,
-    /// Portfolio flag: another thread finished first (not reported as an interrupt).
-    pub portfolio_stop: Option<Arc<AtomicBool>>,
-    /// Statistics: decisions.
-    pub decisions: u64,
-    /// Statistics: conflicts.
-    pub conflicts: u64,
-    /// Statistics: restarts.
-    pub num_restarts: u64,
-    /// Statistics: propagated assignments.
-    pub propagations: u64,
-    /// Statistics: loop nogoods.
-    pub loop_nogoods: u64,
-    /// Problem clauses added.
-    pub num_clauses: u64,
-    /// Whether the last `search` stopped because the interrupt flag was raised.
-    pub interrupted: bool,
-    /// Level-0 trail length at the last `simplify`.
-    simp_assigns: usize,
-    /// Propagation count before which `simplify` is not worth running again.
-    simp_props: u64,
+    /// Scratch space of `add_clause` (empty between calls).
+    clause_buf: Vec<Lit>,
+}
+
+/// The weight constraints and their per-variable occurrence lists.
+struct WeightDb {
+    /// Per variable: its list in `weight_watch`, or `NO_SLOT` when the variable occurs in no
+    /// weight constraint. Four bytes per variable, so that the (usually many) variables
+    /// outside every weight constraint cost no `Vec` header, and their propagation and
+    /// backtracking test one small word instead of loading a header from a cold cache line.
+    weight_slot: Vec<u32>,
+    /// Occurrences in weight constraints (the head occurs with weight 0), one list per
+    /// variable that has a `weight_slot`.
+    weight_watch: Vec<Vec<WeightWatch>>,
+    /// Weight constraints.
+    weights: Vec<WeightConstraint>,
+    /// Slots of removed weight constraints, reused by `add_weight`.
+    free_weights: Vec<u32>,
+}
+
+/// Conflict analysis: the last conflict, the learnt clause, failed assumptions and scratch space.
+struct Analysis {
+    /// Per variable: scratch mark used by conflict analysis.
+    seen: Vec<u8>,
     /// Learnt clause of the last `analyze`.
     learnt: Vec<Lit>,
     /// Variables marked `seen` during analysis.
@@ -357,10 +319,101 @@ pub struct Engine {
     level_seen: Vec<u64>,
     /// Current LBD stamp.
     lbd_stamp: u64,
-    /// Whether initial activities should still be set from clause occurrences (MOMS).
-    pub init_moms: bool,
+    /// Literals of the last conflict (all false).
+    conflict: Vec<Lit>,
+    /// After a search that answered `Unsat` under assumptions: the assumptions (true on the
+    /// trail, as assumed) that imply the failed one's complement, the failed one first; empty
+    /// when no assumption took part (a level-0 conflict).
+    failed: Vec<Lit>,
+    /// Trail length at the last conflict, before backjumping.
+    conflict_trail: usize,
+}
+
+/// The unfounded-set propagator and what decides when it reruns.
+struct UfState {
+    /// Unfounded-set propagator for non-tight programs (install with `set_unfounded`).
+    unfounded: Option<Unfounded>,
+    /// Per variable: whether its value can affect foundedness (a support or weight-body
+    /// literal of a cyclic atom's support).
+    uf_relevant: Vec<bool>,
+    /// Trail length up to which the assignment is known to have no unfounded cyclic atom; the
+    /// check reruns only when a relevant variable was assigned after it (foundedness is lost
+    /// only when a support literal becomes false).
+    uf_clean_upto: usize,
+    /// Set when the propagator was (re)installed and the assignment was never checked.
+    uf_dirty: bool,
+}
+
+/// Restarts, learnt-clause reductions and level-0 simplifications: when each is due next.
+pub struct Schedule {
+    /// Restart state.
+    pub restarts: Restarts,
+    /// Maximum number of learnt clauses before a reduction (`ReduceSchedule::Size`).
+    max_learnts: f64,
+    /// Conflict count at which the next reduction is due (`ReduceSchedule::Conflicts`).
+    next_reduce: u64,
+    /// Number of reductions so far.
+    reductions: u64,
+    /// Position in the current run of `ReduceSchedule::Conflicts` intervals.
+    reduce_idx: u64,
+    /// Length of the current run (0 before the first reduction).
+    reduce_len: u64,
+    /// Level-0 trail length at the last `simplify`.
+    simp_assigns: usize,
+    /// Propagation count before which `simplify` is not worth running again.
+    simp_props: u64,
+}
+
+/// What stops a search early: deadline, interrupt flags and the conflict limit.
+pub struct Limits {
+    /// Deadline, checked every few hundred conflicts or decisions.
+    pub deadline: Option<Instant>,
+    /// Interrupt flag, checked like the deadline.
+    pub interrupt: Option<Arc<AtomicBool>>,
+    /// Portfolio flag: another thread finished first (not reported as an interrupt).
+    pub portfolio_stop: Option<Arc<AtomicBool>>,
     /// Stop with `Unknown` after this many conflicts in total (clasp `--solve-limit`).
     pub conflict_limit: Option<u64>,
+    /// Whether the last `search` stopped because the interrupt flag was raised.
+    pub interrupted: bool,
+}
+
+/// Counters of the search, for statistics.
+pub struct EngineStats {
+    /// Statistics: decisions.
+    pub decisions: u64,
+    /// Statistics: conflicts.
+    pub conflicts: u64,
+    /// Statistics: restarts.
+    pub num_restarts: u64,
+    /// Statistics: propagated assignments.
+    pub propagations: u64,
+    /// Statistics: loop nogoods.
+    pub loop_nogoods: u64,
+    /// Problem clauses added.
+    pub num_clauses: u64,
+    /// Statistics: phase switches made.
+    pub phase_switches: u64,
+}
+
+/// Search settings, set from `solve::Config` (`Settings::from_config`) and by the search profile.
+pub struct Settings {
+    /// When the learnt clause database is reduced.
+    pub reduce: ReduceSchedule,
+    /// Which learnt clauses a reduction deletes.
+    pub deletion: Deletion,
+    /// Random decision probability in 1/1000.
+    pub random_permille: u32,
+    /// Phase of a variable never assigned before.
+    pub default_phase: bool,
+    /// Phase of a new body variable (`new_body_var`): clasp's `--sign-def=asp` tries bodies
+    /// true and atoms false.
+    pub body_phase: bool,
+    /// Save phases only on backjumps over more than this many levels (clasp
+    /// `--save-progress`); 0 saves on every backtrack.
+    pub save_progress: u32,
+    /// Whether initial activities should still be set from clause occurrences (MOMS).
+    pub init_moms: bool,
     /// Bump the variables of every loop nogood when it is learnt (clasp `--score-other=all`).
     pub score_other: bool,
     /// Learn unfounded sets as shared loop formulas (`loops`) rather than one clause per atom.
@@ -372,18 +425,16 @@ pub struct Engine {
     /// Glucose restarts are postponed while the trail at a conflict is much longer than
     /// usual (Audemard and Simon's blocking: the search may be close to a model).
     pub restart_blocking: bool,
-    /// Trail length at the last conflict, before backjumping.
-    conflict_trail: usize,
     /// After this many conflicts in one search call (without a model: a model ends the call),
     /// switch to clasp's phase handling until the call returns: every saved phase is
     /// forgotten, phases are saved only on backjumps over more than `PHASE_SWITCH_PROGRESS`
     /// levels, and unsaved ones come from the sign score (`sign_from_learnts`). The next call
     /// starts with the configured values again.
     pub phase_switch: Option<u64>,
-    /// The configured `save_progress` and `sign_from_learnts` while a phase switch is in force.
-    phase_switched: Option<(u32, bool)>,
-    /// Statistics: phase switches made.
-    pub phase_switches: u64,
+}
+
+/// Variable recycling: retired variables and variables free for reuse.
+struct VarPool {
     /// Per variable: retired by `retire_vars` and not yet reusable.
     retired: Vec<bool>,
     /// Variables retired since the last level-0 simplification; that pass deletes every
@@ -392,10 +443,61 @@ pub struct Engine {
     /// Variables free for reuse by `new_var` (no clause, watch, weight constraint or
     /// assignment mentions them).
     free_vars: Vec<Var>,
-    /// Slots of removed weight constraints, reused by `add_weight`.
-    free_weights: Vec<u32>,
-    /// Scratch space of `add_clause` (empty between calls).
-    clause_buf: Vec<Lit>,
+}
+
+impl Settings {
+    /// The settings `config` gives, read in one place; the search profile may change some of
+    /// them afterwards (`save_progress`, `sign_from_learnts`, `phase_switch`, which starts off).
+    pub fn from_config(config: &Config) -> Settings {
+        Settings {
+            reduce: config.reduce,
+            deletion: config.deletion,
+            random_permille: config.random_freq_permille.min(1000),
+            default_phase: !config.default_phase_false,
+            body_phase: config.body_phase_true,
+            save_progress: config.save_progress,
+            init_moms: config.init_moms,
+            score_other: config.score_other,
+            shared_loops: config.shared_loops,
+            sign_from_learnts: config.sign_from_learnts,
+            restart_blocking: config.restart_blocking,
+            phase_switch: None,
+        }
+    }
+}
+
+/// The CDCL engine, in parts (as varisat's solver context): each technique reads and writes
+/// the parts it needs, and field access is direct (`self.asg.values[..]`).
+pub struct Engine {
+    /// The assignment: per-literal values, per-variable levels and reasons, the trail and the
+    /// propagation queue.
+    asg: Assignment,
+    /// The decision heuristic: VSIDS activities and their heap, saved phases, the domain heuristic
+    /// and random decisions.
+    heur: Heuristic,
+    /// The clause database: the arena of long clauses, the watch lists, learnt clauses and shared
+    /// loop formulas.
+    db: ClauseDb,
+    /// The weight constraints and their per-variable occurrence lists.
+    wc: WeightDb,
+    /// Conflict analysis: the last conflict, the learnt clause, failed assumptions and scratch
+    /// space.
+    an: Analysis,
+    /// The unfounded-set propagator and what decides when it reruns.
+    uf: UfState,
+    /// Restarts, learnt-clause reductions and level-0 simplifications: when each is due next.
+    pub sched: Schedule,
+    /// What stops a search early: deadline, interrupt flags and the conflict limit.
+    pub limits: Limits,
+    /// Counters of the search, for statistics.
+    pub stats: EngineStats,
+    /// Search settings, set from `solve::Config` (`Settings::from_config`) and by the search
+    /// profile.
+    pub settings: Settings,
+    /// Variable recycling: retired variables and variables free for reuse.
+    pool: VarPool,
+    /// True once a conflict at level 0 was found.
+    inconsistent: bool,
 }
 
 impl Default for Engine {
@@ -408,111 +510,133 @@ impl Engine {
     /// An empty engine.
     pub fn new() -> Engine {
         Engine {
-            values: Vec::new(),
-            level: Vec::new(),
-            reason: Vec::new(),
-            stored_slot: Vec::new(),
-            stored: Vec::new(),
-            phase: Vec::new(),
-            phase_saved: Vec::new(),
-            dom_sign: Vec::new(),
-            dom_order: Vec::new(),
-            occ: Vec::new(),
-            activity: Vec::new(),
-            heap_pos: Vec::new(),
-            decidable: Vec::new(),
-            seen: Vec::new(),
-            weight_slot: Vec::new(),
-            weight_watch: Vec::new(),
-            watches: Vec::new(),
-            arena: Vec::new(),
-            wasted: 0,
-            learnts: Vec::new(),
-            loops: Loops::default(),
-            weights: Vec::new(),
-            trail: Vec::new(),
-            trail_lim: Vec::new(),
-            qhead: 0,
-            pf_head: 0,
-            heap: Vec::new(),
-            var_inc: 1.0,
-            var_decay: 0.95,
-            cla_inc: 1.0,
-            inconsistent: false,
-            failed: Vec::new(),
-            conflict: Vec::new(),
-            unfounded: None,
-            uf_relevant: Vec::new(),
-            uf_clean_upto: 0,
-            uf_dirty: true,
-            restarts: Restarts::Glucose {
-                fast: 0.0,
-                slow: 0.0,
-                since: 0,
-                trail: 0.0,
+            asg: Assignment {
+                values: Vec::new(),
+                level: Vec::new(),
+                reason: Vec::new(),
+                stored_slot: Vec::new(),
+                stored: Vec::new(),
+                trail: Vec::new(),
+                trail_lim: Vec::new(),
+                qhead: 0,
+                pf_head: 0,
             },
-            max_learnts: 4000.0,
-            reduce: ReduceSchedule::Size,
-            next_reduce: 0,
-            reductions: 0,
-            reduce_idx: 0,
-            reduce_len: 0,
-            deletion: Deletion::Sorted,
-            rng: 0x9E37_79B9_7F4A_7C15,
-            random_permille: 0,
-            default_phase: false,
-            body_phase: false,
-            save_progress: 0,
-            deadline: None,
-            interrupt: None,
-            portfolio_stop: None,
-            decisions: 0,
-            conflicts: 0,
-            num_restarts: 0,
-            propagations: 0,
-            loop_nogoods: 0,
-            num_clauses: 0,
-            interrupted: false,
-            simp_assigns: 0,
-            simp_props: 0,
-            learnt: Vec::new(),
-            to_clear: Vec::new(),
-            min_stack: Vec::new(),
-            min_buf: Vec::new(),
-            level_seen: Vec::new(),
-            lbd_stamp: 0,
-            init_moms: false,
-            score_other: false,
-            shared_loops: false,
-            sign_from_learnts: false,
-            restart_blocking: false,
-            conflict_trail: 0,
-            phase_switch: None,
-            phase_switched: None,
-            phase_switches: 0,
-            conflict_limit: None,
-            retired: Vec::new(),
-            dead_vars: Vec::new(),
-            free_vars: Vec::new(),
-            free_weights: Vec::new(),
-            clause_buf: Vec::new(),
+            heur: Heuristic {
+                phase: Vec::new(),
+                phase_saved: Vec::new(),
+                dom_sign: Vec::new(),
+                dom_order: Vec::new(),
+                occ: Vec::new(),
+                activity: Vec::new(),
+                heap_pos: Vec::new(),
+                heap: Vec::new(),
+                decidable: Vec::new(),
+                var_inc: 1.0,
+                var_decay: 0.95,
+                rng: 0x9E37_79B9_7F4A_7C15,
+                phase_switched: None,
+            },
+            db: ClauseDb {
+                watches: Vec::new(),
+                arena: Vec::new(),
+                wasted: 0,
+                learnts: Vec::new(),
+                loops: Loops::default(),
+                cla_inc: 1.0,
+                clause_buf: Vec::new(),
+            },
+            wc: WeightDb {
+                weight_slot: Vec::new(),
+                weight_watch: Vec::new(),
+                weights: Vec::new(),
+                free_weights: Vec::new(),
+            },
+            an: Analysis {
+                seen: Vec::new(),
+                learnt: Vec::new(),
+                to_clear: Vec::new(),
+                min_stack: Vec::new(),
+                min_buf: Vec::new(),
+                level_seen: Vec::new(),
+                lbd_stamp: 0,
+                conflict: Vec::new(),
+                failed: Vec::new(),
+                conflict_trail: 0,
+            },
+            uf: UfState {
+                unfounded: None,
+                uf_relevant: Vec::new(),
+                uf_clean_upto: 0,
+                uf_dirty: true,
+            },
+            sched: Schedule {
+                restarts: Restarts::Glucose {
+                    fast: 0.0,
+                    slow: 0.0,
+                    since: 0,
+                    trail: 0.0,
+                },
+                max_learnts: 4000.0,
+                next_reduce: 0,
+                reductions: 0,
+                reduce_idx: 0,
+                reduce_len: 0,
+                simp_assigns: 0,
+                simp_props: 0,
+            },
+            limits: Limits {
+                deadline: None,
+                interrupt: None,
+                portfolio_stop: None,
+                conflict_limit: None,
+                interrupted: false,
+            },
+            stats: EngineStats {
+                decisions: 0,
+                conflicts: 0,
+                num_restarts: 0,
+                propagations: 0,
+                loop_nogoods: 0,
+                num_clauses: 0,
+                phase_switches: 0,
+            },
+            settings: Settings {
+                reduce: ReduceSchedule::Size,
+                deletion: Deletion::Sorted,
+                random_permille: 0,
+                default_phase: false,
+                body_phase: false,
+                save_progress: 0,
+                init_moms: false,
+                score_other: false,
+                shared_loops: false,
+                sign_from_learnts: false,
+                restart_blocking: false,
+                phase_switch: None,
+            },
+            pool: VarPool {
+                retired: Vec::new(),
+                dead_vars: Vec::new(),
+                free_vars: Vec::new(),
+            },
+            inconsistent: false,
         }
     }
 
     /// Sets the VSIDS decay and the random seed.
     pub fn configure(&mut self, var_decay: f64, seed: u64) {
-        self.var_decay = var_decay.clamp(0.5, 0.999);
-        self.rng = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+        self.heur.var_decay = var_decay.clamp(0.5, 0.999);
+        self.heur.rng = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
     }
 
     /// Number of variables.
     pub fn num_vars(&self) -> usize {
-        self.level.len()
+        self.asg.level.len()
     }
 
     /// Number of learnt constraints kept: long clauses and shared loop formulas.
     pub fn num_learnts(&self) -> usize {
-        self.learnts.len() + self.loops.live
+        self.db.learnts.len() + self.db.loops.live
     }
 
     /// Between two solve calls: reduces the learnt clause database (as a search does, worst
@@ -523,12 +647,12 @@ impl Engine {
     pub fn limit_learnts(&mut self, cap: usize) {
         self.backtrack(0);
         loop {
-            let before = self.learnts.len() + self.loops.clauses;
+            let before = self.db.learnts.len() + self.db.loops.clauses;
             if before <= cap {
                 return;
             }
             self.reduce_db();
-            if self.learnts.len() + self.loops.clauses >= before {
+            if self.db.learnts.len() + self.db.loops.clauses >= before {
                 return;
             }
         }
@@ -538,14 +662,15 @@ impl Engine {
     pub fn size(&self) -> EngineSize {
         let mut clauses = 0;
         let mut pos = 0usize;
-        while pos < self.arena.len() {
-            let len = self.arena[pos] as usize;
-            if self.arena[pos + 1] & (FLAG_DELETED | FLAG_LEARNT) == 0 {
+        while pos < self.db.arena.len() {
+            let len = self.db.arena[pos] as usize;
+            if self.db.arena[pos + 1] & (FLAG_DELETED | FLAG_LEARNT) == 0 {
                 clauses += 1;
             }
             pos += HEADER + len;
         }
         let binary: usize = self
+            .db
             .watches
             .iter()
             .map(|ws| ws.iter().filter(|w| w.cref == u32::MAX).count())
@@ -554,8 +679,13 @@ impl Engine {
             vars: self.num_vars(),
             clauses: clauses + binary / 2,
             learnts: self.num_learnts(),
-            weights: self.weights.iter().filter(|c| !c.removed).count(),
-            level0: self.trail_lim.first().copied().unwrap_or(self.trail.len()),
+            weights: self.wc.weights.iter().filter(|c| !c.removed).count(),
+            level0: self
+                .asg
+                .trail_lim
+                .first()
+                .copied()
+                .unwrap_or(self.asg.trail.len()),
         }
     }
 
@@ -563,64 +693,64 @@ impl Engine {
     /// vector, so that translating a large program grows each vector once: grown by doubling,
     /// the abandoned smaller copies stay in the allocator's heap and count in the peak memory.
     pub fn reserve_vars(&mut self, additional: usize) {
-        self.values.reserve(2 * additional);
-        self.level.reserve(additional);
-        self.reason.reserve(additional);
-        self.stored_slot.reserve(additional);
-        self.phase.reserve(additional);
-        self.activity.reserve(additional);
-        self.heap_pos.reserve(additional);
-        self.decidable.reserve(additional);
-        self.seen.reserve(additional);
-        self.weight_slot.reserve(additional);
-        self.uf_relevant.reserve(additional);
-        self.watches.reserve(2 * additional);
-        self.heap.reserve(additional);
+        self.asg.values.reserve(2 * additional);
+        self.asg.level.reserve(additional);
+        self.asg.reason.reserve(additional);
+        self.asg.stored_slot.reserve(additional);
+        self.heur.phase.reserve(additional);
+        self.heur.activity.reserve(additional);
+        self.heur.heap_pos.reserve(additional);
+        self.heur.decidable.reserve(additional);
+        self.an.seen.reserve(additional);
+        self.wc.weight_slot.reserve(additional);
+        self.uf.uf_relevant.reserve(additional);
+        self.db.watches.reserve(2 * additional);
+        self.heur.heap.reserve(additional);
     }
 
     /// Creates a new variable, decidable by default; a variable freed by `retire_vars` is
     /// reused when there is one.
     pub fn new_var(&mut self) -> Var {
-        if let Some(v) = self.free_vars.pop() {
+        if let Some(v) = self.pool.free_vars.pop() {
             let i = v.index();
-            debug_assert!(self.values[v.positive().code()] == 0);
-            debug_assert!(self.watches[v.positive().code()].is_empty());
-            debug_assert!(self.watches[v.negative().code()].is_empty());
-            self.retired[i] = false;
-            self.level[i] = 0;
-            self.reason[i] = Reason::Decision;
-            self.phase[i] = self.default_phase;
-            self.phase_saved[i] = false;
-            self.occ[i] = 0;
-            self.seen[i] = 0;
-            self.uf_relevant[i] = false;
-            self.activity[i] = 0.0;
-            self.decidable[i] = true;
-            if self.heap_pos[i] == NO_SLOT {
+            debug_assert!(self.asg.values[v.positive().code()] == 0);
+            debug_assert!(self.db.watches[v.positive().code()].is_empty());
+            debug_assert!(self.db.watches[v.negative().code()].is_empty());
+            self.pool.retired[i] = false;
+            self.asg.level[i] = 0;
+            self.asg.reason[i] = Reason::Decision;
+            self.heur.phase[i] = self.settings.default_phase;
+            self.heur.phase_saved[i] = false;
+            self.heur.occ[i] = 0;
+            self.an.seen[i] = 0;
+            self.uf.uf_relevant[i] = false;
+            self.heur.activity[i] = 0.0;
+            self.heur.decidable[i] = true;
+            if self.heur.heap_pos[i] == NO_SLOT {
                 self.heap_insert(v);
             } else {
-                self.heap_down(self.heap_pos[i] as usize);
+                self.heap_down(self.heur.heap_pos[i] as usize);
             }
             return v;
         }
-        let v = Var::new(self.level.len());
-        self.retired.push(false);
-        self.values.push(0);
-        self.values.push(0);
-        self.level.push(0);
-        self.reason.push(Reason::Decision);
-        self.stored_slot.push(NO_SLOT);
-        self.phase.push(self.default_phase);
-        self.phase_saved.push(false);
-        self.occ.push(0);
-        self.activity.push(0.0);
-        self.heap_pos.push(NO_SLOT);
-        self.decidable.push(true);
-        self.seen.push(0);
-        self.weight_slot.push(NO_SLOT);
-        self.uf_relevant.push(false);
-        self.watches.push(Vec::new());
-        self.watches.push(Vec::new());
+        let v = Var::new(self.asg.level.len());
+        self.pool.retired.push(false);
+        self.asg.values.push(0);
+        self.asg.values.push(0);
+        self.asg.level.push(0);
+        self.asg.reason.push(Reason::Decision);
+        self.asg.stored_slot.push(NO_SLOT);
+        self.heur.phase.push(self.settings.default_phase);
+        self.heur.phase_saved.push(false);
+        self.heur.occ.push(0);
+        self.heur.activity.push(0.0);
+        self.heur.heap_pos.push(NO_SLOT);
+        self.heur.decidable.push(true);
+        self.an.seen.push(0);
+        self.wc.weight_slot.push(NO_SLOT);
+        self.uf.uf_relevant.push(false);
+        self.db.watches.push(Vec::new());
+        self.db.watches.push(Vec::new());
         self.heap_insert(v);
         v
     }
@@ -629,13 +759,13 @@ impl Engine {
     /// phase is `body_phase`.
     pub fn new_body_var(&mut self) -> Var {
         let v = self.new_var();
-        self.phase[v.index()] = self.body_phase;
+        self.heur.phase[v.index()] = self.settings.body_phase;
         v
     }
 
     /// Excludes a variable from decisions (its value is always implied).
     pub fn set_decidable(&mut self, v: Var, decidable: bool) {
-        self.decidable[v.index()] = decidable;
+        self.heur.decidable[v.index()] = decidable;
         if decidable {
             self.heap_insert(v);
         }
@@ -651,39 +781,39 @@ impl Engine {
     /// was learnt without mentioning the variable stays a consequence of the rest).
     pub fn retire_vars(&mut self, vars: &[Var]) {
         for &v in vars {
-            if !self.retired[v.index()] {
-                self.retired[v.index()] = true;
-                self.decidable[v.index()] = false;
-                self.dead_vars.push(v);
+            if !self.pool.retired[v.index()] {
+                self.pool.retired[v.index()] = true;
+                self.heur.decidable[v.index()] = false;
+                self.pool.dead_vars.push(v);
             }
         }
     }
 
     /// Bumps the initial activity of a variable so it is decided early.
     pub fn bump_initial(&mut self, v: Var, amount: f64) {
-        self.activity[v.index()] += amount;
-        if self.heap_pos[v.index()] != NO_SLOT {
-            self.heap_up(self.heap_pos[v.index()] as usize);
+        self.heur.activity[v.index()] += amount;
+        if self.heur.heap_pos[v.index()] != NO_SLOT {
+            self.heap_up(self.heur.heap_pos[v.index()] as usize);
         }
     }
 
     /// Installs (or removes) the unfounded-set propagator; the next propagation rechecks the
     /// whole assignment.
     pub fn set_unfounded(&mut self, uf: Option<Unfounded>) {
-        self.uf_relevant.iter_mut().for_each(|x| *x = false);
+        self.uf.uf_relevant.iter_mut().for_each(|x| *x = false);
         if let Some(u) = &uf {
             for v in u.relevant_vars() {
-                self.uf_relevant[v.index()] = true;
+                self.uf.uf_relevant[v.index()] = true;
             }
         }
-        self.unfounded = uf;
-        self.uf_clean_upto = 0;
-        self.uf_dirty = true;
+        self.uf.unfounded = uf;
+        self.uf.uf_clean_upto = 0;
+        self.uf.uf_dirty = true;
     }
 
     /// Whether an unfounded-set propagator is installed (the program is not tight).
     pub fn has_unfounded(&self) -> bool {
-        self.unfounded.is_some()
+        self.uf.unfounded.is_some()
     }
 
     /// Whether a conflict at level 0 was derived: no more models under any assumption.
@@ -695,12 +825,12 @@ impl Engine {
     /// the constraints refute together (MiniSat's `analyzeFinal`), the one found false first;
     /// empty when the constraints alone are unsatisfiable. Meaningless after other answers.
     pub fn failed_assumptions(&self) -> &[Lit] {
-        &self.failed
+        &self.an.failed
     }
 
     /// The value of a literal: `Some(true)`, `Some(false)` or `None`.
     pub fn value(&self, l: Lit) -> Option<bool> {
-        match self.values[l.code()] {
+        match self.asg.values[l.code()] {
             1 => Some(true),
             -1 => Some(false),
             _ => None,
@@ -711,46 +841,47 @@ impl Engine {
     /// from now on): a clause with such a literal is one `add_clause` drops.
     #[inline]
     pub fn true_at_level0(&self, l: Lit) -> bool {
-        self.trail_lim.is_empty() && self.val(l) == 1
+        self.asg.trail_lim.is_empty() && self.val(l) == 1
     }
 
     fn val(&self, l: Lit) -> i8 {
-        self.values[l.code()]
+        self.asg.values[l.code()]
     }
 
     /// The current decision level.
     pub fn decision_level(&self) -> u32 {
-        self.trail_lim.len() as u32
+        self.asg.trail_lim.len() as u32
     }
 
     /// The assigned literals in order (the unfounded-set propagator reads what changed).
     pub fn trail(&self) -> &[Lit] {
-        &self.trail
+        &self.asg.trail
     }
 
     /// The decision level at which the variable of `l` was assigned.
     pub fn level_of(&self, l: Lit) -> u32 {
-        self.level[l.var().index()]
+        self.asg.level[l.var().index()]
     }
 
     /// The literals that were decided (not implied) on the current trail, in order.
     pub fn decisions_on_trail(&self) -> Vec<Lit> {
-        self.trail_lim
+        self.asg
+            .trail_lim
             .iter()
-            .filter_map(|&start| self.trail.get(start).copied())
-            .filter(|l| self.reason[l.var().index()] == Reason::Decision)
+            .filter_map(|&start| self.asg.trail.get(start).copied())
+            .filter(|l| self.asg.reason[l.var().index()] == Reason::Decision)
             .collect()
     }
 
     fn assign(&mut self, l: Lit, reason: Reason) {
         let v = l.var().index();
-        debug_assert_eq!(self.values[l.code()], 0);
-        self.values[l.code()] = 1;
-        self.values[(!l).code()] = -1;
-        self.level[v] = self.decision_level();
-        self.reason[v] = reason;
-        self.trail.push(l);
-        prefetch(self.watches.as_ptr().wrapping_add((!l).code()));
+        debug_assert_eq!(self.asg.values[l.code()], 0);
+        self.asg.values[l.code()] = 1;
+        self.asg.values[(!l).code()] = -1;
+        self.asg.level[v] = self.decision_level();
+        self.asg.reason[v] = reason;
+        self.asg.trail.push(l);
+        prefetch(self.db.watches.as_ptr().wrapping_add((!l).code()));
     }
 
     /// Undoes all assignments above `level`.
@@ -758,17 +889,17 @@ impl Engine {
         if self.decision_level() <= level {
             return;
         }
-        let start = self.trail_lim[level as usize];
-        let save = self.decision_level() - level > self.save_progress;
-        for i in (start..self.trail.len()).rev() {
-            let l = self.trail[i];
+        let start = self.asg.trail_lim[level as usize];
+        let save = self.decision_level() - level > self.settings.save_progress;
+        for i in (start..self.asg.trail.len()).rev() {
+            let l = self.asg.trail[i];
             let v = l.var();
-            let slot = self.weight_slot[v.index()];
-            if i < self.qhead && slot != NO_SLOT {
+            let slot = self.wc.weight_slot[v.index()];
+            if i < self.asg.qhead && slot != NO_SLOT {
                 // Undo the weight counters of processed assignments.
-                for k in 0..self.weight_watch[slot as usize].len() {
-                    let w = self.weight_watch[slot as usize][k];
-                    let c = &mut self.weights[w.id as usize];
+                for k in 0..self.wc.weight_watch[slot as usize].len() {
+                    let w = self.wc.weight_watch[slot as usize][k];
+                    let c = &mut self.wc.weights[w.id as usize];
                     if w.lit == l {
                         c.sum_true -= w.weight;
                     } else {
@@ -776,21 +907,21 @@ impl Engine {
                     }
                 }
             }
-            self.values[l.code()] = 0;
-            self.values[(!l).code()] = 0;
+            self.asg.values[l.code()] = 0;
+            self.asg.values[(!l).code()] = 0;
             if save {
-                self.phase[v.index()] = !l.is_neg();
-                self.phase_saved[v.index()] = true;
+                self.heur.phase[v.index()] = !l.is_neg();
+                self.heur.phase_saved[v.index()] = true;
             }
-            if self.heap_pos[v.index()] == NO_SLOT && self.decidable[v.index()] {
+            if self.heur.heap_pos[v.index()] == NO_SLOT && self.heur.decidable[v.index()] {
                 self.heap_insert(v);
             }
         }
-        self.trail.truncate(start);
-        self.trail_lim.truncate(level as usize);
-        self.qhead = self.trail.len();
-        self.pf_head = self.qhead;
-        self.uf_clean_upto = self.uf_clean_upto.min(self.trail.len());
+        self.asg.trail.truncate(start);
+        self.asg.trail_lim.truncate(level as usize);
+        self.asg.qhead = self.asg.trail.len();
+        self.asg.pf_head = self.asg.qhead;
+        self.uf.uf_clean_upto = self.uf.uf_clean_upto.min(self.asg.trail.len());
     }
 }
 

@@ -46,7 +46,7 @@ mod search;
 mod strategies;
 
 use super::config::{Config, CrMode, EnumMode, OptMode, RestartPolicy, SearchProfile};
-use super::engine::{Engine, Restarts, SearchResult};
+use super::engine::{Engine, Restarts, SearchResult, Settings};
 use super::lit::{Lit, Var};
 use super::result::{Model, Outcome, SolveResult, Stats, StopReason};
 use super::translate::{max_atom, Translation};
@@ -177,19 +177,9 @@ impl Solver {
     pub fn from_program(mut prog: GroundProgram, config: Config) -> Solver {
         let mut engine = Engine::new();
         engine.configure(config.var_decay, config.seed);
-        engine.random_permille = config.random_freq_permille.min(1000);
-        engine.default_phase = !config.default_phase_false;
-        engine.init_moms = config.init_moms;
-        engine.reduce = config.reduce;
-        engine.deletion = config.deletion;
-        engine.body_phase = config.body_phase_true;
-        engine.save_progress = config.save_progress;
-        engine.score_other = config.score_other;
-        engine.shared_loops = config.shared_loops;
-        engine.sign_from_learnts = config.sign_from_learnts;
-        engine.restart_blocking = config.restart_blocking;
-        engine.conflict_limit = config.conflict_limit;
-        engine.restarts = restart_state(config.restarts);
+        engine.settings = Settings::from_config(&config);
+        engine.limits.conflict_limit = config.conflict_limit;
+        engine.sched.restarts = restart_state(config.restarts);
         prog.num_atoms = max_atom(&prog);
         // As clasp (and `check::external_values`): an external statement on an atom that has
         // a rule in the same program is ignored; the rules define the atom.
@@ -218,14 +208,14 @@ impl Solver {
         if config.profile == SearchProfile::Auto && !tweety && !optimizing {
             // Tight decision problems: clasp's phase handling after a long run without a
             // model (`Config::phase_switch`).
-            engine.phase_switch = config.phase_switch;
+            engine.settings.phase_switch = config.phase_switch;
         }
         if tweety {
             // Non-tight decision problems: clasp's `tweety` search settings (`SearchProfile`).
             engine.configure(0.92, config.seed);
-            engine.restarts = restart_state(RestartPolicy::Luby(60));
-            engine.save_progress = 160;
-            engine.sign_from_learnts = true;
+            engine.sched.restarts = restart_state(RestartPolicy::Luby(60));
+            engine.settings.save_progress = 160;
+            engine.settings.sign_from_learnts = true;
         }
         if config.domain_heuristic {
             apply_domain_heuristics(&prog, &tr, &mut engine);
@@ -547,12 +537,12 @@ impl Solver {
     ) -> SolveResult {
         let start = Instant::now();
         let (d0, c0, r0) = (
-            self.engine.decisions,
-            self.engine.conflicts,
-            self.engine.num_restarts,
+            self.engine.stats.decisions,
+            self.engine.stats.conflicts,
+            self.engine.stats.num_restarts,
         );
-        self.engine.deadline = self.config.deadline;
-        self.engine.interrupt = self.config.interrupt.clone();
+        self.engine.limits.deadline = self.config.deadline;
+        self.engine.limits.interrupt = self.config.interrupt.clone();
         if self.calls > 0 {
             // What earlier calls learnt is kept up to a limit set by the problem size, as clasp
             // sets it at the start of every solve call (`--del-init=3.0,200,40000`).
@@ -611,7 +601,7 @@ impl Solver {
             Outcome::Unknown
         };
         let stop = if call.stopped {
-            Some(if self.engine.interrupted {
+            Some(if self.engine.limits.interrupted {
                 StopReason::Interrupted
             } else {
                 StopReason::TimeLimit
@@ -626,14 +616,14 @@ impl Solver {
             optimum_proven: call.optimum,
             stop,
             stats: Stats {
-                choices: self.engine.decisions - d0,
-                conflicts: self.engine.conflicts - c0,
-                restarts: self.engine.num_restarts - r0,
-                propagations: self.engine.propagations,
-                loop_nogoods: self.engine.loop_nogoods,
+                choices: self.engine.stats.decisions - d0,
+                conflicts: self.engine.stats.conflicts - c0,
+                restarts: self.engine.stats.num_restarts - r0,
+                propagations: self.engine.stats.propagations,
+                loop_nogoods: self.engine.stats.loop_nogoods,
                 learnt: self.engine.num_learnts() as u64,
                 vars: self.engine.num_vars() as u64,
-                clauses: self.engine.num_clauses,
+                clauses: self.engine.stats.num_clauses,
                 time: start.elapsed(),
                 first_model: call.first_model,
                 unsat: if call.exhausted && !call.stopped {
@@ -771,12 +761,12 @@ fn portfolio(prog: &GroundProgram, config: &Config) -> SolveResult {
                 }
                 c.seed = config.seed.wrapping_add(t as u64 * 7919);
                 let mut s = Solver::new(prog, c);
-                s.engine.portfolio_stop = Some(stop.clone());
+                s.engine.limits.portfolio_stop = Some(stop.clone());
                 let r = s.solve_with(&[]);
                 // A thread stopped by the portfolio flag has nothing to say.
                 let stopped_by_peer = r.stop.is_some()
                     && stop.load(std::sync::atomic::Ordering::Relaxed)
-                    && !s.engine.interrupted;
+                    && !s.engine.limits.interrupted;
                 let mut w = winner
                     .lock()
                     .expect("no thread panics while holding the lock");

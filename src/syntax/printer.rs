@@ -25,35 +25,7 @@ pub fn print(program: &Program) -> String {
 /// Prints one statement (without a newline).
 pub fn statement(out: &mut String, kind: &StatementKind) {
     match kind {
-        StatementKind::Rule(rule) => {
-            match &rule.kind {
-                RuleKind::Normal => {
-                    if !matches!(rule.head, Head::None) {
-                        head(out, &rule.head);
-                        if !rule.body.is_empty() {
-                            out.push_str(" :- ");
-                            body(out, &rule.body);
-                        }
-                    } else {
-                        out.push_str(":- ");
-                        body(out, &rule.body);
-                    }
-                }
-                RuleKind::ConsistencyRestoring { label } => {
-                    if let Some(label) = label {
-                        term(out, label);
-                        out.push_str(" : ");
-                    }
-                    if !matches!(rule.head, Head::None) {
-                        head(out, &rule.head);
-                        out.push(' ');
-                    }
-                    out.push_str(":+ ");
-                    body(out, &rule.body);
-                }
-            }
-            out.push('.');
-        }
+        StatementKind::Rule(r) => rule(out, r),
         StatementKind::WeakConstraint(w) => {
             out.push_str(":~ ");
             body(out, &w.body);
@@ -61,136 +33,20 @@ pub fn statement(out: &mut String, kind: &StatementKind) {
             weight(out, &w.weight, &w.priority, &w.terms);
             out.push(']');
         }
-        StatementKind::Optimize(o) => {
-            out.push_str(if o.maximize {
-                "#maximize { "
-            } else {
-                "#minimize { "
-            });
-            for (i, e) in o.elements.iter().enumerate() {
-                if i > 0 {
-                    out.push_str("; ");
-                }
-                weight(out, &e.weight, &e.priority, &e.terms);
-                if !e.condition.is_empty() {
-                    out.push_str(" : ");
-                    literals(out, &e.condition);
-                }
-            }
-            out.push_str(" }.");
-        }
-        StatementKind::Show(show) => match &**show {
-            Show::Nothing => out.push_str("#show."),
-            Show::Signature(sig) => {
-                out.push_str("#show ");
-                signature(out, sig);
-                out.push('.');
-            }
-            Show::Term { term: t, body: b } => {
-                out.push_str("#show ");
-                term(out, t);
-                if !b.is_empty() {
-                    out.push_str(" : ");
-                    body(out, b);
-                }
-                out.push('.');
-            }
-        },
+        StatementKind::Optimize(o) => optimize(out, o),
+        StatementKind::Show(s) => show(out, s),
         StatementKind::Defined(sig) => {
             out.push_str("#defined ");
             signature(out, sig);
             out.push('.');
         }
-        StatementKind::Project(p) => {
-            out.push_str("#project ");
-            match &**p {
-                Project::Signature(sig) => signature(out, sig),
-                Project::Atom { atom, body: b } => {
-                    symbolic(out, atom);
-                    if !b.is_empty() {
-                        out.push_str(" : ");
-                        body(out, b);
-                    }
-                }
-            }
-            out.push('.');
-        }
-        StatementKind::Const(c) => {
-            out.push_str("#const ");
-            out.push_str(&c.name);
-            out.push_str(" = ");
-            term(out, &c.value);
-            out.push('.');
-            if c.annotated {
-                out.push_str(match c.kind {
-                    ConstKind::Default => " [default]",
-                    ConstKind::Override => " [override]",
-                });
-            }
-        }
-        StatementKind::External(e) => {
-            out.push_str("#external ");
-            symbolic(out, &e.atom);
-            if !e.body.is_empty() {
-                out.push_str(" : ");
-                body(out, &e.body);
-            }
-            out.push('.');
-            if let Some(v) = &e.value {
-                out.push_str(" [");
-                term(out, v);
-                out.push(']');
-            }
-        }
-        StatementKind::Heuristic(h) => {
-            out.push_str("#heuristic ");
-            symbolic(out, &h.atom);
-            if !h.body.is_empty() {
-                out.push_str(" : ");
-                body(out, &h.body);
-            }
-            out.push_str(". [");
-            weight(
-                out,
-                &h.weight,
-                &h.priority,
-                std::slice::from_ref(&h.modifier),
-            );
-            out.push(']');
-        }
-        StatementKind::Edge(e) => {
-            out.push_str("#edge (");
-            term(out, &e.from);
-            out.push_str(", ");
-            term(out, &e.to);
-            out.push(')');
-            if !e.body.is_empty() {
-                out.push_str(" : ");
-                body(out, &e.body);
-            }
-            out.push('.');
-        }
-        StatementKind::Include(i) => {
-            out.push_str("#include ");
-            if i.system {
-                out.push('<');
-                out.push_str(&i.path);
-                out.push('>');
-            } else {
-                string(out, &i.path);
-            }
-            out.push('.');
-        }
-        StatementKind::ProgramPart(p) => {
-            out.push_str("#program ");
-            out.push_str(&p.name);
-            if !p.params.is_empty() {
-                out.push('(');
-                out.push_str(&p.params.join(", "));
-                out.push(')');
-            }
-            out.push('.');
-        }
+        StatementKind::Project(p) => project(out, p),
+        StatementKind::Const(c) => const_def(out, c),
+        StatementKind::External(e) => external(out, e),
+        StatementKind::Heuristic(h) => heuristic(out, h),
+        StatementKind::Edge(e) => edge(out, e),
+        StatementKind::Include(i) => include(out, i),
+        StatementKind::ProgramPart(p) => program_part(out, p),
         StatementKind::Script(s) => {
             out.push_str("#script (");
             out.push_str(&s.language);
@@ -211,18 +67,7 @@ pub fn statement(out: &mut String, kind: &StatementKind) {
             sort_expr(out, &d.expr);
             out.push('.');
         }
-        StatementKind::PredicateDecl(p) => {
-            out.push_str(&p.name);
-            out.push('(');
-            for (i, s) in p.sorts.iter().enumerate() {
-                if i > 0 {
-                    out.push_str(", ");
-                }
-                out.push('#');
-                out.push_str(s);
-            }
-            out.push_str(").");
-        }
+        StatementKind::PredicateDecl(p) => predicate_decl(out, p),
         StatementKind::Display(l) => {
             literal(out, l);
             out.push('.');
@@ -239,6 +84,196 @@ pub fn statement(out: &mut String, kind: &StatementKind) {
         }
         StatementKind::Error => out.push_str("% (statement with a syntax error)"),
     }
+}
+
+/// A rule, constraint or CR rule, with its final `.`.
+fn rule(out: &mut String, rule: &Rule) {
+    match &rule.kind {
+        RuleKind::Normal => {
+            if !matches!(rule.head, Head::None) {
+                head(out, &rule.head);
+                if !rule.body.is_empty() {
+                    out.push_str(" :- ");
+                    body(out, &rule.body);
+                }
+            } else {
+                out.push_str(":- ");
+                body(out, &rule.body);
+            }
+        }
+        RuleKind::ConsistencyRestoring { label } => {
+            if let Some(label) = label {
+                term(out, label);
+                out.push_str(" : ");
+            }
+            if !matches!(rule.head, Head::None) {
+                head(out, &rule.head);
+                out.push(' ');
+            }
+            out.push_str(":+ ");
+            body(out, &rule.body);
+        }
+    }
+    out.push('.');
+}
+
+/// `#minimize { ... }.` or `#maximize { ... }.`
+fn optimize(out: &mut String, o: &Optimize) {
+    out.push_str(if o.maximize {
+        "#maximize { "
+    } else {
+        "#minimize { "
+    });
+    for (i, e) in o.elements.iter().enumerate() {
+        if i > 0 {
+            out.push_str("; ");
+        }
+        weight(out, &e.weight, &e.priority, &e.terms);
+        if !e.condition.is_empty() {
+            out.push_str(" : ");
+            literals(out, &e.condition);
+        }
+    }
+    out.push_str(" }.");
+}
+
+/// `#show.`, `#show p/n.` or `#show t : body.`
+fn show(out: &mut String, show: &Show) {
+    match show {
+        Show::Nothing => out.push_str("#show."),
+        Show::Signature(sig) => {
+            out.push_str("#show ");
+            signature(out, sig);
+            out.push('.');
+        }
+        Show::Term { term: t, body: b } => {
+            out.push_str("#show ");
+            term(out, t);
+            if !b.is_empty() {
+                out.push_str(" : ");
+                body(out, b);
+            }
+            out.push('.');
+        }
+    }
+}
+
+/// `#project p/n.` or `#project a : body.`
+fn project(out: &mut String, p: &Project) {
+    out.push_str("#project ");
+    match p {
+        Project::Signature(sig) => signature(out, sig),
+        Project::Atom { atom, body: b } => {
+            symbolic(out, atom);
+            if !b.is_empty() {
+                out.push_str(" : ");
+                body(out, b);
+            }
+        }
+    }
+    out.push('.');
+}
+
+/// `#const name = term. [default|override]`
+fn const_def(out: &mut String, c: &ConstDef) {
+    out.push_str("#const ");
+    out.push_str(&c.name);
+    out.push_str(" = ");
+    term(out, &c.value);
+    out.push('.');
+    if c.annotated {
+        out.push_str(match c.kind {
+            ConstKind::Default => " [default]",
+            ConstKind::Override => " [override]",
+        });
+    }
+}
+
+/// `#external atom : body. [value]`
+fn external(out: &mut String, e: &External) {
+    out.push_str("#external ");
+    symbolic(out, &e.atom);
+    if !e.body.is_empty() {
+        out.push_str(" : ");
+        body(out, &e.body);
+    }
+    out.push('.');
+    if let Some(v) = &e.value {
+        out.push_str(" [");
+        term(out, v);
+        out.push(']');
+    }
+}
+
+/// `#heuristic atom : body. [weight@priority, modifier]`
+fn heuristic(out: &mut String, h: &Heuristic) {
+    out.push_str("#heuristic ");
+    symbolic(out, &h.atom);
+    if !h.body.is_empty() {
+        out.push_str(" : ");
+        body(out, &h.body);
+    }
+    out.push_str(". [");
+    weight(
+        out,
+        &h.weight,
+        &h.priority,
+        std::slice::from_ref(&h.modifier),
+    );
+    out.push(']');
+}
+
+/// `#edge (u, v) : body.`
+fn edge(out: &mut String, e: &Edge) {
+    out.push_str("#edge (");
+    term(out, &e.from);
+    out.push_str(", ");
+    term(out, &e.to);
+    out.push(')');
+    if !e.body.is_empty() {
+        out.push_str(" : ");
+        body(out, &e.body);
+    }
+    out.push('.');
+}
+
+/// `#include "file".` or `#include <name>.`
+fn include(out: &mut String, i: &Include) {
+    out.push_str("#include ");
+    if i.system {
+        out.push('<');
+        out.push_str(&i.path);
+        out.push('>');
+    } else {
+        string(out, &i.path);
+    }
+    out.push('.');
+}
+
+/// `#program name(params).`
+fn program_part(out: &mut String, p: &ProgramPart) {
+    out.push_str("#program ");
+    out.push_str(&p.name);
+    if !p.params.is_empty() {
+        out.push('(');
+        out.push_str(&p.params.join(", "));
+        out.push(')');
+    }
+    out.push('.');
+}
+
+/// A SPARC predicate declaration `name(#sort, ...).`
+fn predicate_decl(out: &mut String, p: &PredicateDecl) {
+    out.push_str(&p.name);
+    out.push('(');
+    for (i, s) in p.sorts.iter().enumerate() {
+        if i > 0 {
+            out.push_str(", ");
+        }
+        out.push('#');
+        out.push_str(s);
+    }
+    out.push_str(").");
 }
 
 /// `w@p, t1, t2`

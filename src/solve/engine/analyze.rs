@@ -12,58 +12,58 @@ impl Engine {
     /// `<= assumptions.len()`: walks the implication graph of `!a` back to the assumption
     /// decisions it rests on (every decision at these levels is an assumption).
     pub(super) fn analyze_final(&mut self, a: Lit) {
-        self.failed.clear();
-        self.failed.push(a);
+        self.an.failed.clear();
+        self.an.failed.push(a);
         let v0 = a.var();
-        if self.level[v0.index()] == 0 {
+        if self.asg.level[v0.index()] == 0 {
             return;
         }
-        let Some(&start) = self.trail_lim.first() else {
+        let Some(&start) = self.asg.trail_lim.first() else {
             return;
         };
         let mut marked: Vec<Var> = vec![v0];
-        self.seen[v0.index()] = 1;
+        self.an.seen[v0.index()] = 1;
         let mut reason = Vec::new();
-        for i in (start..self.trail.len()).rev() {
-            let x = self.trail[i];
+        for i in (start..self.asg.trail.len()).rev() {
+            let x = self.asg.trail[i];
             let v = x.var();
-            if self.seen[v.index()] == 0 {
+            if self.an.seen[v.index()] == 0 {
                 continue;
             }
-            if matches!(self.reason[v.index()], Reason::Decision) {
+            if matches!(self.asg.reason[v.index()], Reason::Decision) {
                 // An assumption (`!a` itself when both `a` and `!a` were assumed).
-                self.failed.push(x);
+                self.an.failed.push(x);
                 continue;
             }
             reason.clear();
             self.reason_lits(v, &mut reason);
             for &q in &reason {
                 let w = q.var();
-                if self.seen[w.index()] == 0 && self.level[w.index()] > 0 {
-                    self.seen[w.index()] = 1;
+                if self.an.seen[w.index()] == 0 && self.asg.level[w.index()] > 0 {
+                    self.an.seen[w.index()] = 1;
                     marked.push(w);
                 }
             }
         }
         for v in marked {
-            self.seen[v.index()] = 0;
+            self.an.seen[v.index()] = 0;
         }
     }
 
     // ---------------------------------------------------------------- analysis
 
-    /// First-UIP analysis of `self.conflict`; leaves the learnt clause in `self.learnt`
+    /// First-UIP analysis of `self.an.conflict`; leaves the learnt clause in `self.an.learnt`
     /// (asserting literal first, a literal of the backjump level second) and returns the
     /// backjump level. Works in reused buffers: no allocation per conflict once they are warm.
     pub(super) fn analyze(&mut self) -> u32 {
         let current = self.decision_level();
-        let mut learnt = std::mem::take(&mut self.learnt);
+        let mut learnt = std::mem::take(&mut self.an.learnt);
         learnt.clear();
         learnt.push(Lit::from_code(0));
         let mut counter = 0usize;
-        let mut index = self.trail.len();
-        let mut clause = std::mem::take(&mut self.conflict);
-        let mut to_clear = std::mem::take(&mut self.to_clear);
+        let mut index = self.asg.trail.len();
+        let mut clause = std::mem::take(&mut self.an.conflict);
+        let mut to_clear = std::mem::take(&mut self.an.to_clear);
         to_clear.clear();
         let mut p: Option<Lit> = None;
         loop {
@@ -72,11 +72,11 @@ impl Engine {
                     continue;
                 }
                 let v = q.var();
-                if self.seen[v.index()] == 0 && self.level[v.index()] > 0 {
-                    self.seen[v.index()] = 1;
+                if self.an.seen[v.index()] == 0 && self.asg.level[v.index()] > 0 {
+                    self.an.seen[v.index()] = 1;
                     to_clear.push(v);
                     self.bump_var(v);
-                    if self.level[v.index()] >= current {
+                    if self.asg.level[v.index()] >= current {
                         counter += 1;
                     } else {
                         learnt.push(q);
@@ -86,11 +86,11 @@ impl Engine {
             // Next literal of the current level on the trail.
             loop {
                 index -= 1;
-                if self.seen[self.trail[index].var().index()] != 0 {
+                if self.an.seen[self.asg.trail[index].var().index()] != 0 {
                     break;
                 }
             }
-            let pl = self.trail[index];
+            let pl = self.asg.trail[index];
             p = Some(pl);
             counter -= 1;
             if counter == 0 {
@@ -98,7 +98,7 @@ impl Engine {
                 break;
             }
             clause.clear();
-            match self.reason[pl.var().index()] {
+            match self.asg.reason[pl.var().index()] {
                 Reason::Long(cref) => {
                     self.bump_clause(cref);
                     self.update_lbd(cref, pl);
@@ -109,16 +109,16 @@ impl Engine {
             // The implied literal itself is not added, and the filter above skips it.
             self.reason_lits(pl.var(), &mut clause);
         }
-        self.conflict = clause;
+        self.an.conflict = clause;
         // Recursive minimisation: drop literals implied by the others.
         let mut abstract_levels = 0u64;
         for &l in &learnt[1..] {
-            abstract_levels |= 1u64 << (self.level[l.var().index()] & 63);
+            abstract_levels |= 1u64 << (self.asg.level[l.var().index()] & 63);
         }
         let mut kept = 1;
         for k in 1..learnt.len() {
             let l = learnt[k];
-            if matches!(self.reason[l.var().index()], Reason::Decision)
+            if matches!(self.asg.reason[l.var().index()], Reason::Decision)
                 || !self.redundant(l, abstract_levels, &mut to_clear)
             {
                 learnt[kept] = l;
@@ -128,25 +128,27 @@ impl Engine {
         learnt.truncate(kept);
         for &l in &learnt {
             let v = l.var();
-            self.occ[v.index()] += if l.is_neg() { -1 } else { 1 };
+            self.heur.occ[v.index()] += if l.is_neg() { -1 } else { 1 };
         }
         for &v in &to_clear {
-            self.seen[v.index()] = 0;
+            self.an.seen[v.index()] = 0;
         }
-        self.to_clear = to_clear;
+        self.an.to_clear = to_clear;
         // Put a literal of the highest remaining level second.
         let mut bt = 0;
         if learnt.len() > 1 {
             let mut best = 1;
             for k in 2..learnt.len() {
-                if self.level[learnt[k].var().index()] > self.level[learnt[best].var().index()] {
+                if self.asg.level[learnt[k].var().index()]
+                    > self.asg.level[learnt[best].var().index()]
+                {
                     best = k;
                 }
             }
             learnt.swap(1, best);
-            bt = self.level[learnt[1].var().index()];
+            bt = self.asg.level[learnt[1].var().index()];
         }
-        self.learnt = learnt;
+        self.an.learnt = learnt;
         bt
     }
 
@@ -157,42 +159,42 @@ impl Engine {
         abstract_levels: u64,
         to_clear: &mut Vec<Var>,
     ) -> bool {
-        let mut stack = std::mem::take(&mut self.min_stack);
-        let mut buf = std::mem::take(&mut self.min_buf);
+        let mut stack = std::mem::take(&mut self.an.min_stack);
+        let mut buf = std::mem::take(&mut self.an.min_buf);
         stack.clear();
         stack.push(l);
         let top = to_clear.len();
         let mut result = true;
         'outer: while let Some(q) = stack.pop() {
             buf.clear();
-            if self.deletion == Deletion::Basic {
+            if self.settings.deletion == Deletion::Basic {
                 // clasp counts a use of a clause in minimisation as in resolution.
-                if let Reason::Long(cref) = self.reason[q.var().index()] {
+                if let Reason::Long(cref) = self.asg.reason[q.var().index()] {
                     self.bump_clause(cref);
                 }
             }
             self.reason_lits(q.var(), &mut buf);
             for &r in &buf {
                 let v = r.var();
-                if self.seen[v.index()] != 0 || self.level[v.index()] == 0 {
+                if self.an.seen[v.index()] != 0 || self.asg.level[v.index()] == 0 {
                     continue;
                 }
-                let decision = matches!(self.reason[v.index()], Reason::Decision);
-                if !decision && (abstract_levels >> (self.level[v.index()] & 63)) & 1 == 1 {
-                    self.seen[v.index()] = 1;
+                let decision = matches!(self.asg.reason[v.index()], Reason::Decision);
+                if !decision && (abstract_levels >> (self.asg.level[v.index()] & 63)) & 1 == 1 {
+                    self.an.seen[v.index()] = 1;
                     to_clear.push(v);
                     stack.push(r);
                 } else {
                     for w in to_clear.drain(top..) {
-                        self.seen[w.index()] = 0;
+                        self.an.seen[w.index()] = 0;
                     }
                     result = false;
                     break 'outer;
                 }
             }
         }
-        self.min_stack = stack;
-        self.min_buf = buf;
+        self.an.min_stack = stack;
+        self.an.min_buf = buf;
         result
     }
 
@@ -206,43 +208,43 @@ impl Engine {
         if flags & FLAG_LEARNT == 0 || old <= 2 {
             return;
         }
-        self.lbd_stamp += 1;
-        let stamp = self.lbd_stamp;
+        self.an.lbd_stamp += 1;
+        let stamp = self.an.lbd_stamp;
         let len = self.clause_len(cref);
         let mut n = 0;
-        let skip_implied = self.deletion == Deletion::Basic;
+        let skip_implied = self.settings.deletion == Deletion::Basic;
         for k in 0..len {
             let l = self.clause_lit(cref, k);
             if skip_implied && l == implied {
                 continue;
             }
-            let lv = self.level[l.var().index()] as usize;
-            if lv >= self.level_seen.len() {
-                self.level_seen.resize(lv + 1, 0);
+            let lv = self.asg.level[l.var().index()] as usize;
+            if lv >= self.an.level_seen.len() {
+                self.an.level_seen.resize(lv + 1, 0);
             }
-            if self.level_seen[lv] != stamp {
-                self.level_seen[lv] = stamp;
+            if self.an.level_seen[lv] != stamp {
+                self.an.level_seen[lv] = stamp;
                 n += 1;
                 if n >= old {
                     return;
                 }
             }
         }
-        self.arena[cref as usize + 1] = (flags & 3) | (n << 2);
+        self.db.arena[cref as usize + 1] = (flags & 3) | (n << 2);
     }
 
     /// Number of distinct decision levels among `lits` (literal block distance).
     pub(super) fn lbd(&mut self, lits: &[Lit]) -> u32 {
-        self.lbd_stamp += 1;
-        let stamp = self.lbd_stamp;
+        self.an.lbd_stamp += 1;
+        let stamp = self.an.lbd_stamp;
         let mut n = 0;
         for l in lits {
-            let lv = self.level[l.var().index()] as usize;
-            if lv >= self.level_seen.len() {
-                self.level_seen.resize(lv + 1, 0);
+            let lv = self.asg.level[l.var().index()] as usize;
+            if lv >= self.an.level_seen.len() {
+                self.an.level_seen.resize(lv + 1, 0);
             }
-            if self.level_seen[lv] != stamp {
-                self.level_seen[lv] = stamp;
+            if self.an.level_seen[lv] != stamp {
+                self.an.level_seen[lv] = stamp;
                 n += 1;
             }
         }

@@ -13,39 +13,40 @@ impl Engine {
     // ---------------------------------------------------------------- clauses
 
     pub(super) fn clause_len(&self, cref: ClauseRef) -> usize {
-        self.arena[cref as usize] as usize
+        self.db.arena[cref as usize] as usize
     }
 
     pub(super) fn clause_lit(&self, cref: ClauseRef, i: usize) -> Lit {
-        Lit::from_code(self.arena[cref as usize + HEADER + i])
+        Lit::from_code(self.db.arena[cref as usize + HEADER + i])
     }
 
     pub(super) fn clause_flags(&self, cref: ClauseRef) -> u32 {
-        self.arena[cref as usize + 1]
+        self.db.arena[cref as usize + 1]
     }
 
     pub(super) fn alloc_clause(&mut self, lits: &[Lit], learnt: bool, lbd: u32) -> ClauseRef {
-        let cref = self.arena.len() as u32;
-        self.arena.push(lits.len() as u32);
-        self.arena
+        let cref = self.db.arena.len() as u32;
+        self.db.arena.push(lits.len() as u32);
+        self.db
+            .arena
             .push(if learnt { FLAG_LEARNT } else { 0 } | (lbd.min(1 << 20) << 2));
-        self.arena.push(match self.deletion {
+        self.db.arena.push(match self.settings.deletion {
             Deletion::Sorted => 0f32.to_bits(),
             // As clasp: a new clause counts one use per restart so far, so that new clauses
             // outrank old ones whose counts were halved.
-            Deletion::Basic => (1 + self.num_restarts).min(MAX_USES as u64) as u32,
+            Deletion::Basic => (1 + self.stats.num_restarts).min(MAX_USES as u64) as u32,
         });
-        self.arena.extend(lits.iter().map(|l| l.code() as u32));
-        self.watches[(lits[0]).code()].push(Watch {
+        self.db.arena.extend(lits.iter().map(|l| l.code() as u32));
+        self.db.watches[(lits[0]).code()].push(Watch {
             cref,
             other: lits[1],
         });
-        self.watches[(lits[1]).code()].push(Watch {
+        self.db.watches[(lits[1]).code()].push(Watch {
             cref,
             other: lits[0],
         });
         if learnt {
-            self.learnts.push(cref);
+            self.db.learnts.push(cref);
         }
         cref
     }
@@ -53,11 +54,11 @@ impl Engine {
     /// Watches the binary clause `a ∨ b` inline (no arena entry): each literal's list holds
     /// the other.
     pub(super) fn watch_binary(&mut self, a: Lit, b: Lit) {
-        self.watches[a.code()].push(Watch {
+        self.db.watches[a.code()].push(Watch {
             cref: u32::MAX,
             other: b,
         });
-        self.watches[b.code()].push(Watch {
+        self.db.watches[b.code()].push(Watch {
             cref: u32::MAX,
             other: a,
         });
@@ -82,7 +83,9 @@ impl Engine {
     /// its place in the arena.
     #[inline]
     pub fn add_clause(&mut self, lits: &[Lit]) -> bool {
-        if self.trail_lim.is_empty() && !self.inconsistent && lits.iter().any(|&l| self.val(l) == 1)
+        if self.asg.trail_lim.is_empty()
+            && !self.inconsistent
+            && lits.iter().any(|&l| self.val(l) == 1)
         {
             return true;
         }
@@ -98,7 +101,7 @@ impl Engine {
         if lits.iter().any(|&l| self.val(l) == 1) {
             return true;
         }
-        let mut c = std::mem::take(&mut self.clause_buf);
+        let mut c = std::mem::take(&mut self.db.clause_buf);
         c.clear();
         c.extend(lits.iter().copied().filter(|&l| self.val(l) == 0));
         c.sort_unstable();
@@ -108,7 +111,7 @@ impl Engine {
         let ok = if tautology {
             true
         } else {
-            self.num_clauses += 1;
+            self.stats.num_clauses += 1;
             match c.len() {
                 0 => {
                     self.inconsistent = true;
@@ -130,7 +133,7 @@ impl Engine {
             }
         };
         c.clear();
-        self.clause_buf = c;
+        self.db.clause_buf = c;
         ok
     }
 
@@ -151,14 +154,14 @@ impl Engine {
         if !all_false || !distinct || c.len() < 2 || self.decision_level() == 0 {
             return self.add_clause(lits);
         }
-        c.sort_by_key(|&l| std::cmp::Reverse(self.level[l.var().index()]));
-        let top = self.level[c[0].var().index()];
-        let second = self.level[c[1].var().index()];
+        c.sort_by_key(|&l| std::cmp::Reverse(self.asg.level[l.var().index()]));
+        let top = self.asg.level[c[0].var().index()];
+        let second = self.asg.level[c[1].var().index()];
         if top == second || second == 0 {
             return self.add_clause(lits);
         }
         self.backtrack(second);
-        self.num_clauses += 1;
+        self.stats.num_clauses += 1;
         // Now c[0] is unassigned and the rest false: the clause is asserting, never conflicting.
         let conflicting = self.add_clause_in_search(&mut c, false);
         debug_assert!(!conflicting);
@@ -167,7 +170,7 @@ impl Engine {
 
     /// Adds a clause while a search is in progress (loop nogoods): watches are chosen so that
     /// the clause is propagating or conflicting as appropriate. Returns true when the clause is
-    /// conflicting under the current assignment (the conflict is then in `self.conflict`).
+    /// conflicting under the current assignment (the conflict is then in `self.an.conflict`).
     pub(super) fn add_clause_in_search(&mut self, lits: &mut [Lit], learnt: bool) -> bool {
         // Order: true literals first, then unassigned, then false by decreasing level.
         lits.sort_by_key(|&l| {
@@ -175,11 +178,11 @@ impl Engine {
             match v {
                 1 => 0u64,
                 0 => 1,
-                _ => 2 + (u32::MAX - self.level[l.var().index()]) as u64,
+                _ => 2 + (u32::MAX - self.asg.level[l.var().index()]) as u64,
             }
         });
         if lits.is_empty() {
-            self.conflict.clear();
+            self.an.conflict.clear();
             return true;
         }
         if lits.len() == 1 {
@@ -189,8 +192,8 @@ impl Engine {
                 return false;
             }
             if self.val(l) == -1 && self.level_of(l) == 0 {
-                self.conflict.clear();
-                self.conflict.push(l);
+                self.an.conflict.clear();
+                self.an.conflict.push(l);
                 return true;
             }
             self.backtrack(0);
@@ -200,7 +203,7 @@ impl Engine {
         if self.val(lits[0]) == 0 && self.val(lits[1]) == -1 {
             // Asserting: imply lits[0] at the level where the clause became unit, so the
             // implication survives backtracking above that level (the watches stay valid).
-            let level = self.level[lits[1].var().index()];
+            let level = self.asg.level[lits[1].var().index()];
             if level < self.decision_level() {
                 self.backtrack(level);
             }
@@ -208,8 +211,8 @@ impl Engine {
         let reason = self.attach(lits, learnt, lits.len() as u32);
         let (v0, v1) = (self.val(lits[0]), self.val(lits[1]));
         if v0 == -1 {
-            self.conflict.clear();
-            self.conflict.extend_from_slice(lits);
+            self.an.conflict.clear();
+            self.an.conflict.extend_from_slice(lits);
             return true;
         }
         if v0 == 0 && v1 == -1 {
@@ -250,14 +253,14 @@ impl Engine {
             self.inconsistent = true;
             return false;
         }
-        let id = match self.free_weights.last() {
+        let id = match self.wc.free_weights.last() {
             Some(&id) => id,
-            None => self.weights.len() as u32,
+            None => self.wc.weights.len() as u32,
         };
         let (mut sum_true, mut sum_false) = (0u64, 0u64);
         for &(l, w) in &norm {
             let slot = self.weight_slot_of(l.var());
-            self.weight_watch[slot].push(WeightWatch {
+            self.wc.weight_watch[slot].push(WeightWatch {
                 id,
                 lit: l,
                 weight: w,
@@ -269,7 +272,7 @@ impl Engine {
             }
         }
         let slot = self.weight_slot_of(head.var());
-        self.weight_watch[slot].push(WeightWatch {
+        self.wc.weight_watch[slot].push(WeightWatch {
             id,
             lit: head,
             weight: 0,
@@ -286,13 +289,13 @@ impl Engine {
             bound,
             removed: false,
         };
-        if id as usize == self.weights.len() {
-            self.weights.push(c);
+        if id as usize == self.wc.weights.len() {
+            self.wc.weights.push(c);
         } else {
-            self.free_weights.pop();
-            self.weights[id as usize] = c;
+            self.wc.free_weights.pop();
+            self.wc.weights[id as usize] = c;
         }
-        self.num_clauses += 1;
+        self.stats.num_clauses += 1;
         if self.propagate_weight(id as usize) || self.propagate().is_some() {
             self.inconsistent = true;
             return false;
@@ -302,11 +305,11 @@ impl Engine {
 
     /// The index in `weight_watch` of `v`'s occurrence list, made on first use.
     pub(super) fn weight_slot_of(&mut self, v: Var) -> usize {
-        if self.weight_slot[v.index()] == NO_SLOT {
-            self.weight_slot[v.index()] = self.weight_watch.len() as u32;
-            self.weight_watch.push(Vec::new());
+        if self.wc.weight_slot[v.index()] == NO_SLOT {
+            self.wc.weight_slot[v.index()] = self.wc.weight_watch.len() as u32;
+            self.wc.weight_watch.push(Vec::new());
         }
-        self.weight_slot[v.index()] as usize
+        self.wc.weight_slot[v.index()] as usize
     }
 
     /// Detaches the weight constraint whose literal is `head` (if `add_weight` made one), at
@@ -317,27 +320,27 @@ impl Engine {
         self.backtrack(0);
         // The constraint is found through its head's occurrence (weight 0, which no body
         // literal has); its slot is reused by a later `add_weight`.
-        let slot = self.weight_slot[head.var().index()];
+        let slot = self.wc.weight_slot[head.var().index()];
         if slot == NO_SLOT {
             return;
         }
-        let Some(id) = self.weight_watch[slot as usize]
+        let Some(id) = self.wc.weight_watch[slot as usize]
             .iter()
-            .find(|w| w.weight == 0 && w.lit == head && !self.weights[w.id as usize].removed)
+            .find(|w| w.weight == 0 && w.lit == head && !self.wc.weights[w.id as usize].removed)
             .map(|w| w.id as usize)
         else {
             return;
         };
-        self.free_weights.push(id as u32);
-        let c = &mut self.weights[id];
+        self.wc.free_weights.push(id as u32);
+        let c = &mut self.wc.weights[id];
         c.removed = true;
         let lits = std::mem::take(&mut c.lits);
         let idu = id as u32;
         for v in lits.iter().map(|&(l, _)| l.var()).chain([head.var()]) {
             // The slot stays (possibly with an empty list): propagation then finds nothing.
-            let slot = self.weight_slot[v.index()];
+            let slot = self.wc.weight_slot[v.index()];
             if slot != NO_SLOT {
-                self.weight_watch[slot as usize].retain(|w| w.id != idu);
+                self.wc.weight_watch[slot as usize].retain(|w| w.id != idu);
             }
         }
     }

@@ -10,16 +10,16 @@ impl Engine {
     // ---------------------------------------------------------------- heuristic
 
     pub(super) fn bump_var(&mut self, v: Var) {
-        let a = &mut self.activity[v.index()];
-        *a += self.var_inc;
+        let a = &mut self.heur.activity[v.index()];
+        *a += self.heur.var_inc;
         if *a > 1e100 {
-            for x in self.activity.iter_mut() {
+            for x in self.heur.activity.iter_mut() {
                 *x *= 1e-100;
             }
-            self.var_inc *= 1e-100;
+            self.heur.var_inc *= 1e-100;
         }
-        if self.heap_pos[v.index()] != NO_SLOT {
-            self.heap_up(self.heap_pos[v.index()] as usize);
+        if self.heur.heap_pos[v.index()] != NO_SLOT {
+            self.heap_up(self.heur.heap_pos[v.index()] as usize);
         }
     }
 
@@ -28,12 +28,12 @@ impl Engine {
             return;
         }
         let i = cref as usize + 2;
-        if self.deletion == Deletion::Basic {
-            self.arena[i] = (self.arena[i] + 1).min(MAX_USES);
+        if self.settings.deletion == Deletion::Basic {
+            self.db.arena[i] = (self.db.arena[i] + 1).min(MAX_USES);
             return;
         }
-        let a = f32::from_bits(self.arena[i]) + self.cla_inc as f32;
-        self.arena[i] = a.to_bits();
+        let a = f32::from_bits(self.db.arena[i]) + self.db.cla_inc as f32;
+        self.db.arena[i] = a.to_bits();
         if a > 1e20 {
             self.rescale_clause_activities();
         }
@@ -42,80 +42,80 @@ impl Engine {
     /// Scales every learnt clause's and loop formula's activity, and the increment, by 1e-20.
     /// Under `Deletion::Basic` the clauses hold use counters, which are left alone.
     pub(super) fn rescale_clause_activities(&mut self) {
-        if self.deletion == Deletion::Sorted {
-            for &c in &self.learnts {
+        if self.settings.deletion == Deletion::Sorted {
+            for &c in &self.db.learnts {
                 let k = c as usize + 2;
-                self.arena[k] = (f32::from_bits(self.arena[k]) * 1e-20).to_bits();
+                self.db.arena[k] = (f32::from_bits(self.db.arena[k]) * 1e-20).to_bits();
             }
         }
         self.rescale_loop_activities();
-        self.cla_inc *= 1e-20;
+        self.db.cla_inc *= 1e-20;
     }
 
     pub(super) fn heap_less(&self, a: Var, b: Var) -> bool {
-        self.activity[a.index()] > self.activity[b.index()]
+        self.heur.activity[a.index()] > self.heur.activity[b.index()]
     }
 
     pub(super) fn heap_insert(&mut self, v: Var) {
-        if self.heap_pos[v.index()] != NO_SLOT || !self.decidable[v.index()] {
+        if self.heur.heap_pos[v.index()] != NO_SLOT || !self.heur.decidable[v.index()] {
             return;
         }
-        self.heap.push(v);
-        let i = self.heap.len() - 1;
-        self.heap_pos[v.index()] = i as u32;
+        self.heur.heap.push(v);
+        let i = self.heur.heap.len() - 1;
+        self.heur.heap_pos[v.index()] = i as u32;
         self.heap_up(i);
     }
 
     pub(super) fn heap_up(&mut self, mut i: usize) {
-        let v = self.heap[i];
+        let v = self.heur.heap[i];
         while i > 0 {
             let parent = (i - 1) / 2;
-            if !self.heap_less(v, self.heap[parent]) {
+            if !self.heap_less(v, self.heur.heap[parent]) {
                 break;
             }
-            self.heap[i] = self.heap[parent];
-            self.heap_pos[self.heap[i].index()] = i as u32;
+            self.heur.heap[i] = self.heur.heap[parent];
+            self.heur.heap_pos[self.heur.heap[i].index()] = i as u32;
             i = parent;
         }
-        self.heap[i] = v;
-        self.heap_pos[v.index()] = i as u32;
+        self.heur.heap[i] = v;
+        self.heur.heap_pos[v.index()] = i as u32;
     }
 
     pub(super) fn heap_down(&mut self, mut i: usize) {
-        let v = self.heap[i];
-        let n = self.heap.len();
+        let v = self.heur.heap[i];
+        let n = self.heur.heap.len();
         loop {
             let l = 2 * i + 1;
             if l >= n {
                 break;
             }
             let r = l + 1;
-            let c = if r < n && self.heap_less(self.heap[r], self.heap[l]) {
+            let c = if r < n && self.heap_less(self.heur.heap[r], self.heur.heap[l]) {
                 r
             } else {
                 l
             };
-            if !self.heap_less(self.heap[c], v) {
+            if !self.heap_less(self.heur.heap[c], v) {
                 break;
             }
-            self.heap[i] = self.heap[c];
-            self.heap_pos[self.heap[i].index()] = i as u32;
+            self.heur.heap[i] = self.heur.heap[c];
+            self.heur.heap_pos[self.heur.heap[i].index()] = i as u32;
             i = c;
         }
-        self.heap[i] = v;
-        self.heap_pos[v.index()] = i as u32;
+        self.heur.heap[i] = v;
+        self.heur.heap_pos[v.index()] = i as u32;
     }
 
     pub(super) fn heap_pop(&mut self) -> Option<Var> {
-        if self.heap.is_empty() {
+        if self.heur.heap.is_empty() {
             return None;
         }
-        let top = self.heap[0];
-        let last = self.heap.pop().expect("non-empty heap");
-        self.heap_pos[top.index()] = NO_SLOT;
-        if !self.heap.is_empty() {
-            self.heap[0] = last;
-            self.heap_pos[last.index()] = 0;
+        let top = self.heur.heap[0];
+        let last = self.heur.heap.pop().expect("non-empty heap");
+        self.heur.heap_pos[top.index()] = NO_SLOT;
+        if !self.heur.heap.is_empty() {
+            self.heur.heap[0] = last;
+            self.heur.heap_pos[last.index()] = 0;
             self.heap_down(0);
         }
         Some(top)
@@ -123,25 +123,25 @@ impl Engine {
 
     pub(super) fn next_random(&mut self) -> u64 {
         // xorshift64*.
-        self.rng ^= self.rng >> 12;
-        self.rng ^= self.rng << 25;
-        self.rng ^= self.rng >> 27;
-        self.rng.wrapping_mul(0x2545_F491_4F6C_DD1D)
+        self.heur.rng ^= self.heur.rng >> 12;
+        self.heur.rng ^= self.heur.rng << 25;
+        self.heur.rng ^= self.heur.rng >> 27;
+        self.heur.rng.wrapping_mul(0x2545_F491_4F6C_DD1D)
     }
 
     /// The sign to decide `v` with: its saved phase, else (with `sign_from_learnts`) the
     /// polarity occurring more often in learnt clauses, else its initial sign.
     pub(super) fn decision_sign(&self, v: Var) -> bool {
         let i = v.index();
-        match self.dom_sign.get(i) {
+        match self.heur.dom_sign.get(i) {
             Some(1) => return true,
             Some(-1) => return false,
             _ => {}
         }
-        if self.sign_from_learnts && !self.phase_saved[i] && self.occ[i] != 0 {
-            return self.occ[i] > 0;
+        if self.settings.sign_from_learnts && !self.heur.phase_saved[i] && self.heur.occ[i] != 0 {
+            return self.heur.occ[i] > 0;
         }
-        self.phase[i]
+        self.heur.phase[i]
     }
 
     /// A domain preference (clingo's `#heuristic` under `--heuristic=domain`): decide `v`
@@ -149,40 +149,42 @@ impl Engine {
     /// positive; the default level is 0).
     pub fn prefer(&mut self, v: Var, level: Option<i32>, sign: Option<bool>) {
         if let Some(s) = sign {
-            if self.dom_sign.len() <= v.index() {
-                self.dom_sign.resize(v.index() + 1, 0);
+            if self.heur.dom_sign.len() <= v.index() {
+                self.heur.dom_sign.resize(v.index() + 1, 0);
             }
-            self.dom_sign[v.index()] = if s { 1 } else { -1 };
+            self.heur.dom_sign[v.index()] = if s { 1 } else { -1 };
         }
         if let Some(l) = level {
-            self.dom_order.retain(|&(_, x)| x != v);
+            self.heur.dom_order.retain(|&(_, x)| x != v);
             if l > 0 {
-                self.dom_order.push((l, v));
+                self.heur.dom_order.push((l, v));
                 // Stable: equal levels keep the order the statements gave.
-                self.dom_order.sort_by_key(|&(l, _)| std::cmp::Reverse(l));
+                self.heur
+                    .dom_order
+                    .sort_by_key(|&(l, _)| std::cmp::Reverse(l));
             }
         }
     }
 
     pub(super) fn pick_branch(&mut self) -> Option<Lit> {
-        for k in 0..self.dom_order.len() {
-            let v = self.dom_order[k].1;
-            if self.val(v.positive()) == 0 && self.decidable[v.index()] {
+        for k in 0..self.heur.dom_order.len() {
+            let v = self.heur.dom_order[k].1;
+            if self.val(v.positive()) == 0 && self.heur.decidable[v.index()] {
                 return Some(Lit::new(v, self.decision_sign(v)));
             }
         }
-        if self.random_permille > 0
-            && !self.heap.is_empty()
-            && self.next_random() % 1000 < self.random_permille as u64
+        if self.settings.random_permille > 0
+            && !self.heur.heap.is_empty()
+            && self.next_random() % 1000 < self.settings.random_permille as u64
         {
-            let k = (self.next_random() % self.heap.len() as u64) as usize;
-            let v = self.heap[k];
-            if self.val(v.positive()) == 0 && self.decidable[v.index()] {
+            let k = (self.next_random() % self.heur.heap.len() as u64) as usize;
+            let v = self.heur.heap[k];
+            if self.val(v.positive()) == 0 && self.heur.decidable[v.index()] {
                 return Some(Lit::new(v, self.decision_sign(v)));
             }
         }
         while let Some(v) = self.heap_pop() {
-            if self.val(v.positive()) == 0 && self.decidable[v.index()] {
+            if self.val(v.positive()) == 0 && self.heur.decidable[v.index()] {
                 return Some(Lit::new(v, self.decision_sign(v)));
             }
         }
@@ -195,15 +197,15 @@ impl Engine {
     pub(super) fn seed_activities(&mut self) {
         let n = self.num_vars();
         let mut occ = vec![0u64; 2 * n];
-        for (code, ws) in self.watches.iter().enumerate() {
+        for (code, ws) in self.db.watches.iter().enumerate() {
             // Each binary clause appears in two lists; count it once per literal.
             occ[code] += ws.iter().filter(|w| w.cref == u32::MAX).count() as u64;
         }
         let mut pos = 0usize;
-        while pos < self.arena.len() {
-            let len = self.arena[pos] as usize;
-            if self.arena[pos + 1] & (FLAG_DELETED | FLAG_LEARNT) == 0 {
-                for &c in &self.arena[pos + HEADER..pos + HEADER + len] {
+        while pos < self.db.arena.len() {
+            let len = self.db.arena[pos] as usize;
+            if self.db.arena[pos + 1] & (FLAG_DELETED | FLAG_LEARNT) == 0 {
+                for &c in &self.db.arena[pos + HEADER..pos + HEADER + len] {
                     occ[c as usize] += 1;
                 }
             }
@@ -220,12 +222,12 @@ impl Engine {
             return;
         }
         for (v, s) in score.into_iter().enumerate() {
-            self.activity[v] = s / max;
+            self.heur.activity[v] = s / max;
         }
-        let vars: Vec<Var> = self.heap.clone();
-        self.heap.clear();
+        let vars: Vec<Var> = self.heur.heap.clone();
+        self.heur.heap.clear();
         for v in vars {
-            self.heap_pos[v.index()] = NO_SLOT;
+            self.heur.heap_pos[v.index()] = NO_SLOT;
         }
         for v in 0..n {
             self.heap_insert(Var::new(v));

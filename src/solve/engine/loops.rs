@@ -132,12 +132,12 @@ enum Event {
 impl Engine {
     /// Learns the loop nogoods of an unfounded set `atoms` with external literals `ext`
     /// during search: as one shared formula when that is smaller and safe, else one clause per
-    /// atom. Returns true on conflict (in `self.conflict`).
+    /// atom. Returns true on conflict (in `self.an.conflict`).
     pub(super) fn add_loop_set(&mut self, atoms: &[Lit], ext: &[Lit]) -> bool {
         let n = atoms.len();
-        self.loop_nogoods += n as u64;
+        self.stats.loop_nogoods += n as u64;
         let overlap = || atoms.iter().any(|a| ext.iter().any(|l| l.var() == a.var()));
-        if !self.shared_loops || n < 2 || ext.len() < 2 || overlap() {
+        if !self.settings.shared_loops || n < 2 || ext.len() < 2 || overlap() {
             for &a in atoms {
                 let not_a = !a;
                 let mut c = Vec::with_capacity(ext.len() + 1);
@@ -146,8 +146,8 @@ impl Engine {
                 // literal shared with `a`'s negation); a clause never repeats a literal.
                 c.extend(ext.iter().copied().filter(|&l| l != not_a));
                 for &l in &c {
-                    self.occ[l.var().index()] += if l.is_neg() { -1 } else { 1 };
-                    if self.score_other {
+                    self.heur.occ[l.var().index()] += if l.is_neg() { -1 } else { 1 };
+                    if self.settings.score_other {
                         self.bump_var(l.var());
                     }
                 }
@@ -159,12 +159,12 @@ impl Engine {
         }
         // The sign score and `--score-other` count the formula as the clauses it stands for.
         for &a in atoms {
-            self.occ[a.var().index()] -= 1;
+            self.heur.occ[a.var().index()] -= 1;
         }
         for &l in ext {
-            self.occ[l.var().index()] += if l.is_neg() { -(n as i32) } else { n as i32 };
+            self.heur.occ[l.var().index()] += if l.is_neg() { -(n as i32) } else { n as i32 };
         }
-        if self.score_other {
+        if self.settings.score_other {
             for _ in 0..n {
                 for &a in atoms {
                     self.bump_var(a.var());
@@ -180,7 +180,7 @@ impl Engine {
         b.sort_by_key(|&l| match self.val(l) {
             1 => 0u64,
             0 => 1,
-            _ => 2 + (u32::MAX - self.level[l.var().index()]) as u64,
+            _ => 2 + (u32::MAX - self.asg.level[l.var().index()]) as u64,
         });
         let (v0, v1) = (self.val(b[0]), self.val(b[1]));
         let mut conflict_atom = None;
@@ -188,19 +188,19 @@ impl Engine {
             // Every external literal is false: the formula is unit on the atoms at the level
             // of the latest one. A true atom assigned no later is a conflict; atoms made true
             // later are undone by the backjump.
-            let level = self.level[b[0].var().index()];
+            let level = self.asg.level[b[0].var().index()];
             conflict_atom = atoms
                 .iter()
                 .copied()
-                .filter(|&a| self.val(a) == 1 && self.level[a.var().index()] <= level)
-                .min_by_key(|&a| self.level[a.var().index()]);
+                .filter(|&a| self.val(a) == 1 && self.asg.level[a.var().index()] <= level)
+                .min_by_key(|&a| self.asg.level[a.var().index()]);
             if conflict_atom.is_none() && level < self.decision_level() {
                 self.backtrack(level);
             }
         }
         let mut lits = b.clone();
         lits.extend_from_slice(atoms);
-        let id = self.loops.insert(LoopFormula {
+        let id = self.db.loops.insert(LoopFormula {
             lits: lits.into_boxed_slice(),
             nb: b.len() as u32,
             act: 0,
@@ -210,9 +210,9 @@ impl Engine {
         });
         self.watch_loop(id);
         if let Some(a) = conflict_atom {
-            self.conflict.clear();
-            self.conflict.push(!a);
-            self.conflict.extend_from_slice(&b);
+            self.an.conflict.clear();
+            self.an.conflict.push(!a);
+            self.an.conflict.extend_from_slice(&b);
             return true;
         }
         if v0 == -1 {
@@ -223,7 +223,7 @@ impl Engine {
             }
         } else if v0 == 0 && v1 == -1 {
             if let Some(k) = atoms.iter().position(|&a| self.val(a) == 1) {
-                self.loops.items[id as usize].act = k as u32;
+                self.db.loops.items[id as usize].act = k as u32;
                 self.assign(b[0], Reason::Loop(id));
             }
         }
@@ -235,14 +235,14 @@ impl Engine {
     /// made true again).
     fn watch_loop(&mut self, id: u32) {
         let cref = LOOP_TAG | id;
-        let f = &self.loops.items[id as usize];
+        let f = &self.db.loops.items[id as usize];
         let (b0, b1) = (f.lits[0], f.lits[1]);
-        self.watches[b0.code()].push(Watch { cref, other: b1 });
-        self.watches[b1.code()].push(Watch { cref, other: b0 });
+        self.db.watches[b0.code()].push(Watch { cref, other: b1 });
+        self.db.watches[b1.code()].push(Watch { cref, other: b0 });
         for k in f.nb as usize..f.lits.len() {
             let a = f.lits[k];
-            if self.values[a.code()] != 1 || self.level[a.var().index()] > 0 {
-                self.watches[(!a).code()].push(Watch { cref, other: b0 });
+            if self.asg.values[a.code()] != 1 || self.asg.level[a.var().index()] > 0 {
+                self.db.watches[(!a).code()].push(Watch { cref, other: b0 });
             }
         }
     }
@@ -250,7 +250,7 @@ impl Engine {
     /// Visits the loop-formula watches in the list of `f`, which just became false (called by
     /// `propagate_clauses` when the list has some). Returns true on conflict.
     pub(super) fn propagate_loops(&mut self, f: Lit) -> bool {
-        let mut ws = std::mem::take(&mut self.watches[f.code()]);
+        let mut ws = std::mem::take(&mut self.db.watches[f.code()]);
         let n = ws.len();
         let (mut i, mut j) = (0, 0);
         let mut conflict = false;
@@ -281,8 +281,8 @@ impl Engine {
         }
         super::keep_unvisited(&mut ws, i, j);
         // New watches went to non-false literals only.
-        debug_assert!(self.watches[f.code()].is_empty());
-        self.watches[f.code()] = ws;
+        debug_assert!(self.db.watches[f.code()].is_empty());
+        self.db.watches[f.code()] = ws;
         conflict
     }
 
@@ -290,14 +290,14 @@ impl Engine {
     /// negation of one of its atoms.
     fn loop_event(&mut self, id: u32, f: Lit) -> Event {
         let idu = id as usize;
-        let mut lits = std::mem::take(&mut self.loops.items[idu].lits);
-        let nb = self.loops.items[idu].nb as usize;
+        let mut lits = std::mem::take(&mut self.db.loops.items[idu].lits);
+        let nb = self.db.loops.items[idu].nb as usize;
         let event = if lits[0] == f || lits[1] == f {
             self.loop_ext_false(id, &mut lits, nb, f)
         } else {
             self.loop_atom_true(id, &lits, nb, !f)
         };
-        self.loops.items[idu].lits = lits;
+        self.db.loops.items[idu].lits = lits;
         event
     }
 
@@ -313,7 +313,7 @@ impl Engine {
         for k in 2..nb {
             if self.val(lits[k]) != -1 {
                 lits.swap(1, k);
-                self.watches[lits[1].code()].push(Watch {
+                self.db.watches[lits[1].code()].push(Watch {
                     cref: LOOP_TAG | id,
                     other,
                 });
@@ -322,7 +322,7 @@ impl Engine {
         }
         if self.val(other) == 0 {
             if let Some(k) = lits[nb..].iter().position(|&a| self.val(a) == 1) {
-                self.loops.items[id as usize].act = k as u32;
+                self.db.loops.items[id as usize].act = k as u32;
                 self.assign(other, Reason::Loop(id));
             }
             return Event::Keep(other);
@@ -332,9 +332,9 @@ impl Engine {
             let a = lits[k];
             match self.val(a) {
                 1 => {
-                    self.conflict.clear();
-                    self.conflict.push(!a);
-                    self.conflict.extend_from_slice(&lits[..nb]);
+                    self.an.conflict.clear();
+                    self.an.conflict.push(!a);
+                    self.an.conflict.extend_from_slice(&lits[..nb]);
                     return Event::Conflict;
                 }
                 0 => self.assign(!a, Reason::Loop(id)),
@@ -372,14 +372,14 @@ impl Engine {
                     .iter()
                     .position(|&x| x == a)
                     .expect("the watched atom is in its formula");
-                self.loops.items[id as usize].act = k as u32;
+                self.db.loops.items[id as usize].act = k as u32;
                 self.assign(l, Reason::Loop(id));
                 Event::Keep(l)
             }
             None => {
-                self.conflict.clear();
-                self.conflict.push(!a);
-                self.conflict.extend_from_slice(&lits[..nb]);
+                self.an.conflict.clear();
+                self.an.conflict.push(!a);
+                self.an.conflict.extend_from_slice(&lits[..nb]);
                 Event::Conflict
             }
         }
@@ -387,7 +387,7 @@ impl Engine {
 
     /// Appends the false literals of the reason of `v`, implied by formula `id`.
     pub(super) fn loop_reason_lits(&self, id: u32, v: crate::solve::lit::Var, out: &mut Vec<Lit>) {
-        let f = &self.loops.items[id as usize];
+        let f = &self.db.loops.items[id as usize];
         let ext = f.ext();
         if ext.iter().any(|l| l.var() == v) {
             out.extend(ext.iter().copied().filter(|l| l.var() != v));
@@ -399,8 +399,8 @@ impl Engine {
 
     /// Bumps the activity of formula `id` (met as a reason in conflict analysis).
     pub(super) fn bump_loop(&mut self, id: u32) {
-        let f = &mut self.loops.items[id as usize];
-        f.activity += self.cla_inc as f32;
+        let f = &mut self.db.loops.items[id as usize];
+        f.activity += self.db.cla_inc as f32;
         if f.activity > 1e20 {
             self.rescale_clause_activities();
         }
@@ -408,21 +408,21 @@ impl Engine {
 
     /// Scales the loop formulas' activities like the clauses' (by 1e-20).
     pub(super) fn rescale_loop_activities(&mut self) {
-        for f in self.loops.items.iter_mut() {
+        for f in self.db.loops.items.iter_mut() {
             f.activity *= 1e-20;
         }
     }
 
     /// Whether formula `id` is the reason of a current assignment.
     fn loop_locked(&self, id: u32) -> bool {
-        let f = &self.loops.items[id as usize];
+        let f = &self.db.loops.items[id as usize];
         let r = Reason::Loop(id);
         f.ext()
             .iter()
-            .any(|&l| self.val(l) == 1 && self.reason[l.var().index()] == r)
+            .any(|&l| self.val(l) == 1 && self.asg.reason[l.var().index()] == r)
             || f.atoms()
                 .iter()
-                .any(|&a| self.val(a) == -1 && self.reason[a.var().index()] == r)
+                .any(|&a| self.val(a) == -1 && self.asg.reason[a.var().index()] == r)
     }
 
     /// Deletes about half of the loop formulas, the worst first (high LBD, then low
@@ -430,6 +430,7 @@ impl Engine {
     /// with learnt clauses. Their watches are dropped by the caller's pass over the lists.
     pub(super) fn reduce_loops(&mut self) {
         let mut cands: Vec<(u32, f32, u32)> = self
+            .db
             .loops
             .items
             .iter()
@@ -448,7 +449,7 @@ impl Engine {
                 break;
             }
             if lbd > 2 && !self.loop_locked(id) {
-                self.loops.remove(id);
+                self.db.loops.remove(id);
                 removed += 1;
             }
         }
@@ -459,11 +460,11 @@ impl Engine {
     /// formulas, turns one-literal external parts into binary clauses, and watches the rest
     /// again.
     pub(super) fn simplify_loops(&mut self) {
-        for id in 0..self.loops.items.len() as u32 {
-            if !self.loops.items[id as usize].live {
+        for id in 0..self.db.loops.items.len() as u32 {
+            if !self.db.loops.items[id as usize].live {
                 continue;
             }
-            let f = std::mem::take(&mut self.loops.items[id as usize]);
+            let f = std::mem::take(&mut self.db.loops.items[id as usize]);
             let ext: Vec<Lit> = f
                 .ext()
                 .iter()
@@ -478,16 +479,16 @@ impl Engine {
                 .collect();
             // A formula mentioning a retired variable goes, as a clause would (`retire_vars`).
             let satisfied = ext.iter().any(|&l| self.val(l) == 1)
-                || f.lits.iter().any(|&l| self.retired[l.var().index()]);
+                || f.lits.iter().any(|&l| self.pool.retired[l.var().index()]);
             // Put the formula back so that `remove` accounts for it.
-            self.loops.items[id as usize] = f;
+            self.db.loops.items[id as usize] = f;
             if satisfied || atoms.is_empty() {
-                self.loops.remove(id);
+                self.db.loops.remove(id);
                 continue;
             }
             debug_assert!(ext.len() >= 2 || atoms.iter().all(|&a| self.val(a) == 0));
             if ext.len() < 2 {
-                self.loops.remove(id);
+                self.db.loops.remove(id);
                 if let Some(&b) = ext.first() {
                     for &a in &atoms {
                         self.watch_binary(!a, b);
@@ -498,9 +499,9 @@ impl Engine {
             let nb = ext.len() as u32;
             let mut lits = ext;
             lits.extend_from_slice(&atoms);
-            let f = &mut self.loops.items[id as usize];
-            self.loops.clauses -= f.lits.len() - f.nb as usize;
-            self.loops.clauses += lits.len() - nb as usize;
+            let f = &mut self.db.loops.items[id as usize];
+            self.db.loops.clauses -= f.lits.len() - f.nb as usize;
+            self.db.loops.clauses += lits.len() - nb as usize;
             f.lits = lits.into_boxed_slice();
             f.nb = nb;
             f.act = 0;

@@ -3,7 +3,7 @@
 //! and the unfounded-set propagator at every fixpoint.
 //!
 //! Invariants: when a long clause is the reason of an assignment, the implied literal is at
-//! position 0; on conflict the falsified clause is left in `Engine::conflict`.
+//! position 0; on conflict the falsified clause is left in `Analysis::conflict`.
 
 use super::*;
 
@@ -11,29 +11,29 @@ impl Engine {
     // ---------------------------------------------------------------- propagation
 
     /// Unit propagation to fixpoint, including weight constraints and unfounded sets. Returns
-    /// `Some(())` on conflict, with the falsified clause in `self.conflict`.
+    /// `Some(())` on conflict, with the falsified clause in `self.an.conflict`.
     pub fn propagate(&mut self) -> Option<()> {
         loop {
             if self.propagate_units() {
                 return Some(());
             }
-            self.unfounded.as_ref()?;
-            let start = self.uf_clean_upto.min(self.trail.len());
-            if !self.uf_dirty
-                && !self.trail[start..]
+            self.uf.unfounded.as_ref()?;
+            let start = self.uf.uf_clean_upto.min(self.asg.trail.len());
+            if !self.uf.uf_dirty
+                && !self.asg.trail[start..]
                     .iter()
-                    .any(|l| self.uf_relevant[l.var().index()])
+                    .any(|l| self.uf.uf_relevant[l.var().index()])
             {
-                self.uf_clean_upto = self.trail.len();
+                self.uf.uf_clean_upto = self.asg.trail.len();
                 return None;
             }
-            let mut uf = self.unfounded.take().expect("checked above");
+            let mut uf = self.uf.unfounded.take().expect("checked above");
             let sets = uf.check(self, start);
-            self.unfounded = Some(uf);
+            self.uf.unfounded = Some(uf);
             // The propagator has seen everything up to here; the nogoods' own assignments
             // (and a backjump they may cause) start the next segment.
-            self.uf_clean_upto = self.trail.len();
-            self.uf_dirty = false;
+            self.uf.uf_clean_upto = self.asg.trail.len();
+            self.uf.uf_dirty = false;
             if sets.is_empty() {
                 return None;
             }
@@ -48,20 +48,20 @@ impl Engine {
     /// Clause and weight propagation; returns true on conflict.
     #[inline(never)]
     pub(super) fn propagate_units(&mut self) -> bool {
-        while self.qhead < self.trail.len() {
-            let p = self.trail[self.qhead];
-            self.qhead += 1;
-            self.propagations += 1;
+        while self.asg.qhead < self.asg.trail.len() {
+            let p = self.asg.trail[self.asg.qhead];
+            self.asg.qhead += 1;
+            self.stats.propagations += 1;
             // The watch lists of the next few literals: their headers were prefetched when
             // they were assigned; now start loading the lists themselves.
-            let end = self.trail.len().min(self.qhead + PREFETCH_AHEAD);
-            let mut k = self.pf_head.max(self.qhead);
+            let end = self.asg.trail.len().min(self.asg.qhead + PREFETCH_AHEAD);
+            let mut k = self.asg.pf_head.max(self.asg.qhead);
             while k < end {
-                prefetch(self.watches[(!self.trail[k]).code()].as_ptr());
+                prefetch(self.db.watches[(!self.asg.trail[k]).code()].as_ptr());
                 k += 1;
             }
-            self.pf_head = k;
-            let slot = self.weight_slot[p.var().index()];
+            self.asg.pf_head = k;
+            let slot = self.wc.weight_slot[p.var().index()];
             if slot == NO_SLOT {
                 if self.propagate_clauses(p) {
                     return true;
@@ -71,9 +71,9 @@ impl Engine {
             // Count `p` in its weight constraints now: backtracking undoes every processed
             // position, even when a clause conflict stops this iteration early.
             let slot = slot as usize;
-            for k in 0..self.weight_watch[slot].len() {
-                let w = self.weight_watch[slot][k];
-                let c = &mut self.weights[w.id as usize];
+            for k in 0..self.wc.weight_watch[slot].len() {
+                let w = self.wc.weight_watch[slot][k];
+                let c = &mut self.wc.weights[w.id as usize];
                 if w.lit == p {
                     c.sum_true += w.weight;
                 } else {
@@ -83,7 +83,7 @@ impl Engine {
             if self.propagate_clauses(p) {
                 return true;
             }
-            let wl = std::mem::take(&mut self.weight_watch[slot]);
+            let wl = std::mem::take(&mut self.wc.weight_watch[slot]);
             let mut wconflict = false;
             for w in &wl {
                 if self.weight_may_propagate(w.id as usize) && self.propagate_weight(w.id as usize)
@@ -92,7 +92,7 @@ impl Engine {
                     break;
                 }
             }
-            self.weight_watch[slot] = wl;
+            self.wc.weight_watch[slot] = wl;
             if wconflict {
                 return true;
             }
@@ -102,22 +102,28 @@ impl Engine {
 
     /// Visits the watch list of `!p` after `p` became true: binary clauses assign or conflict
     /// directly, long clauses are skipped when their blocker is true, else get a new watch or
-    /// assign their other watched literal. Returns true on conflict (in `self.conflict`).
+    /// assign their other watched literal. Returns true on conflict (in `self.an.conflict`).
     pub(super) fn propagate_clauses(&mut self, p: Lit) -> bool {
         let false_lit = !p;
         let false_code = false_lit.code() as u32;
-        let dl = self.trail_lim.len() as u32;
-        let mut ws = std::mem::take(&mut self.watches[false_lit.code()]);
+        let dl = self.asg.trail_lim.len() as u32;
+        let mut ws = std::mem::take(&mut self.db.watches[false_lit.code()]);
         // Disjoint borrows of the fields the loop touches, so that assignments do not force
         // the compiler to reload every vector through `self`.
         let Engine {
-            values,
-            level,
-            reason,
-            trail,
-            arena,
-            watches,
-            conflict: conflict_lits,
+            asg:
+                Assignment {
+                    values,
+                    level,
+                    reason,
+                    trail,
+                    ..
+                },
+            db: ClauseDb { arena, watches, .. },
+            an: Analysis {
+                conflict: conflict_lits,
+                ..
+            },
             ..
         } = self;
         let n = ws.len();
@@ -218,8 +224,8 @@ impl Engine {
         keep_unvisited(&mut ws, i, j);
         // No watch of `false_lit` was added during the loop: new watches go to non-false
         // literals only.
-        debug_assert!(self.watches[false_lit.code()].is_empty());
-        self.watches[false_lit.code()] = ws;
+        debug_assert!(self.db.watches[false_lit.code()].is_empty());
+        self.db.watches[false_lit.code()] = ws;
         if loop_watches && !conflict {
             return self.propagate_loops(false_lit);
         }
@@ -228,7 +234,7 @@ impl Engine {
 
     /// Whether the counters allow a propagation or conflict of the constraint (cheap test).
     pub(super) fn weight_may_propagate(&self, id: usize) -> bool {
-        let c = &self.weights[id];
+        let c = &self.wc.weights[id];
         let max = c.total - c.sum_false;
         if c.sum_true >= c.bound || max < c.bound {
             return true;
@@ -246,7 +252,7 @@ impl Engine {
     /// remaining ones happen when the lagging assignments are processed. Literals are sorted by
     /// decreasing weight, so the scans stop at the first literal too light to matter.
     pub(super) fn propagate_weight(&mut self, id: usize) -> bool {
-        let c = &self.weights[id];
+        let c = &self.wc.weights[id];
         let head = c.head;
         let bound = c.bound;
         let sum_true = c.sum_true;
@@ -257,11 +263,11 @@ impl Engine {
                 1 => {}
                 0 => self.assign_weight_implied(head, None, id, true),
                 _ => {
-                    let mut r = std::mem::take(&mut self.conflict);
+                    let mut r = std::mem::take(&mut self.an.conflict);
                     r.clear();
                     r.push(head);
                     self.weight_lits(id, true, &mut r);
-                    self.conflict = r;
+                    self.an.conflict = r;
                     return true;
                 }
             }
@@ -272,11 +278,11 @@ impl Engine {
                 -1 => {}
                 0 => self.assign_weight_implied(!head, None, id, false),
                 _ => {
-                    let mut r = std::mem::take(&mut self.conflict);
+                    let mut r = std::mem::take(&mut self.an.conflict);
                     r.clear();
                     r.push(!head);
                     self.weight_lits(id, false, &mut r);
-                    self.conflict = r;
+                    self.an.conflict = r;
                     return true;
                 }
             }
@@ -287,8 +293,8 @@ impl Engine {
             // hold: weight > max - bound. The explanation (the false literals) does not change
             // while these literals become true.
             let slack = max - bound;
-            for k in 0..self.weights[id].lits.len() {
-                let (l, w) = self.weights[id].lits[k];
+            for k in 0..self.wc.weights[id].lits.len() {
+                let (l, w) = self.wc.weights[id].lits[k];
                 if w <= slack {
                     break;
                 }
@@ -301,8 +307,8 @@ impl Engine {
             // weight >= bound - sum_true. The explanation (the true literals) does not change
             // while these literals become false.
             let gap = bound - sum_true;
-            for k in 0..self.weights[id].lits.len() {
-                let (l, w) = self.weights[id].lits[k];
+            for k in 0..self.wc.weights[id].lits.len() {
+                let (l, w) = self.wc.weights[id].lits[k];
                 if w < gap {
                     break;
                 }
@@ -318,8 +324,8 @@ impl Engine {
     /// the negations of its currently true literals (both are false literals).
     pub(super) fn weight_lits(&self, id: usize, of_true: bool, out: &mut Vec<Lit>) {
         let want: i8 = if of_true { 1 } else { -1 };
-        for &(l, _) in &self.weights[id].lits {
-            if self.values[l.code()] == want {
+        for &(l, _) in &self.wc.weights[id].lits {
+            if self.asg.values[l.code()] == want {
                 out.push(if of_true { !l } else { l });
             }
         }
@@ -335,34 +341,34 @@ impl Engine {
         of_true: bool,
     ) {
         let v = l.var().index();
-        if self.stored_slot[v] == NO_SLOT {
-            self.stored_slot[v] = self.stored.len() as u32;
-            self.stored.push(Vec::new());
+        if self.asg.stored_slot[v] == NO_SLOT {
+            self.asg.stored_slot[v] = self.asg.stored.len() as u32;
+            self.asg.stored.push(Vec::new());
         }
-        let slot = self.stored_slot[v] as usize;
-        let mut r = std::mem::take(&mut self.stored[slot]);
+        let slot = self.asg.stored_slot[v] as usize;
+        let mut r = std::mem::take(&mut self.asg.stored[slot]);
         r.clear();
         r.push(l);
         r.extend(extra);
         self.weight_lits(id, of_true, &mut r);
-        self.stored[slot] = r;
+        self.asg.stored[slot] = r;
         self.assign(l, Reason::Stored);
     }
 
     /// Appends the false literals of the reason of `v` (excluding `v` itself) to `out`.
     pub(super) fn reason_lits(&self, v: Var, out: &mut Vec<Lit>) {
-        match self.reason[v.index()] {
+        match self.asg.reason[v.index()] {
             Reason::Decision => {}
             Reason::Binary(l) => out.push(l),
             Reason::Long(cref) => {
                 // The implied literal is at position 0 of its reason (module invariant).
                 let c = cref as usize;
-                let lits = &self.arena[c + HEADER..c + HEADER + self.arena[c] as usize];
+                let lits = &self.db.arena[c + HEADER..c + HEADER + self.db.arena[c] as usize];
                 debug_assert_eq!(Lit::from_code(lits[0]).var(), v);
                 out.extend(lits[1..].iter().map(|&x| Lit::from_code(x)));
             }
             Reason::Stored => out.extend(
-                self.stored[self.stored_slot[v.index()] as usize]
+                self.asg.stored[self.asg.stored_slot[v.index()] as usize]
                     .iter()
                     .copied()
                     .filter(|l| l.var() != v),

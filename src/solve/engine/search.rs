@@ -28,7 +28,7 @@ impl Engine {
     }
 
     pub(super) fn should_restart(&mut self, lbd: Option<u32>) -> bool {
-        match &mut self.restarts {
+        match &mut self.sched.restarts {
             Restarts::Never => false,
             Restarts::Luby { unit, index, left } => {
                 if lbd.is_some() {
@@ -50,13 +50,16 @@ impl Engine {
                 if let Some(l) = lbd {
                     let l = l as f64;
                     *fast += (l - *fast) / 32.0;
-                    *slow += (l - *slow) / 10000.0f64.min(self.conflicts as f64 + 1.0);
+                    *slow += (l - *slow) / 10000.0f64.min(self.stats.conflicts as f64 + 1.0);
                     *since += 1;
-                    let t = self.conflict_trail as f64;
-                    if self.restart_blocking && self.conflicts > 10000 && t > 1.4 * *trail {
+                    let t = self.an.conflict_trail as f64;
+                    if self.settings.restart_blocking
+                        && self.stats.conflicts > 10000
+                        && t > 1.4 * *trail
+                    {
                         *since = 0;
                     }
-                    *trail += (t - *trail) / 5000.0f64.min(self.conflicts as f64 + 1.0);
+                    *trail += (t - *trail) / 5000.0f64.min(self.stats.conflicts as f64 + 1.0);
                 }
                 if *since >= 50 && *fast > 1.25 * *slow {
                     *since = 0;
@@ -68,33 +71,36 @@ impl Engine {
     }
 
     pub(super) fn limit_reached(&mut self) -> bool {
-        if let Some(flag) = &self.portfolio_stop {
+        if let Some(flag) = &self.limits.portfolio_stop {
             if flag.load(Ordering::Relaxed) {
                 return true;
             }
         }
-        if let Some(flag) = &self.interrupt {
+        if let Some(flag) = &self.limits.interrupt {
             if flag.load(Ordering::Relaxed) {
-                self.interrupted = true;
+                self.limits.interrupted = true;
                 return true;
             }
         }
-        if let Some(d) = self.deadline {
+        if let Some(d) = self.limits.deadline {
             if Instant::now() >= d {
                 return true;
             }
         }
-        self.conflict_limit.is_some_and(|n| self.conflicts >= n)
+        self.limits
+            .conflict_limit
+            .is_some_and(|n| self.stats.conflicts >= n)
     }
 
     /// Switches to clasp's phase handling for the rest of the search call
     /// (`Engine::phase_switch`).
     fn switch_phases(&mut self) {
-        self.phase_switched = Some((self.save_progress, self.sign_from_learnts));
-        self.phase_switches += 1;
-        self.save_progress = PHASE_SWITCH_PROGRESS;
-        self.sign_from_learnts = true;
-        self.phase_saved.iter_mut().for_each(|s| *s = false);
+        self.heur.phase_switched =
+            Some((self.settings.save_progress, self.settings.sign_from_learnts));
+        self.stats.phase_switches += 1;
+        self.settings.save_progress = PHASE_SWITCH_PROGRESS;
+        self.settings.sign_from_learnts = true;
+        self.heur.phase_saved.iter_mut().for_each(|s| *s = false);
     }
 
     /// Searches for a total assignment extending `assumptions`. On `Sat` the assignment stays
@@ -107,13 +113,16 @@ impl Engine {
     /// 0 (after [`Engine::add_clause_resuming`], with the same assumptions as the search that
     /// made this assignment).
     pub fn search_from(&mut self, assumptions: &[Lit], resume: bool) -> SearchResult {
-        self.interrupted = false;
-        self.failed.clear();
-        if let Some((save_progress, sign)) = self.phase_switched.take() {
-            self.save_progress = save_progress;
-            self.sign_from_learnts = sign;
+        self.limits.interrupted = false;
+        self.an.failed.clear();
+        if let Some((save_progress, sign)) = self.heur.phase_switched.take() {
+            self.settings.save_progress = save_progress;
+            self.settings.sign_from_learnts = sign;
         }
-        let switch_at = self.phase_switch.map(|k| self.conflicts.saturating_add(k));
+        let switch_at = self
+            .settings
+            .phase_switch
+            .map(|k| self.stats.conflicts.saturating_add(k));
         if self.inconsistent {
             return SearchResult::Unsat;
         }
@@ -125,8 +134,8 @@ impl Engine {
             }
             self.maybe_simplify();
         }
-        if self.init_moms {
-            self.init_moms = false;
+        if self.settings.init_moms {
+            self.settings.init_moms = false;
             self.seed_activities();
         }
         let mut ticks: u64 = 0;
@@ -137,16 +146,17 @@ impl Engine {
                 return SearchResult::Unknown;
             }
             if self.propagate().is_some() {
-                self.conflicts += 1;
-                if switch_at == Some(self.conflicts) {
+                self.stats.conflicts += 1;
+                if switch_at == Some(self.stats.conflicts) {
                     self.switch_phases();
                 }
                 // The conflict may lie entirely below the current level (clauses added during
                 // search); move down to its highest level first.
                 let max_level = self
+                    .an
                     .conflict
                     .iter()
-                    .map(|l| self.level[l.var().index()])
+                    .map(|l| self.asg.level[l.var().index()])
                     .max()
                     .unwrap_or(0);
                 if max_level == 0 {
@@ -157,9 +167,9 @@ impl Engine {
                 if max_level < self.decision_level() {
                     self.backtrack(max_level);
                 }
-                self.conflict_trail = self.trail.len();
+                self.an.conflict_trail = self.asg.trail.len();
                 let bt = self.analyze();
-                let learnt = std::mem::take(&mut self.learnt);
+                let learnt = std::mem::take(&mut self.an.learnt);
                 let lbd = self.lbd(&learnt);
                 self.backtrack(bt);
                 if learnt.len() == 1 {
@@ -172,38 +182,41 @@ impl Engine {
                     };
                     self.assign(learnt[0], r);
                 }
-                self.learnt = learnt;
-                self.var_inc /= self.var_decay;
-                self.cla_inc /= 0.999;
+                self.an.learnt = learnt;
+                self.heur.var_inc /= self.heur.var_decay;
+                self.db.cla_inc /= 0.999;
                 if self.should_restart(Some(lbd)) {
-                    self.num_restarts += 1;
+                    self.stats.num_restarts += 1;
                     self.backtrack(0);
                 }
                 continue;
             }
             self.maybe_simplify();
-            match self.reduce {
+            match self.settings.reduce {
                 ReduceSchedule::Size => {
                     // A loop formula counts as the clauses it stands for.
-                    let learnts = self.learnts.len() + self.loops.clauses;
-                    if learnts as f64 >= self.max_learnts + self.trail.len() as f64 {
+                    let learnts = self.db.learnts.len() + self.db.loops.clauses;
+                    if learnts as f64 >= self.sched.max_learnts + self.asg.trail.len() as f64 {
                         self.reduce_db();
-                        self.max_learnts *= 1.1;
+                        self.sched.max_learnts *= 1.1;
                     }
                 }
                 ReduceSchedule::Conflicts { first, inc, repeat } => {
-                    if self.next_reduce == 0 {
-                        self.next_reduce = self.conflicts + first;
-                        self.reduce_len = repeat;
+                    if self.sched.next_reduce == 0 {
+                        self.sched.next_reduce = self.stats.conflicts + first;
+                        self.sched.reduce_len = repeat;
                     }
-                    if self.conflicts >= self.next_reduce {
-                        self.reductions += 1;
-                        self.reduce_idx += 1;
-                        if self.reduce_len > 0 && self.reduce_idx >= self.reduce_len {
-                            self.reduce_idx = 0;
-                            self.reduce_len += 1;
+                    if self.stats.conflicts >= self.sched.next_reduce {
+                        self.sched.reductions += 1;
+                        self.sched.reduce_idx += 1;
+                        if self.sched.reduce_len > 0
+                            && self.sched.reduce_idx >= self.sched.reduce_len
+                        {
+                            self.sched.reduce_idx = 0;
+                            self.sched.reduce_len += 1;
                         }
-                        self.next_reduce = self.conflicts + first + self.reduce_idx * inc;
+                        self.sched.next_reduce =
+                            self.stats.conflicts + first + self.sched.reduce_idx * inc;
                         self.reduce_db();
                     }
                 }
@@ -214,7 +227,7 @@ impl Engine {
                 match self.val(a) {
                     1 => {
                         // Already true: open an empty level to keep levels aligned.
-                        self.trail_lim.push(self.trail.len());
+                        self.asg.trail_lim.push(self.asg.trail.len());
                         continue;
                     }
                     -1 => {
@@ -230,8 +243,8 @@ impl Engine {
                     None => return SearchResult::Sat,
                 }
             };
-            self.decisions += 1;
-            self.trail_lim.push(self.trail.len());
+            self.stats.decisions += 1;
+            self.asg.trail_lim.push(self.asg.trail.len());
             self.assign(next, Reason::Decision);
         }
     }

@@ -86,9 +86,9 @@ fn both_deletion_policies_stay_sound_under_frequent_reductions() {
     for deletion in [Deletion::Sorted, Deletion::Basic] {
         for (first, inc, repeat) in [(20, 5, 3), (50, 0, 0)] {
             let mut e = Engine::new();
-            e.deletion = deletion;
-            e.reduce = ReduceSchedule::Conflicts { first, inc, repeat };
-            e.restarts = Restarts::Luby {
+            e.settings.deletion = deletion;
+            e.settings.reduce = ReduceSchedule::Conflicts { first, inc, repeat };
+            e.sched.restarts = Restarts::Luby {
                 unit: 16,
                 index: 0,
                 left: 16,
@@ -96,13 +96,13 @@ fn both_deletion_policies_stay_sound_under_frequent_reductions() {
             pigeons(&mut e, 7, 6);
             assert_eq!(e.search(&[]), SearchResult::Unsat, "{deletion:?}");
             assert!(
-                e.reductions > 3,
+                e.sched.reductions > 3,
                 "the test needs reductions: {}",
-                e.reductions
+                e.sched.reductions
             );
             let mut e = Engine::new();
-            e.deletion = deletion;
-            e.reduce = ReduceSchedule::Conflicts { first, inc, repeat };
+            e.settings.deletion = deletion;
+            e.settings.reduce = ReduceSchedule::Conflicts { first, inc, repeat };
             let v = pigeons(&mut e, 6, 6);
             assert_eq!(e.search(&[]), SearchResult::Sat, "{deletion:?}");
             for j in 0..6 {
@@ -120,25 +120,28 @@ fn phase_switch_lasts_one_search_call() {
     // 6 pigeons in 5 holes take well over 20 conflicts: the switch happens once, in the call
     // that needs them, and the next call starts with the configured phase handling again.
     let mut e = Engine::new();
-    e.phase_switch = Some(20);
+    e.settings.phase_switch = Some(20);
     pigeons(&mut e, 6, 5);
     assert_eq!(e.search(&[]), SearchResult::Unsat);
     assert!(
-        e.conflicts > 20,
+        e.stats.conflicts > 20,
         "the test needs conflicts: {}",
-        e.conflicts
+        e.stats.conflicts
     );
-    assert_eq!(e.phase_switches, 1);
-    assert_eq!(e.save_progress, PHASE_SWITCH_PROGRESS);
-    assert!(e.sign_from_learnts);
+    assert_eq!(e.stats.phase_switches, 1);
+    assert_eq!(e.settings.save_progress, PHASE_SWITCH_PROGRESS);
+    assert!(e.settings.sign_from_learnts);
     // The next call starts with the configured values (here left as by a switched call).
     let mut e2 = Engine::new();
     let w = pigeons(&mut e2, 5, 5);
-    e2.phase_switched = Some((0, false));
-    e2.save_progress = PHASE_SWITCH_PROGRESS;
-    e2.sign_from_learnts = true;
+    e2.heur.phase_switched = Some((0, false));
+    e2.settings.save_progress = PHASE_SWITCH_PROGRESS;
+    e2.settings.sign_from_learnts = true;
     assert_eq!(e2.search(&[]), SearchResult::Sat);
-    assert_eq!((e2.save_progress, e2.sign_from_learnts), (0, false));
+    assert_eq!(
+        (e2.settings.save_progress, e2.settings.sign_from_learnts),
+        (0, false)
+    );
     assert!(w.iter().any(|x| e2.value(x.positive()) == Some(true)));
 }
 
@@ -162,7 +165,7 @@ fn weight_constraint_propagates() {
 
 /// Opens a decision level and decides `l` (as `search` does).
 fn decide(e: &mut Engine, l: Lit) {
-    e.trail_lim.push(e.trail.len());
+    e.asg.trail_lim.push(e.asg.trail.len());
     e.assign(l, Reason::Decision);
     assert!(e.propagate().is_none());
 }
@@ -172,7 +175,7 @@ fn shared_loop_formula_propagates_atoms_and_external_bodies() {
     // Unfounded set {a1, a2} with external bodies b1, b2, b3: the loop nogoods are
     // a1 -> b1 | b2 | b3 and a2 -> b1 | b2 | b3, learnt as one formula (hand-derived).
     let mut e = Engine::new();
-    e.shared_loops = true;
+    e.settings.shared_loops = true;
     let v = lits(&mut e, 5);
     let (a1, a2) = (v[0].positive(), v[1].positive());
     let (b1, b2, b3) = (v[2].positive(), v[3].positive(), v[4].positive());
@@ -181,7 +184,7 @@ fn shared_loop_formula_propagates_atoms_and_external_bodies() {
     decide(&mut e, !b3);
     // Every external body false: both atoms false, at the level of the latest body.
     assert!(!e.add_loop_set(&[a1, a2], &[b1, b2, b3]));
-    assert_eq!(e.loops.live, 1, "one formula, not two clauses");
+    assert_eq!(e.db.loops.live, 1, "one formula, not two clauses");
     assert_eq!(e.value(a1), Some(false));
     assert_eq!(e.value(a2), Some(false));
     assert_eq!(e.level_of(a1), 3);
@@ -205,7 +208,7 @@ fn shared_loop_formula_propagates_atoms_and_external_bodies() {
     decide(&mut e, !b3);
     assert!(e.value(a2) == Some(false) && e.value(a1) == Some(false));
     e.backtrack(1);
-    e.trail_lim.push(e.trail.len());
+    e.asg.trail_lim.push(e.asg.trail.len());
     for l in [a1, !b2, !b3] {
         e.assign(l, Reason::Decision);
     }
@@ -218,7 +221,7 @@ fn shared_loop_formula_propagates_atoms_and_external_bodies() {
     e.assign(!b1, Reason::Decision);
     assert!(e.propagate().is_none());
     e.simplify();
-    assert_eq!(e.loops.live, 1);
+    assert_eq!(e.db.loops.live, 1);
     decide(&mut e, !b2);
     decide(&mut e, !b3);
     assert_eq!(e.value(a1), Some(false));

@@ -37,8 +37,8 @@ impl Solver {
                         Some(true) => return Next::Model,
                         Some(false) => {}
                         None => {
-                            self.engine.interrupted =
-                                self.engine.interrupted
+                            self.engine.limits.interrupted =
+                                self.engine.limits.interrupted
                                     || self.config.interrupt.as_ref().is_some_and(|f| {
                                         f.load(std::sync::atomic::Ordering::Relaxed)
                                     });
@@ -148,8 +148,8 @@ impl Solver {
             in_m[a as usize] = true;
         }
         let mut sub = Engine::new();
-        sub.deadline = self.engine.deadline;
-        sub.interrupt = self.engine.interrupt.clone();
+        sub.limits.deadline = self.engine.limits.deadline;
+        sub.limits.interrupt = self.engine.limits.interrupt.clone();
         let vars: Vec<Option<Lit>> = (0..=self.prog.num_atoms as usize)
             .map(|a| {
                 if in_m[a] {
