@@ -10,7 +10,6 @@ use super::parser::{starts_with, Parser};
 use super::{NotUnderstood, Question};
 use crate::control::Symbol;
 use crate::explain::lexicon::{Lexicon, Token};
-use crate::explain::pattern::SymbolExt;
 
 /// The result of a pattern that may have run out of matching input.
 pub(super) type Step<T> = Option<T>;
