@@ -17,6 +17,7 @@ pub mod check;
 pub mod fuzzing;
 pub mod parser;
 pub mod parts;
+pub mod switches;
 pub mod translate;
 
 pub use check::{check, Checked, HorizonMode, Options, Switches};

@@ -332,7 +332,7 @@ pub fn why_no_plan(
 ) -> Result<Answer, HistoryError> {
     let v = Verbalizer::new(lexicon);
     let mut np = NoPlan::new(problem, goal, horizon)?;
-    // "1 step", "3 steps": the templates say "at most {horizon}".
+    // "1 step", "3 steps": the templates say "at most {steps}".
     let h = match horizon {
         1 => "1 step".to_string(),
         n => format!("{n} steps"),
@@ -340,7 +340,7 @@ pub fn why_no_plan(
     let Some(core) = np.minimal_core() else {
         return Ok(Answer {
             kind: "no_plan",
-            text: v.template("plan_exists", &[("horizon", &h)]),
+            text: v.template("plan_exists", &[("steps", &h)]),
             literals: Vec::new(),
             tree: None,
         });
@@ -348,7 +348,7 @@ pub fn why_no_plan(
     if core.is_empty() {
         return Ok(Answer {
             kind: "no_plan",
-            text: v.template("no_plan_always", &[("horizon", &h)]),
+            text: v.template("no_plan_always", &[("steps", &h)]),
             literals: Vec::new(),
             tree: None,
         });
@@ -373,7 +373,7 @@ pub fn why_no_plan(
         text: v.template(
             "no_plan",
             &[
-                ("horizon", &h),
+                ("steps", &h),
                 ("reasons", &super::english::join_and(&reasons)),
             ],
         ),

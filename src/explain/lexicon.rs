@@ -52,9 +52,9 @@ pub const TEMPLATES: &[(&str, &[&str])] = &[
     ("what_if_same", &["action", "step"]),
     ("what_if_impossible", &["action", "step", "reason"]),
     ("what_if_stuck", &["next"]),
-    ("no_plan", &["horizon", "reasons"]),
-    ("no_plan_always", &["horizon"]),
-    ("plan_exists", &["horizon"]),
+    ("no_plan", &["steps", "reasons"]),
+    ("no_plan_always", &["steps"]),
+    ("plan_exists", &["steps"]),
     ("learned_axiom", &["label", "strength", "axiom"]),
 ];
 
