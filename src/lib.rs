@@ -20,6 +20,11 @@ pub mod explain;
 pub mod experiment;
 pub mod cli;
 
+// The front door: what a program that solves, plans or explains starts from.
+pub use action::{HorizonMode, Options, Switches};
+pub use control::{Control, ControlConfig, Model, Part, Symbol};
+pub use plan::{PlanConfig, Problem};
+
 /// README.md as documentation, so its Rust example runs as a doctest (`cargo test --doc`);
 /// its shell commands are run by `tests/readme.rs`.
 #[doc = include_str!("../README.md")]
