@@ -607,6 +607,8 @@ fn run_steps(
     // belief: a minimal plan without them is preferred, so the robot does not put an object
     // where it just hid another again (the domain cannot predict occlusion).
     let mut tabu: Vec<Symbol> = Vec::new();
+    // The action executed last, with its step.
+    let mut last_action: Option<(u32, Symbol)> = None;
     let mut pending: VecDeque<Symbol> = VecDeque::new();
     let mut reason = Some("initial".to_string());
     // Looks taken since the last plan because the planner found none.
@@ -708,11 +710,10 @@ fn run_steps(
             // A fresh plan's first action is executed even so (the planner and the one-step
             // prediction share the domain, so this does not happen; the guard stops a loop).
             pending.clear();
-            let last = step
-                .checked_sub(1)
-                .and_then(|i| history.steps[i as usize].happened.as_deref())
-                .and_then(|a| Symbol::parse(a).ok())
-                .filter(|a| a.is("putdown", 3));
+            let last = last_action
+                .as_ref()
+                .filter(|(i, a)| step.checked_sub(1) == Some(*i) && a.is("putdown", 3))
+                .map(|(_, a)| a.clone());
             if let Some(putdown) = last {
                 if !tabu.contains(&putdown) {
                     tabu.push(putdown);
@@ -728,6 +729,7 @@ fn run_steps(
             Err(e) => return Ending::WorldError(e),
         };
         let action_text = action.to_string();
+        last_action = Some((step, action.clone()));
         {
             let record = &mut history.steps[step as usize];
             record.happened = Some(action_text.clone());

@@ -253,13 +253,7 @@ impl Bound {
                 let crate::action::ast::BodyItem::Lit(l) = item else {
                     continue;
                 };
-                let text: String = sources
-                    .get(l.atom.span.file)
-                    .slice(l.atom.span)
-                    .chars()
-                    .filter(|c| !c.is_whitespace())
-                    .collect();
-                let Ok(g) = Symbol::parse(&text) else {
+                let Some(g) = super::problem::symbol_of_atom(&l.atom) else {
                     continue;
                 };
                 let a = g.args();
