@@ -353,15 +353,13 @@ impl<'a> Parser<'a> {
                 "observed" => {
                     self.bump();
                     let lit = self.literal()?;
-                    self.expect_word("at")?;
-                    let step = self.term()?;
+                    let step = self.at_step()?;
                     return Ok(StatementKind::Observed { lit, step });
                 }
                 "happened" => {
                     self.bump();
                     let action = self.atom()?;
-                    self.expect_word("at")?;
-                    let step = self.term()?;
+                    let step = self.at_step()?;
                     return Ok(StatementKind::Happened { action, step });
                 }
                 "initially" => {
@@ -370,10 +368,7 @@ impl<'a> Parser<'a> {
                         self.expect_word("false")?;
                         let mut except = Vec::new();
                         if self.eat_word("except") {
-                            except.push(self.identifier()?);
-                            while self.eat(T::Comma) {
-                                except.push(self.identifier()?);
-                            }
+                            except = self.identifiers()?;
                         }
                         return Ok(StatementKind::InitialDefault { except });
                     }
@@ -435,15 +430,27 @@ impl<'a> Parser<'a> {
         Ok(StatementKind::Constraint { head, body })
     }
 
+    /// `name {, name}`
+    fn identifiers(&mut self) -> PResult<Vec<Name>> {
+        let mut names = vec![self.identifier()?];
+        while self.eat(T::Comma) {
+            names.push(self.identifier()?);
+        }
+        Ok(names)
+    }
+
+    /// `at step`
+    fn at_step(&mut self) -> PResult<Term> {
+        self.expect_word("at")?;
+        self.term()
+    }
+
     fn declaration(&mut self, kind: DeclKind) -> PResult<StatementKind> {
         let name = self.identifier()?;
         let mut params = Vec::new();
         if self.eat(T::LParen) {
             if !self.at(T::RParen) {
-                params.push(self.identifier()?);
-                while self.eat(T::Comma) {
-                    params.push(self.identifier()?);
-                }
+                params = self.identifiers()?;
             }
             self.expect(T::RParen, &["\")\"", "\",\""])?;
         }

@@ -372,18 +372,7 @@ impl Symbols {
             SymData::Inf => out.push_str("#inf"),
             SymData::Sup => out.push_str("#sup"),
             SymData::Num(n) => out.push_str(&n.to_string()),
-            SymData::Str(s) => {
-                out.push('"');
-                for c in self.names.resolve(s).chars() {
-                    match c {
-                        '"' => out.push_str("\\\""),
-                        '\\' => out.push_str("\\\\"),
-                        '\n' => out.push_str("\\n"),
-                        c => out.push(c),
-                    }
-                }
-                out.push('"');
-            }
+            SymData::Str(s) => crate::syntax::printer::string(out, self.names.resolve(s)),
             SymData::Fun { name, neg, len, .. } => {
                 if neg {
                     out.push('-');

@@ -525,8 +525,9 @@ fn terms(out: &mut String, ts: &[Term]) {
     }
 }
 
-/// A string literal with `\\`, `\"` and `\n` escaped.
-fn string(out: &mut String, s: &str) {
+/// A string literal with `\\`, `\"` and `\n` escaped (also how a ground string symbol
+/// prints).
+pub fn string(out: &mut String, s: &str) {
     out.push('"');
     for c in s.chars() {
         match c {

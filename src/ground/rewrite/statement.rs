@@ -300,28 +300,12 @@ impl Rewriter<'_> {
                     );
                 }
                 ast::Project::Atom { atom, body } => {
-                    for a in unpool_atom(atom) {
-                        for b in unpool_body(body) {
-                            let mut vars = Vars::default();
-                            let mut out = Vec::new();
-                            let mut extra = Vec::new();
-                            let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
-                                continue;
-                            };
-                            if self.body(&b, &mut vars, &mut out).is_none() {
-                                continue;
-                            }
-                            // The atom ranges over its predicate's possible atoms and binds the
-                            // variables it alone has, as in gringo: `#project p(X).` projects
-                            // onto every p/1 atom.
-                            out.push(NLit::Pred {
-                                sign: Sign::Positive,
-                                atom: a.clone(),
-                            });
-                            out.append(&mut extra);
-                            self.finish(index, st.span, NHead::None, out, NKind::Project(a), vars);
-                        }
-                    }
+                    // The atom ranges over its predicate's possible atoms and binds the
+                    // variables it alone has, as in gringo: `#project p(X).` projects
+                    // onto every p/1 atom.
+                    self.atom_statements(index, st.span, atom, body, true, |_, a, _, _| {
+                        Some(NKind::Project(a))
+                    });
                 }
             },
             K::External(e) => self.external(index, st.span, e),
@@ -367,38 +351,64 @@ impl Rewriter<'_> {
         }
     }
 
-    /// `#external a : body. [value]`: one statement per unpooled atom and body.
-    fn external(&mut self, index: u32, span: Span, e: &ast::External) {
-        for a in unpool_atom(&e.atom) {
-            for b in unpool_body(&e.body) {
+    /// One statement per unpooled atom and body of `#project`, `#external` or `#heuristic`:
+    /// the atom, then the statement's own terms (`kind` rewrites them and gives the kind, or
+    /// `None` to drop the instance), then the body. With `ranges`, the atom also joins the
+    /// condition, so that the statement ranges over its predicate's atoms and binds the
+    /// variables the atom alone has, as in gringo (emit leaves it out of the condition).
+    fn atom_statements(
+        &mut self,
+        index: u32,
+        span: Span,
+        atom: &ast::SymbolicAtom,
+        body: &[ast::BodyLiteral],
+        ranges: bool,
+        mut kind: impl FnMut(&mut Self, NAtom, &mut Vars, &mut Vec<NLit>) -> Option<NKind>,
+    ) {
+        for a in unpool_atom(atom) {
+            for b in unpool_body(body) {
                 let mut vars = Vars::default();
                 let mut out = Vec::new();
                 let mut extra = Vec::new();
                 let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
                     continue;
                 };
-                // The value is a term of the instance (`[X]`); omitted, it is false.
-                let value = match &e.value {
-                    Some(t) => match self.term(t, &mut vars, &mut extra) {
-                        Some(v) => v,
-                        None => continue,
-                    },
-                    None => NTerm::Sym(self.syms.fun_str("false", false, &[])),
+                let ranging = ranges.then(|| a.clone());
+                let Some(kind) = kind(self, a, &mut vars, &mut extra) else {
+                    continue;
                 };
                 if self.body(&b, &mut vars, &mut out).is_none() {
                     continue;
                 }
+                if let Some(atom) = ranging {
+                    out.push(NLit::Pred {
+                        sign: Sign::Positive,
+                        atom,
+                    });
+                }
                 out.append(&mut extra);
-                self.finish(
-                    index,
-                    span,
-                    NHead::None,
-                    out,
-                    NKind::External(a, value),
-                    vars,
-                );
+                self.finish(index, span, NHead::None, out, kind, vars);
             }
         }
+    }
+
+    /// `#external a : body. [value]`: one statement per unpooled atom and body.
+    fn external(&mut self, index: u32, span: Span, e: &ast::External) {
+        self.atom_statements(
+            index,
+            span,
+            &e.atom,
+            &e.body,
+            false,
+            |rw, a, vars, extra| {
+                // The value is a term of the instance (`[X]`); omitted, it is false.
+                let value = match &e.value {
+                    Some(t) => rw.term(t, vars, extra)?,
+                    None => NTerm::Sym(rw.syms.fun_str("false", false, &[])),
+                };
+                Some(NKind::External(a, value))
+            },
+        );
     }
 
     /// `#heuristic a : body. [weight@priority, modifier]`: one statement per unpooled atom
@@ -420,45 +430,22 @@ impl Rewriter<'_> {
                  in which answer sets are found",
             ));
         }
-        for a in unpool_atom(&h.atom) {
-            for b in unpool_body(&h.body) {
-                let mut vars = Vars::default();
-                let mut out = Vec::new();
-                let mut extra = Vec::new();
-                let Some(a) = self.atom(&a, &mut vars, &mut extra) else {
-                    continue;
-                };
-                let Some(weight) = self.term(&h.weight, &mut vars, &mut extra) else {
-                    continue;
-                };
-                let priority = match &h.priority {
-                    Some(p) => self.term(p, &mut vars, &mut extra),
-                    None => Some(NTerm::Sym(self.syms.int(0))),
-                };
-                let Some(priority) = priority else { continue };
-                let Some(modifier) = self.term(&h.modifier, &mut vars, &mut extra) else {
-                    continue;
-                };
-                if self.body(&b, &mut vars, &mut out).is_none() {
-                    continue;
-                }
-                // As for #project, the atom ranges over its predicate's atoms (so the
-                // statement waits for them and binds its own variables, as gringo);
-                // emit leaves it out of the condition.
-                out.push(NLit::Pred {
-                    sign: Sign::Positive,
-                    atom: a.clone(),
-                });
-                out.append(&mut extra);
-                let kind = NKind::Heuristic {
-                    atom: a,
-                    weight,
-                    priority,
-                    modifier,
-                };
-                self.finish(index, span, NHead::None, out, kind, vars);
-            }
-        }
+        // As for #project, the atom ranges over its predicate's atoms (so the statement
+        // waits for them and binds its own variables, as gringo).
+        self.atom_statements(index, span, &h.atom, &h.body, true, |rw, a, vars, extra| {
+            let weight = rw.term(&h.weight, vars, extra)?;
+            let priority = match &h.priority {
+                Some(p) => rw.term(p, vars, extra)?,
+                None => NTerm::Sym(rw.syms.int(0)),
+            };
+            let modifier = rw.term(&h.modifier, vars, extra)?;
+            Some(NKind::Heuristic {
+                atom: a,
+                weight,
+                priority,
+                modifier,
+            })
+        });
     }
 }
 

@@ -9,9 +9,7 @@ use super::*;
 impl<'a> Parser<'a> {
     /// `:~ body. [w@p, terms]`
     pub(super) fn weak_constraint(&mut self) -> PResult<StatementKind> {
-        self.bump();
-        let body = self.body()?;
-        self.end_of_body()?;
+        let body = self.neck_body()?;
         self.expect(T::LBrack, &["["])?;
         let (weight, priority, terms) = self.weight_tuple()?;
         self.expect(T::RBrack, &["]"])?;
@@ -26,16 +24,21 @@ impl<'a> Parser<'a> {
     /// `w[@p] {, t}`
     pub(super) fn weight_tuple(&mut self) -> PResult<(Term, Option<Term>, Vec<Term>)> {
         let weight = self.term()?;
-        let priority = if self.eat(T::At) {
-            Some(self.term()?)
-        } else {
-            None
-        };
+        let priority = self.priority()?;
         let mut terms = Vec::new();
         while self.eat(T::Comma) {
             terms.push(self.term()?);
         }
         Ok((weight, priority, terms))
+    }
+
+    /// `[@p]`
+    fn priority(&mut self) -> PResult<Option<Term>> {
+        Ok(if self.eat(T::At) {
+            Some(self.term()?)
+        } else {
+            None
+        })
     }
 
     /// `#minimize { elements }.`
@@ -72,8 +75,7 @@ impl<'a> Parser<'a> {
     /// `[-]name/arity`
     pub(super) fn signature(&mut self) -> PResult<Signature> {
         let negated = self.eat(T::Minus);
-        let name = self.expect(T::Ident, &["<IDENTIFIER>"])?;
-        let name = self.word(name).to_string();
+        let name = self.identifier()?;
         self.expect(T::Slash, &["/"])?;
         let n = self.expect(T::Number, &["<NUMBER>"])?;
         let arity = self.integer(n);
@@ -91,13 +93,7 @@ impl<'a> Parser<'a> {
             return Ok(StatementKind::Show(Box::new(Show::Nothing)));
         }
         let term = self.term()?;
-        self.body_end = &[];
-        let body = if self.eat(T::Colon) {
-            self.body()?
-        } else {
-            Vec::new()
-        };
-        self.end_of_body()?;
+        let body = self.directive_body()?;
         if body.is_empty() {
             if let Some(sig) = term_to_signature(&term) {
                 return Ok(StatementKind::Show(Box::new(Show::Signature(sig))));
@@ -145,8 +141,7 @@ impl<'a> Parser<'a> {
     /// `#const name = term. [default|override]`
     pub(super) fn const_def(&mut self) -> PResult<StatementKind> {
         self.bump();
-        let name = self.expect(T::Ident, &["<IDENTIFIER>"])?;
-        let name = self.word(name).to_string();
+        let name = self.identifier()?;
         self.expect(T::Eq, &["="])?;
         let value = self.term()?;
         self.expect(T::Dot, &[])?;
@@ -206,11 +201,7 @@ impl<'a> Parser<'a> {
         let body = self.directive_body()?;
         self.expect(T::LBrack, &["["])?;
         let weight = self.term()?;
-        let priority = if self.eat(T::At) {
-            Some(self.term()?)
-        } else {
-            None
-        };
+        let priority = self.priority()?;
         self.expect(T::Comma, &["\",\""])?;
         let modifier = self.term()?;
         self.expect(T::RBrack, &["]"])?;
@@ -245,8 +236,7 @@ impl<'a> Parser<'a> {
                 system: false,
             }
         } else if self.eat(T::Lt) {
-            let name = self.expect(T::Ident, &["<IDENTIFIER>"])?;
-            let path = self.word(name).to_string();
+            let path = self.identifier()?;
             self.expect(T::Gt, &[">"])?;
             Include { path, system: true }
         } else {
@@ -259,14 +249,12 @@ impl<'a> Parser<'a> {
     /// `#program name(params).`
     pub(super) fn program_part(&mut self) -> PResult<StatementKind> {
         self.bump();
-        let name = self.expect(T::Ident, &["<IDENTIFIER>"])?;
-        let name = self.word(name).to_string();
+        let name = self.identifier()?;
         let mut params = Vec::new();
         if self.eat(T::LParen) {
             if !self.at(T::RParen) {
                 loop {
-                    let p = self.expect(T::Ident, &["<IDENTIFIER>"])?;
-                    params.push(self.word(p).to_string());
+                    params.push(self.identifier()?);
                     if !self.eat(T::Comma) {
                         break;
                     }
@@ -283,8 +271,7 @@ impl<'a> Parser<'a> {
         let start = self.bump();
         self.report_script(self.span(start.start, start.end));
         self.expect(T::LParen, &["("])?;
-        let lang = self.expect(T::Ident, &["<IDENTIFIER>"])?;
-        let language = self.word(lang).to_string();
+        let language = self.identifier()?;
         if !self.at(T::RParen) {
             return Err(self.unexpected(&[")"]));
         }

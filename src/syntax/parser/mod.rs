@@ -374,6 +374,12 @@ impl<'a> Parser<'a> {
         &self.text[tok.start as usize..tok.end as usize]
     }
 
+    /// An `<IDENTIFIER>` token's text, or an error expecting one.
+    fn identifier(&mut self) -> PResult<String> {
+        let tok = self.expect(T::Ident, &["<IDENTIFIER>"])?;
+        Ok(self.word(tok).to_string())
+    }
+
     /// The text of the current token.
     fn cur(&self) -> &'a str {
         self.word(self.tok)
@@ -539,6 +545,14 @@ impl<'a> Parser<'a> {
         }
     }
 
+    /// The neck token (`:-`, `:~`, ...), then a body up to its `.`.
+    fn neck_body(&mut self) -> PResult<Vec<BodyLiteral>> {
+        self.bump();
+        let body = self.body()?;
+        self.end_of_body()?;
+        Ok(body)
+    }
+
     /// One statement.
     fn statement(&mut self) -> PResult<StatementKind> {
         if self.dialect == Dialect::Sparc {
@@ -548,9 +562,7 @@ impl<'a> Parser<'a> {
         }
         match self.tok.kind {
             T::If => {
-                self.bump();
-                let body = self.body()?;
-                self.end_of_body()?;
+                let body = self.neck_body()?;
                 Ok(StatementKind::Rule(Rule {
                     head: Head::None,
                     body,
@@ -558,9 +570,7 @@ impl<'a> Parser<'a> {
                 }))
             }
             T::CrIf => {
-                self.bump();
-                let body = self.body()?;
-                self.end_of_body()?;
+                let body = self.neck_body()?;
                 Ok(StatementKind::Rule(Rule {
                     head: Head::None,
                     body,
@@ -654,9 +664,7 @@ impl<'a> Parser<'a> {
                 }))
             }
             T::If => {
-                self.bump();
-                let body = self.body()?;
-                self.end_of_body()?;
+                let body = self.neck_body()?;
                 Ok(StatementKind::Rule(Rule {
                     head,
                     body,
@@ -664,9 +672,7 @@ impl<'a> Parser<'a> {
                 }))
             }
             T::CrIf => {
-                self.bump();
-                let body = self.body()?;
-                self.end_of_body()?;
+                let body = self.neck_body()?;
                 let (head, label) = split_label(head, first_term);
                 Ok(StatementKind::Rule(Rule {
                     head,

@@ -226,8 +226,7 @@ impl<'a> Parser<'a> {
 
     /// `name(#s1, ..., #sn).`
     pub(super) fn predicate_decl(&mut self) -> PResult<StatementKind> {
-        let name = self.expect(T::Ident, &["<IDENTIFIER>"])?;
-        let name = self.word(name).to_string();
+        let name = self.identifier()?;
         let mut sorts = Vec::new();
         if self.eat(T::LParen) {
             if !self.at(T::RParen) {

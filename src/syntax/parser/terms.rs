@@ -151,8 +151,7 @@ impl<'a> Parser<'a> {
             T::At => {
                 let at = self.bump();
                 self.report_script(self.span(at.start, self.tok.end.max(at.end)));
-                let name = self.expect(T::Ident, &["<IDENTIFIER>"])?;
-                let name = self.word(name).to_string();
+                let name = self.identifier()?;
                 let mut args = Vec::new();
                 if self.eat(T::LParen) {
                     if !self.at(T::RParen) {
