@@ -69,10 +69,7 @@ fn parse(args: &[String]) -> Result<Args, String> {
     while let Some(w) = words.next_arg() {
         let (a, name) = (w.word, w.name);
         let mut value = || words.value(&w);
-        let number = |v: String| {
-            v.parse::<u64>()
-                .map_err(|_| format!("'{name}': '{v}' is not a number"))
-        };
+        let number = |v: String| super::options::number(name, &v);
         match name {
             "--help" | "-h" => out.help = true,
             "--kb" => out.kb = value()?,

@@ -183,6 +183,26 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     run_pipeline(&options, io)
 }
 
+/// Writes a report into `dir` as `STEM.md` (`markdown`), `STEM.json` (`value`, pretty, with a
+/// final newline) and one file per plot (name, SVG text); shared by `classify` and `experiment`.
+pub(crate) fn write_report_files(
+    dir: &std::path::Path,
+    stem: &str,
+    markdown: &str,
+    value: &serde_json::Value,
+    plots: Vec<(String, String)>,
+) -> std::io::Result<()> {
+    std::fs::write(dir.join(format!("{stem}.md")), markdown)?;
+    std::fs::write(
+        dir.join(format!("{stem}.json")),
+        serde_json::to_string_pretty(value).unwrap_or_default() + "\n",
+    )?;
+    for (name, svg) in plots {
+        std::fs::write(dir.join(name), svg)?;
+    }
+    Ok(())
+}
+
 fn usage_error(io: &mut Io, e: &UsageError) -> std::io::Result<i32> {
     writeln!(io.err, "*** ERROR: (lucent): {e}")?;
     writeln!(
