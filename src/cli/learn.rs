@@ -138,17 +138,10 @@ pub fn run_learn(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
-    let args = match parse(args) {
+    let args = match super::verb_args(parse(args), |a| a.help, HELP_LEARN, out, err)? {
         Ok(a) => a,
-        Err(e) => {
-            writeln!(err, "*** ERROR: (lucent): {e}")?;
-            return Ok(super::EXIT_USAGE);
-        }
+        Err(code) => return Ok(code),
     };
-    if args.help {
-        write!(out, "{HELP_LEARN}")?;
-        return Ok(0);
-    }
     let Some(spec) = load(&args.kb, err)? else {
         return Ok(super::EXIT_INPUT);
     };

@@ -183,6 +183,30 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     run_pipeline(&options, io)
 }
 
+/// The front of a verb (`learn`, `run`): its parsed arguments, or `Err(code)` once it has
+/// printed the usage error (exit code [`EXIT_USAGE`]) or, when `help` says the arguments ask for
+/// it, `help_text` (exit code 0).
+pub(crate) fn verb_args<A>(
+    parsed: Result<A, String>,
+    help: impl Fn(&A) -> bool,
+    help_text: &str,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<Result<A, i32>> {
+    let args = match parsed {
+        Ok(a) => a,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(Err(EXIT_USAGE));
+        }
+    };
+    if help(&args) {
+        write!(out, "{help_text}")?;
+        return Ok(Err(0));
+    }
+    Ok(Ok(args))
+}
+
 /// Writes a report into `dir` as `STEM.md` (`markdown`), `STEM.json` (`value`, pretty, with a
 /// final newline) and one file per plot (name, SVG text); shared by `classify` and `experiment`.
 pub(crate) fn write_report_files(
