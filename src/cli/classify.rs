@@ -156,16 +156,7 @@ pub fn write_result(
         std::fs::create_dir_all(dir)?;
         super::write_report_files(dir, "classify", &markdown, &value, exp::plots(result))?;
     }
-    if json {
-        writeln!(
-            out,
-            "{}",
-            serde_json::to_string_pretty(&value).unwrap_or_default()
-        )?;
-    } else {
-        write!(out, "{markdown}")?;
-    }
-    Ok(())
+    super::print_report(out, json, &markdown, &value)
 }
 
 /// `lucent classify SCENE.json ...`.

@@ -390,14 +390,8 @@ fn finish(
     if let Some(dir) = dir {
         super::write_report_files(dir, "report", &markdown, &value, report.plots())?;
     }
-    if json {
-        writeln!(
-            out,
-            "{}",
-            serde_json::to_string_pretty(&value).unwrap_or_default()
-        )?;
-    } else {
-        write!(out, "{markdown}")?;
+    super::print_report(out, json, &markdown, &value)?;
+    if !json {
         if let Some(s) = secs {
             writeln!(out, "Wall time: {s:.1} s")?;
         }

@@ -207,6 +207,25 @@ pub(crate) fn verb_args<A>(
     Ok(Ok(args))
 }
 
+/// Prints a report: `value` as pretty JSON with `json`, else `markdown`; shared by `classify`
+/// and `experiment`.
+pub(crate) fn print_report(
+    out: &mut dyn Write,
+    json: bool,
+    markdown: &str,
+    value: &serde_json::Value,
+) -> std::io::Result<()> {
+    if json {
+        writeln!(
+            out,
+            "{}",
+            serde_json::to_string_pretty(value).unwrap_or_default()
+        )
+    } else {
+        write!(out, "{markdown}")
+    }
+}
+
 /// Writes a report into `dir` as `STEM.md` (`markdown`), `STEM.json` (`value`, pretty, with a
 /// final newline) and one file per plot (name, SVG text); shared by `classify` and `experiment`.
 pub(crate) fn write_report_files(
