@@ -76,8 +76,7 @@ pub fn run_experiment(
         let mut value = || inline.clone().or_else(|| it.next().cloned());
         let number = |v: Option<String>| -> Result<u64, String> {
             let v = v.ok_or_else(|| format!("'{name}' needs a value"))?;
-            v.parse::<u64>()
-                .map_err(|_| format!("'{name}': '{v}' is not a number"))
+            super::options::number(name, &v)
         };
         let parsed: Result<(), String> = match name {
             "-h" | "--help" => {
@@ -155,25 +154,9 @@ pub fn write_result(
     let value = serde_json::to_value(result).unwrap_or_default();
     if let Some(dir) = dir {
         std::fs::create_dir_all(dir)?;
-        std::fs::write(dir.join("classify.md"), &markdown)?;
-        std::fs::write(
-            dir.join("classify.json"),
-            serde_json::to_string_pretty(&value).unwrap_or_default() + "\n",
-        )?;
-        for (name, svg) in exp::plots(result) {
-            std::fs::write(dir.join(name), svg)?;
-        }
+        super::write_report_files(dir, "classify", &markdown, &value, exp::plots(result))?;
     }
-    if json {
-        writeln!(
-            out,
-            "{}",
-            serde_json::to_string_pretty(&value).unwrap_or_default()
-        )?;
-    } else {
-        write!(out, "{markdown}")?;
-    }
-    Ok(())
+    super::print_report(out, json, &markdown, &value)
 }
 
 /// `lucent classify SCENE.json ...`.

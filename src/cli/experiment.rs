@@ -117,10 +117,7 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
     while let Some(w) = words.next_arg() {
         let (a, name) = (w.word, w.name);
         let mut value = || words.value(&w);
-        let number = |v: String| {
-            v.parse::<u64>()
-                .map_err(|_| format!("'{name}': '{v}' is not a number"))
-        };
+        let number = |v: String| super::options::number(name, &v);
         match name {
             "--seed" => out.setup.seed = number(value()?)?,
             "--runs" => out.setup.runs = number(value()?)? as usize,
@@ -391,23 +388,10 @@ fn finish(
     }
     let markdown = report.to_markdown();
     if let Some(dir) = dir {
-        std::fs::write(dir.join("report.md"), &markdown)?;
-        std::fs::write(
-            dir.join("report.json"),
-            serde_json::to_string_pretty(&value).unwrap_or_default() + "\n",
-        )?;
-        for (name, svg) in report.plots() {
-            std::fs::write(dir.join(name), svg)?;
-        }
+        super::write_report_files(dir, "report", &markdown, &value, report.plots())?;
     }
-    if json {
-        writeln!(
-            out,
-            "{}",
-            serde_json::to_string_pretty(&value).unwrap_or_default()
-        )?;
-    } else {
-        write!(out, "{markdown}")?;
+    super::print_report(out, json, &markdown, &value)?;
+    if !json {
         if let Some(s) = secs {
             writeln!(out, "Wall time: {s:.1} s")?;
         }

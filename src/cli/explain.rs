@@ -163,23 +163,40 @@ fn parse_args(args: &[String]) -> Result<Args, String> {
     Ok(a)
 }
 
+/// The front shared by `explain` and `ask`: `--help` prints the help, then the arguments are
+/// parsed and must name a scene file or a run; `missing` is the usage message when they do not.
+/// `Err(code)` is the exit code when the verb should stop here.
+fn parse_verb_args(
+    args: &[String],
+    verb: &str,
+    missing: &str,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<Result<Args, i32>> {
+    if args.iter().any(|a| a == "--help" || a == "-h") {
+        write!(out, "{HELP}")?;
+        return Ok(Err(0));
+    }
+    let a = match parse_args(args) {
+        Ok(a) => a,
+        Err(m) => return usage(err, verb, &m).map(Err),
+    };
+    if a.files.is_empty() && a.run.is_none() {
+        return usage(err, verb, missing).map(Err);
+    }
+    Ok(Ok(a))
+}
+
 /// `lucent explain`.
 pub fn run_explain(
     args: &[String],
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
-    if args.iter().any(|a| a == "--help" || a == "-h") {
-        write!(out, "{HELP}")?;
-        return Ok(0);
-    }
-    let a = match parse_args(args) {
+    let a = match parse_verb_args(args, "explain", "`lucent explain` needs a file", out, err)? {
         Ok(a) => a,
-        Err(m) => return usage(err, "explain", &m),
+        Err(code) => return Ok(code),
     };
-    if a.files.is_empty() && a.run.is_none() {
-        return usage(err, "explain", "`lucent explain` needs a file");
-    }
     if a.why.is_some() || a.why_not.is_some() {
         return run_generic(&a, out, err);
     }
@@ -325,21 +342,16 @@ pub fn run_ask(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
-    if args.iter().any(|a| a == "--help" || a == "-h") {
-        write!(out, "{HELP}")?;
-        return Ok(0);
-    }
-    let a = match parse_args(args) {
+    let a = match parse_verb_args(
+        args,
+        "ask",
+        "`lucent ask` needs a scene file or --run RUN.json",
+        out,
+        err,
+    )? {
         Ok(a) => a,
-        Err(m) => return usage(err, "ask", &m),
+        Err(code) => return Ok(code),
     };
-    if a.files.is_empty() && a.run.is_none() {
-        return usage(
-            err,
-            "ask",
-            "`lucent ask` needs a scene file or --run RUN.json",
-        );
-    }
     let (history, no_plan) = match load_history(&a, err)? {
         Ok(h) => h,
         Err(code) => return Ok(code),

@@ -69,10 +69,7 @@ fn parse(args: &[String]) -> Result<Args, String> {
     while let Some(w) = words.next_arg() {
         let (a, name) = (w.word, w.name);
         let mut value = || words.value(&w);
-        let number = |v: String| {
-            v.parse::<u64>()
-                .map_err(|_| format!("'{name}': '{v}' is not a number"))
-        };
+        let number = |v: String| super::options::number(name, &v);
         match name {
             "--help" | "-h" => out.help = true,
             "--kb" => out.kb = value()?,
@@ -141,17 +138,10 @@ pub fn run_learn(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
-    let args = match parse(args) {
+    let args = match super::verb_args(parse(args), |a| a.help, HELP_LEARN, out, err)? {
         Ok(a) => a,
-        Err(e) => {
-            writeln!(err, "*** ERROR: (lucent): {e}")?;
-            return Ok(super::EXIT_USAGE);
-        }
+        Err(code) => return Ok(code),
     };
-    if args.help {
-        write!(out, "{HELP_LEARN}")?;
-        return Ok(0);
-    }
     let Some(spec) = load(&args.kb, err)? else {
         return Ok(super::EXIT_INPUT);
     };

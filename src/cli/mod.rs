@@ -183,6 +183,69 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     run_pipeline(&options, io)
 }
 
+/// The front of a verb (`learn`, `run`): its parsed arguments, or `Err(code)` once it has
+/// printed the usage error (exit code [`EXIT_USAGE`]) or, when `help` says the arguments ask for
+/// it, `help_text` (exit code 0).
+pub(crate) fn verb_args<A>(
+    parsed: Result<A, String>,
+    help: impl Fn(&A) -> bool,
+    help_text: &str,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<Result<A, i32>> {
+    let args = match parsed {
+        Ok(a) => a,
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            return Ok(Err(EXIT_USAGE));
+        }
+    };
+    if help(&args) {
+        write!(out, "{help_text}")?;
+        return Ok(Err(0));
+    }
+    Ok(Ok(args))
+}
+
+/// Prints a report: `value` as pretty JSON with `json`, else `markdown`; shared by `classify`
+/// and `experiment`.
+pub(crate) fn print_report(
+    out: &mut dyn Write,
+    json: bool,
+    markdown: &str,
+    value: &serde_json::Value,
+) -> std::io::Result<()> {
+    if json {
+        writeln!(
+            out,
+            "{}",
+            serde_json::to_string_pretty(value).unwrap_or_default()
+        )
+    } else {
+        write!(out, "{markdown}")
+    }
+}
+
+/// Writes a report into `dir` as `STEM.md` (`markdown`), `STEM.json` (`value`, pretty, with a
+/// final newline) and one file per plot (name, SVG text); shared by `classify` and `experiment`.
+pub(crate) fn write_report_files(
+    dir: &std::path::Path,
+    stem: &str,
+    markdown: &str,
+    value: &serde_json::Value,
+    plots: Vec<(String, String)>,
+) -> std::io::Result<()> {
+    std::fs::write(dir.join(format!("{stem}.md")), markdown)?;
+    std::fs::write(
+        dir.join(format!("{stem}.json")),
+        serde_json::to_string_pretty(value).unwrap_or_default() + "\n",
+    )?;
+    for (name, svg) in plots {
+        std::fs::write(dir.join(name), svg)?;
+    }
+    Ok(())
+}
+
 fn usage_error(io: &mut Io, e: &UsageError) -> std::io::Result<i32> {
     writeln!(io.err, "*** ERROR: (lucent): {e}")?;
     writeln!(

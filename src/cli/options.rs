@@ -345,6 +345,13 @@ impl<'a> VerbArgs<'a> {
     }
 }
 
+/// The number a verb's option `name` was given as `v`, or the verbs' error
+/// (`'--seed': 'x' is not a number`).
+pub fn number(name: &str, v: &str) -> Result<u64, String> {
+    v.parse::<u64>()
+        .map_err(|_| format!("'{name}': '{v}' is not a number"))
+}
+
 fn invalid(option: &str, value: &str) -> UsageError {
     UsageError::InvalidValue {
         option: option.to_string(),

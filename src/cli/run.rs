@@ -424,17 +424,10 @@ fn write_report(
 
 /// `lucent run`.
 pub fn run_run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
-    let args = match parse(args) {
+    let args = match super::verb_args(parse(args), |a| a.help, HELP, out, err)? {
         Ok(a) => a,
-        Err(e) => {
-            writeln!(err, "*** ERROR: (lucent): {e}")?;
-            return Ok(super::EXIT_USAGE);
-        }
+        Err(code) => return Ok(code),
     };
-    if args.help {
-        write!(out, "{HELP}")?;
-        return Ok(0);
-    }
     let input_error = |err: &mut dyn Write, m: String| -> std::io::Result<i32> {
         writeln!(err, "*** ERROR: (lucent): {}", m.trim_end())?;
         Ok(super::EXIT_INPUT)

@@ -124,12 +124,7 @@ fn proof(
         }
         return;
     }
-    for c in &n.children {
-        let lit = &tree.node(*c).literal;
-        if seen.contains(lit) {
-            continue;
-        }
-        seen.push(lit.clone());
-        proof(tree, *c, depth + 1, out, leaves, seen);
-    }
+    tree.each_unseen_child(id, seen, |c, seen| {
+        proof(tree, c, depth + 1, out, leaves, seen)
+    });
 }

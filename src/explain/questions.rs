@@ -322,6 +322,19 @@ impl Answering<'_, '_> {
         }
     }
 
+    /// The step a question about `action` is at: the `step` it gave (no note), else the
+    /// missing-step rule's; `None` when neither finds one.
+    fn given_or_missing_step(
+        &self,
+        action: &Pattern,
+        step: Option<u32>,
+    ) -> Option<(u32, Option<String>)> {
+        match step {
+            Some(s) => Some((s, None)),
+            None => self.missing_step(action),
+        }
+    }
+
     /// The missing-step rule: the plan's actions with the same name and first object (the
     /// robot aside) as the pattern; `(step, note)` with a note when there were several.
     fn missing_step(&self, action: &Pattern) -> Option<(u32, Option<String>)> {

@@ -323,6 +323,25 @@ impl ProofTree {
         &self.nodes[id.index()]
     }
 
+    /// Calls `visit` on each child of `id` in order whose literal is not in `seen` yet, adding
+    /// the literal to `seen` just before (so what `visit` adds to `seen` skips later children):
+    /// the walk of a proof that says each literal once.
+    pub fn each_unseen_child(
+        &self,
+        id: NodeId,
+        seen: &mut Vec<Symbol>,
+        mut visit: impl FnMut(NodeId, &mut Vec<Symbol>),
+    ) {
+        for c in &self.node(id).children {
+            let lit = &self.node(*c).literal;
+            if seen.contains(lit) {
+                continue;
+            }
+            seen.push(lit.clone());
+            visit(*c, seen);
+        }
+    }
+
     /// The tree cut down to the answer's path: the path's nodes with all their children, a
     /// child off the path kept as a leaf (its own children dropped), and the other roots
     /// dropped. A tree without a path is returned whole. The node order is kept, so children

@@ -187,8 +187,9 @@ impl<'a> Verbalizer<'a> {
                 is_static,
                 ..
             } => {
-                let (template, bindings) = self.fluent_template(fluent, negated);
-                if template.contains("{be} ") && !is_static && !self.is_static(fluent) {
+                let (template, bindings, is_static) =
+                    self.fluent_phrase(fluent, negated, is_static);
+                if template.contains("{be} ") && !is_static {
                     let t = template.replace("{be} ", "");
                     self.fill(&t, &bindings, Tense::Past, None, None)
                 } else {
@@ -205,6 +206,18 @@ impl<'a> Verbalizer<'a> {
             let mut b = Vec::new();
             p.is_static && p.literal.positive().matches(&fluent.positive(), &mut b)
         })
+    }
+
+    /// A fluent's phrase template and bindings ([`Self::fluent_template`]), and whether it is
+    /// a static: as its literal says (`is_static`) or as the domain declares it.
+    fn fluent_phrase(
+        &self,
+        fluent: &Symbol,
+        negated: bool,
+        is_static: bool,
+    ) -> (String, Vec<(String, Symbol)>, bool) {
+        let (template, bindings) = self.fluent_template(fluent, negated);
+        (template, bindings, is_static || self.is_static(fluent))
     }
 
     /// The clause template of a fluent (sign folded in) and its bindings.
@@ -312,12 +325,9 @@ impl<'a> Verbalizer<'a> {
                 is_static,
                 ..
             } => {
-                let (template, bindings) = self.fluent_template(fluent, negated);
-                let tense = if is_static || self.is_static(fluent) {
-                    Tense::Present
-                } else {
-                    tense
-                };
+                let (template, bindings, is_static) =
+                    self.fluent_phrase(fluent, negated, is_static);
+                let tense = if is_static { Tense::Present } else { tense };
                 self.fill(&template, &bindings, tense, subject, last)
             }
             Said::Action {

@@ -10,7 +10,7 @@ use super::matcher::{Matcher, Step};
 use super::parser::starts_with;
 use super::LAST;
 use crate::control::Symbol;
-use crate::explain::lexicon::Token;
+use crate::explain::lexicon::{Token, Verb};
 use crate::explain::pattern::Pattern;
 
 /// The constant an object phrase that names no object of the scene stands for while the rest
@@ -118,15 +118,7 @@ impl Matcher<'_, '_, '_> {
         let lex = self.p.lexicon;
         for verb in &lex.verbs {
             let found = self.attempt(|m| {
-                if !m.eat(&verb.verb) {
-                    return None;
-                }
-                let particle = |m: &mut Self| {
-                    if let Some(p) = &verb.particle {
-                        m.eat(p);
-                    }
-                };
-                particle(m);
+                m.verb_head(verb)?;
                 let mut xs = vec![m.object()?];
                 // "X, Y and Z": commas are gone, so "and" is optional between items.
                 while let Some(x) = m.attempt(|m| {
@@ -138,7 +130,7 @@ impl Matcher<'_, '_, '_> {
                 if xs.len() < 2 {
                     return None;
                 }
-                particle(m);
+                m.particle(verb);
                 let robot = Pattern::from(&Symbol::constant(&lex.robot));
                 let mut bindings = vec![("R".to_string(), robot)];
                 if verb.action.args().iter().any(|a| a.is_var("Y")) {
@@ -193,6 +185,22 @@ impl Matcher<'_, '_, '_> {
         ))
     }
 
+    /// The verb `verb` and then its particle, if it has one and it comes next.
+    fn verb_head(&mut self, verb: &Verb) -> Step<()> {
+        if !self.eat(&verb.verb) {
+            return None;
+        }
+        self.particle(verb);
+        Some(())
+    }
+
+    /// The particle of `verb` ("up"), if it has one and it comes next.
+    fn particle(&mut self, verb: &Verb) {
+        if let Some(p) = &verb.particle {
+            self.eat(p);
+        }
+    }
+
     /// A phrase of the relation `on` ("on", "on top of").
     fn on_phrase(&mut self) -> Step<()> {
         let lex = self.p.lexicon;
@@ -210,17 +218,9 @@ impl Matcher<'_, '_, '_> {
         let lex = self.p.lexicon;
         for verb in &lex.verbs {
             let found = self.attempt(|m| {
-                if !m.eat(&verb.verb) {
-                    return None;
-                }
-                let particle = |m: &mut Self| {
-                    if let Some(p) = &verb.particle {
-                        m.eat(p);
-                    }
-                };
-                particle(m);
+                m.verb_head(verb)?;
                 let x = m.object()?;
-                particle(m);
+                m.particle(verb);
                 let wants_target = verb.action.args().iter().any(|a| a.is_var("Y"));
                 let mut bindings = vec![
                     (

@@ -23,27 +23,24 @@ impl Answering<'_, '_> {
         step: Option<u32>,
         session: &mut Session,
     ) -> Result<Answer, AnswerError> {
-        let (step, note) = match step {
-            Some(s) => (s, None),
-            None => match self.missing_step(action) {
-                Some(x) => x,
-                None => {
-                    let text = self.v.template(
-                        "not_done",
-                        &[
-                            (
-                                "action",
-                                &self.v.action_pattern(
-                                    action,
-                                    crate::explain::verbalize::ActionForm::Base,
-                                ),
+        let (step, note) = match self.given_or_missing_step(action, step) {
+            Some(x) => x,
+            None => {
+                let text = self.v.template(
+                    "not_done",
+                    &[
+                        (
+                            "action",
+                            &self.v.action_pattern(
+                                action,
+                                crate::explain::verbalize::ActionForm::Base,
                             ),
-                            ("step", ""),
-                        ],
-                    );
-                    return Ok(Self::simple("why", tidy(&text)));
-                }
-            },
+                        ),
+                        ("step", ""),
+                    ],
+                );
+                return Ok(Self::simple("why", tidy(&text)));
+            }
         };
         if let Some(a) = self.outside("why", step) {
             return Ok(a);
@@ -125,13 +122,9 @@ impl Answering<'_, '_> {
         step: Option<u32>,
         session: &mut Session,
     ) -> Result<Answer, AnswerError> {
-        let (step, note) = match step {
-            Some(s) => (s, None),
-            None => match self.missing_step(action) {
-                Some(x) => x,
-                None => (session.last_step.unwrap_or(0), None),
-            },
-        };
+        let (step, note) = self
+            .given_or_missing_step(action, step)
+            .unwrap_or((session.last_step.unwrap_or(0), None));
         if let Some(a) = self.outside("why_not", step) {
             return Ok(a);
         }

@@ -285,13 +285,6 @@ impl Answering<'_, '_> {
             }
             return;
         }
-        for c in &n.children {
-            let lit = &tree.node(*c).literal;
-            if seen.contains(lit) {
-                continue;
-            }
-            seen.push(lit.clone());
-            self.frontier(tree, *c, out, seen);
-        }
+        tree.each_unseen_child(id, seen, |c, seen| self.frontier(tree, c, out, seen));
     }
 }
