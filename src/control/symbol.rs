@@ -364,6 +364,44 @@ impl Symbol {
         }
     }
 
+    /// The ground symbol a syntax-tree term denotes, the inverse of [`Symbol::to_term`] (and of
+    /// a constant written plainly); `None` when the term has variables or operations other
+    /// than a minus sign.
+    pub fn from_term(t: &ast::Term) -> Option<Symbol> {
+        match &t.kind {
+            ast::TermKind::Integer(n) => i32::try_from(*n).ok().map(Symbol::number),
+            ast::TermKind::String(s) => Some(Symbol::string(s.clone())),
+            ast::TermKind::Constant(c) => Some(Symbol::constant(c.as_str())),
+            ast::TermKind::Function { name, args, .. } if args.len() == 1 => {
+                let args: Option<Vec<Symbol>> = args[0].iter().map(Symbol::from_term).collect();
+                Some(Symbol::function(name.as_str(), args?))
+            }
+            ast::TermKind::Unary {
+                op: ast::UnaryOp::Minus,
+                arg,
+            } => match Symbol::from_term(arg)? {
+                Symbol::Number(n) => Some(Symbol::number(-n)),
+                f @ Symbol::Function { .. } => f.complement(),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    /// The ground symbol of a syntax-tree atom, negative when it is classically negated.
+    pub fn from_atom(a: &ast::SymbolicAtom) -> Option<Symbol> {
+        let [args] = a.args.as_slice() else {
+            return (a.args.is_empty() && !a.negated).then(|| Symbol::constant(a.name.as_str()));
+        };
+        let args: Option<Vec<Symbol>> = args.iter().map(Symbol::from_term).collect();
+        let s = Symbol::function(a.name.as_str(), args?);
+        if a.negated {
+            s.complement()
+        } else {
+            Some(s)
+        }
+    }
+
     /// The symbol as a syntax-tree term (spans default). A constant becomes a function with
     /// one empty argument list, so that `#const` definitions and part parameters never replace
     /// it: the term stands for exactly this symbol.

@@ -27,7 +27,6 @@ use super::verbalize::{ActionForm, Tense, Verbalizer};
 use crate::action::{self, AxiomOrigin, HorizonMode, Options, OriginKind, Switches};
 use crate::base::Diagnostics;
 use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol, TruthValue};
-use crate::plan::problem::symbol_of_term;
 use crate::syntax::ast;
 
 /// What if the robot had done `action` at `step` (default: the step of the plan's action with
@@ -405,7 +404,7 @@ fn gate(program: &mut ast::Program, origins: &[AxiomOrigin]) -> Vec<Hyp> {
         };
         match o.kind {
             OriginKind::History if r.body.is_empty() => {
-                let Some(t) = head_symbol(&r.head) else {
+                let Some(t) = head_atom(&r.head).and_then(Symbol::from_atom) else {
                     continue;
                 };
                 if t.args().last() != Some(&Symbol::number(0)) {
@@ -471,8 +470,8 @@ fn gate(program: &mut ast::Program, origins: &[AxiomOrigin]) -> Vec<Hyp> {
     hyps
 }
 
-/// The ground symbol of a head of one unconditional literal (`-holds(f, 0)`).
-fn head_symbol(head: &ast::Head) -> Option<Symbol> {
+/// The atom of a head of one unconditional, positive literal (`-holds(f, 0)`, `goal(I)`).
+fn head_atom(head: &ast::Head) -> Option<&ast::SymbolicAtom> {
     let ast::Head::Disjunction(d) = head else {
         return None;
     };
@@ -480,35 +479,12 @@ fn head_symbol(head: &ast::Head) -> Option<Symbol> {
     let ast::Atom::Symbolic(a) = &c.literal.atom else {
         return None;
     };
-    if !c.condition.is_empty() || c.literal.sign != ast::Sign::Positive {
-        return None;
-    }
-    syntax_atom_symbol(a)
-}
-
-/// The ground symbol of a syntax-tree atom, negative when it is classically negated.
-fn syntax_atom_symbol(a: &ast::SymbolicAtom) -> Option<Symbol> {
-    let [args] = a.args.as_slice() else {
-        return (a.args.is_empty() && !a.negated).then(|| Symbol::constant(a.name.as_str()));
-    };
-    let args: Option<Vec<Symbol>> = args.iter().map(symbol_of_term).collect();
-    let s = Symbol::function(a.name.as_str(), args?);
-    if a.negated {
-        s.complement()
-    } else {
-        Some(s)
-    }
+    (c.condition.is_empty() && c.literal.sign == ast::Sign::Positive).then_some(a)
 }
 
 /// The step variable `I` of the goal rule's head `goal(I)`.
 fn goal_variable(head: &ast::Head) -> Option<ast::Term> {
-    let ast::Head::Disjunction(d) = head else {
-        return None;
-    };
-    let [c] = d.as_slice() else { return None };
-    let ast::Atom::Symbolic(a) = &c.literal.atom else {
-        return None;
-    };
+    let a = head_atom(head)?;
     match a.args.as_slice() {
         [args] if a.name.as_str() == "goal" && args.len() == 1 => {
             matches!(args[0].kind, ast::TermKind::Variable(_)).then(|| args[0].clone())
@@ -535,7 +511,7 @@ fn goal_fluent(item: &ast::BodyLiteral, step: &ast::Term) -> Option<Symbol> {
     if i.kind != step.kind {
         return None;
     }
-    let f = symbol_of_term(f)?;
+    let f = Symbol::from_term(f)?;
     if a.negated {
         f.complement()
     } else {

@@ -6,7 +6,7 @@
 //! clingo text to be parsed again. Also the conversions between answer-set symbols and AL_d
 //! literals that planning, learning and explanation share.
 //!
-//! Invariants: [`ald_term`] and [`symbol_of_term`] are inverse on ground terms (constants stay
+//! Invariants: [`ald_term`] and [`Symbol::from_term`] are inverse on ground terms (constants stay
 //! constants, integers integers, classical negation is the literal's sign, never a term's);
 //! every built statement has the default span and prints (through `action`'s printer) as the text
 //! a person would write; diagnostics of a translation are rendered against the problem's sources.
@@ -150,31 +150,9 @@ pub fn ald_lit(s: &Symbol) -> Lit {
     build::lit(s.is_negative(), s.name().unwrap_or(""), &args)
 }
 
-/// The ground symbol of a term, `None` when it has variables or operations.
-pub fn symbol_of_term(t: &Term) -> Option<Symbol> {
-    match &t.kind {
-        TermKind::Integer(n) => i32::try_from(*n).ok().map(Symbol::number),
-        TermKind::String(s) => Some(Symbol::string(s.clone())),
-        TermKind::Constant(c) => Some(Symbol::constant(c.as_str())),
-        TermKind::Function { name, args, .. } if args.len() == 1 => {
-            let args: Option<Vec<Symbol>> = args[0].iter().map(symbol_of_term).collect();
-            Some(Symbol::function(name.as_str(), args?))
-        }
-        TermKind::Unary {
-            op: UnaryOp::Minus,
-            arg,
-        } => match symbol_of_term(arg)? {
-            Symbol::Number(n) => Some(Symbol::number(-n)),
-            f @ Symbol::Function { .. } => f.complement(),
-            _ => None,
-        },
-        _ => None,
-    }
-}
-
 /// The ground symbol of an atom (`pickup(rob1, a)`).
 pub fn symbol_of_atom(a: &Atom) -> Option<Symbol> {
-    let args: Option<Vec<Symbol>> = a.args.iter().map(symbol_of_term).collect();
+    let args: Option<Vec<Symbol>> = a.args.iter().map(Symbol::from_term).collect();
     Some(Symbol::function(a.name.text.as_str(), args?))
 }
 
