@@ -62,7 +62,9 @@ pub struct RunResult {
     pub trials: usize,
     /// Episodes run.
     pub episodes: usize,
-    /// The learned axioms as an AL_d file with their strengths (`lucent learn -o`).
+    /// The learned axioms as an AL_d file with their strengths (`lucent learn -o`); left out
+    /// of the summary's runs (empty there).
+    #[serde(default, skip_serializing_if = "String::is_empty")]
     pub ald: String,
 }
 
@@ -119,24 +121,7 @@ pub struct Summary {
     /// The paper's Table 1.
     pub paper: crate::learn::h1::PaperH1,
     /// Per run, in run order (without the AL_d text).
-    pub runs: Vec<RunSummary>,
-}
-
-/// One run in the summary.
-#[derive(Clone, Debug, Serialize)]
-pub struct RunSummary {
-    /// Run index.
-    pub run: usize,
-    /// The learned axioms (short form).
-    pub found: Vec<String>,
-    /// Strict counts.
-    pub strict: Tally,
-    /// Relaxed counts.
-    pub relaxed: Tally,
-    /// Trials run.
-    pub trials: usize,
-    /// Episodes run.
-    pub episodes: usize,
+    pub runs: Vec<RunResult>,
 }
 
 /// Sums the H1 records (other records are ignored).
@@ -152,13 +137,9 @@ pub fn aggregate(records: &[Record]) -> Result<Summary, String> {
             serde_json::from_value(r.result.clone()).map_err(|e| format!("{}: {e}", r.id))?;
         s.add(run.strict.into());
         x.add(run.relaxed.into());
-        runs.push(RunSummary {
-            run: run.run,
-            found: run.found,
-            strict: run.strict,
-            relaxed: run.relaxed,
-            trials: run.trials,
-            episodes: run.episodes,
+        runs.push(RunResult {
+            ald: String::new(),
+            ..run
         });
     }
     runs.sort_by_key(|r| r.run);

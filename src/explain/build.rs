@@ -483,12 +483,7 @@ pub fn normalize(tree: &ProofTree, start: NodeId, spatial_labels: &[String]) -> 
             .position(|p| *p == at)
             .and_then(|i| tree.path.get(i + 1))
             .copied()
-            .or_else(|| {
-                n.children
-                    .iter()
-                    .copied()
-                    .find(|c| tree.node(*c).step.is_some())
-            });
+            .or_else(|| tree.timed_children(at).next());
         match next {
             Some(c) => at = c,
             None => return at,

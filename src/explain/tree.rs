@@ -323,6 +323,16 @@ impl ProofTree {
         &self.nodes[id.index()]
     }
 
+    /// The children of `id` whose literals hold at a step (fluents and actions, not statics or
+    /// sorts), in order.
+    pub fn timed_children(&self, id: NodeId) -> impl Iterator<Item = NodeId> + '_ {
+        self.node(id)
+            .children
+            .iter()
+            .copied()
+            .filter(|c| self.node(*c).step.is_some())
+    }
+
     /// Calls `visit` on each child of `id` in order whose literal is not in `seen` yet, adding
     /// the literal to `seen` just before (so what `visit` adds to `seen` skips later children):
     /// the walk of a proof that says each literal once.

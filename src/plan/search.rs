@@ -281,6 +281,25 @@ pub(crate) fn incremental(
     Err(PlanError::NoPlanWithin(max_horizon))
 }
 
+/// Every plan (or the first, without `config.all`) that reaches the goal at horizon `k` in
+/// `mode`, each from a fresh grounding.
+fn plans_at(
+    desc: &Description,
+    sources: &SourceMap,
+    config: &PlanConfig,
+    k: usize,
+    mode: HorizonMode,
+) -> Result<Vec<Plan>, PlanError> {
+    solve_fresh(
+        desc,
+        sources,
+        config,
+        Switches::planning(k, mode),
+        k,
+        config.all,
+    )
+}
+
 /// The plans of `desc` translated with `extra` (horizon `horizon`), grounded and solved afresh
 /// (all answer sets' plans, or the first one's).
 fn solve_fresh(
@@ -309,14 +328,7 @@ pub(crate) fn retranslate(
 ) -> Result<Plans, PlanError> {
     check_initial(desc, sources, config)?;
     for k in 0..=max_horizon {
-        let plans = solve_fresh(
-            desc,
-            sources,
-            config,
-            Switches::planning(k, HorizonMode::Iterative),
-            k,
-            config.all,
-        )?;
+        let plans = plans_at(desc, sources, config, k, HorizonMode::Iterative)?;
         if !plans.is_empty() {
             return Ok(found(plans, k, k + 1));
         }
@@ -332,14 +344,7 @@ pub(crate) fn fixed(
     n: usize,
 ) -> Result<Plans, PlanError> {
     check_initial(desc, sources, config)?;
-    let plans = solve_fresh(
-        desc,
-        sources,
-        config,
-        Switches::planning(n, HorizonMode::Fixed),
-        n,
-        config.all,
-    )?;
+    let plans = plans_at(desc, sources, config, n, HorizonMode::Fixed)?;
     if plans.is_empty() {
         return Err(PlanError::NoPlanWithin(n));
     }

@@ -24,6 +24,7 @@ use crate::ground::program::{Atom, ExternalValue, GroundProgram, Lit, Weight};
 
 use super::check::{check_assignment, external_values};
 use super::config::CrMode;
+use super::solver::transitive_closure;
 
 /// The largest number of candidate atoms the brute-force solver accepts.
 pub const MAX_CANDIDATE_ATOMS: usize = 22;
@@ -209,23 +210,13 @@ fn preference_closure(program: &GroundProgram) -> impl Fn(Atom, Atom) -> bool {
     atoms.dedup();
     let k = atoms.len();
     let index = |a: Atom| atoms.binary_search(&a).ok();
-    let mut reach = vec![false; k * k];
-    for p in &program.prefers {
-        if let (Some(i), Some(j)) = (index(p.better), index(p.worse)) {
-            reach[i * k + j] = true;
-        }
-    }
-    for m in 0..k {
-        for i in 0..k {
-            if reach[i * k + m] {
-                for j in 0..k {
-                    if reach[m * k + j] {
-                        reach[i * k + j] = true;
-                    }
-                }
-            }
-        }
-    }
+    let reach = transitive_closure(
+        k,
+        program
+            .prefers
+            .iter()
+            .filter_map(|p| Some((index(p.better)?, index(p.worse)?))),
+    );
     move |a, b| match (atoms.binary_search(&a), atoms.binary_search(&b)) {
         (Ok(i), Ok(j)) => reach[i * k + j],
         _ => false,

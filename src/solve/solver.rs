@@ -42,6 +42,7 @@
 //!   is optimal when the bound becomes unsatisfiable.
 
 mod cr;
+pub(crate) use cr::transitive_closure;
 mod search;
 mod strategies;
 

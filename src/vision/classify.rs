@@ -355,7 +355,8 @@ impl Classifier {
         }
         let mut knowledge = base.clone();
         let mut learned = Vec::new();
-        if system == System::ReasoningCnnLearned {
+        // The examples each CNN trains on (none for reasoning alone).
+        let examples = if system == System::ReasoningCnnLearned {
             let mut n = 0;
             for label in Label::ALL {
                 let examples = learning_examples(label, train);
@@ -387,43 +388,31 @@ impl Classifier {
                     reasoning,
                 })
                 .collect();
-            let networks = Label::ALL.map(|label| failures(label, &again));
-            let trained_on = [networks[0].len(), networks[1].len()];
-            let networks = Label::ALL.map(|label| train_cnn(label, &networks[slot(label)], config));
-            return Ok(Classifier {
-                system,
-                knowledge,
-                networks,
-                majority,
-                learned,
-                trained_on,
-            });
-        }
-        if system == System::Reasoning {
-            return Ok(Classifier {
-                system,
-                knowledge,
-                networks: [None, None],
-                majority,
-                learned,
-                trained_on: [0, 0],
-            });
-        }
-        let examples = Label::ALL.map(|label| {
-            if system == System::CnnAlone {
-                let mut all = Vec::new();
-                for r in train {
-                    for o in asked(label, r.scene) {
-                        all.push((roi(label, o), truth(label, o)));
+            Some(Label::ALL.map(|label| failures(label, &again)))
+        } else if system == System::Reasoning {
+            None
+        } else {
+            Some(Label::ALL.map(|label| {
+                if system == System::CnnAlone {
+                    let mut all = Vec::new();
+                    for r in train {
+                        for o in asked(label, r.scene) {
+                            all.push((roi(label, o), truth(label, o)));
+                        }
                     }
+                    all
+                } else {
+                    failures(label, train)
                 }
-                all
-            } else {
-                failures(label, train)
-            }
-        });
-        let trained_on = [examples[0].len(), examples[1].len()];
-        let networks = Label::ALL.map(|label| train_cnn(label, &examples[slot(label)], config));
+            }))
+        };
+        let (networks, trained_on) = match examples {
+            None => ([None, None], [0, 0]),
+            Some(examples) => (
+                Label::ALL.map(|label| train_cnn(label, &examples[slot(label)], config)),
+                [examples[0].len(), examples[1].len()],
+            ),
+        };
         Ok(Classifier {
             system,
             knowledge,

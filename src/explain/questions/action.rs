@@ -323,11 +323,9 @@ fn reaches(tree: &ProofTree, from: NodeId, to: NodeId) -> bool {
 fn extend_to_leaf(path: &mut Vec<NodeId>, tree: &ProofTree) {
     while let Some(&last) = path.last() {
         let n = tree.node(last);
-        let next = n
-            .children
-            .iter()
-            .copied()
-            .find(|c| tree.node(*c).step.is_some())
+        let next = tree
+            .timed_children(last)
+            .next()
             .or_else(|| n.children.first().copied());
         match next {
             Some(c) => path.push(c),

@@ -210,13 +210,7 @@ impl Answering<'_, '_> {
             matches!(&tree.node(*id).kind, Kind::Axiom { label, .. } if label.starts_with("SR5"))
         })?;
         let mut out: Vec<NodeId> = Vec::new();
-        let mut todo: Vec<NodeId> = tree
-            .node(sr5)
-            .children
-            .iter()
-            .copied()
-            .filter(|c| tree.node(*c).step.is_some())
-            .collect();
+        let mut todo: Vec<NodeId> = tree.timed_children(sr5).collect();
         let mut budget = 10_000;
         while let Some(id) = todo.pop() {
             budget -= 1;
@@ -233,12 +227,7 @@ impl Answering<'_, '_> {
                 }
                 Kind::Action => return None,
                 Kind::Axiom { label, .. } if label.starts_with("SR5") => {
-                    todo.extend(
-                        n.children
-                            .iter()
-                            .copied()
-                            .filter(|c| tree.node(*c).step.is_some()),
-                    );
+                    todo.extend(tree.timed_children(id));
                     continue;
                 }
                 _ => {}
@@ -248,12 +237,7 @@ impl Answering<'_, '_> {
                 .iter()
                 .copied()
                 .find(|c| matches!(tree.node(*c).kind, Kind::Observation | Kind::Action))
-                .or_else(|| {
-                    n.children
-                        .iter()
-                        .copied()
-                        .find(|c| tree.node(*c).step.is_some())
-                });
+                .or_else(|| tree.timed_children(id).next());
             match next {
                 Some(c) => todo.push(c),
                 None => return None,

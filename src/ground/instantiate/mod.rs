@@ -437,8 +437,12 @@ enum Truth {
 }
 
 impl<'a> Grounder<'a> {
-    /// A grounder over `syms` (which holds the symbols of the compiled program).
-    pub fn new(
+    /// A grounder that continues `state` (the atoms and domains of earlier groundings; their
+    /// predicates keep their ids, new ones are numbered after them), over `syms`, the table
+    /// those groundings used. Rules, directives and provenance start empty.
+    #[allow(clippy::too_many_arguments)]
+    pub fn resume(
+        state: State,
         syms: Symbols,
         num_preds: usize,
         diags: &'a mut Diagnostics,
@@ -446,12 +450,13 @@ impl<'a> Grounder<'a> {
         provenance: bool,
         limits: Limits,
     ) -> Grounder<'a> {
-        let mut domains = Vec::with_capacity(num_preds);
-        domains.resize_with(num_preds, Domain::default);
+        let mut domains = state.domains;
+        domains.resize_with(num_preds.max(domains.len()), Domain::default);
+        let old_atoms = state.atoms.len();
         Grounder {
             syms,
-            atoms: Vec::new(),
-            sym_atom: Vec::new(),
+            atoms: state.atoms,
+            sym_atom: state.sym_atom,
             domains,
             rules: Rules::new(),
             prov: ProvRecords::default(),
@@ -469,34 +474,10 @@ impl<'a> Grounder<'a> {
             since_check: 0,
             naive: false,
             optimistic: false,
-            old_atoms: 0,
-            defined: Vec::new(),
+            old_atoms,
+            defined: state.defined,
             scratch: Scratch::default(),
         }
-    }
-
-    /// A grounder that continues `state` (the atoms and domains of earlier groundings; their
-    /// predicates keep their ids, new ones are numbered after them), over `syms`, the table
-    /// those groundings used. Rules, directives and provenance start empty.
-    #[allow(clippy::too_many_arguments)]
-    pub fn resume(
-        state: State,
-        syms: Symbols,
-        num_preds: usize,
-        diags: &'a mut Diagnostics,
-        sources: Option<&'a SourceMap>,
-        provenance: bool,
-        limits: Limits,
-    ) -> Grounder<'a> {
-        let mut g = Grounder::new(syms, 0, diags, sources, provenance, limits);
-        g.atoms = state.atoms;
-        g.sym_atom = state.sym_atom;
-        g.domains = state.domains;
-        g.defined = state.defined;
-        g.domains
-            .resize_with(num_preds.max(g.domains.len()), Domain::default);
-        g.old_atoms = g.atoms.len();
-        g
     }
 
     /// The state to continue from at the next grounding (the grounder's atoms, domains and

@@ -218,12 +218,7 @@ impl Engine {
             if skip_implied && l == implied {
                 continue;
             }
-            let lv = self.asg.level[l.var().index()] as usize;
-            if lv >= self.an.level_seen.len() {
-                self.an.level_seen.resize(lv + 1, 0);
-            }
-            if self.an.level_seen[lv] != stamp {
-                self.an.level_seen[lv] = stamp;
+            if self.first_at_level(l, stamp) {
                 n += 1;
                 if n >= old {
                     return;
@@ -233,18 +228,26 @@ impl Engine {
         self.db.arena[cref as usize + 1] = (flags & 3) | (n << 2);
     }
 
+    /// Whether `l` is the first literal of its decision level met under `stamp` (marks the
+    /// level as met).
+    #[inline]
+    fn first_at_level(&mut self, l: Lit, stamp: u64) -> bool {
+        let lv = self.asg.level[l.var().index()] as usize;
+        if lv >= self.an.level_seen.len() {
+            self.an.level_seen.resize(lv + 1, 0);
+        }
+        let first = self.an.level_seen[lv] != stamp;
+        self.an.level_seen[lv] = stamp;
+        first
+    }
+
     /// Number of distinct decision levels among `lits` (literal block distance).
     pub(super) fn lbd(&mut self, lits: &[Lit]) -> u32 {
         self.an.lbd_stamp += 1;
         let stamp = self.an.lbd_stamp;
         let mut n = 0;
         for l in lits {
-            let lv = self.asg.level[l.var().index()] as usize;
-            if lv >= self.an.level_seen.len() {
-                self.an.level_seen.resize(lv + 1, 0);
-            }
-            if self.an.level_seen[lv] != stamp {
-                self.an.level_seen[lv] = stamp;
+            if self.first_at_level(*l, stamp) {
                 n += 1;
             }
         }

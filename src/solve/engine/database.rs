@@ -100,11 +100,7 @@ impl Engine {
                 )
             })
             .collect();
-        // Worst first: high LBD, then low activity.
-        cands.sort_by(|a, b| {
-            b.0.cmp(&a.0)
-                .then(a.1.partial_cmp(&b.1).unwrap_or(std::cmp::Ordering::Equal))
-        });
+        sort_worst_first(&mut cands);
         let target = cands.len() / 2;
         let mut removed = 0;
         let mut keep = Vec::with_capacity(cands.len());
@@ -325,4 +321,12 @@ impl Engine {
             self.simplify();
         }
     }
+}
+
+/// Sorts reduction candidates `(lbd, activity, id)` worst first: high LBD, then low activity.
+pub(super) fn sort_worst_first<T>(cands: &mut [(u32, f32, T)]) {
+    cands.sort_by(|a, b| {
+        b.0.cmp(&a.0)
+            .then(a.1.partial_cmp(&b.1).unwrap_or(std::cmp::Ordering::Equal))
+    });
 }

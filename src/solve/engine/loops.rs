@@ -438,10 +438,7 @@ impl Engine {
             .filter(|(_, f)| f.live)
             .map(|(id, f)| (f.lbd, f.activity, id as u32))
             .collect();
-        cands.sort_by(|a, b| {
-            b.0.cmp(&a.0)
-                .then(a.1.partial_cmp(&b.1).unwrap_or(std::cmp::Ordering::Equal))
-        });
+        super::database::sort_worst_first(&mut cands);
         let target = cands.len() / 2;
         let mut removed = 0;
         for (lbd, _, id) in cands {

@@ -197,23 +197,36 @@ impl Solver {
     pub(super) fn preference_closure(&self) -> Vec<bool> {
         let k = self.cr_lits.len();
         let index = |a: u32| self.prog.cr_rules.iter().position(|c| c.appl == a);
-        let mut reach = vec![false; k * k];
-        for p in &self.prog.prefers {
-            if let (Some(i), Some(j)) = (index(p.better), index(p.worse)) {
-                reach[i * k + j] = true;
-            }
-        }
-        for m in 0..k {
-            for i in 0..k {
-                if reach[i * k + m] {
-                    for j in 0..k {
-                        if reach[m * k + j] {
-                            reach[i * k + j] = true;
-                        }
+        transitive_closure(
+            k,
+            self.prog
+                .prefers
+                .iter()
+                .filter_map(|p| Some((index(p.better)?, index(p.worse)?))),
+        )
+    }
+}
+
+/// The transitive closure of the relation `edges` over `0..k`, as a `k * k` matrix in row
+/// order (`reach[i * k + j]`: `j` is reachable from `i` in one or more steps; Warshall).
+pub(crate) fn transitive_closure(
+    k: usize,
+    edges: impl IntoIterator<Item = (usize, usize)>,
+) -> Vec<bool> {
+    let mut reach = vec![false; k * k];
+    for (i, j) in edges {
+        reach[i * k + j] = true;
+    }
+    for m in 0..k {
+        for i in 0..k {
+            if reach[i * k + m] {
+                for j in 0..k {
+                    if reach[m * k + j] {
+                        reach[i * k + j] = true;
                     }
                 }
             }
         }
-        reach
     }
+    reach
 }
