@@ -19,7 +19,6 @@ use std::time::Instant;
 use lucent::action;
 use lucent::base::SourceMap;
 use lucent::plan::physics::{generate_task, replay_physics};
-use lucent::plan::scene::add_statements;
 use lucent::plan::{default_max_horizon, plan, replay, PlanConfig, SceneFacts, StateSearch};
 use lucent::sim::Preset;
 
@@ -78,15 +77,9 @@ fn main() {
             let file = sources.add(domain.to_string_lossy().into_owned(), text);
             let mut read = |p: &Path| std::fs::read_to_string(p).map_err(|e| e.to_string());
             let mut desc = action::load(&mut sources, file, &mut read).description;
-            let facts = SceneFacts::from_sim(&scene).to_ald();
-            add_statements(&mut desc, &mut sources, "<scene>", facts).unwrap();
-            add_statements(
-                &mut desc,
-                &mut sources,
-                "<goal>",
-                format!("goal {}.", goal.to_ald()),
-            )
-            .unwrap();
+            desc.statements
+                .extend(SceneFacts::from_sim(&scene).statements());
+            desc.statements.push(goal.statement());
             let mut config = PlanConfig {
                 all,
                 ..PlanConfig::default()

@@ -110,7 +110,7 @@ fn learned_axioms_remove_every_incorrect_plan_on_generated_pairs() {
         path: path.to_string(),
         text: std::fs::read_to_string(path).unwrap(),
     };
-    let learned = learned_run().to_ald();
+    let learned = learned_run().statements();
     let (mut wrong_bare, mut wrong_taught, mut plans) = (0, 0, 0);
     for (preset, configuration, goal) in PAIRS {
         let scene = pair(preset, 0, configuration, goal);

@@ -85,7 +85,7 @@ impl Model<'_> {
         self.raw
             .cr_applied
             .iter()
-            .map(|l| Symbol::parse(l).unwrap_or_else(|_| Symbol::String(l.clone())))
+            .map(|l| Symbol::from_cr_label(l))
             .collect()
     }
 

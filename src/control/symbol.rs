@@ -247,6 +247,12 @@ impl Symbol {
         matches!(self, Symbol::Function { name: n, args, .. } if n == name && args.len() == arity)
     }
 
+    /// A CR rule's label as the solver reports it (the ground label term's text): the term,
+    /// or the text as a string when the label is not a term.
+    pub fn from_cr_label(label: &str) -> Symbol {
+        Symbol::parse(label).unwrap_or_else(|_| Symbol::String(label.to_string()))
+    }
+
     /// Parses a ground term written as clingo prints it, e.g. `occurs(pickup(rob1,a),1)`,
     /// `-p(2)`, `"text"`, `(1,a)`, `#sup`.
     ///

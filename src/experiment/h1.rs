@@ -11,6 +11,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::{Context, Record, Trial, TrialError};
+use crate::action::ast::Statement;
 use crate::learn::h1::{one_run_with, targets, Oracle, PrecisionRecall, PAPER};
 use crate::learn::score::{relaxed, strict, Counts};
 use crate::learn::term::Axiom;
@@ -66,6 +67,8 @@ pub struct RunResult {
     /// of the summary's runs (empty there).
     #[serde(default, skip_serializing_if = "String::is_empty")]
     pub ald: String,
+    /// The learned axioms with their labels, as values (what H2-H4 plan and explain with).
+    pub axioms: Vec<(String, Axiom)>,
 }
 
 /// Runs learning run `trial.index` with `seed`.
@@ -85,12 +88,19 @@ pub fn run_trial(ctx: &Context, trial: &Trial, seed: u64) -> Result<serde_json::
         trials: report.trials,
         episodes: report.episodes.len(),
         ald: report.store.to_ald(),
+        axioms: report
+            .store
+            .axioms
+            .iter()
+            .map(|l| (l.label.clone(), l.axiom.clone()))
+            .collect(),
     };
     serde_json::to_value(result).map_err(|e| TrialError::Store(e.to_string()))
 }
 
-/// The AL_d text of the axioms learned in H1 run `run` (computed and stored if absent).
-pub fn learned_axioms(ctx: &Context, run: usize) -> Result<String, TrialError> {
+/// The axioms learned in H1 run `run` (computed and stored if absent: same seed, same
+/// result), as AL_d statements labelled as the run labelled them.
+pub fn learned_statements(ctx: &Context, run: usize) -> Result<Vec<Statement>, TrialError> {
     let trial = Trial {
         hypothesis: super::Hypothesis::H1,
         config: ctx.setup.oracle.name().into(),
@@ -99,7 +109,10 @@ pub fn learned_axioms(ctx: &Context, run: usize) -> Result<String, TrialError> {
     let (record, _) = ctx.record(&trial)?;
     let r: RunResult = serde_json::from_value(record.result)
         .map_err(|e| TrialError::Store(format!("{}: {e}", trial.id())))?;
-    Ok(r.ald)
+    Ok(r.axioms
+        .iter()
+        .map(|(label, axiom)| axiom.statement(label))
+        .collect())
 }
 
 /// Table 1: our figures summed over the runs, and the paper's.

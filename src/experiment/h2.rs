@@ -134,19 +134,6 @@ fn shared_overrides() -> Vec<(String, Value)> {
     ]
 }
 
-/// The learned-axiom file of an H1 run (AL_d text from its stored record) as statements.
-pub(super) fn learned_statements(name: &str, learned: &str) -> Result<Vec<Statement>, TrialError> {
-    let mut sources = SourceMap::new();
-    let file = sources.add(format!("{name} (learned axioms)"), learned.to_string());
-    let parsed = action::parse(file, learned);
-    if parsed.has_errors() {
-        let mut d = crate::base::Diagnostics::default();
-        d.extend(parsed.diagnostics);
-        return Err(TrialError::Input(d.render(&sources)));
-    }
-    Ok(parsed.description.statements)
-}
-
 /// A plan as action terms, from a model's `occurs(a, i)` atoms in step order.
 fn plan_of(atoms: &[Symbol]) -> Vec<Symbol> {
     let mut steps: Vec<(i32, Symbol)> = atoms
@@ -372,21 +359,21 @@ fn run_mode(
     out
 }
 
-/// Plans `scene` (with its goal) under both conditions, without and with `learned` (an AL_d
-/// text, the learned-axiom file of an H1 run), with the iterative planner and, when `fixed`,
+/// Plans `scene` (with its goal) under both conditions, without and with `learned` (the
+/// axioms of an H1 run, as statements), with the iterative planner and, when `fixed`,
 /// in the authors' fixed-horizon mode; every distinct plan is classified against KB_full.
 /// `name` names the scene in diagnostics.
 pub fn plan_pair(
     domain: &Domain,
     name: &str,
     scene: &Scene,
-    learned: &str,
+    learned: &[Statement],
     fixed: bool,
 ) -> Result<PairResult, TrialError> {
     let problem = domain.scene_problem(scene)?;
     let (plain, sources) = (problem.description(), problem.sources.clone());
     let taught_problem = crate::plan::Problem {
-        axioms: learned_statements(name, learned)?,
+        axioms: learned.to_vec(),
         ..problem
     };
     let (taught, taught_sources) = (taught_problem.description(), taught_problem.sources);
@@ -460,7 +447,7 @@ pub fn run_trial(
             "H2 plans with the axioms of an H1 run: it needs --runs 1 or more".into(),
         ));
     }
-    let learned = super::h1::learned_axioms(ctx, configuration % ctx.setup.runs)?;
+    let learned = super::h1::learned_statements(ctx, configuration % ctx.setup.runs)?;
     let scene = pair(preset, ctx.setup.seed, configuration, goal);
     let name = format!("<h2 {}>", trial.id());
     let mut result = plan_pair(ctx.domain, &name, &scene, &learned, true)?;

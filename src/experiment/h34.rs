@@ -187,13 +187,13 @@ fn h4_trial(
     let report = check_history(&full.scenario(), &full.objects(), seed);
     let questions: Vec<Question> = report.asked.into_iter().take(4).collect();
     let truth = literal_sets(full, &questions);
-    let learned = learned_axioms(ctx, trial)?;
+    let run = (trial.index / ctx.setup.goals.max(1)) % ctx.setup.runs.max(1);
+    let learned = super::h1::learned_statements(ctx, run)?;
     for with in [false, true] {
         let mut d = desc.clone();
         let s = sources.clone();
         if with {
-            d.statements
-                .extend(super::h2::learned_statements("<learned axioms>", &learned)?);
+            d.statements.extend(learned.iter().cloned());
         }
         let Some(h) = run_history(&d, &s, Some("learner"))? else {
             continue;
@@ -219,23 +219,6 @@ fn h4_trial(
         }
     }
     Ok(t)
-}
-
-/// The AL_d text of the axioms H1 run `configuration mod runs` learned (computed now when the
-/// store does not have it: same seed, same result).
-fn learned_axioms(ctx: &Context, trial: &Trial) -> Result<String, TrialError> {
-    let h1 = Trial {
-        hypothesis: Hypothesis::H1,
-        config: ctx.setup.oracle.name().into(),
-        index: (trial.index / ctx.setup.goals.max(1)) % ctx.setup.runs.max(1),
-    };
-    let (record, _) = ctx.record(&h1)?;
-    record
-        .result
-        .get("ald")
-        .and_then(serde_json::Value::as_str)
-        .map(str::to_string)
-        .ok_or_else(|| TrialError::Input(format!("{}: no learned axioms", h1.id())))
 }
 
 /// The converse-canonical text of a literal (docs/domain.md 6.9): inside `holds`,

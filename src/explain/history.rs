@@ -654,7 +654,7 @@ pub fn explain_steps(
     if model.is_none() {
         if let Some(mut p) = repaired.take() {
             defeasible = allow_surprises(&mut p, &t.origins);
-            allow_unexpected(&mut p, sources);
+            allow_unexpected(&mut p);
             labels.hidden_predicates.push(SURPRISE.to_string());
             labels.hidden_predicates.push(UNEXPECTED.to_string());
             (ctl, model) = solve(p, sources)?;
@@ -718,16 +718,32 @@ pub const UNEXPECTED: &str = "lucent_unexpected";
 /// Lets an observation after step 0 set its fluent's value where the history predicted
 /// otherwise (a CR rule per value: applied only when needed, as few as possible); inertia
 /// then carries the observed value on.
-fn allow_unexpected(program: &mut ast::Program, sources: &mut SourceMap) {
-    let text = format!(
-        "{UNEXPECTED}(F, true, I) :+ obs(F, true, I), I > 0.\n\
-         {UNEXPECTED}(F, false, I) :+ obs(F, false, I), I > 0.\n\
-         holds(F, I) :- {UNEXPECTED}(F, true, I).\n\
-         -holds(F, I) :- {UNEXPECTED}(F, false, I).\n"
-    );
-    let file = sources.add("<unexpected observations>", text.clone());
-    let parse = crate::syntax::parse(file, &text, ast::Dialect::Clingo);
-    program.statements.extend(parse.program.statements);
+fn allow_unexpected(program: &mut ast::Program) {
+    use crate::syntax::build::{atom, compare, constant, cr_rule, head_of, int, pos, rule, var};
+    let s = crate::base::Span::default();
+    let observed = |value: &str| vec![var(s, "F"), constant(s, value), var(s, "I")];
+    // unexpected(F, V, I) :+ obs(F, V, I), I > 0.   for V in true, false
+    for value in ["true", "false"] {
+        program.statements.push(cr_rule(
+            s,
+            head_of(s, atom(s, false, UNEXPECTED, observed(value))),
+            vec![
+                pos(s, false, "obs", observed(value)),
+                compare(s, var(s, "I"), ast::CmpOp::Gt, int(s, 0)),
+            ],
+        ));
+    }
+    // holds(F, I) :- unexpected(F, true, I).   -holds(F, I) :- unexpected(F, false, I).
+    for value in ["true", "false"] {
+        program.statements.push(rule(
+            s,
+            head_of(
+                s,
+                atom(s, value == "false", "holds", vec![var(s, "F"), var(s, "I")]),
+            ),
+            vec![pos(s, false, UNEXPECTED, observed(value))],
+        ));
+    }
 }
 
 /// The surprises of a repaired history's answer set: each true `lucent_surprise(K, A, I)`

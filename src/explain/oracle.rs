@@ -261,7 +261,7 @@ impl ProgramOracle {
         let applied_labels = model
             .cr_applied
             .iter()
-            .map(|l| Symbol::parse(l).unwrap_or_else(|_| Symbol::String(l.clone())))
+            .map(|l| Symbol::from_cr_label(l))
             .collect();
         Ok(ProgramOracle {
             ctl,

@@ -214,6 +214,14 @@ impl Store {
         self.axioms.iter().map(|l| l.axiom.clone()).collect()
     }
 
+    /// The axioms with their labels (`L3`), as AL_d statements to add to a description.
+    pub fn statements(&self) -> Vec<crate::action::ast::Statement> {
+        self.axioms
+            .iter()
+            .map(|l| l.axiom.statement(&l.label))
+            .collect()
+    }
+
     /// The store as an AL_d file.
     pub fn to_ald(&self) -> String {
         let mut out = String::from(

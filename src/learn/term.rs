@@ -6,11 +6,12 @@
 //! is kept sorted and free of duplicates; [`Axiom::canonical`] is equal for two axioms exactly
 //! when they are equal up to a sort-preserving renaming of their variables (docs/domain.md 5.8).
 
+use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::fmt;
 
 /// The sort of a variable: its name prefix (docs/domain.md 5.5).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 pub enum Sort {
     /// The robot (`R`).
     Robot,
@@ -19,7 +20,7 @@ pub enum Sort {
 }
 
 /// A variable: its sort and index (`R1`, `O5`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 pub struct Var {
     /// The sort.
     pub sort: Sort,
@@ -38,7 +39,7 @@ impl fmt::Display for Var {
 }
 
 /// A term: a constant or a variable.
-#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 pub enum Term {
     /// A constant (`rob1`, `table`, `on`).
     Const(String),
@@ -79,7 +80,7 @@ pub const IN_HAND: &str = "in_hand";
 pub const VALUED: [&str; 4] = ["has_size", "has_surface", "has_shape", "tower_height"];
 
 /// A literal `name(args)` or its classical negation; also used for action atoms.
-#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 pub struct Literal {
     /// False for a classically negated literal (`¬f`).
     pub positive: bool,
@@ -156,7 +157,6 @@ impl Literal {
         }
     }
 
-    /// AL_d text as the knowledge base spells it: `relation(on, O1, O2)`, `-in_hand(R1, O1)`.
     /// The literal as an AL_d syntax-tree literal: constants that read as integers become
     /// integers, variables keep their names (`O1`).
     pub fn ald(&self) -> crate::action::ast::Lit {
@@ -175,6 +175,7 @@ impl Literal {
         build::lit(!self.positive, &self.name, &args)
     }
 
+    /// AL_d text as the knowledge base spells it: `relation(on, O1, O2)`, `-in_hand(R1, O1)`.
     pub fn to_ald(&self) -> String {
         let sign = if self.positive { "" } else { "-" };
         let args: Vec<String> = self.args.iter().map(Term::to_string).collect();
@@ -203,7 +204,7 @@ impl fmt::Display for Literal {
 }
 
 /// What an axiom says about its action.
-#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 pub enum AxiomKind {
     /// `a causes head if body`.
     Causal {
@@ -222,7 +223,7 @@ pub enum AxiomKind {
 }
 
 /// A lifted causal law or executability condition.
-#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 pub struct Axiom {
     /// Causal law (with its head) or executability condition.
     pub kind: AxiomKind,

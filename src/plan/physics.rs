@@ -39,6 +39,17 @@ impl Goal {
         }
     }
 
+    /// The goal as the AL_d statement `goal relation(on, X, Y).` (or `goal in_hand(rob1, X).`).
+    pub fn statement(&self) -> crate::action::ast::Statement {
+        use crate::action::build::{self, Arg};
+        let c = |s: &str| Arg::Const(s.to_string());
+        let lit = match self {
+            Goal::On(x, y) => build::lit(false, "relation", &[c("on"), c(x), c(y)]),
+            Goal::InHand(x) => build::lit(false, "in_hand", &[c("rob1"), c(x)]),
+        };
+        build::goal(vec![lit])
+    }
+
     /// True when the goal holds in the scene (measured, without noise).
     pub fn holds(&self, scene: &Scene) -> bool {
         match self {

@@ -291,26 +291,6 @@ impl SceneFacts {
     }
 }
 
-/// Adds the AL_d statements of `text` (a scene's `to_ald`, a goal statement) to `desc`, the
-/// text becoming file `name` of `sources`; `Err` with the rendered diagnostics when it does
-/// not parse.
-pub fn add_statements(
-    desc: &mut crate::action::ast::Description,
-    sources: &mut crate::base::SourceMap,
-    name: &str,
-    text: String,
-) -> Result<(), String> {
-    let file = sources.add(name.to_string(), text.clone());
-    let parsed = crate::action::parse(file, &text);
-    if parsed.has_errors() {
-        let mut d = crate::base::Diagnostics::default();
-        d.extend(parsed.diagnostics);
-        return Err(d.render(sources));
-    }
-    desc.statements.extend(parsed.description.statements);
-    Ok(())
-}
-
 fn text_atom(name: &str, args: &[&Term]) -> String {
     if args.is_empty() {
         name.to_string()

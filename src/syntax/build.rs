@@ -114,6 +114,18 @@ pub fn rule(span: Span, head: Head, body: Vec<BodyLiteral>) -> Statement {
     }
 }
 
+/// The consistency-restoring rule `head :+ body.` (unlabelled).
+pub fn cr_rule(span: Span, head: Head, body: Vec<BodyLiteral>) -> Statement {
+    Statement {
+        span,
+        kind: StatementKind::Rule(Rule {
+            head,
+            body,
+            kind: RuleKind::ConsistencyRestoring { label: None },
+        }),
+    }
+}
+
 /// The fact `a.`
 pub fn fact(span: Span, a: SymbolicAtom) -> Statement {
     rule(span, head_of(span, a), Vec::new())

@@ -9,7 +9,6 @@ use lucent::action::ast::Description;
 use lucent::base::SourceMap;
 use lucent::control::Symbol;
 use lucent::plan::act::Domain;
-use lucent::plan::scene::add_statements;
 
 #[path = "cli.rs"]
 mod cli;
@@ -52,6 +51,24 @@ pub fn problem(scene_ald: String, goal: String) -> (Description, SourceMap) {
     add_statements(&mut desc, &mut sources, "<scene>", scene_ald).unwrap();
     add_statements(&mut desc, &mut sources, "<goal>", goal).unwrap();
     (desc, sources)
+}
+
+/// Adds the AL_d statements of `text` to `desc`, the text becoming file `name` of `sources`.
+fn add_statements(
+    desc: &mut Description,
+    sources: &mut SourceMap,
+    name: &str,
+    text: String,
+) -> Result<(), String> {
+    let file = sources.add(name.to_string(), text.clone());
+    let parsed = lucent::action::parse(file, &text);
+    if parsed.has_errors() {
+        let mut d = lucent::base::Diagnostics::default();
+        d.extend(parsed.diagnostics);
+        return Err(d.render(sources));
+    }
+    desc.statements.extend(parsed.description.statements);
+    Ok(())
 }
 
 /// Action terms from their text (`pickup(rob1,a)`).
