@@ -11,7 +11,7 @@
 //! (what `lucent plan` returns by default); otherwise all distinct minimal plans. `--blind`
 //! also runs the search without its lower bound (`StateSearch::minimal_blind`) and reports any
 //! difference. Each line gives the planner's and the checks' CPU seconds apart. The figures of the 200-pair run are in
-//! docs/bench/plan-generated-2026-12-05.md; tests/plan_generated.rs runs a fixed subset.
+//! docs/bench/plan-generated-2026-12-05.md; tests/plan/generated.rs runs a fixed subset.
 
 use std::path::Path;
 use std::time::Instant;

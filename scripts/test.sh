@@ -23,14 +23,14 @@ if ! python3 -c 'import clingo' 2>/dev/null; then
   # there, so the second try installs beside the distribution's packages.
   python3 -m pip install -q clingo || python3 -m pip install -q --break-system-packages clingo
 fi
-# tests/experiment_jobs.rs runs the experiment's job list with GNU parallel.
+# tests/experiment/jobs.rs runs the experiment's job list with GNU parallel.
 if ! command -v parallel >/dev/null; then
   echo "== installing GNU parallel"
   as_root apt-get update -qq
   as_root apt-get install -y -qq parallel
 fi
 
-# tests/demo.rs renders the run reports in headless Chromium.
+# tests/cli/demo.rs renders the run reports in headless Chromium.
 if ! command -v chromium >/dev/null && ! command -v chromium-browser >/dev/null; then
   echo "== installing Chromium (the run report test renders HTML headless)"
   as_root apt-get update -qq

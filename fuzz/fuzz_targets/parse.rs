@@ -1,6 +1,6 @@
 //! Fuzz target: parsing arbitrary bytes never panics and yields valid spans in both dialects.
 //! The body is `lucent::syntax::fuzzing::check_parse_invariants_bytes`, which
-//! `tests/syntax_corpus.rs` also runs on the seed corpus.
+//! `tests/syntax/corpus.rs` also runs on the seed corpus.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;

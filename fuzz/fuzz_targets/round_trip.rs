@@ -1,5 +1,5 @@
 //! Fuzz target: for input that parses without errors, `parse(print(tree))` has the tree's shape.
-//! The body is `lucent::syntax::fuzzing::check_round_trip_bytes`, which `tests/syntax_corpus.rs`
+//! The body is `lucent::syntax::fuzzing::check_round_trip_bytes`, which `tests/syntax/corpus.rs`
 //! also runs on the seed corpus.
 #![no_main]
 

@@ -1,7 +1,5 @@
-//! `lucent` run from the command-line tests (included with
-//! `#[path = "support/cli.rs"] mod cli_support;`): the real binary as a child process, or
-//! `lucent::cli::run` in-process (faster, and it needs no binary).
-#![allow(dead_code)]
+//! `lucent` run from the command-line tests (`crate::support::cli`): the real binary as a child
+//! process, or `lucent::cli::run` in-process (faster, and it needs no binary).
 
 use std::io::Write;
 use std::process::{Command, Stdio};

@@ -1,7 +1,5 @@
-//! Set-up shared by the grounder's tests (`tests/ground_*.rs`, included with
-//! `#[path = "support/ground.rs"] mod ground_support;`): a program of the clingo dialect
-//! parsed and grounded.
-#![allow(dead_code)]
+//! Set-up shared by the grounder's tests (`tests/ground/`, as `crate::support::ground`): a
+//! program of the clingo dialect parsed and grounded.
 
 use lucent::base::SourceMap;
 use lucent::ground::{ground, GroundConfig, Grounding};

@@ -1,13 +1,10 @@
-//! Set-up shared by the learner's tests (`tests/learn_*.rs`, included with
-//! `#[path = "support/learn.rs"] mod learn_support;`): the H1 knowledge base of the RA domain
-//! (`domains/ra/scenes/h1.ald`) as the learner starts from it.
-#![allow(dead_code)]
+//! Set-up shared by the learner's tests (`tests/learn/`, as `crate::support::learn`): the H1
+//! knowledge base of the RA domain (`domains/ra/scenes/h1.ald`) as the learner starts from it.
 
 use lucent::learn::h1;
 use lucent::learn::kb::KbSpec;
 
-#[path = "ra_scenes.rs"]
-mod ra_scenes;
+use super::ra_scenes;
 
 /// `domains/ra/scenes/h1.ald` with the learner's options (`lucent learn`'s default knowledge
 /// base). Panics on a parse error.

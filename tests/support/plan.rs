@@ -1,7 +1,6 @@
-//! Set-up shared by the planner's tests (`tests/plan_*.rs`, included with
-//! `#[path = "support/plan.rs"] mod plan_support;`): loading an AL_d problem of the repository,
-//! adding a scene and a goal to a domain, action lists, and `lucent` run in-process.
-#![allow(dead_code)]
+//! Set-up shared by the planner's tests (`tests/plan/`, as `crate::support::plan`): loading an
+//! AL_d problem of the repository, adding a scene and a goal to a domain, action lists, and
+//! `lucent` run in-process.
 
 use std::path::Path;
 
@@ -10,10 +9,7 @@ use lucent::base::SourceMap;
 use lucent::control::Symbol;
 use lucent::plan::act::Domain;
 
-#[path = "cli.rs"]
-mod cli;
-#[path = "ra_scenes.rs"]
-mod ra_scenes;
+use super::{cli, ra_scenes};
 
 /// The golden scenes of docs/domain.md 4.5.
 pub const TABLETOP: &str = "domains/ra/scenes/tabletop_task.ald";

@@ -1,6 +1,5 @@
 //! Hand-written ground programs shaped like the RA translation (docs/domain.md 3), as oracles for
 //! the proof-tree and question tests: rules written `head :- body` with `h(F,I)` for `holds(F,I)`.
-#![allow(dead_code)]
 
 use std::collections::HashSet;
 

@@ -3,8 +3,8 @@
 //! `explain::history` (the Control adapter).
 //!
 //! Its loaders (`load_scene`, `load_text`, `load_at`) are the one AL_d file loader of the tests
-//! and benches: `support/plan.rs`, `support/learn.rs` and `benches/{explain,plan}.rs` include
-//! this file too.
+//! and benches: `support/plan.rs` and `support/learn.rs` use it, and `benches/{explain,plan}.rs`
+//! include this file with `#[path]`.
 #![allow(dead_code)]
 
 use std::path::Path;

@@ -1,5 +1,5 @@
 //! A seeded generator of random non-ground programs in the clingo dialect, for the differential
-//! tests against gringo, clasp and clingo (`tests/diff_random.rs`).
+//! tests against gringo, clasp and clingo (`tests/ground/diff_random.rs`).
 //!
 //! Programs are small and always finite to ground: every variable is bound by a positive body
 //! atom whose arguments come from the constants 1..=3 (facts over `d/1`), arithmetic results
