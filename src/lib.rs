@@ -26,7 +26,7 @@ pub use control::{Control, ControlConfig, Model, Part, Symbol};
 pub use plan::{PlanConfig, Problem};
 
 /// README.md as documentation, so its Rust example runs as a doctest (`cargo test --doc`);
-/// its shell commands are run by `tests/readme.rs`.
+/// its shell commands are run by `tests/cli/readme.rs`.
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]
 pub struct ReadmeDoctests;

@@ -1,5 +1,5 @@
 //! The body of the AL_d fuzz target (`fuzz/fuzz_targets/action.rs`), also run by
-//! tests/action_fuzz_corpus.rs on a seed corpus so it cannot rot.
+//! tests/action/fuzz_corpus.rs on a seed corpus so it cannot rot.
 //!
 //! Invariants checked: parsing arbitrary bytes terminates without panicking; every span of the
 //! diagnostics lies inside the text on character boundaries and renders; checking and

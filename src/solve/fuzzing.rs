@@ -1,5 +1,5 @@
 //! The body of the `aspif` fuzz target (`fuzz/fuzz_targets/aspif.rs`), kept in the library so
-//! that an ordinary test (`tests/aspif_fuzz_corpus.rs`) runs it over the seed corpus and it
+//! that an ordinary test (`tests/ground/aspif_fuzz_corpus.rs`) runs it over the seed corpus and it
 //! cannot rot.
 //!
 //! Invariants checked on arbitrary bytes: the aspif reader returns a program or an error whose

@@ -24,7 +24,7 @@
 //!   (`Scope`); retiring it removes the weight constraints and retires the variables, which the
 //!   engine then deletes every clause of and reuses (`Engine::retire_vars`). Nothing of a call
 //!   outlives it but learnt clauses that mention none of its variables, so the engine's size
-//!   and the cost per call stay flat over any number of calls (tests/solve_multishot.rs,
+//!   and the cost per call stay flat over any number of calls (tests/solve/multishot.rs,
 //!   benches/multishot.rs). Between calls the learnt clauses are reduced to a limit set by the
 //!   problem size, as clasp does at the start of each solve call.
 //! - Enumeration blocks each model by the negation of its decisions (sound because every
