@@ -4,6 +4,8 @@
 //! Modules are listed in pipeline order; each uses only the modules above it in this list
 //! (`base` at the bottom of the dependency order, `cli` at the top). See ARCHITECTURE.md.
 
+#![warn(missing_docs)]
+
 pub mod base;
 pub mod syntax;
 pub mod ground;

@@ -3,11 +3,11 @@
 //! Invariants: nothing here knows about the syntax, grounding or solving; every type here is
 //! plain data (ids and owned values), so it can cross stage boundaries freely.
 
-pub mod diag;
-pub mod intern;
+pub(crate) mod diag;
+pub(crate) mod intern;
 pub mod rng;
-pub mod source;
-pub mod span;
+pub(crate) mod source;
+pub(crate) mod span;
 
 pub use diag::{Diagnostic, Diagnostics, Note, Severity, WarningKind};
 pub use source::{SourceFile, SourceMap};

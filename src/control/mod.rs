@@ -60,7 +60,7 @@ mod context;
 pub mod incmode;
 mod model;
 mod parts;
-pub mod symbol;
+pub(crate) mod symbol;
 
 use std::cell::OnceCell;
 use std::path::Path;

@@ -20,12 +20,12 @@
 //!   and draws the progress bar from [`run`]'s callback.
 
 #[cfg(feature = "sim")]
-pub mod classify;
-pub mod h1;
+pub(crate) mod classify;
+pub(crate) mod h1;
 pub mod h2;
-pub mod h34;
-pub mod report;
-pub mod svg;
+pub(crate) mod h34;
+pub(crate) mod report;
+pub(crate) mod svg;
 
 use std::collections::BTreeMap;
 use std::sync::Mutex;

@@ -38,9 +38,9 @@ pub mod verbalize;
 pub mod tree;
 pub mod build;
 pub mod questions;
-pub mod oracle;
+pub(crate) mod oracle;
 pub mod history;
-pub mod generic;
+pub(crate) mod generic;
 #[cfg(feature = "sim")]
 pub mod scene;
 pub mod counterfactual;

@@ -12,14 +12,14 @@
 
 pub mod program;
 pub mod aspif;
-pub mod symbol;
-pub mod term;
+pub(crate) mod symbol;
+pub(crate) mod term;
 pub mod include;
-pub mod rewrite;
-pub mod sparc;
-pub mod instantiate;
-pub mod simplify;
-pub mod incremental;
+pub(crate) mod rewrite;
+pub(crate) mod sparc;
+pub(crate) mod instantiate;
+pub(crate) mod simplify;
+pub(crate) mod incremental;
 pub mod text;
 pub mod reference;
 

@@ -264,11 +264,6 @@ impl TermVars {
         self.pattern.len()
     }
 
-    /// Whether there is no term.
-    pub fn is_empty(&self) -> bool {
-        self.pattern.is_empty()
-    }
-
     /// Adds term `t` (its number is the previous [`TermVars::len`]).
     pub fn push(&mut self, t: &NTerm) {
         let start = self.words.len();

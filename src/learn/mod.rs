@@ -11,7 +11,7 @@
 pub mod cart;
 pub mod term;
 pub mod lift;
-pub mod ensemble;
+pub(crate) mod ensemble;
 pub mod score;
 pub mod state;
 pub mod surprise;

@@ -31,13 +31,13 @@
 //!   with the diagnostics rendered against the caller's sources.
 
 pub mod act;
-pub mod check;
+pub(crate) mod check;
 pub mod history;
 #[cfg(feature = "sim")]
 pub mod physics;
-pub mod problem;
-pub mod scene;
-pub mod search;
+pub(crate) mod problem;
+pub(crate) mod scene;
+pub(crate) mod search;
 #[cfg(feature = "sim")]
 pub mod tabletop;
 

@@ -21,15 +21,15 @@
 //! rapier's generational handles only; the library does no file I/O (the `lucent sim` command in
 //! `cli` does).
 
-pub mod act;
+pub(crate) mod act;
 pub mod generate;
-pub mod object;
+pub(crate) mod object;
 pub mod perceive;
-pub mod picture;
-pub mod render;
-pub mod scene;
+pub(crate) mod picture;
+pub(crate) mod render;
+pub(crate) mod scene;
 pub mod truth;
-pub mod world;
+pub(crate) mod world;
 
 pub use crate::base::rng::SplitMix64;
 pub use act::{execute, ActConfig, Action, ActionReport, Failure};

@@ -789,14 +789,6 @@ impl Engine {
         }
     }
 
-    /// Bumps the initial activity of a variable so it is decided early.
-    pub fn bump_initial(&mut self, v: Var, amount: f64) {
-        self.heur.activity[v.index()] += amount;
-        if self.heur.heap_pos[v.index()] != NO_SLOT {
-            self.heap_up(self.heur.heap_pos[v.index()] as usize);
-        }
-    }
-
     /// Installs (or removes) the unfounded-set propagator; the next propagation rechecks the
     /// whole assignment.
     pub fn set_unfounded(&mut self, uf: Option<Unfounded>) {
@@ -814,11 +806,6 @@ impl Engine {
     /// Whether an unfounded-set propagator is installed (the program is not tight).
     pub fn has_unfounded(&self) -> bool {
         self.uf.unfounded.is_some()
-    }
-
-    /// Whether a conflict at level 0 was derived: no more models under any assumption.
-    pub fn is_inconsistent(&self) -> bool {
-        self.inconsistent
     }
 
     /// After a search that answered [`SearchResult::Unsat`]: a subset of its assumptions that

@@ -11,18 +11,18 @@
 
 pub mod brute;
 pub mod check;
-pub mod config;
-pub mod result;
+pub(crate) mod config;
+pub(crate) mod result;
 
 pub use config::{
     Config, CrMode, Deletion, EnumMode, OptMode, ReduceSchedule, RestartPolicy, SearchProfile,
 };
 pub use result::{Model, Outcome, SolveResult, Stats, StopReason};
-pub mod engine;
+pub(crate) mod engine;
 pub mod fuzzing;
-pub mod lit;
-pub mod solver;
-pub mod translate;
-pub mod unfounded;
+pub(crate) mod lit;
+pub(crate) mod solver;
+pub(crate) mod translate;
+pub(crate) mod unfounded;
 
 pub use solver::{SolveError, Solver};

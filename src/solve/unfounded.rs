@@ -241,14 +241,6 @@ impl Unfounded {
         v
     }
 
-    /// The current source of a cyclic atom (local index): a support index, if it has one.
-    pub fn source(&self, atom: u32) -> Option<u32> {
-        match self.source[atom as usize] {
-            NONE => None,
-            s => Some(s),
-        }
-    }
-
     fn is_false(e: &Engine, l: Lit) -> bool {
         e.value(l) == Some(false)
     }

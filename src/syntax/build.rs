@@ -13,22 +13,27 @@ use super::ast::{
 };
 use crate::base::Span;
 
+/// A term of `kind`.
 pub fn term(span: Span, kind: TermKind) -> Term {
     Term { span, kind }
 }
 
+/// The variable `name`.
 pub fn var(span: Span, name: &str) -> Term {
     term(span, TermKind::Variable(name.into()))
 }
 
+/// The constant `name`.
 pub fn constant(span: Span, name: &str) -> Term {
     term(span, TermKind::Constant(name.into()))
 }
 
+/// The integer `n`.
 pub fn int(span: Span, n: i64) -> Term {
     term(span, TermKind::Integer(n))
 }
 
+/// `lhs + n`.
 pub fn plus(span: Span, lhs: Term, n: i64) -> Term {
     term(
         span,
@@ -56,6 +61,7 @@ pub fn function(span: Span, name: &str, args: Vec<Term>) -> Term {
     }
 }
 
+/// The atom `name(args)`, classically negated (`-name(args)`) when `negated`.
 pub fn atom(span: Span, negated: bool, name: &str, args: Vec<Term>) -> SymbolicAtom {
     SymbolicAtom {
         span,
@@ -65,6 +71,7 @@ pub fn atom(span: Span, negated: bool, name: &str, args: Vec<Term>) -> SymbolicA
     }
 }
 
+/// The literal `a` with `sign` (`a`, `not a`, `not not a`).
 pub fn lit(span: Span, sign: Sign, a: SymbolicAtom) -> Literal {
     Literal {
         span,
@@ -73,14 +80,17 @@ pub fn lit(span: Span, sign: Sign, a: SymbolicAtom) -> Literal {
     }
 }
 
+/// The body literal `name(args)` (`-name(args)` when `negated`).
 pub fn pos(span: Span, negated: bool, name: &str, args: Vec<Term>) -> BodyLiteral {
     BodyLiteral::Literal(lit(span, Sign::Positive, atom(span, negated, name, args)))
 }
 
+/// The body literal `not name(args)` (`not -name(args)` when `negated`).
 pub fn neg(span: Span, negated: bool, name: &str, args: Vec<Term>) -> BodyLiteral {
     BodyLiteral::Literal(lit(span, Sign::Not, atom(span, negated, name, args)))
 }
 
+/// The comparison `lhs op rhs` as a body literal.
 pub fn compare(span: Span, lhs: Term, op: CmpOp, rhs: Term) -> BodyLiteral {
     BodyLiteral::Literal(Literal {
         span,
@@ -93,6 +103,7 @@ pub fn compare(span: Span, lhs: Term, op: CmpOp, rhs: Term) -> BodyLiteral {
     })
 }
 
+/// The head made of the one atom `a`.
 pub fn head_of(span: Span, a: SymbolicAtom) -> Head {
     Head::Disjunction(vec![ConditionalLiteral {
         span,

@@ -17,10 +17,10 @@
 
 pub mod scenes;
 pub mod labels;
-pub mod roi;
+pub(crate) mod roi;
 pub mod dataset;
 pub mod cnn;
 pub mod reason;
 pub mod constraints;
 pub mod classify;
-pub mod see;
+pub(crate) mod see;

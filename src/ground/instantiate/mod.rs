@@ -320,11 +320,6 @@ pub struct State {
 }
 
 impl State {
-    /// Number of atoms so far.
-    pub fn num_atoms(&self) -> usize {
-        self.atoms.len()
-    }
-
     /// Atom `a` is not certainly true after all (its rules were withdrawn).
     pub fn clear_fact(&mut self, a: AtomId) {
         if let Some(info) = self.atoms.get_mut((a as usize).wrapping_sub(1)) {

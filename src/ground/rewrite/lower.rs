@@ -282,7 +282,6 @@ impl Rewriter<'_> {
             guards,
             binder: None,
             elems,
-            span: a.span,
         })))
     }
 
@@ -326,7 +325,6 @@ impl Rewriter<'_> {
                             cond,
                             lit: Some(alts),
                         }],
-                        span: c.span,
                     }))
                 }
             };

@@ -119,8 +119,6 @@ pub struct NAgg {
     pub binder: Option<usize>,
     /// Elements.
     pub elems: Vec<NElem>,
-    /// Where it was written.
-    pub span: Span,
 }
 
 /// An aggregate element `terms : cond` (planned condition).

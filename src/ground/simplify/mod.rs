@@ -58,7 +58,7 @@ pub enum Status {
     Unknown,
 }
 
-/// What [`finish`] produces besides the program.
+/// What [`finish_after`] produces besides the program.
 pub struct Finished {
     /// The aspif program.
     pub program: GroundProgram,
@@ -81,12 +81,7 @@ pub const NUMBERED: u8 = 1;
 /// Multi-shot ([`finish_after`]): an earlier grounding reported the atom as a fact.
 pub const KNOWN_FACT: u8 = 2;
 
-/// Adds `:- a, -a.` for complementary atoms, then simplifies and numbers.
-pub fn finish(g: &mut Grounder<'_>, prog: &Compiled) -> Finished {
-    finish_after(g, prog, &[], &[])
-}
-
-/// [`finish`] for a later grounding of a multi-shot session: `before[a]` holds the flags
+/// Adds `:- a, -a.` for complementary atoms, then simplifies and numbers; for a later grounding of a multi-shot session, `before[a]` holds the flags
 /// ([`NUMBERED`], [`KNOWN_FACT`]) of grounder atom `a` from earlier groundings (missing: 0), and
 /// `prefer_before` the `prefer` facts they decided. A numbered atom is *frozen*: earlier
 /// groundings gave it its number and rules, so it is never made false here (it is possible or a

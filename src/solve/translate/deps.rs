@@ -22,12 +22,7 @@ use smallvec::SmallVec;
 
 impl Translation {
     /// Computes strongly connected components of the positive dependency graph, decides
-    /// head-cycle-freeness and installs the unfounded-set propagator if there are cycles.
-    pub fn install_unfounded(&mut self, p: &GroundProgram, e: &mut Engine) {
-        self.install_unfounded_with(p, e, None);
-    }
-
-    /// `install_unfounded` with the components of `p`'s positive dependency graph over
+    /// head-cycle-freeness and installs the unfounded-set propagator if there are cycles; `known`: the components of `p`'s positive dependency graph over
     /// `self.atom_lit.len()` atoms, when already known.
     pub(super) fn install_unfounded_with(
         &mut self,

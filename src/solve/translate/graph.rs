@@ -29,11 +29,6 @@ impl Graph {
         self.first.len() - 1
     }
 
-    /// Whether the graph has no node.
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-
     /// The successors of `v`.
     pub fn succ(&self, v: usize) -> &[u32] {
         &self.targets[self.first[v]..self.first[v + 1]]

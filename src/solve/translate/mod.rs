@@ -24,8 +24,6 @@ mod deps;
 mod graph;
 mod merge;
 
-pub use graph::{scc, Graph};
-
 use super::engine::Engine;
 use super::lit::Lit;
 use crate::ground::program::{BodyRef, ExternalValue, GroundProgram};
@@ -135,11 +133,6 @@ impl Translation {
     /// The constant true literal.
     pub fn true_lit(&self) -> Lit {
         self.atom_lit[0]
-    }
-
-    /// Translates the whole program into a fresh engine, without merging equivalent atoms.
-    pub fn build(p: &GroundProgram, e: &mut Engine) -> Translation {
-        Translation::build_with(p, e, false)
     }
 
     /// Translates the whole program into a fresh engine; `eq` turns the merging of equivalent
