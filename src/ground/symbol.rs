@@ -1,5 +1,6 @@
 //! Ground terms (symbols): a hash-consed table of flat nodes with `u32` ids, clingo's total
-//! order on them, and their printed form.
+//! order on them, and their printed form (by `syntax::printer::write_symbol`, through
+//! [`TableSym`]).
 //!
 //! Invariants:
 //! - Structurally equal symbols have the same [`SymId`] (hash-consing), so equality is id
@@ -19,6 +20,7 @@ use std::cmp::Ordering;
 use hashbrown::HashTable;
 
 use crate::base::intern::{Interner, Sym};
+use crate::syntax::printer::{write_symbol, GroundTerm, Shape};
 
 /// A ground term, an index into [`Symbols`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -368,32 +370,8 @@ impl Symbols {
 
     /// Appends the printed form of `id` (clingo's syntax) to `out`.
     pub fn write(&self, id: SymId, out: &mut String) {
-        match self.get(id) {
-            SymData::Inf => out.push_str("#inf"),
-            SymData::Sup => out.push_str("#sup"),
-            SymData::Num(n) => out.push_str(&n.to_string()),
-            SymData::Str(s) => crate::syntax::printer::string(out, self.names.resolve(s)),
-            SymData::Fun { name, neg, len, .. } => {
-                if neg {
-                    out.push('-');
-                }
-                let name = self.names.resolve(name);
-                out.push_str(name);
-                if len > 0 || name.is_empty() {
-                    out.push('(');
-                    for (i, &arg) in self.args(id).iter().enumerate() {
-                        if i > 0 {
-                            out.push(',');
-                        }
-                        self.write(arg, out);
-                    }
-                    if name.is_empty() && len == 1 {
-                        out.push(',');
-                    }
-                    out.push(')');
-                }
-            }
-        }
+        // Writing to a `String` does not fail.
+        let _ = write_symbol(out, TableSym { syms: self, id });
     }
 
     /// The printed form of `id`.
@@ -401,6 +379,58 @@ impl Symbols {
         let mut s = String::new();
         self.write(id, &mut s);
         s
+    }
+}
+
+/// A symbol of a table, as the printer and the order read it.
+#[derive(Clone, Copy)]
+pub struct TableSym<'s> {
+    /// The table.
+    pub syms: &'s Symbols,
+    /// The symbol.
+    pub id: SymId,
+}
+
+/// The arguments of a [`TableSym`] function.
+pub struct TableArgs<'s> {
+    syms: &'s Symbols,
+    ids: std::slice::Iter<'s, SymId>,
+}
+
+impl<'s> Iterator for TableArgs<'s> {
+    type Item = TableSym<'s>;
+    fn next(&mut self) -> Option<TableSym<'s>> {
+        let id = *self.ids.next()?;
+        Some(TableSym {
+            syms: self.syms,
+            id,
+        })
+    }
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        self.ids.size_hint()
+    }
+}
+
+impl ExactSizeIterator for TableArgs<'_> {}
+
+impl<'s> GroundTerm<'s> for TableSym<'s> {
+    type Args = TableArgs<'s>;
+    fn shape(self) -> Shape<'s, TableArgs<'s>> {
+        let syms = self.syms;
+        match syms.get(self.id) {
+            SymData::Inf => Shape::Inf,
+            SymData::Sup => Shape::Sup,
+            SymData::Num(n) => Shape::Number(n),
+            SymData::Str(s) => Shape::String(syms.names.resolve(s)),
+            SymData::Fun { name, neg, .. } => Shape::Function {
+                name: syms.names.resolve(name),
+                negative: neg,
+                args: TableArgs {
+                    syms,
+                    ids: syms.args(self.id).iter(),
+                },
+            },
+        }
     }
 }
 
