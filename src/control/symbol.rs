@@ -5,8 +5,8 @@
 //! - `Display` prints exactly as clingo prints (`f(1,"a\"b",(x,)),-g`, `#inf`, `#sup`), through
 //!   the crate's one symbol printer (`syntax::printer::write_symbol`), so
 //!   `Symbol::parse(&s.to_string()) == Ok(s)` for every symbol.
-//! - `Ord` is clingo's total order (the order of the grounder's symbol table,
-//!   `ground::symbol::Symbols::compare`): `#inf` < numbers < constants (positive before
+//! - `Ord` is clingo's total order, the crate's one symbol order (`ground::symbol::order`, which
+//!   orders the grounder's symbol table too): `#inf` < numbers < constants (positive before
 //!   negated, then by name) < strings < functions and tuples (by arity, then positive before
 //!   negated, then name, then arguments) < `#sup`.
 //! - Numbers are 32-bit, as in clingo. A constant is a function without arguments; a tuple is a
@@ -274,18 +274,6 @@ impl Symbol {
         Ok(sym)
     }
 
-    /// clingo's rank of the symbol's type in the total order.
-    fn rank(&self) -> u8 {
-        match self {
-            Symbol::Inf => 0,
-            Symbol::Number(_) => 1,
-            Symbol::Function { name, args, .. } if args.is_empty() && !name.is_empty() => 2,
-            Symbol::String(_) => 3,
-            Symbol::Function { .. } => 4,
-            Symbol::Sup => 5,
-        }
-    }
-
     /// The symbol as it is in the grounder's table `syms` (`id`).
     pub(crate) fn from_table(syms: &Symbols, id: SymId) -> Symbol {
         match syms.get(id) {
@@ -445,34 +433,7 @@ impl Symbol {
 
 impl Ord for Symbol {
     fn cmp(&self, other: &Symbol) -> Ordering {
-        if let (Symbol::Number(a), Symbol::Number(b)) = (self, other) {
-            return a.cmp(b);
-        }
-        let (ra, rb) = (self.rank(), other.rank());
-        if ra != rb {
-            return ra.cmp(&rb);
-        }
-        match (self, other) {
-            (Symbol::String(a), Symbol::String(b)) => a.cmp(b),
-            (
-                Symbol::Function {
-                    name: na,
-                    args: aa,
-                    negative: ga,
-                },
-                Symbol::Function {
-                    name: nb,
-                    args: ab,
-                    negative: gb,
-                },
-            ) => aa
-                .len()
-                .cmp(&ab.len())
-                .then(ga.cmp(gb))
-                .then_with(|| na.cmp(nb))
-                .then_with(|| aa.cmp(ab)),
-            _ => Ordering::Equal,
-        }
+        crate::ground::symbol::order(self, other)
     }
 }
 

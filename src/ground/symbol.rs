@@ -6,7 +6,8 @@
 //! - Structurally equal symbols have the same [`SymId`] (hash-consing), so equality is id
 //!   equality and a symbol's arguments are ids of symbols created before it (children before
 //!   parents, as egg's `RecExpr`).
-//! - The order ([`Symbols::compare`]) is clingo's: `#inf` < integers < constants (positive
+//! - The order ([`order`], the crate's one symbol order, for this table [`Symbols::compare`]
+//!   and for `control::Symbol`) is clingo's: `#inf` < integers < constants (positive
 //!   before classically negated, then by name) < strings < functions and tuples (by arity, then
 //!   positive before negated, then name, then arguments left to right) < `#sup`. Checked against
 //!   clingo 5.8.3's `Symbol.__lt__`.
@@ -311,61 +312,12 @@ impl Symbols {
         }
     }
 
-    /// Rank of a symbol's type in clingo's order.
-    fn rank(&self, id: SymId) -> u8 {
-        match self.get(id) {
-            SymData::Inf => 0,
-            SymData::Num(_) => 1,
-            SymData::Fun { len: 0, name, .. } if !self.names.resolve(name).is_empty() => 2,
-            SymData::Str(_) => 3,
-            SymData::Fun { .. } => 4,
-            SymData::Sup => 5,
-        }
-    }
-
-    /// clingo's total order on symbols.
+    /// clingo's total order on symbols (see [`order`]).
     pub fn compare(&self, a: SymId, b: SymId) -> Ordering {
-        if a == b {
-            return Ordering::Equal;
-        }
-        if let (SymData::Num(x), SymData::Num(y)) = (self.get(a), self.get(b)) {
-            return x.cmp(&y);
-        }
-        let (ra, rb) = (self.rank(a), self.rank(b));
-        if ra != rb {
-            return ra.cmp(&rb);
-        }
-        match (self.get(a), self.get(b)) {
-            (SymData::Num(x), SymData::Num(y)) => x.cmp(&y),
-            (SymData::Str(x), SymData::Str(y)) => self.names.resolve(x).cmp(self.names.resolve(y)),
-            (
-                SymData::Fun {
-                    name: na,
-                    neg: ga,
-                    len: la,
-                    ..
-                },
-                SymData::Fun {
-                    name: nb,
-                    neg: gb,
-                    len: lb,
-                    ..
-                },
-            ) => la
-                .cmp(&lb)
-                .then(ga.cmp(&gb))
-                .then_with(|| self.names.resolve(na).cmp(self.names.resolve(nb)))
-                .then_with(|| {
-                    for (&x, &y) in self.args(a).iter().zip(self.args(b)) {
-                        let o = self.compare(x, y);
-                        if o != Ordering::Equal {
-                            return o;
-                        }
-                    }
-                    Ordering::Equal
-                }),
-            _ => Ordering::Equal,
-        }
+        order(
+            TableSym { syms: self, id: a },
+            TableSym { syms: self, id: b },
+        )
     }
 
     /// Appends the printed form of `id` (clingo's syntax) to `out`.
@@ -379,6 +331,63 @@ impl Symbols {
         let mut s = String::new();
         self.write(id, &mut s);
         s
+    }
+}
+
+/// clingo's total order on ground terms, whatever their representation (the grounder's table
+/// through [`TableSym`], `control::Symbol`): `#inf` < integers < constants (positive before
+/// classically negated, then by name) < strings < functions and tuples (by arity, then positive
+/// before negated, then name, then arguments left to right) < `#sup`. The one symbol order of
+/// the crate.
+pub fn order<'s, T: GroundTerm<'s>>(a: T, b: T) -> Ordering {
+    if a.identical(b) {
+        return Ordering::Equal;
+    }
+    let (sa, sb) = (a.shape(), b.shape());
+    if let (Shape::Number(x), Shape::Number(y)) = (&sa, &sb) {
+        return x.cmp(y);
+    }
+    let (ra, rb) = (rank(&sa), rank(&sb));
+    if ra != rb {
+        return ra.cmp(&rb);
+    }
+    match (sa, sb) {
+        (Shape::String(x), Shape::String(y)) => x.cmp(y),
+        (
+            Shape::Function {
+                name: na,
+                negative: ga,
+                args: aa,
+            },
+            Shape::Function {
+                name: nb,
+                negative: gb,
+                args: ab,
+            },
+        ) => aa
+            .len()
+            .cmp(&ab.len())
+            .then(ga.cmp(&gb))
+            .then_with(|| na.cmp(nb))
+            .then_with(|| {
+                aa.zip(ab)
+                    .map(|(x, y)| order(x, y))
+                    .find(|o| o.is_ne())
+                    .unwrap_or(Ordering::Equal)
+            }),
+        _ => Ordering::Equal,
+    }
+}
+
+/// Rank of a symbol's type in clingo's order.
+fn rank<I: ExactSizeIterator>(shape: &Shape<'_, I>) -> u8 {
+    match shape {
+        Shape::Inf => 0,
+        Shape::Number(_) => 1,
+        Shape::Function { name, args, .. } if args.len() == 0 && !name.is_empty() => 2,
+        Shape::String(_) => 3,
+        Shape::Function { .. } => 4,
+        Shape::Sup => 5,
     }
 }
 
@@ -431,6 +440,9 @@ impl<'s> GroundTerm<'s> for TableSym<'s> {
                 },
             },
         }
+    }
+    fn identical(self, other: TableSym<'s>) -> bool {
+        self.id == other.id
     }
 }
 

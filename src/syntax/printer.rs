@@ -552,7 +552,8 @@ pub fn write_string(out: &mut impl fmt::Write, s: &str) -> fmt::Result {
 
 /// The surface of a ground term, as clingo prints and orders it. Whatever holds symbols (the
 /// grounder's table, [`crate::control::Symbol`]) shows them through [`GroundTerm`], so that one
-/// printer ([`write_symbol`]) serves every representation.
+/// printer ([`write_symbol`]) and one order (`ground::symbol::order`) serve every
+/// representation.
 pub enum Shape<'s, I> {
     /// `#inf`.
     Inf,
@@ -579,6 +580,11 @@ pub trait GroundTerm<'s>: Copy {
     type Args: ExactSizeIterator<Item = Self>;
     /// The term's shape.
     fn shape(self) -> Shape<'s, Self::Args>;
+    /// True when the two are known to be the same term without looking further (the same id
+    /// of a hash-consed table); false when unknown.
+    fn identical(self, _other: Self) -> bool {
+        false
+    }
 }
 
 /// Writes a ground term as clingo prints it (`f(1,"a\"b",(x,))`, `-g`, `#inf`, `#sup`).
