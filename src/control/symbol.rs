@@ -2,10 +2,11 @@
 //! terms cross the library's front door (clingo's `Symbol`).
 //!
 //! Invariants:
-//! - `Display` prints exactly as clingo prints (`f(1,"a\"b",(x,)),-g`, `#inf`, `#sup`), so
+//! - `Display` prints exactly as clingo prints (`f(1,"a\"b",(x,)),-g`, `#inf`, `#sup`), through
+//!   the crate's one symbol printer (`syntax::printer::write_symbol`), so
 //!   `Symbol::parse(&s.to_string()) == Ok(s)` for every symbol.
-//! - `Ord` is clingo's total order (the order of the grounder's symbol table,
-//!   `ground::symbol::Symbols::compare`): `#inf` < numbers < constants (positive before
+//! - `Ord` is clingo's total order, the crate's one symbol order (`ground::symbol::order`, which
+//!   orders the grounder's symbol table too): `#inf` < numbers < constants (positive before
 //!   negated, then by name) < strings < functions and tuples (by arity, then positive before
 //!   negated, then name, then arguments) < `#sup`.
 //! - Numbers are 32-bit, as in clingo. A constant is a function without arguments; a tuple is a
@@ -20,6 +21,7 @@ use std::sync::Arc;
 
 use crate::ground::symbol::{SymData, SymId, Symbols};
 use crate::syntax::ast;
+use crate::syntax::printer::{write_symbol, GroundTerm, Shape};
 
 /// A ground term.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -278,18 +280,6 @@ impl Symbol {
         Ok(sym)
     }
 
-    /// clingo's rank of the symbol's type in the total order.
-    fn rank(&self) -> u8 {
-        match self {
-            Symbol::Inf => 0,
-            Symbol::Number(_) => 1,
-            Symbol::Function { name, args, .. } if args.is_empty() && !name.is_empty() => 2,
-            Symbol::String(_) => 3,
-            Symbol::Function { .. } => 4,
-            Symbol::Sup => 5,
-        }
-    }
-
     /// The symbol as it is in the grounder's table `syms` (`id`).
     pub(crate) fn from_table(syms: &Symbols, id: SymId) -> Symbol {
         match syms.get(id) {
@@ -449,34 +439,7 @@ impl Symbol {
 
 impl Ord for Symbol {
     fn cmp(&self, other: &Symbol) -> Ordering {
-        if let (Symbol::Number(a), Symbol::Number(b)) = (self, other) {
-            return a.cmp(b);
-        }
-        let (ra, rb) = (self.rank(), other.rank());
-        if ra != rb {
-            return ra.cmp(&rb);
-        }
-        match (self, other) {
-            (Symbol::String(a), Symbol::String(b)) => a.cmp(b),
-            (
-                Symbol::Function {
-                    name: na,
-                    args: aa,
-                    negative: ga,
-                },
-                Symbol::Function {
-                    name: nb,
-                    args: ab,
-                    negative: gb,
-                },
-            ) => aa
-                .len()
-                .cmp(&ab.len())
-                .then(ga.cmp(gb))
-                .then_with(|| na.cmp(nb))
-                .then_with(|| aa.cmp(ab)),
-            _ => Ordering::Equal,
-        }
+        crate::ground::symbol::order(self, other)
     }
 }
 
@@ -486,64 +449,31 @@ impl PartialOrd for Symbol {
     }
 }
 
-impl fmt::Display for Symbol {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl<'s> GroundTerm<'s> for &'s Symbol {
+    type Args = std::slice::Iter<'s, Symbol>;
+    fn shape(self) -> Shape<'s, Self::Args> {
         match self {
-            Symbol::Inf => f.write_str("#inf"),
-            Symbol::Sup => f.write_str("#sup"),
-            Symbol::Number(n) => write!(f, "{n}"),
-            Symbol::String(s) => write_string(f, s),
+            Symbol::Inf => Shape::Inf,
+            Symbol::Sup => Shape::Sup,
+            Symbol::Number(n) => Shape::Number(*n),
+            Symbol::String(s) => Shape::String(s),
             Symbol::Function {
                 name,
                 args,
                 negative,
-            } => write_function(f, name, args, *negative),
+            } => Shape::Function {
+                name,
+                negative: *negative,
+                args: args.iter(),
+            },
         }
     }
 }
 
-/// Writes a string term as clingo prints it: quoted, with `"`, `\` and newlines escaped.
-pub fn write_string(f: &mut fmt::Formatter<'_>, s: &str) -> fmt::Result {
-    f.write_str("\"")?;
-    for c in s.chars() {
-        match c {
-            '"' => f.write_str("\\\"")?,
-            '\\' => f.write_str("\\\\")?,
-            '\n' => f.write_str("\\n")?,
-            c => write!(f, "{c}")?,
-        }
+impl fmt::Display for Symbol {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write_symbol(f, self)
     }
-    f.write_str("\"")
-}
-
-/// Writes a function term as clingo prints it: `-` when classically negated, the name, and the
-/// arguments in parentheses without spaces (none for a constant; a tuple of one gets a
-/// trailing comma). Shared by [`Symbol`] and any other term type with the same surface (the
-/// explainer's patterns), so that both print alike.
-pub fn write_function<A: fmt::Display>(
-    f: &mut fmt::Formatter<'_>,
-    name: &str,
-    args: &[A],
-    negative: bool,
-) -> fmt::Result {
-    if negative {
-        f.write_str("-")?;
-    }
-    f.write_str(name)?;
-    if !args.is_empty() || name.is_empty() {
-        f.write_str("(")?;
-        for (i, a) in args.iter().enumerate() {
-            if i > 0 {
-                f.write_str(",")?;
-            }
-            write!(f, "{a}")?;
-        }
-        if name.is_empty() && args.len() == 1 {
-            f.write_str(",")?;
-        }
-        f.write_str(")")?;
-    }
-    Ok(())
 }
 
 impl std::str::FromStr for Symbol {

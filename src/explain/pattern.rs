@@ -19,8 +19,8 @@
 
 use std::fmt;
 
-use crate::control::symbol;
 use crate::control::Symbol;
+use crate::syntax::printer;
 
 /// What literals need of a ground term, beyond `control::Symbol`'s own methods.
 pub trait SymbolExt {
@@ -508,12 +508,12 @@ impl fmt::Display for Pattern {
         match self {
             Pattern::Var(v) => f.write_str(v),
             Pattern::Num(n) => write!(f, "{n}"),
-            Pattern::Str(s) => symbol::write_string(f, s),
+            Pattern::Str(s) => printer::write_string(f, s),
             Pattern::Fun {
                 name,
                 args,
                 negative,
-            } => symbol::write_function(f, name, args, *negative),
+            } => printer::write_function(f, name, *negative, args.iter(), |f, a| write!(f, "{a}")),
         }
     }
 }

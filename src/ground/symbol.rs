@@ -1,11 +1,13 @@
 //! Ground terms (symbols): a hash-consed table of flat nodes with `u32` ids, clingo's total
-//! order on them, and their printed form.
+//! order on them, and their printed form (by `syntax::printer::write_symbol`, through
+//! [`TableSym`]).
 //!
 //! Invariants:
 //! - Structurally equal symbols have the same [`SymId`] (hash-consing), so equality is id
 //!   equality and a symbol's arguments are ids of symbols created before it (children before
 //!   parents, as egg's `RecExpr`).
-//! - The order ([`Symbols::compare`]) is clingo's: `#inf` < integers < constants (positive
+//! - The order ([`order`], the crate's one symbol order, for this table [`Symbols::compare`]
+//!   and for `control::Symbol`) is clingo's: `#inf` < integers < constants (positive
 //!   before classically negated, then by name) < strings < functions and tuples (by arity, then
 //!   positive before negated, then name, then arguments left to right) < `#sup`. Checked against
 //!   clingo 5.8.3's `Symbol.__lt__`.
@@ -19,6 +21,7 @@ use std::cmp::Ordering;
 use hashbrown::HashTable;
 
 use crate::base::intern::{Interner, Sym};
+use crate::syntax::printer::{write_symbol, GroundTerm, Shape};
 
 /// A ground term, an index into [`Symbols`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -309,91 +312,18 @@ impl Symbols {
         }
     }
 
-    /// Rank of a symbol's type in clingo's order.
-    fn rank(&self, id: SymId) -> u8 {
-        match self.get(id) {
-            SymData::Inf => 0,
-            SymData::Num(_) => 1,
-            SymData::Fun { len: 0, name, .. } if !self.names.resolve(name).is_empty() => 2,
-            SymData::Str(_) => 3,
-            SymData::Fun { .. } => 4,
-            SymData::Sup => 5,
-        }
-    }
-
-    /// clingo's total order on symbols.
+    /// clingo's total order on symbols (see [`order`]).
     pub fn compare(&self, a: SymId, b: SymId) -> Ordering {
-        if a == b {
-            return Ordering::Equal;
-        }
-        if let (SymData::Num(x), SymData::Num(y)) = (self.get(a), self.get(b)) {
-            return x.cmp(&y);
-        }
-        let (ra, rb) = (self.rank(a), self.rank(b));
-        if ra != rb {
-            return ra.cmp(&rb);
-        }
-        match (self.get(a), self.get(b)) {
-            (SymData::Num(x), SymData::Num(y)) => x.cmp(&y),
-            (SymData::Str(x), SymData::Str(y)) => self.names.resolve(x).cmp(self.names.resolve(y)),
-            (
-                SymData::Fun {
-                    name: na,
-                    neg: ga,
-                    len: la,
-                    ..
-                },
-                SymData::Fun {
-                    name: nb,
-                    neg: gb,
-                    len: lb,
-                    ..
-                },
-            ) => la
-                .cmp(&lb)
-                .then(ga.cmp(&gb))
-                .then_with(|| self.names.resolve(na).cmp(self.names.resolve(nb)))
-                .then_with(|| {
-                    for (&x, &y) in self.args(a).iter().zip(self.args(b)) {
-                        let o = self.compare(x, y);
-                        if o != Ordering::Equal {
-                            return o;
-                        }
-                    }
-                    Ordering::Equal
-                }),
-            _ => Ordering::Equal,
-        }
+        order(
+            TableSym { syms: self, id: a },
+            TableSym { syms: self, id: b },
+        )
     }
 
     /// Appends the printed form of `id` (clingo's syntax) to `out`.
     pub fn write(&self, id: SymId, out: &mut String) {
-        match self.get(id) {
-            SymData::Inf => out.push_str("#inf"),
-            SymData::Sup => out.push_str("#sup"),
-            SymData::Num(n) => out.push_str(&n.to_string()),
-            SymData::Str(s) => crate::syntax::printer::string(out, self.names.resolve(s)),
-            SymData::Fun { name, neg, len, .. } => {
-                if neg {
-                    out.push('-');
-                }
-                let name = self.names.resolve(name);
-                out.push_str(name);
-                if len > 0 || name.is_empty() {
-                    out.push('(');
-                    for (i, &arg) in self.args(id).iter().enumerate() {
-                        if i > 0 {
-                            out.push(',');
-                        }
-                        self.write(arg, out);
-                    }
-                    if name.is_empty() && len == 1 {
-                        out.push(',');
-                    }
-                    out.push(')');
-                }
-            }
-        }
+        // Writing to a `String` does not fail.
+        let _ = write_symbol(out, TableSym { syms: self, id });
     }
 
     /// The printed form of `id`.
@@ -401,6 +331,118 @@ impl Symbols {
         let mut s = String::new();
         self.write(id, &mut s);
         s
+    }
+}
+
+/// clingo's total order on ground terms, whatever their representation (the grounder's table
+/// through [`TableSym`], `control::Symbol`): `#inf` < integers < constants (positive before
+/// classically negated, then by name) < strings < functions and tuples (by arity, then positive
+/// before negated, then name, then arguments left to right) < `#sup`. The one symbol order of
+/// the crate.
+pub fn order<'s, T: GroundTerm<'s>>(a: T, b: T) -> Ordering {
+    if a.identical(b) {
+        return Ordering::Equal;
+    }
+    let (sa, sb) = (a.shape(), b.shape());
+    if let (Shape::Number(x), Shape::Number(y)) = (&sa, &sb) {
+        return x.cmp(y);
+    }
+    let (ra, rb) = (rank(&sa), rank(&sb));
+    if ra != rb {
+        return ra.cmp(&rb);
+    }
+    match (sa, sb) {
+        (Shape::String(x), Shape::String(y)) => x.cmp(y),
+        (
+            Shape::Function {
+                name: na,
+                negative: ga,
+                args: aa,
+            },
+            Shape::Function {
+                name: nb,
+                negative: gb,
+                args: ab,
+            },
+        ) => aa
+            .len()
+            .cmp(&ab.len())
+            .then(ga.cmp(&gb))
+            .then_with(|| na.cmp(nb))
+            .then_with(|| {
+                aa.zip(ab)
+                    .map(|(x, y)| order(x, y))
+                    .find(|o| o.is_ne())
+                    .unwrap_or(Ordering::Equal)
+            }),
+        _ => Ordering::Equal,
+    }
+}
+
+/// Rank of a symbol's type in clingo's order.
+fn rank<I: ExactSizeIterator>(shape: &Shape<'_, I>) -> u8 {
+    match shape {
+        Shape::Inf => 0,
+        Shape::Number(_) => 1,
+        Shape::Function { name, args, .. } if args.len() == 0 && !name.is_empty() => 2,
+        Shape::String(_) => 3,
+        Shape::Function { .. } => 4,
+        Shape::Sup => 5,
+    }
+}
+
+/// A symbol of a table, as the printer and the order read it.
+#[derive(Clone, Copy)]
+pub struct TableSym<'s> {
+    /// The table.
+    pub syms: &'s Symbols,
+    /// The symbol.
+    pub id: SymId,
+}
+
+/// The arguments of a [`TableSym`] function.
+pub struct TableArgs<'s> {
+    syms: &'s Symbols,
+    ids: std::slice::Iter<'s, SymId>,
+}
+
+impl<'s> Iterator for TableArgs<'s> {
+    type Item = TableSym<'s>;
+    fn next(&mut self) -> Option<TableSym<'s>> {
+        let id = *self.ids.next()?;
+        Some(TableSym {
+            syms: self.syms,
+            id,
+        })
+    }
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        self.ids.size_hint()
+    }
+}
+
+impl ExactSizeIterator for TableArgs<'_> {}
+
+impl<'s> GroundTerm<'s> for TableSym<'s> {
+    type Args = TableArgs<'s>;
+    fn shape(self) -> Shape<'s, TableArgs<'s>> {
+        let syms = self.syms;
+        match syms.get(self.id) {
+            SymData::Inf => Shape::Inf,
+            SymData::Sup => Shape::Sup,
+            SymData::Num(n) => Shape::Number(n),
+            SymData::Str(s) => Shape::String(syms.names.resolve(s)),
+            SymData::Fun { name, neg, .. } => Shape::Function {
+                name: syms.names.resolve(name),
+                negative: neg,
+                args: TableArgs {
+                    syms,
+                    ids: syms.args(self.id).iter(),
+                },
+            },
+        }
+    }
+    fn identical(self, other: TableSym<'s>) -> bool {
+        self.id == other.id
     }
 }
 

@@ -1,7 +1,9 @@
 //! The printer: syntax tree back to readable clingo or SPARC source.
 //!
 //! Role: one statement per line, canonical spacing, operators spelled in their first form
-//! (`=` for `==`, `!=` for `<>`), bare `<=` guards only in the `1 { a } 2` forms.
+//! (`=` for `==`, `!=` for `<>`), bare `<=` guards only in the `1 { a } 2` forms. Also the home
+//! of clingo's spelling of ground terms: the one string escaper ([`write_string`]) and the one
+//! symbol printer ([`write_symbol`]), for every representation of symbols ([`GroundTerm`]).
 //!
 //! Invariant: for every tree `t` the parser produces, `parse(print(t))` has the same shape as
 //! `t` (spans aside). The printer needs no extra parentheses for that, because the parser keeps
@@ -9,6 +11,8 @@
 //! operator trees by the same precedences the printer relies on. Separators are chosen so that
 //! tokens never merge (`: -` is never printed as `:-`) and so that a body literal after a
 //! conditional literal is not read as part of its condition (`;` is printed after one).
+
+use std::fmt;
 
 use super::ast::*;
 
@@ -525,19 +529,109 @@ fn terms(out: &mut String, ts: &[Term]) {
     }
 }
 
-/// A string literal with `\\`, `\"` and `\n` escaped (also how a ground string symbol
-/// prints).
+/// A string literal with `\\`, `\"` and `\n` escaped, into a `String`.
 pub fn string(out: &mut String, s: &str) {
-    out.push('"');
+    // Writing to a `String` does not fail.
+    let _ = write_string(out, s);
+}
+
+/// Writes a string as clingo prints it, in programs and as a ground symbol: quoted, with `"`,
+/// `\` and newlines escaped. The one escaper of the crate.
+pub fn write_string(out: &mut impl fmt::Write, s: &str) -> fmt::Result {
+    out.write_char('"')?;
     for c in s.chars() {
         match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            c => out.push(c),
+            '"' => out.write_str("\\\"")?,
+            '\\' => out.write_str("\\\\")?,
+            '\n' => out.write_str("\\n")?,
+            c => out.write_char(c)?,
         }
     }
-    out.push('"');
+    out.write_char('"')
+}
+
+/// The surface of a ground term, as clingo prints and orders it. Whatever holds symbols (the
+/// grounder's table, [`crate::control::Symbol`]) shows them through [`GroundTerm`], so that one
+/// printer ([`write_symbol`]) and one order (`ground::symbol::order`) serve every
+/// representation.
+pub enum Shape<'s, I> {
+    /// `#inf`.
+    Inf,
+    /// `#sup`.
+    Sup,
+    /// An integer.
+    Number(i32),
+    /// A string (its text, unescaped).
+    String(&'s str),
+    /// A function, a constant (no arguments) or a tuple (the empty name).
+    Function {
+        /// The name.
+        name: &'s str,
+        /// Classical negation `-f(...)`.
+        negative: bool,
+        /// The arguments, left to right.
+        args: I,
+    },
+}
+
+/// A ground term in some representation, seen as a [`Shape`].
+pub trait GroundTerm<'s>: Copy {
+    /// The arguments of a function.
+    type Args: ExactSizeIterator<Item = Self>;
+    /// The term's shape.
+    fn shape(self) -> Shape<'s, Self::Args>;
+    /// True when the two are known to be the same term without looking further (the same id
+    /// of a hash-consed table); false when unknown.
+    fn identical(self, _other: Self) -> bool {
+        false
+    }
+}
+
+/// Writes a ground term as clingo prints it (`f(1,"a\"b",(x,))`, `-g`, `#inf`, `#sup`).
+pub fn write_symbol<'s, T: GroundTerm<'s>>(out: &mut impl fmt::Write, t: T) -> fmt::Result {
+    match t.shape() {
+        Shape::Inf => out.write_str("#inf"),
+        Shape::Sup => out.write_str("#sup"),
+        Shape::Number(n) => write!(out, "{n}"),
+        Shape::String(s) => write_string(out, s),
+        Shape::Function {
+            name,
+            negative,
+            args,
+        } => write_function(out, name, negative, args, |out, a| write_symbol(out, a)),
+    }
+}
+
+/// Writes a function term as clingo prints it: `-` when classically negated, the name, and the
+/// arguments (each by `arg`) in parentheses without spaces (none for a constant; a tuple of one
+/// gets a trailing comma). [`write_symbol`] and terms with the same surface that are not ground
+/// (the explainer's patterns) print with it.
+pub fn write_function<W: fmt::Write, A>(
+    out: &mut W,
+    name: &str,
+    negative: bool,
+    args: impl ExactSizeIterator<Item = A>,
+    mut arg: impl FnMut(&mut W, A) -> fmt::Result,
+) -> fmt::Result {
+    if negative {
+        out.write_char('-')?;
+    }
+    out.write_str(name)?;
+    let n = args.len();
+    if n == 0 && !name.is_empty() {
+        return Ok(());
+    }
+    out.write_char('(')?;
+    for (i, a) in args.enumerate() {
+        if i > 0 {
+            out.write_char(',')?;
+        }
+        arg(out, a)?;
+    }
+    if name.is_empty() && n == 1 {
+        out.write_char(',')?;
+    }
+    out.write_char(')')
 }
 
 /// The spelling of a binary operator.

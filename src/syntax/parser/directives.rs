@@ -154,11 +154,11 @@ impl<'a> Parser<'a> {
                 "default" => ConstKind::Default,
                 "override" => ConstKind::Override,
                 _ => {
-                    self.diags.push(Diagnostic::error(
-                        self.span(word.start, word.end),
+                    let span = self.span_of(word);
+                    return Err(self.error(
+                        span,
                         "syntax error, unexpected <IDENTIFIER>, expecting default or override",
                     ));
-                    return Err(Failed);
                 }
             };
             annotated = true;
@@ -269,30 +269,20 @@ impl<'a> Parser<'a> {
     /// `#script (lang) code #end.`
     pub(super) fn script(&mut self) -> PResult<StatementKind> {
         let start = self.bump();
-        self.report_script(self.span(start.start, start.end));
+        let span = self.span_of(start);
+        self.report_script(span);
         self.expect(T::LParen, &["("])?;
         let language = self.identifier()?;
         if !self.at(T::RParen) {
             return Err(self.unexpected(&[")"]));
         }
-        // The code is raw text: rewind the lexer to just after `)` and scan for `#end.`.
-        let code_start = self.tok.end as usize;
-        self.prev_end = self.tok.end;
-        self.peeked = None;
-        self.lexer.set_pos(code_start);
-        let found = self.lexer.script_body();
-        match found {
+        // The code is raw text: the lexer rewinds to just after `)` and scans for `#end.`.
+        match self.script_body() {
             Some((s, e)) => {
                 let code = self.text[s..e].to_string();
-                self.prev_end = self.lexer.pos() as u32;
-                self.tok = self.lexer.next_token(&mut self.diags);
                 Ok(StatementKind::Script(Script { language, code }))
             }
-            None => {
-                self.prev_end = self.lexer.pos() as u32;
-                self.tok = self.lexer.next_token(&mut self.diags);
-                Err(self.unexpected(&["#end"]))
-            }
+            None => Err(self.unexpected(&["#end"])),
         }
     }
 }

@@ -470,11 +470,11 @@ impl<'a> Parser<'a> {
                     lit_start = next_start;
                 }
                 Some(_) => {
-                    self.diags.push(Diagnostic::error(
-                        self.span(self.tok.start, self.tok.end),
+                    let span = self.span_of(self.tok);
+                    return Err(self.error(
+                        span,
                         "syntax error, negated comparison chains are not supported",
                     ));
-                    return Err(Failed);
                 }
                 None => return Ok(()),
             }

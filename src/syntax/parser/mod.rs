@@ -16,16 +16,25 @@
 //!   with a single "unsupported" error.
 //! - Memory is proportional to the input: tokens are produced on demand (one token of
 //!   lookahead beyond the current one), and the tree owns its strings.
+//!
+//! The token plumbing and the term grammar are the `Cursor`'s (`cursor.rs`, `terms.rs`), which
+//! the AL_d parser ([`crate::action::parser`]) stands on too; `Parser` dereferences to its
+//! cursor.
+
+use std::ops::{Deref, DerefMut};
 
 use crate::base::{Diagnostic, FileId, Span};
 
 use super::ast::*;
-use super::lexer::{describe, Lexer, Token, TokenKind as T};
+use super::lexer::{Lexer, Token, TokenKind as T};
 
+mod cursor;
 mod directives;
 mod literals;
 mod sparc;
 mod terms;
+
+pub(crate) use cursor::{cmp_op, Cursor, Failed, PResult, TermGrammar};
 
 /// Deepest nesting of terms, aggregates and sort expressions the parser accepts. 256 levels
 /// keep the parser, the printer and the span walk well inside a 2 MiB thread stack (the size of
@@ -73,7 +82,7 @@ pub fn parse(file: FileId, text: &str, dialect: Dialect) -> Parse {
             dialect,
             statements: parser.statements,
         },
-        diagnostics: parser.diags,
+        diagnostics: parser.cursor.diags,
     }
 }
 
@@ -115,12 +124,6 @@ pub fn detect_dialect(text: &str) -> Dialect {
     }
 }
 
-/// Marks a statement that failed; its diagnostic has been reported.
-struct Failed;
-
-/// Result of a parsing step.
-type PResult<T> = Result<T, Failed>;
-
 /// Which kind of statement context a literal is parsed in.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Ctx {
@@ -132,28 +135,12 @@ enum Ctx {
 
 /// The parser state for one file.
 struct Parser<'a> {
-    /// The token source.
-    lexer: Lexer<'a>,
-    /// The text, for token contents.
-    text: &'a str,
-    /// The file spans point into.
-    file: FileId,
+    /// The tokens, diagnostics and terms.
+    cursor: Cursor<'a>,
     /// The surface language.
     dialect: Dialect,
-    /// The current token.
-    tok: Token,
-    /// The token after the current one, once looked at.
-    peeked: Option<Token>,
-    /// End of the last consumed token.
-    prev_end: u32,
-    /// Diagnostics so far.
-    diags: Vec<Diagnostic>,
     /// Statements so far.
     statements: Vec<Statement>,
-    /// Current nesting depth.
-    depth: u32,
-    /// True once the unsupported-script diagnostic was reported.
-    script_reported: bool,
     /// The current SPARC section, if any.
     section: Option<Section>,
     /// SPARC sort names defined so far (with `#`): a defined sort may be named like a clingo
@@ -181,43 +168,6 @@ fn aggregate_function(kind: T, word: &str) -> Option<AggregateFunction> {
         (T::Hash, "#max") => Some(AggregateFunction::Max),
         _ => None,
     }
-}
-
-/// Comparison operator of a token (the AL_d parser reads comparisons with it too).
-pub(crate) fn cmp_op(kind: T) -> Option<CmpOp> {
-    Some(match kind {
-        T::Eq => CmpOp::Eq,
-        T::Ne => CmpOp::Ne,
-        T::Lt => CmpOp::Lt,
-        T::Le => CmpOp::Le,
-        T::Gt => CmpOp::Gt,
-        T::Ge => CmpOp::Ge,
-        _ => return None,
-    })
-}
-
-/// gringo's wording of a syntax error at a token of `kind` and text `word`: `syntax error,
-/// unexpected X[, expecting a or b]` (the AL_d parser words its errors so too).
-pub(crate) fn unexpected_message(kind: T, word: &str, expecting: &[&str]) -> String {
-    let mut msg = format!("syntax error, unexpected {}", describe(kind, word));
-    if !expecting.is_empty() {
-        msg.push_str(", expecting ");
-        msg.push_str(&expecting.join(" or "));
-    }
-    msg
-}
-
-/// The value of a number token's text (decimal, or `0x`, `0o`, `0b` with either case of the
-/// letter); `None` when it does not fit an `i64`. Each parser reports out-of-range values its
-/// own way.
-pub(crate) fn integer_value(word: &str) -> Option<i64> {
-    let (digits, radix) = match word.get(..2) {
-        Some("0x") | Some("0X") => (&word[2..], 16),
-        Some("0o") | Some("0O") => (&word[2..], 8),
-        Some("0b") | Some("0B") => (&word[2..], 2),
-        _ => (word, 10),
-    };
-    i64::from_str_radix(digits, radix).ok()
 }
 
 /// `#name`s that are clingo keywords rather than SPARC sort names.
@@ -343,137 +293,33 @@ fn term_to_signature(term: &Term) -> Option<Signature> {
     })
 }
 
+impl<'a> Deref for Parser<'a> {
+    type Target = Cursor<'a>;
+    fn deref(&self) -> &Cursor<'a> {
+        &self.cursor
+    }
+}
+
+impl<'a> DerefMut for Parser<'a> {
+    fn deref_mut(&mut self) -> &mut Cursor<'a> {
+        &mut self.cursor
+    }
+}
+
 impl<'a> Parser<'a> {
     /// A parser at the start of `text`.
     fn new(file: FileId, text: &'a str, dialect: Dialect) -> Parser<'a> {
-        let mut lexer = Lexer::new(file, text, dialect);
-        let mut diags = Vec::new();
-        let tok = lexer.next_token(&mut diags);
         Parser {
-            lexer,
-            text,
-            file,
+            cursor: Cursor::new(file, text, dialect, TermGrammar::Clingo),
             dialect,
-            tok,
-            peeked: None,
-            prev_end: 0,
-            diags,
             statements: Vec::new(),
-            depth: 0,
-            script_reported: false,
             section: None,
             sort_names: std::collections::HashSet::new(),
             body_end: &[],
         }
     }
 
-    // ----- token plumbing -----
-
-    /// The text of a token.
-    fn word(&self, tok: Token) -> &'a str {
-        &self.text[tok.start as usize..tok.end as usize]
-    }
-
-    /// An `<IDENTIFIER>` token's text, or an error expecting one.
-    fn identifier(&mut self) -> PResult<String> {
-        let tok = self.expect(T::Ident, &["<IDENTIFIER>"])?;
-        Ok(self.word(tok).to_string())
-    }
-
-    /// The text of the current token.
-    fn cur(&self) -> &'a str {
-        self.word(self.tok)
-    }
-
-    /// A span in this file.
-    fn span(&self, start: u32, end: u32) -> Span {
-        Span::new(self.file, start, end.max(start))
-    }
-
-    /// The span from `start` to the end of the last consumed token.
-    fn span_from(&self, start: u32) -> Span {
-        self.span(start, self.prev_end)
-    }
-
-    /// Consumes the current token and returns it.
-    fn bump(&mut self) -> Token {
-        let tok = self.tok;
-        self.prev_end = tok.end;
-        self.tok = match self.peeked.take() {
-            Some(t) => t,
-            None => self.lexer.next_token(&mut self.diags),
-        };
-        tok
-    }
-
-    /// The token after the current one.
-    fn peek(&mut self) -> Token {
-        if let Some(t) = self.peeked {
-            return t;
-        }
-        let t = self.lexer.next_token(&mut self.diags);
-        self.peeked = Some(t);
-        t
-    }
-
-    /// True when the current token is `kind`.
-    fn at(&self, kind: T) -> bool {
-        self.tok.kind == kind
-    }
-
-    /// Consumes the current token when it is `kind`.
-    fn eat(&mut self, kind: T) -> bool {
-        if self.at(kind) {
-            self.bump();
-            true
-        } else {
-            false
-        }
-    }
-
-    /// Reports `syntax error, unexpected X[, expecting a or b]` at the current token.
-    fn unexpected(&mut self, expecting: &[&str]) -> Failed {
-        let msg = unexpected_message(self.tok.kind, self.cur(), expecting);
-        let span = self.span(self.tok.start, self.tok.end);
-        self.diags.push(Diagnostic::error(span, msg));
-        Failed
-    }
-
-    /// Consumes a token of kind `kind` or reports it missing.
-    fn expect(&mut self, kind: T, expecting: &[&str]) -> PResult<Token> {
-        if self.at(kind) {
-            Ok(self.bump())
-        } else {
-            Err(self.unexpected(expecting))
-        }
-    }
-
-    /// Enters one nesting level; reports when the cap is exceeded.
-    fn enter(&mut self) -> PResult<()> {
-        self.depth += 1;
-        if self.depth > MAX_DEPTH {
-            let span = self.span(self.tok.start, self.tok.end);
-            self.diags.push(Diagnostic::error(
-                span,
-                format!("syntax error, nesting deeper than {MAX_DEPTH} levels"),
-            ));
-            return Err(Failed);
-        }
-        Ok(())
-    }
-
-    /// Leaves one nesting level.
-    fn leave(&mut self) {
-        self.depth -= 1;
-    }
-
-    /// Reports embedded scripts once per file.
-    fn report_script(&mut self, span: Span) {
-        if !self.script_reported {
-            self.script_reported = true;
-            self.diags.push(Diagnostic::error(span, UNSUPPORTED_SCRIPT));
-        }
-    }
+    // ----- token classes -----
 
     /// True when the current token is an aggregate function keyword.
     fn at_aggregate(&self) -> bool {
@@ -533,15 +379,6 @@ impl<'a> Parser<'a> {
                 self.lexer.pos() > before || self.at(T::Eof),
                 "the parser made no progress"
             );
-        }
-    }
-
-    /// Skips to just after the next `.` (or to the end of input).
-    fn recover(&mut self) {
-        while !self.at(T::Eof) {
-            if self.bump().kind == T::Dot {
-                return;
-            }
         }
     }
 

@@ -1,29 +1,36 @@
-//! Terms: precedence climbing over the binary operators, unary operators, primaries (numbers,
-//! strings, constants, functions, tuples, pools, intervals), integers and string escapes.
+//! Terms, for both parsers: precedence climbing over the binary operators, unary operators,
+//! primaries (numbers, strings, constants, functions, tuples, pools, intervals), integers and
+//! string escapes. The cursor's [`TermGrammar`] says which of them are read: AL_d's
+//! [`TermGrammar::Arithmetic`] is the subset of `+ - * / \`, unary minus, numbers, variables,
+//! constants, functions and parentheses.
 //!
-//! Invariant: term nesting is capped at [`super::MAX_DEPTH`]; integers out of range are
-//! reported, never wrapped silently.
+//! Invariant: term nesting (operator chains included) is capped at the grammar's
+//! [`TermGrammar::max_depth`]; integers out of range are reported, never wrapped silently.
 
-use super::*;
+use super::cursor::{integer_value, Cursor, PResult, TermGrammar};
+use crate::base::Span;
+use crate::syntax::ast::{BinaryOp, Name, Term, TermKind, UnaryOp};
+use crate::syntax::lexer::{Token, TokenKind as T};
 
-impl<'a> Parser<'a> {
-    // ----- terms -----
+/// What [`TermGrammar::Arithmetic`] expects where a term starts.
+const ARITHMETIC_START: &[&str] = &["<IDENTIFIER>", "<VARIABLE>", "<NUMBER>"];
 
-    /// A term, intervals included.
-    pub(super) fn term(&mut self) -> PResult<Term> {
+impl<'a> Cursor<'a> {
+    /// A term, intervals included (in the clingo grammar).
+    pub(crate) fn term(&mut self) -> PResult<Term> {
         self.binary(0)
     }
 
     /// A term whose binary operators bind at least as tightly as `min_level`.
     /// Levels: `..` 0, `^` 1, `?` 2, `&` 3, `+ -` 4, `* / \` 5, `**` 6 (right-associative).
-    pub(super) fn binary(&mut self, min_level: u8) -> PResult<Term> {
+    fn binary(&mut self, min_level: u8) -> PResult<Term> {
         if let Some(leaf) = self.leaf() {
             return Ok(leaf);
         }
         self.enter()?;
         let mut lhs = self.unary()?;
         let mut folds = 0;
-        while let Some((level, op)) = binary_operator(self.tok.kind) {
+        while let Some((level, op)) = self.binary_operator(self.tok.kind) {
             if level < min_level {
                 break;
             }
@@ -57,17 +64,19 @@ impl<'a> Parser<'a> {
         Ok(lhs)
     }
 
-    /// The fast path of [`Parser::binary`] for the commonest terms: a variable, a constant or a
+    /// The fast path of [`Cursor::binary`] for the commonest terms: a variable, a constant or a
     /// decimal number that no operator, argument list or interval follows, read here without the
     /// precedence chain. `None` (nothing consumed) for any other term, and at the nesting cap,
     /// where the chain reports it.
     #[inline]
     fn leaf(&mut self) -> Option<Term> {
-        if !matches!(self.tok.kind, T::Variable | T::Ident | T::Number) || self.depth >= MAX_DEPTH {
+        if !matches!(self.tok.kind, T::Variable | T::Ident | T::Number)
+            || self.depth >= self.grammar.max_depth()
+        {
             return None;
         }
         let next = self.peek().kind;
-        if binary_operator(next).is_some() || next == T::LParen {
+        if self.binary_operator(next).is_some() || next == T::LParen {
             return None;
         }
         let tok = self.bump();
@@ -77,24 +86,32 @@ impl<'a> Parser<'a> {
             _ => TermKind::Integer(self.integer(tok)),
         };
         Some(Term {
-            span: self.span(tok.start, tok.end),
+            span: self.span_of(tok),
             kind,
         })
     }
 
-    /// A term with prefix operators `-` and `~`.
-    pub(super) fn unary(&mut self) -> PResult<Term> {
+    /// A term with prefix operators `-` and `~` (`-` only in the arithmetic grammar, where a
+    /// minus before an integer folds into it: `-3` is the integer -3, as clingo reads it).
+    pub(crate) fn unary(&mut self) -> PResult<Term> {
         let op = match self.tok.kind {
             T::Minus => UnaryOp::Minus,
-            T::Tilde => UnaryOp::BitNot,
+            T::Tilde if self.grammar == TermGrammar::Clingo => UnaryOp::BitNot,
             _ => return self.primary(),
         };
         self.enter()?;
         let start = self.bump().start;
         let arg = self.unary()?;
         self.leave();
+        let span = self.span_from(start);
+        if let (TermGrammar::Arithmetic, TermKind::Integer(n)) = (self.grammar, &arg.kind) {
+            return Ok(Term {
+                span,
+                kind: TermKind::Integer(-n),
+            });
+        }
         Ok(Term {
-            span: self.span_from(start),
+            span,
             kind: TermKind::Unary {
                 op,
                 arg: Box::new(arg),
@@ -103,9 +120,18 @@ impl<'a> Parser<'a> {
     }
 
     /// A term without operators: constants, numbers, strings, variables, functions, tuples,
-    /// pools, `|t|`, `#inf`, `#sup`, `@f(...)`.
-    pub(super) fn primary(&mut self) -> PResult<Term> {
+    /// pools, `|t|`, `#inf`, `#sup`, `@f(...)`; in the arithmetic grammar numbers, variables,
+    /// constants, functions and `(t)` only.
+    fn primary(&mut self) -> PResult<Term> {
         let start = self.tok.start;
+        if self.grammar == TermGrammar::Arithmetic
+            && !matches!(
+                self.tok.kind,
+                T::Number | T::Variable | T::Ident | T::LParen
+            )
+        {
+            return Err(self.unexpected(ARITHMETIC_START));
+        }
         let kind = match self.tok.kind {
             T::Number => {
                 let tok = self.bump();
@@ -184,8 +210,9 @@ impl<'a> Parser<'a> {
         })
     }
 
-    /// `( alternatives )` of a function: pools `f(1,2;3)`; `f()` is one empty list.
-    pub(super) fn arguments(&mut self) -> PResult<Vec<Vec<Term>>> {
+    /// `( alternatives )` of a function: pools `f(1,2;3)` (not in the arithmetic grammar);
+    /// `f()` is one empty list.
+    fn arguments(&mut self) -> PResult<Vec<Vec<Term>>> {
         self.bump();
         let mut alts = Vec::with_capacity(1);
         if self.eat(T::RParen) {
@@ -200,6 +227,10 @@ impl<'a> Parser<'a> {
                 }
             }
             alts.push(terms);
+            if self.grammar == TermGrammar::Arithmetic {
+                self.expect(T::RParen, &["\")\"", "\",\""])?;
+                break;
+            }
             if self.eat(T::Semi) {
                 continue;
             }
@@ -209,9 +240,15 @@ impl<'a> Parser<'a> {
         Ok(alts)
     }
 
-    /// A parenthesized term: `(t)`, a tuple `()`, `(a,)`, `(a,b)`, or a pool `(a;b)`.
-    pub(super) fn parenthesized(&mut self) -> PResult<TermKind> {
+    /// A parenthesized term: `(t)`, a tuple `()`, `(a,)`, `(a,b)`, or a pool `(a;b)`; only
+    /// `(t)` in the arithmetic grammar.
+    fn parenthesized(&mut self) -> PResult<TermKind> {
         self.bump();
+        if self.grammar == TermGrammar::Arithmetic {
+            let inner = self.term()?;
+            self.expect(T::RParen, &["\")\""])?;
+            return Ok(TermKind::Paren(Box::new(inner)));
+        }
         if self.eat(T::RParen) {
             return Ok(TermKind::Function {
                 name: Name::default(),
@@ -271,22 +308,25 @@ impl<'a> Parser<'a> {
         Ok(TermKind::Pool(alternatives))
     }
 
-    /// The value of a number token; out-of-range literals are reported.
-    pub(super) fn integer(&mut self, tok: Token) -> i64 {
+    /// The value of a number token; out-of-range literals are reported (and read as
+    /// `i64::MAX` in the clingo grammar, 0 in the arithmetic one, which bounds sorts by them).
+    pub(crate) fn integer(&mut self, tok: Token) -> i64 {
+        let (max, instead) = match self.grammar {
+            TermGrammar::Clingo => (i64::MAX, i64::MAX),
+            TermGrammar::Arithmetic => (i64::from(i32::MAX), 0),
+        };
         match integer_value(self.word(tok)) {
-            Some(v) => v,
-            None => {
-                self.diags.push(Diagnostic::error(
-                    self.span(tok.start, tok.end),
-                    "integer literal out of range",
-                ));
-                i64::MAX
+            Some(v) if v <= max => v,
+            _ => {
+                let span = self.span_of(tok);
+                self.error(span, "integer literal out of range");
+                instead
             }
         }
     }
 
     /// The contents of a string token with escapes resolved (the lexer checked them).
-    pub(super) fn unescape(&self, tok: Token) -> String {
+    pub(crate) fn unescape(&self, tok: Token) -> String {
         let raw = &self.text[tok.start as usize + 1..tok.end as usize - 1];
         if !raw.contains('\\') {
             return raw.to_string();
@@ -306,12 +346,23 @@ impl<'a> Parser<'a> {
         }
         out
     }
+
+    /// The level and operator of a token that continues a term in this grammar (`None` for
+    /// `..`, an interval), as [`Cursor::binary`] reads them; `None` for any other token.
+    #[inline]
+    fn binary_operator(&self, kind: T) -> Option<(u8, Option<BinaryOp>)> {
+        let found = clingo_binary_operator(kind)?;
+        match (self.grammar, found.0) {
+            (TermGrammar::Arithmetic, 4 | 5) | (TermGrammar::Clingo, _) => Some(found),
+            (TermGrammar::Arithmetic, _) => None,
+        }
+    }
 }
 
-/// The level and operator of a token that continues a term (`None` for `..`, an interval), as
-/// [`Parser::binary`] reads them; `None` for any other token.
+/// The level and operator of a token that continues a clingo term (`None` for `..`, an
+/// interval); `None` for any other token.
 #[inline]
-fn binary_operator(kind: T) -> Option<(u8, Option<BinaryOp>)> {
+fn clingo_binary_operator(kind: T) -> Option<(u8, Option<BinaryOp>)> {
     Some(match kind {
         T::Dots => (0, None),
         T::Caret => (1, Some(BinaryOp::BitXor)),
