@@ -11,6 +11,7 @@
 //! (clingo's redefinition error, the offending rules dropped).
 
 use super::*;
+use crate::ground::instantiate::GroundAtom;
 
 impl Control {
     /// Takes the first grounding as it is: its numbering is the global one.
@@ -123,13 +124,13 @@ impl Control {
         &mut self,
         g: &Grounding,
         local: &GroundProgram,
-        gatoms: &[AtomId],
+        gatoms: &[GroundAtom],
     ) -> Vec<AtomId> {
         // Local atoms to the Control's, by the session's grounder atom.
         let mut map = vec![0 as AtomId; local.num_atoms as usize + 1];
         for (a, slot) in map.iter_mut().enumerate().skip(1) {
             let ga = gatoms[a - 1];
-            if let Some(&x) = self.ctl_of_gatom.get(ga as usize) {
+            if let Some(&x) = self.ctl_of_gatom.get(ga.get() as usize) {
                 if x != 0 {
                     *slot = x;
                     continue;
@@ -156,7 +157,7 @@ impl Control {
         local: &GroundProgram,
         map: &[AtomId],
         old_atoms: AtomId,
-        gatoms: &[AtomId],
+        gatoms: &[GroundAtom],
     ) -> MergedRules {
         let is_old = |a: AtomId| a <= old_atoms;
         let lit = |l: i32| map_lit(map, l);
@@ -506,8 +507,8 @@ fn is_internal(syms: &Symbols, s: SymId) -> bool {
 }
 
 /// Records that grounder atom `ga` is the Control's atom `a`.
-fn set_gatom(table: &mut Vec<AtomId>, ga: AtomId, a: AtomId) {
-    let i = ga as usize;
+fn set_gatom(table: &mut Vec<AtomId>, ga: GroundAtom, a: AtomId) {
+    let i = ga.get() as usize;
     if table.len() <= i {
         table.resize(i + 1, 0);
     }

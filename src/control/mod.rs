@@ -82,8 +82,11 @@ use model::Names;
 pub use model::{Model, OwnedModel};
 pub use symbol::{Name, ParseSymbolError, Symbol};
 
-/// An atom of the ground program, as the solver numbers it (aspif's numbering, from 1).
-pub type AtomId = u32;
+/// An atom of the Control's ground program: the aspif numbering, from 1
+/// ([`ground::program::Atom`], the numbering of `GroundProgram`, the solver and models). Not the
+/// grounder's own atom numbers (`ground::program::GAtom` in provenance): the Control maps a
+/// grounding's atoms to these.
+pub type AtomId = ground::program::Atom;
 
 /// How a [`Control`] grounds and solves.
 #[derive(Clone, Debug)]

@@ -20,7 +20,7 @@
 use crate::base::{Diagnostic, Diagnostics, SourceMap};
 use crate::syntax::ast;
 
-use super::instantiate::{self, AtomId, Grounder, Limits};
+use super::instantiate::{self, GroundAtom, Grounder, Limits};
 use super::rewrite::{self, Pred};
 use super::simplify::{self, KNOWN_FACT, NUMBERED};
 use super::symbol::Symbols;
@@ -44,9 +44,9 @@ pub struct Session {
     /// Per grounder atom `a` at `flags[a]`: [`NUMBERED`], [`KNOWN_FACT`].
     flags: Vec<u8>,
     /// `prefer(l1, l2)` facts so far.
-    prefer: Vec<AtomId>,
+    prefer: Vec<GroundAtom>,
     /// The grounder atom of each aspif atom of the last grounding (`[a - 1]`).
-    last_gatoms: Vec<AtomId>,
+    last_gatoms: Vec<GroundAtom>,
     /// Set when a grounding stopped half-way: the state is no longer consistent.
     spent: bool,
     /// Groundings done.
@@ -60,14 +60,14 @@ impl Session {
     }
 
     /// The session's grounder atom of aspif atom `a` of the last grounding.
-    pub fn last_gatoms(&self) -> &[AtomId] {
+    pub fn last_gatoms(&self) -> &[GroundAtom] {
         &self.last_gatoms
     }
 
     /// Grounder atom `a` is no fact: its rules did not reach the program (the caller dropped
     /// them as a redefinition).
-    pub fn forget_fact(&mut self, a: AtomId) {
-        if let Some(f) = self.flags.get_mut(a as usize) {
+    pub fn forget_fact(&mut self, a: GroundAtom) {
+        if let Some(f) = self.flags.get_mut(a.get() as usize) {
             *f &= !KNOWN_FACT;
         }
         self.state.clear_fact(a);
@@ -186,11 +186,11 @@ impl Session {
     fn carry(&mut self, g: &mut Grounder<'_>, fin: &simplify::Finished) {
         self.flags.resize(g.atoms.len() + 1, 0);
         for &a in &fin.atom_gatoms {
-            self.flags[a as usize] |= NUMBERED;
+            self.flags[a.get() as usize] |= NUMBERED;
             g.put_in_domain(a);
         }
         for &a in &fin.fact_atoms {
-            self.flags[a as usize] |= KNOWN_FACT;
+            self.flags[a.get() as usize] |= KNOWN_FACT;
             g.set_fact(a);
         }
         self.prefer.extend_from_slice(&fin.prefer_atoms);

@@ -416,12 +416,12 @@ impl<'a> Grounder<'a> {
         self.add_aux_rule(
             Rule {
                 head_kind: HeadKind::Disjunction,
-                head: vec![a],
+                head: vec![a.get()],
                 body,
             },
             AuxKind::Aggregate,
         );
-        Truth::Lits(vec![a as Lit])
+        Truth::Lits(vec![a.lit()])
     }
 
     /// True when some uncertain weight is negative and none is positive.
@@ -558,7 +558,7 @@ impl<'a> Grounder<'a> {
             self.add_aux_rule(
                 Rule {
                     head_kind: HeadKind::Disjunction,
-                    head: vec![a],
+                    head: vec![a.get()],
                     body: Body::Weight {
                         lower: bound,
                         lits: body,
@@ -567,14 +567,14 @@ impl<'a> Grounder<'a> {
                 AuxKind::Aggregate,
             );
         }
-        Truth::Lits(vec![a as Lit])
+        Truth::Lits(vec![a.lit()])
     }
 
     /// The complement of an element literal `l` inside the saturated atom `a` (see
     /// `saturated`).
-    pub(super) fn complement(&mut self, l: Lit, a: AtomId) -> Lit {
+    pub(super) fn complement(&mut self, l: Lit, a: GroundAtom) -> Lit {
         let recursive = l > 0 && {
-            let p = self.info(l as AtomId).pred;
+            let p = self.info(GroundAtom::of_lit(l)).pred;
             p == u32::MAX || !self.domains[p as usize].complete
         };
         if !recursive {
@@ -583,9 +583,9 @@ impl<'a> Grounder<'a> {
         let c = self.aux();
         let not_a = self.not_aux(a);
         for (head, body) in [
-            (vec![c], vec![-l]),
-            (vec![c], vec![a as Lit]),
-            (vec![c, l as AtomId], vec![-(not_a as Lit)]),
+            (vec![c.get()], vec![-l]),
+            (vec![c.get()], vec![a.lit()]),
+            (vec![c.get(), l as u32], vec![-not_a.lit()]),
         ] {
             self.add_aux_rule(
                 Rule {
@@ -596,7 +596,7 @@ impl<'a> Grounder<'a> {
                 AuxKind::Aggregate,
             );
         }
-        c as Lit
+        c.lit()
     }
 
     /// `#max != v` over atoms still being grounded (not monotone), with Ferraris' semantics:

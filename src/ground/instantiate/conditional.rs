@@ -8,7 +8,7 @@ use super::*;
 
 impl Grounder<'_> {
     /// `d :- not a.`, so that `not d` stands for `not not a`.
-    pub(super) fn not_aux(&mut self, a: AtomId) -> AtomId {
+    pub(super) fn not_aux(&mut self, a: GroundAtom) -> GroundAtom {
         if let Some(&d) = self.notnot.get(&a) {
             return d;
         }
@@ -17,8 +17,8 @@ impl Grounder<'_> {
         self.add_aux_rule(
             Rule {
                 head_kind: HeadKind::Disjunction,
-                head: vec![d],
-                body: Body::Normal(vec![-(a as Lit)]),
+                head: vec![d.get()],
+                body: Body::Normal(vec![-a.lit()]),
             },
             AuxKind::DoubleNegation,
         );
@@ -36,16 +36,16 @@ impl Grounder<'_> {
             self.add_aux_rule(
                 Rule {
                     head_kind: HeadKind::Disjunction,
-                    head: vec![a],
+                    head: vec![a.get()],
                     body: Body::Normal(alt.clone()),
                 },
                 AuxKind::Aggregate,
             );
         }
         if alternatives.iter().any(|c| c.is_empty()) {
-            self.atoms[a as usize - 1].fact = true;
+            self.atoms[a.index()].fact = true;
         }
-        a as Lit
+        a.lit()
     }
 
     /// True when an element condition of `agg` reads a predicate still being grounded.
@@ -64,7 +64,7 @@ impl Grounder<'_> {
         if l > 0 {
             -l
         } else {
-            -(self.not_aux((-l) as AtomId) as Lit)
+            -self.not_aux(GroundAtom::of_lit(l)).lit()
         }
     }
 
@@ -77,12 +77,12 @@ impl Grounder<'_> {
         self.add_aux_rule(
             Rule {
                 head_kind: HeadKind::Disjunction,
-                head: vec![a],
+                head: vec![a.get()],
                 body: Body::Normal(c.to_vec()),
             },
             AuxKind::Condition,
         );
-        -(a as Lit)
+        -a.lit()
     }
 
     /// A conditional body literal `l : c`: for each instance of `c`, some instance of `l` must
@@ -153,16 +153,16 @@ impl Grounder<'_> {
                     let nc = self.not_conj(&cond);
                     let x = self.aux();
                     for body in s.iter().cloned().chain([vec![nc]]) {
-                        self.add_aux_rule(Rule::normal(&[x], &body), AuxKind::Condition);
+                        self.add_aux_rule(Rule::normal(&[x.get()], &body), AuxKind::Condition);
                     }
                     let k = if cond.len() == 1 && cond[0] > 0 {
-                        Some(cond[0] as AtomId)
+                        Some(GroundAtom::of_lit(cond[0]))
                     } else if cond.iter().any(|&c| c > 0) {
                         let k = self.aux();
-                        self.add_aux_rule(Rule::normal(&[k], &cond), AuxKind::Condition);
+                        self.add_aux_rule(Rule::normal(&[k.get()], &cond), AuxKind::Condition);
                         for &c in cond.iter().filter(|&&c| c > 0) {
                             self.add_aux_rule(
-                                Rule::normal(&[c as AtomId], &[k as Lit]),
+                                Rule::normal(&[c as u32], &[k.lit()]),
                                 AuxKind::Condition,
                             );
                         }
@@ -174,9 +174,12 @@ impl Grounder<'_> {
                         let t = self.disjunction_lit(&s);
                         let nt = self.negate_lit(t);
                         let nnt = self.negate_lit(nt);
-                        self.add_aux_rule(Rule::normal(&[x, k], &[nnt]), AuxKind::Condition);
+                        self.add_aux_rule(
+                            Rule::normal(&[x.get(), k.get()], &[nnt]),
+                            AuxKind::Condition,
+                        );
                     }
-                    lits.push(x as Lit);
+                    lits.push(x.lit());
                 }
             }
         }

@@ -1,7 +1,7 @@
 //! Emitting: the ground statement for one solution of a body (rules, choices, disjunctions
 //! with conditional elements, minimize, show, external, heuristic, projection, CR rules).
 //!
-//! Invariant: ground rules use internal atom ids; a head atom that gets a rule enters its
+//! Invariant: ground rules are over grounder atoms ([`GroundAtom`]); a head atom that gets a rule enters its
 //! predicate's domain.
 
 use super::*;
@@ -159,7 +159,7 @@ impl Grounder<'_> {
                     .heuristics
                     .push(crate::ground::program::Heuristic {
                         modifier,
-                        atom: id,
+                        atom: id.get(),
                         bias: w,
                         priority: p.max(0) as u32,
                         // The atom's own literal only ranged over its domain (see the rewrite).
@@ -167,7 +167,7 @@ impl Grounder<'_> {
                             .body
                             .iter()
                             .copied()
-                            .filter(|&l| l != id as crate::ground::program::Lit)
+                            .filter(|&l| l != id.lit())
                             .collect(),
                     });
             }
@@ -198,9 +198,10 @@ impl Grounder<'_> {
     }
 
     pub(super) fn emit_rule_inner(&mut self, stmt: &NStmt, ctx: &mut Ctx) {
-        // Most heads have a few atoms: no allocation for them.
-        let mut head: SmallVec<[AtomId; 8]> = SmallVec::new();
-        let mut extra_choices: Vec<(AtomId, Vec<Lit>)> = Vec::new();
+        // Grounder atom numbers, as the rule store holds them. Most heads have a few atoms: no
+        // allocation for them.
+        let mut head: SmallVec<[u32; 8]> = SmallVec::new();
+        let mut extra_choices: Vec<(GroundAtom, Vec<Lit>)> = Vec::new();
         let mut elems: Vec<ElemInstance> = Vec::new();
         let is_choice = matches!(stmt.head, NHead::Choice(_));
         match &stmt.head {
@@ -217,7 +218,7 @@ impl Grounder<'_> {
                     }
                     if e.cond.is_empty() {
                         match self.atom_sym(&e.atom, &ctx.binding) {
-                            Some(s) => head.push(self.atom_of(s, e.atom.pred)),
+                            Some(s) => head.push(self.atom_of(s, e.atom.pred).get()),
                             None if is_choice => {}
                             None => return,
                         }
@@ -239,7 +240,7 @@ impl Grounder<'_> {
                     for (s, c) in found {
                         let a = self.atom_of(s, e.atom.pred);
                         if c.is_empty() {
-                            head.push(a);
+                            head.push(a.get());
                         } else if is_choice {
                             extra_choices.push((a, c));
                         } else {
@@ -274,7 +275,7 @@ impl Grounder<'_> {
                     None => return,
                 },
             };
-            ctx.body.push(appl as Lit);
+            ctx.body.push(appl.lit());
         }
         if is_choice {
             for &(a, ref c) in &extra_choices {
@@ -284,14 +285,14 @@ impl Grounder<'_> {
                 self.add_rule(
                     Rule {
                         head_kind: HeadKind::Choice,
-                        head: vec![a],
+                        head: vec![a.get()],
                         body: Body::Normal(body),
                     },
                     |g| g.origin(stmt, ctx),
                 );
             }
             let facts = (self.provenance && !self.naive).then(|| head.to_vec());
-            head.retain(|a| !self.info(*a).fact);
+            head.retain(|&mut a| !self.info(GroundAtom::new(a)).fact);
             if head.is_empty() {
                 // A choice among facts: satisfied (with provenance, kept as removed).
                 if let Some((f, facts)) = facts.and_then(|h| Some((*h.first()?, h))) {
@@ -305,7 +306,7 @@ impl Grounder<'_> {
                 return;
             }
             for &a in &head {
-                self.derive(a);
+                self.derive(GroundAtom::new(a));
             }
             self.add_rule_ref(
                 RuleRef {
@@ -319,7 +320,7 @@ impl Grounder<'_> {
         }
         // A disjunction with a true atom is satisfied. (With provenance, an instance that
         // grounds to a fact's own rule is one more origin of that rule.)
-        if let Some(&f) = head.iter().find(|&&a| self.info(a).fact) {
+        if let Some(&f) = head.iter().find(|&&a| self.info(GroundAtom::new(a)).fact) {
             if head.len() == 1 && ctx.body.is_empty() {
                 self.attach_origin(Rule::normal(&[f], &[]), |g| g.origin(stmt, ctx));
             } else if self.provenance && !self.naive {
@@ -337,17 +338,17 @@ impl Grounder<'_> {
                 (lits, cond)
                     if cond.is_empty() && lits.len() == 1 && lits[0].0 == Sign::Positive =>
                 {
-                    head.push(lits[0].1)
+                    head.push(lits[0].1.get())
                 }
-                (lits, cond) => head.push(self.elem_atom(&lits, &cond)),
+                (lits, cond) => head.push(self.elem_atom(&lits, &cond).get()),
             }
         }
         head.dedup();
         for &a in &head {
-            self.derive(a);
+            self.derive(GroundAtom::new(a));
         }
         if head.len() == 1 && ctx.body.is_empty() && !self.naive {
-            self.atoms[head[0] as usize - 1].fact = true;
+            self.atoms[GroundAtom::new(head[0]).index()].fact = true;
         }
         self.add_rule_ref(
             RuleRef {
@@ -368,7 +369,7 @@ impl Grounder<'_> {
         label: Option<&NTerm>,
         key: Vec<SymId>,
         ctx: &Ctx,
-    ) -> Option<AtomId> {
+    ) -> Option<GroundAtom> {
         let text = match label {
             Some(t) => {
                 let v = self.eval(t, &ctx.binding)?;
@@ -403,7 +404,7 @@ impl Grounder<'_> {
         self.add_rule(
             Rule {
                 head_kind: HeadKind::Choice,
-                head: vec![a],
+                head: vec![a.get()],
                 body: Body::Normal(Vec::new()),
             },
             |g| Origin {
@@ -475,7 +476,7 @@ impl Grounder<'_> {
         });
         ctx.body.truncate(blen);
         'group: for (_, conds, lits) in groups {
-            let mut ground: Vec<(Sign, AtomId)> = Vec::new();
+            let mut ground: Vec<(Sign, GroundAtom)> = Vec::new();
             for (sign, i, s) in lits {
                 let pred = e.conj[i].atom.pred;
                 let existing = self.find_atom(s);
@@ -512,14 +513,14 @@ impl Grounder<'_> {
     /// `lits` and condition `cond` (gringo's translation): `e :- lits, cond.`; `a :- e, cond.`
     /// for each positive `a`; `:- e, cond, a.` for `not a` and `:- e, cond, not a.` for
     /// `not not a`; `:- e, not c.` for each condition literal `c`.
-    pub(super) fn elem_atom(&mut self, lits: &[(Sign, AtomId)], cond: &[Lit]) -> AtomId {
+    pub(super) fn elem_atom(&mut self, lits: &[(Sign, GroundAtom)], cond: &[Lit]) -> GroundAtom {
         let e = self.aux();
         let mut body: Vec<Lit> = Vec::with_capacity(lits.len() + cond.len());
         for &(sign, a) in lits {
             body.push(match sign {
-                Sign::Positive => a as Lit,
-                Sign::Not => -(a as Lit),
-                Sign::NotNot => -(self.not_aux(a) as Lit),
+                Sign::Positive => a.lit(),
+                Sign::Not => -a.lit(),
+                Sign::NotNot => -self.not_aux(a).lit(),
             });
         }
         body.extend_from_slice(cond);
@@ -533,8 +534,8 @@ impl Grounder<'_> {
             });
         };
         dedup(&mut body);
-        self.add_aux_rule(Rule::normal(&[e], &body), AuxKind::Element);
-        let mut guard = vec![e as Lit];
+        self.add_aux_rule(Rule::normal(&[e.get()], &body), AuxKind::Element);
+        let mut guard = vec![e.lit()];
         guard.extend_from_slice(cond);
         dedup(&mut guard);
         for &(sign, a) in lits {
@@ -542,14 +543,10 @@ impl Grounder<'_> {
             match sign {
                 Sign::Positive => {
                     self.derive(a);
-                    self.add_aux_rule(Rule::normal(&[a], &b), AuxKind::Element);
+                    self.add_aux_rule(Rule::normal(&[a.get()], &b), AuxKind::Element);
                 }
                 Sign::Not | Sign::NotNot => {
-                    let l = if sign == Sign::Not {
-                        a as Lit
-                    } else {
-                        -(a as Lit)
-                    };
+                    let l = if sign == Sign::Not { a.lit() } else { -a.lit() };
                     if !b.contains(&l) {
                         b.push(l);
                     }
@@ -558,7 +555,7 @@ impl Grounder<'_> {
             }
         }
         for &c in cond {
-            self.add_aux_rule(Rule::normal(&[], &[e as Lit, -c]), AuxKind::Element);
+            self.add_aux_rule(Rule::normal(&[], &[e.lit(), -c]), AuxKind::Element);
         }
         e
     }

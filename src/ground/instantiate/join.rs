@@ -97,7 +97,7 @@ impl<'a> Grounder<'a> {
         // Extend the index to the atoms derived since it was last used.
         while idx.upto < d.atoms.len() {
             let a = d.atoms[idx.upto];
-            let sym = self.atoms[a as usize - 1]
+            let sym = self.atoms[a.index()]
                 .sym
                 .expect("predicate atom has a symbol");
             let args = self.syms.args(sym);
@@ -181,7 +181,7 @@ impl<'a> Grounder<'a> {
                     }
                     if ok {
                         if !info.fact {
-                            ctx.body.push(a as Lit);
+                            ctx.body.push(a.lit());
                         }
                         self.join(ctx, lits, i + 1, ranges, k);
                     }
@@ -212,7 +212,7 @@ impl<'a> Grounder<'a> {
                         }
                         if !complete || in_domain {
                             let a = self.atom_of(sym, atom.pred);
-                            ctx.body.push(-(a as Lit));
+                            ctx.body.push(-a.lit());
                         }
                         self.join(ctx, lits, i + 1, ranges, k);
                     }
@@ -229,7 +229,7 @@ impl<'a> Grounder<'a> {
                             let saved = self.enter_aux(AuxKind::DoubleNegation, &ctx.binding);
                             let d = self.not_aux(a);
                             self.leave_aux(saved);
-                            ctx.body.push(-(d as Lit));
+                            ctx.body.push(-d.lit());
                         }
                         self.join(ctx, lits, i + 1, ranges, k);
                     }

@@ -15,14 +15,15 @@
 //! in gringo's order: the atom numbering, hence the solver's initial variable order, follows.
 //!
 //! Invariants:
-//! - Internal atom ids are `1..=atoms.len()`; an atom is *in the domain* once some rule instance
+//! - Grounder atoms ([`GroundAtom`]) are `1..=atoms.len()`; an atom is *in the domain* once some rule instance
 //!   can derive it; `fact` atoms are certainly true, and they never lose that status.
 //! - A predicate is *complete* once every statement heading it is grounded; readers come after
 //!   (or in the same component, where `not` literals on it stay).
 //! - A positive body literal only matches atoms in the domain; a fact matched positively is
 //!   removed from the ground body; `not a` with `a` a fact kills the instance, and `not a` with
 //!   `a` of a complete predicate outside the domain is removed.
-//! - Ground rules use internal ids; `simplify` renumbers them for aspif.
+//! - Ground rules are over grounder atoms (as plain numbers); `simplify` renumbers them for
+//!   aspif.
 //!
 //! Files: `mod` (the grounder's state, atoms, rule store), `provenance` (origins, dead
 //! instances), `join` (candidates, indexes, joins, body order), `conditional` (conditional
@@ -58,8 +59,49 @@ use super::symbol::{SymData, SymId, Symbols};
 use super::term::{Binding, NTerm, TermVars, VarSet};
 use crate::base::intern::Sym;
 
-/// Internal atom id, `1..`.
-pub type AtomId = u32;
+/// A grounder atom: the grounder's own number for an atom, counted from 1 in order of creation
+/// over a whole multi-shot session (`Grounder::atoms[a.index()]` is what is known about it).
+/// It is not the aspif numbering of the ground program (`ground::program::Atom`, which
+/// `simplify` gives the atoms that remain, and which the solver and `control::GroundAtom` use);
+/// `ground::program::GAtom` is this numbering as provenance exposes it, a plain `u32`. The rule
+/// store over grounder atoms (`Grounder::rules`) and the directives' literals hold these
+/// numbers as plain atoms and literals: [`GroundAtom::get`] and [`GroundAtom::lit`] make them,
+/// [`GroundAtom::new`] and [`GroundAtom::of_lit`] read them.
+#[repr(transparent)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(crate) struct GroundAtom(u32);
+
+impl GroundAtom {
+    /// Grounder atom number `n` (`1..`).
+    #[inline]
+    pub(crate) const fn new(n: u32) -> GroundAtom {
+        GroundAtom(n)
+    }
+
+    /// The atom of a literal over grounder atoms (either sign).
+    #[inline]
+    pub(crate) const fn of_lit(l: Lit) -> GroundAtom {
+        GroundAtom(l.unsigned_abs())
+    }
+
+    /// Its number (`1..`), as rules over grounder atoms store it.
+    #[inline]
+    pub(crate) const fn get(self) -> u32 {
+        self.0
+    }
+
+    /// Its index in the atom table (`Grounder::atoms`): the number minus one.
+    #[inline]
+    pub(crate) const fn index(self) -> usize {
+        self.0 as usize - 1
+    }
+
+    /// Its positive literal.
+    #[inline]
+    pub(crate) const fn lit(self) -> Lit {
+        self.0 as Lit
+    }
+}
 
 /// Why grounding stopped early.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -145,7 +187,7 @@ impl Index {
 #[derive(Default)]
 struct Domain {
     /// Atoms in derivation order.
-    atoms: Vec<AtomId>,
+    atoms: Vec<GroundAtom>,
     /// Indexes, one per bound-position mask (few per predicate, found by linear search).
     indexes: Vec<Index>,
     /// All rules that can derive the predicate have been grounded.
@@ -194,13 +236,13 @@ type MinKey = (i32, i32, Vec<SymId>);
 pub struct Grounder<'a> {
     /// Symbols.
     pub syms: Symbols,
-    /// Atom table, index `id - 1`.
+    /// Atom table, by grounder atom ([`GroundAtom::index`]: number minus one).
     pub atoms: Vec<AtomInfo>,
-    /// Atom of each predicate-atom symbol, by symbol id (0: none).
-    sym_atom: Vec<AtomId>,
+    /// Grounder atom number of each predicate-atom symbol, by symbol id (0: none).
+    sym_atom: Vec<u32>,
     /// Domains, by predicate.
     domains: Vec<Domain>,
-    /// Ground rules over internal ids, stored flat (a program may ground to millions).
+    /// Ground rules over grounder atoms (plain numbers, [`GroundAtom::get`]), stored flat (a program may ground to millions).
     pub rules: Rules,
     /// Provenance records (when provenance is on): origins, dead instances, the statement and
     /// auxiliary being grounded.
@@ -222,9 +264,9 @@ pub struct Grounder<'a> {
     /// Spans of undefined operations already reported.
     reported: hashbrown::HashSet<Span>,
     /// `not not a` auxiliaries, by atom.
-    notnot: HashMap<AtomId, AtomId>,
+    notnot: HashMap<GroundAtom, GroundAtom>,
     /// CR application atoms by (statement, ground global values).
-    cr_appl: HashMap<(u32, Vec<SymId>), AtomId>,
+    cr_appl: HashMap<(u32, Vec<SymId>), GroundAtom>,
     /// The directives besides rules: CR rules, minimize elements, shows, projections,
     /// externals, heuristics and edges.
     pub directives: Directives,
@@ -261,12 +303,12 @@ pub struct ProvRecords {
     pub minimize_origins: HashMap<MinKey, Vec<Vec<Origin>>>,
 }
 
-/// The directives a grounding collects besides its rules, over internal atom ids (`simplify`
+/// The directives a grounding collects besides its rules, over grounder atoms (`simplify`
 /// renumbers them for aspif).
 #[derive(Default)]
 pub struct Directives {
     /// Ground CR rules: application atom and label.
-    pub cr_rules: Vec<(AtomId, String)>,
+    pub cr_rules: Vec<(GroundAtom, String)>,
     /// Minimize elements: key to alternative conditions.
     pub minimize: HashMap<MinKey, Vec<Vec<Lit>>>,
     /// Insertion order of minimize keys.
@@ -274,10 +316,10 @@ pub struct Directives {
     /// `#show t : body` instances.
     pub shows: Vec<(SymId, Vec<Lit>)>,
     /// Projected atoms.
-    pub projections: Vec<AtomId>,
+    pub projections: Vec<GroundAtom>,
     /// Externals.
-    pub externals: Vec<(AtomId, ExternalValue)>,
-    /// Heuristics with internal atom ids.
+    pub externals: Vec<(GroundAtom, ExternalValue)>,
+    /// Heuristics over grounder atoms (plain numbers).
     pub heuristics: Vec<super::program::Heuristic>,
     /// Edges.
     pub edges: Vec<super::program::Edge>,
@@ -314,15 +356,15 @@ struct Scratch {
 #[derive(Default)]
 pub struct State {
     atoms: Vec<AtomInfo>,
-    sym_atom: Vec<AtomId>,
+    sym_atom: Vec<u32>,
     domains: Vec<Domain>,
     defined: Vec<bool>,
 }
 
 impl State {
     /// Atom `a` is not certainly true after all (its rules were withdrawn).
-    pub fn clear_fact(&mut self, a: AtomId) {
-        if let Some(info) = self.atoms.get_mut((a as usize).wrapping_sub(1)) {
+    pub fn clear_fact(&mut self, a: GroundAtom) {
+        if let Some(info) = self.atoms.get_mut((a.get() as usize).wrapping_sub(1)) {
             info.fact = false;
         }
     }
@@ -354,7 +396,7 @@ struct Ctx {
 }
 
 /// A ground conditional disjunction element: its literals (sign and atom) and its condition.
-type ElemInstance = (Vec<(Sign, AtomId)>, Vec<Lit>);
+type ElemInstance = (Vec<(Sign, GroundAtom)>, Vec<Lit>);
 
 /// One ground literal of a conditional disjunction element: its sign, the index of its
 /// non-ground literal in the element's conjunction, and the atom.
@@ -487,13 +529,13 @@ impl<'a> Grounder<'a> {
     }
 
     /// Marks atom `a` true for good (a later grounding removes it from bodies).
-    pub fn set_fact(&mut self, a: AtomId) {
-        self.atoms[a as usize - 1].fact = true;
+    pub fn set_fact(&mut self, a: GroundAtom) {
+        self.atoms[a.index()].fact = true;
     }
 
     /// Puts atom `a` into its predicate's domain (an atom a later grounding must be able to
     /// match).
-    pub fn put_in_domain(&mut self, a: AtomId) {
+    pub fn put_in_domain(&mut self, a: GroundAtom) {
         self.derive(a);
     }
 
@@ -525,7 +567,7 @@ impl<'a> Grounder<'a> {
     }
 
     /// A fresh auxiliary atom.
-    pub fn aux(&mut self) -> AtomId {
+    pub fn aux(&mut self) -> GroundAtom {
         self.atoms.push(AtomInfo {
             sym: None,
             pred: u32::MAX,
@@ -533,11 +575,11 @@ impl<'a> Grounder<'a> {
             in_domain: true,
             dom_pos: 0,
         });
-        self.atoms.len() as AtomId
+        GroundAtom::new(self.atoms.len() as u32)
     }
 
     /// The atom of a predicate-atom symbol, created outside the domain if new.
-    pub fn atom_of(&mut self, sym: SymId, pred: PredId) -> AtomId {
+    pub fn atom_of(&mut self, sym: SymId, pred: PredId) -> GroundAtom {
         if let Some(a) = self.find_atom(sym) {
             return a;
         }
@@ -548,37 +590,37 @@ impl<'a> Grounder<'a> {
             in_domain: false,
             dom_pos: 0,
         });
-        let id = self.atoms.len() as AtomId;
+        let id = GroundAtom::new(self.atoms.len() as u32);
         let i = sym.0 as usize;
         if i >= self.sym_atom.len() {
             self.sym_atom.resize((i + 1).max(self.syms.len()), 0);
         }
-        self.sym_atom[i] = id;
+        self.sym_atom[i] = id.get();
         id
     }
 
     /// The atom of a symbol, if it exists.
-    pub fn find_atom(&self, sym: SymId) -> Option<AtomId> {
+    pub fn find_atom(&self, sym: SymId) -> Option<GroundAtom> {
         match self.sym_atom.get(sym.0 as usize) {
-            Some(&a) if a != 0 => Some(a),
+            Some(&a) if a != 0 => Some(GroundAtom::new(a)),
             _ => None,
         }
     }
 
-    fn info(&self, a: AtomId) -> &AtomInfo {
-        &self.atoms[a as usize - 1]
+    fn info(&self, a: GroundAtom) -> &AtomInfo {
+        &self.atoms[a.index()]
     }
 
     /// Puts an atom into its predicate's domain.
-    fn derive(&mut self, a: AtomId) {
-        let info = self.atoms[a as usize - 1];
+    fn derive(&mut self, a: GroundAtom) {
+        let info = self.atoms[a.index()];
         if info.in_domain || info.pred == u32::MAX {
             return;
         }
         let d = &mut self.domains[info.pred as usize];
         let pos = d.atoms.len() as u32;
         d.atoms.push(a);
-        let i = &mut self.atoms[a as usize - 1];
+        let i = &mut self.atoms[a.index()];
         i.in_domain = true;
         i.dom_pos = pos;
         self.check_size();

@@ -92,14 +92,14 @@ impl Grounder<'_> {
                 break;
             }
             let s = self.syms.fun(a.name, a.neg, &vals);
-            head.push(self.atom_of(s, a.pred));
+            head.push(self.atom_of(s, a.pred).get());
         }
         let complete = head.len() == atoms.len();
         self.prov.stmt.head = Some(atoms);
         if !complete || head.is_empty() {
             return;
         }
-        let atom = self.atom_of(sym, pred);
+        let atom = self.atom_of(sym, pred).get();
         let bindings = self.bindings(&ctx.binding);
         let stmt = self.prov.stmt.stmt;
         let rule = match self.prov.stmt.aux {
@@ -150,19 +150,19 @@ impl Grounder<'_> {
                     if let Some(a) = self.find_atom(sym).filter(|&a| self.info(a).fact) {
                         removed.push(RemovedLit {
                             positive: true,
-                            atom: a,
+                            atom: a.get(),
                         });
                     }
                 }
                 Sign::Not => {
                     let kept = self
                         .find_atom(sym)
-                        .is_some_and(|a| ctx.body.contains(&-(a as Lit)));
+                        .is_some_and(|a| ctx.body.contains(&-a.lit()));
                     if !kept {
                         let a = self.atom_of(sym, atom.pred);
                         removed.push(RemovedLit {
                             positive: false,
-                            atom: a,
+                            atom: a.get(),
                         });
                     }
                 }

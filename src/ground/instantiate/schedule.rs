@@ -93,7 +93,7 @@ impl Grounder<'_> {
             let sym = self.syms.fun(name, false, &[v]);
             let a = self.atom_of(sym, pred);
             self.derive(a);
-            self.atoms[a as usize - 1].fact = true;
+            self.atoms[a.index()].fact = true;
         }
         // Statement dependency graph, as gringo's (Dependency::analyze): a statement depends on
         // every statement heading a predicate it reads. Ground facts are no nodes (gringo keeps

@@ -24,7 +24,10 @@ pub use provenance::{
 };
 pub use store::{Rules, RulesIter};
 
-/// An aspif atom, `1..=num_atoms`.
+/// An atom of a ground program: the aspif numbering, `1..=num_atoms` (what `simplify` gives
+/// the atoms that remain, in gringo's order; the solver's variables and `control::AtomId` are
+/// this numbering). The grounder's own numbering is another ([`GAtom`]), though its rule store
+/// holds those numbers in this plain form until `simplify` renumbers them.
 pub type Atom = u32;
 /// An aspif literal: positive atom or default-negated atom; never 0.
 pub type Lit = i32;

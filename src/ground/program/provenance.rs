@@ -8,9 +8,11 @@
 
 use super::Atom;
 
-/// A grounder atom: the grounder's own number for an atom, `1..=Provenance::atoms.len()`.
-/// Every atom the grounder created has one, also atoms without an aspif number (facts that no
-/// rule body keeps, atoms proved false); [`Provenance::atoms`] says what it is.
+/// A grounder atom: the grounder's own number for an atom, counted from 1 in order of creation,
+/// `1..=Provenance::atoms.len()` (inside the grounder the same numbering is the type
+/// `GroundAtom`). Not the aspif numbering of the program ([`Atom`]). Every atom the grounder
+/// created has one, also atoms without an aspif number (facts that no rule body keeps, atoms
+/// proved false); [`Provenance::atoms`] says what it is.
 pub type GAtom = u32;
 
 /// A variable binding of a rule instance: (variable name, ground term), as ids into the

@@ -5,8 +5,8 @@
 //! Invariant (multi-shot): a grounding adds constraints only for the pairs with an atom that
 //! is not frozen (new to it), so a pair gets its constraint once.
 
-use crate::ground::instantiate::{AtomId, Grounder};
-use crate::ground::program::{Body, HeadKind, Lit, Origin, RemovedLit, Rule, RuleOrigin};
+use crate::ground::instantiate::{GroundAtom, Grounder};
+use crate::ground::program::{Body, HeadKind, Origin, RemovedLit, Rule, RuleOrigin};
 use crate::ground::rewrite::Compiled;
 use crate::ground::symbol::SymData;
 
@@ -60,26 +60,26 @@ pub(super) fn add_classical_constraints(
         };
         // From the positive side only the pairs whose negative atom is frozen (the others
         // are found from their negative side).
-        if !neg && !frozen(y as usize) {
+        if !neg && !frozen(y.get() as usize) {
             continue;
         }
         let (a, b) = if neg {
             (x, y)
         } else {
-            (y as usize, x as AtomId)
+            (y.get() as usize, GroundAtom::new(x as u32))
         };
-        if !g.atoms[b as usize - 1].in_domain || !g.atoms[a - 1].in_domain {
+        if !g.atoms[b.index()].in_domain || !g.atoms[a - 1].in_domain {
             continue;
         }
         let mut body = Vec::new();
         let mut facts = Vec::new();
-        for x in [b, a as AtomId] {
-            if !g.atoms[x as usize - 1].fact {
-                body.push(x as Lit);
+        for x in [b, GroundAtom::new(a as u32)] {
+            if !g.atoms[x.index()].fact {
+                body.push(x.lit());
             } else {
                 facts.push(RemovedLit {
                     positive: true,
-                    atom: x,
+                    atom: x.get(),
                 });
             }
         }

@@ -8,7 +8,7 @@
 //! remembered for later groundings.
 
 use super::Status;
-use crate::ground::instantiate::{AtomId, Grounder};
+use crate::ground::instantiate::{GroundAtom, Grounder};
 use crate::ground::program::{CrRule, GroundProgram, Prefer};
 use crate::ground::symbol::SymData;
 
@@ -19,15 +19,15 @@ pub(super) fn cr_rules(
     g: &Grounder<'_>,
     status: &[Status],
     number: &[u32],
-    prefer_before: &[AtomId],
+    prefer_before: &[GroundAtom],
     frozen: &dyn Fn(usize) -> bool,
     out: &mut GroundProgram,
-) -> Vec<AtomId> {
+) -> Vec<GroundAtom> {
     let n = g.atoms.len();
     for (a, label) in &g.directives.cr_rules {
-        if number[*a as usize] != 0 && status[*a as usize - 1] == Status::Unknown {
+        if number[a.get() as usize] != 0 && status[a.index()] == Status::Unknown {
             out.cr_rules.push(CrRule {
-                appl: number[*a as usize],
+                appl: number[a.get() as usize],
                 label: label.clone(),
             });
         }
@@ -36,7 +36,7 @@ pub(super) fn cr_rules(
     let mut prefer_atoms = Vec::new();
     let prefer_name = g.syms.names.get("prefer");
     let fresh = (1..=n).filter(|&a| !frozen(a) && status[a - 1] == Status::Fact);
-    for a in prefer_before.iter().map(|&a| a as usize).chain(fresh) {
+    for a in prefer_before.iter().map(|&a| a.get() as usize).chain(fresh) {
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };
         if status[a - 1] != Status::Fact {
@@ -53,7 +53,7 @@ pub(super) fn cr_rules(
             continue;
         }
         if !frozen(a) {
-            prefer_atoms.push(a as AtomId);
+            prefer_atoms.push(GroundAtom::new(a as u32));
         }
         let (l1, l2) = (g.syms.show(args[0]), g.syms.show(args[1]));
         for better in out.cr_rules.iter().filter(|c| c.label == l1) {

@@ -42,14 +42,14 @@ pub(super) fn directives(
         .directives
         .externals
         .iter()
-        .map(|&(a, v)| (number[a as usize], v))
+        .map(|&(a, v)| (number[a.get() as usize], v))
         .collect();
     out.projections = g
         .directives
         .projections
         .iter()
-        .filter(|&&a| number[a as usize] != 0)
-        .map(|&a| number[a as usize])
+        .filter(|&&a| number[a.get() as usize] != 0)
+        .map(|&a| number[a.get() as usize])
         .collect();
     for h in &g.directives.heuristics {
         if number[h.atom as usize] == 0 {

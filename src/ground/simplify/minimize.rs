@@ -133,7 +133,7 @@ fn element_lit(
             w.numbering.push(
                 &mut w.rules,
                 HeadKind::Disjunction,
-                &[a],
+                &[a.get()],
                 BodyRef::Normal(&alt),
                 &g.atoms,
             );
@@ -141,7 +141,7 @@ fn element_lit(
                 w.origins.push_rule(std::mem::take(&mut alt_origins[i]));
             }
         }
-        Some(a as Lit)
+        Some(a.lit())
     };
     match lit {
         Some(l) => l,
@@ -149,18 +149,18 @@ fn element_lit(
             // A certain element: its weight is always counted; clasp needs a literal, so use
             // a fact atom.
             let a = new_aux(g, status);
-            status[a as usize - 1] = Status::Fact;
+            status[a.index()] = Status::Fact;
             w.numbering.push(
                 &mut w.rules,
                 HeadKind::Disjunction,
-                &[a],
+                &[a.get()],
                 BodyRef::Normal(&[]),
                 &g.atoms,
             );
             if prov {
                 w.origins.push_rule(std::mem::take(certain_origins));
             }
-            a as Lit
+            a.lit()
         }
     }
 }

@@ -40,7 +40,7 @@ use numbering::{number_remaining, Numbering};
 use propagate::propagate;
 use rules::simplify_rules;
 
-use super::instantiate::{AtomId, Grounder};
+use super::instantiate::{GroundAtom, Grounder};
 use super::program::{
     DeadReason, DeadRule, GroundProgram, Lit, Minimize, Origin, Provenance, Rules,
 };
@@ -68,12 +68,12 @@ pub struct Finished {
     /// Symbol of every fact atom (also those simplified away from bodies).
     pub fact_syms: Vec<SymId>,
     /// The grounder atom of each fact of `fact_syms`.
-    pub fact_atoms: Vec<AtomId>,
+    pub fact_atoms: Vec<GroundAtom>,
     /// The grounder atom of each aspif atom (`atom_gatoms[a - 1]`).
-    pub atom_gatoms: Vec<AtomId>,
+    pub atom_gatoms: Vec<GroundAtom>,
     /// The `prefer(l1, l2)` facts among the atoms this call decided (multi-shot: later calls
     /// pair them with their own CR rules).
-    pub prefer_atoms: Vec<AtomId>,
+    pub prefer_atoms: Vec<GroundAtom>,
 }
 
 /// Multi-shot ([`finish_after`]): the atom has an aspif number from an earlier grounding.
@@ -92,7 +92,7 @@ pub fn finish_after(
     g: &mut Grounder<'_>,
     prog: &Compiled,
     before: &[u8],
-    prefer_before: &[AtomId],
+    prefer_before: &[GroundAtom],
 ) -> Finished {
     let frozen = |a: usize| before.get(a).is_some_and(|&f| f & NUMBERED != 0);
     add_classical_constraints(g, prog, &frozen);
@@ -204,7 +204,7 @@ fn decide(g: &Grounder<'_>, before: &[u8], frozen: &dyn Fn(usize) -> bool) -> De
     let mut status = initial_status(g);
     let mut external = vec![false; n + 1];
     for &(a, _) in &g.directives.externals {
-        external[a as usize] = true;
+        external[a.get() as usize] = true;
     }
     // What propagation may not make false: externals and frozen atoms.
     let keep: Vec<bool> = if before.is_empty() {
@@ -279,8 +279,9 @@ fn shown_pred(shown: &[bool], pred: u32) -> bool {
     pred != u32::MAX && shown[pred as usize]
 }
 
-/// The first atom of `head` known to be a fact.
-fn fact_among(head: &[AtomId], status: &[Status]) -> Option<AtomId> {
+/// The first atom of `head` (grounder atom numbers, as the rule store holds them) known to be
+/// a fact.
+fn fact_among(head: &[u32], status: &[Status]) -> Option<u32> {
     head.iter()
         .copied()
         .find(|&h| status[h as usize - 1] == Status::Fact)
@@ -300,7 +301,7 @@ fn initial_status(g: &Grounder<'_>) -> Vec<Status> {
         .collect()
 }
 
-fn new_aux(g: &mut Grounder<'_>, status: &mut Vec<Status>) -> AtomId {
+fn new_aux(g: &mut Grounder<'_>, status: &mut Vec<Status>) -> GroundAtom {
     let a = g.aux();
     status.push(Status::Unknown);
     a

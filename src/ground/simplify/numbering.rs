@@ -7,8 +7,8 @@
 //! indexed by number minus one.
 
 use super::{shown_pred, Status};
-use crate::ground::instantiate::{AtomId, AtomInfo, Grounder};
-use crate::ground::program::{BodyRef, HeadKind, Lit, Minimize, Rules, Weight};
+use crate::ground::instantiate::{AtomInfo, GroundAtom, Grounder};
+use crate::ground::program::{Atom, BodyRef, HeadKind, Lit, Minimize, Rules, Weight};
 use crate::ground::symbol::SymId;
 
 /// The aspif numbering, made as the output rules are written (gringo's: atoms in order of
@@ -22,9 +22,9 @@ pub(super) struct Numbering {
     /// The symbol of each numbered atom, by number.
     pub(super) atom_syms: Vec<Option<SymId>>,
     /// The grounder atom of each numbered atom, by number.
-    pub(super) atom_gatoms: Vec<AtomId>,
-    /// Scratch: the head, body and weight body of a rule being written.
-    head: Vec<AtomId>,
+    pub(super) atom_gatoms: Vec<GroundAtom>,
+    /// Scratch: the head, body and weight body of a rule being written, renumbered.
+    head: Vec<Atom>,
     lits: Vec<Lit>,
     wlits: Vec<(Lit, Weight)>,
 }
@@ -53,7 +53,7 @@ impl Numbering {
             self.next += 1;
             self.number[a] = self.next;
             self.atom_syms.push(atoms[a - 1].sym);
-            self.atom_gatoms.push(a as AtomId);
+            self.atom_gatoms.push(GroundAtom::new(a as u32));
         }
         self.number[a]
     }
@@ -72,7 +72,7 @@ impl Numbering {
         &mut self,
         rules: &mut Rules,
         kind: HeadKind,
-        head: &[AtomId],
+        head: &[u32],
         body: BodyRef<'_>,
         atoms: &[AtomInfo],
     ) {
@@ -137,7 +137,7 @@ pub(super) fn number_remaining(
         m.lits.iter().for_each(|&(l, _)| use_lit(l, &mut used));
     }
     for &(a, _) in &g.directives.externals {
-        used[a as usize] = true;
+        used[a.get() as usize] = true;
     }
     for a in 1..=n {
         if frozen(a) {
@@ -172,7 +172,7 @@ pub(super) fn number_remaining(
             e.condition.iter().for_each(|&l| mark(l));
         }
         for &a in &g.directives.projections {
-            mark(a as Lit);
+            mark(a.lit());
         }
     }
     // Numbering as gringo's output does it: atoms in order of first occurrence in the rules

@@ -8,7 +8,7 @@
 //! outputs (same symbol, same condition) are output once.
 
 use super::{map_lit, shown_pred, truth, Status, KNOWN_FACT};
-use crate::ground::instantiate::{AtomId, Grounder};
+use crate::ground::instantiate::{GroundAtom, Grounder};
 use crate::ground::program::{Lit, Output};
 use crate::ground::symbol::SymId;
 
@@ -23,7 +23,7 @@ pub(super) fn shown_atoms(
     shown: &[bool],
     frozen: &dyn Fn(usize) -> bool,
     outputs: &mut Vec<Output>,
-) -> (Vec<SymId>, Vec<AtomId>) {
+) -> (Vec<SymId>, Vec<GroundAtom>) {
     let n = g.atoms.len();
     // Outputs: shown atoms, facts with an empty condition.
     let mut fact_syms = Vec::new();
@@ -35,13 +35,13 @@ pub(super) fn shown_atoms(
             // Output earlier; a fact only when it became one now.
             if status[a - 1] == Status::Fact && before[a] & KNOWN_FACT == 0 {
                 fact_syms.push(sym);
-                fact_atoms.push(a as AtomId);
+                fact_atoms.push(GroundAtom::new(a as u32));
             }
             continue;
         }
         if status[a - 1] == Status::Fact {
             fact_syms.push(sym);
-            fact_atoms.push(a as AtomId);
+            fact_atoms.push(GroundAtom::new(a as u32));
         }
         if info.in_domain && status[a - 1] != Status::False && shown_pred(shown, info.pred) {
             let condition = if status[a - 1] == Status::Fact {

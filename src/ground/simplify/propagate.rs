@@ -13,7 +13,7 @@
 //! pass is linear in the size of the rules.
 
 use super::Status;
-use crate::ground::instantiate::{AtomId, Grounder};
+use crate::ground::instantiate::{GroundAtom, Grounder};
 use crate::ground::program::{BodyRef, DeadReason, HeadKind, Lit, Rules};
 
 /// The two passes that build [`Occurrences`]: count, then fill.
@@ -193,12 +193,12 @@ pub(super) fn propagate(
     for a in 1..=n {
         if p.status[a - 1] == Status::Fact {
             for &(ri, w) in neg_occ.of(a) {
-                p.lose(ri as usize, w, false, a as AtomId);
+                p.lose(ri as usize, w, false, GroundAtom::new(a as u32));
             }
         }
     }
     while let Some(a) = p.work.pop() {
-        for &(ri, w) in pos_occ.of(a as usize) {
+        for &(ri, w) in pos_occ.of(a.get() as usize) {
             p.lose(ri as usize, w, true, a);
         }
     }
@@ -219,7 +219,7 @@ struct Propagation<'a> {
     dead: Vec<bool>,
     head_count: Vec<u32>,
     slack: Vec<i64>,
-    work: Vec<AtomId>,
+    work: Vec<GroundAtom>,
 }
 
 impl Propagation<'_> {
@@ -227,7 +227,7 @@ impl Propagation<'_> {
     fn falsify_if_unsupported(&mut self, a: usize) {
         if self.head_count[a] == 0 && !self.keep[a] && self.status[a - 1] == Status::Unknown {
             self.status[a - 1] = Status::False;
-            self.work.push(a as AtomId);
+            self.work.push(GroundAtom::new(a as u32));
         }
     }
 
@@ -249,7 +249,7 @@ impl Propagation<'_> {
     /// A literal over `atom` (`positive` or `not atom`) in the body of rule `ri` became false,
     /// with weight `w` in a weight body (0: a normal body). A normal body dies; a weight body
     /// loses the weight and dies once its bound is out of reach.
-    fn lose(&mut self, ri: usize, w: i64, positive: bool, atom: AtomId) {
+    fn lose(&mut self, ri: usize, w: i64, positive: bool, atom: GroundAtom) {
         let reason = if w > 0 {
             self.slack[ri] -= w;
             if self.slack[ri] >= 0 {
@@ -257,7 +257,10 @@ impl Propagation<'_> {
             }
             DeadReason::Unreachable
         } else {
-            DeadReason::Literal { positive, atom }
+            DeadReason::Literal {
+                positive,
+                atom: atom.get(),
+            }
         };
         self.kill(ri, reason);
     }

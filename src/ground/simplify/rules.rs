@@ -11,7 +11,7 @@
 
 use super::numbering::{gringo_body_order, Numbering};
 use super::{fact_among, truth, Status, Written};
-use crate::ground::instantiate::{AtomId, Grounder};
+use crate::ground::instantiate::Grounder;
 use crate::ground::program::{
     BodyRef, DeadReason, DeadRule, HeadKind, Lit, Origin, Provenance, RemovedLit, RuleOrigin,
     Rules, Weight,
@@ -72,14 +72,14 @@ pub(super) fn simplify_rules(
     // The rules are moved out (the grounder's copy is not used after this); each surviving
     // rule is simplified in the scratch vectors and copied to `rules`.
     let old = std::mem::take(&mut g.rules);
-    let mut head: Vec<AtomId> = Vec::new();
+    let mut head: Vec<u32> = Vec::new();
     let mut lits: Vec<Lit> = Vec::new();
     let mut ordered: Vec<Lit> = Vec::new();
     let mut wlits: Vec<(Lit, Weight)> = Vec::new();
     // Records a removed rule that headed a false atom, or that a fact among its heads
     // satisfied (provenance: every rule instance keeps its origin).
     let mut bury = |ri: usize,
-                    head: &[AtomId],
+                    head: &[u32],
                     reason: DeadReason,
                     status: &[Status],
                     take: &mut dyn FnMut(usize) -> Vec<Origin>| {
