@@ -19,7 +19,7 @@ use crate::syntax::ast::{Term, TermKind};
 
 use super::ast::*;
 use super::switches::resolve_switches;
-pub use super::switches::{builtin_switches, HorizonMode, Options, Switches};
+use super::switches::Options;
 
 /// Names the translation uses for its own predicates; descriptions may not declare them.
 pub const RESERVED: &[&str] = &[

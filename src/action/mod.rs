@@ -13,15 +13,16 @@
 
 pub mod ast;
 pub mod build;
-pub mod check;
+pub(crate) mod check;
 pub mod fuzzing;
-pub mod parser;
-pub mod parts;
-pub mod switches;
+pub(crate) mod parser;
+pub(crate) mod parts;
+pub(crate) mod switches;
 pub mod translate;
 
-pub use check::{check, Checked, HorizonMode, Options, Switches};
+pub use check::{check, Checked};
 pub use parser::{parse, Parse};
+pub use switches::{HorizonMode, Options, Switches};
 pub use translate::{translate, AxiomOrigin, OriginKind, Translation};
 
 use crate::base::{Diagnostic, FileId, SourceMap};

@@ -11,10 +11,10 @@ pub mod ast;
 pub mod build;
 pub mod fuzzing;
 pub mod lexer;
-pub mod name;
-pub mod parser;
+pub(crate) mod name;
+pub(crate) mod parser;
 pub mod printer;
-pub mod visit;
+pub(crate) mod visit;
 
 pub use parser::{detect_dialect, parse, parse_auto, Parse, MAX_DEPTH, UNSUPPORTED_SCRIPT};
 pub use printer::print;

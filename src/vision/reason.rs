@@ -27,8 +27,8 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use crate::action::ast::{Description, Statement, StatementKind};
 use crate::action::build::{self, Arg};
-use crate::action::check::Options;
 use crate::action::translate::Translation;
+use crate::action::Options;
 use crate::action::{self, Switches};
 use crate::base::SourceMap;
 use crate::control::{Control, ControlConfig, Part, Symbol};

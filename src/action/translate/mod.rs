@@ -20,8 +20,9 @@ use crate::syntax::ast::{
 };
 
 use super::ast::*;
-use super::check::{check, Checked, Options, Role};
+use super::check::{check, Checked, Role};
 use super::parts::{self, Time};
+use super::switches::Options;
 
 /// Where a generated statement came from.
 #[derive(Clone, Debug, PartialEq, Eq)]
