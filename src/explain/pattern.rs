@@ -88,14 +88,7 @@ trait Subject: Clone + PartialEq {
 
 impl Subject for Symbol {
     fn function(&self) -> Option<(&str, &[Symbol], bool)> {
-        match self {
-            Symbol::Function {
-                name,
-                args,
-                negative,
-            } => Some((name, args, *negative)),
-            _ => None,
-        }
+        Some((self.name()?, self.args(), self.is_negative()))
     }
 
     fn is_leaf(&self, leaf: &Pattern) -> bool {
@@ -109,14 +102,8 @@ impl Subject for Symbol {
 
 impl Subject for Pattern {
     fn function(&self) -> Option<(&str, &[Pattern], bool)> {
-        match self {
-            Pattern::Fun {
-                name,
-                args,
-                negative,
-            } => Some((name, args, *negative)),
-            _ => None,
-        }
+        let negative = matches!(self, Pattern::Fun { negative: true, .. });
+        Some((self.name()?, self.args(), negative))
     }
 
     fn is_leaf(&self, leaf: &Pattern) -> bool {
