@@ -273,10 +273,9 @@ fn flush_diagnostics(io: &mut Io, diags: &Diagnostics, sources: &SourceMap) -> s
 /// text.
 fn dialect_of(options: &Options, name: &str, text: &str) -> Dialect {
     match options.dialect {
-        options::DialectChoice::Clingo => Dialect::Clingo,
-        options::DialectChoice::Sparc => Dialect::Sparc,
-        options::DialectChoice::Auto if name.ends_with(".sp") => Dialect::Sparc,
-        options::DialectChoice::Auto => crate::syntax::detect_dialect(text),
+        Some(dialect) => dialect,
+        None if name.ends_with(".sp") => Dialect::Sparc,
+        None => crate::syntax::detect_dialect(text),
     }
 }
 
@@ -310,19 +309,10 @@ fn solve_config(
     program: &GroundProgram,
     deadline: Option<Instant>,
 ) -> solve::Config {
-    let opt_mode = match options.opt_mode {
-        options::OptMode::Opt => solve::OptMode::Opt,
-        options::OptMode::OptN => solve::OptMode::OptN,
-        options::OptMode::Enum => solve::OptMode::Enum(options.opt_bounds.clone()),
-        options::OptMode::Ignore => solve::OptMode::Ignore,
-    };
     let optimizing = !program.minimize.is_empty()
-        && matches!(opt_mode, solve::OptMode::Opt | solve::OptMode::OptN);
+        && matches!(options.opt_mode, solve::OptMode::Opt | solve::OptMode::OptN);
     // clingo: with optimization, and for consequences, the default is to search until the end.
-    let consequences = matches!(
-        options.enum_mode,
-        options::EnumMode::Brave | options::EnumMode::Cautious
-    );
+    let consequences = options.enum_mode != solve::EnumMode::Auto;
     let models = if !options.models_given && (optimizing || consequences) {
         0
     } else {
@@ -330,21 +320,14 @@ fn solve_config(
     };
     solve::Config {
         models,
-        opt_mode,
-        enum_mode: match options.enum_mode {
-            options::EnumMode::Brave => solve::EnumMode::Brave,
-            options::EnumMode::Cautious => solve::EnumMode::Cautious,
-            _ => solve::EnumMode::Auto,
-        },
-        cr_mode: match options.cr {
-            options::CrMode::Cardinality => solve::CrMode::Cardinality,
-            options::CrMode::Subset => solve::CrMode::Subset,
-        },
+        opt_mode: options.opt_mode.clone(),
+        enum_mode: options.enum_mode,
+        cr_mode: options.cr,
         project: options.project,
         deadline,
         seed: options.seed,
         random_freq_permille: options.rand_freq_permille,
-        domain_heuristic: options.domain_heuristic,
+        heuristic: options.heuristic,
         check_models: options.check,
         threads: options.threads as usize,
         ..solve::Config::default()

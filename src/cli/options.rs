@@ -6,6 +6,8 @@
 //! into clingo's `*** ERROR: (lucent): ...` lines and exit code 1.
 
 use crate::base::WarningKind;
+use crate::solve::{CrMode, EnumMode, Heuristic, OptMode};
+use crate::syntax::ast::Dialect;
 
 /// Whether an option takes a value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -108,58 +110,6 @@ pub enum GroundFormat {
     Text,
 }
 
-/// Input dialect selection.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum DialectChoice {
-    /// SPARC for `.sp` files, clingo otherwise.
-    #[default]
-    Auto,
-    /// The clingo dialect.
-    Clingo,
-    /// SPARC.
-    Sparc,
-}
-
-/// `--opt-mode`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum OptMode {
-    /// Find and prove an optimum, printing improving models.
-    #[default]
-    Opt,
-    /// Find the optimum, then enumerate all optimal models.
-    OptN,
-    /// Enumerate models, optionally those within the bound.
-    Enum,
-    /// Ignore optimize statements.
-    Ignore,
-}
-
-/// `--enum-mode`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum EnumMode {
-    /// The solver's choice.
-    #[default]
-    Auto,
-    /// Backtracking enumeration.
-    Backtrack,
-    /// Enumeration by recording solution nogoods.
-    Record,
-    /// Brave consequences (union of all models).
-    Brave,
-    /// Cautious consequences (intersection of all models).
-    Cautious,
-}
-
-/// `--cr`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum CrMode {
-    /// Minimal number of applied CR rules (SPARC's semantics).
-    #[default]
-    Cardinality,
-    /// Subset-minimal applied CR rules, respecting `prefer/2` (crmodels2's semantics).
-    Subset,
-}
-
 /// `--outf`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum OutputFormat {
@@ -179,8 +129,8 @@ pub struct Options {
     pub mode: Mode,
     /// Ground program format in gringo mode.
     pub ground_format: GroundFormat,
-    /// Input language.
-    pub dialect: DialectChoice,
+    /// Input language; `None` is SPARC for `.sp` files, else detected from the text.
+    pub dialect: Option<Dialect>,
     /// Number of models to compute, 0 for all.
     pub models: u64,
     /// Whether `-n` was given explicitly (optimization changes the default to all).
@@ -197,10 +147,8 @@ pub struct Options {
     pub message_limit: usize,
     /// Show provenance comments in text output.
     pub provenance: bool,
-    /// Optimization mode.
+    /// Optimization mode, with the bounds of `--opt-mode=enum,b1,b2`.
     pub opt_mode: OptMode,
-    /// Bounds given with `--opt-mode=...,b1,b2`.
-    pub opt_bounds: Vec<i64>,
     /// Enumeration mode.
     pub enum_mode: EnumMode,
     /// Projection requested.
@@ -215,8 +163,8 @@ pub struct Options {
     pub seed: u64,
     /// Probability of a random decision, in 1/1000 (`--rand-freq`).
     pub rand_freq_permille: u32,
-    /// `--heuristic=domain`: follow `#heuristic` statements.
-    pub domain_heuristic: bool,
+    /// The decision heuristic.
+    pub heuristic: Heuristic,
     /// Check every model independently.
     pub check: bool,
     /// Output format.
@@ -239,7 +187,7 @@ impl Default for Options {
             files: Vec::new(),
             mode: Mode::Clingo,
             ground_format: GroundFormat::Aspif,
-            dialect: DialectChoice::Auto,
+            dialect: None,
             models: 1,
             models_given: false,
             consts: Vec::new(),
@@ -249,7 +197,6 @@ impl Default for Options {
             message_limit: 20,
             provenance: false,
             opt_mode: OptMode::Opt,
-            opt_bounds: Vec::new(),
             enum_mode: EnumMode::Auto,
             project: false,
             cr: CrMode::Cardinality,
@@ -257,7 +204,7 @@ impl Default for Options {
             threads: 1,
             seed: 1,
             rand_freq_permille: 0,
-            domain_heuristic: false,
+            heuristic: Heuristic::Vsids,
             check: false,
             outf: OutputFormat::Text,
             quiet: [0, 0, 0],
@@ -471,10 +418,8 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
         }
         "dialect" => {
             o.dialect = match v {
-                "auto" => DialectChoice::Auto,
-                "clingo" | "asp" => DialectChoice::Clingo,
-                "sparc" => DialectChoice::Sparc,
-                _ => return Err(invalid(long, v)),
+                "auto" => None,
+                _ => Some(Dialect::from_name(v).ok_or_else(|| invalid(long, v))?),
             }
         }
         "models" => {
@@ -505,48 +450,17 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
         "warn" => apply_warn(o, v)?,
         "message-limit" => o.message_limit = parse_num(long, v)?,
         "provenance" => o.provenance = true,
-        "opt-mode" => {
-            let mut parts = v.split(',');
-            o.opt_mode = match parts.next().unwrap_or("") {
-                "opt" => OptMode::Opt,
-                "optN" => OptMode::OptN,
-                "enum" => OptMode::Enum,
-                "ignore" => OptMode::Ignore,
-                _ => return Err(invalid(long, v)),
-            };
-            o.opt_bounds = parts
-                .map(|b| parse_num::<i64>(long, b))
-                .collect::<Result<_, _>>()?;
-        }
-        "enum-mode" => {
-            o.enum_mode = match v {
-                "auto" => EnumMode::Auto,
-                "bt" => EnumMode::Backtrack,
-                "record" => EnumMode::Record,
-                "brave" => EnumMode::Brave,
-                "cautious" => EnumMode::Cautious,
-                _ => return Err(invalid(long, v)),
-            }
-        }
+        "opt-mode" => o.opt_mode = OptMode::from_name(v).ok_or_else(|| invalid(long, v))?,
+        "enum-mode" => o.enum_mode = EnumMode::from_name(v).ok_or_else(|| invalid(long, v))?,
         "project" => {
             o.project = match value {
                 None => true,
-                Some("no") | Some("0") => false,
-                Some(m)
-                    if ["show", "project", "auto"].contains(&m.split(',').next().unwrap_or("")) =>
-                {
-                    true
+                Some(m) => {
+                    crate::solve::Config::project_from_name(m).ok_or_else(|| invalid(long, m))?
                 }
-                Some(m) => return Err(invalid(long, m)),
             }
         }
-        "cr" => {
-            o.cr = match v {
-                "card" | "cardinality" => CrMode::Cardinality,
-                "subset" => CrMode::Subset,
-                _ => return Err(invalid(long, v)),
-            }
-        }
+        "cr" => o.cr = CrMode::from_name(v).ok_or_else(|| invalid(long, v))?,
         "time-limit" => {
             let secs: f64 = parse_num(long, v)?;
             if !(secs >= 0.0 && secs.is_finite()) {
@@ -562,14 +476,7 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
             }
             o.threads = threads;
         }
-        "heuristic" => {
-            let known = ["berkmin", "vmtf", "vsids", "domain", "unit", "none"];
-            let name = v.split(',').next().unwrap_or("").to_ascii_lowercase();
-            if !known.contains(&name.as_str()) {
-                return Err(invalid(long, v));
-            }
-            o.domain_heuristic = name == "domain";
-        }
+        "heuristic" => o.heuristic = Heuristic::from_name(v).ok_or_else(|| invalid(long, v))?,
         "seed" => o.seed = parse_num(long, v)?,
         "rand-freq" => {
             let p: f64 = parse_num(long, v)?;
@@ -810,11 +717,39 @@ mod tests {
         assert_eq!(o.consts, vec![("n".to_string(), "3".to_string())]);
         assert_eq!(o.outf, OutputFormat::Json);
         assert_eq!(o.quiet, [2, 2, 2]);
-        assert_eq!(o.opt_mode, OptMode::Enum);
-        assert_eq!(o.opt_bounds, vec![3, 4]);
+        assert_eq!(o.opt_mode, OptMode::Enum(vec![3, 4]));
         assert_eq!(o.disabled_warnings, vec![WarningKind::AtomUndefined]);
         let o = parse_args(&args("--quiet=1")).unwrap();
         assert_eq!(o.quiet, [1, 1, 2]);
+    }
+
+    #[test]
+    fn modes_parse_into_the_librarys_types() {
+        let o = parse_args(&args(
+            "--enum-mode=bt --cr=subset --heuristic=Domain,2 --dialect=asp --project=auto,3",
+        ))
+        .unwrap();
+        assert_eq!(o.enum_mode, EnumMode::Auto);
+        assert_eq!(o.cr, CrMode::Subset);
+        assert_eq!(o.heuristic, Heuristic::Domain);
+        assert_eq!(o.dialect, Some(Dialect::Clingo));
+        assert!(o.project);
+        let o = parse_args(&args("--opt-mode=opt,5 --project=no --dialect=auto")).unwrap();
+        assert_eq!(
+            (o.opt_mode, o.project, o.dialect),
+            (OptMode::Opt, false, None)
+        );
+        for bad in [
+            "--opt-mode=enum,x",
+            "--heuristic=best",
+            "--project=no,1",
+            "--cr=all",
+        ] {
+            assert!(
+                matches!(parse_args(&args(bad)), Err(UsageError::InvalidValue { .. })),
+                "{bad}"
+            );
+        }
     }
 
     #[test]
