@@ -183,28 +183,28 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     run_pipeline(&options, io)
 }
 
-/// The front of a verb (`learn`, `run`): its parsed arguments, or `Err(code)` once it has
-/// printed the usage error (exit code [`EXIT_USAGE`]) or, when `help` says the arguments ask for
-/// it, `help_text` (exit code 0).
+/// The front of a verb: its help (exit code 0) when the command line asks for it
+/// ([`options::Verb::asks_for_help`]), else what `parse` makes of the command line, or
+/// `Err(code)` once the usage error is printed as `*** ERROR: (lucent): ...` (exit code
+/// [`EXIT_USAGE`]).
 pub(crate) fn verb_args<A>(
-    parsed: Result<A, String>,
-    help: impl Fn(&A) -> bool,
-    help_text: &str,
+    verb: &options::Verb,
+    args: &[String],
+    parse: impl FnOnce(&[String]) -> Result<A, String>,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<Result<A, i32>> {
-    let args = match parsed {
-        Ok(a) => a,
-        Err(e) => {
-            writeln!(err, "*** ERROR: (lucent): {e}")?;
-            return Ok(Err(EXIT_USAGE));
-        }
-    };
-    if help(&args) {
-        write!(out, "{help_text}")?;
+    if verb.asks_for_help(args) {
+        write!(out, "{}", verb.help())?;
         return Ok(Err(0));
     }
-    Ok(Ok(args))
+    match parse(args) {
+        Ok(a) => Ok(Ok(a)),
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            Ok(Err(EXIT_USAGE))
+        }
+    }
 }
 
 /// Prints a report: `value` as pretty JSON with `json`, else `markdown`; shared by `classify`
@@ -725,6 +725,48 @@ fn run_clasp_mode(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_verb_table_is_well_formed_and_its_help_lists_it() {
+        let mut verbs: Vec<(&str, &options::Verb)> = vec![
+            ("plan", &plan::VERB),
+            ("translate", &action::VERB),
+            ("learn", &learn::VERB),
+            ("explain", &explain::VERB),
+            ("experiment", &experiment::VERB),
+            ("demo", &demo::VERB),
+        ];
+        #[cfg(feature = "sim")]
+        verbs.extend([
+            ("run", &run::VERB),
+            ("sim", &sim::VERB),
+            ("classify", &classify::VERB),
+            ("experiment classify", &classify::EXPERIMENT_VERB),
+        ]);
+        for (name, verb) in verbs {
+            let help = verb.help();
+            assert!(verb.options.contains(&options::HELP), "{name}");
+            for (i, spec) in verb.options.iter().enumerate() {
+                assert!(
+                    help.contains(&format!("--{}", spec.long)),
+                    "{name}: {spec:?}"
+                );
+                let earlier = &verb.options[..i];
+                assert!(
+                    earlier
+                        .iter()
+                        .all(|o| o.long != spec.long
+                            && (spec.short.is_none() || o.short != spec.short)),
+                    "{name}: {} twice",
+                    spec.long
+                );
+            }
+            for words in [&["--help"][..], &["x", "--hel"], &["-h", "--bogus"]] {
+                let words: Vec<String> = words.iter().map(|w| w.to_string()).collect();
+                assert!(verb.asks_for_help(&words), "{name}: {words:?}");
+            }
+        }
+    }
 
     fn run_str(args: &str, stdin: &str) -> (i32, String, String) {
         let args: Vec<String> = args.split_whitespace().map(str::to_string).collect();
