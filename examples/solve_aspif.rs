@@ -34,23 +34,13 @@ fn main() -> ExitCode {
         } else if let Some(v) = a.strip_prefix("--models=") {
             models = v.parse().ok();
         } else if let Some(v) = a.strip_prefix("--opt-mode=") {
-            let mut parts = v.split(',');
-            config.opt_mode = match parts.next() {
-                Some("optN") => OptMode::OptN,
-                Some("enum") => OptMode::Enum(parts.filter_map(|b| b.parse().ok()).collect()),
-                Some("ignore") => OptMode::Ignore,
-                _ => OptMode::Opt,
-            };
+            config.opt_mode = OptMode::from_name(v).unwrap_or_default();
         } else if let Some(v) = a.strip_prefix("--enum-mode=") {
-            config.enum_mode = match v {
-                "brave" => EnumMode::Brave,
-                "cautious" => EnumMode::Cautious,
-                _ => EnumMode::Auto,
-            };
+            config.enum_mode = EnumMode::from_name(v).unwrap_or_default();
         } else if a == "--project" {
             config.project = true;
-        } else if a == "--cr=subset" {
-            config.cr_mode = CrMode::Subset;
+        } else if let Some(v) = a.strip_prefix("--cr=") {
+            config.cr_mode = CrMode::from_name(v).unwrap_or_default();
         } else if let Some(v) = a.strip_prefix("--time-limit=") {
             if let Ok(s) = v.parse::<u64>() {
                 config.deadline = Some(start + Duration::from_secs(s));

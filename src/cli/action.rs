@@ -12,15 +12,61 @@ use std::io::Write;
 use crate::action::{self, ast::Value, Options, Translation};
 use crate::base::{Diagnostics, FileId, SourceMap};
 
-/// `lucent translate --help`.
-const HELP: &str = "\
+use super::options::{self, opt, Arg, Arity::*, OptionSpec, Verb};
+
+/// `lucent translate`'s command line; `--help` is generated from it.
+pub(super) const VERB: Verb = Verb {
+    usage: "\
 usage: lucent translate FILE.ald [--profile NAME] [-c NAME=VALUE]...
 
 Translates an AL_d system description and history (grammar/action.ebnf) into a CR-Prolog
 program (docs/domain.md section 3) and prints it. Each group of rules is preceded by a comment that
-names the AL_d statement it came from (label, kind, text). --profile chooses a switch bundle the
-description declares (e.g. tabletop, learner, main2019); -c sets a switch (e.g. -c horizon=3).
-";
+names the AL_d statement it came from (label, kind, text).
+",
+    options: OPTIONS,
+    epilogue: "",
+};
+
+/// The options of `lucent translate`.
+#[rustfmt::skip]
+const OPTIONS: &[OptionSpec] = &[
+    options::HELP,
+    opt("profile", None, Value, "NAME", "a switch bundle the description declares (e.g. tabletop, learner, main2019)", "Options"),
+    opt("const", Some('c'), Value, "NAME=VALUE", "set a switch (e.g. -c horizon=3); may be repeated", "Options"),
+];
+
+/// `lucent translate`'s command line: the file, the profile and the switches.
+struct Args {
+    file: String,
+    profile: Option<String>,
+    consts: Vec<(String, String)>,
+}
+
+fn parse(args: &[String]) -> Result<Args, String> {
+    let (mut file, mut profile, mut consts) = (None, None, Vec::new());
+    for arg in options::scan(OPTIONS, args) {
+        match arg.map_err(|e| e.to_string())? {
+            Arg::Option(spec, v) => {
+                let v = v.unwrap_or_default();
+                match spec.long {
+                    "profile" => profile = Some(v),
+                    "const" => consts.push(spec.assignment(&v)?),
+                    _ => {} // --help, answered before parsing
+                }
+            }
+            Arg::Word(w) | Arg::Literal(w) if file.is_none() => file = Some(w),
+            Arg::Word(_) | Arg::Literal(_) => {
+                return Err("`lucent translate` takes one file".into())
+            }
+        }
+    }
+    let file = file.ok_or("`lucent translate` needs a file (try --help)")?;
+    Ok(Args {
+        file,
+        profile,
+        consts,
+    })
+}
 
 /// Reads an AL_d switch value as written on the command line.
 pub fn value_of(text: &str) -> Value {
@@ -102,64 +148,13 @@ pub fn run_translate(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
-    let mut file = None;
-    let mut profile = None;
-    let mut consts = Vec::new();
-    let mut i = 0;
-    while i < args.len() {
-        let a = args[i].as_str();
-        let value = |i: &mut usize, prefix: &str| -> Option<String> {
-            if a.len() > prefix.len() {
-                Some(a[prefix.len()..].trim_start_matches('=').to_string())
-            } else {
-                *i += 1;
-                args.get(*i).cloned()
-            }
-        };
-        if a == "--help" || a == "-h" {
-            write!(out, "{HELP}")?;
-            return Ok(0);
-        } else if a.starts_with("--profile") {
-            profile = value(&mut i, "--profile");
-        } else if a.starts_with("--const") || a.starts_with("-c") {
-            let prefix = if a.starts_with("--const") {
-                "--const"
-            } else {
-                "-c"
-            };
-            match value(&mut i, prefix).and_then(|v| {
-                v.split_once('=')
-                    .map(|(n, v)| (n.trim().to_string(), v.trim().to_string()))
-            }) {
-                Some(c) => consts.push(c),
-                None => {
-                    writeln!(err, "*** ERROR: (lucent): '{a}': expected -c NAME=VALUE")?;
-                    return Ok(super::EXIT_USAGE);
-                }
-            }
-        } else if a.starts_with('-') && a != "-" {
-            writeln!(
-                err,
-                "*** ERROR: (lucent): '{a}': unknown option of `lucent translate` (try --help)"
-            )?;
-            return Ok(super::EXIT_USAGE);
-        } else if file.is_none() {
-            file = Some(a.to_string());
-        } else {
-            writeln!(
-                err,
-                "*** ERROR: (lucent): `lucent translate` takes one file"
-            )?;
-            return Ok(super::EXIT_USAGE);
-        }
-        i += 1;
-    }
-    let Some(name) = file else {
-        writeln!(
-            err,
-            "*** ERROR: (lucent): `lucent translate` needs a file (try --help)"
-        )?;
-        return Ok(super::EXIT_USAGE);
+    let Args {
+        file: name,
+        profile,
+        consts,
+    } = match super::verb_args(&VERB, args, parse, out, err)? {
+        Ok(a) => a,
+        Err(code) => return Ok(code),
     };
     let mut sources = SourceMap::new();
     let mut diags = Diagnostics::default();

@@ -13,13 +13,16 @@ use std::path::PathBuf;
 
 use serde_json::json;
 
+use super::options::{self, opt, Arg, Arity::*, OptionSpec, Verb};
 use crate::experiment::classify::{self as exp, ClassifyConfig, REMOVED};
 use crate::sim::Scene;
 use crate::vision::classify::{reason_all, Classifier, System, TrainConfig};
 use crate::vision::dataset;
 use crate::vision::reason::{Knowledge, View};
 
-const HELP: &str = "\
+/// `lucent classify`'s command line; `--help` is generated from it.
+pub(super) const VERB: Verb = Verb {
+    usage: "\
 usage: lucent classify SCENE.json [--train N] [--seed N] [--why QUESTION]... [--outf=0|2]
 
 Looks at a simulator scene (a file `lucent sim generate --out` writes): renders the camera
@@ -29,15 +32,24 @@ less ST1, D1 and OC2 plus the state constraints learned from N generated trainin
 CNN (trained on the regions of interest reasoning failed on) decides where reasoning cannot.
 Each decision names its source: reasoning, a learned constraint, or the CNN. The scene's own
 physics labels are printed beside for comparison.
-  --train N     training scenes (default 200; 0: reasoning with KB_full only, no training)
-  --seed N      seed of the training scenes and the learner (default 0)
-  --why Q       answer a question about what the robot sees (\"why is the red cube unstable?\",
-                \"why is the mug not occluded?\") from the proof tree of its reasoning, or say
-                that the network decided; may be repeated
-  --outf=0|2    0: a table (default); 2: JSON
-";
+",
+    options: OPTIONS,
+    epilogue: "",
+};
 
-const EXPERIMENT_HELP: &str = "\
+/// The options of `lucent classify`.
+#[rustfmt::skip]
+const OPTIONS: &[OptionSpec] = &[
+    options::HELP,
+    opt("train", None, Value, "N", "training scenes (default 200; 0: reasoning with KB_full only, no training)", "Options"),
+    opt("seed", None, Value, "N", "seed of the training scenes and the learner (default 0)", "Options"),
+    opt("why", None, Value, "Q", "answer a question about what the robot sees (\"why is the red cube unstable?\", \"why is the mug not occluded?\") from the proof tree of its reasoning, or say that the network decided; may be repeated", "Options"),
+    opt("outf", None, Value, "N", "0: a table (default); 2: JSON", "Options"),
+];
+
+/// `lucent experiment classify`'s command line; `--help` is generated from it.
+pub(super) const EXPERIMENT_VERB: Verb = Verb {
+    usage: "\
 usage: lucent experiment classify [--sizes 50,100,200,500,1000] [--test N] [--runs N]
                                   [--seed N] [--out DIR] [--outf=0|2]
 
@@ -46,17 +58,56 @@ held-apart test scenes for training sets of the given sizes, for four systems (t
 reasoning alone, reasoning with the CNN where it cannot decide, and that with learned state
 constraints); the learning of the removed constraints (ST1, D1, OC2) over independent runs,
 scored strictly and relaxed; and which constraints of KB_full decide the labels.
-  --sizes LIST  training-set sizes in scenes (default 50,100,200,500,1000)
-  --test N      test scenes (default 300)
-  --runs N      learning runs (default 20)
-  --seed N      the base seed (default 0)
-  --out DIR     write DIR/classify.md, DIR/classify.json and the SVG plots
-  --outf=0|2    0: markdown (default); 2: JSON
-";
+",
+    options: EXPERIMENT_OPTIONS,
+    epilogue: "",
+};
 
-fn usage(err: &mut dyn Write, message: &str) -> std::io::Result<i32> {
-    writeln!(err, "*** ERROR: (lucent): {message}")?;
-    Ok(super::EXIT_USAGE)
+/// The options of `lucent experiment classify`.
+#[rustfmt::skip]
+const EXPERIMENT_OPTIONS: &[OptionSpec] = &[
+    options::HELP,
+    opt("sizes", None, Value, "LIST", "training-set sizes in scenes (default 50,100,200,500,1000)", "Options"),
+    opt("test", None, Value, "N", "test scenes (default 300)", "Options"),
+    opt("runs", None, Value, "N", "learning runs (default 20)", "Options"),
+    opt("seed", None, Value, "N", "the base seed (default 0)", "Options"),
+    opt("out", None, Value, "DIR", "write DIR/classify.md, DIR/classify.json and the SVG plots", "Options"),
+    opt("outf", None, Value, "N", "0: markdown (default); 2: JSON", "Options"),
+];
+
+/// The classification experiment's command line: its configuration, the report folder and
+/// whether to print JSON.
+fn parse_experiment(args: &[String]) -> Result<(ClassifyConfig, Option<PathBuf>, bool), String> {
+    let mut config = ClassifyConfig::default();
+    let (mut dir, mut json) = (None, false);
+    for arg in options::scan(EXPERIMENT_OPTIONS, args) {
+        let (spec, v) = match arg.map_err(|e| e.to_string())? {
+            Arg::Option(spec, v) => (spec, v.unwrap_or_default()),
+            Arg::Word(w) | Arg::Literal(w) => return Err(format!("unknown argument '{w}'")),
+        };
+        match spec.long {
+            "sizes" => {
+                config.sizes = v
+                    .split(',')
+                    .map(|x| x.trim().parse::<usize>())
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(|_| format!("'--sizes {v}': expected numbers separated by commas"))?
+            }
+            "test" => config.test_scenes = spec.number(&v)?,
+            "runs" => config.runs = spec.number(&v)?,
+            "seed" => {
+                config.seed = spec.number(&v)?;
+                config.train.seed = config.seed;
+            }
+            "out" => dir = Some(PathBuf::from(v)),
+            "outf" => json = spec.outf(&v)?,
+            _ => {} // --help, answered before parsing
+        }
+    }
+    if config.sizes.is_empty() || config.test_scenes == 0 {
+        return Err("the experiment needs at least one training size and one test scene".into());
+    }
+    Ok((config, dir, json))
 }
 
 /// `lucent experiment classify ...` (`args` after `classify`).
@@ -65,69 +116,11 @@ pub fn run_experiment(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
-    let mut config = ClassifyConfig::default();
-    let (mut dir, mut json) = (None, false);
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        let (name, inline) = match a.split_once('=') {
-            Some((n, v)) => (n, Some(v.to_string())),
-            None => (a.as_str(), None),
+    let (config, dir, json) =
+        match super::verb_args(&EXPERIMENT_VERB, args, parse_experiment, out, err)? {
+            Ok(a) => a,
+            Err(code) => return Ok(code),
         };
-        let mut value = || inline.clone().or_else(|| it.next().cloned());
-        let number = |v: Option<String>| -> Result<u64, String> {
-            let v = v.ok_or_else(|| format!("'{name}' needs a value"))?;
-            super::options::number(name, &v)
-        };
-        let parsed: Result<(), String> = match name {
-            "-h" | "--help" => {
-                write!(out, "{EXPERIMENT_HELP}")?;
-                return Ok(0);
-            }
-            "--sizes" => match value() {
-                Some(v) => v
-                    .split(',')
-                    .map(|x| x.trim().parse::<usize>())
-                    .collect::<Result<Vec<_>, _>>()
-                    .map(|s| config.sizes = s)
-                    .map_err(|_| format!("'--sizes {v}': expected numbers separated by commas")),
-                None => Err("'--sizes' needs a value".into()),
-            },
-            "--test" => number(value()).map(|n| config.test_scenes = n as usize),
-            "--runs" => number(value()).map(|n| config.runs = n as usize),
-            "--seed" => number(value()).map(|n| {
-                config.seed = n;
-                config.train.seed = n;
-            }),
-            "--out" => match value() {
-                Some(v) => {
-                    dir = Some(PathBuf::from(v));
-                    Ok(())
-                }
-                None => Err("'--out' needs a value".into()),
-            },
-            "--outf" => match value().as_deref() {
-                Some("0") => {
-                    json = false;
-                    Ok(())
-                }
-                Some("2") => {
-                    json = true;
-                    Ok(())
-                }
-                v => Err(format!("'--outf={}': expected 0 or 2", v.unwrap_or(""))),
-            },
-            _ => Err(format!("unknown option '{a}'")),
-        };
-        if let Err(e) = parsed {
-            return usage(err, &e);
-        }
-    }
-    if config.sizes.is_empty() || config.test_scenes == 0 {
-        return usage(
-            err,
-            "the experiment needs at least one training size and one test scene",
-        );
-    }
     let bar = super::progress::bar(exp::scene_count(&config) as u64, "scenes generated");
     let progress = |line: &str| bar.suspend(|| eprintln!("classify: {line}"));
     let result = exp::run(&config, &progress, &|| bar.inc(1));
@@ -159,46 +152,61 @@ pub fn write_result(
     super::print_report(out, json, &markdown, &value)
 }
 
+/// `lucent classify`'s command line.
+struct Args {
+    file: Option<String>,
+    train: usize,
+    seed: u64,
+    json: bool,
+    questions: Vec<String>,
+}
+
+fn parse(args: &[String]) -> Result<Args, String> {
+    let mut a = Args {
+        file: None,
+        train: 200,
+        seed: 0,
+        json: false,
+        questions: Vec::new(),
+    };
+    for arg in options::scan(OPTIONS, args) {
+        let (spec, v) = match arg.map_err(|e| e.to_string())? {
+            Arg::Option(spec, v) => (spec, v.unwrap_or_default()),
+            Arg::Word(w) | Arg::Literal(w) if a.file.is_none() => {
+                a.file = Some(w);
+                continue;
+            }
+            Arg::Word(_) | Arg::Literal(_) => return Err("one scene file, please".into()),
+        };
+        match spec.long {
+            "train" => a.train = spec.number(&v)?,
+            "seed" => a.seed = spec.number(&v)?,
+            "why" => a.questions.push(v),
+            "outf" => a.json = spec.outf(&v)?,
+            _ => {} // --help, answered before parsing
+        }
+    }
+    Ok(a)
+}
+
 /// `lucent classify SCENE.json ...`.
 pub fn run_classify(
     args: &[String],
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
-    let (mut file, mut train, mut seed, mut json) = (None, 200usize, 0u64, false);
-    let mut questions: Vec<String> = Vec::new();
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "-h" | "--help" => {
-                write!(out, "{HELP}")?;
-                return Ok(0);
-            }
-            "--train" | "--seed" => {
-                let Some(v) = it.next().and_then(|v| v.parse::<u64>().ok()) else {
-                    return usage(err, &format!("'{a}' needs a number"));
-                };
-                if a == "--train" {
-                    train = v as usize;
-                } else {
-                    seed = v;
-                }
-            }
-            "--why" => {
-                let Some(q) = it.next() else {
-                    return usage(err, "'--why' needs a question");
-                };
-                questions.push(q.clone());
-            }
-            "--outf=2" => json = true,
-            "--outf=0" => json = false,
-            _ if a.starts_with('-') => return usage(err, &format!("unknown option '{a}'")),
-            _ if file.is_none() => file = Some(a.clone()),
-            _ => return usage(err, "one scene file, please"),
-        }
-    }
+    let Args {
+        file,
+        train,
+        seed,
+        json,
+        questions,
+    } = match super::verb_args(&VERB, args, parse, out, err)? {
+        Ok(a) => a,
+        Err(code) => return Ok(code),
+    };
     let Some(file) = file else {
-        write!(err, "{HELP}")?;
+        write!(err, "{}", VERB.help())?;
         return Ok(super::EXIT_USAGE);
     };
     let text = match std::fs::read_to_string(&file) {

@@ -16,14 +16,16 @@ use crate::action;
 use crate::base::SourceMap;
 use crate::plan::{plan, PlanConfig};
 
+use super::options::{self, opt, Arity::*, OptionSpec, Verb};
 use super::KB_FULL;
 
 /// The tabletop task of docs/domain.md 4.5 (it includes `../kb_full.ald`).
 const H1_SCENE: &str = include_str!("../../domains/ra/scenes/h1.ald");
 const TABLETOP_TASK: &str = include_str!("../../domains/ra/scenes/tabletop_task.ald");
 
-/// `lucent demo --help`.
-const HELP: &str = "\
+/// `lucent demo`'s command line; `--help` is generated from it.
+pub(super) const VERB: Verb = Verb {
+    usage: "\
 usage: lucent demo [--seed N] [--preset real|simulated] [--goal LITERAL]... [--out DIR]
                    [--perception-noise P] [--actuation-noise P]
 
@@ -36,9 +38,38 @@ the labelled camera views before and after (before.png, after.png), the run (run
 `lucent ask --run DIR/run.json`) and report.html, the whole run with a picture after every
 action, the plans in English and the answers with their proof trees, to open in a browser.
 For more control (scene files, budgets, histories) use `lucent run`.
+",
+    options: OPTIONS,
+    epilogue: ROBOT_EXIT_CODES,
+};
 
+/// The end of `lucent demo --help` and `lucent run --help`.
+pub(super) const ROBOT_EXIT_CODES: &str = "
 Exit code: 0 when the goal was reached, 20 when not, 65 for bad input, 1 for a bad command line.
 ";
+
+/// The options of `lucent demo`: `--out` and some of `lucent run`'s, which `cli::run::apply`
+/// sets.
+#[rustfmt::skip]
+const OPTIONS: &[OptionSpec] = &[
+    options::HELP,
+    opt("seed", None, Value, "N", "the scene's seed (default 3); it also seeds noise and failures", "Options"),
+    opt("preset", None, Value, "NAME", "the scene's preset: real or simulated (default real)", "Options"),
+    GOAL,
+    opt("out", None, Value, "DIR", "the folder for the pictures, run.json and report.html (default lucent-demo)", "Options"),
+    PERCEPTION_NOISE,
+    ACTUATION_NOISE,
+];
+
+/// `--goal`, shared with `lucent run`.
+#[rustfmt::skip]
+pub(super) const GOAL: OptionSpec = opt("goal", None, Value, "LITERAL", "a goal literal: on(X,Y), relation(S,X,Y) or in_hand(rob1,X); repeat for a conjunction; without it a goal is drawn (docs/domain.md 7.1)", "Options");
+/// `--perception-noise`, shared with `lucent run`.
+#[rustfmt::skip]
+pub(super) const PERCEPTION_NOISE: OptionSpec = opt("perception-noise", None, Value, "P", "probability that a perceived relation is wrong (default 0.15)", "Options");
+/// `--actuation-noise`, shared with `lucent run`.
+#[rustfmt::skip]
+pub(super) const ACTUATION_NOISE: OptionSpec = opt("actuation-noise", None, Value, "P", "probability that an action slips (default 0.15)", "Options");
 
 /// The plans of the built-in tabletop task, for builds without the simulator.
 #[cfg_attr(feature = "sim", allow(dead_code))]
@@ -79,8 +110,8 @@ fn plan_only(out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
 
 /// Runs the demo; returns the exit code.
 pub fn run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
-    if args.iter().any(|a| a == "--help" || a == "-h") {
-        write!(out, "{HELP}")?;
+    if VERB.asks_for_help(args) {
+        write!(out, "{}", VERB.help())?;
         return Ok(0);
     }
     #[cfg(feature = "sim")]
@@ -106,7 +137,8 @@ mod simulated {
     use std::path::Path;
     use std::time::Instant;
 
-    use crate::cli::run::{describe, goal_of, load_domain, RunArgs};
+    use crate::cli::options::{self, Arg};
+    use crate::cli::run::{apply, describe, goal_of, load_domain, RunArgs};
     use crate::cli::run_report::{self, Filming};
     use crate::control::Symbol;
     use crate::explain::lexicon::Lexicon;
@@ -136,32 +168,12 @@ mod simulated {
             ..RunArgs::default()
         };
         let mut dir = "lucent-demo".to_string();
-        let mut words = super::super::options::VerbArgs::new(args);
-        while let Some(w) = words.next_arg() {
-            let (arg, name) = (w.word, w.name);
-            let mut value = || words.value(&w);
-            let probability = |v: String| -> Result<f64, String> {
-                v.parse::<f64>()
-                    .ok()
-                    .filter(|p| (0.0..=1.0).contains(p))
-                    .ok_or_else(|| format!("{name} needs a probability, got `{v}`"))
-            };
-            match name {
-                "--seed" => {
-                    let v = value()?;
-                    run.seed = v
-                        .parse()
-                        .map_err(|_| format!("{name} needs a number, got `{v}`"))?;
-                }
-                "--preset" => run.preset = Some(value()?),
-                "--goal" => run.goals.push(value()?),
-                "--out" => dir = value()?,
-                "--perception-noise" => run.perception = probability(value()?)?,
-                "--actuation-noise" => run.actuation = probability(value()?)?,
-                _ => {
-                    return Err(format!(
-                        "unknown argument `{arg}` (try `lucent demo --help`)"
-                    ))
+        for arg in options::scan(super::OPTIONS, args) {
+            match arg.map_err(|e| e.to_string())? {
+                Arg::Option(spec, v) if spec.long == "out" => dir = v.unwrap_or_default(),
+                Arg::Option(spec, v) => apply(&mut run, spec, v.unwrap_or_default())?,
+                Arg::Word(w) | Arg::Literal(w) => {
+                    return Err(format!("unknown argument `{w}` (try `lucent demo --help`)"))
                 }
             }
         }

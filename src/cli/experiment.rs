@@ -17,12 +17,16 @@ use std::time::Instant;
 
 use serde_json::{json, Value};
 
+use super::learn;
+use super::options::{self, opt, Arg, Arity::*, OptionSpec, Verb};
 use crate::experiment::report::Report;
 use crate::experiment::{
     self, Context, Domain, Hypothesis, MemoryStore, Progress, Setup, Store, Trial,
 };
 
-const HELP: &str = "\
+/// `lucent experiment`'s command line; `--help` is generated from it.
+pub(super) const VERB: Verb = Verb {
+    usage: "\
 usage: lucent experiment h1|h2|h3|h4|all [OPTIONS]
        lucent experiment classify [OPTIONS]   (scene understanding; `classify --help`)
        lucent experiment trial ID --out DIR
@@ -32,31 +36,31 @@ The paper's experiments (docs/domain.md 7): H1 learning accuracy (Table 1), H2 p
 (Tables 2 and 3), H3 proof-tree checks, H4 explanation precision and recall (Tables 4 and 5).
 Trials run in parallel (rayon); every table is printed beside the paper's. A hypothesis whose
 pieces this build lacks is reported as \"not available: <reason>\".
-  --seed N             the recorded seed (default 0)
-  --runs N             H1 learning runs (default 20)
-  --configurations N   scene configurations per preset for H2-H4 (default 20)
-  --goals N            goals per configuration (default 5)
-  --episodes N         episodes per learning run (default 10)
-  --kb FILE.ald        the H1 knowledge base (default domains/ra/scenes/h1.ald)
-  --domain FILE.ald    the H2-H4 domain that generated scenes include (default
-                       domains/ra/kb_full.ald)
-  --code-balance       H1: store capped inconsistent trials with label 0 (the authors' code)
-  --code-samples       H1: take samples from every trial (the authors' code)
-  --count-every-trial  H1: end a run after 100 quiet trials of any kind (docs/domain.md 5.2 as
-                       written; by default only trials the learner would act in count)
-  --oracle kb_full|physics
-                       H1's oracle: KB_full (default) or the physics world (feature `sim`);
-                       H2 and H4 reason with the axioms learned against it
-  --out DIR            keep one result file per trial in DIR/results (a rerun reuses them) and
-                       write DIR/report.md, DIR/report.json and the SVG plots
-  --emit-jobs FILE     with --out: write one `lucent experiment trial ID --out DIR` line per trial
-                       to FILE (for `parallel < FILE` or a Slurm array) and run nothing; then
-                       `lucent experiment merge DIR` makes the report
-  --outf=0|2           0: the markdown report (default); 2: JSON, one key per hypothesis
-  --no-classify        `all` without the classification experiment (which `all` otherwise
-                       runs after H1-H4, with --seed and --runs, writing DIR/classify.md; with
-                       --outf=2 it prints a second JSON document, the classification result)
-";
+",
+    options: OPTIONS,
+    epilogue: "",
+};
+
+/// The options of `lucent experiment`, the learner's shared with `lucent learn`.
+#[rustfmt::skip]
+const OPTIONS: &[OptionSpec] = &[
+    options::HELP,
+    learn::SEED,
+    opt("runs", None, Value, "N", "H1 learning runs (default 20)", "Options"),
+    opt("configurations", None, Value, "N", "scene configurations per preset for H2-H4 (default 20)", "Options"),
+    opt("goals", None, Value, "N", "goals per configuration (default 5)", "Options"),
+    learn::EPISODES,
+    learn::KB,
+    opt("domain", None, Value, "FILE.ald", "the H2-H4 domain that generated scenes include (default domains/ra/kb_full.ald)", "Options"),
+    learn::CODE_BALANCE,
+    learn::CODE_SAMPLES,
+    learn::COUNT_EVERY_TRIAL,
+    learn::ORACLE,
+    opt("out", None, Value, "DIR", "keep one result file per trial in DIR/results (a rerun reuses them) and write DIR/report.md, DIR/report.json and the SVG plots", "Options"),
+    opt("emit-jobs", None, Value, "FILE", "with --out: write one `lucent experiment trial ID --out DIR` line per trial to FILE (for `parallel < FILE` or a Slurm array) and run nothing; then `lucent experiment merge DIR` makes the report", "Options"),
+    opt("outf", None, Value, "N", "0: the markdown report (default); 2: JSON, one key per hypothesis", "Options"),
+    opt("no-classify", None, Flag, "", "`all` without the classification experiment (which `all` otherwise runs after H1-H4, with --seed and --runs, writing DIR/classify.md; with --outf=2 it prints a second JSON document, the classification result)", "Options"),
+];
 
 /// The parsed command line.
 struct Args {
@@ -113,38 +117,31 @@ fn parse(args: &[String]) -> Result<(Args, Vec<String>), String> {
         no_classify: false,
     };
     let mut positional = Vec::new();
-    let mut words = super::options::VerbArgs::new(args);
-    while let Some(w) = words.next_arg() {
-        let (a, name) = (w.word, w.name);
-        let mut value = || words.value(&w);
-        let number = |v: String| super::options::number(name, &v);
-        match name {
-            "--seed" => out.setup.seed = number(value()?)?,
-            "--runs" => out.setup.runs = number(value()?)? as usize,
-            "--configurations" => out.setup.configurations = number(value()?)? as usize,
-            "--goals" => out.setup.goals = number(value()?)? as usize,
-            "--episodes" => out.setup.episodes = number(value()?)? as usize,
-            "--kb" => out.kb = value()?,
-            "--domain" => out.domain = value()?,
-            "--code-balance" => out.setup.code_balance = true,
-            "--code-samples" => out.setup.code_samples = true,
-            "--count-every-trial" => out.setup.count_every_trial = true,
-            "--oracle" => {
-                let v = value()?;
-                out.setup.oracle = crate::learn::h1::Oracle::parse(&v)
-                    .ok_or_else(|| format!("'--oracle {v}': expected kb_full or physics"))?;
-                out.setup.oracle.availability()?;
+    for arg in options::scan(OPTIONS, args) {
+        let (spec, v) = match arg.map_err(|e| e.to_string())? {
+            Arg::Option(spec, v) => (spec, v.unwrap_or_default()),
+            Arg::Word(w) | Arg::Literal(w) => {
+                positional.push(w);
+                continue;
             }
-            "--out" => out.out = Some(PathBuf::from(value()?)),
-            "--no-classify" => out.no_classify = true,
-            "--emit-jobs" => out.emit_jobs = Some(PathBuf::from(value()?)),
-            "--outf" => match value()?.as_str() {
-                "0" => out.json = false,
-                "2" => out.json = true,
-                v => return Err(format!("'--outf={v}': expected 0 or 2")),
-            },
-            _ if a.starts_with('-') && a.len() > 1 => return Err(format!("unknown option '{a}'")),
-            _ => positional.push(a.to_string()),
+        };
+        match spec.long {
+            "seed" => out.setup.seed = spec.number(&v)?,
+            "runs" => out.setup.runs = spec.number(&v)?,
+            "configurations" => out.setup.configurations = spec.number(&v)?,
+            "goals" => out.setup.goals = spec.number(&v)?,
+            "episodes" => out.setup.episodes = spec.number(&v)?,
+            "kb" => out.kb = v,
+            "domain" => out.domain = v,
+            "code-balance" => out.setup.code_balance = true,
+            "code-samples" => out.setup.code_samples = true,
+            "count-every-trial" => out.setup.count_every_trial = true,
+            "oracle" => out.setup.oracle = learn::oracle(spec, &v)?,
+            "out" => out.out = Some(PathBuf::from(v)),
+            "no-classify" => out.no_classify = true,
+            "emit-jobs" => out.emit_jobs = Some(PathBuf::from(v)),
+            "outf" => out.json = spec.outf(&v)?,
+            _ => {} // --help, answered before parsing
         }
     }
     Ok((out, positional))
@@ -217,8 +214,8 @@ pub fn run_experiment(
     if args.first().map(String::as_str) == Some("classify") {
         return super::classify::run_experiment(&args[1..], out, err);
     }
-    if args.is_empty() || args.iter().any(|a| a == "--help" || a == "-h") {
-        write!(out, "{HELP}")?;
+    if args.is_empty() || VERB.asks_for_help(args) {
+        write!(out, "{}", VERB.help())?;
         return Ok(if args.is_empty() {
             super::EXIT_USAGE
         } else {

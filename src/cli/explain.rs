@@ -45,8 +45,11 @@ use crate::explain::questions::{answer, Answer, AnswerError, Mode, Session};
 use crate::explain::verbalize::Verbalizer;
 use crate::plan::{plan, PlanConfig};
 
-/// `lucent explain --help`.
-const HELP: &str = "\
+use super::options::{self, opt, Arg, Arity::*, OptionSpec, Verb};
+
+/// The command line of `lucent explain` and `lucent ask`; `--help` is generated from it.
+pub(super) const VERB: Verb = Verb {
+    usage: "\
 usage: lucent explain SCENE.ald... [--happened PLAN] [--goal LITERALS] -q QUESTION [options]
        lucent explain PROGRAM.lp (--why ATOM | --why-not ATOM) [options]
        lucent ask SCENE.ald... [--happened PLAN] [--goal LITERALS] [options]
@@ -65,20 +68,29 @@ not be), which the answers name. With --why/--why-not, explains an atom of the f
 of any clingo program. In `ask`, `history` lists the questions asked so far, `!N` asks question
 N again, `!!` the last one; an empty line or `quit` ends the session. On a terminal the
 line can be edited, and the up and down keys recall earlier questions.
+",
+    options: OPTIONS,
+    epilogue: "",
+};
 
-Options:
-  -q, --question TEXT   the question (explain)
-  --happened PLAN       the executed actions, in step order
-  --run FILE            a run saved by `lucent run` (JSON) instead of a scene
-  --goal LITERALS       a goal (AL_d literals, `relation(on, a, b), in_hand(rob1, c)`)
-  --profile NAME        the description's profile
-  -c NAME=VALUE         a switch of the description (or a constant of a clingo program)
-  --max-horizon H       the planner's horizon budget (default 10)
-  --full                full mode: every reason, not only the first
-  --outf=2              JSON: {\"type\", \"answer\", \"literals\", \"tree\"}
-  --dot FILE            the proof tree as Graphviz DOT
-  --svg FILE            the proof tree as SVG
-";
+/// The options of `lucent explain` and `lucent ask`.
+#[rustfmt::skip]
+const OPTIONS: &[OptionSpec] = &[
+    options::HELP,
+    opt("question", Some('q'), Value, "TEXT", "the question (explain)", "Options"),
+    opt("happened", None, Value, "PLAN", "the executed actions, in step order", "Options"),
+    opt("run", None, Value, "FILE", "a run saved by `lucent run` (JSON) instead of a scene", "Options"),
+    opt("goal", None, Value, "LITERALS", "a goal (AL_d literals, `relation(on, a, b), in_hand(rob1, c)`)", "Options"),
+    opt("profile", None, Value, "NAME", "the description's profile", "Options"),
+    opt("const", Some('c'), Value, "NAME=VALUE", "a switch of the description (or a constant of a clingo program)", "Options"),
+    opt("max-horizon", None, Value, "H", "the planner's horizon budget (default 10)", "Options"),
+    opt("full", None, Flag, "", "full mode: every reason, not only the first", "Options"),
+    opt("outf", None, Value, "N", "0: English (default); 2: JSON {\"type\", \"answer\", \"literals\", \"tree\"}", "Options"),
+    opt("dot", None, Value, "FILE", "the proof tree as Graphviz DOT", "Options"),
+    opt("svg", None, Value, "FILE", "the proof tree as SVG", "Options"),
+    opt("why", None, Value, "ATOM", "the proof of ATOM in the first answer set of a clingo program", "Options"),
+    opt("why-not", None, Value, "ATOM", "why ATOM is false in the first answer set of a clingo program: the rules that could derive it, each blocked", "Options"),
+];
 
 /// The parsed command line.
 #[derive(Default)]
@@ -111,53 +123,29 @@ fn usage(err: &mut dyn Write, verb: &str, msg: &str) -> std::io::Result<i32> {
 
 fn parse_args(args: &[String]) -> Result<Args, String> {
     let mut a = Args::default();
-    let mut words = super::options::VerbArgs::new(args);
-    while let Some(w) = words.next_arg() {
-        let (arg, name) = (w.word, w.name);
-        let mut value = || words.value(&w);
-        match name {
-            "-q" | "--question" => a.question = Some(value()?),
-            "--happened" => a.happened = Some(value()?),
-            "--run" => a.run = Some(value()?),
-            "--goal" => a.goal = Some(value()?),
-            "--profile" => a.profile = Some(value()?),
-            "--max-horizon" => {
-                let v = value()?;
-                a.max_horizon = Some(
-                    v.parse()
-                        .map_err(|_| format!("'--max-horizon {v}': expected a number"))?,
-                );
+    for arg in options::scan(OPTIONS, args) {
+        let (spec, v) = match arg.map_err(|e| e.to_string())? {
+            Arg::Option(spec, v) => (spec, v.unwrap_or_default()),
+            Arg::Word(w) | Arg::Literal(w) => {
+                a.files.push(w);
+                continue;
             }
-            "--full" => a.full = true,
-            "--outf" => match value()?.as_str() {
-                "2" => a.json = true,
-                "0" => a.json = false,
-                v => return Err(format!("'--outf={v}': expected 0 or 2")),
-            },
-            "--dot" => a.dot = Some(value()?),
-            "--svg" => a.svg = Some(value()?),
-            "--why" => a.why = Some(value()?),
-            "--why-not" => a.why_not = Some(value()?),
-            "-c" => {
-                let v = value()?;
-                let (n, v) = v
-                    .split_once('=')
-                    .ok_or_else(|| format!("'-c {v}': expected -c NAME=VALUE"))?;
-                a.overrides
-                    .push((n.trim().to_string(), v.trim().to_string()));
-            }
-            _ if arg.starts_with("-c") && arg.len() > 2 => {
-                let v = &arg[2..];
-                let (n, v) = v
-                    .split_once('=')
-                    .ok_or_else(|| format!("'{arg}': expected -c NAME=VALUE"))?;
-                a.overrides
-                    .push((n.trim().to_string(), v.trim().to_string()));
-            }
-            _ if arg.starts_with('-') && arg != "-" => {
-                return Err(format!("'{arg}': unknown option"));
-            }
-            _ => a.files.push(arg.to_string()),
+        };
+        match spec.long {
+            "question" => a.question = Some(v),
+            "happened" => a.happened = Some(v),
+            "run" => a.run = Some(v),
+            "goal" => a.goal = Some(v),
+            "profile" => a.profile = Some(v),
+            "max-horizon" => a.max_horizon = Some(spec.number(&v)?),
+            "full" => a.full = true,
+            "outf" => a.json = spec.outf(&v)?,
+            "dot" => a.dot = Some(v),
+            "svg" => a.svg = Some(v),
+            "why" => a.why = Some(v),
+            "why-not" => a.why_not = Some(v),
+            "const" => a.overrides.push(spec.assignment(&v)?),
+            _ => {} // --help, answered before parsing
         }
     }
     Ok(a)
@@ -173,8 +161,8 @@ fn parse_verb_args(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<Result<Args, i32>> {
-    if args.iter().any(|a| a == "--help" || a == "-h") {
-        write!(out, "{HELP}")?;
+    if VERB.asks_for_help(args) {
+        write!(out, "{}", VERB.help())?;
         return Ok(Err(0));
     }
     let a = match parse_args(args) {

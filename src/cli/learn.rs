@@ -14,7 +14,11 @@ use crate::learn::episode::LearnConfig;
 use crate::learn::h1;
 use crate::learn::kb::KbSpec;
 
-const HELP_LEARN: &str = "\
+use super::options::{self, opt, Arg, Arity::*, OptionSpec, Verb};
+
+/// `lucent learn`'s command line; `--help` is generated from it.
+pub(super) const VERB: Verb = Verb {
+    usage: "\
 usage: lucent learn [--kb FILE.ald] [--seed N] [--run I] [--episodes N] [-o FILE] [--tables DIR]
                     [--oracle kb_full|physics] [--outf=0|2]
 
@@ -22,18 +26,58 @@ One axiom-learning run (docs/domain.md section 5): random one-step trials agains
 (KB_full with the learner's switches), a learner knowledge base with the `learner` profile,
 and after each surprise a 100-tree ensemble whose kept axioms join the learner at once.
 Prints what was learned, when and from which surprise; -o writes the learned axioms as an
-AL_d file with their strengths. --kb defaults to domains/ra/scenes/h1.ald. --run I is run I
-of `lucent experiment h1 --seed N` (default 0).
-  --code-balance   store capped inconsistent trials with label 0, as the authors' code does
-  --code-samples   take samples from every trial, as the authors' code does
-  --tables DIR     write each episode's feature table (the lifted samples the trees were
-                   trained on) to DIR/episode-N.csv: one column per feature, then the label
-  --count-every-trial  end the run after 100 quiet trials of any kind (docs/domain.md 5.2 as
-                   written); by default only trials whose action the learner takes to be
-                   executable count
-  --oracle kb_full|physics  the oracle: KB_full (default) or the physics world (feature
-                   `sim`), as `lucent experiment h1 --oracle` runs it
-";
+AL_d file with their strengths.
+",
+    options: OPTIONS,
+    epilogue: "",
+};
+
+/// The options of `lucent learn`; `lucent experiment` shares the learner's rows.
+#[rustfmt::skip]
+const OPTIONS: &[OptionSpec] = &[
+    options::HELP,
+    KB,
+    SEED,
+    opt("run", None, Value, "I", "run I of `lucent experiment h1 --seed N` (default 0)", "Options"),
+    EPISODES,
+    opt("output", Some('o'), Value, "FILE", "write the learned axioms as an AL_d file with their strengths", "Options"),
+    opt("tables", None, Value, "DIR", "write each episode's feature table (the lifted samples the trees were trained on) to DIR/episode-N.csv: one column per feature, then the label", "Options"),
+    CODE_BALANCE,
+    CODE_SAMPLES,
+    COUNT_EVERY_TRIAL,
+    ORACLE,
+    opt("outf", None, Value, "N", "0: text (default); 2: JSON", "Options"),
+];
+
+/// `--kb`, shared with `lucent experiment`.
+#[rustfmt::skip]
+pub(super) const KB: OptionSpec = opt("kb", None, Value, "FILE.ald", "the learner's knowledge base, H1's (default domains/ra/scenes/h1.ald)", "Options");
+/// `--seed`, shared with `lucent experiment`.
+#[rustfmt::skip]
+pub(super) const SEED: OptionSpec = opt("seed", None, Value, "N", "the recorded seed (default 0)", "Options");
+/// `--episodes`, shared with `lucent experiment`.
+#[rustfmt::skip]
+pub(super) const EPISODES: OptionSpec = opt("episodes", None, Value, "N", "episodes per learning run (default 10)", "Options");
+/// `--code-balance`, shared with `lucent experiment`.
+#[rustfmt::skip]
+pub(super) const CODE_BALANCE: OptionSpec = opt("code-balance", None, Flag, "", "H1: store capped inconsistent trials with label 0, as the authors' code does", "Options");
+/// `--code-samples`, shared with `lucent experiment`.
+#[rustfmt::skip]
+pub(super) const CODE_SAMPLES: OptionSpec = opt("code-samples", None, Flag, "", "H1: take samples from every trial, as the authors' code does", "Options");
+/// `--count-every-trial`, shared with `lucent experiment`.
+#[rustfmt::skip]
+pub(super) const COUNT_EVERY_TRIAL: OptionSpec = opt("count-every-trial", None, Flag, "", "H1: end a run after 100 quiet trials of any kind (docs/domain.md 5.2 as written); by default only trials whose action the learner takes to be executable count", "Options");
+/// `--oracle`, shared with `lucent experiment`.
+#[rustfmt::skip]
+pub(super) const ORACLE: OptionSpec = opt("oracle", None, Value, "NAME", "H1's oracle: kb_full (default) or physics, the physics world (feature `sim`); `lucent experiment` reasons in H2 and H4 with the axioms learned against it", "Options");
+
+/// The oracle `--oracle` names, if this build has it.
+pub(super) fn oracle(spec: &OptionSpec, name: &str) -> Result<h1::Oracle, String> {
+    let oracle = h1::Oracle::parse(name)
+        .ok_or_else(|| format!("'{} {name}': expected kb_full or physics", spec.spelled()))?;
+    oracle.availability()?;
+    Ok(oracle)
+}
 
 struct Args {
     kb: String,
@@ -47,7 +91,6 @@ struct Args {
     code_samples: bool,
     count_every_trial: bool,
     oracle: h1::Oracle,
-    help: bool,
 }
 
 fn parse(args: &[String]) -> Result<Args, String> {
@@ -63,32 +106,25 @@ fn parse(args: &[String]) -> Result<Args, String> {
         code_samples: false,
         count_every_trial: false,
         oracle: h1::Oracle::KbFull,
-        help: false,
     };
-    let mut words = super::options::VerbArgs::new(args);
-    while let Some(w) = words.next_arg() {
-        let (a, name) = (w.word, w.name);
-        let mut value = || words.value(&w);
-        let number = |v: String| super::options::number(name, &v);
-        match name {
-            "--help" | "-h" => out.help = true,
-            "--kb" => out.kb = value()?,
-            "--seed" => out.seed = number(value()?)?,
-            "--run" => out.run = number(value()?)? as usize,
-            "--episodes" => out.episodes = Some(number(value()?)? as usize),
-            "-o" | "--output" => out.output = Some(value()?),
-            "--tables" => out.tables = Some(value()?),
-            "--outf" => out.json = value()? == "2",
-            "--code-balance" => out.code_balance = true,
-            "--code-samples" => out.code_samples = true,
-            "--count-every-trial" => out.count_every_trial = true,
-            "--oracle" => {
-                let name = value()?;
-                out.oracle = h1::Oracle::parse(&name)
-                    .ok_or_else(|| format!("unknown oracle '{name}' (kb_full or physics)"))?;
-                out.oracle.availability()?;
-            }
-            _ => return Err(format!("unknown option '{a}'")),
+    for arg in options::scan(OPTIONS, args) {
+        let (spec, v) = match arg.map_err(|e| e.to_string())? {
+            Arg::Option(spec, v) => (spec, v.unwrap_or_default()),
+            Arg::Word(w) | Arg::Literal(w) => return Err(format!("unknown argument '{w}'")),
+        };
+        match spec.long {
+            "kb" => out.kb = v,
+            "seed" => out.seed = spec.number(&v)?,
+            "run" => out.run = spec.number(&v)?,
+            "episodes" => out.episodes = Some(spec.number(&v)?),
+            "output" => out.output = Some(v),
+            "tables" => out.tables = Some(v),
+            "outf" => out.json = v == "2",
+            "code-balance" => out.code_balance = true,
+            "code-samples" => out.code_samples = true,
+            "count-every-trial" => out.count_every_trial = true,
+            "oracle" => out.oracle = oracle(spec, &v)?,
+            _ => {} // --help, answered before parsing
         }
     }
     Ok(out)
@@ -138,7 +174,7 @@ pub fn run_learn(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<i32> {
-    let args = match super::verb_args(parse(args), |a| a.help, HELP_LEARN, out, err)? {
+    let args = match super::verb_args(&VERB, args, parse, out, err)? {
         Ok(a) => a,
         Err(code) => return Ok(code),
     };

@@ -183,28 +183,28 @@ fn run_io(args: &[String], io: &mut Io) -> std::io::Result<i32> {
     run_pipeline(&options, io)
 }
 
-/// The front of a verb (`learn`, `run`): its parsed arguments, or `Err(code)` once it has
-/// printed the usage error (exit code [`EXIT_USAGE`]) or, when `help` says the arguments ask for
-/// it, `help_text` (exit code 0).
+/// The front of a verb: its help (exit code 0) when the command line asks for it
+/// ([`options::Verb::asks_for_help`]), else what `parse` makes of the command line, or
+/// `Err(code)` once the usage error is printed as `*** ERROR: (lucent): ...` (exit code
+/// [`EXIT_USAGE`]).
 pub(crate) fn verb_args<A>(
-    parsed: Result<A, String>,
-    help: impl Fn(&A) -> bool,
-    help_text: &str,
+    verb: &options::Verb,
+    args: &[String],
+    parse: impl FnOnce(&[String]) -> Result<A, String>,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> std::io::Result<Result<A, i32>> {
-    let args = match parsed {
-        Ok(a) => a,
-        Err(e) => {
-            writeln!(err, "*** ERROR: (lucent): {e}")?;
-            return Ok(Err(EXIT_USAGE));
-        }
-    };
-    if help(&args) {
-        write!(out, "{help_text}")?;
+    if verb.asks_for_help(args) {
+        write!(out, "{}", verb.help())?;
         return Ok(Err(0));
     }
-    Ok(Ok(args))
+    match parse(args) {
+        Ok(a) => Ok(Ok(a)),
+        Err(e) => {
+            writeln!(err, "*** ERROR: (lucent): {e}")?;
+            Ok(Err(EXIT_USAGE))
+        }
+    }
 }
 
 /// Prints a report: `value` as pretty JSON with `json`, else `markdown`; shared by `classify`
@@ -273,10 +273,9 @@ fn flush_diagnostics(io: &mut Io, diags: &Diagnostics, sources: &SourceMap) -> s
 /// text.
 fn dialect_of(options: &Options, name: &str, text: &str) -> Dialect {
     match options.dialect {
-        options::DialectChoice::Clingo => Dialect::Clingo,
-        options::DialectChoice::Sparc => Dialect::Sparc,
-        options::DialectChoice::Auto if name.ends_with(".sp") => Dialect::Sparc,
-        options::DialectChoice::Auto => crate::syntax::detect_dialect(text),
+        Some(dialect) => dialect,
+        None if name.ends_with(".sp") => Dialect::Sparc,
+        None => crate::syntax::detect_dialect(text),
     }
 }
 
@@ -310,19 +309,10 @@ fn solve_config(
     program: &GroundProgram,
     deadline: Option<Instant>,
 ) -> solve::Config {
-    let opt_mode = match options.opt_mode {
-        options::OptMode::Opt => solve::OptMode::Opt,
-        options::OptMode::OptN => solve::OptMode::OptN,
-        options::OptMode::Enum => solve::OptMode::Enum(options.opt_bounds.clone()),
-        options::OptMode::Ignore => solve::OptMode::Ignore,
-    };
     let optimizing = !program.minimize.is_empty()
-        && matches!(opt_mode, solve::OptMode::Opt | solve::OptMode::OptN);
+        && matches!(options.opt_mode, solve::OptMode::Opt | solve::OptMode::OptN);
     // clingo: with optimization, and for consequences, the default is to search until the end.
-    let consequences = matches!(
-        options.enum_mode,
-        options::EnumMode::Brave | options::EnumMode::Cautious
-    );
+    let consequences = options.enum_mode != solve::EnumMode::Auto;
     let models = if !options.models_given && (optimizing || consequences) {
         0
     } else {
@@ -330,21 +320,14 @@ fn solve_config(
     };
     solve::Config {
         models,
-        opt_mode,
-        enum_mode: match options.enum_mode {
-            options::EnumMode::Brave => solve::EnumMode::Brave,
-            options::EnumMode::Cautious => solve::EnumMode::Cautious,
-            _ => solve::EnumMode::Auto,
-        },
-        cr_mode: match options.cr {
-            options::CrMode::Cardinality => solve::CrMode::Cardinality,
-            options::CrMode::Subset => solve::CrMode::Subset,
-        },
+        opt_mode: options.opt_mode.clone(),
+        enum_mode: options.enum_mode,
+        cr_mode: options.cr,
         project: options.project,
         deadline,
         seed: options.seed,
         random_freq_permille: options.rand_freq_permille,
-        domain_heuristic: options.domain_heuristic,
+        heuristic: options.heuristic,
         check_models: options.check,
         threads: options.threads as usize,
         ..solve::Config::default()
@@ -742,6 +725,48 @@ fn run_clasp_mode(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_verb_table_is_well_formed_and_its_help_lists_it() {
+        let mut verbs: Vec<(&str, &options::Verb)> = vec![
+            ("plan", &plan::VERB),
+            ("translate", &action::VERB),
+            ("learn", &learn::VERB),
+            ("explain", &explain::VERB),
+            ("experiment", &experiment::VERB),
+            ("demo", &demo::VERB),
+        ];
+        #[cfg(feature = "sim")]
+        verbs.extend([
+            ("run", &run::VERB),
+            ("sim", &sim::VERB),
+            ("classify", &classify::VERB),
+            ("experiment classify", &classify::EXPERIMENT_VERB),
+        ]);
+        for (name, verb) in verbs {
+            let help = verb.help();
+            assert!(verb.options.contains(&options::HELP), "{name}");
+            for (i, spec) in verb.options.iter().enumerate() {
+                assert!(
+                    help.contains(&format!("--{}", spec.long)),
+                    "{name}: {spec:?}"
+                );
+                let earlier = &verb.options[..i];
+                assert!(
+                    earlier
+                        .iter()
+                        .all(|o| o.long != spec.long
+                            && (spec.short.is_none() || o.short != spec.short)),
+                    "{name}: {} twice",
+                    spec.long
+                );
+            }
+            for words in [&["--help"][..], &["x", "--hel"], &["-h", "--bogus"]] {
+                let words: Vec<String> = words.iter().map(|w| w.to_string()).collect();
+                assert!(verb.asks_for_help(&words), "{name}: {words:?}");
+            }
+        }
+    }
 
     fn run_str(args: &str, stdin: &str) -> (i32, String, String) {
         let args: Vec<String> = args.split_whitespace().map(str::to_string).collect();

@@ -1,11 +1,18 @@
-//! The clingo-compatible option table and its parser.
+//! The option tables and their one parser: clingo mode's table ([`OPTIONS`]) with the
+//! [`Options`] it fills, the [`OptionSpec`] kind every verb's table is made of, [`scan`] that
+//! reads any table, and [`Verb`], a verb's table with the text around its generated `--help`.
 //!
-//! Invariants: one declarative table ([`OPTIONS`]) drives both parsing and `--help` (CaDiCaL's
-//! `options.hpp` habit), so an option cannot be accepted without being documented. Parsing is
-//! pure: it never reads files or prints; errors are [`UsageError`] values that the caller turns
-//! into clingo's `*** ERROR: (lucent): ...` lines and exit code 1.
+//! Invariants: a declarative table drives both parsing and `--help` for clingo mode and for each
+//! verb (CaDiCaL's `options.hpp` habit), so an option cannot be accepted without being
+//! documented; every table is read by [`scan`] with the same rules (long names or unambiguous
+//! prefixes, `--name=v`, `--name v`, `-nv`, `--` ends the options). Parsing is pure: it never
+//! reads files or prints; errors are [`UsageError`] values (or, for a verb's values, messages)
+//! that the caller turns into clingo's `*** ERROR: (lucent): ...` lines and exit code 1. Mode
+//! names are parsed by the library types they select (`solve::OptMode::from_name`, ...).
 
 use crate::base::WarningKind;
+use crate::solve::{CrMode, EnumMode, Heuristic, OptMode};
+use crate::syntax::ast::Dialect;
 
 /// Whether an option takes a value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -19,7 +26,7 @@ pub enum Arity {
 }
 
 /// One row of the option table.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct OptionSpec {
     /// Long name without dashes.
     pub long: &'static str,
@@ -35,7 +42,7 @@ pub struct OptionSpec {
     pub group: &'static str,
 }
 
-const fn opt(
+pub const fn opt(
     long: &'static str,
     short: Option<char>,
     arity: Arity,
@@ -108,58 +115,6 @@ pub enum GroundFormat {
     Text,
 }
 
-/// Input dialect selection.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum DialectChoice {
-    /// SPARC for `.sp` files, clingo otherwise.
-    #[default]
-    Auto,
-    /// The clingo dialect.
-    Clingo,
-    /// SPARC.
-    Sparc,
-}
-
-/// `--opt-mode`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum OptMode {
-    /// Find and prove an optimum, printing improving models.
-    #[default]
-    Opt,
-    /// Find the optimum, then enumerate all optimal models.
-    OptN,
-    /// Enumerate models, optionally those within the bound.
-    Enum,
-    /// Ignore optimize statements.
-    Ignore,
-}
-
-/// `--enum-mode`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum EnumMode {
-    /// The solver's choice.
-    #[default]
-    Auto,
-    /// Backtracking enumeration.
-    Backtrack,
-    /// Enumeration by recording solution nogoods.
-    Record,
-    /// Brave consequences (union of all models).
-    Brave,
-    /// Cautious consequences (intersection of all models).
-    Cautious,
-}
-
-/// `--cr`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum CrMode {
-    /// Minimal number of applied CR rules (SPARC's semantics).
-    #[default]
-    Cardinality,
-    /// Subset-minimal applied CR rules, respecting `prefer/2` (crmodels2's semantics).
-    Subset,
-}
-
 /// `--outf`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum OutputFormat {
@@ -179,8 +134,8 @@ pub struct Options {
     pub mode: Mode,
     /// Ground program format in gringo mode.
     pub ground_format: GroundFormat,
-    /// Input language.
-    pub dialect: DialectChoice,
+    /// Input language; `None` is SPARC for `.sp` files, else detected from the text.
+    pub dialect: Option<Dialect>,
     /// Number of models to compute, 0 for all.
     pub models: u64,
     /// Whether `-n` was given explicitly (optimization changes the default to all).
@@ -197,10 +152,8 @@ pub struct Options {
     pub message_limit: usize,
     /// Show provenance comments in text output.
     pub provenance: bool,
-    /// Optimization mode.
+    /// Optimization mode, with the bounds of `--opt-mode=enum,b1,b2`.
     pub opt_mode: OptMode,
-    /// Bounds given with `--opt-mode=...,b1,b2`.
-    pub opt_bounds: Vec<i64>,
     /// Enumeration mode.
     pub enum_mode: EnumMode,
     /// Projection requested.
@@ -215,8 +168,8 @@ pub struct Options {
     pub seed: u64,
     /// Probability of a random decision, in 1/1000 (`--rand-freq`).
     pub rand_freq_permille: u32,
-    /// `--heuristic=domain`: follow `#heuristic` statements.
-    pub domain_heuristic: bool,
+    /// The decision heuristic.
+    pub heuristic: Heuristic,
     /// Check every model independently.
     pub check: bool,
     /// Output format.
@@ -239,7 +192,7 @@ impl Default for Options {
             files: Vec::new(),
             mode: Mode::Clingo,
             ground_format: GroundFormat::Aspif,
-            dialect: DialectChoice::Auto,
+            dialect: None,
             models: 1,
             models_given: false,
             consts: Vec::new(),
@@ -249,7 +202,6 @@ impl Default for Options {
             message_limit: 20,
             provenance: false,
             opt_mode: OptMode::Opt,
-            opt_bounds: Vec::new(),
             enum_mode: EnumMode::Auto,
             project: false,
             cr: CrMode::Cardinality,
@@ -257,7 +209,7 @@ impl Default for Options {
             threads: 1,
             seed: 1,
             rand_freq_permille: 0,
-            domain_heuristic: false,
+            heuristic: Heuristic::Vsids,
             check: false,
             outf: OutputFormat::Text,
             quiet: [0, 0, 0],
@@ -292,64 +244,261 @@ pub enum UsageError {
     },
 }
 
-/// Scans the command line of a verb (`lucent explain`, `ask`, `run`, `learn`, `experiment`):
-/// word by word, an option word `--name=value` (or `-n=value`) split into its name and inline
-/// value; [`VerbArgs::value`] takes an option's value, inline or else the next word. The verbs
-/// keep their own option tables; the scanning and its error are shared. A missing value is
-/// clingo's usage error (`SyntaxError: 'name' requires a value!`, as [`UsageError`] words it).
-pub struct VerbArgs<'a> {
+/// One piece of a command line, as [`scan`] reads it against an option table.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Arg {
+    /// An option of the table with its value: inline (`--name=v`, `-nv`, `-n=v`) or, for
+    /// [`Arity::Value`], the next word; `None` for a flag or an optional value not given.
+    Option(&'static OptionSpec, Option<String>),
+    /// A word that is no option: a file, a subcommand, `-`.
+    Word(String),
+    /// A word after `--`, which is never an option.
+    Literal(String),
+}
+
+/// The one parser of every option table (clingo mode's [`OPTIONS`] and each verb's): the
+/// command line word by word, an [`Arg`] each, in order. Long options are matched exactly or by
+/// an unambiguous prefix (as clingo does), short ones by their letter; an option not in the
+/// table, a missing value and a flag given a value are [`UsageError`]s, after which the caller
+/// stops.
+pub fn scan<'a>(table: &'static [OptionSpec], args: &'a [String]) -> Scan<'a> {
+    Scan {
+        table,
+        args,
+        next: 0,
+        only_words: false,
+    }
+}
+
+/// The iterator [`scan`] returns.
+pub struct Scan<'a> {
+    table: &'static [OptionSpec],
     args: &'a [String],
     next: usize,
+    only_words: bool,
 }
 
-/// One word of a verb's command line.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct VerbArg<'a> {
-    /// The word as given.
-    pub word: &'a str,
-    /// The option's name (`--goal` of `--goal=on(a,b)`); the whole word when it has no inline
-    /// value.
-    pub name: &'a str,
-    /// The value after `=` in an option word.
-    pub inline: Option<&'a str>,
-}
+impl Iterator for Scan<'_> {
+    type Item = Result<Arg, UsageError>;
 
-impl<'a> VerbArgs<'a> {
-    /// A scanner over a verb's arguments (the words after the verb).
-    pub fn new(args: &'a [String]) -> Self {
-        VerbArgs { args, next: 0 }
-    }
-
-    /// The next word, `None` after the last.
-    pub fn next_arg(&mut self) -> Option<VerbArg<'a>> {
-        let word = self.args.get(self.next)?.as_str();
+    fn next(&mut self) -> Option<Self::Item> {
+        let arg = self.args.get(self.next)?;
         self.next += 1;
-        let (name, inline) = match word.split_once('=') {
-            Some((n, v)) if n.starts_with('-') => (n, Some(v)),
-            _ => (word, None),
-        };
-        Some(VerbArg { word, name, inline })
-    }
-
-    /// The value of the option `arg` (the word [`VerbArgs::next_arg`] returned last): its
-    /// inline value, or else the next word, which is then consumed.
-    pub fn value(&mut self, arg: &VerbArg<'_>) -> Result<String, String> {
-        if let Some(v) = arg.inline {
-            return Ok(v.to_string());
+        if self.only_words {
+            return Some(Ok(Arg::Literal(arg.clone())));
         }
-        let v = self.args.get(self.next).cloned().ok_or_else(|| {
-            UsageError::MissingValue(arg.name.trim_start_matches('-').to_string()).to_string()
-        })?;
-        self.next += 1;
-        Ok(v)
+        if arg == "--" {
+            self.only_words = true;
+            return self.next();
+        }
+        if arg == "-" || !arg.starts_with('-') {
+            return Some(Ok(Arg::Word(arg.clone())));
+        }
+        Some(self.option(arg))
     }
 }
 
-/// The number a verb's option `name` was given as `v`, or the verbs' error
-/// (`'--seed': 'x' is not a number`).
-pub fn number(name: &str, v: &str) -> Result<u64, String> {
-    v.parse::<u64>()
-        .map_err(|_| format!("'{name}': '{v}' is not a number"))
+impl Scan<'_> {
+    /// The option word `arg` with its value.
+    fn option(&mut self, arg: &str) -> Result<Arg, UsageError> {
+        let (spec, inline_value, shown) = if let Some(rest) = arg.strip_prefix("--") {
+            let (name, value) = match rest.split_once('=') {
+                Some((n, v)) => (n, Some(v.to_string())),
+                None => (rest, None),
+            };
+            let spec =
+                find_long(self.table, name).ok_or_else(|| UsageError::Unknown(name.to_string()))?;
+            (spec, value, name.to_string())
+        } else {
+            let mut chars = arg[1..].chars();
+            let c = chars.next().unwrap_or('-');
+            let spec = self
+                .table
+                .iter()
+                .find(|o| o.short == Some(c))
+                .ok_or_else(|| UsageError::Unknown(arg.to_string()))?;
+            let rest: String = chars.collect();
+            let value = (!rest.is_empty()).then(|| rest.trim_start_matches('=').to_string());
+            (spec, value, c.to_string())
+        };
+        let value = match (spec.arity, inline_value) {
+            (Flag, Some(_)) => return Err(UsageError::UnexpectedValue(shown)),
+            (Flag, None) => None,
+            (OptionalValue, v) | (Value, v @ Some(_)) => v,
+            (Value, None) => {
+                let v = self.args.get(self.next).cloned();
+                self.next += 1;
+                Some(v.ok_or(UsageError::MissingValue(shown))?)
+            }
+        };
+        Ok(Arg::Option(spec, value))
+    }
+}
+
+fn find_long(table: &'static [OptionSpec], name: &str) -> Option<&'static OptionSpec> {
+    if let Some(spec) = table.iter().find(|o| o.long == name) {
+        return Some(spec);
+    }
+    // clingo accepts unambiguous prefixes of long options.
+    let mut candidates = table.iter().filter(|o| o.long.starts_with(name));
+    match (candidates.next(), candidates.next()) {
+        (Some(spec), None) if !name.is_empty() => Some(spec),
+        _ => None,
+    }
+}
+
+impl OptionSpec {
+    /// The option as written in messages: `--seed`.
+    pub fn spelled(&self) -> String {
+        format!("--{}", self.long)
+    }
+
+    /// The verbs' reading of a number value (`'--seed': 'x' is not a number`).
+    pub fn number<T: std::str::FromStr>(&self, value: &str) -> Result<T, String> {
+        value
+            .parse()
+            .map_err(|_| format!("'{}': '{value}' is not a number", self.spelled()))
+    }
+
+    /// The verbs' reading of a probability, a number in [0, 1].
+    pub fn probability(&self, value: &str) -> Result<f64, String> {
+        match value.parse::<f64>() {
+            Ok(p) if (0.0..=1.0).contains(&p) => Ok(p),
+            _ => Err(format!(
+                "'{}': '{value}' is not a probability in [0, 1]",
+                self.spelled()
+            )),
+        }
+    }
+
+    /// The verbs' `--outf`: `0` (text, false) or `2` (JSON, true).
+    pub fn outf(&self, value: &str) -> Result<bool, String> {
+        match value {
+            "0" => Ok(false),
+            "2" => Ok(true),
+            _ => Err(format!("'{}={value}': expected 0 or 2", self.spelled())),
+        }
+    }
+
+    /// The verbs' `-c NAME=VALUE`, both sides trimmed.
+    pub fn assignment(&self, value: &str) -> Result<(String, String), String> {
+        let (name, v) = value
+            .split_once('=')
+            .ok_or_else(|| format!("'-c {value}': expected -c NAME=VALUE"))?;
+        Ok((name.trim().to_string(), v.trim().to_string()))
+    }
+}
+
+/// A verb's command line: the usage text before its options (usage lines, what the verb does),
+/// its option table and the text after the options; [`Verb::help`] is its `--help`.
+pub struct Verb {
+    /// Usage lines and description, ending with a newline.
+    pub usage: &'static str,
+    /// The options, each verb's table of the same kind as [`OPTIONS`].
+    pub options: &'static [OptionSpec],
+    /// Text after the options (exit codes, examples), empty or starting with a blank line.
+    pub epilogue: &'static str,
+}
+
+impl Verb {
+    /// True when the command line asks for the help: `--help` or `-h` as a word anywhere, or
+    /// the table's `help` option (by a prefix) before anything [`scan`] cannot read.
+    pub fn asks_for_help(&self, args: &[String]) -> bool {
+        args.iter().any(|a| a == "--help" || a == "-h")
+            || scan(self.options, args)
+                .map_while(Result::ok)
+                .any(|a| matches!(a, Arg::Option(spec, _) if spec.long == "help"))
+    }
+
+    /// The `--help` text, with the options rendered from the table.
+    pub fn help(&self) -> String {
+        self.help_with(|spec| spec.help.to_string())
+    }
+
+    /// The `--help` text with `help` giving each option's help text.
+    pub fn help_with(&self, help: impl Fn(&OptionSpec) -> String) -> String {
+        const WIDTH: usize = 98;
+        let left = |spec: &OptionSpec| {
+            let mut l = match spec.short {
+                Some(c) => format!("  -{c}, --{}", spec.long),
+                None => format!("  --{}", spec.long),
+            };
+            match spec.arity {
+                Flag => {}
+                Value => l.push_str(&format!(" {}", spec.value_name)),
+                OptionalValue => l.push_str(&format!("[={}]", spec.value_name)),
+            }
+            l
+        };
+        let column = 2 + self
+            .options
+            .iter()
+            .map(|s| left(s).len())
+            .filter(|&n| n <= 26)
+            .max()
+            .unwrap_or(0);
+        let mut out = self.usage.to_string();
+        let mut groups: Vec<&str> = Vec::new();
+        for spec in self.options {
+            if !groups.contains(&spec.group) {
+                groups.push(spec.group);
+            }
+        }
+        for group in groups {
+            out.push_str(&format!("\n{group}:\n"));
+            for spec in self.options.iter().filter(|s| s.group == group) {
+                let mut line = left(spec);
+                if line.len() + 2 > column {
+                    out.push_str(&line);
+                    out.push('\n');
+                    line.clear();
+                }
+                for word in help(spec).split_whitespace() {
+                    if line.len() < column {
+                        line.push_str(&" ".repeat(column - line.len()));
+                    } else if line.len() + 1 + word.len() > WIDTH {
+                        out.push_str(&line);
+                        out.push('\n');
+                        line = " ".repeat(column);
+                    } else {
+                        line.push(' ');
+                    }
+                    line.push_str(word);
+                }
+                out.push_str(&line);
+                out.push('\n');
+            }
+        }
+        out.push_str(self.epilogue);
+        out
+    }
+}
+
+/// The help option of every verb's table.
+pub const HELP: OptionSpec = opt(
+    "help",
+    Some('h'),
+    Flag,
+    "",
+    "print this help and exit",
+    "Options",
+);
+
+/// Parses the arguments after the program name.
+pub fn parse_args(args: &[String]) -> Result<Options, UsageError> {
+    let mut options = Options::default();
+    for arg in scan(OPTIONS, args) {
+        match arg? {
+            // clingo reads a leading integer argument as the number of models.
+            Arg::Word(w) if !w.is_empty() && w.bytes().all(|b| b.is_ascii_digit()) => {
+                options.models = w.parse().map_err(|_| invalid("models", &w))?;
+                options.models_given = true;
+            }
+            Arg::Word(w) | Arg::Literal(w) => options.files.push(w),
+            Arg::Option(spec, value) => apply(&mut options, spec.long, value.as_deref())?,
+        }
+    }
+    Ok(options)
 }
 
 fn invalid(option: &str, value: &str) -> UsageError {
@@ -357,88 +506,6 @@ fn invalid(option: &str, value: &str) -> UsageError {
         option: option.to_string(),
         value: value.to_string(),
     }
-}
-
-fn find_long(name: &str) -> Option<&'static OptionSpec> {
-    if let Some(spec) = OPTIONS.iter().find(|o| o.long == name) {
-        return Some(spec);
-    }
-    // clingo accepts unambiguous prefixes of long options.
-    let mut candidates = OPTIONS.iter().filter(|o| o.long.starts_with(name));
-    match (candidates.next(), candidates.next()) {
-        (Some(spec), None) if !name.is_empty() => Some(spec),
-        _ => None,
-    }
-}
-
-fn find_short(c: char) -> Option<&'static OptionSpec> {
-    OPTIONS.iter().find(|o| o.short == Some(c))
-}
-
-/// Parses the arguments after the program name.
-pub fn parse_args(args: &[String]) -> Result<Options, UsageError> {
-    let mut options = Options::default();
-    let mut i = 0;
-    let mut only_files = false;
-    while i < args.len() {
-        let arg = &args[i];
-        i += 1;
-        if only_files || arg == "-" || !arg.starts_with('-') {
-            // clingo reads a leading integer argument as the number of models.
-            if !only_files && !arg.is_empty() && arg.bytes().all(|b| b.is_ascii_digit()) {
-                options.models = arg.parse().map_err(|_| invalid("models", arg))?;
-                options.models_given = true;
-            } else {
-                options.files.push(arg.clone());
-            }
-            continue;
-        }
-        if arg == "--" {
-            only_files = true;
-            continue;
-        }
-        let (spec, inline_value, shown) = if let Some(rest) = arg.strip_prefix("--") {
-            let (name, value) = match rest.split_once('=') {
-                Some((n, v)) => (n, Some(v.to_string())),
-                None => (rest, None),
-            };
-            let spec = find_long(name).ok_or_else(|| UsageError::Unknown(name.to_string()))?;
-            (spec, value, name.to_string())
-        } else {
-            let mut chars = arg[1..].chars();
-            let c = chars.next().unwrap_or('-');
-            let spec = find_short(c).ok_or_else(|| UsageError::Unknown(arg.clone()))?;
-            let rest: String = chars.collect();
-            let value = if rest.is_empty() {
-                None
-            } else {
-                Some(rest.trim_start_matches('=').to_string())
-            };
-            (spec, value, c.to_string())
-        };
-        let value = match spec.arity {
-            Flag => {
-                if inline_value.is_some() {
-                    return Err(UsageError::UnexpectedValue(shown));
-                }
-                None
-            }
-            OptionalValue => inline_value,
-            Value => match inline_value {
-                Some(v) => Some(v),
-                None => {
-                    if i < args.len() {
-                        i += 1;
-                        Some(args[i - 1].clone())
-                    } else {
-                        return Err(UsageError::MissingValue(shown));
-                    }
-                }
-            },
-        };
-        apply(&mut options, spec.long, value.as_deref())?;
-    }
-    Ok(options)
 }
 
 fn parse_num<T: std::str::FromStr>(option: &str, value: &str) -> Result<T, UsageError> {
@@ -471,10 +538,8 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
         }
         "dialect" => {
             o.dialect = match v {
-                "auto" => DialectChoice::Auto,
-                "clingo" | "asp" => DialectChoice::Clingo,
-                "sparc" => DialectChoice::Sparc,
-                _ => return Err(invalid(long, v)),
+                "auto" => None,
+                _ => Some(Dialect::from_name(v).ok_or_else(|| invalid(long, v))?),
             }
         }
         "models" => {
@@ -505,48 +570,17 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
         "warn" => apply_warn(o, v)?,
         "message-limit" => o.message_limit = parse_num(long, v)?,
         "provenance" => o.provenance = true,
-        "opt-mode" => {
-            let mut parts = v.split(',');
-            o.opt_mode = match parts.next().unwrap_or("") {
-                "opt" => OptMode::Opt,
-                "optN" => OptMode::OptN,
-                "enum" => OptMode::Enum,
-                "ignore" => OptMode::Ignore,
-                _ => return Err(invalid(long, v)),
-            };
-            o.opt_bounds = parts
-                .map(|b| parse_num::<i64>(long, b))
-                .collect::<Result<_, _>>()?;
-        }
-        "enum-mode" => {
-            o.enum_mode = match v {
-                "auto" => EnumMode::Auto,
-                "bt" => EnumMode::Backtrack,
-                "record" => EnumMode::Record,
-                "brave" => EnumMode::Brave,
-                "cautious" => EnumMode::Cautious,
-                _ => return Err(invalid(long, v)),
-            }
-        }
+        "opt-mode" => o.opt_mode = OptMode::from_name(v).ok_or_else(|| invalid(long, v))?,
+        "enum-mode" => o.enum_mode = EnumMode::from_name(v).ok_or_else(|| invalid(long, v))?,
         "project" => {
             o.project = match value {
                 None => true,
-                Some("no") | Some("0") => false,
-                Some(m)
-                    if ["show", "project", "auto"].contains(&m.split(',').next().unwrap_or("")) =>
-                {
-                    true
+                Some(m) => {
+                    crate::solve::Config::project_from_name(m).ok_or_else(|| invalid(long, m))?
                 }
-                Some(m) => return Err(invalid(long, m)),
             }
         }
-        "cr" => {
-            o.cr = match v {
-                "card" | "cardinality" => CrMode::Cardinality,
-                "subset" => CrMode::Subset,
-                _ => return Err(invalid(long, v)),
-            }
-        }
+        "cr" => o.cr = CrMode::from_name(v).ok_or_else(|| invalid(long, v))?,
         "time-limit" => {
             let secs: f64 = parse_num(long, v)?;
             if !(secs >= 0.0 && secs.is_finite()) {
@@ -562,14 +596,7 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
             }
             o.threads = threads;
         }
-        "heuristic" => {
-            let known = ["berkmin", "vmtf", "vsids", "domain", "unit", "none"];
-            let name = v.split(',').next().unwrap_or("").to_ascii_lowercase();
-            if !known.contains(&name.as_str()) {
-                return Err(invalid(long, v));
-            }
-            o.domain_heuristic = name == "domain";
-        }
+        "heuristic" => o.heuristic = Heuristic::from_name(v).ok_or_else(|| invalid(long, v))?,
         "seed" => o.seed = parse_num(long, v)?,
         "rand-freq" => {
             let p: f64 = parse_num(long, v)?;
@@ -768,34 +795,44 @@ mod tests {
     }
 
     #[test]
-    fn verb_arguments_inline_or_next_and_clingos_missing_value() {
-        let words = args("--goal=on(a,b) -q why? --outf 2 x=1 -c n=3 --full --happened");
-        let mut v = VerbArgs::new(&words);
-        let mut seen = Vec::new();
-        while let Some(a) = v.next_arg() {
-            let value = match a.name {
-                "--goal" | "-q" | "--outf" | "-c" | "--happened" => Some(v.value(&a)),
-                _ => None,
-            };
-            seen.push((a.word.to_string(), a.name.to_string(), value));
-        }
-        let ok = |s: &str| Some(Ok(s.to_string()));
+    fn scan_reads_any_table_the_same_way() {
+        #[rustfmt::skip]
+        const TABLE: &[OptionSpec] = &[
+            HELP,
+            opt("goal", None, Value, "G", "a goal", "Options"),
+            opt("goal-seed", None, Value, "N", "its seed", "Options"),
+            opt("const", Some('c'), Value, "N=V", "a switch", "Options"),
+            opt("full", None, Flag, "", "every reason", "Options"),
+        ];
+        let [_, goal, seed, konst, full] = TABLE else {
+            unreachable!()
+        };
+        let words = args("--goal=on(a,b) x.ald -c n=3 -cm=4 --full --goal-s 7 - -- --full");
+        let read: Result<Vec<Arg>, _> = scan(TABLE, &words).collect();
+        let some = |s: &str| Some(s.to_string());
         assert_eq!(
-            seen,
+            read.unwrap(),
             vec![
-                ("--goal=on(a,b)".into(), "--goal".into(), ok("on(a,b)")),
-                ("-q".into(), "-q".into(), ok("why?")),
-                ("--outf".into(), "--outf".into(), ok("2")),
-                // A word that is not an option keeps its `=`.
-                ("x=1".into(), "x=1".into(), None),
-                ("-c".into(), "-c".into(), ok("n=3")),
-                ("--full".into(), "--full".into(), None),
-                (
-                    "--happened".into(),
-                    "--happened".into(),
-                    Some(Err("SyntaxError: 'happened' requires a value!".into()))
-                ),
+                Arg::Option(goal, some("on(a,b)")),
+                Arg::Word("x.ald".into()),
+                Arg::Option(konst, some("n=3")),
+                Arg::Option(konst, some("m=4")),
+                Arg::Option(full, None),
+                Arg::Option(seed, some("7")),
+                Arg::Word("-".into()),
+                Arg::Literal("--full".into()),
             ]
+        );
+        let first_error = |line: &str| scan(TABLE, &args(line)).find_map(Result::err);
+        assert_eq!(first_error("--go"), Some(UsageError::Unknown("go".into())));
+        assert_eq!(first_error("-x"), Some(UsageError::Unknown("-x".into())));
+        assert_eq!(
+            first_error("--full=1"),
+            Some(UsageError::UnexpectedValue("full".into()))
+        );
+        assert_eq!(
+            first_error("--goal"),
+            Some(UsageError::MissingValue("goal".into()))
         );
     }
 
@@ -810,11 +847,39 @@ mod tests {
         assert_eq!(o.consts, vec![("n".to_string(), "3".to_string())]);
         assert_eq!(o.outf, OutputFormat::Json);
         assert_eq!(o.quiet, [2, 2, 2]);
-        assert_eq!(o.opt_mode, OptMode::Enum);
-        assert_eq!(o.opt_bounds, vec![3, 4]);
+        assert_eq!(o.opt_mode, OptMode::Enum(vec![3, 4]));
         assert_eq!(o.disabled_warnings, vec![WarningKind::AtomUndefined]);
         let o = parse_args(&args("--quiet=1")).unwrap();
         assert_eq!(o.quiet, [1, 1, 2]);
+    }
+
+    #[test]
+    fn modes_parse_into_the_librarys_types() {
+        let o = parse_args(&args(
+            "--enum-mode=bt --cr=subset --heuristic=Domain,2 --dialect=asp --project=auto,3",
+        ))
+        .unwrap();
+        assert_eq!(o.enum_mode, EnumMode::Auto);
+        assert_eq!(o.cr, CrMode::Subset);
+        assert_eq!(o.heuristic, Heuristic::Domain);
+        assert_eq!(o.dialect, Some(Dialect::Clingo));
+        assert!(o.project);
+        let o = parse_args(&args("--opt-mode=opt,5 --project=no --dialect=auto")).unwrap();
+        assert_eq!(
+            (o.opt_mode, o.project, o.dialect),
+            (OptMode::Opt, false, None)
+        );
+        for bad in [
+            "--opt-mode=enum,x",
+            "--heuristic=best",
+            "--project=no,1",
+            "--cr=all",
+        ] {
+            assert!(
+                matches!(parse_args(&args(bad)), Err(UsageError::InvalidValue { .. })),
+                "{bad}"
+            );
+        }
     }
 
     #[test]

@@ -20,8 +20,11 @@ use crate::action;
 use crate::base::{Diagnostics, SourceMap};
 use crate::plan::{plan, PlanConfig, PlanError, Search};
 
-/// `lucent plan --help`.
-const HELP: &str = "\
+use super::options::{self, opt, Arg, Arity::*, OptionSpec, Verb};
+
+/// `lucent plan`'s command line; `--help` is generated from it.
+pub(super) const VERB: Verb = Verb {
+    usage: "\
 usage: lucent plan FILE.ald [--scene FILE] [--goal GOAL] [--all] [--max-horizon H] [--fixed N]
                    [--search incremental|retranslate] [--check] [--profile NAME]
                    [-c NAME=VALUE]... [--outf=2]
@@ -29,18 +32,27 @@ usage: lucent plan FILE.ald [--scene FILE] [--goal GOAL] [--all] [--max-horizon 
 Finds a minimal plan for the goal of an AL_d planning problem (docs/domain.md 4.1-4.2): horizons
 0, 1, ..., H are tried in turn (default H = max(9, 2 * objects + 2)) on one multi-shot solver;
 plans are ordered by length, then by CR rule applications.
+",
+    options: OPTIONS,
+    epilogue: "",
+};
 
-  --scene FILE   the objects and initial state: a simulator scene (.json) or facts such as
-                 object(a). has_size(a, small). on(a, b). (domains/ra/README.md); FILE is then
-                 the domain (e.g. domains/ra/kb_full.ald)
-  --goal GOAL    the goal as AL_d literals (\"on(a, b), in_hand(rob1, c)\") or in controlled
-                 English (\"put the pitcher on the red block\"); replaces FILE's goal
-  --all          print every distinct minimal plan
-  --fixed N      the authors' fixed horizon N: every plan reaching the goal by step N
-  --check        classify each printed plan (optimal, sub-optimal, incorrect; docs/domain.md 4.3)
-  --outf=2       JSON output
-  --emit-problem print the problem (FILE with the scene and goal added) as one AL_d file
-";
+/// The options of `lucent plan`.
+#[rustfmt::skip]
+const OPTIONS: &[OptionSpec] = &[
+    options::HELP,
+    opt("scene", None, Value, "FILE", "the objects and initial state: a simulator scene (.json) or facts such as object(a). has_size(a, small). on(a, b). (domains/ra/README.md); FILE is then the domain (e.g. domains/ra/kb_full.ald)", "Options"),
+    opt("goal", None, Value, "GOAL", "the goal as AL_d literals (\"on(a, b), in_hand(rob1, c)\") or in controlled English (\"put the pitcher on the red block\"); replaces FILE's goal", "Options"),
+    opt("all", None, Flag, "", "print every distinct minimal plan", "Options"),
+    opt("max-horizon", None, Value, "H", "the largest horizon tried (default max(9, 2 * objects + 2))", "Options"),
+    opt("fixed", None, Value, "N", "the authors' fixed horizon N: every plan reaching the goal by step N", "Options"),
+    opt("search", None, Value, "S", "incremental (default: one multi-shot solver) or retranslate (each horizon translated and grounded afresh)", "Options"),
+    opt("check", None, Flag, "", "classify each printed plan (optimal, sub-optimal, incorrect; docs/domain.md 4.3)", "Options"),
+    opt("profile", None, Value, "NAME", "the description's profile (a switch bundle it declares)", "Options"),
+    opt("const", Some('c'), Value, "NAME=VALUE", "set a switch of the description (e.g. -c horizon=3); may be repeated", "Options"),
+    opt("outf", None, Value, "N", "0: text (default); 2: JSON", "Options"),
+    opt("emit-problem", None, Flag, "", "print the problem (FILE with the scene and goal added) as one AL_d file", "Options"),
+];
 
 /// Exit code when there is no plan (clingo's code for unsatisfiable).
 const EXIT_NO_PLAN: i32 = 20;
@@ -59,103 +71,45 @@ struct Args {
     config: PlanConfig,
 }
 
-/// Reads the options; `Err(code)` after printing a usage error or the help.
-fn parse_args(
-    args: &[String],
-    out: &mut dyn Write,
-    err: &mut dyn Write,
-) -> std::io::Result<Result<Args, i32>> {
+/// Reads the command line.
+fn parse(args: &[String]) -> Result<Args, String> {
     let mut a = Args::default();
-    let mut i = 0;
-    while i < args.len() {
-        let arg = args[i].as_str();
-        let value = |i: &mut usize, prefix: &str| -> Option<String> {
-            if arg.len() > prefix.len() {
-                Some(arg[prefix.len()..].trim_start_matches('=').to_string())
-            } else {
-                *i += 1;
-                args.get(*i).cloned()
+    for arg in options::scan(OPTIONS, args) {
+        let (spec, v) = match arg.map_err(|e| e.to_string())? {
+            Arg::Option(spec, v) => (spec, v.unwrap_or_default()),
+            Arg::Word(w) | Arg::Literal(w) if a.file.is_none() => {
+                a.file = Some(w);
+                continue;
             }
+            Arg::Word(_) | Arg::Literal(_) => return Err("`lucent plan` takes one file".into()),
         };
-        let usage = |err: &mut dyn Write, m: String| -> std::io::Result<Result<Args, i32>> {
-            writeln!(err, "*** ERROR: (lucent): {m}")?;
-            Ok(Err(super::EXIT_USAGE))
-        };
-        if arg == "--help" || arg == "-h" {
-            write!(out, "{HELP}")?;
-            return Ok(Err(0));
-        } else if arg == "--all" {
-            a.all = true;
-        } else if arg == "--check" {
-            a.check = true;
-        } else if arg == "--emit-problem" {
-            a.emit = true;
-        } else if arg.starts_with("--outf") {
-            match value(&mut i, "--outf").as_deref() {
-                Some("2") => a.json = true,
-                Some("0") => a.json = false,
-                v => {
-                    return usage(
-                        err,
-                        format!("'--outf={}': expected 0 or 2", v.unwrap_or("")),
-                    )
-                }
+        match spec.long {
+            "all" => a.all = true,
+            "check" => a.check = true,
+            "emit-problem" => a.emit = true,
+            "outf" => a.json = spec.outf(&v)?,
+            "max-horizon" => a.max_horizon = Some(spec.number(&v)?),
+            "fixed" => a.config.search = Search::Fixed(spec.number(&v)?),
+            "search" => {
+                a.config.search = Search::from_name(&v)
+                    .ok_or_else(|| format!("'--search {v}': expected incremental or retranslate"))?
             }
-        } else if arg.starts_with("--max-horizon") {
-            match value(&mut i, "--max-horizon").and_then(|v| v.parse().ok()) {
-                Some(h) => a.max_horizon = Some(h),
-                None => return usage(err, format!("'{arg}': expected --max-horizon H (a number)")),
+            "scene" => a.scene = Some(v),
+            "goal" => a.goal = Some(v),
+            "profile" => a.config.profile = Some(v),
+            "const" => {
+                let (name, value) = spec.assignment(&v)?;
+                a.config
+                    .overrides
+                    .push((name, super::action::value_of(&value)));
             }
-        } else if arg.starts_with("--fixed") {
-            match value(&mut i, "--fixed").and_then(|v| v.parse().ok()) {
-                Some(n) => a.config.search = Search::Fixed(n),
-                None => return usage(err, format!("'{arg}': expected --fixed N (a number)")),
-            }
-        } else if arg.starts_with("--search") {
-            match value(&mut i, "--search").as_deref() {
-                Some("incremental") => a.config.search = Search::Incremental,
-                Some("retranslate") => a.config.search = Search::Retranslate,
-                _ => {
-                    return usage(
-                        err,
-                        format!("'{arg}': expected --search incremental or retranslate"),
-                    )
-                }
-            }
-        } else if arg.starts_with("--scene") {
-            a.scene = value(&mut i, "--scene");
-        } else if arg.starts_with("--goal") {
-            a.goal = value(&mut i, "--goal");
-        } else if arg.starts_with("--profile") {
-            a.config.profile = value(&mut i, "--profile");
-        } else if arg.starts_with("-c") {
-            match value(&mut i, "-c").and_then(|v| {
-                v.split_once('=')
-                    .map(|(n, v)| (n.trim().to_string(), super::action::value_of(v.trim())))
-            }) {
-                Some(c) => a.config.overrides.push(c),
-                None => return usage(err, format!("'{arg}': expected -c NAME=VALUE")),
-            }
-        } else if arg.starts_with('-') {
-            return usage(
-                err,
-                format!("'{arg}': unknown option of `lucent plan` (try --help)"),
-            );
-        } else if a.file.is_none() {
-            a.file = Some(arg.to_string());
-        } else {
-            return usage(err, "`lucent plan` takes one file".into());
+            _ => {} // --help, answered before parsing
         }
-        i += 1;
     }
     if a.file.is_none() {
-        writeln!(
-            err,
-            "*** ERROR: (lucent): `lucent plan` needs a file (try --help)"
-        )?;
-        return Ok(Err(super::EXIT_USAGE));
+        return Err("`lucent plan` needs a file (try --help)".into());
     }
-    Ok(Ok(a))
+    Ok(a)
 }
 
 /// The scene file's facts: a simulator scene (`.json`) or facts.
@@ -217,7 +171,7 @@ fn goal_statement(
 
 /// `lucent plan`.
 pub fn run_plan(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
-    let a = match parse_args(args, out, err)? {
+    let a = match super::verb_args(&VERB, args, parse, out, err)? {
         Ok(a) => a,
         Err(code) => return Ok(code),
     };

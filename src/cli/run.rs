@@ -24,13 +24,17 @@ use crate::vision::dataset::DatasetConfig;
 use crate::vision::reason::Knowledge;
 use crate::vision::see::{train_seer, Seeing, SeenOcclusion};
 
+use super::demo;
+use super::options::{self, opt, Arg, Arity::*, OptionSpec, Verb};
 use super::run_report::{self, Filming, Frame, Pictured};
 use super::KB_FULL;
 
 /// Exit code of a run that did not reach its goal.
 const EXIT_NOT_REACHED: i32 = 20;
 
-const HELP: &str = "\
+/// `lucent run`'s command line; `--help` is generated from it.
+pub(super) const VERB: Verb = Verb {
+    usage: "\
 usage: lucent run [DOMAIN.ald] (--scene FILE.json | --preset NAME --seed N) [--goal LITERAL]...
                   [options]
 
@@ -39,35 +43,34 @@ noise), doubt what is inconsistent, plan a minimal plan, execute one action at a
 physics world, perceive again, compare the prediction with the observation, and replan after a
 discrepancy or a failed action, until the goal is observed (and confirmed by a second look) or
 a budget runs out. DOMAIN.ald defaults to the built-in KB_full (domains/ra/kb_full.ald).
+",
+    options: OPTIONS,
+    epilogue: demo::ROBOT_EXIT_CODES,
+};
 
-  --scene FILE            a scene file (lucent sim generate -o FILE writes one)
-  --preset NAME           generate a scene: real, simulated or h1 (default real)
-  --seed N                the scene's seed (default 0); it also seeds noise and failures
-  --goal LITERAL          a goal literal: on(X,Y), relation(S,X,Y) or in_hand(rob1,X);
-                          repeat for a conjunction; without it a goal is drawn (docs/domain.md 7.1)
-  --goal-seed N           the seed of the drawn goal (default: the scene's seed)
-  --perception-noise P    probability that a perceived relation is wrong (default 0.15)
-  --actuation-noise P     probability that an action slips (default 0.15)
-  --threshold T           confidence from which a reading is taken (default 0.5)
-  --max-actions N         action budget (default 24)
-  --max-plans N           planning budget, the first plan included (default 12)
-  --max-horizon H         the planner's horizon budget (default 12)
-  --looks N               looks per perception, fused by majority (default 1)
-  --see-occlusion N       decide occlusion from the camera image: reasoning over each look's
-                          percept, and where it cannot decide a network trained at the start
-                          on N generated scenes (100 takes about 15 s); its decisions become
-                          observations of partially_occluded and are listed in the summary
-  --no-confirm            stop at the first observation of the goal, without looking again
-  --log FILE              write the progress lines and the summary to FILE
-  --save-history FILE     write the run's history as JSON (domains/ra/README.md)
-  --report FILE.html      write a report of the run to open in a browser: the camera picture
-                          after every action, the plans and replans in English with their
-                          reasons, the discrepancies, and the robot's answers to a few
-                          questions about its run with their proof trees (one file, no network)
-  --outf=2                print the history as JSON instead of the text summary
-
-Exit code: 0 when the goal was reached, 20 when not, 65 for bad input, 1 for a bad command line.
-";
+/// The options of `lucent run`.
+#[rustfmt::skip]
+const OPTIONS: &[OptionSpec] = &[
+    options::HELP,
+    opt("scene", None, Value, "FILE", "a scene file (lucent sim generate -o FILE writes one)", "Options"),
+    opt("preset", None, Value, "NAME", "generate a scene: real, simulated or h1 (default real)", "Options"),
+    opt("seed", None, Value, "N", "the scene's seed (default 0); it also seeds noise and failures", "Options"),
+    demo::GOAL,
+    opt("goal-seed", None, Value, "N", "the seed of the drawn goal (default: the scene's seed)", "Options"),
+    demo::PERCEPTION_NOISE,
+    demo::ACTUATION_NOISE,
+    opt("threshold", None, Value, "T", "confidence from which a reading is taken (default 0.5)", "Options"),
+    opt("max-actions", None, Value, "N", "action budget (default 24)", "Options"),
+    opt("max-plans", None, Value, "N", "planning budget, the first plan included (default 12)", "Options"),
+    opt("max-horizon", None, Value, "H", "the planner's horizon budget (default 12)", "Options"),
+    opt("looks", None, Value, "N", "looks per perception, fused by majority (default 1)", "Options"),
+    opt("see-occlusion", None, Value, "N", "decide occlusion from the camera image: reasoning over each look's percept, and where it cannot decide a network trained at the start on N generated scenes (100 takes about 15 s); its decisions become observations of partially_occluded and are listed in the summary", "Options"),
+    opt("no-confirm", None, Flag, "", "stop at the first observation of the goal, without looking again", "Options"),
+    opt("log", None, Value, "FILE", "write the progress lines and the summary to FILE", "Options"),
+    opt("save-history", None, Value, "FILE", "write the run's history as JSON (domains/ra/README.md)", "Options"),
+    opt("report", None, Value, "FILE.html", "write a report of the run to open in a browser: the camera picture after every action, the plans and replans in English with their reasons, the discrepancies, and the robot's answers to a few questions about its run with their proof trees (one file, no network)", "Options"),
+    opt("outf", None, Value, "N", "0: the text summary (default); 2: the history as JSON", "Options"),
+];
 
 /// The parsed command line.
 #[derive(Debug, Default)]
@@ -102,8 +105,6 @@ pub struct RunArgs {
     pub json: bool,
     /// `--see-occlusion N`: train on N scenes and see occlusion from the image.
     pub see: Option<u64>,
-    /// `--help`.
-    pub help: bool,
 }
 
 fn parse(args: &[String]) -> Result<RunArgs, String> {
@@ -113,56 +114,13 @@ fn parse(args: &[String]) -> Result<RunArgs, String> {
         threshold: 0.5,
         ..RunArgs::default()
     };
-    let mut words = super::options::VerbArgs::new(args);
-    while let Some(w) = words.next_arg() {
-        let (arg, name) = (w.word, w.name);
-        let mut value = || words.value(&w);
-        fn number<T: std::str::FromStr>(name: &str, v: String) -> Result<T, String> {
-            v.parse()
-                .map_err(|_| format!("{name} needs a number, got `{v}`"))
-        }
-        fn probability(name: &str, v: String) -> Result<f64, String> {
-            let p: f64 = number(name, v)?;
-            if (0.0..=1.0).contains(&p) {
-                Ok(p)
-            } else {
-                Err(format!("{name} needs a probability in [0, 1], got {p}"))
-            }
-        }
-        match name {
-            "--help" | "-h" => out.help = true,
-            "--scene" => out.scene = Some(value()?),
-            "--preset" => out.preset = Some(value()?),
-            "--seed" => out.seed = number(name, value()?)?,
-            "--goal" => out.goals.push(value()?),
-            "--goal-seed" => out.goal_seed = Some(number(name, value()?)?),
-            "--perception-noise" => out.perception = probability(name, value()?)?,
-            "--actuation-noise" => out.actuation = probability(name, value()?)?,
-            "--threshold" => out.threshold = probability(name, value()?)?,
-            "--max-actions" => out.config.max_actions = number(name, value()?)?,
-            "--max-plans" => out.config.max_plans = number(name, value()?)?,
-            "--max-horizon" => out.config.plan.max_horizon = number(name, value()?)?,
-            "--no-confirm" => out.config.confirm_goal = false,
-            "--looks" => out.config.looks = number(name, value()?)?,
-            "--see-occlusion" => match number::<u64>(name, value()?)? {
-                0 => return Err("--see-occlusion needs at least one training scene".into()),
-                n => out.see = Some(n),
-            },
-            "--log" => out.log = Some(value()?),
-            "--save-history" => out.save = Some(value()?),
-            "--report" => out.report = Some(value()?),
-            "--outf" => match value()?.as_str() {
-                "2" => out.json = true,
-                "0" => out.json = false,
-                v => return Err(format!("--outf={v}: expected 0 or 2")),
-            },
-            a if a.starts_with('-') && a.len() > 1 => {
-                return Err(format!("unknown option `{a}` of `lucent run` (try --help)"))
-            }
-            _ if out.domain.is_none() => out.domain = Some(arg.to_string()),
-            _ => {
+    for arg in options::scan(OPTIONS, args) {
+        match arg.map_err(|e| e.to_string())? {
+            Arg::Option(spec, v) => apply(&mut out, spec, v.unwrap_or_default())?,
+            Arg::Word(w) | Arg::Literal(w) if out.domain.is_none() => out.domain = Some(w),
+            Arg::Word(w) | Arg::Literal(w) => {
                 return Err(format!(
-                    "`lucent run` takes one domain file, not also `{arg}`"
+                    "`lucent run` takes one domain file, not also `{w}`"
                 ))
             }
         }
@@ -171,6 +129,36 @@ fn parse(args: &[String]) -> Result<RunArgs, String> {
         return Err("--scene and --preset exclude each other".into());
     }
     Ok(out)
+}
+
+/// Sets the option `spec` of `lucent run` (or of `lucent demo`, whose options are some of
+/// these) to `v`.
+pub fn apply(out: &mut RunArgs, spec: &OptionSpec, v: String) -> Result<(), String> {
+    match spec.long {
+        "scene" => out.scene = Some(v),
+        "preset" => out.preset = Some(v),
+        "seed" => out.seed = spec.number(&v)?,
+        "goal" => out.goals.push(v),
+        "goal-seed" => out.goal_seed = Some(spec.number(&v)?),
+        "perception-noise" => out.perception = spec.probability(&v)?,
+        "actuation-noise" => out.actuation = spec.probability(&v)?,
+        "threshold" => out.threshold = spec.probability(&v)?,
+        "max-actions" => out.config.max_actions = spec.number(&v)?,
+        "max-plans" => out.config.max_plans = spec.number(&v)?,
+        "max-horizon" => out.config.plan.max_horizon = spec.number(&v)?,
+        "no-confirm" => out.config.confirm_goal = false,
+        "looks" => out.config.looks = spec.number(&v)?,
+        "see-occlusion" => match spec.number::<u64>(&v)? {
+            0 => return Err("--see-occlusion needs at least one training scene".into()),
+            n => out.see = Some(n),
+        },
+        "log" => out.log = Some(v),
+        "save-history" => out.save = Some(v),
+        "report" => out.report = Some(v),
+        "outf" => out.json = spec.outf(&v)?,
+        _ => {} // --help, answered before parsing
+    }
+    Ok(())
 }
 
 /// Loads the domain: the file (with its includes) or the built-in KB_full.
@@ -424,7 +412,7 @@ fn write_report(
 
 /// `lucent run`.
 pub fn run_run(args: &[String], out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
-    let args = match super::verb_args(parse(args), |a| a.help, HELP, out, err)? {
+    let args = match super::verb_args(&VERB, args, parse, out, err)? {
         Ok(a) => a,
         Err(code) => return Ok(code),
     };

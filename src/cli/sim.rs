@@ -16,255 +16,145 @@ const EXIT_OK: i32 = 0;
 const EXIT_INPUT: i32 = 65;
 const EXIT_USAGE: i32 = super::EXIT_USAGE;
 
-/// One option: its spelling, whether it takes a value, the subcommands it applies to, its help.
-struct OptionSpec {
-    /// The spelling, e.g. `--seed`.
-    name: &'static str,
-    /// The value's placeholder in `--help`, or `None` for a flag.
-    value: Option<&'static str>,
-    /// The subcommands that accept it.
-    commands: &'static [&'static str],
-    /// One line of help.
-    help: &'static str,
-}
+use super::options::{self, opt, Arg, Arity::*, OptionSpec, Verb};
 
-/// The declarative option table that drives parsing and `--help`.
+/// `lucent sim`'s command line: the options of every subcommand in one table (a subcommand's
+/// own are listed in [`COMMANDS`]); `--help` is generated from both.
+pub(super) const VERB: Verb = Verb {
+    usage: "",
+    options: OPTIONS,
+    epilogue: "
+Examples:
+  lucent sim generate --seed 7 --preset real -o scene.json
+  lucent sim observe scene.json
+  lucent sim act scene.json 'pickup(rob1,red_cube)'
+  lucent sim render scene.json -o scene.png
+",
+};
+
+/// The options of `lucent sim`'s subcommands.
+#[rustfmt::skip]
 const OPTIONS: &[OptionSpec] = &[
-    OptionSpec {
-        name: "--seed",
-        value: Some("N"),
-        commands: &["generate"],
-        help: "seed of the scene and of its noise (default 0)",
-    },
-    OptionSpec {
-        name: "--preset",
-        value: Some("P"),
-        commands: &["generate"],
-        help: "real, simulated (sim) or h1 (default simulated)",
-    },
-    OptionSpec {
-        name: "--objects",
-        value: Some("K"),
-        commands: &["generate"],
-        help: "number of objects, 5 to 9 (default: the preset's range)",
-    },
-    OptionSpec {
-        name: "--risky",
-        value: None,
-        commands: &["generate"],
-        help: "a risky scene as placed, not settled (towers on irregular, small and flat supports: what `lucent classify` looks at)",
-    },
-    OptionSpec {
-        name: "-o",
-        value: Some("FILE"),
-        commands: &["generate", "act", "step", "render"],
-        help: "output file (generate: stdout if absent; act/step: the scene file itself)",
-    },
-    OptionSpec {
-        name: "--holds",
-        value: None,
-        commands: &["observe", "act"],
-        help: "print holds(F,I) facts instead of obs(F,V,I)",
-    },
-    OptionSpec {
-        name: "--error-rate",
-        value: Some("P"),
-        commands: &["observe", "act"],
-        help: "probability of misperceiving a relation (default 0.15)",
-    },
-    OptionSpec {
-        name: "--size-error",
-        value: Some("P"),
-        commands: &["observe", "act"],
-        help: "probability of misreading a size (default 0)",
-    },
-    OptionSpec {
-        name: "--threshold",
-        value: Some("T"),
-        commands: &["observe", "act"],
-        help: "confidence from which an observation is a fact (default 0.5)",
-    },
-    OptionSpec {
-        name: "--failure-rate",
-        value: Some("P"),
-        commands: &["act"],
-        help: "probability that a possible action fails (default 0.15)",
-    },
-    OptionSpec {
-        name: "--seconds",
-        value: Some("S"),
-        commands: &["step"],
-        help: "simulated seconds to step (default 2)",
-    },
-    OptionSpec {
-        name: "--top",
-        value: None,
-        commands: &["render"],
-        help: "render the top view instead of the camera view",
-    },
-    OptionSpec {
-        name: "--labelled",
-        value: None,
-        commands: &["render"],
-        help: "the camera view widened to frame every object, each labelled (as in run reports)",
-    },
-    OptionSpec {
-        name: "--width",
-        value: Some("W"),
-        commands: &["render"],
-        help: "image width (default 320)",
-    },
-    OptionSpec {
-        name: "--height",
-        value: Some("H"),
-        commands: &["render"],
-        help: "image height (default 200)",
-    },
-    OptionSpec {
-        name: "--json",
-        value: None,
-        commands: &["observe", "truth", "act"],
-        help: "print JSON instead of facts",
-    },
+    options::HELP,
+    opt("seed", None, Value, "N", "seed of the scene and of its noise (default 0)", "Options"),
+    opt("preset", None, Value, "P", "real, simulated (sim) or h1 (default simulated)", "Options"),
+    opt("objects", None, Value, "K", "number of objects, 5 to 9 (default: the preset's range)", "Options"),
+    opt("risky", None, Flag, "", "a risky scene as placed, not settled (towers on irregular, small and flat supports: what `lucent classify` looks at)", "Options"),
+    opt("output", Some('o'), Value, "FILE", "output file (generate: stdout if absent; act/step: the scene file itself)", "Options"),
+    opt("holds", None, Flag, "", "print holds(F,I) facts instead of obs(F,V,I)", "Options"),
+    opt("error-rate", None, Value, "P", "probability of misperceiving a relation (default 0.15)", "Options"),
+    opt("size-error", None, Value, "P", "probability of misreading a size (default 0)", "Options"),
+    opt("threshold", None, Value, "T", "confidence from which an observation is a fact (default 0.5)", "Options"),
+    opt("failure-rate", None, Value, "P", "probability that a possible action fails (default 0.15)", "Options"),
+    opt("seconds", None, Value, "S", "simulated seconds to step (default 2)", "Options"),
+    opt("top", None, Flag, "", "render the top view instead of the camera view", "Options"),
+    opt("labelled", None, Flag, "", "the camera view widened to frame every object, each labelled (as in run reports)", "Options"),
+    opt("width", None, Value, "W", "image width (default 320)", "Options"),
+    opt("height", None, Value, "H", "image height (default 200)", "Options"),
+    opt("json", None, Flag, "", "print JSON instead of facts", "Options"),
 ];
 
-/// The subcommands: name, positional arguments, help.
-const COMMANDS: &[(&str, &str, &str)] = &[
-    ("generate", "", "generate and settle a scene from a seed"),
-    (
-        "observe",
-        "SCENE",
-        "print what the robot perceives, as facts",
-    ),
-    (
-        "truth",
-        "SCENE",
-        "print the measured relations, stability and occlusion",
-    ),
-    (
-        "act",
-        "SCENE ACTION",
-        "execute pickup(R,O) or putdown(R,O,L), save the scene, print observations",
-    ),
-    ("step", "SCENE", "let physics run and save the scene"),
-    (
-        "render",
-        "SCENE",
-        "render the camera (or --top) view to PNG",
-    ),
+/// A subcommand: its name, positional arguments, help, and the options it takes.
+struct Command {
+    name: &'static str,
+    args: &'static str,
+    help: &'static str,
+    options: &'static [&'static str],
+}
+
+/// The subcommands.
+#[rustfmt::skip]
+const COMMANDS: &[Command] = &[
+    Command { name: "generate", args: "", help: "generate and settle a scene from a seed", options: &["seed", "preset", "objects", "risky", "output"] },
+    Command { name: "observe", args: "SCENE", help: "print what the robot perceives, as facts", options: &["holds", "error-rate", "size-error", "threshold", "json"] },
+    Command { name: "truth", args: "SCENE", help: "print the measured relations, stability and occlusion", options: &["json"] },
+    Command { name: "act", args: "SCENE ACTION", help: "execute pickup(R,O) or putdown(R,O,L), save the scene, print observations", options: &["output", "holds", "error-rate", "size-error", "threshold", "failure-rate", "json"] },
+    Command { name: "step", args: "SCENE", help: "let physics run and save the scene", options: &["output", "seconds"] },
+    Command { name: "render", args: "SCENE", help: "render the camera (or --top) view to PNG", options: &["output", "top", "labelled", "width", "height"] },
 ];
 
 fn help() -> String {
     let mut out = String::from("Usage: lucent sim COMMAND [ARGS] [OPTIONS]\n\nCommands:\n");
-    for (name, args, text) in COMMANDS {
-        let _ = writeln!(out, "  {:<22} {text}", format!("{name} {args}"));
+    for c in COMMANDS {
+        let _ = writeln!(out, "  {:<22} {}", format!("{} {}", c.name, c.args), c.help);
     }
-    out.push_str("\nOptions:\n");
-    for o in OPTIONS {
-        let spelled = match o.value {
-            Some(v) => format!("{} {v}", o.name),
-            None => o.name.to_string(),
-        };
-        let _ = writeln!(
-            out,
-            "  {spelled:<22} {} [{}]",
-            o.help,
-            o.commands.join(", ")
-        );
-    }
-    out.push_str(
-        "\nExamples:\n  lucent sim generate --seed 7 --preset real -o scene.json\n  lucent sim observe scene.json\n  lucent sim act scene.json 'pickup(rob1,red_cube)'\n  lucent sim render scene.json -o scene.png\n",
-    );
-    out
+    out + &VERB.help_with(|o| {
+        let mut of = COMMANDS.iter().filter(|c| c.options.contains(&o.long));
+        match of.next() {
+            Some(first) => {
+                let names: Vec<&str> = std::iter::once(first).chain(of).map(|c| c.name).collect();
+                format!("{} [{}]", o.help, names.join(", "))
+            }
+            None => o.help.to_string(),
+        }
+    })
 }
 
 /// Parsed arguments of one subcommand.
 struct Args {
     /// The subcommand.
-    command: String,
+    command: &'static Command,
     /// Its positional arguments.
     positional: Vec<String>,
     /// Options in command-line order, with their values; the last occurrence wins.
-    options: Vec<(&'static str, Option<String>)>,
+    options: Vec<(&'static OptionSpec, Option<String>)>,
 }
 
 impl Args {
-    fn flag(&self, name: &str) -> bool {
-        self.options.iter().any(|(n, _)| *n == name)
+    fn flag(&self, long: &str) -> bool {
+        self.options.iter().any(|(o, _)| o.long == long)
     }
 
-    fn value(&self, name: &str) -> Option<&str> {
+    /// The last value of the option `long`, with the option.
+    fn option(&self, long: &str) -> Option<(&'static OptionSpec, &str)> {
         self.options
             .iter()
             .rev()
-            .find(|(n, _)| *n == name)
-            .and_then(|(_, v)| v.as_deref())
+            .find(|(o, _)| o.long == long)
+            .and_then(|(o, v)| Some((*o, v.as_deref()?)))
     }
 
-    fn number<T: std::str::FromStr>(&self, name: &str, default: T) -> Result<T, String> {
-        match self.value(name) {
-            None => Ok(default),
-            Some(v) => v
-                .parse()
-                .map_err(|_| format!("{name} needs a number, got `{v}`")),
-        }
+    fn value(&self, long: &str) -> Option<&str> {
+        self.option(long).map(|(_, v)| v)
     }
 
-    fn probability(&self, name: &str, default: f64) -> Result<f64, String> {
-        let p = self.number(name, default)?;
-        if (0.0..=1.0).contains(&p) {
-            Ok(p)
-        } else {
-            Err(format!("{name} needs a probability in [0, 1], got {p}"))
-        }
+    fn number<T: std::str::FromStr>(&self, long: &str, default: T) -> Result<T, String> {
+        self.option(long)
+            .map_or(Ok(default), |(spec, v)| spec.number(v))
+    }
+
+    fn probability(&self, long: &str, default: f64) -> Result<f64, String> {
+        self.option(long)
+            .map_or(Ok(default), |(spec, v)| spec.probability(v))
     }
 }
 
 fn parse(args: &[String]) -> Result<Args, String> {
-    let command = args.first().ok_or("missing command")?.clone();
-    if !COMMANDS.iter().any(|(c, _, _)| *c == command) {
-        return Err(format!("unknown command `{command}`"));
-    }
+    let name = args.first().ok_or("missing command")?;
+    let command = COMMANDS
+        .iter()
+        .find(|c| c.name == name)
+        .ok_or_else(|| format!("unknown command `{name}`"))?;
     let mut parsed = Args {
         command,
         positional: Vec::new(),
         options: Vec::new(),
     };
-    let mut rest = args[1..].iter();
-    while let Some(arg) = rest.next() {
-        if arg.starts_with('-') && arg.len() > 1 {
-            let (name, inline) = match arg.split_once('=') {
-                Some((n, v)) => (n, Some(v.to_string())),
-                None => (arg.as_str(), None),
-            };
-            let spec = OPTIONS
-                .iter()
-                .find(|o| o.name == name && o.commands.contains(&parsed.command.as_str()))
-                .ok_or_else(|| format!("unknown option `{name}` for `{}`", parsed.command))?;
-            let value = match (spec.value, inline) {
-                (None, None) => None,
-                (None, Some(_)) => return Err(format!("{name} takes no value")),
-                (Some(_), Some(v)) => Some(v),
-                (Some(v), None) => Some(
-                    rest.next()
-                        .ok_or_else(|| format!("{name} needs a value {v}"))?
-                        .clone(),
-                ),
-            };
-            parsed.options.push((spec.name, value));
-        } else {
-            parsed.positional.push(arg.clone());
+    for arg in options::scan(OPTIONS, &args[1..]) {
+        match arg.map_err(|e| e.to_string())? {
+            Arg::Option(spec, value) if command.options.contains(&spec.long) => {
+                parsed.options.push((spec, value))
+            }
+            Arg::Option(spec, _) => {
+                return Err(format!("{} is no option of `{name}`", spec.spelled()))
+            }
+            Arg::Word(w) | Arg::Literal(w) => parsed.positional.push(w),
         }
     }
-    let wanted = COMMANDS
-        .iter()
-        .find(|(c, _, _)| *c == parsed.command)
-        .map(|(_, a, _)| a.split_whitespace().count())
-        .unwrap_or(0);
+    let wanted = command.args.split_whitespace().count();
     if parsed.positional.len() != wanted {
         return Err(format!(
-            "`{}` takes {wanted} argument(s), got {}",
-            parsed.command,
+            "`{name}` takes {wanted} argument(s), got {}",
             parsed.positional.len()
         ));
     }
@@ -301,15 +191,15 @@ fn save(path: &str, bytes: &[u8]) -> Result<(), Fail> {
 
 fn error_model(args: &Args) -> Result<ErrorModel, Fail> {
     Ok(ErrorModel {
-        relation_error: args.probability("--error-rate", 0.15).map_err(usage)?,
-        size_error: args.probability("--size-error", 0.0).map_err(usage)?,
-        threshold: args.probability("--threshold", 0.5).map_err(usage)?,
+        relation_error: args.probability("error-rate", 0.15).map_err(usage)?,
+        size_error: args.probability("size-error", 0.0).map_err(usage)?,
+        threshold: args.probability("threshold", 0.5).map_err(usage)?,
         ..ErrorModel::default()
     })
 }
 
 fn style(args: &Args) -> FactStyle {
-    if args.flag("--holds") {
+    if args.flag("holds") {
         FactStyle::Holds
     } else {
         FactStyle::Obs
@@ -321,15 +211,14 @@ fn json<T: serde::Serialize>(value: &T) -> String {
 }
 
 fn run_command(args: &Args) -> Result<String, Fail> {
-    match args.command.as_str() {
+    match args.command.name {
         "generate" => {
-            let preset = Preset::parse(args.value("--preset").unwrap_or("simulated"))?;
-            let mut config =
-                GenerateConfig::new(preset, args.number("--seed", 0u64).map_err(usage)?);
-            if args.value("--objects").is_some() {
-                config.count = Some(args.number("--objects", 0usize).map_err(usage)?);
+            let preset = Preset::parse(args.value("preset").unwrap_or("simulated"))?;
+            let mut config = GenerateConfig::new(preset, args.number("seed", 0u64).map_err(usage)?);
+            if args.value("objects").is_some() {
+                config.count = Some(args.number("objects", 0usize).map_err(usage)?);
             }
-            let scene = if args.flag("--risky") {
+            let scene = if args.flag("risky") {
                 crate::vision::scenes::generate_risky(&crate::vision::scenes::RiskyConfig {
                     preset: config.preset,
                     seed: config.seed,
@@ -338,7 +227,7 @@ fn run_command(args: &Args) -> Result<String, Fail> {
             } else {
                 generate(&config)?
             };
-            match args.value("-o") {
+            match args.value("output") {
                 Some(path) => {
                     save(path, scene.to_json().as_bytes())?;
                     Ok(format!(
@@ -354,7 +243,7 @@ fn run_command(args: &Args) -> Result<String, Fail> {
         "observe" => {
             let scene = load(&args.positional[0])?;
             let percept = perceive(&scene, &error_model(args)?, &TruthConfig::default());
-            if args.flag("--json") {
+            if args.flag("json") {
                 Ok(json(&percept))
             } else {
                 Ok(percept.to_program(style(args)))
@@ -363,7 +252,7 @@ fn run_command(args: &Args) -> Result<String, Fail> {
         "truth" => {
             let scene = load(&args.positional[0])?;
             let truth = sim::measure(&scene, &TruthConfig::default());
-            if args.flag("--json") {
+            if args.flag("json") {
                 return Ok(json(&truth));
             }
             let mut out = format!("% ground truth at step {}\n", scene.step);
@@ -404,13 +293,16 @@ fn run_command(args: &Args) -> Result<String, Fail> {
             let mut scene = load(path)?;
             let action = Action::parse(&args.positional[1])?;
             let config = ActConfig {
-                failure_rate: args.probability("--failure-rate", 0.15).map_err(usage)?,
+                failure_rate: args.probability("failure-rate", 0.15).map_err(usage)?,
                 perception: error_model(args)?,
                 ..ActConfig::default()
             };
             let report = sim::execute(&mut scene, &action, &config)?;
-            save(args.value("-o").unwrap_or(path), scene.to_json().as_bytes())?;
-            if args.flag("--json") {
+            save(
+                args.value("output").unwrap_or(path),
+                scene.to_json().as_bytes(),
+            )?;
+            if args.flag("json") {
                 return Ok(json(&report));
             }
             let mut out = match &report.failure {
@@ -424,29 +316,32 @@ fn run_command(args: &Args) -> Result<String, Fail> {
         "step" => {
             let path = &args.positional[0];
             let mut scene = load(path)?;
-            let seconds: f32 = args.number("--seconds", 2.0).map_err(usage)?;
+            let seconds: f32 = args.number("seconds", 2.0).map_err(usage)?;
             if !(0.0..=60.0).contains(&seconds) {
                 return Err(usage(format!("--seconds needs 0 to 60, got {seconds}")));
             }
             let mut world = World::build(&scene);
             world.step_for(seconds);
             world.write_back(&mut scene);
-            save(args.value("-o").unwrap_or(path), scene.to_json().as_bytes())?;
+            save(
+                args.value("output").unwrap_or(path),
+                scene.to_json().as_bytes(),
+            )?;
             Ok(format!("% stepped {path} for {seconds} s\n"))
         }
         "render" => {
             let scene = load(&args.positional[0])?;
             let out = args
-                .value("-o")
+                .value("output")
                 .ok_or_else(|| usage("render needs -o FILE".into()))?;
-            let width: u32 = args.number("--width", 320).map_err(usage)?;
-            let height: u32 = args.number("--height", 200).map_err(usage)?;
+            let width: u32 = args.number("width", 320).map_err(usage)?;
+            let height: u32 = args.number("height", 200).map_err(usage)?;
             if !(8..=4096).contains(&width) || !(8..=4096).contains(&height) {
                 return Err(usage("image sides must be 8 to 4096 pixels".into()));
             }
-            let image = if args.flag("--top") {
+            let image = if args.flag("top") {
                 render_top(&scene, width, height)
-            } else if args.flag("--labelled") {
+            } else if args.flag("labelled") {
                 crate::sim::picture(&scene, width, height).image
             } else {
                 render_camera(&scene, width, height)
@@ -473,7 +368,7 @@ pub fn run_with(
     out: &mut dyn std::io::Write,
     err: &mut dyn std::io::Write,
 ) -> i32 {
-    if args.is_empty() || args.iter().any(|a| a == "--help" || a == "-h") || args[0] == "help" {
+    if args.is_empty() || VERB.asks_for_help(args) || args[0] == "help" {
         let _ = write!(out, "{}", help());
         return if args.is_empty() { EXIT_USAGE } else { EXIT_OK };
     }

@@ -62,6 +62,17 @@ pub enum Search {
     Fixed(usize),
 }
 
+impl Search {
+    /// The horizon search `lucent plan --search` names: `incremental`, `retranslate`.
+    pub fn from_name(name: &str) -> Option<Search> {
+        match name {
+            "incremental" => Some(Search::Incremental),
+            "retranslate" => Some(Search::Retranslate),
+            _ => None,
+        }
+    }
+}
+
 /// What the planner is asked.
 #[derive(Clone, Debug)]
 pub struct PlanConfig {

@@ -1,4 +1,6 @@
-//! Solver configuration: every knob the command line maps clingo/clasp options onto.
+//! Solver configuration: every knob the command line maps clingo/clasp options onto, and the
+//! clasp names of its modes (`OptMode::from_name`, `EnumMode::from_name`, ...), which the command
+//! line parses into these types directly.
 //!
 //! Invariant: a `Config` is a plain value; the solver never reads the clock or the environment
 //! except through the deadline and the interrupt flag given here (ARCHITECTURE.md, invariants:
@@ -23,6 +25,26 @@ pub enum OptMode {
     Ignore,
 }
 
+impl OptMode {
+    /// The mode clasp's `--opt-mode` names: `opt`, `optN`, `enum` or `ignore`, optionally
+    /// followed by bounds (`enum,3,4`). Every bound must be an integer; only `enum` keeps them
+    /// (clasp's initial bound of `opt` is not implemented). `None` for anything else.
+    pub fn from_name(text: &str) -> Option<OptMode> {
+        let mut parts = text.split(',');
+        let name = parts.next()?;
+        let bounds = parts
+            .map(|b| b.trim().parse::<i64>().ok())
+            .collect::<Option<Vec<_>>>()?;
+        match name {
+            "opt" => Some(OptMode::Opt),
+            "optN" => Some(OptMode::OptN),
+            "enum" => Some(OptMode::Enum(bounds)),
+            "ignore" => Some(OptMode::Ignore),
+            _ => None,
+        }
+    }
+}
+
 /// How models are enumerated or summarised (clasp `--enum-mode`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum EnumMode {
@@ -35,6 +57,19 @@ pub enum EnumMode {
     Cautious,
 }
 
+impl EnumMode {
+    /// The mode clasp's `--enum-mode` names: `auto`, `bt` and `record` (clasp's two ways of
+    /// enumerating answer sets, which here are the one plain enumeration), `brave`, `cautious`.
+    pub fn from_name(name: &str) -> Option<EnumMode> {
+        match name {
+            "auto" | "bt" | "record" => Some(EnumMode::Auto),
+            "brave" => Some(EnumMode::Brave),
+            "cautious" => Some(EnumMode::Cautious),
+            _ => None,
+        }
+    }
+}
+
 /// Which answer sets count for programs with consistency-restoring rules.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum CrMode {
@@ -43,6 +78,42 @@ pub enum CrMode {
     Cardinality,
     /// Set-inclusion-minimal sets of applied CR rules (original CR-Prolog).
     Subset,
+}
+
+impl CrMode {
+    /// The mode `--cr` names: `card` (or `cardinality`), `subset`.
+    pub fn from_name(name: &str) -> Option<CrMode> {
+        match name {
+            "card" | "cardinality" => Some(CrMode::Cardinality),
+            "subset" => Some(CrMode::Subset),
+            _ => None,
+        }
+    }
+}
+
+/// The decision heuristic (clasp `--heuristic`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Heuristic {
+    /// VSIDS with phase saving; clasp's `berkmin`, `vmtf`, `unit` and `none` are this one too
+    /// (they change the search order, never the answers).
+    #[default]
+    Vsids,
+    /// Follow the program's `#heuristic` statements without a condition, with the modifiers
+    /// level, sign, true and false, before VSIDS (`--heuristic=domain`).
+    Domain,
+}
+
+impl Heuristic {
+    /// The heuristic clasp's `--heuristic=<h>[,<n>]` names, in any case: `berkmin`, `vmtf`,
+    /// `vsids`, `unit` and `none` are [`Heuristic::Vsids`], `domain` [`Heuristic::Domain`].
+    pub fn from_name(text: &str) -> Option<Heuristic> {
+        let name = text.split(',').next()?.to_ascii_lowercase();
+        match name.as_str() {
+            "berkmin" | "vmtf" | "vsids" | "unit" | "none" => Some(Heuristic::Vsids),
+            "domain" => Some(Heuristic::Domain),
+            _ => None,
+        }
+    }
 }
 
 /// Solver configuration.
@@ -59,7 +130,7 @@ pub struct Config {
     /// Semantics for CR rules.
     pub cr_mode: CrMode,
     /// Enumerate projected models only (`--project`): onto `#project` atoms if present, else
-    /// onto the shown atoms.
+    /// onto the shown atoms ([`Config::project_from_name`] reads clasp's modes).
     pub project: bool,
     /// Stop with `UNKNOWN` once this instant has passed.
     pub deadline: Option<Instant>,
@@ -69,9 +140,8 @@ pub struct Config {
     pub seed: u64,
     /// Probability, in 1/1000, of a random decision instead of the VSIDS choice.
     pub random_freq_permille: u32,
-    /// Follow the program's `#heuristic` statements (`--heuristic=domain`): those without a
-    /// condition, with the modifiers level, sign, true and false.
-    pub domain_heuristic: bool,
+    /// The decision heuristic.
+    pub heuristic: Heuristic,
     /// VSIDS decay factor, in (0, 1). 0.92 as clasp's tweety (ARCHITECTURE.md, "Search
     /// settings", has the measurements).
     pub var_decay: f64,
@@ -213,7 +283,7 @@ impl Default for Config {
             deadline: None,
             interrupt: None,
             seed: 1,
-            domain_heuristic: false,
+            heuristic: Heuristic::Vsids,
             random_freq_permille: 0,
             var_decay: 0.92,
             default_phase_false: true,
@@ -243,6 +313,16 @@ impl Default for Config {
 }
 
 impl Config {
+    /// Whether clasp's `--project=<mode>[,...]` projects: `show`, `project` and `auto` do (all
+    /// three as [`Config::project`] describes), `no` and `0` do not; `None` for anything else.
+    pub fn project_from_name(text: &str) -> Option<bool> {
+        match text.split(',').next()? {
+            "show" | "project" | "auto" => Some(true),
+            "no" | "0" if !text.contains(',') => Some(false),
+            _ => None,
+        }
+    }
+
     /// A configuration computing all models (`-n 0`).
     pub fn all_models() -> Config {
         Config {

@@ -46,7 +46,7 @@ pub(crate) use cr::transitive_closure;
 mod search;
 mod strategies;
 
-use super::config::{Config, CrMode, EnumMode, OptMode, RestartPolicy, SearchProfile};
+use super::config::{Config, CrMode, EnumMode, Heuristic, OptMode, RestartPolicy, SearchProfile};
 use super::engine::{Engine, Restarts, SearchResult, Settings};
 use super::lit::{Lit, Var};
 use super::result::{Model, Outcome, SolveResult, Stats, StopReason};
@@ -218,7 +218,7 @@ impl Solver {
             engine.settings.save_progress = 160;
             engine.settings.sign_from_learnts = true;
         }
-        if config.domain_heuristic {
+        if config.heuristic == Heuristic::Domain {
             apply_domain_heuristics(&prog, &tr, &mut engine);
         }
         let cr_lits = prog

@@ -35,6 +35,17 @@ pub enum Dialect {
     Sparc,
 }
 
+impl Dialect {
+    /// The dialect `--dialect` names: `clingo` (or `asp`), `sparc`.
+    pub fn from_name(name: &str) -> Option<Dialect> {
+        match name {
+            "clingo" | "asp" => Some(Dialect::Clingo),
+            "sparc" => Some(Dialect::Sparc),
+            _ => None,
+        }
+    }
+}
+
 /// One statement with its span (from its first token to its closing period).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Statement {
