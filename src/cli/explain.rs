@@ -895,6 +895,7 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
 /// names the run in messages): one `(question, answer)` pair per question, in order, each
 /// answer with its proof tree when it has one; the step of a question carries to the next.
 /// `Err` with the error's text when the run has no history.
+#[cfg(feature = "sim")]
 pub(super) fn ask_run(
     run: &crate::plan::history::History,
     name: &str,

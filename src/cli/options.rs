@@ -42,6 +42,7 @@ pub struct OptionSpec {
     pub group: &'static str,
 }
 
+/// A table row (`const`, so tables are `static` data).
 pub const fn opt(
     long: &'static str,
     short: Option<char>,
@@ -361,6 +362,7 @@ impl OptionSpec {
     }
 
     /// The verbs' reading of a probability, a number in [0, 1].
+    #[cfg(feature = "sim")]
     pub fn probability(&self, value: &str) -> Result<f64, String> {
         match value.parse::<f64>() {
             Ok(p) if (0.0..=1.0).contains(&p) => Ok(p),
