@@ -836,11 +836,9 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
             }
         }
     }
-    let config = ControlConfig {
-        provenance: true,
-        consts,
-        ..ControlConfig::default()
-    };
+    let mut config = ControlConfig::default();
+    config.ground.provenance = true;
+    config.ground.consts = consts;
     let mut ctl = Control::with_sources(config, sources.clone());
     let grounded = ctl
         .add_program(program)

@@ -467,14 +467,12 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
     let mut sources = SourceMap::new();
     let (loaded, load_diags) = input::load(&options.files, io.stdin, &mut sources);
     diags.extend(load_diags);
-    let config = ControlConfig {
-        consts,
-        deadline,
-        provenance: options.provenance,
-        message_limit: options.message_limit,
-        disabled_warnings: options.disabled_warnings.clone(),
-        ..ControlConfig::default()
-    };
+    let mut config = ControlConfig::default();
+    config.ground.consts = consts;
+    config.ground.deadline = deadline;
+    config.ground.provenance = options.provenance;
+    config.ground.message_limit = Some(options.message_limit);
+    config.disabled_warnings = options.disabled_warnings.clone();
     let mut control = Control::with_sources(config, sources);
     // All inputs form one program, as gringo reads several files.
     for input in &loaded {

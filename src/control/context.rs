@@ -52,7 +52,7 @@ impl Control {
                 self.externals.insert(a, external_value(v));
             }
         }
-        if self.config.provenance {
+        if self.config.ground.provenance {
             self.gatoms = program.provenance.atoms.clone();
             self.gatom_of_sym = self
                 .gatoms
@@ -405,7 +405,7 @@ impl Control {
         local: &GroundProgram,
         map: &[AtomId],
     ) -> Option<Vec<GAtom>> {
-        if !self.config.provenance || local.provenance.atoms.is_empty() {
+        if !self.config.ground.provenance || local.provenance.atoms.is_empty() {
             return None;
         }
         let mut gmap = vec![0 as GAtom; local.provenance.atoms.len() + 1];

@@ -64,7 +64,6 @@ pub(crate) mod symbol;
 
 use std::cell::OnceCell;
 use std::path::Path;
-use std::time::Instant;
 
 use hashbrown::{HashMap, HashSet};
 
@@ -93,19 +92,12 @@ pub type AtomId = ground::program::Atom;
 pub struct ControlConfig {
     /// The solver's configuration (models to enumerate, optimization, CR semantics, ...).
     pub solve: solve::Config,
-    /// `-c name=value` constants; they override `#const` definitions without `[override]`.
-    /// [`const_term`] reads a value written as text.
-    pub consts: Vec<(String, ast::Term)>,
-    /// Record the origin of every ground rule.
-    pub provenance: bool,
-    /// Diagnostics limit per call (gringo's default is 20).
-    pub message_limit: usize,
+    /// The grounder's configuration: `-c name=value` constants ([`const_term`] reads a value
+    /// written as text), provenance, the size and time limits, the diagnostics limit per call.
+    /// Each grounding gets it with the part's parameters appended to the constants.
+    pub ground: GroundConfig,
     /// Warning kinds not reported (`-W no-...`).
     pub disabled_warnings: Vec<WarningKind>,
-    /// Grounding stops with a diagnostic after this instant.
-    pub deadline: Option<Instant>,
-    /// Grounding stops with a diagnostic when ground rules plus atoms exceed this number.
-    pub max_size: Option<usize>,
     /// The language of added text; `None` detects it per text (SPARC or clingo).
     pub dialect: Option<Dialect>,
 }
@@ -117,12 +109,12 @@ impl Default for ControlConfig {
                 models: 0,
                 ..solve::Config::default()
             },
-            consts: Vec::new(),
-            provenance: false,
-            message_limit: 20,
+            ground: GroundConfig {
+                // gringo's default.
+                message_limit: Some(20),
+                ..GroundConfig::default()
+            },
             disabled_warnings: Vec::new(),
-            deadline: None,
-            max_size: None,
             dialect: None,
         }
     }
@@ -682,7 +674,7 @@ impl Control {
         Solved { models, summary }
     }
 
-    /// With provenance on ([`ControlConfig::provenance`]): statement `id` of the origins in
+    /// With provenance on ([`GroundConfig::provenance`]): statement `id` of the origins in
     /// [`Control::provenance`] (ids count the statements of every grounding, in order) and
     /// the part instance it was grounded in. `None` without provenance.
     pub fn statement(&self, id: u32) -> Option<&GroundedStatement> {

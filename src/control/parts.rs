@@ -240,6 +240,7 @@ impl Control {
     fn get_const_depth(&self, name: &str, depth: usize) -> Option<Symbol> {
         let term = self
             .config
+            .ground
             .consts
             .iter()
             .rev()
@@ -326,7 +327,7 @@ impl Control {
         let mut parts: Vec<Part> = Vec::new();
         for &b in blocks {
             counts.push(self.blocks[b].statements.len());
-            if self.config.provenance {
+            if self.config.ground.provenance {
                 let block = &self.blocks[b];
                 let args = block
                     .params
@@ -348,7 +349,7 @@ impl Control {
         for (b, st) in &self.globals {
             if !blocks.contains(b) {
                 statements.push(st.clone());
-                if self.config.provenance {
+                if self.config.ground.provenance {
                     let block = &self.blocks[*b];
                     parts.push(Part::new(block.name.clone(), Vec::new()));
                 }
@@ -359,27 +360,22 @@ impl Control {
             dialect: self.dialect.unwrap_or_default(),
             statements,
         };
-        let mut consts = self.config.consts.clone();
-        consts.extend(binding.iter().map(|(n, v)| (n.clone(), v.to_term())));
-        let gconfig = GroundConfig {
-            consts,
-            max_size: self.config.max_size,
-            deadline: self.config.deadline,
-            provenance: self.config.provenance,
-            message_limit: Some(self.config.message_limit),
-        };
+        let mut gconfig = self.config.ground.clone();
+        gconfig
+            .consts
+            .extend(binding.iter().map(|(n, v)| (n.clone(), v.to_term())));
         let syms = std::mem::take(&mut self.syms);
         let mut grounding = self
             .session
             .ground(&program, Some(&self.sources), &gconfig, syms);
         self.syms = std::mem::take(&mut grounding.symbols);
+        let mut found = std::mem::take(&mut grounding.diagnostics);
         for &k in &self.config.disabled_warnings {
-            grounding.diagnostics.disable(k);
+            found.disable(k);
         }
         let mut d = self.new_diags();
         d.extend(
-            grounding
-                .diagnostics
+            found
                 .items()
                 .iter()
                 .filter(|x| {
@@ -389,7 +385,6 @@ impl Control {
                 })
                 .cloned(),
         );
-        grounding.diagnostics = Diagnostics::new(self.config.message_limit);
         if d.has_errors() {
             if take {
                 let mut rest = program.statements.into_iter();
@@ -402,7 +397,7 @@ impl Control {
         self.diags.extend(d.items().iter().cloned());
         self.groundings += 1;
         let offset = self.stmts.len() as u32;
-        if self.config.provenance {
+        if self.config.ground.provenance {
             let statements = program.statements.into_iter().take(own);
             self.stmts.extend(
                 parts

@@ -629,10 +629,8 @@ pub fn explain_steps(
     let mut labels = Labels::from_origins(&t.origins);
     let mut program = t.program;
     gate_history(&mut program, &t.origins, &mut labels);
-    let ctl_config = ControlConfig {
-        provenance: true,
-        ..ControlConfig::default()
-    };
+    let mut ctl_config = ControlConfig::default();
+    ctl_config.ground.provenance = true;
     let solve = |program: ast::Program, sources: &SourceMap| -> Result<_, HistoryError> {
         let mut ctl = Control::with_sources(ctl_config.clone(), sources.clone());
         ctl.add_program(program)

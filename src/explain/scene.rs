@@ -132,7 +132,7 @@ pub fn why(
     let labels = Labels::from_origins(&translation.origins);
     let mut config = ControlConfig::default();
     config.solve.models = 1;
-    config.provenance = true;
+    config.ground.provenance = true;
     let mut ctl = Control::new(config);
     ctl.add_program(translation.program)
         .map_err(|e| SceneWhyError::Knowledge(e.message))?;

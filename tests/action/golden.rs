@@ -51,15 +51,15 @@ fn translate_scene(
 
 /// A Control with the translation grounded (`base`).
 fn grounded(sources: SourceMap, t: &action::Translation, provenance: bool) -> Control {
-    let config = ControlConfig {
+    let mut config = ControlConfig {
         solve: Config {
             models: 0,
             check_models: true,
             ..Config::default()
         },
-        provenance,
         ..ControlConfig::default()
     };
+    config.ground.provenance = provenance;
     let mut ctl = Control::with_sources(config, sources);
     ctl.add_program(t.program.clone())
         .expect("the translation is kept");

@@ -16,10 +16,9 @@ fn step(t: i32) -> Part {
 }
 
 fn with_provenance() -> ControlConfig {
-    ControlConfig {
-        provenance: true,
-        ..ControlConfig::default()
-    }
+    let mut config = ControlConfig::default();
+    config.ground.provenance = true;
+    config
 }
 
 fn models(ctl: &mut Control) -> Vec<String> {
@@ -214,10 +213,9 @@ fn a_completed_atom_gets_no_rules_later() {
         ),
     ] {
         for provenance in [false, true] {
-            let mut ctl = Control::new(ControlConfig {
-                provenance,
-                ..ControlConfig::default()
-            });
+            let mut config = ControlConfig::default();
+            config.ground.provenance = provenance;
+            let mut ctl = Control::new(config);
             ctl.add("base.lp", base).unwrap();
             ctl.add("step.lp", &format!("#program step(t). {step_text}"))
                 .unwrap();
