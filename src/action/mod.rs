@@ -2,8 +2,8 @@
 //! CR-Prolog programs (docs/domain.md section 3).
 //!
 //! Pipeline: [`parse`] (text to [`ast::Description`], never fails), [`load`] (resolves
-//! `include`s through a caller-supplied reader: only `cli` and tests touch files), [`check`]
-//! (switches, profile, signature, sorts of variables) and [`translate`] (a syntax tree of the
+//! `include`s through a caller-supplied reader: only `cli` and tests touch files), [`fn@check`]
+//! (switches, profile, signature, sorts of variables) and [`fn@translate`] (a syntax tree of the
 //! clingo dialect, printed by [`crate::syntax::printer`], with one [`AxiomOrigin`] per generated
 //! statement).
 //!

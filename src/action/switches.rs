@@ -60,7 +60,7 @@ pub enum HorizonMode {
     Fixed,
     /// Steps `0..=horizon`, with the goal required exactly at the last step.
     Iterative,
-    /// One `step(k)` part per step (see [`crate::action::parts`]).
+    /// One `step(k)` part per step (see `action::parts`).
     Incremental,
     /// One action at every step before the horizon, goal or not: the transitions a plan
     /// checker explores.

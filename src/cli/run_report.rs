@@ -9,7 +9,7 @@
 //! SVG, the answer's path in green.
 //!
 //! Pictures are filmed while the loop runs: [`Filming`] wraps the acting world and renders the
-//! framed, labelled camera view ([`crate::sim::picture`]) after every executed action.
+//! framed, labelled camera view ([`fn@crate::sim::picture`]) after every executed action.
 //!
 //! Invariants: the page needs no network and no other file (pictures are PNG `data:` URIs,
 //! proof trees inline SVG); every text from the run is HTML-escaped; a small script at the end

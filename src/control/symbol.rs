@@ -360,7 +360,7 @@ impl Symbol {
         }
     }
 
-    /// The ground symbol a syntax-tree term denotes, the inverse of [`Symbol::to_term`] (and of
+    /// The ground symbol a syntax-tree term denotes, the inverse of `Symbol::to_term` (and of
     /// a constant written plainly); `None` when the term has variables or operations other
     /// than a minus sign.
     pub fn from_term(t: &ast::Term) -> Option<Symbol> {

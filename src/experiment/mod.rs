@@ -1,6 +1,6 @@
 //! The H1-H4 experiment harness (docs/domain.md 7): trials from a recorded seed, one JSON result
 //! per trial in a [`Store`], rayon over trials, and aggregation into the paper's tables
-//! ([`report`]) with SVG plots ([`svg`]).
+//! (`report`) with SVG plots (`svg`).
 //!
 //! Invariants:
 //! - A trial is `(hypothesis, config, index)` with a stable id ([`Trial::id`]); its seed is a

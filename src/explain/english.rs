@@ -1,8 +1,9 @@
 //! Controlled English in: questions and requests to the robot (docs/domain.md 6.1) parsed into a
 //! structured [`Question`].
 //!
-//! The words come from the [`Lexicon`] (data, `domains/ra/lexicon.json`); this module holds only
-//! the grammar, a handful of patterns over normalized tokens:
+//! The words come from the [`Lexicon`](super::lexicon::Lexicon) (data,
+//! `domains/ra/lexicon.json`); this module holds only the grammar, a handful of patterns over
+//! normalized tokens:
 //!
 //! ```text
 //! request  = goal (["and"] (goal | object on object))*          -> Question::Goal

@@ -14,13 +14,13 @@
 //! - [`build`]: proof trees built over a ground program and an answer set (docs/domain.md 6.2);
 //! - [`questions`]: the four questions of docs/domain.md 6.3-6.6 over a program, answer set and
 //!   plan;
-//! - [`oracle`]: the adapter from a `control::Control` (ground program, provenance, a model)
+//! - `oracle`: the adapter from a `control::Control` (ground program, provenance, a model)
 //!   to the trees' `Oracle`;
 //! - [`history`]: an AL_d planning problem and its executed actions, solved into an oracle;
 //! - [`counterfactual`]: what if (the history with another action, re-solved) and why no plan
 //!   (a minimal set of goal literals, observations and constraints, by deletion over
 //!   assumptions);
-//! - [`generic`]: why and why-not of an atom of any program's answer set, as text;
+//! - `generic`: why and why-not of an atom of any program's answer set, as text;
 //! - `scene` (feature `sim`): why the robot believes an object of a looked-at scene is
 //!   (un)stable or (not) occluded, over the classification-mode answer set of `vision::reason`;
 //! - [`draw`]: proof trees as DOT text and as SVG drawn here;

@@ -5,10 +5,10 @@
 //! aspif (`program` is the in-memory form, `aspif` reads and writes it), so our grounder can be
 //! checked by clasp and our solver can be fed by gringo.
 //!
-//! Pipeline: [`rewrite`] (constants, pools, intervals, safety, body order) ->
-//! [`instantiate`] (components in dependency order, semi-naive joins) -> [`simplify`]
+//! Pipeline: `rewrite` (constants, pools, intervals, safety, body order) ->
+//! `instantiate` (components in dependency order, semi-naive joins) -> `simplify`
 //! (propagate false atoms and facts, number atoms, build outputs). [`text`] prints the result as
-//! `gringo --text` does; [`reference`] is the naive grounder the tests compare against.
+//! `gringo --text` does; [`mod@reference`] is the naive grounder the tests compare against.
 
 pub mod program;
 pub mod aspif;
@@ -143,7 +143,7 @@ impl Grounding {
 }
 
 /// Grounds `program`. `sources`, when given, supplies the text shown in diagnostics. One
-/// grounding pipeline: this is a multi-shot [`incremental::Session`] used once.
+/// grounding pipeline: this is a multi-shot `incremental::Session` used once.
 pub fn ground(
     program: &ast::Program,
     sources: Option<&SourceMap>,

@@ -448,7 +448,7 @@ fn induce(
     Some((learned.kept, lifted, (features, table)))
 }
 
-/// Keeps one feature of each group of identical columns [ours]: the trees cannot tell them
+/// Keeps one feature of each group of identical columns \[ours\]: the trees cannot tell them
 /// apart, and a seeded tie-break between them would split the vote between two spellings of
 /// one fact (`below(O1, O2)` and `on(O2, O1)` when every covered object has its cover directly
 /// on it). The kept one is the lowest by [`Algebra::rank`], then the first created.

@@ -7,7 +7,7 @@
 //! Lifting (the code's heuristic, made deterministic): variables get a sort prefix and an index
 //! in order of first appearance over the action, the unexpected literals, then the relevant
 //! literals sorted canonically. (docs/domain.md lists the unexpected literal before the action; we
-//! put the action first [ours] so that its variables are the same in every sample of a dataset,
+//! put the action first \[ours\] so that its variables are the same in every sample of a dataset,
 //! label 0 samples included; for the heads of the H1 targets both orders agree.) A literal with a constant that has no variable yet is matched,
 //! with that constant as a wildcard, against the features already in the vocabulary; a match
 //! lends its variable at that position, otherwise the next free index is taken. The wildcard
@@ -15,7 +15,7 @@
 //! "some object not in hand" becomes one feature `-in_hand(R1, O5)` distinct from the action
 //! object's `-in_hand(R1, O1)`.
 //!
-//! Normalization [ours]: with [`Algebra`], a converse (`above(B, A)` for `below(A, B)`) or a
+//! Normalization \[ours\]: with [`Algebra`], a converse (`above(B, A)` for `below(A, B)`) or a
 //! symmetric relation is written in one form (the first argument the smaller variable), so the
 //! trees do not split votes between two spellings of one state fact.
 //!
@@ -44,7 +44,7 @@ impl Signature {
     }
 }
 
-/// Facts of the relation algebra used to normalize lifted literals [ours].
+/// Facts of the relation algebra used to normalize lifted literals \[ours\].
 #[derive(Clone, Debug, Default)]
 pub struct Algebra {
     /// Converse pairs `(S1, S2)`: `rel(S1, A, B)` iff `rel(S2, B, A)`; listed once per pair, the
@@ -72,7 +72,7 @@ impl Algebra {
         }
     }
 
-    /// The preference among features that no sample tells apart (lower is kept) [ours]: the
+    /// The preference among features that no sample tells apart (lower is kept) \[ours\]: the
     /// hand fluent, then positional relations, then distance relations, then composed ones
     /// (`on(B, A)` says more than `below(A, B)`; when the data cannot tell them apart, the
     /// weaker statement is the one they support).

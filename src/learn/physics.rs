@@ -2,7 +2,7 @@
 //! trial is built as a rapier scene, the action is executed by `sim::execute`, and the observed
 //! successor state is measured geometrically, in place of KB_full's answer.
 //!
-//! Scene [ours]: each named object has a kind, colour and size (the H1 scene: [`Catalogue::h1`]).
+//! Scene \[ours\]: each named object has a kind, colour and size (the H1 scene: [`Catalogue::h1`]).
 //! Objects `on` the table stand on fixed slots, two rows of four, 0.28 m apart laterally and
 //! 0.5 m in depth, so objects on the table never touch and `sim::execute`'s free-spot search
 //! finds the strip between the rows for a `putdown` on the table; an object `on` another stands
@@ -18,7 +18,7 @@
 //! (`HandFull`, `Covered`, `NotHeld`, a held destination) means the action is not executable
 //! (no successor state).
 //!
-//! Observation [ours]: the support relations `on`, `above`, `below` and `touch` (objects and
+//! Observation \[ours\]: the support relations `on`, `above`, `below` and `touch` (objects and
 //! the table) and `in_hand`, positive literals only, as 5.1 compares them. The positional and
 //! distance relations (`left`, `front`, `far`, ...) are not observed: the learner's states are
 //! built from `on` facts alone, where D0 makes them false, so the physics world would report

@@ -186,7 +186,7 @@ pub struct CollectConfig {
     /// Drop inconsistent trials that no positive case accepts (the code stores them with label
     /// 0, which contradicts their outcome).
     pub balance_fix: bool,
-    /// [ours] A trial is evidence for a dataset only when the missing axiom could have shown
+    /// \[ours\] A trial is evidence for a dataset only when the missing axiom could have shown
     /// in it: CL samples only from trials where both sides executed the action (effects are
     /// observable), EC samples only from trials where the learner took the action to be
     /// executable (else a known condition already forbids it). Off replicates the code.
@@ -279,10 +279,10 @@ impl Collector {
         }
     }
 
-    /// How many consecutive trials without a new sample end collection [ours]: `base`, or
+    /// How many consecutive trials without a new sample end collection \[ours\]: `base`, or
     /// `factor` times the mean gap (trials offered per would-be sample) of the rarest class a
     /// dataset that is not full still wants (positives below the cap; negatives by
-    /// [`Self::wants_negative`]), whichever is longer; a class seen fewer than twice has no
+    /// `Self::wants_negative`), whichever is longer; a class seen fewer than twice has no
     /// rate yet and does not count. Why: a sample that arrives once in 50 trials is given up
     /// after 100 quiet trials in 13% of episodes. E2's negatives (an executable putdown of the
     /// held object, ~1.3% of putdown trials before C2 is known) were, in run 16 of seed 0: the

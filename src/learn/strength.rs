@@ -1,4 +1,4 @@
-//! Learned axioms as knowledge, with a strength that decays (docs/domain.md 5.9 [ours]).
+//! Learned axioms as knowledge, with a strength that decays (docs/domain.md 5.9 \[ours\]).
 //!
 //! A learned axiom starts at strength 1; after each learning episode its strength is multiplied
 //! by `e^(-λ)` with `λ = ln 2 / 5` (a half-life of five episodes); learning it again (equal or a

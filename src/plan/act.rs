@@ -21,7 +21,7 @@
 //! recorded when they differ on `relation(on, X, Y)` (positive) or `in_hand(R, O)`, or when the
 //! world reports a failed action. The discrepancy carries all positive observable literals.
 //!
-//! Three guards before giving up or acting [ours]: when the planner finds no plan from a belief,
+//! Three guards before giving up or acting \[ours\]: when the planner finds no plan from a belief,
 //! the robot looks again (`RunConfig::relooks` times, fresh perceptions) and plans from the new
 //! belief; before each action of an older plan it checks the action against the current
 //! belief (the one-step prediction is empty when the domain says it is not executable) and

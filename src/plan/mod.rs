@@ -1,5 +1,5 @@
 //! The planner (docs/domain.md 4): a client of [`crate::control::Control`] and
-//! [`crate::action::translate`].
+//! [`mod@crate::action::translate`].
 //!
 //! - [`plan`] finds the minimal plans of an AL_d planning problem (a description with an
 //!   initial state and a goal): `search` grounds one new step part per horizon on one

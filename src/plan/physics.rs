@@ -7,7 +7,7 @@
 //! `on(X, Y)` with X a movable object and Y a location (an object or the table) other than X
 //! whose top is flat and which is not small, the goal not already true in the scene.
 //!
-//! Scenes at rest [ours]: a generated scene is settled further until the stability test finds
+//! Scenes at rest \[ours\]: a generated scene is settled further until the stability test finds
 //! every object at rest ([`settle_to_rest`]); a seed whose scene does not come to rest gives no
 //! task ([`Skip::NotAtRest`]), since the domain takes the perceived scene as stable and no plan
 //! could then pass the physics check.

@@ -17,6 +17,10 @@
 //! horizon the initial state is solved alone: no answer set is [`PlanError::InitiallyUnstable`]
 //! when dropping the stability constraint restores one (the objects named), else
 //! [`PlanError::Inconsistent`].
+//!
+//! [`Search::Incremental`]: super::Search::Incremental
+//! [`Search::Retranslate`]: super::Search::Retranslate
+//! [`Search::Fixed`]: super::Search::Fixed
 
 use super::{Plan, PlanConfig, PlanError, Plans};
 use crate::action::{self, ast::Description, HorizonMode, Options, Switches};

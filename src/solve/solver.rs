@@ -519,7 +519,7 @@ impl Solver {
 
     /// [`Solver::for_each_model`] for callers that read the models' supports rarely: every
     /// model comes without [`Model::support`] (whatever `Config::supports` says), and `sink`
-    /// gets the program too, so that it can compute them on demand with [`supports`] (the
+    /// gets the program too, so that it can compute them on demand with `solver::supports` (the
     /// same answer); a caller that reads few of them skips building the rest.
     pub fn for_each_model_lazy(
         &mut self,

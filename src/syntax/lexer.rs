@@ -314,7 +314,7 @@ impl<'a> Lexer<'a> {
     /// The fast path reads the common tokens (names, variables, decimal numbers other than
     /// `0...`, punctuation) after plain whitespace with one class-table load per byte and calls
     /// nothing, so it saves no registers; anything else (comments, strings, `#` names, `_`,
-    /// `0x...`, bad characters, the end of the input) goes to [`Lexer::next_token_slow`].
+    /// `0x...`, bad characters, the end of the input) goes to `Lexer::next_token_slow`.
     pub fn next_token(&mut self, diags: &mut Vec<Diagnostic>) -> Token {
         use TokenKind as T;
         let bytes = self.bytes;

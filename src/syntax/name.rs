@@ -3,7 +3,7 @@
 //!
 //! Role: a parse makes one name per identifier and variable token (some 330 for the 44-line
 //! learner program) and drops them all with the tree; as `String`s they were a third of the
-//! parser's allocations. A name of up to [`INLINE`] bytes is stored in the value itself; a
+//! parser's allocations. A name of up to `INLINE` bytes is stored in the value itself; a
 //! longer one is an `Arc<str>` shared by its clones.
 //!
 //! Invariants:
@@ -155,7 +155,7 @@ impl From<Name> for String {
 
 impl PartialEq for Name {
     /// Two inline names compare as their 24 bytes (the bytes past `len` are zero); a text of
-    /// up to [`INLINE`] bytes is always inline, so an inline name never equals a shared one.
+    /// up to `INLINE` bytes is always inline, so an inline name never equals a shared one.
     #[inline]
     fn eq(&self, other: &Name) -> bool {
         match (&self.0, &other.0) {

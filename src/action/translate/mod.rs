@@ -6,7 +6,7 @@
 //!   statement's spans are those of the AL_d statement it came from (declaration-derived rules
 //!   use the declaration's span; fixed rules such as inertia carry no source statement).
 //! - Every variable of a generated rule is bound by a sort atom or by a positive literal, so the
-//!   program is safe; sort atoms come from the checker's [`StatementInfo`].
+//!   program is safe; sort atoms come from the checker's `StatementInfo`.
 //! - `h(l, I)` is `holds(f, I)` or `-holds(f, I)`; statics keep their own predicates without a
 //!   step; actions occur as `occurs(a, I)`. The step variable never clashes with a variable of
 //!   the description.

@@ -211,7 +211,7 @@ impl Matcher<'_, '_, '_> {
         self.belief_body(not)
     }
 
-    /// hold object [step] after "you": "why were you holding the pot" asks about the robot's
+    /// hold object \[step\] after "you": "why were you holding the pot" asks about the robot's
     /// hand.
     fn holding(&mut self, not: bool) -> Step<Question> {
         let lex = self.p.lexicon;
@@ -229,7 +229,7 @@ impl Matcher<'_, '_, '_> {
         })
     }
 
-    /// object ["be"|"do"] ["not"] (property | relation object) [step]; `negated` when the
+    /// object ["be"|"do"] ["not"] (property | relation object) \[step\]; `negated` when the
     /// auxiliaries before the subject said "not" ("why isn't the mug on the table").
     fn belief_body(&mut self, negated: bool) -> Step<Question> {
         let subject = self.object()?;

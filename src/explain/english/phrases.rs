@@ -112,7 +112,7 @@ impl Matcher<'_, '_, '_> {
         Some(vec![self.goal_literal(&action)?])
     }
 
-    /// verb [particle] object ("and" object)+ [particle] [on-phrase object]: several objects
+    /// verb \[particle\] object ("and" object)+ \[particle\] [on-phrase object]: several objects
     /// with one verb and one target.
     fn shared_goal(&mut self) -> Step<Vec<Symbol>> {
         let lex = self.p.lexicon;
@@ -213,7 +213,7 @@ impl Matcher<'_, '_, '_> {
         None
     }
 
-    /// verb [particle] object [particle] [on-phrase object], over the lexicon's verbs.
+    /// verb \[particle\] object \[particle\] [on-phrase object], over the lexicon's verbs.
     pub(super) fn action(&mut self) -> Step<Pattern> {
         let lex = self.p.lexicon;
         for verb in &lex.verbs {

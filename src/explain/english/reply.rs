@@ -40,7 +40,8 @@ pub enum NotUnderstood {
 
 impl NotUnderstood {
     /// The reply to the human: what was not understood, and what the robot can answer (the
-    /// examples name the lexicon's help objects; [`Parser::reply`] names the scene's).
+    /// examples name the lexicon's help objects; [`Parser::reply`](super::Parser::reply) names
+    /// the scene's).
     pub fn reply(&self, lexicon: &Lexicon) -> String {
         self.reply_about(lexicon, &lexicon.help_objects)
     }

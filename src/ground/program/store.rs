@@ -10,7 +10,7 @@ use super::{Atom, BodyRef, HeadKind, Lit, Rule, RuleRef, Weight};
 /// Where one rule of a [`Rules`] store ends in each of the store's arrays.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 struct Ends {
-    /// End in `heads`, with [`CHOICE`] set for a choice rule.
+    /// End in `heads`, with `CHOICE` set for a choice rule.
     head: usize,
     /// End in `lits` (normal bodies).
     lit: usize,
@@ -28,7 +28,7 @@ const CHOICE: usize = 1 << (usize::BITS - 1);
 /// heap block per non-empty head and body, several times more for the millions of small
 /// constraints some programs ground to.
 ///
-/// Invariants: `ends` is non-decreasing in each component (with [`CHOICE`] masked off); rule
+/// Invariants: `ends` is non-decreasing in each component (with `CHOICE` masked off); rule
 /// `i` spans from the ends of rule `i - 1` (0 for the first) to its own; a weight body starts
 /// with one entry `(0, lower)` holding its bound (no literal is 0), so a rule has a weight body
 /// exactly when its `wlits` range is not empty, and then its `lits` range is empty. Equal rule
