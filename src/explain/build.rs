@@ -203,7 +203,7 @@ impl<'o> Builder<'o> {
 
     /// One support as a node, or `None` if its branch is dropped.
     fn support(&mut self, literal: &Symbol, rule: RuleInstance, depth: usize) -> Option<NodeId> {
-        let kind = self.classify(literal, &rule);
+        let kind = classify(literal, &rule);
         if kind.is_leaf_kind() {
             return Some(self.add(Node::supported(literal.clone(), kind, rule)));
         }
@@ -260,28 +260,6 @@ impl<'o> Builder<'o> {
         rule.positive().all(|t| self.oracle.holds(t))
             && rule.negative().all(|t| !self.oracle.holds(t))
             && (rule.kind != AxiomKind::CrRule || self.oracle.applied(rule))
-    }
-
-    /// The node kind of a support.
-    fn classify(&self, literal: &Symbol, rule: &RuleInstance) -> Kind {
-        let is_action = literal.name() == Some("occurs") && !literal.is_negative();
-        let is_holds = literal.name() == Some("holds");
-        match rule.kind {
-            AxiomKind::Fact if is_action => Kind::Action,
-            AxiomKind::Fact if is_holds => Kind::Observation,
-            AxiomKind::Fact | AxiomKind::Sort => Kind::Static,
-            AxiomKind::History if is_action => Kind::Action,
-            AxiomKind::History if rule.negative().next().is_some() => Kind::ClosedWorld,
-            AxiomKind::History => Kind::Observation,
-            AxiomKind::Planning if is_action => Kind::Action,
-            AxiomKind::CrRule => Kind::Assumption,
-            AxiomKind::ClosedWorld => Kind::ClosedWorld,
-            AxiomKind::Inertia => Kind::Inertia,
-            kind => Kind::Axiom {
-                label: rule.label.clone(),
-                kind,
-            },
-        }
     }
 
     /// The preference rank of a support (docs/domain.md 6.2, path choice).
@@ -533,4 +511,26 @@ pub fn origin_alternative(
             n.literal == *lit && !is_spatial_node(n, spatial_labels)
         })
         .unwrap_or(chosen)
+}
+
+/// The node kind of a support.
+pub(super) fn classify(literal: &Symbol, rule: &RuleInstance) -> Kind {
+    let is_action = literal.name() == Some("occurs") && !literal.is_negative();
+    let is_holds = literal.name() == Some("holds");
+    match rule.kind {
+        AxiomKind::Fact if is_action => Kind::Action,
+        AxiomKind::Fact if is_holds => Kind::Observation,
+        AxiomKind::Fact | AxiomKind::Sort => Kind::Static,
+        AxiomKind::History if is_action => Kind::Action,
+        AxiomKind::History if rule.negative().next().is_some() => Kind::ClosedWorld,
+        AxiomKind::History => Kind::Observation,
+        AxiomKind::Planning if is_action => Kind::Action,
+        AxiomKind::CrRule => Kind::Assumption,
+        AxiomKind::ClosedWorld => Kind::ClosedWorld,
+        AxiomKind::Inertia => Kind::Inertia,
+        kind => Kind::Axiom {
+            label: rule.label.clone(),
+            kind,
+        },
+    }
 }

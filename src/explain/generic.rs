@@ -1,7 +1,8 @@
 //! Why and why not for any program (the use case xclingo serves): the proof tree of an atom in
 //! an answer set, over any [`Oracle`] (in practice `oracle::ProgramOracle` over a clingo
-//! program grounded with provenance), written out as text: the preferred proof (the first
-//! support of the atom, then of every positive body literal, recursively), each step with the
+//! program grounded with provenance), written out as text: for a true atom the least proof of
+//! `explain::support` (built bottom-up from the answer set, linear in the ground program; the
+//! search of `explain::build` when an atom of it rests on a weight body), each step with the
 //! rule instance and its source location; default-negated literals as "no evidence of"; for an
 //! atom that does not hold, every rule for it with the body literal that blocks it.
 //!
@@ -10,15 +11,21 @@
 //! nothing here panics on any atom, known to the program or not.
 
 use super::build::{BuildConfig, Builder};
+use super::oracle::ProgramOracle;
 use super::questions::{Answer, AnswerError};
+use super::support::Supports;
 use super::tree::{recheck, Kind, NodeId, Oracle, ProofTree};
 use crate::control::Symbol;
 
 /// Explains why `atom` holds (or, if it does not, why not) in the oracle's answer set.
-pub fn why(oracle: &dyn Oracle, atom: &Symbol) -> Result<Answer, AnswerError> {
-    let tree = Builder::new(oracle, BuildConfig::default()).build(atom);
-    recheck(&tree, oracle)?;
+pub fn why(oracle: &ProgramOracle, atom: &Symbol) -> Result<Answer, AnswerError> {
     let holds = oracle.holds(atom);
+    // A true atom's least proof from the bottom-up supports; the search is the fallback.
+    let tree = holds
+        .then(|| Supports::new(oracle).tree(oracle, atom))
+        .flatten()
+        .unwrap_or_else(|| Builder::new(oracle, BuildConfig::default()).build(atom));
+    recheck(&tree, oracle)?;
     let mut text = String::new();
     let mut literals = Vec::new();
     if holds {
@@ -45,7 +52,7 @@ pub fn why(oracle: &dyn Oracle, atom: &Symbol) -> Result<Answer, AnswerError> {
 }
 
 /// Explains why `atom` does not hold (or, if it does, says so and explains why it does).
-pub fn why_not(oracle: &dyn Oracle, atom: &Symbol) -> Result<Answer, AnswerError> {
+pub fn why_not(oracle: &ProgramOracle, atom: &Symbol) -> Result<Answer, AnswerError> {
     if oracle.holds(atom) {
         let mut a = why(oracle, atom)?;
         a.kind = "why_not";

@@ -41,6 +41,7 @@ pub mod questions;
 pub(crate) mod oracle;
 pub mod history;
 pub(crate) mod generic;
+mod support;
 #[cfg(feature = "sim")]
 pub mod scene;
 pub mod counterfactual;

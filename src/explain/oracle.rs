@@ -144,7 +144,7 @@ pub enum OracleError {
 
 /// Where a rule instance comes from.
 #[derive(Clone, Copy, Debug)]
-enum Source {
+pub(super) enum Source {
     /// Ground rule `rule`, its origin number `origin` (or the rule without origins).
     Ground { rule: u32, origin: u32 },
     /// Dead rule `index` of the provenance, its origin `origin`.
@@ -155,21 +155,21 @@ enum Source {
 /// grounding's rules: `Control::provenance` numbers statements over all groundings, so labels
 /// must too; `explain` grounds once).
 pub struct ProgramOracle {
-    ctl: Control,
-    model: solve::Model,
-    labels: Labels,
+    pub(super) ctl: Control,
+    pub(super) model: solve::Model,
+    pub(super) labels: Labels,
     /// Symbol of each aspif atom (index = atom); auxiliary atoms get `#aux(N)`.
-    atom_term: Vec<Option<Symbol>>,
+    pub(super) atom_term: Vec<Option<Symbol>>,
     /// Aspif atom of each term.
-    term_atom: HashMap<Symbol, u32>,
+    pub(super) term_atom: HashMap<Symbol, u32>,
     /// Symbol of each grounder atom (index = g - 1); `None` for auxiliaries.
-    g_term: Vec<Option<Symbol>>,
+    pub(super) g_term: Vec<Option<Symbol>>,
     /// Grounder atom of each term.
-    term_g: HashMap<Symbol, GAtom>,
+    pub(super) term_g: HashMap<Symbol, GAtom>,
     /// Rule instances by head term.
     heads: HashMap<Symbol, Vec<Source>>,
     /// The application atom of each CR rule (by rule index).
-    cr_appl: HashMap<u32, u32>,
+    pub(super) cr_appl: HashMap<u32, u32>,
     /// The labels of the applied CR rules.
     applied_labels: Vec<Symbol>,
 }
@@ -337,7 +337,7 @@ impl ProgramOracle {
         }
     }
 
-    fn instance(&self, head: &Symbol, src: Source) -> Option<RuleInstance> {
+    pub(super) fn instance(&self, head: &Symbol, src: Source) -> Option<RuleInstance> {
         let prog = self.ctl.program();
         let prov = &prog.provenance;
         match src {

@@ -17,14 +17,15 @@
 //! children are positive body literals and its "no evidence" literals default-negated ones; a
 //! node that does not hold has one blocked rule per rule of the program for its literal, each
 //! blocked by its child (a false positive body literal or a true default-negated one); no
-//! literal repeats on a path from a root; every leaf is of a leaf kind; depth is at most
-//! [`MAX_DEPTH`] and no node has more than [`MAX_BRANCHES`] children.
+//! literal repeats on a path from a root; every leaf is of a leaf kind; no node has more than
+//! [`MAX_BRANCHES`] children. Depth is not checked: the builders bound their own search
+//! ([`MAX_DEPTH`] for `explain::build`), and a correct proof may be long.
 
 use std::fmt;
 
 use crate::control::Symbol;
 
-/// Maximum depth of a tree (docs/domain.md 6.2).
+/// Maximum depth of the tree builder's search (docs/domain.md 6.2).
 pub const MAX_DEPTH: usize = 50;
 /// Maximum number of children of a node (docs/domain.md 6.2).
 pub const MAX_BRANCHES: usize = 16;
@@ -667,30 +668,19 @@ fn same_rule(a: &RuleInstance, b: &RuleInstance) -> bool {
         && b.body.iter().all(|x| a.body.contains(x))
 }
 
-/// No literal repeats on a path from a root, depth at most [`MAX_DEPTH`], leaves of leaf kinds.
+/// No literal repeats on a path from a root, and every reachable leaf is of a leaf kind. No
+/// depth is refused: a correct proof may be long (a builder bounds its own search).
 fn check_paths(tree: &ProofTree) -> Result<(), (usize, String)> {
-    // Depth-first over paths; the tree is small (at most 16 branches, depth 50, and builders
-    // share nodes), so paths are walked with an explicit stack of (node, depth) and the path's
-    // literals.
-    let mut path: Vec<NodeId> = Vec::new();
-    let mut stack: Vec<(NodeId, usize)> = tree.roots.iter().rev().map(|r| (*r, 0)).collect();
-    let mut visits = 0usize;
-    while let Some((id, depth)) = stack.pop() {
-        visits += 1;
-        if visits > 1_000_000 {
-            return Err((id.index(), "too many paths to check".into()));
+    // The reachable nodes, each once.
+    let mut seen = vec![false; tree.nodes.len()];
+    let mut stack: Vec<NodeId> = tree.roots.clone();
+    let mut reachable = Vec::new();
+    while let Some(id) = stack.pop() {
+        if std::mem::replace(&mut seen[id.index()], true) {
+            continue;
         }
-        path.truncate(depth);
+        reachable.push(id);
         let node = tree.node(id);
-        if depth >= MAX_DEPTH {
-            return Err((id.index(), format!("deeper than {MAX_DEPTH}")));
-        }
-        if path
-            .iter()
-            .any(|p| tree.node(*p).literal == node.literal && tree.node(*p).holds == node.holds)
-        {
-            return Err((id.index(), format!("{} repeats on a path", node.literal)));
-        }
         if node.children.is_empty() {
             let ok = node.kind.is_leaf_kind()
                 || node.kind == Kind::Unsupported
@@ -701,6 +691,34 @@ fn check_paths(tree: &ProofTree) -> Result<(), (usize, String)> {
             if !ok {
                 return Err((id.index(), format!("a leaf of kind {}", node.kind.words())));
             }
+        }
+        stack.extend(node.children.iter().copied());
+    }
+    // Children come before their parents, so a literal that is one node cannot repeat on a
+    // path; only literals with several nodes need the walk over paths.
+    let mut count: std::collections::HashMap<(&Symbol, bool), u32> = Default::default();
+    for id in &reachable {
+        let n = tree.node(*id);
+        *count.entry((&n.literal, n.holds)).or_default() += 1;
+    }
+    if count.values().all(|&c| c == 1) {
+        return Ok(());
+    }
+    let mut path: Vec<NodeId> = Vec::new();
+    let mut stack: Vec<(NodeId, usize)> = tree.roots.iter().rev().map(|r| (*r, 0)).collect();
+    let mut visits = 0usize;
+    while let Some((id, depth)) = stack.pop() {
+        visits += 1;
+        if visits > 1_000_000 {
+            return Err((id.index(), "too many paths to check".into()));
+        }
+        path.truncate(depth);
+        let node = tree.node(id);
+        if path
+            .iter()
+            .any(|p| tree.node(*p).literal == node.literal && tree.node(*p).holds == node.holds)
+        {
+            return Err((id.index(), format!("{} repeats on a path", node.literal)));
         }
         path.push(id);
         for c in node.children.iter().rev() {
