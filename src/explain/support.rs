@@ -23,12 +23,20 @@ use super::build::classify;
 use super::oracle::{ProgramOracle, Source};
 use super::tree::{BodyLiteral, Node, NodeId, ProofTree, RuleInstance, MAX_BRANCHES};
 use crate::control::Symbol;
-use crate::ground::program::{AtomStatus, AuxKind, BodyRef, RuleOrigin};
+use crate::ground::program::{AtomStatus, AuxKind, BodyRef, GAtom, RuleOrigin};
 
 /// No level yet.
 const UNFOUNDED: u32 = u32::MAX;
 /// The support of a grounder fact that has no rule in the ground program.
 const BARE_FACT: u32 = u32::MAX;
+
+/// The id of grounder atom `g`: its aspif atom, else a slot of its own after the aspif atoms.
+fn g_id(o: &ProgramOracle, aspif_slots: usize, g: GAtom) -> usize {
+    match o.ctl.program().provenance.atom(g) {
+        Some(r) if r.aspif != 0 => r.aspif as usize,
+        _ => aspif_slots + g as usize,
+    }
+}
 
 /// The founding level and support of every atom of one answer set.
 pub(super) struct Supports {
@@ -55,12 +63,8 @@ impl Supports {
                 *t = true;
             }
         }
-        // Grounder atom g as an id: its aspif atom, else a slot of its own.
         let g_id: Vec<usize> = (1..=prov.atoms.len())
-            .map(|g| match prov.atom(g as _) {
-                Some(r) if r.aspif != 0 => r.aspif as usize,
-                _ => aspif_slots + g,
-            })
+            .map(|g| g_id(o, aspif_slots, g as GAtom))
             .collect();
         let mut level = vec![UNFOUNDED; n];
         let mut chosen = vec![UNFOUNDED; n];
@@ -160,8 +164,11 @@ impl Supports {
         }
         drop(watch_pairs);
 
-        // Found level by level.
-        let mut buckets: Vec<Vec<u32>> = vec![Vec::new()];
+        // Found level by level. Instances with no positive body start at level 0; the bare facts are founded at level
+        // 0 after them, so an instance they complete waits for level 1.
+        let mut buckets: Vec<Vec<u32>> = vec![(0..missing.len() as u32)
+            .filter(|&i| missing[i as usize] == 0)
+            .collect()];
         let mut found = |id: usize,
                          by: u32,
                          lvl: u32,
@@ -186,11 +193,6 @@ impl Supports {
         for id in bare {
             found(id, BARE_FACT, 0, &mut level, &mut buckets, &mut missing);
         }
-        for (inst, m) in missing.clone().iter().enumerate() {
-            if *m == 0 {
-                buckets[0].push(inst as u32);
-            }
-        }
         let mut lvl = 0;
         while lvl < buckets.len() {
             let now = std::mem::take(&mut buckets[lvl]);
@@ -214,10 +216,7 @@ impl Supports {
             return Some(a as usize);
         }
         let &g = o.term_g.get(t)?;
-        match o.ctl.program().provenance.atom(g) {
-            Some(r) if r.aspif != 0 => Some(r.aspif as usize),
-            _ => Some(self.aspif_slots + g as usize),
-        }
+        Some(g_id(o, self.aspif_slots, g))
     }
 
     fn founded(&self, id: usize) -> bool {
@@ -248,8 +247,8 @@ impl Supports {
         }
         let mut tree = ProofTree::default();
         let mut done: HashMap<usize, NodeId> = HashMap::new();
-        // Iterative post-order: (id, literal, instance, children still to visit).
-        type Frame = (usize, Symbol, RuleInstance, Vec<(usize, Symbol)>);
+        // Iterative post-order: (id, node without children, children, next child to visit).
+        type Frame = (usize, Node, Vec<(usize, Symbol)>, usize);
         let open = |id: usize, t: Symbol| -> Option<Frame> {
             let rule = self.instance(o, id, &t)?;
             let kind = classify(&t, &rule);
@@ -265,31 +264,20 @@ impl Supports {
                     }
                 }
             }
-            kids.reverse();
-            Some((id, t, rule, kids))
+            Some((id, Node::supported(t, kind, rule), kids, 0))
         };
         let mut stack: Vec<Frame> = vec![open(root, literal.clone())?];
-        let mut order: HashMap<usize, Vec<usize>> = HashMap::new();
         while let Some(top) = stack.last_mut() {
-            if let Some((c, t)) = top.3.pop() {
-                order.entry(top.0).or_default().push(c);
+            if let Some((c, t)) = top.2.get(top.3).cloned() {
+                top.3 += 1;
                 if !done.contains_key(&c) {
-                    let f = open(c, t)?;
-                    stack.push(f);
+                    stack.push(open(c, t)?);
                 }
                 continue;
             }
-            let (id, t, rule, _) = stack.pop().expect("non-empty");
-            let kind = classify(&t, &rule);
-            let mut node = Node::supported(t, kind, rule);
-            node.children = order
-                .remove(&id)
-                .unwrap_or_default()
-                .iter()
-                .map(|c| done[c])
-                .collect();
-            let nid = tree.add(node);
-            done.insert(id, nid);
+            let (id, mut node, kids, _) = stack.pop().expect("non-empty");
+            node.children = kids.iter().map(|(c, _)| done[c]).collect();
+            done.insert(id, tree.add(node));
         }
         let r = done[&root];
         tree.roots = vec![r];
@@ -300,5 +288,80 @@ impl Supports {
             tree.path.push(at);
         }
         Some(tree)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::base::SourceMap;
+    use crate::control::{Control, ControlConfig, Part, SolveOptions};
+    use crate::explain::oracle::Labels;
+    use crate::explain::tree::Oracle;
+    use crate::syntax::ast::Dialect;
+
+    /// The oracle of `text`'s first answer set.
+    fn oracle(text: &str) -> ProgramOracle {
+        let mut sources = SourceMap::new();
+        let id = sources.add("t.lp", text);
+        let parse = crate::syntax::parse(id, text, Dialect::Clingo);
+        assert!(parse.diagnostics.is_empty());
+        let labels = Labels::from_program(&parse.program, &|s| sources.location(s.span));
+        let mut config = ControlConfig::default();
+        config.ground.provenance = true;
+        let mut ctl = Control::with_sources(config, sources.clone());
+        ctl.add_program(parse.program).unwrap();
+        ctl.ground(&[Part::base()]).unwrap();
+        let mut model = None;
+        ctl.solve(&SolveOptions::default(), |m| {
+            model = Some(m.raw().clone());
+            false
+        });
+        ProgramOracle::new(ctl, model.unwrap(), labels).unwrap()
+    }
+
+    fn sym(s: &str) -> Symbol {
+        crate::control::Symbol::parse(s).unwrap()
+    }
+
+    /// Every atom is founded above the atoms of its positive body, facts included, so the proof
+    /// of `d` runs down through `b` and `a` to the fact `e(1)`.
+    #[test]
+    fn a_rule_on_facts_is_founded_above_them() {
+        let o = oracle("e(1). a :- e(1). {c}. b :- a, not c. d :- b, not c.");
+        assert!(!o.holds(&sym("c")), "the first answer set has no c");
+        let s = Supports::new(&o);
+        let tree = s
+            .tree(&o, &sym("d"))
+            .expect("a proof of d from the supports");
+        let root = &tree.nodes[tree.roots[0].index()];
+        assert_eq!(root.literal, sym("d"));
+        let b = &tree.nodes[root.children[0].index()];
+        assert_eq!(b.literal, sym("b"));
+        assert!(b
+            .children
+            .iter()
+            .any(|c| tree.nodes[c.index()].literal == sym("a")));
+    }
+
+    /// A chain's proof has one node per literal and its full depth (no depth cap).
+    #[test]
+    fn a_long_chain_is_proved_in_full() {
+        let mut text = String::from("{x}. p(0) :- not x.\n");
+        text.push_str("p(N+1) :- p(N), N < 200, not x.\n");
+        let o = oracle(&text);
+        let s = Supports::new(&o);
+        let tree = s.tree(&o, &sym("p(200)")).expect("a proof of p(200)");
+        let mut depth = 0;
+        let mut n = tree.roots[0];
+        while let Some(&c) = tree.nodes[n.index()]
+            .children
+            .iter()
+            .find(|c| tree.nodes[c.index()].literal.to_string().starts_with("p("))
+        {
+            depth += 1;
+            n = c;
+        }
+        assert_eq!(depth, 200);
     }
 }
