@@ -65,3 +65,17 @@ fn recursive_not_equal_aggregate_keeps_its_answer_sets() {
     let expected: Vec<&[&str]> = expected.iter().map(|v| v.as_slice()).collect();
     assert_eq!(answer_sets(&[], program), sets(&expected));
 }
+
+/// `#project` over atoms the grounder matched and then simplified away still projects (onto
+/// nothing), as in clingo 5.8: one answer set, not one per value of `a` (found as seed 10345 of the generator's first version). Without
+/// any `p` atom, projection falls back to the shown atoms (two answer sets).
+/// Recorded: `python3 -m clingo --project -n 0 --outf=2 FILE` (clingo 5.8.3).
+#[test]
+fn projection_onto_simplified_atoms_still_projects() {
+    let satisfied = "{a}. p(1) ; r(1,3) :- a. r(1,3). #project p/1.";
+    assert_eq!(answer_sets(&["--project"], satisfied), sets(&[&["r(1,3)"]]));
+    let fact = "{a}. p(1) ; r(1,3). r(1,3). #project p/1.";
+    assert_eq!(answer_sets(&["--project"], fact), sets(&[&["r(1,3)"]]));
+    let none = "{a}. #project p/1.";
+    assert_eq!(answer_sets(&["--project"], none), sets(&[&[], &["a"]]));
+}
