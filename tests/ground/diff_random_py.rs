@@ -1,8 +1,17 @@
-//! Wrong answers the random differential run against clingo 5.8 found
-//! (`scripts/diff_random.py`), each with the answer sets clingo 5.8.3 gives (the command beside
-//! each).
+//! The random differential run against clingo 5.8's Python module, briefly
+//! (`scripts/diff_random.py`, generator `scripts/random_asp.py`; the long run's count and
+//! command are in docs/bench/diff-random-2026-12-05.md), and the wrong answers it found, each
+//! with the answer sets clingo 5.8.3 gives (the command beside each).
+//!
+//! The run needs `python3` with clingo 5.8 (`python3 -m pip install clingo`; scripts/test.sh
+//! installs it); without it the test fails and says how to install it. Knobs (environment):
+//! `LUCENT_DIFF_PY_COUNT` (programs, default 1500), `LUCENT_DIFF_PY_SEED` (first seed,
+//! default 0). Reproducers of disagreements are written to `target/diff-random-py/`.
 
 use crate::support::cli::lucent_in_process;
+
+use std::path::Path;
+use std::process::Command;
 
 use serde_json::Value;
 
@@ -78,4 +87,31 @@ fn projection_onto_simplified_atoms_still_projects() {
     assert_eq!(answer_sets(&["--project"], fact), sets(&[&["r(1,3)"]]));
     let none = "{a}. #project p/1.";
     assert_eq!(answer_sets(&["--project"], none), sets(&[&[], &["a"]]));
+}
+
+#[test]
+fn random_programs_agree_with_clingo_python() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("../diff-random-py");
+    let count = std::env::var("LUCENT_DIFF_PY_COUNT").unwrap_or_else(|_| "1500".into());
+    let seed = std::env::var("LUCENT_DIFF_PY_SEED").unwrap_or_else(|_| "0".into());
+    let run = Command::new("python3")
+        .arg(root.join("scripts/diff_random.py"))
+        .args(["--count", &count, "--seed", &seed, "--workers", "2"])
+        .args(["--lucent", env!("CARGO_BIN_EXE_lucent")])
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap_or_else(|e| {
+            panic!("python3 is needed (apt-get install -y python3 python3-pip): {e}")
+        });
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(
+        run.status.success(),
+        "scripts/diff_random.py failed (exit {:?}); clingo 5.8 comes with `python3 -m pip \
+         install clingo` (scripts/test.sh installs it)\n{stdout}\n{stderr}",
+        run.status.code()
+    );
+    assert!(stdout.contains("disagreed 0"), "{stdout}");
 }
