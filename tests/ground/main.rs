@@ -14,6 +14,7 @@ mod aspif_roundtrip;
 mod cr;
 mod diagnostics;
 mod diff_random;
+mod diff_random_py;
 mod programs;
 mod provenance;
 mod reference;

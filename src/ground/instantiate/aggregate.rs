@@ -489,7 +489,7 @@ impl<'a> Grounder<'a> {
                 certain += w;
                 continue;
             }
-            let l = self.disjunction_lit(c);
+            let l = self.equivalent_lit(c);
             match merged.iter_mut().find(|(x, _)| *x == l) {
                 Some(e) => e.1 += w,
                 None => merged.push((l, w)),
@@ -619,14 +619,14 @@ impl<'a> Grounder<'a> {
                 if c.is_empty() {
                     return Truth::True;
                 }
-                let l = self.disjunction_lit(c);
+                let l = self.equivalent_lit(c);
                 beyond.push((l, 1));
             } else if o.is_eq() {
                 if c.is_empty() {
                     at_certain = true;
                     continue;
                 }
-                let l = self.disjunction_lit(c);
+                let l = self.equivalent_lit(c);
                 at.push((l, -1));
             }
         }

@@ -48,6 +48,71 @@ impl Grounder<'_> {
         a.lit()
     }
 
+    /// As [`Grounder::disjunction_lit`], for an element of a saturated aggregate (see
+    /// `saturated`): the auxiliary atom also implies what defines it, so that the reduct
+    /// cannot make it true alone. Each alternative of several literals gets an atom `b` with
+    /// `b :- alt.`, `x :- b.` for each atom `x` of `alt`, `:- b, y.` for each `not y`; several
+    /// alternatives get an atom `a` with `a :- b_i.` and `b_1 | ... | b_n :- a.` Without that,
+    /// the saturation rule `c | b :- not not A.` is satisfied by `b` in the reduct at no cost:
+    /// `d(1..3). q(3). 1 #count { X,p : p(X) : d(X) } 2 :- #count { X,1 : p(X), not p(1);
+    /// X,3 : q(X); -1 : p(2) } != 2.` lost its answer set {p(2)} (gringo defines its element
+    /// atoms in both directions too).
+    pub(super) fn equivalent_lit(&mut self, alternatives: &[Vec<Lit>]) -> Lit {
+        if alternatives.iter().any(|c| c.is_empty()) {
+            return self.disjunction_lit(alternatives);
+        }
+        if alternatives.len() == 1 && alternatives[0].len() == 1 && alternatives[0][0] > 0 {
+            return alternatives[0][0];
+        }
+        let mut atoms: Vec<u32> = Vec::with_capacity(alternatives.len());
+        for alt in alternatives {
+            if alt.len() == 1 && alt[0] > 0 {
+                atoms.push(alt[0] as u32);
+                continue;
+            }
+            let b = self.aux();
+            let mut rules = vec![(vec![b.get()], alt.clone())];
+            for &l in alt {
+                if l > 0 {
+                    rules.push((vec![l as u32], vec![b.lit()]));
+                } else {
+                    rules.push((Vec::new(), vec![b.lit(), -l]));
+                }
+            }
+            for (head, body) in rules {
+                self.add_aux_rule(
+                    Rule {
+                        head_kind: HeadKind::Disjunction,
+                        head,
+                        body: Body::Normal(body),
+                    },
+                    AuxKind::Aggregate,
+                );
+            }
+            atoms.push(b.get());
+        }
+        if atoms.len() == 1 {
+            return atoms[0] as Lit;
+        }
+        let a = self.aux();
+        let mut rules: Vec<(Vec<u32>, Vec<Lit>)> = atoms
+            .iter()
+            .map(|&b| (vec![a.get()], vec![b as Lit]))
+            .collect();
+        rules.push((atoms, vec![a.lit()]));
+        for (head, body) in rules {
+            self.add_aux_rule(
+                Rule {
+                    head_kind: HeadKind::Disjunction,
+                    head,
+                    body: Body::Normal(body),
+                },
+                AuxKind::Aggregate,
+            );
+        }
+        a.lit()
+    }
+
     /// True when an element condition of `agg` reads a predicate still being grounded.
     pub(super) fn reads_incomplete(&self, agg: &NAgg) -> bool {
         let mut preds = Vec::new();

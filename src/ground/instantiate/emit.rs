@@ -321,6 +321,12 @@ impl Grounder<'_> {
         // A disjunction with a true atom is satisfied. (With provenance, an instance that
         // grounds to a fact's own rule is one more origin of that rule.)
         if let Some(&f) = head.iter().find(|&&a| self.info(GroundAtom::new(a)).fact) {
+            // The other head atoms still enter their domains, as in gringo: `#project p/1.`
+            // then matches p(1) of `p(1) ; r(1,3). r(1,3).`, and clingo 5.8 projects onto it
+            // (see `simplify::numbering::number_remaining`).
+            for &a in &head {
+                self.derive(GroundAtom::new(a));
+            }
             if head.len() == 1 && ctx.body.is_empty() {
                 self.attach_origin(Rule::normal(&[f], &[]), |g| g.origin(stmt, ctx));
             } else if self.provenance && !self.naive {

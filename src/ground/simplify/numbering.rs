@@ -175,6 +175,20 @@ pub(super) fn number_remaining(
             mark(a.lit());
         }
     }
+    // clingo 5.8 projects onto the atoms `#project` statements matched while grounding, before
+    // its simplification: when all of them are simplified away it still projects, onto no
+    // atom (`{a}. p(1) ; r(1,3). r(1,3). #project p/1.` has one answer set under `--project`,
+    // while `{a}. #project p/1.`, with no `p` atom at all, projects onto the shown atoms and
+    // has two). So the first projected atom keeps a number then: an atom without rules, false.
+    let numbered = |a: GroundAtom| {
+        let i = a.get() as usize;
+        used[i] || numbering.number.get(i).is_some_and(|&x| x != 0)
+    };
+    if let Some(&first) = g.directives.projections.first() {
+        if !g.directives.projections.iter().any(|&a| numbered(a)) {
+            used[first.get() as usize] = true;
+        }
+    }
     // Numbering as gringo's output does it: atoms in order of first occurrence in the rules
     // (each rule's heads before its body; given as the rules were written), then those only in
     // minimize statements, externals and shown atoms, in creation order. The solver's initial
