@@ -13,7 +13,11 @@
 //! `LUCENT_MULTISHOT_PARTS=N` the number of `step(t)` parts a `Control` grounds one by one
 //! (the grounding cost per part, first and last tenth compared; `LUCENT_MULTISHOT_WINDOW=N`
 //! compares the first and last N parts instead), `LUCENT_MULTISHOT_CRITERION=0` skips
-//! criterion.
+//! criterion. `LUCENT_MULTISHOT_ONLY=grid` runs only the grid step loop (`grid_loop`: clingo's
+//! incmode loop over a robot on a grid; `LUCENT_MULTISHOT_GRID=N` parts, default 150 with
+//! `--bench`, `LUCENT_MULTISHOT_GRID_SIZE`, `LUCENT_MULTISHOT_GRID_TRACE=1` prints every part,
+//! `LUCENT_MULTISHOT_GRID_OUT=path` writes the program); scripts/bench_multishot.py runs it
+//! beside clingo's Python API.
 
 use criterion::{black_box, Criterion};
 use lucent::ground::program::{Body, CrRule, GroundProgram, HeadKind, Output, Rule};
@@ -284,9 +288,135 @@ fn control_steps(steps: i32) {
     );
 }
 
+/// A robot on a `size` x `size` grid with walls, in clingo's incmode shape: `base` (cells,
+/// walls, start, goal), `step(t)` (at most one move per step, its effect, a move into a wall or
+/// off the grid forbidden, the position and the visited cells kept by inertia) and `check(t)`
+/// (the goal asked for by the external `query(t)`). Walls: three vertical walls with a gap
+/// each, and one short wall, so the shortest path winds (27 steps on the 10 x 10 grid).
+pub fn grid_program(size: i32) -> String {
+    let s = size;
+    // Vertical walls at columns s/4, s/2 and 3s/4 (at least 2, 3, 4), open at alternate ends.
+    let (c1, c2, c3) = ((s / 4).max(2), (s / 2).max(3), (3 * s / 4).max(4));
+    format!(
+        "#program base.
+dim(1..{s}).
+obstacle({c1},1..{s}-2). obstacle({c2},3..{s}). obstacle({c3},1..{s}-2). obstacle({c1}+1..{c2}-2,{s}/2+1).
+cell(X,Y) :- dim(X), dim(Y), not obstacle(X,Y).
+dir(1,0). dir(-1,0). dir(0,1). dir(0,-1).
+at(1,1,0).
+visited(1,1,0).
+goal({s},1).
+
+#program step(t).
+{{ move(DX,DY,t) : dir(DX,DY) }} 1.
+moved(t) :- move(_,_,t).
+at(X+DX,Y+DY,t) :- at(X,Y,t-1), move(DX,DY,t), cell(X+DX,Y+DY).
+:- move(DX,DY,t), at(X,Y,t-1), not cell(X+DX,Y+DY).
+at(X,Y,t) :- at(X,Y,t-1), not moved(t).
+visited(X,Y,t) :- visited(X,Y,t-1).
+visited(X,Y,t) :- at(X,Y,t).
+
+#program check(t).
+#external query(t).
+:- query(t), goal(X,Y), not at(X,Y,t).
+#show move/3.
+"
+    )
+}
+
+/// clingo's incmode loop over `grid_program(size)` on one `Control`: `base` and `check(0)`,
+/// then per step `t` the external `query(t-1)` released, `step(t)` and `check(t)` grounded,
+/// `query(t)` made true and one model asked for. Prints, per part with `trace`, the ground and
+/// solve times and the outcome; then the mean ground time of the first and last `window`
+/// parts, their ratio, and the slowest solve.
+fn grid_loop(size: i32, parts: i32, window: i32, trace: bool) {
+    use lucent::control::{Control, ControlConfig, Part, Symbol, TruthValue};
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("grid", &grid_program(size))
+        .expect("the program parses");
+    let query = |t: i32| Symbol::function("query", vec![Symbol::number(t)]);
+    let (mut ground, mut solve) = (Vec::new(), Vec::new());
+    let start = Instant::now();
+    for t in 0..=parts {
+        let mut todo = vec![Part::new("check", vec![Symbol::number(t)])];
+        if t == 0 {
+            todo.insert(0, Part::base());
+        } else {
+            ctl.release_external(&query(t - 1));
+            todo.insert(0, Part::new("step", vec![Symbol::number(t)]));
+        }
+        let t0 = Instant::now();
+        ctl.ground(&todo).expect("the step grounds");
+        let g = t0.elapsed().as_secs_f64();
+        ctl.assign_external(&query(t), TruthValue::True);
+        let t1 = Instant::now();
+        let summary = ctl.solve(&Default::default(), |_| false);
+        let s = t1.elapsed().as_secs_f64();
+        if trace {
+            println!(
+                "grid part {t}: ground {:.3} ms, solve {:.3} ms, {} ({} choices, {} conflicts, \
+                 {} restarts, {} propagations, {} learnt, {} loop nogoods)",
+                g * 1e3,
+                s * 1e3,
+                if summary.is_satisfiable() {
+                    "SAT"
+                } else {
+                    "UNSAT"
+                },
+                summary.stats.choices,
+                summary.stats.conflicts,
+                summary.stats.restarts,
+                summary.stats.propagations,
+                summary.stats.learnt,
+                summary.stats.loop_nogoods,
+            );
+        }
+        if t > 0 {
+            ground.push(g);
+            solve.push((s, t));
+        }
+    }
+    let w = (window as usize).clamp(1, ground.len().max(1));
+    let (first, _) = stats(&mut ground[..w].to_vec());
+    let (last, _) = stats(&mut ground[ground.len() - w..].to_vec());
+    let (slowest, at) = solve
+        .iter()
+        .copied()
+        .fold((0.0, 0), |m, x| if x.0 > m.0 { x } else { m });
+    let total_solve: f64 = solve.iter().map(|x| x.0).sum();
+    println!(
+        "grid {size}x{size}: {parts} step parts in {:.2} s; ground mean of parts 1-{w}: \
+         {:.3} ms, of the last {w}: {:.3} ms, last/first {:.2}; solve: {:.1} ms in all, \
+         slowest {:.2} ms (part {at}); atoms at the end: {}",
+        start.elapsed().as_secs_f64(),
+        first * 1e-3,
+        last * 1e-3,
+        last / first,
+        total_solve * 1e3,
+        slowest * 1e3,
+        ctl.num_atoms()
+    );
+}
+
 fn main() {
     // `cargo test --all-targets` runs benches without `--bench`, as a smoke test: small counts.
     let bench = std::env::args().any(|a| a == "--bench");
+    let env = |name: &str| std::env::var(name).ok().and_then(|v| v.parse::<i32>().ok());
+    let only = std::env::var("LUCENT_MULTISHOT_ONLY").unwrap_or_default();
+    if only == "grid" {
+        if let Ok(path) = std::env::var("LUCENT_MULTISHOT_GRID_OUT") {
+            let size = env("LUCENT_MULTISHOT_GRID_SIZE").unwrap_or(10);
+            std::fs::write(&path, grid_program(size)).expect("the program file is written");
+        }
+        let parts = env("LUCENT_MULTISHOT_GRID").unwrap_or(if bench { 150 } else { 20 });
+        grid_loop(
+            env("LUCENT_MULTISHOT_GRID_SIZE").unwrap_or(10),
+            parts,
+            env("LUCENT_MULTISHOT_WINDOW").unwrap_or(10),
+            std::env::var("LUCENT_MULTISHOT_GRID_TRACE").is_ok_and(|v| v == "1"),
+        );
+        return;
+    }
     let calls: usize = std::env::var("LUCENT_MULTISHOT_CALLS")
         .ok()
         .and_then(|v| v.parse().ok())

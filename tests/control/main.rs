@@ -5,6 +5,7 @@
 #[path = "../support/mod.rs"]
 mod support;
 
+mod grid;
 mod incmode;
 mod multishot;
 mod provenance;

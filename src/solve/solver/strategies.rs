@@ -83,15 +83,19 @@ impl Solver {
                     // stops the enumeration here, as clasp reports it.
                     let unique = self.engine.decision_level() as usize <= assume.len();
                     let go = self.report(call, optimal, dedup);
-                    let resumable = self.block(guard, &projection);
                     if !go {
-                        // The next call starts over from level 0.
+                        // The next call starts over from level 0, with the model's values as
+                        // the saved phases. No clause blocks the model: the call's guard retires
+                        // it anyway, and adding it would first flip the last decision, which
+                        // the backtrack would then save as that variable's phase (a later
+                        // step's call then starts its search off the model it should extend).
                         self.engine.backtrack(0);
                         if unique {
                             call.exhausted = true;
                         }
                         return unique;
                     }
+                    let resumable = self.block(guard, &projection);
                     resume = resumable;
                 }
             }
