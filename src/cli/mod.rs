@@ -321,6 +321,7 @@ fn solve_config(
     solve::Config {
         models,
         opt_mode: options.opt_mode.clone(),
+        opt_strategy: options.opt_strategy,
         enum_mode: options.enum_mode,
         cr_mode: options.cr,
         project: options.project,

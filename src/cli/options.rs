@@ -11,7 +11,7 @@
 //! names are parsed by the library types they select (`solve::OptMode::from_name`, ...).
 
 use crate::base::WarningKind;
-use crate::solve::{CrMode, EnumMode, Heuristic, OptMode};
+use crate::solve::{CrMode, EnumMode, Heuristic, OptMode, OptStrategy};
 use crate::syntax::ast::Dialect;
 
 /// Whether an option takes a value.
@@ -79,6 +79,7 @@ pub const OPTIONS: &[OptionSpec] = &[
     opt("message-limit", None, Value, "<n>", "Print at most <n> messages [20]", "Grounding"),
     opt("provenance", None, Flag, "", "In --text output, show where each ground rule came from (statement, substitution, body literals grounding proved) and why each false atom is false", "Grounding"),
     opt("opt-mode", None, Value, "<mode>", "Optimization {opt|optN|enum|ignore}[,<bound>...] [opt]", "Solving"),
+    opt("opt-strategy", None, Value, "<s>", "Optimization strategy {bb|usc}[,<tactics>...]: bb is model-guided branch and bound, usc core-guided with OLL relaxation [bb]", "Solving"),
     opt("enum-mode", Some('e'), Value, "<mode>", "Enumeration {auto|bt|record|brave|cautious} [auto]", "Solving"),
     opt("project", None, OptionalValue, "<mode>", "Project models to shown/projected atoms {show|project|auto} [no]", "Solving"),
     opt("cr", None, Value, "<mode>", "CR-rule semantics {card|subset}: cardinality-minimal applied CR rules, or subset-minimal with prefer/2 [card]", "Solving"),
@@ -155,6 +156,8 @@ pub struct Options {
     pub provenance: bool,
     /// Optimization mode, with the bounds of `--opt-mode=enum,b1,b2`.
     pub opt_mode: OptMode,
+    /// Optimization strategy (`--opt-strategy`).
+    pub opt_strategy: OptStrategy,
     /// Enumeration mode.
     pub enum_mode: EnumMode,
     /// Projection requested.
@@ -203,6 +206,7 @@ impl Default for Options {
             message_limit: 20,
             provenance: false,
             opt_mode: OptMode::Opt,
+            opt_strategy: OptStrategy::Bb,
             enum_mode: EnumMode::Auto,
             project: false,
             cr: CrMode::Cardinality,
@@ -573,6 +577,9 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
         "message-limit" => o.message_limit = parse_num(long, v)?,
         "provenance" => o.provenance = true,
         "opt-mode" => o.opt_mode = OptMode::from_name(v).ok_or_else(|| invalid(long, v))?,
+        "opt-strategy" => {
+            o.opt_strategy = OptStrategy::from_name(v).ok_or_else(|| invalid(long, v))?
+        }
         "enum-mode" => o.enum_mode = EnumMode::from_name(v).ok_or_else(|| invalid(long, v))?,
         "project" => {
             o.project = match value {
@@ -866,13 +873,27 @@ mod tests {
         assert_eq!(o.heuristic, Heuristic::Domain);
         assert_eq!(o.dialect, Some(Dialect::Clingo));
         assert!(o.project);
+        assert_eq!(o.opt_strategy, OptStrategy::Bb);
         let o = parse_args(&args("--opt-mode=opt,5 --project=no --dialect=auto")).unwrap();
         assert_eq!(
             (o.opt_mode, o.project, o.dialect),
             (OptMode::Opt, false, None)
         );
+        for (text, strategy) in [
+            ("--opt-strategy=usc", OptStrategy::Usc),
+            ("--opt-strategy=usc,oll,3", OptStrategy::Usc),
+            ("--opt-strategy=bb,hier", OptStrategy::Bb),
+        ] {
+            assert_eq!(
+                parse_args(&args(text)).unwrap().opt_strategy,
+                strategy,
+                "{text}"
+            );
+        }
         for bad in [
             "--opt-mode=enum,x",
+            "--opt-strategy=best",
+            "--opt-strategy=usc,fast",
             "--heuristic=best",
             "--project=no,1",
             "--cr=all",

@@ -45,6 +45,45 @@ impl OptMode {
     }
 }
 
+/// How an optimum is searched for (clasp `--opt-strategy`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum OptStrategy {
+    /// Model-guided branch and bound: each model's costs bound the next one from above
+    /// (`solver/strategies.rs`).
+    #[default]
+    Bb,
+    /// Core-guided: unsatisfiable cores under the assumption that every cost literal is false
+    /// raise a lower bound until a model meets it, relaxed with OLL's cardinality outputs
+    /// (`solver/core_guided.rs`).
+    Usc,
+}
+
+impl OptStrategy {
+    /// The strategy clasp's `--opt-strategy=<s>[,<tactics>...]` names: `bb` with any of clasp's
+    /// tactics (`lin`, `hier`, `inc`, `dec`, or a number; the search is the same), `usc` with
+    /// an optional relaxation among `oll`, `one`, `k`, `pmres` (all run OLL: the optimum and the
+    /// optimal models are the same, only the cores' encoding differs) followed by clasp's
+    /// numeric options, which are accepted and ignored. `None` for anything else.
+    pub fn from_name(text: &str) -> Option<OptStrategy> {
+        let mut parts = text.split(',').map(str::trim);
+        let name = parts.next()?;
+        let known: &[&str] = match name {
+            "bb" => &["lin", "hier", "inc", "dec"],
+            "usc" => &[
+                "oll", "one", "k", "pmres", "disjoint", "succinct", "stratify",
+            ],
+            _ => return None,
+        };
+        parts
+            .all(|t| known.contains(&t) || t.parse::<u64>().is_ok())
+            .then_some(if name == "bb" {
+                OptStrategy::Bb
+            } else {
+                OptStrategy::Usc
+            })
+    }
+}
+
 /// How models are enumerated or summarised (clasp `--enum-mode`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum EnumMode {
@@ -125,6 +164,8 @@ pub struct Config {
     pub models: usize,
     /// Optimization mode.
     pub opt_mode: OptMode,
+    /// Optimization strategy (`--opt-strategy`).
+    pub opt_strategy: OptStrategy,
     /// Enumeration mode.
     pub enum_mode: EnumMode,
     /// Semantics for CR rules.
@@ -277,6 +318,7 @@ impl Default for Config {
         Config {
             models: 1,
             opt_mode: OptMode::Opt,
+            opt_strategy: OptStrategy::Bb,
             enum_mode: EnumMode::Auto,
             cr_mode: CrMode::Cardinality,
             project: false,

@@ -15,8 +15,8 @@ pub(crate) mod config;
 pub(crate) mod result;
 
 pub use config::{
-    Config, CrMode, Deletion, EnumMode, Heuristic, OptMode, ReduceSchedule, RestartPolicy,
-    SearchProfile,
+    Config, CrMode, Deletion, EnumMode, Heuristic, OptMode, OptStrategy, ReduceSchedule,
+    RestartPolicy, SearchProfile,
 };
 pub use result::{Model, Outcome, SolveResult, Stats, StopReason};
 pub(crate) mod engine;

@@ -37,16 +37,21 @@
 //!   the atoms, so decision-based blocking never reports one answer set twice.
 //! - Edge directives are acyclicity constraints, checked on each total assignment: a cycle of
 //!   true edges adds the clause forbidding its edge conditions together.
+//! - Optimization is branch and bound (`strategies`) or core-guided (`core_guided`, clasp's
+//!   `usc`), as `Config::opt_strategy` says; both leave the optimum's costs in `best`.
 //! - Branch and bound follows clasp's "opt" strategy: after a model with costs `c`, require
 //!   `costs <lex c` (as `exists i: sum_j <= c_j for j < i and sum_i <= c_i - 1`); the last model
 //!   is optimal when the bound becomes unsatisfiable.
 
+mod core_guided;
 mod cr;
 pub(crate) use cr::transitive_closure;
 mod search;
 mod strategies;
 
-use super::config::{Config, CrMode, EnumMode, Heuristic, OptMode, RestartPolicy, SearchProfile};
+use super::config::{
+    Config, CrMode, EnumMode, Heuristic, OptMode, OptStrategy, RestartPolicy, SearchProfile,
+};
 use super::engine::{Engine, Restarts, SearchResult, Settings};
 use super::lit::{Lit, Var};
 use super::result::{Model, Outcome, SolveResult, Stats, StopReason};

@@ -9,5 +9,6 @@ mod check_checker;
 mod clingo;
 mod limits;
 mod multishot;
+mod opt_strategies;
 mod props;
 mod random_aspif;

@@ -398,10 +398,14 @@ impl Solver {
         let mut below = Vec::new();
         for (i, lits) in levels.iter().enumerate() {
             let neg: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (l, -w)).collect();
-            // sum <= c  <=>  -sum >= -c.
-            let a = self.aux_weight(guard, &neg, bound[i].saturating_neg());
+            // sum <= c  <=>  -sum >= -c. The last level is only ever bounded strictly, so it
+            // gets no `at_most` literal (one weight constraint less to propagate: half of
+            // them for a single level).
+            if i + 1 < k {
+                let a = self.aux_weight(guard, &neg, bound[i].saturating_neg());
+                at_most.push(a);
+            }
             let b = self.aux_weight(guard, &neg, bound[i].saturating_sub(1).saturating_neg());
-            at_most.push(a);
             below.push(b);
         }
         let mut big = vec![!guard];

@@ -19,11 +19,11 @@ impl Solver {
                     !self.tr.minimize.is_empty() && self.config.opt_mode != OptMode::Ignore;
                 match self.config.opt_mode.clone() {
                     OptMode::Opt if optimize => {
-                        self.run_optimize(call, assume, dedup, true);
+                        self.run_opt_strategy(call, assume, dedup);
                     }
                     OptMode::OptN if optimize => {
                         call.unlimited = true;
-                        let proven = self.run_optimize(call, assume, dedup, true);
+                        let proven = self.run_opt_strategy(call, assume, dedup);
                         call.unlimited = false;
                         if proven && !call.done {
                             if let Some(best) = self.best.clone() {
@@ -53,6 +53,15 @@ impl Solver {
                     }
                 }
             }
+        }
+    }
+
+    /// Finds an optimum with the configured strategy, reporting improving models; returns true
+    /// when the optimum was proven.
+    fn run_opt_strategy(&mut self, call: &mut Call<'_>, assume: &[Lit], dedup: bool) -> bool {
+        match self.config.opt_strategy {
+            OptStrategy::Bb => self.run_optimize(call, assume, dedup, true),
+            OptStrategy::Usc => self.run_core_guided(call, assume, dedup, true),
         }
     }
 
