@@ -8,3 +8,4 @@ mod support;
 mod incmode;
 mod multishot;
 mod provenance;
+mod threads;

@@ -9,5 +9,6 @@ mod check_checker;
 mod clingo;
 mod limits;
 mod multishot;
+mod portfolio;
 mod props;
 mod random_aspif;
