@@ -617,21 +617,7 @@ impl Control {
             sym_atom,
         };
         let mut count = 0;
-        let result = if solver.config_mut().threads >= 2 && assumptions.is_empty() {
-            let mut r = solver.solve();
-            for m in std::mem::take(&mut r.models) {
-                count += 1;
-                if !on_model(&Model {
-                    raw: &m,
-                    names: &names,
-                    lazy_support: None,
-                    full: OnceCell::new(),
-                }) {
-                    break;
-                }
-            }
-            r
-        } else {
+        let result = {
             // Supports are built only for the models whose reader asks for them.
             let want_supports = solver.config_mut().supports;
             solver.for_each_model_lazy(&assumptions, &mut |m, prog| {

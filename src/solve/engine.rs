@@ -42,6 +42,8 @@ mod heuristic;
 mod loops;
 mod propagate;
 mod search;
+mod share;
+pub use share::Hub;
 
 use super::config::{Config, Deletion, ReduceSchedule};
 use super::lit::{Lit, Var};
@@ -376,6 +378,13 @@ pub struct Limits {
     pub conflict_limit: Option<u64>,
     /// Whether the last `search` stopped because the interrupt flag was raised.
     pub interrupted: bool,
+    /// Portfolio: a counter a peer bumps when it publishes a better optimization bound; the
+    /// search stops with `Unknown` when it differs from `bound_seen`, setting `bound_news`.
+    pub bound_gen: Option<Arc<std::sync::atomic::AtomicU64>>,
+    /// The value of `bound_gen` the solver last acted on.
+    pub bound_seen: u64,
+    /// Whether the last `search` stopped for a new bound (not a limit).
+    pub bound_news: bool,
 }
 
 /// Counters of the search, for statistics.
@@ -487,7 +496,8 @@ pub struct Engine {
     uf: UfState,
     /// Restarts, learnt-clause reductions and level-0 simplifications: when each is due next.
     pub sched: Schedule,
-    /// What stops a search early: deadline, interrupt flags and the conflict limit.
+    /// What stops a search early: deadline, interrupt flags, the conflict limit, and news of a
+    /// better bound from a portfolio peer.
     pub limits: Limits,
     /// Counters of the search, for statistics.
     pub stats: EngineStats,
@@ -498,6 +508,8 @@ pub struct Engine {
     pool: VarPool,
     /// True once a conflict at level 0 was found.
     inconsistent: bool,
+    /// Clause sharing in a portfolio: the shared numbering and the hub (`share`).
+    share: share::Sharing,
 }
 
 impl Default for Engine {
@@ -590,6 +602,9 @@ impl Engine {
                 portfolio_stop: None,
                 conflict_limit: None,
                 interrupted: false,
+                bound_gen: None,
+                bound_seen: 0,
+                bound_news: false,
             },
             stats: EngineStats {
                 decisions: 0,
@@ -620,6 +635,7 @@ impl Engine {
                 free_vars: Vec::new(),
             },
             inconsistent: false,
+            share: share::Sharing::default(),
         }
     }
 
@@ -709,8 +725,16 @@ impl Engine {
     }
 
     /// Creates a new variable, decidable by default; a variable freed by `retire_vars` is
-    /// reused when there is one.
+    /// reused when there is one. It gets the next shared id (`share`); variables made for one
+    /// call only come from [`Engine::new_private_var`].
     pub fn new_var(&mut self) -> Var {
+        let v = self.alloc_var();
+        self.share_numbering(v, true);
+        v
+    }
+
+    /// A new or recycled variable, without a shared id yet.
+    fn alloc_var(&mut self) -> Var {
         if let Some(v) = self.pool.free_vars.pop() {
             let i = v.index();
             debug_assert!(self.asg.values[v.positive().code()] == 0);
@@ -784,6 +808,7 @@ impl Engine {
             if !self.pool.retired[v.index()] {
                 self.pool.retired[v.index()] = true;
                 self.heur.decidable[v.index()] = false;
+                self.unshare(v);
                 self.pool.dead_vars.push(v);
             }
         }

@@ -3,8 +3,8 @@
 //! multi-shot solving (`add_program`, external atoms), all driving one `Engine` so learnt
 //! clauses survive between calls.
 //!
-//! This file holds the solver's state, construction, multi-shot steps, externals, the solve
-//! calls and the portfolio; `search` has the primitives (next answer set, minimality, models,
+//! This file holds the solver's state, construction, multi-shot steps, externals and the solve
+//! calls; `portfolio` runs them on several threads; `search` has the primitives (next answer set, minimality, models,
 //! blocking, cost bounds), `strategies` enumeration, optimization and consequences, `cr` the
 //! CR-Prolog semantics.
 //!
@@ -46,6 +46,7 @@
 mod core_guided;
 mod cr;
 pub(crate) use cr::transitive_closure;
+mod portfolio;
 mod search;
 mod strategies;
 
@@ -114,6 +115,14 @@ pub struct Solver {
     calls: u64,
     /// The caller's assumptions that refuted the last call, when it found no model.
     core: Option<Vec<i32>>,
+    /// The helper solvers with `Config::threads >= 2` (`portfolio`).
+    par: Option<Box<portfolio::Portfolio>>,
+    /// In a portfolio: the best bound any thread found in the current optimization.
+    shared_bound: Option<std::sync::Arc<portfolio::SharedBound>>,
+    /// Extra assumptions of the next call: a portfolio cube.
+    cube: Vec<Lit>,
+    /// Skip the learnt-clause limit at the start of the next call (a portfolio's later cubes).
+    keep_learnts: bool,
 }
 
 /// What one guard owns: variables defined for the constraints it guards (cost and CR bounds,
@@ -181,6 +190,9 @@ impl Solver {
 
     /// Translates `prog`, which the solver keeps, and prepares a solver.
     pub fn from_program(mut prog: GroundProgram, config: Config) -> Solver {
+        if config.threads >= 2 {
+            return Solver::new_portfolio(prog, config);
+        }
         let mut engine = Engine::new();
         engine.configure(config.var_decay, config.seed);
         engine.settings = Settings::from_config(&config);
@@ -250,6 +262,10 @@ impl Solver {
             problem_size,
             calls: 0,
             core: None,
+            par: None,
+            shared_bound: None,
+            cube: Vec::new(),
+            keep_learnts: false,
         }
     }
 
@@ -289,6 +305,16 @@ impl Solver {
     /// unfounded-set structures when the delta closes positive cycles (see
     /// `Translation::update_cycles`).
     pub fn add_program(&mut self, delta: &GroundProgram) -> Result<(), SolveError> {
+        self.add_program_one(delta)?;
+        // The helpers accept what this solver accepted: they hold the same program.
+        self.on_helpers(&|h| {
+            let _ = h.add_program_one(delta);
+        });
+        Ok(())
+    }
+
+    /// [`Solver::add_program`] on this solver alone.
+    fn add_program_one(&mut self, delta: &GroundProgram) -> Result<(), SolveError> {
         let old_n = self.prog.num_atoms;
         for r in delta.rules.iter() {
             if let Some(&h) = r
@@ -372,7 +398,7 @@ impl Solver {
         }
         self.tr.refresh_assumptions();
         // Outputs, minimize, CR rules and the rest.
-        self.add_outputs(&delta.outputs);
+        self.add_outputs_one(&delta.outputs);
         for m in &delta.minimize {
             let lits: Vec<(Lit, i64)> = m.lits.iter().map(|&(l, w)| (self.tr.lit(l), w)).collect();
             match self
@@ -426,8 +452,17 @@ impl Solver {
     /// Sets the value of an external atom for the following calls (`Free`, `True`, `False`;
     /// `Release` is `release_external`).
     pub fn assign_external(&mut self, atom: u32, value: ExternalValue) -> Result<(), SolveError> {
+        self.assign_external_one(atom, value)?;
+        if let Some(par) = self.par.as_mut() {
+            par.each(|h| h.assign_external_one(atom, value));
+        }
+        Ok(())
+    }
+
+    /// [`Solver::assign_external`] on this solver alone.
+    fn assign_external_one(&mut self, atom: u32, value: ExternalValue) -> Result<(), SolveError> {
         if value == ExternalValue::Release {
-            return self.release_external(atom);
+            return self.release_external_one(atom);
         }
         if atom > self.prog.num_atoms || !self.tr.free[atom as usize] {
             return Err(SolveError::NotExternal(atom));
@@ -442,6 +477,15 @@ impl Solver {
 
     /// Releases an external atom: it is false from now on and can get no rules.
     pub fn release_external(&mut self, atom: u32) -> Result<(), SolveError> {
+        self.release_external_one(atom)?;
+        if let Some(par) = self.par.as_mut() {
+            par.each(|h| h.release_external_one(atom));
+        }
+        Ok(())
+    }
+
+    /// [`Solver::release_external`] on this solver alone.
+    fn release_external_one(&mut self, atom: u32) -> Result<(), SolveError> {
         if atom > self.prog.num_atoms || !self.tr.free[atom as usize] {
             return Err(SolveError::NotExternal(atom));
         }
@@ -460,6 +504,17 @@ impl Solver {
 
     /// Adds output statements (e.g. for atoms introduced by `add_rules`).
     pub fn add_outputs(&mut self, outputs: &[crate::ground::program::Output]) {
+        self.add_outputs_one(outputs);
+        if let Some(par) = self.par.as_mut() {
+            par.each(|h| {
+                h.add_outputs_one(outputs);
+                Ok(())
+            });
+        }
+    }
+
+    /// [`Solver::add_outputs`] on this solver alone.
+    fn add_outputs_one(&mut self, outputs: &[crate::ground::program::Output]) {
         self.engine.backtrack(0);
         for o in outputs {
             let lits: Vec<Lit> = o.condition.iter().map(|&l| self.lit_of(l)).collect();
@@ -479,15 +534,9 @@ impl Solver {
 
     /// Solves with the configured options and collects the models.
     ///
-    /// With `Config::threads >= 2` this runs a portfolio: that many fresh solvers with different
-    /// search settings (restarts, seeds, random decisions) race on copies of the program and
-    /// the first to finish answers; the other threads stop. This solver's own learnt clauses
-    /// are then neither used nor extended.
+    /// With `Config::threads >= 2`, this and every other call runs on a portfolio of that
+    /// many solvers that share learnt clauses (`portfolio`).
     pub fn solve(&mut self) -> SolveResult {
-        if self.config.threads >= 2 {
-            self.core = None;
-            return portfolio(&self.prog, &self.config);
-        }
         self.solve_with(&[])
     }
 
@@ -507,7 +556,7 @@ impl Solver {
     /// caller's order) that the refutation used, a subset under which the program has no answer
     /// set either (clingo's unsatisfiable core; not minimal). Empty when the program has none
     /// under any assumption. `None` after a call that found a model or was stopped, and after
-    /// [`Solver::solve`]'s portfolio.
+    /// [`Solver::solve`].
     pub fn core(&self) -> Option<&[i32]> {
         self.core.as_deref()
     }
@@ -534,8 +583,22 @@ impl Solver {
         self.run_call(assumptions, sink, true)
     }
 
-    /// One solve call under `assumptions` (see [`Solver::for_each_model`]).
+    /// One solve call under `assumptions` (see [`Solver::for_each_model`]), on the portfolio's
+    /// threads when there are helpers.
     fn run_call(
+        &mut self,
+        assumptions: &[i32],
+        sink: &mut dyn FnMut(&Model, &GroundProgram) -> bool,
+        lazy_support: bool,
+    ) -> SolveResult {
+        if self.par.is_some() {
+            return self.run_parallel(assumptions, sink, lazy_support);
+        }
+        self.run_call_one(assumptions, sink, lazy_support)
+    }
+
+    /// One solve call of this solver alone.
+    fn run_call_one(
         &mut self,
         assumptions: &[i32],
         sink: &mut dyn FnMut(&Model, &GroundProgram) -> bool,
@@ -549,7 +612,7 @@ impl Solver {
         );
         self.engine.limits.deadline = self.config.deadline;
         self.engine.limits.interrupt = self.config.interrupt.clone();
-        if self.calls > 0 {
+        if self.calls > 0 && !std::mem::take(&mut self.keep_learnts) {
             // What earlier calls learnt is kept up to a limit set by the problem size, as clasp
             // sets it at the start of every solve call (`--del-init=3.0,200,40000`).
             let cap = (self.problem_size / 3).clamp(200, 40_000);
@@ -558,6 +621,7 @@ impl Solver {
         self.calls += 1;
         let mut assume: Vec<Lit> = self.tr.assumptions.clone();
         assume.extend(assumptions.iter().map(|&l| self.lit_of(l)));
+        assume.extend_from_slice(&self.cube);
         let call_guard = self.new_guard();
         assume.push(call_guard);
         let mut call = Call {
@@ -655,7 +719,7 @@ impl Solver {
     /// A fresh guard literal (never decided; assumed while its constraints hold).
     fn new_guard(&mut self) -> Lit {
         self.engine.backtrack(0);
-        let g = self.engine.new_var();
+        let g = self.engine.new_private_var();
         self.engine.set_decidable(g, false);
         self.scopes.push(Scope {
             guard: g.positive(),
@@ -676,7 +740,7 @@ impl Solver {
 
     /// A fresh variable owned by `guard`, retired with it.
     fn aux_var(&mut self, guard: Lit) -> Lit {
-        let v = self.engine.new_var();
+        let v = self.engine.new_private_var();
         self.scope(guard).aux.push(v);
         v.positive()
     }
@@ -743,50 +807,6 @@ fn restart_state(policy: RestartPolicy) -> Restarts {
         },
         RestartPolicy::Never => Restarts::Never,
     }
-}
-
-/// Races `config.threads` differently configured solvers; the first to finish wins.
-fn portfolio(prog: &GroundProgram, config: &Config) -> SolveResult {
-    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
-    let winner: std::sync::Mutex<Option<SolveResult>> = std::sync::Mutex::new(None);
-    std::thread::scope(|scope| {
-        for t in 0..config.threads.max(2) {
-            let stop = stop.clone();
-            let winner = &winner;
-            scope.spawn(move || {
-                let mut c = config.clone();
-                c.threads = 1;
-                if t % 2 == 1 {
-                    // The other search settings and the other equivalence setting: on the
-                    // luck-dominated non-tight rows the two fail on different instances
-                    // (labyrinth 0157: 109558 conflicts with eq, 10045 in this thread without).
-                    c.profile = SearchProfile::Fixed;
-                    c.restarts = RestartPolicy::Luby(100);
-                    c.random_freq_permille = 10;
-                    c.eq = !config.eq;
-                }
-                c.seed = config.seed.wrapping_add(t as u64 * 7919);
-                let mut s = Solver::new(prog, c);
-                s.engine.limits.portfolio_stop = Some(stop.clone());
-                let r = s.solve_with(&[]);
-                // A thread stopped by the portfolio flag has nothing to say.
-                let stopped_by_peer = r.stop.is_some()
-                    && stop.load(std::sync::atomic::Ordering::Relaxed)
-                    && !s.engine.limits.interrupted;
-                let mut w = winner
-                    .lock()
-                    .expect("no thread panics while holding the lock");
-                if w.is_none() && !stopped_by_peer {
-                    *w = Some(r);
-                    stop.store(true, std::sync::atomic::Ordering::Relaxed);
-                }
-            });
-        }
-    });
-    winner
-        .into_inner()
-        .expect("no thread panicked while holding the lock")
-        .expect("the first thread to finish records its result")
 }
 
 /// For every true atom of `atoms` (sorted), one rule index that derives it in a well-founded

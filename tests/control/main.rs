@@ -9,3 +9,4 @@ mod grid;
 mod incmode;
 mod multishot;
 mod provenance;
+mod threads;

@@ -10,5 +10,6 @@ mod clingo;
 mod limits;
 mod multishot;
 mod opt_strategies;
+mod portfolio;
 mod props;
 mod random_aspif;

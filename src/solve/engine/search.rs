@@ -82,6 +82,12 @@ impl Engine {
                 return true;
             }
         }
+        if let Some(g) = &self.limits.bound_gen {
+            if g.load(Ordering::Relaxed) != self.limits.bound_seen {
+                self.limits.bound_news = true;
+                return true;
+            }
+        }
         if let Some(d) = self.limits.deadline {
             if Instant::now() >= d {
                 return true;
@@ -114,6 +120,7 @@ impl Engine {
     /// made this assignment).
     pub fn search_from(&mut self, assumptions: &[Lit], resume: bool) -> SearchResult {
         self.limits.interrupted = false;
+        self.limits.bound_news = false;
         self.an.failed.clear();
         if let Some((save_progress, sign)) = self.heur.phase_switched.take() {
             self.settings.save_progress = save_progress;
@@ -128,7 +135,7 @@ impl Engine {
         }
         if !resume || self.decision_level() == 0 {
             self.backtrack(0);
-            if self.propagate().is_some() {
+            if self.propagate().is_some() || !self.exchange() {
                 self.inconsistent = true;
                 return SearchResult::Unsat;
             }
@@ -171,6 +178,7 @@ impl Engine {
                 let bt = self.analyze();
                 let learnt = std::mem::take(&mut self.an.learnt);
                 let lbd = self.lbd(&learnt);
+                self.export_learnt(&learnt, lbd);
                 self.backtrack(bt);
                 if learnt.len() == 1 {
                     self.assign(learnt[0], Reason::Decision);
@@ -188,6 +196,9 @@ impl Engine {
                 if self.should_restart(Some(lbd)) {
                     self.stats.num_restarts += 1;
                     self.backtrack(0);
+                    if !self.exchange() {
+                        return SearchResult::Unsat;
+                    }
                 }
                 continue;
             }

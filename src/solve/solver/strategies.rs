@@ -123,6 +123,8 @@ impl Solver {
         let mut bound_guard: Option<Lit> = None;
         let mut found = false;
         loop {
+            // Portfolio: a better bound another thread found (`portfolio`).
+            found |= self.adopt_bound(&mut bound_guard);
             let mut a = assume.to_vec();
             if let Some(g) = bound_guard {
                 a.push(g);
@@ -140,6 +142,7 @@ impl Solver {
                     }
                     return found;
                 }
+                Next::Stopped if self.engine.limits.bound_news => {}
                 Next::Stopped => {
                     call.stopped = true;
                     if let Some(g) = bound_guard {
