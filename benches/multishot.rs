@@ -250,7 +250,8 @@ const STEPS_PROGRAM: &str = "
 fn control_steps(steps: i32) {
     use lucent::control::{Control, ControlConfig, Part, Symbol};
     let mut ctl = Control::new(ControlConfig::default());
-    ctl.add("steps", STEPS_PROGRAM).expect("the program parses");
+    ctl.add_source("steps", STEPS_PROGRAM)
+        .expect("the program parses");
     ctl.ground(&[Part::base()]).expect("base grounds");
     let window = std::env::var("LUCENT_MULTISHOT_WINDOW")
         .ok()
@@ -332,7 +333,7 @@ visited(X,Y,t) :- at(X,Y,t).
 fn grid_loop(size: i32, parts: i32, window: i32, trace: bool) {
     use lucent::control::{Control, ControlConfig, Part, Symbol, TruthValue};
     let mut ctl = Control::new(ControlConfig::default());
-    ctl.add("grid", &grid_program(size))
+    ctl.add_source("grid", &grid_program(size))
         .expect("the program parses");
     let query = |t: i32| Symbol::function("query", vec![Symbol::number(t)]);
     let (mut ground, mut solve) = (Vec::new(), Vec::new());

@@ -32,7 +32,7 @@ fn main() {
     let mut atoms = 0usize;
     for _ in 0..n {
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add(path, &text).expect("the program parses");
+        ctl.add_source(path, &text).expect("the program parses");
         ctl.ground(&[Part::base()]).expect("the program grounds");
         ctl.solve(&SolveOptions::default(), |m| {
             atoms += m.atoms().len();

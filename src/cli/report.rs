@@ -320,10 +320,13 @@ fn result_text(outcome: Outcome) -> &'static str {
     }
 }
 
-fn stop_key(stop: StopReason) -> &'static str {
+/// The line clingo adds for a stop; none for the conflict limit (`--solve-limit`: clingo
+/// says only UNKNOWN).
+fn stop_key(stop: StopReason) -> Option<&'static str> {
     match stop {
-        StopReason::TimeLimit => "TIME LIMIT",
-        StopReason::Interrupted => "INTERRUPTED",
+        StopReason::TimeLimit => Some("TIME LIMIT"),
+        StopReason::Interrupted => Some("INTERRUPTED"),
+        StopReason::ConflictLimit => None,
     }
 }
 
@@ -478,8 +481,8 @@ fn write_costs(out: &mut dyn Write, report: &Report, model: &ReportModel) -> io:
 pub fn write_text_summary(out: &mut dyn Write, report: &Report) -> io::Result<()> {
     writeln!(out, "{}", result_text(report.outcome))?;
     writeln!(out)?;
-    if let Some(stop) = report.stop {
-        writeln!(out, "{:<12} : 1", stop_key(stop))?;
+    if let Some(key) = report.stop.and_then(stop_key) {
+        writeln!(out, "{key:<12} : 1")?;
     }
     let more = if report.exhausted { "" } else { "+" };
     writeln!(out, "Models       : {}{more}", report.number)?;
@@ -639,8 +642,8 @@ pub fn write_json(out: &mut dyn Write, report: &Report, quiet: Quiet) -> io::Res
         "  \"Result\": \"{}\",\n",
         result_text(report.outcome)
     ));
-    if let Some(stop) = report.stop {
-        s.push_str(&format!("  \"{}\": 1,\n", stop_key(stop)));
+    if let Some(key) = report.stop.and_then(stop_key) {
+        s.push_str(&format!("  \"{key}\": 1,\n"));
     }
     s.push_str("  \"Models\": {\n");
     s.push_str(&format!("    \"Number\": {},\n", report.number));

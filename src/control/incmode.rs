@@ -106,7 +106,7 @@ mod tests {
 
     fn steps(text: &str) -> Vec<Vec<String>> {
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add("inc.lp", text).unwrap();
+        ctl.add_source("inc.lp", text).unwrap();
         assert!(ctl.incmode());
         let mut out = Vec::<Vec<String>>::new();
         run(&mut ctl, |e| {

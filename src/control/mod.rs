@@ -7,7 +7,8 @@
 //! ```
 //! use lucent::control::{Control, ControlConfig, Part, Symbol};
 //! let mut ctl = Control::new(ControlConfig::default());
-//! ctl.add("example", "q(1..2). {p(X)} :- q(X). :- p(1), p(2).").unwrap();
+//! ctl.solve_config_mut().models = 0; // all models (clingo's `-n 0`); one by default
+//! ctl.add("base", &[], "q(1..2). {p(X)} :- q(X). :- p(1), p(2).").unwrap();
 //! ctl.ground(&[Part::base()]).unwrap();
 //! let mut answers = Vec::new();
 //! ctl.solve(&Default::default(), |m| {
@@ -32,10 +33,8 @@
 //! ```
 //! use lucent::control::{Control, ControlConfig, Part, Symbol, TruthValue};
 //! let mut ctl = Control::new(ControlConfig::default());
-//! ctl.add("inc", "
-//!     #program base. at(0).
-//!     #program step(t). at(t) :- at(t-1), not stop(t). #external stop(t).
-//! ").unwrap();
+//! ctl.add("base", &[], "at(0).").unwrap();
+//! ctl.add("step", &["t"], "at(t) :- at(t-1), not stop(t). #external stop(t).").unwrap();
 //! ctl.ground(&[Part::base()]).unwrap();
 //! for t in 1..=3 {
 //!     ctl.ground(&[Part::new("step", vec![Symbol::number(t)])]).unwrap();
@@ -105,10 +104,8 @@ pub struct ControlConfig {
 impl Default for ControlConfig {
     fn default() -> Self {
         ControlConfig {
-            solve: solve::Config {
-                models: 0,
-                ..solve::Config::default()
-            },
+            // One model, as clingo's default (`solve::Config::default`).
+            solve: solve::Config::default(),
             ground: GroundConfig {
                 // gringo's default.
                 message_limit: Some(20),
@@ -368,7 +365,17 @@ impl Control {
         &self.config
     }
 
-    /// The solver's configuration, to change between solve calls (e.g. the model count).
+    /// The statistics of every solve call so far, added up (clingo's accumulated statistics;
+    /// each call's own are in its [`Summary::stats`]).
+    pub fn accumulated_stats(&self) -> solve::Stats {
+        self.solver
+            .as_ref()
+            .map(|s| s.accumulated_stats().clone())
+            .unwrap_or_default()
+    }
+
+    /// The solver's configuration, to change between solve calls (e.g. the model count); a
+    /// change takes effect at the next call.
     pub fn solve_config_mut(&mut self) -> &mut solve::Config {
         match &mut self.solver {
             Some(s) => s.config_mut(),
@@ -731,7 +738,7 @@ mod tests {
     #[test]
     fn one_shot_models_lookup_and_assumptions() {
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add("t", "{a; b}. c :- a. #show c/0. #show b/0.")
+        ctl.add_source("t", "{a; b}. c :- a. #show c/0. #show b/0.")
             .unwrap();
         ctl.ground(&[Part::base()]).unwrap();
         assert_eq!(answers(&mut ctl), ["", "b", "b c", "c"]);
@@ -758,7 +765,7 @@ mod tests {
     #[test]
     fn errors_come_back_as_diagnostics() {
         let mut ctl = Control::new(ControlConfig::default());
-        let e = ctl.add("bad.lp", "p(1)\nq.").unwrap_err();
+        let e = ctl.add_source("bad.lp", "p(1)\nq.").unwrap_err();
         assert!(e.diagnostics.has_errors());
         assert!(
             e.message.starts_with("bad.lp:2:1-2: error: syntax error"),
@@ -766,7 +773,7 @@ mod tests {
             e.message
         );
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add("unsafe.lp", "p(X) :- not q(X).").unwrap();
+        ctl.add_source("unsafe.lp", "p(X) :- not q(X).").unwrap();
         let e = ctl.ground(&[Part::base()]).unwrap_err();
         assert!(e.message.contains("unsafe variables in"), "{}", e.message);
     }
@@ -774,7 +781,7 @@ mod tests {
     #[test]
     fn parts_are_grounded_on_demand_with_parameters() {
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add(
+        ctl.add_source(
             "p",
             "#program base. q(0).\n#program step(t). q(t) :- q(t-1). r(t) :- not q(t+5).\n",
         )
@@ -798,7 +805,7 @@ mod tests {
     fn comparisons_in_disjunctive_heads_are_read_as_gringo_reads_them() {
         // `h ; X < 2 :- B.` holds when the comparison does: as `h :- B, not X < 2.`
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add("c", "q(X) ; X < 2 :- X = 1..3. r ; 3 < 1. s ; 1 < 3.")
+        ctl.add_source("c", "q(X) ; X < 2 :- X = 1..3. r ; 3 < 1. s ; 1 < 3.")
             .unwrap();
         ctl.ground(&[Part::base()]).unwrap();
         assert_eq!(answers(&mut ctl), ["q(2) q(3) r"]);
@@ -808,7 +815,7 @@ mod tests {
     fn a_later_part_shows_a_term_on_an_atom_of_an_earlier_one() {
         // `#show x : p(k).` in part k reads p(k), grounded (and numbered) by `base`.
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add(
+        ctl.add_source(
             "s",
             "#program base. 1 { p(0..1) } 1. #program check(k). #show p/1. #show x : p(k).",
         )
@@ -823,7 +830,7 @@ mod tests {
     #[test]
     fn externals_are_assigned_and_released() {
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add("e", "#external e(1..2). p :- e(1). q :- e(2).")
+        ctl.add_source("e", "#external e(1..2). p :- e(1). q :- e(2).")
             .unwrap();
         ctl.ground(&[Part::base()]).unwrap();
         assert_eq!(answers(&mut ctl), [""]);
@@ -843,7 +850,7 @@ mod tests {
             let mut config = ControlConfig::default();
             config.solve.supports = supports;
             let mut ctl = Control::new(config);
-            ctl.add("s", text).unwrap();
+            ctl.add_source("s", text).unwrap();
             ctl.ground(&[Part::base()]).unwrap();
             let mut out = Vec::new();
             ctl.solve(&SolveOptions::default(), |m| {

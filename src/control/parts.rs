@@ -1,6 +1,6 @@
 //! Adding programs and grounding parts: text and files parsed into statements, filed into
-//! `#program name(params).` parts (`base` before any directive, per file; an included file's
-//! parts do not leak), `#include <incmode>.` taken out, constants evaluated (`-c` before
+//! `#program name(params).` parts (`base` before any directive, per file, or the part a
+//! [`Control::add`] call names; an included file's parts do not leak), `#include <incmode>.` taken out, constants evaluated (`-c` before
 //! `#const`), and ground requests grouped (parts without parameters together, then each group of
 //! parts whose parameter bindings agree) and handed to the Control's grounding session
 //! (`ground::incremental`), which continues from the earlier groundings (see `context`).
@@ -11,8 +11,19 @@
 use super::*;
 
 impl Control {
-    /// Parses `text` (named `name` in diagnostics) and keeps its statements.
-    pub fn add(&mut self, name: &str, text: &str) -> Result<(), Error> {
+    /// Adds `text` to the part `part(params)` (clingo's `Control.add(name, params, program)`):
+    /// its statements belong to that part until a `#program` directive in the text switches
+    /// part, so `add("step", &["t"], "q(t).")` and grounding `step(1)` give `q(1)`.
+    /// Diagnostics name the text `<block>`, as clingo's do.
+    pub fn add(&mut self, part: &str, params: &[&str], text: &str) -> Result<(), Error> {
+        let file = self.sources.add("<block>", text);
+        let params: Vec<String> = params.iter().map(|p| p.to_string()).collect();
+        self.add_file_in(file, None, Some((part, &params)))
+    }
+
+    /// Parses `text` as a source named `name` (a file name in diagnostics) and keeps its
+    /// statements: those before any `#program` directive belong to `base`, as a file's do.
+    pub fn add_source(&mut self, name: &str, text: &str) -> Result<(), Error> {
         let file = self.sources.add(name, text);
         self.add_file(file, None)
     }
@@ -21,7 +32,7 @@ impl Control {
     pub fn load(&mut self, path: impl AsRef<Path>) -> Result<(), Error> {
         let path = path.as_ref();
         match std::fs::read_to_string(path) {
-            Ok(text) => self.add(&path.display().to_string(), &text),
+            Ok(text) => self.add_source(&path.display().to_string(), &text),
             Err(e) => {
                 let cmd = self.sources.add("<cmd>", "");
                 let mut d = self.new_diags();
@@ -37,6 +48,17 @@ impl Control {
     /// Parses the file `file` of [`Control::sources`] (added by the caller) in `dialect`
     /// (detected when `None`), resolves its includes and keeps its statements.
     pub fn add_file(&mut self, file: FileId, dialect: Option<Dialect>) -> Result<(), Error> {
+        self.add_file_in(file, dialect, None)
+    }
+
+    /// [`Control::add_file`] with the file's statements before any directive in part `start`
+    /// (`base` when `None`).
+    fn add_file_in(
+        &mut self,
+        file: FileId,
+        dialect: Option<Dialect>,
+        start: Option<(&str, &[String])>,
+    ) -> Result<(), Error> {
         let text = &self.sources.get(file).text;
         let dialect = dialect
             .or(self.config.dialect)
@@ -44,7 +66,11 @@ impl Control {
         let parse = crate::syntax::parse(file, text, dialect);
         let mut d = self.new_diags();
         d.extend(parse.diagnostics);
-        self.add_parsed(parse.program, d)
+        self.add_parsed(
+            parse.program,
+            d,
+            start.map(|(name, params)| (file, name, params)),
+        )
     }
 
     /// Adds `facts` (functions, a negative one as a classically negated fact) to the base part,
@@ -84,10 +110,15 @@ impl Control {
     /// [`Control::sources`] (a generated program may use default spans).
     pub fn add_program(&mut self, program: Program) -> Result<(), Error> {
         let d = self.new_diags();
-        self.add_parsed(program, d)
+        self.add_parsed(program, d, None)
     }
 
-    fn add_parsed(&mut self, program: Program, mut d: Diagnostics) -> Result<(), Error> {
+    fn add_parsed(
+        &mut self,
+        program: Program,
+        mut d: Diagnostics,
+        start: Option<(FileId, &str, &[String])>,
+    ) -> Result<(), Error> {
         if self.sources.is_empty() {
             // Default spans name file 0: give it a name.
             self.sources.add("<program>", "");
@@ -119,20 +150,26 @@ impl Control {
         if self.dialect.is_none() {
             self.dialect = Some(program.dialect);
         }
-        self.split(program.statements, program.dialect);
+        self.split(program.statements, program.dialect, start);
         if wants_incmode && !self.incmode {
             self.incmode = true;
             let text = "#program check(t).\n#external query(t).\n";
             let file = self.sources.add("<incmode>", text);
             let parse = crate::syntax::parse(file, text, Dialect::Clingo);
-            self.split(parse.program.statements, Dialect::Clingo);
+            self.split(parse.program.statements, Dialect::Clingo, None);
         }
         Ok(())
     }
 
-    /// Files the statements into parts: each file starts in `base`; `#program` switches the
-    /// part of the file it is written in (an included file's parts do not leak).
-    fn split(&mut self, statements: Vec<Statement>, dialect: Dialect) {
+    /// Files the statements into parts: each file starts in `base` (the file of `start` in the
+    /// part it names: [`Control::add`]'s text); `#program` switches the part of the file it is
+    /// written in (an included file's parts do not leak).
+    fn split(
+        &mut self,
+        statements: Vec<Statement>,
+        dialect: Dialect,
+        start: Option<(FileId, &str, &[String])>,
+    ) {
         let mut current: HashMap<FileId, usize> = HashMap::new();
         for st in statements {
             if dialect == Dialect::Sparc {
@@ -147,6 +184,12 @@ impl Control {
             }
             let b = match current.get(&st.span.file) {
                 Some(&b) => b,
+                None if start.is_some_and(|(f, _, _)| f == st.span.file) => {
+                    let (_, name, params) = start.expect("checked");
+                    let b = self.block(name, params);
+                    current.insert(st.span.file, b);
+                    b
+                }
                 None => self.block("base", &[]),
             };
             let global = match &st.kind {

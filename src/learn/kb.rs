@@ -283,7 +283,7 @@ impl KbWorld {
         let mut ctl = Control::with_sources(config, sources);
         ctl.add_program(translation.program)
             .map_err(|e| KbError::Ground(e.message))?;
-        ctl.add("<learn externals>", EXTERNALS)
+        ctl.add_source("<learn externals>", EXTERNALS)
             .map_err(|e| KbError::Ground(e.message))?;
         ctl.ground(&[Part::base()])
             .map_err(|e| KbError::Ground(e.message))?;

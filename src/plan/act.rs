@@ -345,7 +345,7 @@ impl Runner<'_> {
                 .collect();
             ctl.add_facts(&facts).map_err(input)?;
             // Each perceived relation holds at step 0 unless doubted; a doubt costs one CR rule.
-            ctl.add("<doubts>", DIAGNOSIS).map_err(input)?;
+            ctl.add_source("<doubts>", DIAGNOSIS).map_err(input)?;
         }
         ctl.ground(&[Part::base()]).map_err(input)?;
         Ok(ctl.solve_all(&Default::default()).models)

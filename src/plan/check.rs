@@ -494,7 +494,7 @@ impl StateSearch {
         let mut program = t.program;
         free_cr_rules(&mut program);
         let mut ctl = control(sources, program, 0)?;
-        ctl.add(
+        ctl.add_source(
             "<plan check>",
             "#external init(F) : inertial_fluent(F).\nholds(F, 0) :- init(F).\n",
         )

@@ -374,10 +374,13 @@ pub struct Limits {
     pub interrupt: Option<Arc<AtomicBool>>,
     /// Portfolio flag: another thread finished first (not reported as an interrupt).
     pub portfolio_stop: Option<Arc<AtomicBool>>,
-    /// Stop with `Unknown` after this many conflicts in total (clasp `--solve-limit`).
+    /// Stop with `Unknown` once the engine's conflict count reaches this (the solver sets it at
+    /// every call: the call's first conflict count plus `Config::conflict_limit`).
     pub conflict_limit: Option<u64>,
     /// Whether the last `search` stopped because the interrupt flag was raised.
     pub interrupted: bool,
+    /// Whether the last `search` stopped at the conflict limit.
+    pub conflict_hit: bool,
     /// Portfolio: a counter a peer bumps when it publishes a better optimization bound; the
     /// search stops with `Unknown` when it differs from `bound_seen`, setting `bound_news`.
     pub bound_gen: Option<Arc<std::sync::atomic::AtomicU64>>,
@@ -602,6 +605,7 @@ impl Engine {
                 portfolio_stop: None,
                 conflict_limit: None,
                 interrupted: false,
+                conflict_hit: false,
                 bound_gen: None,
                 bound_seen: 0,
                 bound_news: false,
@@ -642,6 +646,11 @@ impl Engine {
     /// Sets the VSIDS decay and the random seed.
     pub fn configure(&mut self, var_decay: f64, seed: u64) {
         self.heur.var_decay = var_decay.clamp(0.5, 0.999);
+        self.reseed(seed);
+    }
+
+    /// Restarts the random generator from `seed`.
+    pub fn reseed(&mut self, seed: u64) {
         self.heur.rng = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
     }
 

@@ -60,9 +60,12 @@ pub enum StopReason {
     TimeLimit,
     /// The interrupt flag was raised.
     Interrupted,
+    /// The call met `Config::conflict_limit` conflicts (clasp's `--solve-limit`).
+    ConflictLimit,
 }
 
-/// Search statistics; for people, never asserted on by tests.
+/// Search statistics of one solve call (the counters count that call's work; `learnt`, `vars`
+/// and `clauses` are sizes at its end); for people, never asserted on by tests.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Stats {
     /// Decisions made.
@@ -90,6 +93,26 @@ pub struct Stats {
     /// the end of the call when the search space was exhausted, zero otherwise: the time spent
     /// proving that nothing (better) is left (clasp's `Unsat`).
     pub unsat: Duration,
+}
+
+impl Stats {
+    /// Adds the counters and times of a later call (`other`) to these, and takes its sizes:
+    /// the accumulated statistics of several calls (clingo's `accu` beside `summary`).
+    pub fn accumulate(&mut self, other: &Stats) {
+        self.choices += other.choices;
+        self.conflicts += other.conflicts;
+        self.restarts += other.restarts;
+        self.propagations += other.propagations;
+        self.loop_nogoods += other.loop_nogoods;
+        self.learnt = other.learnt;
+        self.vars = other.vars;
+        self.clauses = other.clauses;
+        self.time += other.time;
+        if self.first_model.is_none() {
+            self.first_model = other.first_model;
+        }
+        self.unsat += other.unsat;
+    }
 }
 
 /// Everything one call of the solver answers.

@@ -48,6 +48,7 @@ mod cr;
 pub(crate) use cr::transitive_closure;
 mod portfolio;
 mod search;
+mod settings;
 mod strategies;
 
 use super::config::{
@@ -123,6 +124,10 @@ pub struct Solver {
     cube: Vec<Lit>,
     /// Skip the learnt-clause limit at the start of the next call (a portfolio's later cubes).
     keep_learnts: bool,
+    /// The configuration the engine's settings were last made from (`settings::apply`).
+    applied: Config,
+    /// The statistics of every call so far, added up.
+    total: Stats,
 }
 
 /// What one guard owns: variables defined for the constraints it guards (cost and CR bounds,
@@ -196,7 +201,6 @@ impl Solver {
         let mut engine = Engine::new();
         engine.configure(config.var_decay, config.seed);
         engine.settings = Settings::from_config(&config);
-        engine.limits.conflict_limit = config.conflict_limit;
         engine.sched.restarts = restart_state(config.restarts);
         prog.num_atoms = max_atom(&prog);
         // As clasp (and `check::external_values`): an external statement on an atom that has
@@ -251,6 +255,8 @@ impl Solver {
         let problem_size = size.clauses + size.weights;
         Solver {
             prog,
+            applied: config.clone(),
+            total: Stats::default(),
             config,
             engine,
             tr,
@@ -591,10 +597,20 @@ impl Solver {
         sink: &mut dyn FnMut(&Model, &GroundProgram) -> bool,
         lazy_support: bool,
     ) -> SolveResult {
-        if self.par.is_some() {
-            return self.run_parallel(assumptions, sink, lazy_support);
-        }
-        self.run_call_one(assumptions, sink, lazy_support)
+        self.apply_config();
+        let r = if self.par.is_some() {
+            self.run_parallel(assumptions, sink, lazy_support)
+        } else {
+            self.run_call_one(assumptions, sink, lazy_support)
+        };
+        self.total.accumulate(&r.stats);
+        r
+    }
+
+    /// The statistics of every solve call so far, added up (each call's own are in its
+    /// [`SolveResult::stats`]).
+    pub fn accumulated_stats(&self) -> &Stats {
+        &self.total
     }
 
     /// One solve call of this solver alone.
@@ -605,12 +621,15 @@ impl Solver {
         lazy_support: bool,
     ) -> SolveResult {
         let start = Instant::now();
-        let (d0, c0, r0) = (
+        let (d0, c0, r0, p0, l0) = (
             self.engine.stats.decisions,
             self.engine.stats.conflicts,
             self.engine.stats.num_restarts,
+            self.engine.stats.propagations,
+            self.engine.stats.loop_nogoods,
         );
         self.engine.limits.deadline = self.config.deadline;
+        self.engine.limits.conflict_limit = self.config.conflict_limit.map(|n| c0 + n);
         self.engine.limits.interrupt = self.config.interrupt.clone();
         if self.calls > 0 && !std::mem::take(&mut self.keep_learnts) {
             // What earlier calls learnt is kept up to a limit set by the problem size, as clasp
@@ -673,6 +692,8 @@ impl Solver {
         let stop = if call.stopped {
             Some(if self.engine.limits.interrupted {
                 StopReason::Interrupted
+            } else if self.engine.limits.conflict_hit {
+                StopReason::ConflictLimit
             } else {
                 StopReason::TimeLimit
             })
@@ -689,8 +710,8 @@ impl Solver {
                 choices: self.engine.stats.decisions - d0,
                 conflicts: self.engine.stats.conflicts - c0,
                 restarts: self.engine.stats.num_restarts - r0,
-                propagations: self.engine.stats.propagations,
-                loop_nogoods: self.engine.stats.loop_nogoods,
+                propagations: self.engine.stats.propagations - p0,
+                loop_nogoods: self.engine.stats.loop_nogoods - l0,
                 learnt: self.engine.num_learnts() as u64,
                 vars: self.engine.num_vars() as u64,
                 clauses: self.engine.stats.num_clauses,

@@ -84,7 +84,7 @@ fn grid_loop_model_counts_are_clingos() {
     // (the same loop, all models of each step): no plan up to step 38, 135 plans of 39 moves,
     // 5400 plans at step 40 (one wait anywhere, or a detour).
     let mut ctl = Control::new(ControlConfig::default());
-    ctl.add("grid", GRID).expect("the program parses");
+    ctl.add_source("grid", GRID).expect("the program parses");
     ctl.solve_config_mut().models = 0;
     for t in 0..=40 {
         next_step(&mut ctl, t);
@@ -107,7 +107,7 @@ fn grid_loop_first_models_are_plans_at_every_step() {
     // UNSAT up to step 38 and SAT from 39 on (`python3 scripts/bench_multishot.py --counts 40`
     // above); from step 39 on each first model must be a plan reaching the goal at its step.
     let mut ctl = Control::new(ControlConfig::default());
-    ctl.add("grid", GRID).expect("the program parses");
+    ctl.add_source("grid", GRID).expect("the program parses");
     ctl.solve_config_mut().models = 1;
     for t in 0..=90 {
         next_step(&mut ctl, t);

@@ -10,3 +10,4 @@ mod incmode;
 mod multishot;
 mod provenance;
 mod threads;
+mod traps;

@@ -130,7 +130,7 @@ fn step_by_step(base: &str, rules: &[String], k: i32) -> Vec<Vec<String>> {
         text.push('\n');
     }
     let mut ctl = Control::new(config());
-    ctl.add("steps.lp", &text).unwrap();
+    ctl.add_source("steps.lp", &text).unwrap();
     ctl.ground(&[Part::base()]).unwrap();
     answer_sets(&mut ctl);
     for t in 1..=k {
@@ -156,7 +156,7 @@ fn one_shot(base: &str, rules: &[String], k: i32) -> Vec<Vec<String>> {
         }
     }
     let mut ctl = Control::new(config());
-    ctl.add("unrolled.lp", &text).unwrap();
+    ctl.add_source("unrolled.lp", &text).unwrap();
     ctl.ground(&[Part::base()]).unwrap();
     answer_sets(&mut ctl)
 }
@@ -172,7 +172,7 @@ fn step_parts_one_by_one_equal_the_unrolled_program() {
         let (base, rules) = case(seed);
         // Programs the grounder rejects (e.g. unsafe random rules) are not this test's subject.
         let mut probe = Control::new(config());
-        if probe.add("probe.lp", &base).is_err() || probe.ground(&[Part::base()]).is_err() {
+        if probe.add_source("probe.lp", &base).is_err() || probe.ground(&[Part::base()]).is_err() {
             continue;
         }
         let k = 1 + (seed % 3) as i32;

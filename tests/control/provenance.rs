@@ -22,6 +22,7 @@ fn with_provenance() -> ControlConfig {
 }
 
 fn models(ctl: &mut Control) -> Vec<String> {
+    ctl.solve_config_mut().models = 0;
     let mut out: Vec<String> = ctl
         .solve_all(&SolveOptions::default())
         .models
@@ -99,7 +100,7 @@ const INC: &str = "#program base. q(0). s(1).
 #[test]
 fn rules_of_later_groundings_keep_their_origins() {
     let mut ctl = Control::new(with_provenance());
-    ctl.add("inc.lp", INC).unwrap();
+    ctl.add_source("inc.lp", INC).unwrap();
     ctl.ground(&[Part::base()]).unwrap();
     assert_eq!(models(&mut ctl), ["q(0) s(1)"]);
     ctl.ground(&[step(1)]).unwrap();
@@ -157,7 +158,7 @@ fn rules_of_later_groundings_keep_their_origins() {
 fn statement_ids_of_repeated_parts_are_distinct() {
     // The same part statement grounded for two parameters: two statement ids, two parts.
     let mut ctl = Control::new(with_provenance());
-    ctl.add("p.lp", "#program step(t). {a(t)}.").unwrap();
+    ctl.add_source("p.lp", "#program step(t). {a(t)}.").unwrap();
     ctl.ground(&[Part::base()]).unwrap();
     ctl.ground(&[step(1)]).unwrap();
     models(&mut ctl);
@@ -216,8 +217,8 @@ fn a_completed_atom_gets_no_rules_later() {
             let mut config = ControlConfig::default();
             config.ground.provenance = provenance;
             let mut ctl = Control::new(config);
-            ctl.add("base.lp", base).unwrap();
-            ctl.add("step.lp", &format!("#program step(t). {step_text}"))
+            ctl.add_source("base.lp", base).unwrap();
+            ctl.add_source("step.lp", &format!("#program step(t). {step_text}"))
                 .unwrap();
             ctl.ground(&[Part::base()]).unwrap();
             models(&mut ctl);
@@ -255,8 +256,8 @@ fn a_completed_atom_gets_no_rules_later() {
 fn facts_externals_and_unsolved_steps_may_get_rules() {
     let run = |base: &str, step_text: &str, solve_between: bool| {
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add("b", base).unwrap();
-        ctl.add("s", &format!("#program step(t). {step_text}"))
+        ctl.add_source("b", base).unwrap();
+        ctl.add_source("s", &format!("#program step(t). {step_text}"))
             .unwrap();
         ctl.ground(&[Part::base()]).unwrap();
         if solve_between {
@@ -340,7 +341,7 @@ fn assumptions_on_externals_as_clingo() {
     ];
     for &(text, assign, assumptions, want) in cases {
         let mut ctl = Control::new(ControlConfig::default());
-        ctl.add("t", text).unwrap();
+        ctl.add_source("t", text).unwrap();
         ctl.ground(&[Part::base()]).unwrap();
         if let Some((atom, v)) = assign {
             ctl.assign_external(&sym(atom), v);
@@ -370,7 +371,7 @@ fn a_one_shot_grounding_taken_out_prints_its_provenance_as_the_grounder_does() {
     // taken over (this panicked in `Interner::resolve` / `Symbols::get`).
     let src = "q(1..3).\np(1).\np(X) :- q(X), not r(X).\n{r(1..3)}.\n";
     let mut ctl = Control::new(with_provenance());
-    ctl.add("t.lp", src).unwrap();
+    ctl.add_source("t.lp", src).unwrap();
     ctl.ground(&[Part::base()]).unwrap();
     let g = ctl.take_grounding();
     let got = lucent::ground::text::write_text(&g, Some(ctl.sources()));
@@ -392,7 +393,7 @@ fn a_later_rule_for_an_old_fact_keeps_its_origin() {
     // p(1) is a fact of base; step(1)'s instance `p(1) :- q(1), c.` adds nothing to it (the
     // solver never sees it) but keeps its statement, part and bindings for the explainer.
     let mut ctl = Control::new(with_provenance());
-    ctl.add(
+    ctl.add_source(
         "f.lp",
         "#program base. p(1). q(1..2). {c}.\n#program step(t). p(X) :- q(X), c.\n",
     )

@@ -91,7 +91,7 @@ fn two_threads_follow_steps_externals_and_assumptions() {
         let mut one = control(1, optimize);
         let mut two = control(2, optimize);
         for ctl in [&mut one, &mut two] {
-            ctl.add("colour.lp", &text).unwrap();
+            ctl.add_source("colour.lp", &text).unwrap();
             ctl.ground(&[Part::base()]).unwrap();
         }
         let mut rng = Rng(seed ^ 0xc0108);

@@ -93,9 +93,11 @@ impl Engine {
                 return true;
             }
         }
-        self.limits
+        self.limits.conflict_hit = self
+            .limits
             .conflict_limit
-            .is_some_and(|n| self.stats.conflicts >= n)
+            .is_some_and(|n| self.stats.conflicts >= n);
+        self.limits.conflict_hit
     }
 
     /// Switches to clasp's phase handling for the rest of the search call
@@ -120,6 +122,7 @@ impl Engine {
     /// made this assignment).
     pub fn search_from(&mut self, assumptions: &[Lit], resume: bool) -> SearchResult {
         self.limits.interrupted = false;
+        self.limits.conflict_hit = false;
         self.limits.bound_news = false;
         self.an.failed.clear();
         if let Some((save_progress, sign)) = self.heur.phase_switched.take() {

@@ -654,7 +654,7 @@ impl Solver {
                     t.stats.choices += r.stats.choices;
                     t.stats.conflicts += r.stats.conflicts;
                     t.stats.restarts += r.stats.restarts;
-                    t.stats.propagations = r.stats.propagations;
+                    t.stats.propagations += r.stats.propagations;
                     t.stop = r.stop;
                     t
                 }

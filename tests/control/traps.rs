@@ -1,0 +1,176 @@
+//! The traps a clingo API user fell into with `Control` (issue 33): each test failed before
+//! the fix it names. Expected values are derived by hand from clingo's documented behaviour
+//! (its Python API: `Control.add(name, params, program)`, one model by default, statistics
+//! per call and accumulated kept apart, settings read at every solve call).
+
+use lucent::control::{Control, ControlConfig, Part, Symbol};
+use lucent::solve::StopReason;
+
+fn sym(s: &str) -> Symbol {
+    Symbol::parse(s).unwrap()
+}
+
+fn shown(ctl: &mut Control) -> Vec<Vec<String>> {
+    let mut out = Vec::new();
+    ctl.solve(&Default::default(), |m| {
+        let mut v: Vec<String> = m.symbols().iter().map(|s| s.to_string()).collect();
+        v.sort();
+        out.push(v);
+        true
+    });
+    out
+}
+
+/// `add` takes a part name and its parameters, as clingo's does: the text belongs to
+/// `step(t)`, so grounding `step(1)` gives `q(1)` (it used to be a file name, and the text
+/// landed in `base`, where `t` is an unknown constant).
+#[test]
+fn add_files_the_text_under_the_named_part() {
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("step", &["t"], "q(t).").unwrap();
+    // A directive in the text still switches part; a file-like source starts in base.
+    ctl.add("base", &[], "r. #program step(t). s(t).").unwrap();
+    ctl.add_source("more.lp", "u.").unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    assert_eq!(
+        shown(&mut ctl),
+        vec![vec!["r".to_string(), "u".to_string()]]
+    );
+    ctl.ground(&[Part::new("step", vec![Symbol::number(1)])])
+        .unwrap();
+    let m = &shown(&mut ctl)[0];
+    for a in ["q(1)", "r", "s(1)", "u"] {
+        assert!(m.contains(&a.to_string()), "{a} in {m:?}");
+    }
+}
+
+/// clingo solves for one model unless told otherwise (`-n 1`, `solve.models = 1`).
+#[test]
+fn the_default_config_asks_for_one_model() {
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("base", &[], "{a; b; c}.").unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    assert_eq!(shown(&mut ctl).len(), 1);
+    ctl.solve_config_mut().models = 0;
+    assert_eq!(shown(&mut ctl).len(), 8);
+}
+
+/// A conflict limit set between calls applies to the next call, counts that call's conflicts
+/// only, and the stop says it was the conflict limit, not the clock.
+#[test]
+fn a_conflict_limit_set_later_applies_and_is_named() {
+    // The pigeonhole principle, 8 pigeons in 7 holes: unsatisfiable, thousands of conflicts.
+    let text = "pigeon(1..8). hole(1..7).
+        1 { in(P,H) : hole(H) } 1 :- pigeon(P).
+        :- in(P,H), in(Q,H), P < Q.";
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("base", &[], text).unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    ctl.solve_config_mut().conflict_limit = Some(50);
+    let first = ctl.solve(&Default::default(), |_| true);
+    assert_eq!(first.stop, Some(StopReason::ConflictLimit));
+    // The limit is checked every 256 steps of the search loop, so a call may overshoot a little.
+    let c = first.stats.conflicts;
+    assert!((50..50 + 256).contains(&c), "{c}");
+    // The second call gets its own 50 conflicts (the limit counted all calls' conflicts, so
+    // this call stopped at once).
+    let second = ctl.solve(&Default::default(), |_| true);
+    assert_eq!(second.stop, Some(StopReason::ConflictLimit));
+    assert!(second.stats.conflicts >= 50, "{}", second.stats.conflicts);
+    ctl.solve_config_mut().conflict_limit = None;
+    let third = ctl.solve(&Default::default(), |_| true);
+    assert_eq!(third.stop, None);
+    assert!(third.is_unsatisfiable());
+}
+
+/// Every figure of a call's statistics is that call's; the accumulated ones sum the calls.
+#[test]
+fn call_statistics_and_accumulated_ones_are_kept_apart() {
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("base", &[], "{a(1..20)}. :- a(X), a(X+1). b :- a(1).")
+        .unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    ctl.solve_config_mut().models = 0;
+    let one = ctl.solve(&Default::default(), |_| true).stats;
+    let two = ctl.solve(&Default::default(), |_| true).stats;
+    assert!(one.propagations > 0 && two.propagations > 0);
+    assert!(
+        two.propagations < one.propagations + two.choices * 100,
+        "the second call's propagations include the first's? {} then {}",
+        one.propagations,
+        two.propagations
+    );
+    let total = ctl.accumulated_stats();
+    assert_eq!(total.choices, one.choices + two.choices);
+    assert_eq!(total.conflicts, one.conflicts + two.conflicts);
+    assert_eq!(total.propagations, one.propagations + two.propagations);
+    assert_eq!(total.time, one.time + two.time);
+}
+
+/// Identical calls asking for one model give the same model (the module's promise).
+#[test]
+fn identical_calls_give_the_same_model() {
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add(
+        "base",
+        &[],
+        "{a(1..6)}. :- a(X), a(X+1). :- not a(2), not a(5).",
+    )
+    .unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let first = shown(&mut ctl);
+    for _ in 0..4 {
+        assert_eq!(shown(&mut ctl), first);
+    }
+    // Still so under an assumption, call after call.
+    let opts = lucent::control::SolveOptions {
+        assumptions: vec![(sym("a(3)"), false)],
+    };
+    let mut under = Vec::new();
+    for _ in 0..3 {
+        let mut m = Vec::new();
+        ctl.solve(&opts, |x| {
+            m = x.symbols().iter().map(|s| s.to_string()).collect();
+            true
+        });
+        under.push(m);
+    }
+    assert!(under.windows(2).all(|w| w[0] == w[1]), "{under:?}");
+}
+
+/// A seed changed after the solver was made is used by its next call (it used to be read
+/// once, at construction): a solver made with seed 1 and switched to seed 5 enumerates the
+/// models of `1 { a(1..12) } 1` in the order a solver made with seed 5 does, with every
+/// decision random; seed 1's own order differs (checked, so the test can fail).
+#[test]
+fn a_seed_set_after_construction_is_used() {
+    use lucent::solve::{Config, Solver};
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("base", &[], "1 { a(1..12) } 1.").unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    ctl.solve(&Default::default(), |_| true);
+    let prog = ctl.program().clone();
+    let config = |seed| Config {
+        seed,
+        random_freq_permille: 1000,
+        models: 0,
+        ..Config::default()
+    };
+    let order = |s: &mut Solver| {
+        let mut v = Vec::new();
+        s.for_each_model(&[], &mut |m| {
+            v.push(m.atoms.clone());
+            true
+        });
+        v
+    };
+    let five = order(&mut Solver::new(&prog, config(5)));
+    let one = order(&mut Solver::new(&prog, config(1)));
+    assert_ne!(
+        five, one,
+        "seeds 1 and 5 give one order: the test shows nothing"
+    );
+    let mut switched = Solver::new(&prog, config(1));
+    switched.config_mut().seed = 5;
+    assert_eq!(order(&mut switched), five);
+}
