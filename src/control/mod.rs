@@ -104,8 +104,11 @@ pub struct ControlConfig {
 impl Default for ControlConfig {
     fn default() -> Self {
         ControlConfig {
-            // One model, as clingo's default (`solve::Config::default`).
-            solve: solve::Config::default(),
+            // clingo's default: one model, or the optimum of a program that optimizes.
+            solve: solve::Config {
+                models: solve::Config::AUTO_MODELS,
+                ..solve::Config::default()
+            },
             ground: GroundConfig {
                 // gringo's default.
                 message_limit: Some(20),

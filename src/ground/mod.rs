@@ -144,6 +144,20 @@ impl Grounding {
 
 /// Grounds `program`. `sources`, when given, supplies the text shown in diagnostics. One
 /// grounding pipeline: this is a multi-shot `incremental::Session` used once.
+///
+/// ```
+/// use lucent::base::SourceMap;
+/// use lucent::ground::{self, GroundConfig};
+/// use lucent::syntax::{self, ast::Dialect};
+/// let mut sources = SourceMap::new();
+/// let text = "p(1..3). q(X) :- p(X), X > 1. {r(X)} :- q(X).";
+/// let file = sources.add("t.lp", text);
+/// let parsed = syntax::parse(file, text, Dialect::Clingo);
+/// let g = ground::ground(&parsed.program, Some(&sources), &GroundConfig::default());
+/// assert!(!g.diagnostics.has_errors());
+/// // p(1..3) and q(2), q(3) are facts; r(2), r(3) are the choice's two atoms.
+/// assert_eq!(g.program.rules.len(), 5 + 2);
+/// ```
 pub fn ground(
     program: &ast::Program,
     sources: Option<&SourceMap>,

@@ -160,7 +160,8 @@ impl Heuristic {
 pub struct Config {
     /// Number of models to compute; 0 means all (`-n`). With `#minimize` in `Opt` mode, 0 means
     /// "until the optimum is proven" and N stops after N improving models, as in clasp; the
-    /// command line passes 0 there unless the user gave `-n`.
+    /// command line passes 0 there unless the user gave `-n`. [`Config::AUTO_MODELS`] is
+    /// clasp's default (`-n -1`): 0 for a program that optimizes, else 1, decided at each call.
     pub models: usize,
     /// Optimization mode.
     pub opt_mode: OptMode,
@@ -311,6 +312,12 @@ pub enum RestartPolicy {
     Glucose,
     /// Never restart.
     Never,
+}
+
+impl Config {
+    /// `models` decided per call as clasp's default: the optimum (0) for a program that
+    /// optimizes, else one model.
+    pub const AUTO_MODELS: usize = usize::MAX;
 }
 
 impl Default for Config {

@@ -542,6 +542,20 @@ impl Solver {
     ///
     /// With `Config::threads >= 2`, this and every other call runs on a portfolio of that
     /// many solvers that share learnt clauses (`portfolio`).
+    ///
+    /// ```
+    /// use lucent::ground::aspif;
+    /// use lucent::solve::{Config, Outcome, Solver};
+    /// // A ground program in aspif (gringo's output format): {a; b}. :- a, b.  #minimize{1: not a}.
+    /// let text = "asp 1 0 0\n1 1 2 1 2 0 0\n1 0 0 0 2 1 2\n2 0 1 -1 1\n4 1 a 1 1\n4 1 b 1 2\n0\n";
+    /// let prog = aspif::read_program(text.as_bytes()).unwrap();
+    /// // clasp's default model count: the optimum here, as the program minimizes.
+    /// let config = Config { models: Config::AUTO_MODELS, ..Config::default() };
+    /// let mut solver = Solver::new(&prog, config);
+    /// let result = solver.solve();
+    /// assert_eq!(result.outcome, Outcome::Optimum);
+    /// assert_eq!(result.models.last().unwrap().symbols, ["a"]);
+    /// ```
     pub fn solve(&mut self) -> SolveResult {
         self.solve_with(&[])
     }
@@ -598,11 +612,20 @@ impl Solver {
         lazy_support: bool,
     ) -> SolveResult {
         self.apply_config();
+        let auto = self.config.models == Config::AUTO_MODELS;
+        if auto {
+            let optimizing =
+                !self.prog.minimize.is_empty() && self.config.opt_mode != OptMode::Ignore;
+            self.config.models = usize::from(!optimizing);
+        }
         let r = if self.par.is_some() {
             self.run_parallel(assumptions, sink, lazy_support)
         } else {
             self.run_call_one(assumptions, sink, lazy_support)
         };
+        if auto {
+            self.config.models = Config::AUTO_MODELS;
+        }
         self.total.accumulate(&r.stats);
         r
     }

@@ -174,3 +174,27 @@ fn a_seed_set_after_construction_is_used() {
     switched.config_mut().seed = 5;
     assert_eq!(order(&mut switched), five);
 }
+
+/// The default asks for one model of a decision problem but the optimum of a program that
+/// optimizes, as clingo (`-n` defaults to clasp's "auto"): `{a; b; c}` minimizing the atoms
+/// left false has the optimum `a b c` (cost 0); the first model, with every decision's sign
+/// false, is not it.
+#[test]
+fn the_default_config_finds_the_optimum_of_an_optimization() {
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add(
+        "base",
+        &[],
+        "{a; b; c}. #minimize{1,a: not a; 1,b: not b; 1,c: not c}.",
+    )
+    .unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let mut last = Vec::new();
+    let summary = ctl.solve(&Default::default(), |m| {
+        last = m.symbols().iter().map(|s| s.to_string()).collect();
+        last.sort();
+        true
+    });
+    assert!(summary.optimum_proven);
+    assert_eq!(last, ["a", "b", "c"]);
+}

@@ -61,7 +61,20 @@ impl Parse {
     }
 }
 
-/// Parses `text` (the contents of `file`) as `dialect`.
+/// Parses `text` (the contents of `file`) as `dialect`. Errors are diagnostics with their
+/// place, never a panic; the statements parsed around them are kept.
+///
+/// ```
+/// use lucent::base::SourceMap;
+/// use lucent::syntax::{self, ast::Dialect};
+/// let mut sources = SourceMap::new();
+/// let text = "p(1..3). q(X) :- p(X), X > 1.\nr :- s(.";
+/// let file = sources.add("t.lp", text);
+/// let parsed = syntax::parse(file, text, Dialect::Clingo);
+/// assert!(parsed.program.statements.len() >= 2); // the two good statements are kept
+/// assert!(parsed.has_errors());
+/// assert!(sources.location(parsed.diagnostics[0].span).starts_with("t.lp:2:"));
+/// ```
 pub fn parse(file: FileId, text: &str, dialect: Dialect) -> Parse {
     if text.len() >= u32::MAX as usize {
         return Parse {
