@@ -312,6 +312,17 @@ pub struct Control {
     ctl_of_gatom: Vec<AtomId>,
 }
 
+/// Stops a solve call from another thread: see [`Control::interrupter`].
+#[derive(Clone, Debug)]
+pub struct Interrupter(std::sync::Arc<std::sync::atomic::AtomicBool>);
+
+impl Interrupter {
+    /// Asks the running solve call to stop.
+    pub fn interrupt(&self) {
+        self.0.store(true, std::sync::atomic::Ordering::Relaxed);
+    }
+}
+
 /// A statement of a grounded part (see [`Control::statement`]).
 #[derive(Clone, Debug)]
 pub struct GroundedStatement {
@@ -489,6 +500,50 @@ impl Control {
         })
     }
 
+    /// The atoms of signature `name/arity` (clingo's `symbolic_atoms.by_signature`): those whose
+    /// symbol is a function (or constant) of that name and arity, classically negated when
+    /// `positive` is false.
+    pub fn symbolic_atoms_by_signature<'a>(
+        &'a self,
+        name: &'a str,
+        arity: usize,
+        positive: bool,
+    ) -> impl Iterator<Item = SymbolicAtom> + 'a {
+        self.symbolic_atoms().filter(move |a| {
+            a.symbol.name() == Some(name)
+                && a.symbol.args().len() == arity
+                && a.symbol.is_negative() != positive
+        })
+    }
+
+    /// The signatures of the atoms, `(name, arity, positive)`, sorted and without repeats
+    /// (clingo's `symbolic_atoms.signatures`).
+    pub fn signatures(&self) -> Vec<(String, usize, bool)> {
+        let mut out: Vec<(String, usize, bool)> = self
+            .symbolic_atoms()
+            .filter_map(|a| {
+                let name = a.symbol.name()?.to_string();
+                Some((name, a.symbol.args().len(), !a.symbol.is_negative()))
+            })
+            .collect();
+        out.sort();
+        out.dedup();
+        out
+    }
+
+    /// A handle that stops the running (or the next) solve call from another thread (clingo's
+    /// `Control.interrupt`): the call returns with [`solve::StopReason::Interrupted`]. A raised
+    /// flag is lowered when the call it stopped returns. The handle is the solver's interrupt
+    /// flag ([`solve::Config::interrupt`], made here if the configuration has none).
+    pub fn interrupter(&mut self) -> Interrupter {
+        let flag = self
+            .solve_config_mut()
+            .interrupt
+            .get_or_insert_with(Default::default)
+            .clone();
+        Interrupter(flag)
+    }
+
     /// Number of atoms so far.
     pub fn num_atoms(&self) -> u32 {
         self.atom_sym.len() as u32
@@ -649,6 +704,11 @@ impl Control {
                 .map(|(a, _)| a.clone())
                 .collect()
         });
+        if result.stop == Some(solve::StopReason::Interrupted) {
+            if let Some(flag) = &solver.config_mut().interrupt {
+                flag.store(false, std::sync::atomic::Ordering::Relaxed);
+            }
+        }
         Summary {
             outcome: result.outcome,
             exhausted: result.exhausted,

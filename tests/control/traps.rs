@@ -198,3 +198,66 @@ fn the_default_config_finds_the_optimum_of_an_optimization() {
     assert!(summary.optimum_proven);
     assert_eq!(last, ["a", "b", "c"]);
 }
+
+/// Another thread stops a long solve call through the Control's interrupter (it had to be set
+/// up in advance as an `AtomicBool` in the configuration); the next call runs again.
+#[test]
+fn an_interrupter_stops_the_running_call_from_another_thread() {
+    // 12 pigeons in 11 holes: far beyond a few hundred milliseconds for any CDCL solver.
+    let text = "pigeon(1..12). hole(1..11).
+        1 { in(P,H) : hole(H) } 1 :- pigeon(P).
+        :- in(P,H), in(Q,H), P < Q.";
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("base", &[], text).unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let stop = ctl.interrupter();
+    let waker = std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_millis(200));
+        stop.interrupt();
+    });
+    let summary = ctl.solve(&Default::default(), |_| true);
+    waker.join().unwrap();
+    assert_eq!(summary.stop, Some(StopReason::Interrupted));
+    assert!(!summary.exhausted);
+    // The flag was lowered: the next call is stopped only by its conflict limit.
+    ctl.solve_config_mut().conflict_limit = Some(10);
+    let next = ctl.solve(&Default::default(), |_| true);
+    assert_eq!(next.stop, Some(StopReason::ConflictLimit));
+}
+
+/// The atoms of one signature, and the signatures (clingo's `symbolic_atoms.by_signature` and
+/// `signatures`).
+#[test]
+fn symbolic_atoms_by_signature() {
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("base", &[], "p(1..3). -p(4). p. q(1,2). {r(X)} :- p(X).")
+        .unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let mut p1: Vec<String> = ctl
+        .symbolic_atoms_by_signature("p", 1, true)
+        .map(|a| a.symbol.to_string())
+        .collect();
+    p1.sort();
+    assert_eq!(p1, ["p(1)", "p(2)", "p(3)"]);
+    let neg: Vec<String> = ctl
+        .symbolic_atoms_by_signature("p", 1, false)
+        .map(|a| a.symbol.to_string())
+        .collect();
+    assert_eq!(neg, ["-p(4)"]);
+    assert!(ctl
+        .symbolic_atoms_by_signature("r", 1, true)
+        .all(|a| !a.fact));
+    let sigs = ctl.signatures();
+    let want = [
+        ("p", 0, true),
+        ("p", 1, false),
+        ("p", 1, true),
+        ("q", 2, true),
+        ("r", 1, true),
+    ];
+    let want: Vec<(String, usize, bool)> = want
+        .iter()
+        .map(|&(n, a, p)| (n.to_string(), a, p))
+        .collect();
+    assert_eq!(sigs, want);
+}
