@@ -12,7 +12,8 @@
 //! the number of calls of the flatness runs, `LUCENT_MULTISHOT_STEPS=N` the chain's steps,
 //! `LUCENT_MULTISHOT_PARTS=N` the number of `step(t)` parts a `Control` grounds one by one
 //! (the grounding cost per part, first and last tenth compared; `LUCENT_MULTISHOT_WINDOW=N`
-//! compares the first and last N parts instead), `LUCENT_MULTISHOT_CRITERION=0` skips
+//! compares the first and last N parts instead; `LUCENT_MULTISHOT_SOLVE=0` and
+//! `LUCENT_MULTISHOT_EVICT=1`: see `control_steps`), `LUCENT_MULTISHOT_CRITERION=0` skips
 //! criterion. `LUCENT_MULTISHOT_ONLY=grid` runs only the grid step loop (`grid_loop`: clingo's
 //! incmode loop over a robot on a grid; `LUCENT_MULTISHOT_GRID=N` parts, default 150 with
 //! `--bench`, `LUCENT_MULTISHOT_GRID_SIZE`, `LUCENT_MULTISHOT_GRID_TRACE=1` prints every part,
@@ -247,6 +248,9 @@ const STEPS_PROGRAM: &str = "
 /// each, as the planner does); prints the mean time of `ground` over the first and the last
 /// tenth of the steps. Each part adds the same atoms, so a grounding that costs what its part
 /// adds keeps last/first near 1; a grounding that reads every earlier atom grows linearly.
+/// `LUCENT_MULTISHOT_SOLVE=0` leaves the solve calls out (the grounding alone, warm caches),
+/// with `LUCENT_MULTISHOT_EVICT=1` a 64 MB write between parts instead (cold caches, as after
+/// a solve over a large program).
 fn control_steps(steps: i32) {
     use lucent::control::{Control, ControlConfig, Part, Symbol};
     let mut ctl = Control::new(ControlConfig::default());
@@ -258,6 +262,8 @@ fn control_steps(steps: i32) {
         .and_then(|v| v.parse().ok())
         .unwrap_or((steps / 10).max(1))
         .clamp(1, steps.max(1));
+    let solve = std::env::var("LUCENT_MULTISHOT_SOLVE").map_or(true, |v| v != "0");
+    let evict = std::env::var("LUCENT_MULTISHOT_EVICT").is_ok_and(|v| v == "1");
     let (mut first, mut last) = (Vec::new(), Vec::new());
     let start = Instant::now();
     for t in 1..=steps {
@@ -271,7 +277,17 @@ fn control_steps(steps: i32) {
         if t > steps - window {
             last.push(dt);
         }
-        black_box(ctl.solve(&Default::default(), |_| false).models);
+        if solve {
+            black_box(ctl.solve(&Default::default(), |_| false).models);
+        } else if evict {
+            // Writes 64 MB, a cache line at a time: the next part starts with cold caches,
+            // as after a solve call over a large program.
+            let mut v = vec![1u8; 64 << 20];
+            for i in (0..v.len()).step_by(64) {
+                v[i] = v[i].wrapping_add(i as u8);
+            }
+            black_box(&v);
+        }
     }
     let ((first, first_med), (last, last_med)) = (stats(&mut first), stats(&mut last));
     println!(

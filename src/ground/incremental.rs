@@ -47,6 +47,8 @@ pub struct Session {
     prefer: Vec<GroundAtom>,
     /// The grounder atom of each aspif atom of the last grounding (`[a - 1]`).
     last_gatoms: Vec<GroundAtom>,
+    /// The simplification's arrays over every atom, kept between groundings.
+    scratch: simplify::Scratch,
     /// Set when a grounding stopped half-way: the state is no longer consistent.
     spent: bool,
     /// Groundings done.
@@ -155,7 +157,13 @@ impl Session {
         g.run(&compiled);
         g.release_dedup();
         let stopped = g.stopped;
-        let mut fin = simplify::finish_after(&mut g, &compiled, &self.flags, &self.prefer);
+        let mut fin = simplify::finish_after(
+            &mut g,
+            &compiled,
+            &self.flags,
+            &self.prefer,
+            &mut self.scratch,
+        );
         if carry {
             self.carry(&mut g, &fin);
         }

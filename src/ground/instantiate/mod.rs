@@ -279,6 +279,9 @@ pub struct Grounder<'a> {
     optimistic: bool,
     /// Multi-shot: atoms `1..=old_atoms` existed before this grounding (0 for one-shot).
     pub old_atoms: usize,
+    /// Multi-shot: old atoms (at most `old_atoms`) this grounding put into their domain or
+    /// made facts without a rule (the simplification visits them, `simplify::scope`).
+    pub touched: Vec<GroundAtom>,
     /// Predicates some statement of this or an earlier grounding heads (or `#defined`).
     defined: Vec<bool>,
     /// Vectors reused from one statement to the next.
@@ -512,6 +515,7 @@ impl<'a> Grounder<'a> {
             naive: false,
             optimistic: false,
             old_atoms,
+            touched: Vec::new(),
             defined: state.defined,
             scratch: Scratch::default(),
         }
@@ -616,6 +620,9 @@ impl<'a> Grounder<'a> {
         let info = self.atoms[a.index()];
         if info.in_domain || info.pred == u32::MAX {
             return;
+        }
+        if a.index() < self.old_atoms {
+            self.touched.push(a);
         }
         let d = &mut self.domains[info.pred as usize];
         let pos = d.atoms.len() as u32;

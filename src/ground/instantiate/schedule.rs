@@ -94,6 +94,9 @@ impl Grounder<'_> {
             let a = self.atom_of(sym, pred);
             self.derive(a);
             self.atoms[a.index()].fact = true;
+            if a.index() < self.old_atoms {
+                self.touched.push(a);
+            }
         }
         // Statement dependency graph, as gringo's (Dependency::analyze): a statement depends on
         // every statement heading a predicate it reads. Ground facts are no nodes (gringo keeps

@@ -2,22 +2,26 @@
 //! derived, added to the grounder's rules before simplification (with its origin when
 //! provenance is on; complements that are facts are recorded as removed literals).
 //!
-//! Invariant (multi-shot): a grounding adds constraints only for the pairs with an atom that
-//! is not frozen (new to it), so a pair gets its constraint once.
+//! Invariant (multi-shot): a grounding adds constraints only for the pairs with an atom of its
+//! scope that is not frozen (new to it), so a pair gets its constraint once.
 
+use super::scope::Scope;
 use crate::ground::instantiate::{GroundAtom, Grounder};
 use crate::ground::program::{Body, HeadKind, Origin, RemovedLit, Rule, RuleOrigin};
 use crate::ground::rewrite::Compiled;
 use crate::ground::symbol::SymData;
 
 /// `:- a, -a.` for every atom `-a` whose complement can be derived (multi-shot: for the pairs
-/// with an atom that is not `frozen`, the others had theirs in an earlier grounding).
+/// with an atom of `scope` that is not `frozen`, the others had theirs in an earlier
+/// grounding).
 pub(super) fn add_classical_constraints(
     g: &mut Grounder<'_>,
     prog: &Compiled,
+    scope: &Scope,
     frozen: &dyn Fn(usize) -> bool,
 ) {
-    let n = g.atoms.len();
+    // The atoms visited here (their pairs are found from either side).
+    let visited = |a: usize| !frozen(a) && scope.contains(a);
     let mut extra = Vec::new();
     let mut removed = Vec::new();
     // Multi-shot: positive predicates with a classically negated twin, whose new atoms may
@@ -36,7 +40,8 @@ pub(super) fn add_classical_constraints(
             .map(|p| !p.neg && negs.contains(&(p.name, p.arity)))
             .collect()
     };
-    for x in 1..=n {
+    for &x in &scope.atoms {
+        let x = x as usize;
         if frozen(x) {
             continue;
         }
@@ -58,9 +63,9 @@ pub(super) fn add_classical_constraints(
         let Some(y) = g.find_atom(other) else {
             continue;
         };
-        // From the positive side only the pairs whose negative atom is frozen (the others
-        // are found from their negative side).
-        if !neg && !frozen(y.get() as usize) {
+        // From the positive side only the pairs whose negative atom is not visited (the
+        // others are found from their negative side).
+        if !neg && visited(y.get() as usize) {
             continue;
         }
         let (a, b) = if neg {

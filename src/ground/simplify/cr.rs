@@ -7,6 +7,7 @@
 //! session pairs them with its own CR rules; only the fresh `prefer` facts are returned, to be
 //! remembered for later groundings.
 
+use super::scope::Scope;
 use super::Status;
 use crate::ground::instantiate::{GroundAtom, Grounder};
 use crate::ground::program::{CrRule, GroundProgram, Prefer};
@@ -14,16 +15,16 @@ use crate::ground::symbol::SymData;
 
 /// Sets the CR rules of `out` (those whose application atom is possible) and the `prefer`
 /// pairs between their labels, from the `prefer(l1, l2)` facts of `prefer_before` and the
-/// fresh facts; returns the fresh ones.
+/// fresh facts (among the atoms of `scope`); returns the fresh ones.
 pub(super) fn cr_rules(
     g: &Grounder<'_>,
+    scope: &Scope,
     status: &[Status],
     number: &[u32],
     prefer_before: &[GroundAtom],
     frozen: &dyn Fn(usize) -> bool,
     out: &mut GroundProgram,
 ) -> Vec<GroundAtom> {
-    let n = g.atoms.len();
     for (a, label) in &g.directives.cr_rules {
         if number[a.get() as usize] != 0 && status[a.index()] == Status::Unknown {
             out.cr_rules.push(CrRule {
@@ -35,7 +36,8 @@ pub(super) fn cr_rules(
     // prefer(l1, l2) facts between labels of CR rules (those of earlier groundings first).
     let mut prefer_atoms = Vec::new();
     let prefer_name = g.syms.names.get("prefer");
-    let fresh = (1..=n).filter(|&a| !frozen(a) && status[a - 1] == Status::Fact);
+    let fresh = (scope.atoms.iter().map(|&a| a as usize))
+        .filter(|&a| !frozen(a) && status[a - 1] == Status::Fact);
     for a in prefer_before.iter().map(|&a| a.get() as usize).chain(fresh) {
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };

@@ -13,7 +13,8 @@
 //! - `provenance`: the origins of the output rules, the atom table and the dead rules;
 //! - `outputs`: shown atoms, facts and `#show` terms;
 //! - `directives`: externals, projections, heuristics and edges;
-//! - `cr`: CR rules and the `prefer` pairs between them.
+//! - `cr`: CR rules and the `prefer` pairs between them;
+//! - `scope`: the atoms a grounding visits, and the arrays a session keeps between groundings.
 //!
 //! This module runs them in that order ([`finish_after`]).
 //!
@@ -34,11 +35,14 @@ mod outputs;
 mod propagate;
 mod provenance;
 mod rules;
+mod scope;
 
 use complement::add_classical_constraints;
 use numbering::{number_remaining, Numbering};
 use propagate::propagate;
 use rules::simplify_rules;
+use scope::Scope;
+pub use scope::Scratch;
 
 use super::instantiate::{GroundAtom, Grounder};
 use super::program::{
@@ -86,27 +90,17 @@ pub const KNOWN_FACT: u8 = 2;
 /// `prefer_before` the `prefer` facts they decided. A numbered atom is *frozen*: earlier
 /// groundings gave it its number and rules, so it is never made false here (it is possible or a
 /// fact), it gets a number only when it occurs, and it is neither output nor reported as a fact
-/// again (unless it became one). Only the atoms that are not frozen are visited for outputs,
-/// facts and complementary pairs, so the work follows what this grounding added.
+/// again (unless it became one). Only the atoms of the grounding's [`Scope`] are visited (its
+/// own and the older ones it names), with the arrays `scratch` keeps between groundings, so the
+/// work follows what this grounding added.
 pub fn finish_after(
     g: &mut Grounder<'_>,
     prog: &Compiled,
     before: &[u8],
     prefer_before: &[GroundAtom],
+    scratch: &mut Scratch,
 ) -> Finished {
-    let frozen = |a: usize| before.get(a).is_some_and(|&f| f & NUMBERED != 0);
-    add_classical_constraints(g, prog, &frozen);
-    let n = g.atoms.len();
-    let Decided {
-        mut status,
-        external,
-        dead,
-        why,
-        gringo_status,
-    } = decide(g, before, &frozen);
-    let fresh = n.saturating_sub(before.len().saturating_sub(1));
-    let mut w = simplify_rules(g, &mut status, &external, &dead, &why, fresh);
-    let minimize = minimize::minimize(g, &mut status, gringo_status.as_deref(), &mut w);
+    let frozen = |a: usize| Scope::frozen(before, a);
     // Shown atoms: the predicates shown, decided once per predicate.
     let shown: Vec<bool> = prog
         .preds
@@ -117,9 +111,40 @@ pub fn finish_after(
                 && (!prog.show.restricted || prog.show.signatures.contains(p))
         })
         .collect();
+    // Older atoms of predicates shown now and not before (or the reverse) may be output now:
+    // every atom is visited then, as with provenance (its atom table lists them all).
+    let all = g.provenance || scratch.shown.iter().zip(&shown).any(|(a, b)| a != b);
+    let scope = Scope::build(g, prefer_before, all, scratch.take_loc());
+    add_classical_constraints(g, prog, &scope, &frozen);
+    // The constraints may name older atoms outside the scope: built again.
+    let scope = Scope::build(g, prefer_before, all, scope.release());
+    let n = g.atoms.len();
+    let Decided {
+        mut status,
+        external,
+        dead,
+        why,
+        gringo_status,
+    } = decide(g, &scope, scratch, &frozen);
+    let fresh = n.saturating_sub(before.len().saturating_sub(1));
+    let number = std::mem::take(&mut scratch.number);
+    let mut w = simplify_rules(
+        g,
+        &scope,
+        &mut status,
+        &external,
+        &dead,
+        &why,
+        fresh,
+        number,
+    );
+    let minimize = minimize::minimize(g, &mut status, gringo_status.as_deref(), &mut w);
+    let mut scope = scope;
+    scope.extend(g.atoms.len());
     number_remaining(
         &mut w.numbering,
         g,
+        &scope,
         &status,
         &minimize,
         &shown,
@@ -142,7 +167,6 @@ pub fn finish_after(
         ..
     } = numbering;
     number.resize(n + 1, 0);
-    let number = number;
     let mut out = GroundProgram::new();
     out.num_atoms = next;
     rules.shrink_to_fit();
@@ -163,6 +187,7 @@ pub fn finish_after(
         .collect();
     let (fact_syms, fact_atoms) = outputs::shown_atoms(
         g,
+        &scope,
         &status,
         &number,
         before,
@@ -172,7 +197,28 @@ pub fn finish_after(
     );
     outputs::show_terms(g, &status, &number, &mut out.outputs);
     directives::directives(g, &status, &number, &mut out);
-    let prefer_atoms = cr::cr_rules(g, &status, &number, prefer_before, &frozen, &mut out);
+    let prefer_atoms = cr::cr_rules(
+        g,
+        &scope,
+        &status,
+        &number,
+        prefer_before,
+        &frozen,
+        &mut out,
+    );
+    // The session's arrays, cleared for the next grounding.
+    for &a in &atom_gatoms {
+        number[a.get() as usize] = 0;
+    }
+    scratch.number = number;
+    let mut external = external;
+    for &(a, _) in &g.directives.externals {
+        external[a.get() as usize] = false;
+    }
+    scratch.external = external;
+    scratch.status = status;
+    scratch.shown = shown;
+    scratch.put_loc(scope.release());
     Finished {
         program: out,
         atom_syms,
@@ -197,33 +243,40 @@ struct Decided {
     gringo_status: Option<Vec<Status>>,
 }
 
-/// Propagates false atoms and dead rules over the rules of `g`; externals and `frozen` atoms
-/// (multi-shot: those of earlier groundings, `before` non-empty) are never made false.
-fn decide(g: &Grounder<'_>, before: &[u8], frozen: &dyn Fn(usize) -> bool) -> Decided {
+/// Propagates false atoms and dead rules over the rules of `g`, visiting the atoms of `scope`;
+/// externals and `frozen` atoms (multi-shot: those of earlier groundings) are never made false.
+/// The status and external arrays come from `scratch` (the caller gives them back).
+fn decide(
+    g: &Grounder<'_>,
+    scope: &Scope,
+    scratch: &mut Scratch,
+    frozen: &dyn Fn(usize) -> bool,
+) -> Decided {
     let n = g.atoms.len();
-    let mut status = initial_status(g);
-    let mut external = vec![false; n + 1];
+    let mut status = std::mem::take(&mut scratch.status);
+    status.resize(n, Status::Unknown);
+    for &a in &scope.atoms {
+        status[a as usize - 1] = initial_status(g, a as usize);
+    }
+    let mut external = std::mem::take(&mut scratch.external);
+    external.resize(n + 1, false);
     for &(a, _) in &g.directives.externals {
         external[a.get() as usize] = true;
     }
     // What propagation may not make false: externals and frozen atoms.
-    let keep: Vec<bool> = if before.is_empty() {
-        external.clone()
-    } else {
-        (0..=n).map(|a| external[a] || frozen(a)).collect()
-    };
+    let keep = |a: usize| external[a] || frozen(a);
     // With provenance: why each dead rule died.
     let prov = g.provenance;
     let mut why: Vec<Option<DeadReason>> = Vec::new();
     let (dead, killed_contradictory) =
-        propagate(g, &keep, &mut status, true, prov.then_some(&mut why));
+        propagate(g, scope, &keep, &mut status, true, prov.then_some(&mut why));
     // What gringo would still find possible: it keeps rules with contradictory bodies, so atoms
     // only they derive stay in its minimize statements (clingo then reports an optimum of 0
     // where a dropped statement would make the answer plain SATISFIABLE).
     let gringo_status: Option<Vec<Status>> =
         (killed_contradictory && !g.directives.minimize_order.is_empty()).then(|| {
-            let mut st = initial_status(g);
-            propagate(g, &keep, &mut st, false, None);
+            let mut st: Vec<Status> = (1..=n).map(|a| initial_status(g, a)).collect();
+            propagate(g, scope, &keep, &mut st, false, None);
             st
         });
     Decided {
@@ -287,18 +340,14 @@ fn fact_among(head: &[u32], status: &[Status]) -> Option<u32> {
         .find(|&h| status[h as usize - 1] == Status::Fact)
 }
 
-/// Each grounder atom's status before propagation: facts known, every other atom unknown.
-fn initial_status(g: &Grounder<'_>) -> Vec<Status> {
-    g.atoms
-        .iter()
-        .map(|a| {
-            if a.fact {
-                Status::Fact
-            } else {
-                Status::Unknown
-            }
-        })
-        .collect()
+/// Grounder atom `a`'s status before propagation: a fact known, any other atom unknown.
+#[inline]
+fn initial_status(g: &Grounder<'_>, a: usize) -> Status {
+    if g.atoms[a - 1].fact {
+        Status::Fact
+    } else {
+        Status::Unknown
+    }
 }
 
 fn new_aux(g: &mut Grounder<'_>, status: &mut Vec<Status>) -> GroundAtom {

@@ -6,6 +6,7 @@
 //! Invariant: numbers are `1..=next`, given once each, and `atom_syms`/`atom_gatoms` are
 //! indexed by number minus one.
 
+use super::scope::Scope;
 use super::{shown_pred, Status};
 use crate::ground::instantiate::{AtomInfo, GroundAtom, Grounder};
 use crate::ground::program::{Atom, BodyRef, HeadKind, Lit, Minimize, Rules, Weight};
@@ -30,11 +31,12 @@ pub(super) struct Numbering {
 }
 
 impl Numbering {
-    /// A numbering of grounder atoms `1..=n`, with room for `fresh` numbered atoms (the atoms
-    /// this grounding added: most of them get a number).
-    pub(super) fn new(n: usize, fresh: usize) -> Numbering {
+    /// A numbering of grounder atoms `1..=n` in `number` (all 0, grown to `n + 1`), with room
+    /// for `fresh` numbered atoms (the atoms this grounding added: most of them get a number).
+    pub(super) fn new(mut number: Vec<u32>, n: usize, fresh: usize) -> Numbering {
+        number.resize(n + 1, 0);
         Numbering {
-            number: vec![0; n + 1],
+            number,
             next: 0,
             atom_syms: Vec::with_capacity(fresh),
             atom_gatoms: Vec::with_capacity(fresh),
@@ -118,10 +120,13 @@ pub(super) fn gringo_body_order(lits: &[Lit], out: &mut Vec<Lit>) {
 /// statements, externals, shown atoms that are not false and not `frozen`, and (multi-shot)
 /// frozen atoms in conditions of shows, heuristics and edges and projected ones. They come in
 /// creation order, after the atoms of the rules, as in gringo's output; the solver's initial
-/// variable order follows it.
+/// variable order follows it. Only the atoms of `scope` are visited (every atom a directive
+/// names is in it).
+#[allow(clippy::too_many_arguments)]
 pub(super) fn number_remaining(
     numbering: &mut Numbering,
     g: &Grounder<'_>,
+    scope: &Scope,
     status: &[Status],
     minimize: &[Minimize],
     shown: &[bool],
@@ -130,16 +135,18 @@ pub(super) fn number_remaining(
 ) {
     // Which atoms get a number: every atom that occurs (those of the rules have theirs), and
     // shown atoms.
-    let n = g.atoms.len();
-    let mut used = vec![false; n + 1];
-    let use_lit = |l: Lit, used: &mut Vec<bool>| used[l.unsigned_abs() as usize] = true;
+    // By local index.
+    let mut used = vec![false; scope.len()];
+    let use_lit =
+        |l: Lit, used: &mut Vec<bool>| used[scope.index(l.unsigned_abs() as usize)] = true;
     for m in minimize {
         m.lits.iter().for_each(|&(l, _)| use_lit(l, &mut used));
     }
     for &(a, _) in &g.directives.externals {
-        used[a.get() as usize] = true;
+        used[scope.index(a.get() as usize)] = true;
     }
-    for a in 1..=n {
+    for (i, &a) in scope.atoms.iter().enumerate() {
+        let a = a as usize;
         if frozen(a) {
             continue;
         }
@@ -149,7 +156,7 @@ pub(super) fn number_remaining(
             && info.in_domain
             && shown_pred(shown, info.pred)
         {
-            used[a] = true;
+            used[i] = true;
         }
     }
     // Frozen atoms in conditions of shows, heuristics and edges, and projected ones, are
@@ -158,7 +165,7 @@ pub(super) fn number_remaining(
         let mut mark = |l: Lit| {
             let a = l.unsigned_abs() as usize;
             if frozen(a) {
-                used[a] = true;
+                used[scope.index(a)] = true;
             }
         };
         for (_, cond) in &g.directives.shows {
@@ -182,18 +189,18 @@ pub(super) fn number_remaining(
     // has two). So the first projected atom keeps a number then: an atom without rules, false.
     let numbered = |a: GroundAtom| {
         let i = a.get() as usize;
-        used[i] || numbering.number.get(i).is_some_and(|&x| x != 0)
+        used[scope.index(i)] || numbering.number.get(i).is_some_and(|&x| x != 0)
     };
     if let Some(&first) = g.directives.projections.first() {
         if !g.directives.projections.iter().any(|&a| numbered(a)) {
-            used[first.get() as usize] = true;
+            used[scope.index(first.get() as usize)] = true;
         }
     }
     // Numbering as gringo's output does it: atoms in order of first occurrence in the rules
     // (each rule's heads before its body; given as the rules were written), then those only in
     // minimize statements, externals and shown atoms, in creation order. The solver's initial
     // variable order follows it.
-    for (a, _) in used.iter().enumerate().filter(|&(_, &u)| u) {
-        numbering.assign(a, &g.atoms);
+    for (&a, _) in scope.atoms.iter().zip(&used).filter(|&(_, &u)| u) {
+        numbering.assign(a as usize, &g.atoms);
     }
 }

@@ -7,6 +7,7 @@
 //! the numbering occurs in no rule, so it is false in a `#show` condition; equal `#show`
 //! outputs (same symbol, same condition) are output once.
 
+use super::scope::Scope;
 use super::{map_lit, shown_pred, truth, Status, KNOWN_FACT};
 use crate::ground::instantiate::{GroundAtom, Grounder};
 use crate::ground::program::{Lit, Output};
@@ -14,9 +15,12 @@ use crate::ground::symbol::SymId;
 
 /// Appends the outputs of the shown atoms (`shown`, by predicate) to `outputs` and returns the
 /// symbol and grounder atom of each fact; `number` is the aspif numbering, `before` the flags
-/// of earlier groundings.
+/// of earlier groundings. Only the atoms of `scope` are visited: an older atom outside it was
+/// output, or reported as a fact, by the grounding that decided it.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn shown_atoms(
     g: &Grounder<'_>,
+    scope: &Scope,
     status: &[Status],
     number: &[u32],
     before: &[u8],
@@ -24,11 +28,11 @@ pub(super) fn shown_atoms(
     frozen: &dyn Fn(usize) -> bool,
     outputs: &mut Vec<Output>,
 ) -> (Vec<SymId>, Vec<GroundAtom>) {
-    let n = g.atoms.len();
     // Outputs: shown atoms, facts with an empty condition.
     let mut fact_syms = Vec::new();
     let mut fact_atoms = Vec::new();
-    for a in 1..=n {
+    for &a in &scope.atoms {
+        let a = a as usize;
         let info = g.atoms[a - 1];
         let Some(sym) = info.sym else { continue };
         if frozen(a) {

@@ -12,6 +12,7 @@
 //! Invariant: each rule is killed at most once and each atom made false at most once, so the
 //! pass is linear in the size of the rules.
 
+use super::scope::Scope;
 use super::Status;
 use crate::ground::instantiate::{GroundAtom, Grounder};
 use crate::ground::program::{BodyRef, DeadReason, HeadKind, Lit, Rules};
@@ -23,8 +24,9 @@ enum Pass {
     Fill,
 }
 
-/// Body occurrences of atoms `0..=n` in one flat array (compressed rows): the entries of atom
-/// `a` are `items[start[a]..start[a + 1]]`, in rule order.
+/// Body occurrences of atoms by local index `0..n` (see [`Scope`]) in one flat array
+/// (compressed rows): the entries of atom `i` are `items[start[i]..start[i + 1]]`, in rule
+/// order.
 struct Occurrences {
     start: Vec<usize>,
     items: Vec<(u32, i64)>,
@@ -33,14 +35,14 @@ struct Occurrences {
 impl Occurrences {
     fn new(n: usize) -> Occurrences {
         Occurrences {
-            start: vec![0; n + 2],
+            start: vec![0; n + 1],
             items: Vec::new(),
         }
     }
 
-    /// Counts (first pass) or places (second pass) one occurrence of `atom`.
-    fn add(&mut self, pass: Pass, atom: u32, item: (u32, i64)) {
-        let a = atom as usize;
+    /// Counts (first pass) or places (second pass) one occurrence of the atom of local index
+    /// `a`.
+    fn add(&mut self, pass: Pass, a: usize, item: (u32, i64)) {
         match pass {
             Pass::Count => self.start[a + 1] += 1,
             Pass::Fill => {
@@ -96,12 +98,14 @@ pub(super) fn contradictory_lits(lits: &[Lit]) -> bool {
 /// The false atoms by propagation from `status` (facts known, everything else unknown): marks
 /// them in `status` and returns which rules are dead, and whether a rule was killed because its
 /// body holds a literal and its negation (only with `kill_contradictory`; gringo keeps such
-/// rules, so their heads stay possible for gringo). Atoms with `keep[a]` are never made false.
+/// rules, so their heads stay possible for gringo). Atoms with `keep(a)` are never made false.
+/// Only the atoms of `scope` are visited (every atom the rules name is in it).
 ///
 /// With `why`, records there why each dead rule died (provenance).
 pub(super) fn propagate(
     g: &Grounder<'_>,
-    keep: &[bool],
+    scope: &Scope,
+    keep: &dyn Fn(usize) -> bool,
     status: &mut [Status],
     kill_contradictory: bool,
     why: Option<&mut Vec<Option<DeadReason>>>,
@@ -114,9 +118,10 @@ pub(super) fn propagate(
         }
         None => &mut no_why,
     };
-    let n = g.atoms.len();
+    let n = scope.len();
     let mut killed_contradictory = false;
-    let mut head_count = vec![0u32; n + 1];
+    // By local index.
+    let mut head_count = vec![0u32; n];
     // Occurrences in bodies: (rule, weight); weight 0 marks a normal body.
     let mut pos_occ = Occurrences::new(n);
     let mut neg_occ = Occurrences::new(n);
@@ -132,7 +137,7 @@ pub(super) fn propagate(
         for (ri, r) in g.rules.iter().enumerate() {
             if pass == Pass::Count {
                 for &h in r.head {
-                    head_count[h as usize] += 1;
+                    head_count[scope.index(h as usize)] += 1;
                 }
                 if let BodyRef::Weight { lower, lits } = r.body {
                     slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
@@ -159,13 +164,14 @@ pub(super) fn propagate(
                 BodyRef::Normal(lits) => {
                     for &l in lits {
                         let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
-                        occ.add(pass, l.unsigned_abs(), (ri as u32, 0));
+                        occ.add(pass, scope.index(l.unsigned_abs() as usize), (ri as u32, 0));
                     }
                 }
                 BodyRef::Weight { lits, .. } => {
                     for &(l, w) in lits {
                         let occ = if l > 0 { &mut pos_occ } else { &mut neg_occ };
-                        occ.add(pass, l.unsigned_abs(), (ri as u32, w.max(1)));
+                        let i = scope.index(l.unsigned_abs() as usize);
+                        occ.add(pass, i, (ri as u32, w.max(1)));
                     }
                 }
             }
@@ -175,6 +181,7 @@ pub(super) fn propagate(
     }
     let mut p = Propagation {
         rules: &g.rules,
+        scope,
         keep,
         status,
         why,
@@ -183,22 +190,22 @@ pub(super) fn propagate(
         slack,
         work: Vec::new(),
     };
-    for a in 1..=n {
-        p.falsify_if_unsupported(a);
+    for &a in &scope.atoms {
+        p.falsify_if_unsupported(a as usize);
     }
     for (ri, reason) in dead_at_start {
         p.kill(ri as usize, reason);
     }
     // Rules with `not a`, a a fact, lose that literal from the start.
-    for a in 1..=n {
-        if p.status[a - 1] == Status::Fact {
-            for &(ri, w) in neg_occ.of(a) {
-                p.lose(ri as usize, w, false, GroundAtom::new(a as u32));
+    for (i, &a) in scope.atoms.iter().enumerate() {
+        if p.status[a as usize - 1] == Status::Fact {
+            for &(ri, w) in neg_occ.of(i) {
+                p.lose(ri as usize, w, false, GroundAtom::new(a));
             }
         }
     }
     while let Some(a) = p.work.pop() {
-        for &(ri, w) in pos_occ.of(a.get() as usize) {
+        for &(ri, w) in pos_occ.of(scope.index(a.get() as usize)) {
             p.lose(ri as usize, w, true, a);
         }
     }
@@ -213,7 +220,8 @@ pub(super) fn propagate(
 /// and no live rule heads it.
 struct Propagation<'a> {
     rules: &'a Rules,
-    keep: &'a [bool],
+    scope: &'a Scope,
+    keep: &'a dyn Fn(usize) -> bool,
     status: &'a mut [Status],
     why: &'a mut Vec<Option<DeadReason>>,
     dead: Vec<bool>,
@@ -225,7 +233,10 @@ struct Propagation<'a> {
 impl Propagation<'_> {
     /// Makes atom `a` false and queues it if nothing can derive it any more.
     fn falsify_if_unsupported(&mut self, a: usize) {
-        if self.head_count[a] == 0 && !self.keep[a] && self.status[a - 1] == Status::Unknown {
+        if self.head_count[self.scope.index(a)] == 0
+            && self.status[a - 1] == Status::Unknown
+            && !(self.keep)(a)
+        {
             self.status[a - 1] = Status::False;
             self.work.push(GroundAtom::new(a as u32));
         }
@@ -241,7 +252,7 @@ impl Propagation<'_> {
             *w = Some(reason);
         }
         for &h in self.rules.get(ri).head {
-            self.head_count[h as usize] -= 1;
+            self.head_count[self.scope.index(h as usize)] -= 1;
             self.falsify_if_unsupported(h as usize);
         }
     }

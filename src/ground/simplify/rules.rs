@@ -10,6 +10,7 @@
 //! `DeadRule` with its reason.
 
 use super::numbering::{gringo_body_order, Numbering};
+use super::scope::Scope;
 use super::{fact_among, truth, Status, Written};
 use crate::ground::instantiate::Grounder;
 use crate::ground::program::{
@@ -28,14 +29,19 @@ pub(super) fn removed_lit(l: Lit) -> RemovedLit {
 
 /// Simplifies and writes the rules of `g` that are not `dead` (`why`: the reason of each dead
 /// one, with provenance), numbering their atoms as they come; a fact's rule marks it a fact
-/// in `status`. `external` atoms keep their heads; `fresh` is the room the numbering reserves.
+/// in `status`. `external` atoms keep their heads; `fresh` is the room the numbering reserves,
+/// `number` its array (all 0; the session's, see [`Scope`], which holds every atom the rules
+/// name).
+#[allow(clippy::too_many_arguments)]
 pub(super) fn simplify_rules(
     g: &mut Grounder<'_>,
+    scope: &Scope,
     status: &mut [Status],
     external: &[bool],
     dead: &[bool],
     why: &[Option<DeadReason>],
     fresh: usize,
+    number: Vec<u32>,
 ) -> Written {
     let n = g.atoms.len();
     let prov = g.provenance;
@@ -46,7 +52,7 @@ pub(super) fn simplify_rules(
     // aside): room for them at once instead of growing step by step.
     let mut rules = Rules::new();
     rules.reserve_like(&g.rules);
-    let mut numbering = Numbering::new(n, fresh);
+    let mut numbering = Numbering::new(number, n, fresh);
     // With provenance: the origins of each output rule, and the removed rules that headed a
     // false atom.
     let mut origins = Provenance::new();
@@ -67,8 +73,8 @@ pub(super) fn simplify_rules(
         os
     };
     let mut removed: Vec<RemovedLit> = Vec::new();
-    // The output rule `a.` of each fact atom `a` (u32::MAX: none yet).
-    let mut fact_rule = vec![u32::MAX; n + 1];
+    // The output rule `a.` of each fact atom `a`, by local index (u32::MAX: none yet).
+    let mut fact_rule = vec![u32::MAX; scope.len()];
     // The rules are moved out (the grounder's copy is not used after this); each surviving
     // rule is simplified in the scratch vectors and copied to `rules`.
     let old = std::mem::take(&mut g.rules);
@@ -161,15 +167,16 @@ pub(super) fn simplify_rules(
         };
         if r.head_kind == HeadKind::Disjunction && head.len() == 1 && body.is_empty_normal() {
             let h = head[0] as usize;
-            if fact_rule[h] != u32::MAX {
+            let hi = scope.index(h);
+            if fact_rule[hi] != u32::MAX {
                 // A second rule for a fact: its origins are more origins of the fact's rule.
                 if prov {
                     let os = with_removed(take_origins(ri), &removed);
-                    late.extend(os.into_iter().map(|o| (fact_rule[h], o)));
+                    late.extend(os.into_iter().map(|o| (fact_rule[hi], o)));
                 }
                 continue;
             }
-            fact_rule[h] = rules.len() as u32;
+            fact_rule[hi] = rules.len() as u32;
             status[h - 1] = Status::Fact;
         }
         numbering.push(&mut rules, r.head_kind, &head, body, &g.atoms);
