@@ -38,7 +38,7 @@ fn main() -> ExitCode {
         } else if let Some(v) = a.strip_prefix("--enum-mode=") {
             config.enum_mode = EnumMode::from_name(v).unwrap_or_default();
         } else if a == "--project" {
-            config.project = true;
+            config.project = lucent::solve::Project::Auto;
         } else if let Some(v) = a.strip_prefix("--cr=") {
             config.cr_mode = CrMode::from_name(v).unwrap_or_default();
         } else if let Some(v) = a.strip_prefix("--time-limit=") {

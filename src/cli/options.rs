@@ -11,7 +11,7 @@
 //! names are parsed by the library types they select (`solve::OptMode::from_name`, ...).
 
 use crate::base::WarningKind;
-use crate::solve::{CrMode, EnumMode, Heuristic, OptMode, OptStrategy};
+use crate::solve::{CrMode, EnumMode, Heuristic, OptMode, OptStrategy, Project};
 use crate::syntax::ast::Dialect;
 
 /// Whether an option takes a value.
@@ -161,7 +161,7 @@ pub struct Options {
     /// Enumeration mode.
     pub enum_mode: EnumMode,
     /// Projection requested.
-    pub project: bool,
+    pub project: Project,
     /// CR semantics.
     pub cr: CrMode,
     /// Time limit in seconds, if any.
@@ -208,7 +208,7 @@ impl Default for Options {
             opt_mode: OptMode::Opt,
             opt_strategy: OptStrategy::Bb,
             enum_mode: EnumMode::Auto,
-            project: false,
+            project: Project::No,
             cr: CrMode::Cardinality,
             time_limit: None,
             threads: 1,
@@ -583,10 +583,8 @@ fn apply(o: &mut Options, long: &str, value: Option<&str>) -> Result<(), UsageEr
         "enum-mode" => o.enum_mode = EnumMode::from_name(v).ok_or_else(|| invalid(long, v))?,
         "project" => {
             o.project = match value {
-                None => true,
-                Some(m) => {
-                    crate::solve::Config::project_from_name(m).ok_or_else(|| invalid(long, m))?
-                }
+                None => Project::Auto,
+                Some(m) => Project::from_name(m).ok_or_else(|| invalid(long, m))?,
             }
         }
         "cr" => o.cr = CrMode::from_name(v).ok_or_else(|| invalid(long, v))?,
@@ -872,12 +870,19 @@ mod tests {
         assert_eq!(o.cr, CrMode::Subset);
         assert_eq!(o.heuristic, Heuristic::Domain);
         assert_eq!(o.dialect, Some(Dialect::Clingo));
-        assert!(o.project);
+        assert_eq!(o.project, Project::Auto);
         assert_eq!(o.opt_strategy, OptStrategy::Bb);
+        for (text, mode) in [
+            ("--project=show", Project::Show),
+            ("--project=project,2", Project::Project),
+            ("--project", Project::Auto),
+        ] {
+            assert_eq!(parse_args(&args(text)).unwrap().project, mode, "{text}");
+        }
         let o = parse_args(&args("--opt-mode=opt,5 --project=no --dialect=auto")).unwrap();
         assert_eq!(
             (o.opt_mode, o.project, o.dialect),
-            (OptMode::Opt, false, None)
+            (OptMode::Opt, Project::No, None)
         );
         for (text, strategy) in [
             ("--opt-strategy=usc", OptStrategy::Usc),
@@ -918,7 +923,7 @@ mod tests {
             (Mode::Gringo, GroundFormat::Text)
         );
         assert_eq!(o.time_limit, Some(2.5));
-        assert!(o.project);
+        assert_eq!(o.project, Project::Auto);
         let o = parse_args(&args("--seed=7 --rand-freq=0.02")).unwrap();
         assert_eq!((o.seed, o.rand_freq_permille), (7, 20));
     }

@@ -130,6 +130,41 @@ impl CrMode {
     }
 }
 
+/// Projective enumeration (clasp `--project=<mode>`): which atoms tell answer sets apart.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Project {
+    /// No projection: every answer set is reported.
+    #[default]
+    No,
+    /// `#project` atoms when the program has any, else the shown atoms (`--project`,
+    /// `--project=auto`).
+    Auto,
+    /// The shown atoms, whatever `#project` says (`--project=show`).
+    Show,
+    /// The `#project` atoms only; none at all when the program has none, so one answer set
+    /// is reported (`--project=project`).
+    Project,
+}
+
+impl Project {
+    /// The mode clasp's `--project=<mode>[,<bt>]` names: `show`, `project`, `auto`, `no` or
+    /// `0` (the last two without `<bt>`); `None` for anything else.
+    pub fn from_name(text: &str) -> Option<Project> {
+        match text.split(',').next()? {
+            "show" => Some(Project::Show),
+            "project" => Some(Project::Project),
+            "auto" => Some(Project::Auto),
+            "no" | "0" if !text.contains(',') => Some(Project::No),
+            _ => None,
+        }
+    }
+
+    /// Whether answer sets are projected at all.
+    pub fn is_on(self) -> bool {
+        self != Project::No
+    }
+}
+
 /// The decision heuristic (clasp `--heuristic`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Heuristic {
@@ -171,9 +206,8 @@ pub struct Config {
     pub enum_mode: EnumMode,
     /// Semantics for CR rules.
     pub cr_mode: CrMode,
-    /// Enumerate projected models only (`--project`): onto `#project` atoms if present, else
-    /// onto the shown atoms ([`Config::project_from_name`] reads clasp's modes).
-    pub project: bool,
+    /// Enumerate projected models only (`--project=<mode>`, see [`Project`]).
+    pub project: Project,
     /// Stop with `UNKNOWN` once this instant has passed.
     pub deadline: Option<Instant>,
     /// Stop with `UNKNOWN` once this flag becomes true (e.g. set by a signal handler).
@@ -328,7 +362,7 @@ impl Default for Config {
             opt_strategy: OptStrategy::Bb,
             enum_mode: EnumMode::Auto,
             cr_mode: CrMode::Cardinality,
-            project: false,
+            project: Project::No,
             deadline: None,
             interrupt: None,
             seed: 1,
@@ -362,16 +396,6 @@ impl Default for Config {
 }
 
 impl Config {
-    /// Whether clasp's `--project=<mode>[,...]` projects: `show`, `project` and `auto` do (all
-    /// three as [`Config::project`] describes), `no` and `0` do not; `None` for anything else.
-    pub fn project_from_name(text: &str) -> Option<bool> {
-        match text.split(',').next()? {
-            "show" | "project" | "auto" => Some(true),
-            "no" | "0" if !text.contains(',') => Some(false),
-            _ => None,
-        }
-    }
-
     /// A configuration computing all models (`-n 0`).
     pub fn all_models() -> Config {
         Config {

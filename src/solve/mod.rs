@@ -15,7 +15,7 @@ pub(crate) mod config;
 pub(crate) mod result;
 
 pub use config::{
-    Config, CrMode, Deletion, EnumMode, Heuristic, OptMode, OptStrategy, ReduceSchedule,
+    Config, CrMode, Deletion, EnumMode, Heuristic, OptMode, OptStrategy, Project, ReduceSchedule,
     RestartPolicy, SearchProfile,
 };
 pub use result::{Model, Outcome, SolveResult, Stats, StopReason};

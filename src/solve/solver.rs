@@ -52,7 +52,8 @@ mod settings;
 mod strategies;
 
 use super::config::{
-    Config, CrMode, EnumMode, Heuristic, OptMode, OptStrategy, RestartPolicy, SearchProfile,
+    Config, CrMode, EnumMode, Heuristic, OptMode, OptStrategy, Project, RestartPolicy,
+    SearchProfile,
 };
 use super::engine::{Engine, Restarts, SearchResult, Settings};
 use super::lit::{Lit, Var};

@@ -5,7 +5,8 @@
 //! `tests/data/sparc/*.sp` are programs written to SPARC's manual, one construct each; every
 //! file lists its answer sets in `%% answer:` lines (derived by hand, the derivation in the
 //! file's comments: SPARC itself is not installable here), and `lucent -n0` must give exactly
-//! those. `tests/data/sparc/errors/*.sp` are SPARC's error cases: each must exit 65 with the
+//! those; each `%% warning:` line must start a line of its standard error (SPARC's warnings,
+//! positioned). `tests/data/sparc/errors/*.sp` are SPARC's error cases: each must exit 65 with the
 //! positioned diagnostic of its snapshot.
 //!
 //! Needs clasp; fails (never skips) without it.
@@ -165,6 +166,12 @@ fn manual_programs_give_their_answer_sets() {
         assert!(!want.is_empty(), "{name}: no %% answer: line");
         let (code, stdout, stderr) = lucent(&dir, &["-n0", "--outf=2", &name]);
         assert!(matches!(code, 10 | 30), "{name}: exit {code}\n{stderr}");
+        for w in text.lines().filter_map(|l| l.strip_prefix("%% warning: ")) {
+            assert!(
+                stderr.lines().any(|l| l.starts_with(w)),
+                "{name}: no warning {w}\n{stderr}"
+            );
+        }
         assert!(
             !stderr.contains("does not occur in any rule head"),
             "{name}: warnings for declared predicates\n{stderr}"

@@ -295,7 +295,7 @@ fn projection_removes_duplicates() {
     p.outputs.truncate(1);
     let cfg = Config {
         models: 0,
-        project: true,
+        project: lucent::solve::Project::Auto,
         ..Config::default()
     };
     assert_eq!(answer_sets(&p, cfg), sets(&[&[], &["a"]]));

@@ -3,8 +3,9 @@
 //! lowered to the clingo dialect the rest of the grounder understands.
 //!
 //! Rules implemented (SPARC's manual, iensen/sparc `User_Manual`):
-//! - `#maxint = N.` bounds arithmetic: the built-in sort `#nat` is `0..N` (a program without
-//!   `#maxint` has no `#nat`);
+//! - `#maxint = N.` bounds arithmetic: the built-in sort `#nat` is `0..N`; a program without
+//!   `#maxint` has `#nat = 0..1000000`, SPARC's default maximal integer (`sorts/BuiltIn.java`
+//!   of iensen/sparc), built only when the program names `#nat`;
 //! - a sort is the set its expression denotes: `{a, f(b)}` its elements, `lo..hi` the integers
 //!   between (ends may be `#const` names; `hi < lo` is an error), `id1..id2` the identifiers
 //!   `s` with `id1 <= s <= id2` and `|id1| <= |s| <= |id2|` over letters, digits and `_`
@@ -48,6 +49,9 @@ mod sorts;
 mod typing;
 
 use typing::{sort_literal, variable};
+
+/// SPARC's maximal integer when the program sets no `#maxint`: `#nat` is then `0..1000000`.
+const DEFAULT_MAXINT: i32 = 1_000_000;
 
 /// Most elements an identifier range, or the interval expansion of one argument, may have
 /// (SPARC's own sort capacity).
@@ -120,6 +124,16 @@ pub fn lower(rw: &mut Rewriter<'_>, program: &ast::Program) -> ast::Program {
         .statements
         .iter()
         .any(|s| matches!(&s.kind, StatementKind::SortDef(d) if d.name == "nat"));
+    let has_maxint = program
+        .statements
+        .iter()
+        .any(|s| matches!(s.kind, StatementKind::MaxInt(_)));
+    if !has_maxint && !user_nat && sorts::mentions_sort(program, "nat") {
+        // Without #maxint, variables bound by no atom keep their own ranges (`typing.maxint`
+        // stays unset); only the sort itself is built in.
+        let set: Vec<SymId> = (0..=DEFAULT_MAXINT).map(|i| rw.syms.int(i)).collect();
+        typing.define(rw, "nat", set, None);
+    }
     for st in &program.statements {
         match &st.kind {
             StatementKind::MaxInt(t) => {

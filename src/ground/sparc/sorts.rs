@@ -326,16 +326,7 @@ impl Typing {
 
     /// The error for a sort name that is not defined.
     pub(super) fn undefined(&self, rw: &Rewriter<'_>, span: Span, name: &str) -> Diagnostic {
-        let d = Diagnostic::error(span, format!("undefined sort #{name}"))
-            .with_snippet(snippet(rw, span));
-        if name == "nat" && self.maxint.is_none() {
-            d.with_note(
-                None,
-                "#nat is the built-in sort 0..N of a program that sets #maxint = N.",
-            )
-        } else {
-            d
-        }
+        Diagnostic::error(span, format!("undefined sort #{name}")).with_snippet(snippet(rw, span))
     }
 
     /// Resolves a record condition against the record's variables; `None` after an error.
@@ -410,4 +401,52 @@ impl Typing {
         }
         go(rw, c, &mut operand)
     }
+}
+
+/// Whether the program names the sort `#name` anywhere: a predicate declaration, a sort
+/// definition, a display item or a sort atom of a rule.
+pub(super) fn mentions_sort(program: &ast::Program, name: &str) -> bool {
+    fn in_expr(e: &SortExpr, name: &str) -> bool {
+        match &e.kind {
+            SortExprKind::Ref(r) => r == name,
+            SortExprKind::Set(_) | SortExprKind::Range(..) => false,
+            SortExprKind::Concat(parts) => parts.iter().any(|p| in_expr(p, name)),
+            SortExprKind::Record { args, .. } => args.iter().any(|(e, _)| in_expr(e, name)),
+            SortExprKind::Union(a, b)
+            | SortExprKind::Difference(a, b)
+            | SortExprKind::Intersection(a, b) => in_expr(a, name) || in_expr(b, name),
+            SortExprKind::Paren(a) => in_expr(a, name),
+        }
+    }
+    let lit = |l: &ast::Literal| matches!(&l.atom, ast::Atom::Sort { sort, .. } if sort == name);
+    let cond = |c: &ast::ConditionalLiteral| lit(&c.literal) || c.condition.iter().any(lit);
+    let in_rule = |r: &ast::Rule| {
+        let head = match &r.head {
+            ast::Head::None => false,
+            ast::Head::Disjunction(es) => es.iter().any(cond),
+            ast::Head::Choice(c) => c.elements.iter().any(cond),
+            ast::Head::Aggregate(h) => h
+                .elements
+                .iter()
+                .any(|e| lit(&e.literal) || e.condition.iter().any(lit)),
+        };
+        head || r.body.iter().any(|b| match b {
+            ast::BodyLiteral::Literal(l) => lit(l),
+            ast::BodyLiteral::Conditional(c) => cond(c),
+            ast::BodyLiteral::Aggregate { aggregate, .. } => {
+                aggregate
+                    .elements
+                    .iter()
+                    .any(|e| e.condition.iter().any(lit))
+                    || aggregate.set_syntax.iter().any(cond)
+            }
+        })
+    };
+    program.statements.iter().any(|st| match &st.kind {
+        StatementKind::PredicateDecl(p) => p.sorts.iter().any(|s| s == name),
+        StatementKind::SortDef(d) => in_expr(&d.expr, name),
+        StatementKind::DisplaySort(s) => s == name,
+        StatementKind::Rule(r) => in_rule(r),
+        _ => false,
+    })
 }

@@ -324,8 +324,14 @@ impl Solver {
 
     /// The literals to block on for projected enumeration, if any.
     pub(super) fn projection(&self) -> Option<Vec<Lit>> {
-        if self.config.project {
-            if !self.prog.projections.is_empty() {
+        let project = self.config.project;
+        if project.is_on() {
+            let onto_projections = match project {
+                Project::Project => true,
+                Project::Auto => !self.prog.projections.is_empty(),
+                _ => false,
+            };
+            if onto_projections {
                 return Some(
                     self.prog
                         .projections
