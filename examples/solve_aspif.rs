@@ -18,7 +18,11 @@ use std::time::{Duration, Instant};
 
 fn main() -> ExitCode {
     let start = Instant::now();
-    let mut config = Config::default();
+    // As `lucent --mode=clasp`: nothing printed reads a model's supports.
+    let mut config = Config {
+        supports: false,
+        ..Config::default()
+    };
     let mut models: Option<usize> = None;
     let mut file: Option<String> = None;
     let mut quiet = false;
