@@ -1,6 +1,7 @@
 //! Reads an aspif program (a file, or standard input for `-` or no file) and prints its answer
 //! sets as clasp does, using Lucent's solver. A development tool for `scripts/bench_solve.sh`;
-//! the real command line is `lucent --mode=clasp`.
+//! the real command line is `lucent --mode=clasp`. It uses mimalloc as its global allocator, the
+//! `lucent` binary's (`src/mi_alloc.rs`).
 //!
 //! Usage: `solve_aspif [-n N] [--opt-mode=opt|optN|enum[,B..]|ignore]
 //! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [--parallel-mode=N]
@@ -13,12 +14,24 @@ use lucent::solve::{
     SearchProfile, Solver,
 };
 use std::io::Read;
+
+// The `lucent` binary's global allocator (`src/mi_alloc.rs`), so that this measures what
+// `lucent --mode=clasp` does.
+#[path = "../src/mi_alloc.rs"]
+mod mi_alloc;
+
+#[global_allocator]
+static GLOBAL: mi_alloc::Mi = mi_alloc::Mi;
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 fn main() -> ExitCode {
     let start = Instant::now();
-    let mut config = Config::default();
+    // As `lucent --mode=clasp`: nothing printed reads a model's supports.
+    let mut config = Config {
+        supports: false,
+        ..Config::default()
+    };
     let mut models: Option<usize> = None;
     let mut file: Option<String> = None;
     let mut quiet = false;

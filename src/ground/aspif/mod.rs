@@ -46,8 +46,8 @@ use std::io::Write as _;
 use thiserror::Error;
 
 use super::program::{
-    Atom, Body, CrRule, Edge, ExternalValue, GroundProgram, HeadKind, Heuristic, HeuristicModifier,
-    Lit, Minimize, Output, Prefer, Weight,
+    Atom, BodyRef, CrRule, Edge, ExternalValue, GroundProgram, HeadKind, Heuristic,
+    HeuristicModifier, Lit, Minimize, Output, Prefer, Weight,
 };
 
 mod read;
@@ -226,6 +226,8 @@ pub fn read(src: &[u8]) -> Result<Aspif, AspifError> {
         cur: Cursor { src, pos: 0 },
         num_atoms: 0,
         minimize_totals: std::collections::HashMap::new(),
+        head_buf: Vec::new(),
+        lit_buf: Vec::new(),
     }
     .file()
 }
@@ -349,7 +351,7 @@ pub fn cr_priority(program: &GroundProgram) -> Weight {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ground::program::{BodyRef, Rule};
+    use crate::ground::program::{Body, Rule};
 
     #[test]
     fn reads_and_writes_a_small_program() {

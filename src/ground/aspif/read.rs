@@ -50,8 +50,47 @@ impl<'a> Cursor<'a> {
     }
 
     /// Reads an integer token in `min..=max`.
+    #[inline]
     fn int(&mut self, what: &'static str, min: i64, max: i64) -> Result<i64, AspifError> {
         self.skip_blanks();
+        // The common token first: at most 18 digits (no overflow in `i64`), optionally
+        // negative, ending at a blank or the end, in range. Anything else (errors included)
+        // takes the general path below from the same position.
+        let src = self.src;
+        let mut p = self.pos;
+        let negative = src.get(p) == Some(&b'-');
+        if negative {
+            p += 1;
+        }
+        let digits = p;
+        let mut magnitude: u64 = 0;
+        while p - digits < 19 {
+            match src.get(p) {
+                Some(&b) if b.is_ascii_digit() => {
+                    magnitude = magnitude * 10 + u64::from(b - b'0');
+                    p += 1;
+                }
+                _ => break,
+            }
+        }
+        let len = p - digits;
+        if len > 0 && len <= 18 && matches!(src.get(p), None | Some(b' ' | b'\t' | b'\r' | b'\n')) {
+            let value = if negative {
+                -(magnitude as i64)
+            } else {
+                magnitude as i64
+            };
+            if (min..=max).contains(&value) {
+                self.pos = p;
+                return Ok(value);
+            }
+        }
+        self.int_general(what, min, max)
+    }
+
+    /// [`Cursor::int`] for every token, with its errors (after blanks are skipped).
+    #[cold]
+    fn int_general(&mut self, what: &'static str, min: i64, max: i64) -> Result<i64, AspifError> {
         let start = self.pos;
         match self.src.get(self.pos) {
             None => {
@@ -191,6 +230,10 @@ pub(super) struct Reader<'a> {
     pub(super) cur: Cursor<'a>,
     pub(super) num_atoms: u32,
     pub(super) minimize_totals: std::collections::HashMap<Weight, i128>,
+    /// Scratch for a rule's head atoms, reused from rule to rule.
+    pub(super) head_buf: Vec<Atom>,
+    /// Scratch for a rule's normal body, reused from rule to rule.
+    pub(super) lit_buf: Vec<Lit>,
 }
 
 /// What a step's reader remembers about the CR minimize while the step is open.
@@ -210,25 +253,42 @@ impl<'a> Reader<'a> {
     }
 
     fn lits(&mut self) -> Result<Vec<Lit>, AspifError> {
+        let mut lits = Vec::new();
+        self.lits_into(&mut lits)?;
+        Ok(lits)
+    }
+
+    /// Reads a counted list of literals into `lits` (cleared first), so that a caller reading
+    /// many statements reuses one buffer.
+    fn lits_into(&mut self, lits: &mut Vec<Lit>) -> Result<(), AspifError> {
+        lits.clear();
         let n = self.cur.count("number of literals")?;
-        let mut lits = Vec::with_capacity(self.cur.capacity(n));
+        lits.reserve(self.cur.capacity(n));
         for _ in 0..n {
             let l = self.cur.lit()?;
             self.note_lit(l);
             lits.push(l);
         }
-        Ok(lits)
+        Ok(())
     }
 
     fn atoms(&mut self) -> Result<Vec<Atom>, AspifError> {
+        let mut atoms = Vec::new();
+        self.atoms_into(&mut atoms)?;
+        Ok(atoms)
+    }
+
+    /// Reads a counted list of atoms into `atoms` (cleared first), as [`Reader::lits_into`].
+    fn atoms_into(&mut self, atoms: &mut Vec<Atom>) -> Result<(), AspifError> {
+        atoms.clear();
         let n = self.cur.count("number of atoms")?;
-        let mut atoms = Vec::with_capacity(self.cur.capacity(n));
+        atoms.reserve(self.cur.capacity(n));
         for _ in 0..n {
             let a = self.cur.atom()?;
             self.note_atom(a);
             atoms.push(a);
         }
-        Ok(atoms)
+        Ok(())
     }
 
     /// Reads weighted literals; `total` is the running sum of absolute values (of the bound and
@@ -488,9 +548,30 @@ impl<'a> Reader<'a> {
             1 => HeadKind::Choice,
             v => return Err(self.bad_value("head type", "0 (disjunction), 1 (choice)", v)),
         };
-        let head = self.atoms()?;
+        // The head and a normal body are read into the reader's buffers, which are taken out
+        // and put back: a rule costs no allocation of its own.
+        let mut head = std::mem::take(&mut self.head_buf);
+        let mut lits = std::mem::take(&mut self.lit_buf);
+        let read = self.rule_parts(step, head_kind, &mut head, &mut lits);
+        self.head_buf = head;
+        self.lit_buf = lits;
+        read
+    }
+
+    /// [`Reader::rule_statement`] after the head type, with its buffers.
+    fn rule_parts(
+        &mut self,
+        step: &mut AspifStep,
+        head_kind: HeadKind,
+        head: &mut Vec<Atom>,
+        lits: &mut Vec<Lit>,
+    ) -> Result<(), AspifError> {
+        self.atoms_into(head)?;
         let body = match self.cur.int("body type", 0, i64::MAX)? {
-            0 => Body::Normal(self.lits()?),
+            0 => {
+                self.lits_into(lits)?;
+                BodyRef::Normal(lits)
+            }
             1 => {
                 self.cur.skip_blanks();
                 let at = self.cur.pos;
@@ -501,16 +582,24 @@ impl<'a> Reader<'a> {
                         .cur
                         .error_at(at, AspifErrorKind::WeightsTooLarge(WEIGHT_BODY.into())));
                 }
-                Body::Weight {
-                    lower,
-                    lits: self.wlits(false, WEIGHT_BODY, &mut total)?,
-                }
+                let wlits = self.wlits(false, WEIGHT_BODY, &mut total)?;
+                let p = &mut step.program;
+                step.layout.push(Stmt::Rule(p.rules.len() as u32));
+                p.rules.push_parts(
+                    head_kind,
+                    head,
+                    BodyRef::Weight {
+                        lower,
+                        lits: &wlits,
+                    },
+                );
+                return Ok(());
             }
             v => return Err(self.bad_value("body type", "0 (normal), 1 (weight)", v)),
         };
         let p = &mut step.program;
         step.layout.push(Stmt::Rule(p.rules.len() as u32));
-        p.rules.push_parts(head_kind, &head, body.as_ref());
+        p.rules.push_parts(head_kind, head, body);
         Ok(())
     }
 
