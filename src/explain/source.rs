@@ -698,10 +698,8 @@ pub fn body_aggregates(s: &ast::Statement) -> Vec<(&ast::BodyAggregate, bool)> {
 /// Adds the variables of `t` to `out`.
 pub fn term_vars(t: &Term, out: &mut Vec<String>) {
     match &t.kind {
-        TermKind::Variable(v) => {
-            if !out.iter().any(|x| x == v.as_str()) {
-                out.push(v.as_str().to_string());
-            }
+        TermKind::Variable(v) if !out.iter().any(|x| x == v.as_str()) => {
+            out.push(v.as_str().to_string());
         }
         TermKind::Function { args, .. } => args.iter().flatten().for_each(|a| term_vars(a, out)),
         TermKind::Unary { arg, .. } | TermKind::Paren(arg) => term_vars(arg, out),
