@@ -219,6 +219,15 @@ fn blocked_line(ctx: &mut Ctx, rule: &RuleInstance, blocker: &Symbol, holds: boo
     } else {
         format!("{blocker} does not hold")
     };
+    // A ground instance of a rule with body aggregates lost them at grounding: the statement
+    // as written stands in its place.
+    if let Some((stmt, b)) = ctx.oracle.origin_of(rule) {
+        let s = &ctx.oracle.labels.statements[stmt];
+        if !source::body_aggregates(s).is_empty() {
+            let written = source::statement_text(s);
+            return format!("{} `{written}`{}: {why}", rule.label, with(&b));
+        }
+    }
     format!("{} `{rule}`: {why}", rule.label)
 }
 

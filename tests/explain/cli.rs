@@ -301,6 +301,13 @@ fn aggregates_show_their_bound_and_elements() {
     assert_eq!(agg["elements"].as_array().unwrap().len(), 3, "{v}");
     let (out, _) = explain_data("aggregate.lp", "--why-not", "popular(ann)");
     insta::assert_snapshot!("aggregate_why_not", out);
+    // rich(ann)'s ground instance lost its aggregate at grounding; the statement stands in
+    // for it, blocked by `not likes(ann,bob)` (ann likes bob).
+    let (out, _) = explain_data("aggregate.lp", "--why-not", "rich(ann)");
+    assert!(
+        out.contains("#count{ Q : likes(Q, P) } >= 1.` with P=ann: not likes(ann,bob) fails"),
+        "{out}"
+    );
     let (out, v) = explain_data("aggregate_kept.lp", "--why", "popular(bob)");
     insta::assert_snapshot!("aggregate_kept_why", out);
     assert_eq!(v["source"][0]["aggregates"][0]["holds"], true, "{v}");
