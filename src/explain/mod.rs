@@ -20,6 +20,10 @@
 //! - [`counterfactual`]: what if (the history with another action, re-solved) and why no plan
 //!   (a minimal set of goal literals, observations and constraints, by deletion over
 //!   assumptions);
+//! - `source`: the program as written, evaluated over an answer set (statements matched
+//!   against atoms, bodies joined, body aggregates with their elements);
+//! - `unfired`: why not at the source level (the rules that could derive an atom and what
+//!   blocks them; what would break if an unchosen atom were true);
 //! - `generic`: why and why-not of an atom of any program's answer set, as text;
 //! - `scene` (feature `sim`): why the robot believes an object of a looked-at scene is
 //!   (un)stable or (not) occluded, over the classification-mode answer set of `vision::reason`;
@@ -40,6 +44,8 @@ pub mod build;
 pub mod questions;
 pub(crate) mod oracle;
 pub mod history;
+mod source;
+mod unfired;
 pub(crate) mod generic;
 mod support;
 #[cfg(feature = "sim")]

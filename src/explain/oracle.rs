@@ -44,6 +44,9 @@ pub struct Labels {
     /// Predicates whose default-negated body literals proofs do not show (the surprise
     /// assumptions of a repaired history, see `explain::history`).
     pub hidden_predicates: Vec<String>,
+    /// The statements as written, by statement id (any program's, for explanations at the
+    /// source level, `explain::source`); empty for an AL_d translation.
+    pub statements: Vec<ast::Statement>,
 }
 
 impl Labels {
@@ -82,6 +85,7 @@ impl Labels {
             by_statement,
             hidden: Vec::new(),
             hidden_predicates: Vec::new(),
+            statements: Vec::new(),
         }
     }
 
@@ -111,6 +115,7 @@ impl Labels {
             by_statement,
             hidden: Vec::new(),
             hidden_predicates: Vec::new(),
+            statements: program.statements.clone(),
         }
     }
 
@@ -452,6 +457,53 @@ impl ProgramOracle {
                 })
             }
         }
+    }
+}
+
+impl ProgramOracle {
+    /// The source statement of a rule instance and its variable values: for a ground rule, its
+    /// first origin with the instance's label (bindings from the provenance); for a removed
+    /// instance, the statement with that label, bound by matching its head with the
+    /// instance's. `None` without source statements (an AL_d translation).
+    pub(super) fn origin_of(&self, r: &RuleInstance) -> Option<(usize, super::source::Bindings)> {
+        let prov = &self.ctl.program().provenance;
+        if let Some(i) = r.rule {
+            for o in prov.origins(i as usize) {
+                if !matches!(o.rule, RuleOrigin::Statement { .. })
+                    || self.labels.get(&o.rule).0 != r.label
+                {
+                    continue;
+                }
+                let stmt = o.rule.stmt()? as usize;
+                if stmt >= self.labels.statements.len() {
+                    return None;
+                }
+                let mut b: super::source::Bindings = o
+                    .rule
+                    .bindings()
+                    .iter()
+                    .map(|&(n, v)| (self.ctl.name_of_id(n).to_string(), self.ctl.symbol_of_id(v)))
+                    .collect();
+                // Variables local to a head element (a choice's `C` in `{color(N,C) : color(C)}`)
+                // are not among the statement's bindings: the head binds them.
+                let s = &self.labels.statements[stmt];
+                super::source::head_atoms(s)
+                    .iter()
+                    .any(|(a, _)| super::source::unify_atom(a, &r.head, &mut b));
+                return Some((stmt, b));
+            }
+        }
+        let stmt = self
+            .labels
+            .by_statement
+            .iter()
+            .position(|(l, _)| *l == r.label)?;
+        let s = self.labels.statements.get(stmt)?;
+        let mut b = Vec::new();
+        super::source::head_atoms(s)
+            .iter()
+            .any(|(a, _)| super::source::unify_atom(a, &r.head, &mut b));
+        Some((stmt, b))
     }
 }
 

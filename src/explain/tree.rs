@@ -303,6 +303,10 @@ pub struct ProofTree {
     /// The learned axioms among the tree's rule instances (supports and blocked rules), in
     /// the order the knowledge base lists them; empty when it has none.
     pub learned: Vec<LearnedAxiom>,
+    /// What the generic `--why`/`--why-not` read off the program as written (chosen steps,
+    /// aggregates with their elements, source rules that could not fire), as the `--outf=2`
+    /// JSON's `source`; empty for other answers.
+    pub source_notes: Vec<serde_json::Value>,
 }
 
 impl ProofTree {

@@ -1,7 +1,9 @@
 //! `lucent explain` and `lucent ask` on the command line (insta snapshots): questions about the
 //! paper's execution example (KB_full, the paper's six actions given as happened) and about a
 //! plan the planner makes itself; JSON with `type`, `answer`, `literals` and `tree`; DOT and SVG
-//! pictures; `--why`/`--why-not` on a clingo program of our own (`tests/data/explain/reach.lp`);
+//! pictures; `--why`/`--why-not` on clingo programs of our own (`tests/data/explain/reach.lp`,
+//! and for issue 32 choices, aggregates and removed rules: `choice.lp`, `unchosen.lp`,
+//! `aggregate.lp`, `aggregate_kept.lp`, `removed.lp`);
 //! and the replies to questions that are not understood or out of range.
 
 use crate::support::cli as cli_support;
@@ -219,23 +221,116 @@ fn why_and_why_not_on_any_program() {
     assert_eq!(code, 65, "{err}");
 }
 
-/// A choice is shown as the choice it is, not as an ordinary rule: the only answer set of
-/// this program (by hand: the constraint forces the choice) has color(1,green) by the choice
-/// rule's ground instance `{color(1,green)} :- node(1).`
+/// `lucent explain tests/data/explain/FILE FLAG ATOM` as text and as `--outf=2` JSON. Every
+/// explanation is re-checked before it is written (`explain::generic` runs `tree::recheck` on
+/// the proof tree and replaces a failing answer by "failed its own check"), and internal atoms
+/// of the translation (`#aux(N)`) never show in the text or the JSON's `source`.
+fn explain_data(file: &str, flag: &str, atom: &str) -> (String, serde_json::Value) {
+    let path = format!("tests/data/explain/{file}");
+    let (code, out, err) = run(&["explain", &path, flag, atom]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!out.contains("failed its own check"), "{out}");
+    assert!(!out.contains("#aux"), "{out}");
+    let (code, json, err) = run(&["explain", &path, flag, atom, "--outf=2"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    // The JSON's `tree` is the ground proof the answer was re-checked on (internal atoms
+    // included); what it says at the source level, `answer` and `source`, names none.
+    assert!(!v["source"].to_string().contains("#aux"), "{json}");
+    assert_eq!(v["answer"].as_str(), Some(out.trim_end()), "{json}");
+    (out, v)
+}
+
+/// A choice is shown as the choice rule it came from and says "chosen" (issue 32): the only
+/// answer set of `choice.lp` (clingo, in the file) has color(1,green) from the choice rule of
+/// line 5 with N=1, C=green; the JSON's `source` says so as values.
 #[test]
 fn a_chosen_atom_is_explained_by_its_choice_rule() {
-    let dir = std::env::temp_dir().join(format!("lucent-choice-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("choice.lp");
-    std::fs::write(
-        &file,
-        "node(1).\n{color(1,green)} :- node(1).\n:- not color(1,green).\n",
-    )
-    .unwrap();
-    let (code, out, err) = run(&["explain", file.to_str().unwrap(), "--why", "color(1,green)"]);
-    assert_eq!(code, 0, "{err}");
-    assert!(out.contains("`{color(1,green)} :- node(1).`"), "{out}");
-    let _ = std::fs::remove_dir_all(&dir);
+    let (out, v) = explain_data("choice.lp", "--why", "color(1,green)");
+    insta::assert_snapshot!("choice_why_chosen", out);
+    let note = &v["source"][0];
+    assert_eq!(note["chosen"], true, "{v}");
+    assert_eq!(note["bindings"]["C"], "green", "{v}");
+    assert!(
+        note["statement"]
+            .as_str()
+            .unwrap()
+            .starts_with("{ color(N, C)"),
+        "{v}"
+    );
+}
+
+/// Why not of an atom a choice left out names what would break if it were true, the rest of
+/// the answer set unchanged. By hand: color(1,red) would break `:- color(1,red).`, the
+/// constraint of line 6 with X=1, Y=2, C=red (color(2,red) holds) and the choice's bound
+/// `= 1` (color(1,green) is chosen); color(2,green) the constraint with C=green and the bound.
+/// spare in `unchosen.lp` breaks nothing: "it could be"; paint(1) costs 2@1 under the
+/// `#minimize` (clingo's first answer set leaves both out, as the file says).
+#[test]
+fn why_not_of_an_unchosen_atom_names_what_it_would_violate() {
+    let (out, v) = explain_data("choice.lp", "--why-not", "color(1,red)");
+    insta::assert_snapshot!("choice_why_not_red", out);
+    let kinds: Vec<&str> = v["source"][0]["violations"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(kinds, ["bound", "constraint", "constraint"], "{v}");
+    let (out, _) = explain_data("choice.lp", "--why-not", "color(2,green)");
+    insta::assert_snapshot!("choice_why_not_green", out);
+    let (out, v) = explain_data("unchosen.lp", "--why-not", "spare");
+    assert!(out.contains("It could be"), "{out}");
+    assert_eq!(v["source"][0]["violations"], serde_json::json!([]), "{v}");
+    let (out, v) = explain_data("unchosen.lp", "--why-not", "paint(1)");
+    insta::assert_snapshot!("unchosen_why_not_paint", out);
+    assert_eq!(v["source"][0]["violations"][0]["cost"], "2@1", "{v}");
+}
+
+/// An aggregate shows its bound and the elements that satisfied it, whether grounding
+/// evaluated it (`aggregate.lp`: every element is a fact) or it survived (`aggregate_kept.lp`:
+/// one element is chosen). By hand: bob is liked by ann, carl and dave (3 >= 3); ann by bob
+/// only in `aggregate.lp` (1 < 3, so grounding removed the rule) and by carl and dave in
+/// `aggregate_kept.lp` (2 < 3, bob's like being forbidden).
+#[test]
+fn aggregates_show_their_bound_and_elements() {
+    let (out, v) = explain_data("aggregate.lp", "--why", "popular(bob)");
+    insta::assert_snapshot!("aggregate_why", out);
+    let agg = &v["source"][0]["aggregates"][0];
+    assert_eq!(agg["value"], "3", "{v}");
+    assert_eq!(agg["elements"].as_array().unwrap().len(), 3, "{v}");
+    let (out, _) = explain_data("aggregate.lp", "--why-not", "popular(ann)");
+    insta::assert_snapshot!("aggregate_why_not", out);
+    // rich(ann)'s ground instance lost its aggregate at grounding; the statement stands in
+    // for it, blocked by `not likes(ann,bob)` (ann likes bob).
+    let (out, _) = explain_data("aggregate.lp", "--why-not", "rich(ann)");
+    assert!(
+        out.contains("#count{ Q : likes(Q, P) } >= 1.` with P=ann: not likes(ann,bob) fails"),
+        "{out}"
+    );
+    let (out, v) = explain_data("aggregate_kept.lp", "--why", "popular(bob)");
+    insta::assert_snapshot!("aggregate_kept_why", out);
+    assert_eq!(v["source"][0]["aggregates"][0]["holds"], true, "{v}");
+    assert_eq!(v["source"][1]["chosen"], true, "{v}");
+    let (out, v) = explain_data("aggregate_kept.lp", "--why-not", "popular(ann)");
+    insta::assert_snapshot!("aggregate_kept_why_not", out);
+    assert_eq!(v["source"][0]["blocker"]["aggregate"]["value"], "2", "{v}");
+}
+
+/// Why not at the source level: the rules that could derive an atom grounding removed, each
+/// with the body literal that cannot hold, explained one level down. By hand (`removed.lp`):
+/// t(1) needs some h(1,_) and there is none; q(1) has one ground rule (line 7, blocked by
+/// e(1,2)) and two removed ones: line 5 needs g(2) (Y=2 from e(1,2)), which no rule derives,
+/// and line 6 needs f(1), which no rule derives.
+#[test]
+fn why_not_of_a_removed_atom_names_the_source_rules() {
+    let (out, v) = explain_data("removed.lp", "--why-not", "t(1)");
+    insta::assert_snapshot!("removed_why_not_t", out);
+    assert_eq!(v["source"][0]["blocked"][0]["reason"], "no_match", "{v}");
+    let (out, v) = explain_data("removed.lp", "--why-not", "q(1)");
+    insta::assert_snapshot!("removed_why_not_q", out);
+    assert_eq!(v["source"][0]["blocked"][0]["literal"], "g(2)", "{v}");
+    assert_eq!(v["source"][0]["blocked"][0]["bindings"]["Y"], "2", "{v}");
 }
 
 #[test]

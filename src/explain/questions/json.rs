@@ -20,6 +20,9 @@ impl Answer {
         });
         if let Some(tree) = &self.tree {
             obj["tree"] = tree_json(tree);
+            if !tree.source_notes.is_empty() {
+                obj["source"] = serde_json::Value::Array(tree.source_notes.clone());
+            }
             // The learned axioms the answer's path cites (as its English says).
             let cited: Vec<serde_json::Value> = tree
                 .learned
