@@ -735,6 +735,49 @@ mod tests {
         assert_eq!(facts(&w), ["-a", "b"]);
     }
 
+    /// By hand: with the choice rule a candidate, `1 { a; b } 1.` and both constraints are
+    /// needed (without the choice nothing is chosen; without `:- a.` a is chosen); without
+    /// `--assume-choices` the rule is no candidate and the two constraints are the set.
+    #[test]
+    fn choice_rules_are_candidates_on_request() {
+        let text = "1 { a; b } 1.\n:- a.\n:- b.\n";
+        let with = UnsatConfig {
+            choices: true,
+            ..UnsatConfig::default()
+        };
+        assert_eq!(
+            facts(&run(text, &with)),
+            ["constraint 1", "constraint 2", "choice 0"]
+        );
+        assert_eq!(
+            facts(&run(text, &UnsatConfig::default())),
+            ["constraint 1", "constraint 2"]
+        );
+    }
+
+    /// By hand: `a :- not a.` has no answer set whatever is switched off; the set is empty and
+    /// the text says the rules alone are to blame.
+    #[test]
+    fn rules_alone_may_be_unsatisfiable() {
+        let mut sources = SourceMap::new();
+        let text = "b.\na :- not a, b.\n";
+        let id = sources.add("t.lp", text);
+        let parse = crate::syntax::parse(id, text, ast::Dialect::Clingo);
+        let w = why_unsat(&parse.program, &sources, &UnsatConfig::default()).unwrap();
+        // b is needed: without it the rule's body fails and the empty set is an answer set.
+        assert_eq!(facts(&w), ["b"]);
+        let w = run("a :- not a.\n", &UnsatConfig::default());
+        let WhyUnsat::Unsatisfiable(u) = &w else {
+            panic!("{w:?}")
+        };
+        assert!(u.members.is_empty());
+        let mut sources = SourceMap::new();
+        sources.add("t.lp", "a :- not a.\n");
+        assert!(u
+            .text(&ast::Program::default(), &sources)
+            .contains("its rules alone admit no answer set"));
+    }
+
     #[test]
     fn signatures_are_parsed_or_refused() {
         assert_eq!(
