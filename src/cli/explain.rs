@@ -6,7 +6,8 @@
 //!   domain), the goal (the scene's `goal`, or `--goal`), and either an executed plan
 //!   (`--happened "a@0; b@1"`, need not be minimal) or the first minimal plan the planner finds.
 //! - `lucent explain PROGRAM.lp --why ATOM` / `--why-not ATOM`: the proof (or the blocked rules)
-//!   of an atom in the program's first answer set.
+//!   of an atom in the program's first answer set; `--why-unsat`: why it has none
+//!   (`cli::explain_program`).
 //! - `lucent ask SCENE.ald... [--happened PLAN]` or `lucent ask --run RUN.json [DOMAIN.ald]`:
 //!   questions read line by line, each answered in turn; follow-up questions take their step
 //!   from the previous one. The session keeps its questions: `history` lists them, `!N` asks
@@ -31,16 +32,13 @@ use std::io::{BufRead, IsTerminal, Write};
 
 use crate::action::{self, ast::Value};
 use crate::base::SourceMap;
-use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol};
 use crate::explain::counterfactual::{what_if, why_no_plan};
 use crate::explain::draw;
 use crate::explain::english::{Parser, Question};
-use crate::explain::generic;
 use crate::explain::history::{
     explain_steps, parse_actions, Failed, History, HistoryConfig, Steps, Surprise, Unexpected,
 };
 use crate::explain::lexicon::Lexicon;
-use crate::explain::oracle::{Labels, ProgramOracle};
 use crate::explain::questions::{answer, Answer, AnswerError, Mode, Session};
 use crate::explain::verbalize::Verbalizer;
 use crate::plan::{plan, PlanConfig};
@@ -51,7 +49,7 @@ use super::options::{self, opt, Arg, Arity::*, OptionSpec, Verb};
 pub(super) const VERB: Verb = Verb {
     usage: "\
 usage: lucent explain SCENE.ald... [--happened PLAN] [--goal LITERALS] -q QUESTION [options]
-       lucent explain PROGRAM.lp (--why ATOM | --why-not ATOM) [options]
+       lucent explain PROGRAM.lp (--why ATOM | --why-not ATOM | --why-unsat) [options]
        lucent ask SCENE.ald... [--happened PLAN] [--goal LITERALS] [options]
        lucent ask --run RUN.json [DOMAIN.ald] [options]
 
@@ -90,6 +88,10 @@ const OPTIONS: &[OptionSpec] = &[
     opt("svg", None, Value, "FILE", "the proof tree as SVG", "Options"),
     opt("why", None, Value, "ATOM", "the proof of ATOM in the first answer set of a clingo program", "Options"),
     opt("why-not", None, Value, "ATOM", "why ATOM is false in the first answer set of a clingo program: the rules that could derive it, each blocked", "Options"),
+    opt("why-unsat", None, Flag, "", "why a clingo program has no answer set: a minimal unsatisfiable subset of its facts and constraints", "Options"),
+    opt("assume", None, Value, "SIG", "with --why-unsat: only facts of predicate SIG (`edge/2`) are candidates (repeatable)", "Options"),
+    opt("models", Some('n'), Value, "N", "with --why/--why-not: explain in each of the first N answer sets (0: all)", "Options"),
+    opt("assume-choices", None, Flag, "", "with --why-unsat: choice rules are candidates too", "Options"),
 ];
 
 /// The parsed command line.
@@ -108,6 +110,11 @@ struct Args {
     svg: Option<String>,
     why: Option<String>,
     why_not: Option<String>,
+    why_unsat: bool,
+    assume: Vec<String>,
+    assume_choices: bool,
+    /// Answer sets to explain in (`--models`; 0: all).
+    models: usize,
     run: Option<String>,
     /// The run itself, when the caller has it as a value (`run` then only names it).
     run_value: Option<crate::plan::history::History>,
@@ -122,7 +129,10 @@ fn usage(err: &mut dyn Write, verb: &str, msg: &str) -> std::io::Result<i32> {
 }
 
 fn parse_args(args: &[String]) -> Result<Args, String> {
-    let mut a = Args::default();
+    let mut a = Args {
+        models: 1,
+        ..Args::default()
+    };
     for arg in options::scan(OPTIONS, args) {
         let (spec, v) = match arg.map_err(|e| e.to_string())? {
             Arg::Option(spec, v) => (spec, v.unwrap_or_default()),
@@ -144,6 +154,10 @@ fn parse_args(args: &[String]) -> Result<Args, String> {
             "svg" => a.svg = Some(v),
             "why" => a.why = Some(v),
             "why-not" => a.why_not = Some(v),
+            "why-unsat" => a.why_unsat = true,
+            "assume" => a.assume.push(v),
+            "assume-choices" => a.assume_choices = true,
+            "models" => a.models = spec.number(&v)?,
             "const" => a.overrides.push(spec.assignment(&v)?),
             _ => {} // --help, answered before parsing
         }
@@ -185,6 +199,17 @@ pub fn run_explain(
         Ok(a) => a,
         Err(code) => return Ok(code),
     };
+    if a.why_unsat {
+        return super::explain_program::run_why_unsat(
+            &a.files,
+            &a.overrides,
+            &a.assume,
+            a.assume_choices,
+            a.json,
+            out,
+            err,
+        );
+    }
     if a.why.is_some() || a.why_not.is_some() {
         return run_generic(&a, out, err);
     }
@@ -634,7 +659,11 @@ fn write_pictures(answer: &Answer, a: &Args, err: &mut dyn Write) -> std::io::Re
             )?;
             continue;
         };
-        let text = if svg {
+        // A program's proof: each literal once, with its rule (`explain::draw_graph`).
+        let program = a.why.is_some() || a.why_not.is_some();
+        let text = if svg && program {
+            crate::explain::draw_graph::svg(tree)
+        } else if svg {
             draw::svg(tree)
         } else {
             draw::dot(tree)
@@ -785,104 +814,46 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
         (None, Some(x)) => (x.clone(), true),
         _ => return usage(err, "explain", "give one of --why and --why-not"),
     };
-    let atom = match Symbol::parse(&atom_text) {
-        Ok(t) if t.name().is_some_and(|n| !n.is_empty()) => t,
-        _ => {
-            writeln!(
-                err,
-                "*** ERROR: (lucent): '{atom_text}': expected a ground atom such as p(1,a)"
-            )?;
+    let query = match crate::explain::query::parse(&atom_text) {
+        Ok(q) => q,
+        Err(m) => {
+            writeln!(err, "*** ERROR: (lucent): {m}")?;
             return Ok(super::EXIT_INPUT);
         }
     };
-    let mut sources = SourceMap::new();
-    let mut program = crate::syntax::ast::Program::default();
-    let mut diags = crate::base::Diagnostics::default();
-    for name in &a.files {
-        let text = match super::builtin::read_to_string(name) {
-            Ok(t) => t,
-            Err(e) => {
-                writeln!(err, "*** ERROR: (lucent): {name}: {e}")?;
-                return Ok(super::EXIT_INPUT);
-            }
-        };
-        let dialect = if name.ends_with(".sp") {
-            crate::syntax::ast::Dialect::Sparc
-        } else {
-            crate::syntax::ast::Dialect::Clingo
-        };
-        let id = sources.add(name.clone(), text.clone());
-        let parse = crate::syntax::parse(id, &text, dialect);
-        diags.extend(parse.diagnostics);
-        program.dialect = parse.program.dialect;
-        program.statements.extend(parse.program.statements);
-    }
-    if diags.has_errors() {
-        write!(err, "{}", diags.render(&sources))?;
-        writeln!(err, "*** ERROR: (lucent): parsing failed")?;
-        return Ok(super::EXIT_INPUT);
-    }
-    let labels = Labels::from_program(&program, &|s| sources.location(s.span));
-    let mut consts = Vec::new();
-    for (n, v) in &a.overrides {
-        match crate::control::const_term(v) {
-            Some(t) => consts.push((n.clone(), t)),
-            None => {
-                writeln!(
-                    err,
-                    "*** ERROR: (lucent): '-c {n}={v}': not a constant value"
-                )?;
-                return Ok(super::EXIT_USAGE);
-            }
-        }
-    }
-    let mut config = ControlConfig::default();
-    config.ground.provenance = true;
-    config.ground.consts = consts;
-    let mut ctl = Control::with_sources(config, sources.clone());
-    let grounded = ctl
-        .add_program(program)
-        .and_then(|()| ctl.ground(&[Part::base()]));
-    if let Err(e) = grounded {
-        writeln!(err, "{}", e.message.trim_end())?;
-        writeln!(err, "*** ERROR: (lucent): grounding stopped")?;
-        return Ok(super::EXIT_INPUT);
-    }
-    let mut model = None;
-    ctl.solve(&SolveOptions::default(), |m| {
-        model = Some(m.raw().clone());
-        false
-    });
-    let Some(model) = model else {
-        writeln!(
-            out,
-            "UNSATISFIABLE: the program has no answer set to explain."
-        )?;
-        return Ok(super::EXIT_UNSAT);
-    };
-    let oracle = match ProgramOracle::new(ctl, model, labels) {
+    let oracles = match super::explain_program::oracles(&a.files, &a.overrides, a.models, err)? {
         Ok(o) => o,
-        Err(e) => {
-            writeln!(err, "*** ERROR: (lucent): {e}")?;
-            return Ok(super::EXIT_UNAVAILABLE);
+        Err(code) => return Ok(code),
+    };
+    if oracles.is_empty() {
+        return super::explain_program::say_unsat(a.json, out);
+    }
+    let answers: Vec<Answer> = oracles
+        .iter()
+        .map(|oracle| {
+            crate::explain::query::explain(oracle, &query, negative).unwrap_or_else(|e| Answer {
+                kind: if negative { "why_not" } else { "why" },
+                text: format!("The explanation failed its own check ({e}); it is not given."),
+                literals: Vec::new(),
+                tree: None,
+            })
+        })
+        .collect();
+    if answers.len() > 1 {
+        let all = super::explain_program::per_model(&answers);
+        if a.json {
+            writeln!(out, "{}", all.1)?;
+        } else {
+            writeln!(out, "{}", all.0.text)?;
         }
-    };
-    let result = if negative {
-        generic::why_not(&oracle, &atom)
-    } else {
-        generic::why(&oracle, &atom)
-    };
-    let answer = match result {
-        Ok(x) => x,
-        Err(e) => Answer {
-            kind: if negative { "why_not" } else { "why" },
-            text: format!("The explanation failed its own check ({e}); it is not given."),
-            literals: Vec::new(),
-            tree: None,
-        },
-    };
+        write_pictures(&all.0, a, err)?;
+        return Ok(0);
+    }
     let reply = Reply {
-        answer,
+        answer: answers
+            .into_iter()
+            .next()
+            .expect("one answer per answer set"),
         understood: true,
     };
     emit(&reply, None, a, out, err)?;

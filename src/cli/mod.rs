@@ -16,6 +16,7 @@ pub(crate) mod classify;
 pub(crate) mod demo;
 pub(crate) mod experiment;
 pub(crate) mod explain;
+mod explain_program;
 pub(crate) mod learn;
 pub(crate) mod input;
 pub(crate) mod options;

@@ -25,9 +25,13 @@
 //! - `unfired`: why not at the source level (the rules that could derive an atom and what
 //!   blocks them; what would break if an unchosen atom were true);
 //! - `generic`: why and why-not of an atom of any program's answer set, as text;
+//! - `query`: non-ground queries (`reach(1,X)`): each matching atom explained by `generic`;
+//! - [`unsat`]: why a program has no answer set: a minimal unsatisfiable subset of its facts
+//!   and constraints, from the solver's cores shrunk by deletion;
 //! - `scene` (feature `sim`): why the robot believes an object of a looked-at scene is
 //!   (un)stable or (not) occluded, over the classification-mode answer set of `vision::reason`;
 //! - [`draw`]: proof trees as DOT text and as SVG drawn here;
+//! - [`draw_graph`]: a program's proof as SVG, each literal once with its rule, rows wrapped;
 //! - [`h3`]: the H3 experiment's pieces: generated scenes (docs/domain.md 1.6, 7.1), the three
 //!   checks of a proof tree (docs/domain.md 7.5) and one trial over a history.
 //!
@@ -47,9 +51,12 @@ pub mod history;
 mod source;
 mod unfired;
 pub(crate) mod generic;
+pub mod unsat;
+pub(crate) mod query;
 mod support;
 #[cfg(feature = "sim")]
 pub mod scene;
 pub mod counterfactual;
 pub mod draw;
+pub mod draw_graph;
 pub mod h3;

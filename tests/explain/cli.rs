@@ -647,3 +647,251 @@ fn histories_the_explainer_forbids_are_explained_with_their_surprise() {
         assert_eq!(belief, "That is a fact stored in my knowledge base.");
     }
 }
+
+/// Runs clingo 5.4's CLI on `text` and says whether it is satisfiable; fails (never skips)
+/// without clingo.
+fn clingo_satisfiable(text: &str) -> bool {
+    use std::io::Write as _;
+    let mut child = std::process::Command::new("clingo")
+        .args(["-q", "-"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("clingo is needed: apt-get install -y gringo clasp clingo, or pip install clingo");
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(text.as_bytes())
+        .unwrap();
+    let out = child.wait_with_output().unwrap();
+    let s = String::from_utf8_lossy(&out.stdout);
+    assert!(s.contains("SATISFIABLE"), "clingo: {s}");
+    !s.contains("UNSATISFIABLE")
+}
+
+/// `--why-unsat --assume edge/2` on the 3-colouring with a planted 4-clique: the minimal set is
+/// the clique's six edges and the colouring constraint. Derived by hand and checked with clingo
+/// here: the program is unsatisfiable (`clingo -q tests/data/explain/clique.lp`), with only
+/// these edges still unsatisfiable, and without any one of them (the other edges kept)
+/// satisfiable, so every unsatisfiable subset of the edges contains all six.
+#[test]
+fn why_unsat_names_the_planted_clique() {
+    let file = "tests/data/explain/clique.lp";
+    let (code, out, err) = run(&["explain", file, "--why-unsat", "--assume", "edge/2"]);
+    assert_eq!(code, 20, "{err}");
+    insta::assert_snapshot!("why_unsat_clique", out);
+    let (code, out, err) = run(&[
+        "explain",
+        file,
+        "--why-unsat",
+        "--assume",
+        "edge/2",
+        "--outf=2",
+    ]);
+    assert_eq!(code, 20, "{err}");
+    let mut v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let clique = [
+        "edge(1,2)",
+        "edge(1,3)",
+        "edge(1,4)",
+        "edge(2,3)",
+        "edge(2,4)",
+        "edge(3,4)",
+    ];
+    assert_eq!(v["type"], "why_unsat");
+    assert_eq!(v["literals"], serde_json::json!(clique));
+    // 18 edges and the one constraint.
+    assert_eq!(v["stats"]["candidates"], 19, "{v}");
+    // The solver's statistics are for people; the rest is the answer.
+    v.as_object_mut().unwrap().remove("stats");
+    insta::assert_snapshot!(
+        "why_unsat_clique_json",
+        serde_json::to_string_pretty(&v).unwrap()
+    );
+    // Re-checked with clingo: the clique's edges alone clash, and each one is needed.
+    let text = std::fs::read_to_string(file).unwrap();
+    let without_edges: String = text
+        .lines()
+        .filter(|l| !l.starts_with("edge("))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let with = |edges: &[&str]| {
+        let mut t = without_edges.clone();
+        for e in edges {
+            t.push_str(&format!("{e}.\n"));
+        }
+        t
+    };
+    assert!(!clingo_satisfiable(&with(&clique)));
+    let all: Vec<String> = text
+        .split(|c: char| c.is_whitespace())
+        .filter(|w| w.starts_with("edge(") && w.ends_with(")."))
+        .map(|w| w.trim_end_matches('.').to_string())
+        .collect();
+    assert_eq!(all.len(), 18);
+    for e in clique {
+        let rest: Vec<&str> = all.iter().map(String::as_str).filter(|x| *x != e).collect();
+        assert!(clingo_satisfiable(&with(&rest)), "without {e}");
+    }
+}
+
+/// Every fact a candidate (no `--assume`), on a program of our own: `:- p(X), q(X).` fails only
+/// at X = 2 (by hand), and the other constraint never fires, so the set is p(2), q(2) and that
+/// constraint; `--assume-choices` adds nothing here (no choice rule is needed).
+#[test]
+fn why_unsat_over_all_facts_and_choices() {
+    let dir = std::env::temp_dir().join(format!("lucent-unsat-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("clash.lp");
+    std::fs::write(
+        &file,
+        "p(1..3). q(2;4). r(5).\n{ s(1..3) }.\n:- p(X), q(X).\n:- r(6).\n",
+    )
+    .unwrap();
+    let f = file.to_str().unwrap();
+    let (code, out, err) = run(&["explain", f, "--why-unsat", "--assume-choices"]);
+    assert_eq!(code, 20, "{err}");
+    let out = out.replace(f, "clash.lp");
+    insta::assert_snapshot!("why_unsat_all_facts", out);
+    let (code, out, _) = run(&["explain", f, "--why-unsat", "--assume", "Edge"]);
+    assert_eq!(code, 65, "{out}");
+    let _ = std::fs::remove_dir_all(&dir);
+    // A satisfiable program has nothing to explain.
+    let (code, out, err) = run(&["explain", "tests/data/explain/reach.lp", "--why-unsat"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("SATISFIABLE"), "{out}");
+}
+
+/// `--why` on a program without answer sets says so and points to `--why-unsat`, in text and
+/// JSON.
+#[test]
+fn why_on_an_unsatisfiable_program_points_to_why_unsat() {
+    let file = "tests/data/explain/clique.lp";
+    let (code, out, _) = run(&["explain", file, "--why", "color(1,red)"]);
+    assert_eq!(code, 20);
+    assert!(out.contains("--why-unsat"), "{out}");
+    let (code, out, _) = run(&["explain", file, "--why-not", "color(1,red)", "--outf=2"]);
+    assert_eq!(code, 20);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["type"], "unsatisfiable");
+    assert_eq!(v["see"], "--why-unsat");
+}
+
+/// A non-ground query explains each matching atom. By hand over reach.lp: reach(a), reach(b)
+/// and reach(c) hold (d is behind the blocked edge, x and y are not reached from the start),
+/// so `reach(X)` gives three proofs; `--why-not 'reach(X)'` explains the false atoms the ground
+/// program has: reach(d) (its rule blocked) and reach(x) (read by `unreached(x) :- edge(x,y),
+/// not reach(x).`, no rule for it); reach(y) occurs in no ground rule, as nothing reaches x.
+#[test]
+fn non_ground_queries_explain_each_matching_atom() {
+    let file = "tests/data/explain/reach.lp";
+    let (code, out, err) = run(&["explain", file, "--why", "reach(X)"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("3 atoms match reach(X)"), "{out}");
+    assert!(!out.contains("failed its own check"), "{out}");
+    insta::assert_snapshot!("why_reach_x", out);
+    let (code, out, err) = run(&["explain", file, "--why-not", "reach(X)", "--outf=2"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let answer = v["answer"].as_str().unwrap();
+    assert!(!answer.contains("failed its own check"), "{answer}");
+    assert!(answer.starts_with("2 atoms match reach(X)"), "{answer}");
+    for atom in ["reach(d) does not hold", "reach(x) does not hold"] {
+        assert!(answer.contains(atom), "{answer}");
+    }
+    let (code, out, _) = run(&["explain", file, "--why", "reach(zebra,X)"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("No atom of the answer set matches"), "{out}");
+    let (code, _, _) = run(&["explain", file, "--why", "Reach(X)"]);
+    assert_eq!(code, 65);
+}
+
+/// `--models 0` explains p in each answer set: by hand, `1 { a; b } 1.` gives one answer set
+/// with a and one with b (`clingo -n0 tests/data/explain/two_ways.lp`), and p holds in each by
+/// its own rule.
+#[test]
+fn models_explain_each_answer_set() {
+    let file = "tests/data/explain/two_ways.lp";
+    let (code, out, err) = run(&["explain", file, "--why", "p", "--models", "0"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("Answer 1:") && out.contains("Answer 2:"),
+        "{out}"
+    );
+    assert!(
+        out.contains("`p :- a.`") && out.contains("`p :- b.`"),
+        "{out}"
+    );
+    insta::assert_snapshot!("why_p_two_models", out);
+    let (code, out, err) = run(&["explain", file, "--why", "q(X)", "-n", "2", "--outf=2"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["answers"].as_array().unwrap().len(), 2, "{v}");
+    for a in v["answers"].as_array().unwrap() {
+        assert!(
+            a["answer"]
+                .as_str()
+                .unwrap()
+                .starts_with("2 atoms match q(X)"),
+            "{a}"
+        );
+        assert!(a["tree"].is_object(), "{a}");
+    }
+}
+
+/// The picture of a 50-literal proof draws each literal once, with its rule, in boxes that do
+/// not overlap, and rows no wider than the wrap width.
+#[test]
+fn a_fifty_node_proof_is_drawn_once_per_literal() {
+    let dir = std::env::temp_dir().join(format!("lucent-svg50-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("far.svg");
+    let (code, out, err) = run(&[
+        "explain",
+        "tests/data/explain/chain.lp",
+        "--why",
+        "far(25)",
+        "--svg",
+        svg.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!out.contains("failed its own check"), "{out}");
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    let bold: Vec<&str> = text
+        .lines()
+        .filter(|l| l.contains("font-weight=\"bold\""))
+        .filter_map(|l| l.split('>').nth(1)?.split('<').next())
+        .collect();
+    assert!(bold.len() >= 48, "{} literals drawn", bold.len());
+    let mut unique = bold.clone();
+    unique.sort();
+    unique.dedup();
+    assert_eq!(unique.len(), bold.len(), "a literal is drawn twice");
+    assert!(
+        text.contains("reach(25) :- reach(24), edge(24,25)."),
+        "rule text missing"
+    );
+    let num = |l: &str, k: &str| -> f64 {
+        let at = l.find(&format!(" {k}=\"")).unwrap() + k.len() + 3;
+        l[at..].split('"').next().unwrap().parse().unwrap()
+    };
+    let rects: Vec<(f64, f64, f64, f64)> = text
+        .lines()
+        .filter(|l| l.starts_with("<g><rect"))
+        .map(|l| (num(l, "x"), num(l, "y"), num(l, "width"), num(l, "height")))
+        .collect();
+    assert_eq!(rects.len(), bold.len());
+    for (i, a) in rects.iter().enumerate() {
+        assert!(
+            a.0 + a.2 <= lucent::explain::draw_graph::MAX_ROW_WIDTH + 1.0,
+            "{a:?}"
+        );
+        for b in &rects[i + 1..] {
+            let apart =
+                a.0 + a.2 <= b.0 || b.0 + b.2 <= a.0 || a.1 + a.3 <= b.1 || b.1 + b.3 <= a.1;
+            assert!(apart, "{a:?} and {b:?} overlap");
+        }
+    }
+}
