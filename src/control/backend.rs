@@ -12,7 +12,7 @@
 //! let c = b.add_atom(Some(&Symbol::constant("c")));
 //! b.add_rule(&[a], &[], true).unwrap(); // {a}.
 //! b.add_rule(&[c], &[a as i32], false).unwrap(); // c :- a.
-//! let mut n = ctl.solve_all(&Default::default()).models.len();
+//! let n = ctl.solve_all(&Default::default()).models.len();
 //! assert_eq!(n, 2);
 //! ```
 //!
