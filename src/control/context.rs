@@ -72,7 +72,7 @@ impl Control {
         }
     }
 
-    fn new_atom(&mut self, sym: Option<SymId>) -> AtomId {
+    pub(super) fn new_atom(&mut self, sym: Option<SymId>) -> AtomId {
         self.atom_sym.push(sym);
         self.flags.push(0);
         let a = self.atom_sym.len() as AtomId;

@@ -55,6 +55,7 @@
 //!   and warnings collect in [`Control::diagnostics`]. Nothing here prints.
 //! - Reading files happens only in [`Control::load`] and for `#include` (clingo's `load`).
 
+mod backend;
 mod context;
 pub mod incmode;
 mod model;
@@ -76,6 +77,7 @@ use crate::ground::{self, GroundConfig, Grounding};
 use crate::solve::{self, Solver};
 use crate::syntax::ast::{self, Dialect, Program, Statement, StatementKind};
 
+pub use backend::Backend;
 use model::Names;
 pub use model::{Model, OwnedModel};
 pub use symbol::{Name, ParseSymbolError, Symbol};
@@ -542,6 +544,16 @@ impl Control {
             .get_or_insert_with(Default::default)
             .clone();
         Interrupter(flag)
+    }
+
+    /// True when the program has a minimize statement (grounded or added from code, solved or
+    /// not): clingo then enumerates until the optimum unless a model count was given.
+    pub fn has_minimize(&self) -> bool {
+        !self.pending.minimize.is_empty()
+            || self
+                .solver
+                .as_ref()
+                .is_some_and(|s| !s.program().minimize.is_empty())
     }
 
     /// Number of atoms so far.

@@ -355,7 +355,7 @@ impl Control {
 
     /// Grounds the statements of `blocks` with `binding` as constants, against the atoms of
     /// earlier groundings, and merges the result.
-    fn ground_blocks(
+    pub(super) fn ground_blocks(
         &mut self,
         blocks: &[usize],
         binding: &[(String, Symbol)],

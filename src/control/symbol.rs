@@ -342,7 +342,6 @@ impl Symbol {
     }
 
     /// The id of this symbol in `syms`, created when missing.
-    #[cfg(test)]
     pub(crate) fn intern_in(&self, syms: &mut Symbols) -> SymId {
         match self {
             Symbol::Inf => syms.inf(),

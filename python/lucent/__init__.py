@@ -1,0 +1,435 @@
+"""Lucent from Python, on the model of clingo's Python API (issue 33 item 2).
+
+A typical clingo script runs with ``import lucent as clingo``::
+
+    import lucent as clingo
+    ctl = clingo.Control(["0"])
+    ctl.add("base", [], "{a; b}.")
+    ctl.ground([("base", [])])
+    ctl.solve(on_model=print)
+
+The native module ``lucent._lucent`` (Rust, PyO3) holds ``Symbol``, ``Model`` and the
+Control's calls; this module shapes them as clingo's classes (``Control``, ``SolveResult``,
+``SolveHandle``, ``SymbolicAtoms``, ``Backend``, ``configuration``, ``statistics``) and adds
+the robot's verbs ``plan`` and ``explain``, which return Python values.
+
+Differences from clingo, by design or not yet done (docs/reference.md, "Python"):
+``yield_``/``async_`` handles hold the call's models once it is finished (the search runs
+when ``solve`` is called, not while iterating); propagators, theory atoms, ``on_unsat`` and
+context functions are not supported; atoms added through the backend are not seen by later
+groundings.
+"""
+
+import enum as _enum
+import json as _json
+
+from . import _lucent
+from ._lucent import (  # noqa: F401 (re-exported: clingo's names)
+    Function,
+    Infimum,
+    Model,
+    Number,
+    String,
+    Supremum,
+    Symbol,
+    SymbolType,
+    Tuple_,
+    parse_term,
+)
+
+__version__ = "5.8.0"
+"""The clingo Python API version this module follows."""
+
+
+class TruthValue(_enum.Enum):
+    """clingo's ``TruthValue`` for externals."""
+
+    True_ = True
+    False_ = False
+    Free = None
+    Release = "release"
+
+
+class SolveResult:
+    """clingo's ``SolveResult``."""
+
+    __slots__ = ("satisfiable", "unsatisfiable", "exhausted", "interrupted")
+
+    def __init__(self, sat, unsat, exhausted, interrupted):
+        self.satisfiable = True if sat else (False if unsat else None)
+        self.unsatisfiable = True if unsat else (False if sat else None)
+        self.exhausted = exhausted
+        self.interrupted = interrupted
+
+    @property
+    def unknown(self):
+        return self.satisfiable is None
+
+    def __str__(self):
+        if self.satisfiable:
+            return "SAT"
+        if self.unsatisfiable:
+            return "UNSAT"
+        return "UNKNOWN"
+
+    __repr__ = __str__
+
+
+class SolveHandle:
+    """clingo's ``SolveHandle``: a context manager and an iterator over the call's models."""
+
+    def __init__(self, result, models):
+        self._result = result
+        self._models = models
+        self._next = 0
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+    def __iter__(self):
+        return self
+
+    def __next__(self):
+        model = self.model()
+        if model is None:
+            raise StopIteration
+        self._next += 1
+        return model
+
+    def resume(self):
+        """Moves on to the next model (``model()`` then returns it)."""
+        self._next += 1
+
+    def model(self):
+        """The current model, or ``None`` when there is none left."""
+        if self._next < len(self._models):
+            return self._models[self._next]
+        return None
+
+    def get(self):
+        """The call's ``SolveResult``."""
+        return self._result
+
+    def wait(self, timeout=None):
+        """True: the call is finished."""
+        return True
+
+    def cancel(self):
+        """Stops iterating."""
+        self._next = len(self._models)
+
+
+class SymbolicAtom:
+    """clingo's ``SymbolicAtom``."""
+
+    __slots__ = ("symbol", "literal", "is_fact", "is_external")
+
+    def __init__(self, symbol, literal, is_fact, is_external):
+        self.symbol = symbol
+        self.literal = literal
+        self.is_fact = is_fact
+        self.is_external = is_external
+
+    def match(self, name, arity, positive=True):
+        return self.symbol.match(name, arity, positive)
+
+
+class SymbolicAtoms:
+    """clingo's ``SymbolicAtoms``: iteration, lookup by symbol, ``by_signature``."""
+
+    def __init__(self, native):
+        self._c = native
+
+    def _all(self):
+        return [SymbolicAtom(*t) for t in self._c.symbolic_atoms()]
+
+    def __iter__(self):
+        return iter(self._all())
+
+    def __len__(self):
+        return len(self._c.symbolic_atoms())
+
+    def __getitem__(self, symbol):
+        found = self._c.symbolic_atom(symbol)
+        if found is None:
+            return None
+        return SymbolicAtom(symbol, *found)
+
+    def __contains__(self, symbol):
+        return self._c.symbolic_atom(symbol) is not None
+
+    def by_signature(self, name, arity, positive=True):
+        return iter([a for a in self._all() if a.symbol.match(name, arity, positive)])
+
+    @property
+    def signatures(self):
+        seen = []
+        for a in self._all():
+            s = a.symbol
+            if s.type == SymbolType.Function:
+                sig = (s.name, len(s.arguments), s.positive)
+                if sig not in seen:
+                    seen.append(sig)
+        return seen
+
+
+class _SolveConfiguration:
+    """``configuration.solve``: ``models`` and ``opt_mode``, string-valued as clingo's."""
+
+    def __init__(self, native):
+        object.__setattr__(self, "_c", native)
+        object.__setattr__(self, "_opt_mode", "opt")
+
+    @property
+    def models(self):
+        n = self._c.models
+        return "-1" if n is None else str(n)
+
+    @property
+    def opt_mode(self):
+        return self._opt_mode
+
+    def __setattr__(self, key, value):
+        if key == "models":
+            n = int(value)
+            self._c.models = None if n < 0 else n
+        elif key == "opt_mode":
+            self._c.set_opt_mode(str(value))
+            object.__setattr__(self, "_opt_mode", str(value))
+        else:
+            raise RuntimeError(f"lucent: configuration option solve.{key} is not supported")
+
+
+class Configuration:
+    """``Control.configuration`` (the ``solve`` group)."""
+
+    def __init__(self, native):
+        self.solve = _SolveConfiguration(native)
+
+
+class Backend:
+    """clingo's ``Backend``: ground statements added from code (a context manager)."""
+
+    def __init__(self, native):
+        self._c = native
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+    def close(self):
+        pass
+
+    def add_atom(self, symbol=None):
+        return self._c.backend_add_atom(symbol)
+
+    def add_rule(self, head, body=(), choice=False):
+        self._c.backend_add_rule(list(head), list(body), choice)
+
+    def add_weight_rule(self, head, lower, body, choice=False):
+        self._c.backend_add_weight_rule(list(head), lower, [tuple(x) for x in body], choice)
+
+    def add_minimize(self, priority, literals):
+        self._c.backend_add_minimize(priority, [tuple(x) for x in literals])
+
+    def add_external(self, atom, value=TruthValue.False_):
+        if value == TruthValue.Release:
+            self._c.release_external(atom)
+        else:
+            self._c.backend_add_external(atom, _truth(value))
+
+    def add_assume(self, literals):
+        self._c.backend_add_assume(list(literals))
+
+
+def _truth(value):
+    if isinstance(value, TruthValue):
+        return value.value
+    return value
+
+
+def _parse_arguments(arguments):
+    """Reads clingo's command line: ``-n N``/``N``, ``--opt-mode``, ``-c name=value``."""
+    models, opt_mode, consts = None, None, []
+    args = list(arguments)
+    i = 0
+
+    def value(flag):
+        nonlocal i
+        if i + 1 >= len(args):
+            raise RuntimeError(f"lucent: option {flag} needs a value")
+        i += 1
+        return args[i]
+
+    while i < len(args):
+        a = args[i]
+        if a.isdigit():
+            models = int(a)
+        elif a in ("-n", "--models"):
+            models = int(value(a))
+        elif a.startswith("--models="):
+            models = int(a.split("=", 1)[1])
+        elif a.startswith("-n"):
+            models = int(a[2:])
+        elif a == "--opt-mode":
+            opt_mode = value(a)
+        elif a.startswith("--opt-mode="):
+            opt_mode = a.split("=", 1)[1]
+        elif a in ("-c", "--const"):
+            consts.append(tuple(value(a).split("=", 1)))
+        elif a.startswith("--const="):
+            consts.append(tuple(a.split("=", 1)[1].split("=", 1)))
+        elif a.startswith("-c"):
+            consts.append(tuple(a[2:].split("=", 1)))
+        elif a.startswith("--warn") or a.startswith("-W"):
+            if a in ("--warn", "-W"):
+                value(a)
+        else:
+            raise RuntimeError(f"lucent: unknown option: {a}")
+        i += 1
+    for c in consts:
+        if len(c) != 2:
+            raise RuntimeError(f"lucent: -c needs name=value, got {'='.join(c)}")
+    return models, opt_mode, consts
+
+
+class Control:
+    """clingo's ``Control``: add, load, ground, solve, externals, symbolic atoms, backend."""
+
+    def __init__(self, arguments=(), logger=None, message_limit=20):
+        models, opt_mode, consts = _parse_arguments(arguments)
+        self._c = _lucent.Control(models, opt_mode, consts)
+        self.configuration = Configuration(self._c)
+        if opt_mode is not None:
+            object.__setattr__(self.configuration.solve, "_opt_mode", opt_mode)
+
+    def add(self, name, parameters=None, program=None):
+        """``add(name, parameters, program)`` or clingo 5.8's ``add(program)`` (to ``base``)."""
+        if parameters is None and program is None:
+            name, parameters, program = "base", [], name
+        self._c.add(name, list(parameters), program)
+
+    def load(self, path):
+        self._c.load(str(path))
+
+    def ground(self, parts=(("base", ()),), context=None):
+        if context is not None:
+            raise RuntimeError("lucent: context functions (@f terms) are not supported")
+        self._c.ground([(n, list(a)) for n, a in parts])
+
+    def solve(
+        self,
+        assumptions=(),
+        on_model=None,
+        on_unsat=None,
+        on_statistics=None,
+        on_finish=None,
+        on_core=None,
+        on_last=None,
+        yield_=False,
+        async_=False,
+    ):
+        handle = yield_ or async_
+        sat, unsat, exhausted, interrupted, models = self._c.solve(
+            list(assumptions), on_model, handle
+        )
+        result = SolveResult(sat, unsat, exhausted, interrupted)
+        if on_last is not None and models:
+            on_last(models[-1])
+        if on_finish is not None:
+            on_finish(result)
+        if handle:
+            return SolveHandle(result, models if yield_ else [])
+        return result
+
+    def assign_external(self, external, truth):
+        if truth == TruthValue.Release:
+            self._c.release_external(external)
+        else:
+            self._c.assign_external(external, _truth(truth))
+
+    def release_external(self, external):
+        self._c.release_external(external)
+
+    @property
+    def symbolic_atoms(self):
+        return SymbolicAtoms(self._c)
+
+    @property
+    def statistics(self):
+        return self._c.statistics()
+
+    def backend(self):
+        return Backend(self._c)
+
+    def cleanup(self):
+        pass
+
+    def interrupt(self):
+        pass
+
+
+def _cli(args):
+    code, out, err = _lucent.run_cli([str(a) for a in args])
+    return code, out, err
+
+
+def plan(
+    problem,
+    *,
+    scene=None,
+    goal=None,
+    all=False,
+    max_horizon=None,
+    fixed=None,
+    check=False,
+    profile=None,
+    consts=None,
+):
+    """The planner (``lucent plan``) on an AL_d problem file: a dict with ``plans`` (lists of
+    actions as strings), ``length``, ``cr_applied``, ``minimal_plans`` ... as ``lucent plan
+    --outf=2`` prints it; ``None`` when there is no plan within the horizon budget. Bad input
+    raises ``RuntimeError`` with the diagnostics."""
+    args = ["plan", problem, "--outf=2"]
+    for flag, v in (("--scene", scene), ("--goal", goal), ("--max-horizon", max_horizon),
+                    ("--fixed", fixed), ("--profile", profile)):
+        if v is not None:
+            args += [flag, v]
+    if all:
+        args.append("--all")
+    if check:
+        args.append("--check")
+    for name, v in (consts or {}).items():
+        args += ["-c", f"{name}={v}"]
+    code, out, err = _cli(args)
+    if code == 20:
+        return None
+    if code != 0:
+        raise RuntimeError(err.strip())
+    return _json.loads(out)
+
+
+def explain(*files, question=None, happened=None, goal=None, why=None, why_not=None,
+            max_horizon=None, profile=None, consts=None):
+    """An explanation (``lucent explain``): a question about a history of AL_d scene files
+    (``question``, with ``happened``/``goal``), or ``why``/``why_not`` an atom of a clingo
+    program's first answer set. Returns the dict ``lucent explain --outf=2`` prints
+    (``type``, ``answer``, ``literals``, ``tree``); bad input or a question not understood
+    raises ``RuntimeError``."""
+    args = ["explain", *files, "--outf=2"]
+    for flag, v in (("-q", question), ("--happened", happened), ("--goal", goal),
+                    ("--why", why), ("--why-not", why_not), ("--max-horizon", max_horizon),
+                    ("--profile", profile)):
+        if v is not None:
+            args += [flag, v]
+    for name, v in (consts or {}).items():
+        args += ["-c", f"{name}={v}"]
+    code, out, err = _cli(args)
+    if code != 0 or not out.strip():
+        raise RuntimeError((err or out).strip())
+    return _json.loads(out.strip().splitlines()[-1])

@@ -1,0 +1,341 @@
+//! `lucent._lucent.Control`: the native half of the Python `Control` (python/lucent/
+//! __init__.py holds the clingo-shaped layer: argument parsing, solve handles, symbolic atoms,
+//! configuration, the backend's context manager). Each method is one call of
+//! `lucent::control::Control`.
+//!
+//! Invariants: bad input is a Python `RuntimeError` carrying gringo's diagnostics, never a
+//! panic; an exception raised by `on_model` stops the search and is raised again by `solve`;
+//! without an explicit model count a program with `#minimize` enumerates until the optimum
+//! (clingo's default `-n 0` for optimization), any other one model.
+
+use lucent::control::{Part, SolveOptions, TruthValue};
+use lucent::solve::{OptMode, Outcome, Stats, StopReason};
+use pyo3::exceptions::{PyRuntimeError, PyTypeError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+
+use crate::model::Model;
+use crate::symbol::{to_symbol, Symbol};
+
+fn error(e: impl std::fmt::Display) -> PyErr {
+    PyRuntimeError::new_err(e.to_string())
+}
+
+/// The native Control (see the module documentation).
+#[pyclass(unsendable, module = "lucent._lucent")]
+pub struct Control {
+    ctl: lucent::Control,
+    /// The model count given (`-n`, `configuration.solve.models`); `None`: clingo's default.
+    models: Option<usize>,
+    /// The last call's statistics, model count and last costs.
+    last: Option<(Stats, usize, Vec<i64>, bool)>,
+}
+
+/// The outcome of one solve call: satisfiable, unsatisfiable, exhausted, interrupted, models
+/// (when collected).
+type SolveOut = (bool, bool, bool, bool, Option<Vec<Py<Model>>>);
+
+#[pymethods]
+impl Control {
+    /// A Control: `models` (`None`: clingo's default), `opt_mode` (clasp's `--opt-mode`),
+    /// `consts` (`-c name=value`).
+    #[new]
+    #[pyo3(signature = (models = None, opt_mode = None, consts = Vec::new()))]
+    fn new(
+        models: Option<usize>,
+        opt_mode: Option<&str>,
+        consts: Vec<(String, String)>,
+    ) -> PyResult<Control> {
+        let mut config = lucent::ControlConfig::default();
+        if let Some(mode) = opt_mode {
+            config.solve.opt_mode = OptMode::from_name(mode)
+                .ok_or_else(|| error(format!("invalid value for option --opt-mode: {mode}")))?;
+        }
+        for (name, value) in consts {
+            let term = lucent::control::const_term(&value)
+                .ok_or_else(|| error(format!("invalid value for option -c: {name}={value}")))?;
+            config.ground.consts.push((name, term));
+        }
+        // The robot layers read supports; a Python caller cannot.
+        config.solve.supports = false;
+        Ok(Control {
+            ctl: lucent::Control::new(config),
+            models,
+            last: None,
+        })
+    }
+
+    /// `Control.add(name, params, program)`.
+    fn add(&mut self, name: &str, params: Vec<String>, program: &str) -> PyResult<()> {
+        let params: Vec<&str> = params.iter().map(String::as_str).collect();
+        self.ctl.add(name, &params, program).map_err(error)
+    }
+
+    /// `Control.load(path)`.
+    fn load(&mut self, path: &str) -> PyResult<()> {
+        self.ctl.load(path).map_err(error)
+    }
+
+    /// `Control.ground(parts)`.
+    fn ground(&mut self, parts: Vec<(String, Vec<Symbol>)>) -> PyResult<()> {
+        let parts: Vec<Part> = parts
+            .into_iter()
+            .map(|(n, a)| Part::new(n, a.into_iter().map(|s| s.0).collect()))
+            .collect();
+        self.ctl.ground(&parts).map_err(error)
+    }
+
+    /// Solves under `assumptions` (`(Symbol, bool)` pairs or literals), calling `on_model` on
+    /// each model (a `False` result stops) and, with `collect`, returning the models.
+    #[pyo3(signature = (assumptions, on_model = None, collect = false))]
+    fn solve(
+        &mut self,
+        py: Python<'_>,
+        assumptions: Vec<Bound<'_, PyAny>>,
+        on_model: Option<PyObject>,
+        collect: bool,
+    ) -> PyResult<SolveOut> {
+        let mut options = SolveOptions::default();
+        for a in &assumptions {
+            options.assumptions.push(self.assumption(a)?);
+        }
+        let models = match self.models {
+            Some(n) => n,
+            None if self.ctl.has_minimize() => 0,
+            None => 1,
+        };
+        self.ctl.solve_config_mut().models = models;
+        let mut failure: Option<PyErr> = None;
+        let mut kept: Vec<Py<Model>> = Vec::new();
+        let mut costs = Vec::new();
+        let mut optimal = false;
+        let summary = self.ctl.solve(&options, |m| {
+            costs = m.costs().to_vec();
+            optimal = m.optimal();
+            if on_model.is_none() && !collect {
+                return true;
+            }
+            let model = match Py::new(py, Model::new(m)) {
+                Ok(model) => model,
+                Err(e) => {
+                    failure = Some(e);
+                    return false;
+                }
+            };
+            if let Some(f) = &on_model {
+                match f.call1(py, (model.clone_ref(py),)) {
+                    Ok(r) => {
+                        if r.bind(py)
+                            .downcast::<pyo3::types::PyBool>()
+                            .is_ok_and(|b| !b.is_true())
+                        {
+                            if collect {
+                                kept.push(model);
+                            }
+                            return false;
+                        }
+                    }
+                    Err(e) => {
+                        failure = Some(e);
+                        return false;
+                    }
+                }
+            }
+            if collect {
+                kept.push(model);
+            }
+            true
+        });
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        let optimal = optimal || summary.optimum_proven;
+        let sat = summary.is_satisfiable();
+        let unsat = summary.is_unsatisfiable();
+        let interrupted = summary.stop == Some(StopReason::Interrupted);
+        let exhausted = summary.exhausted;
+        self.last = Some((summary.stats, summary.models, costs, optimal));
+        let unknown = summary.outcome == Outcome::Unknown;
+        Ok((
+            sat && !unknown,
+            unsat,
+            exhausted,
+            interrupted,
+            collect.then_some(kept),
+        ))
+    }
+
+    /// `Control.assign_external(atom, value)`: `value` true, false or `None` (free).
+    #[pyo3(signature = (atom, value))]
+    fn assign_external(&mut self, atom: &Bound<'_, PyAny>, value: Option<bool>) -> PyResult<()> {
+        let (symbol, positive) = self.target(atom)?;
+        let value = match value {
+            None => TruthValue::Free,
+            Some(v) if v == positive => TruthValue::True,
+            Some(_) => TruthValue::False,
+        };
+        self.ctl.assign_external(&symbol, value);
+        Ok(())
+    }
+
+    /// `Control.release_external(atom)`.
+    fn release_external(&mut self, atom: &Bound<'_, PyAny>) -> PyResult<()> {
+        let (symbol, _) = self.target(atom)?;
+        self.ctl.release_external(&symbol);
+        Ok(())
+    }
+
+    /// Every symbolic atom: `(symbol, literal, is_fact, is_external)`.
+    fn symbolic_atoms(&self) -> Vec<(Symbol, u32, bool, bool)> {
+        self.ctl
+            .symbolic_atoms()
+            .map(|a| (Symbol(a.symbol), a.atom, a.fact, a.external))
+            .collect()
+    }
+
+    /// The atom of `symbol`: `(literal, is_fact, is_external)`, or `None`.
+    fn symbolic_atom(&self, symbol: &Symbol) -> Option<(u32, bool, bool)> {
+        let atom = self.ctl.lookup(&symbol.0)?;
+        self.ctl
+            .symbolic_atoms()
+            .find(|a| a.atom == atom)
+            .map(|a| (a.atom, a.fact, a.external))
+    }
+
+    /// The model count given (`None`: clingo's default).
+    #[getter]
+    fn get_models(&self) -> Option<usize> {
+        self.models
+    }
+
+    #[setter]
+    fn set_models(&mut self, n: Option<usize>) {
+        self.models = n;
+    }
+
+    /// `--opt-mode`.
+    fn set_opt_mode(&mut self, mode: &str) -> PyResult<()> {
+        self.ctl.solve_config_mut().opt_mode = OptMode::from_name(mode)
+            .ok_or_else(|| error(format!("invalid value for option --opt-mode: {mode}")))?;
+        Ok(())
+    }
+
+    /// clingo-shaped statistics: `summary` of the last call, `solving` its search figures,
+    /// `accu` the search figures of every call added up.
+    fn statistics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let out = PyDict::new_bound(py);
+        let summary = PyDict::new_bound(py);
+        let models = PyDict::new_bound(py);
+        let times = PyDict::new_bound(py);
+        let (stats, n, costs, optimal) = self.last.clone().unwrap_or_default();
+        models.set_item("enumerated", n as f64)?;
+        models.set_item(
+            "optimal",
+            if optimal && !costs.is_empty() {
+                1.0
+            } else {
+                0.0
+            },
+        )?;
+        times.set_item("solve", stats.time.as_secs_f64())?;
+        summary.set_item("models", models)?;
+        summary.set_item("times", times)?;
+        summary.set_item("costs", costs.iter().map(|&c| c as f64).collect::<Vec<_>>())?;
+        out.set_item("summary", summary)?;
+        out.set_item("solving", solving(py, &stats)?)?;
+        let accu = PyDict::new_bound(py);
+        accu.set_item("solving", solving(py, &self.ctl.accumulated_stats())?)?;
+        out.set_item("accu", accu)?;
+        Ok(out)
+    }
+
+    /// `Backend.add_atom(symbol=None)`.
+    #[pyo3(signature = (symbol = None))]
+    fn backend_add_atom(&mut self, symbol: Option<Symbol>) -> PyResult<u32> {
+        let mut b = self.ctl.backend().map_err(error)?;
+        Ok(b.add_atom(symbol.as_ref().map(|s| &s.0)))
+    }
+
+    /// `Backend.add_rule(head, body, choice)`.
+    fn backend_add_rule(&mut self, head: Vec<u32>, body: Vec<i32>, choice: bool) -> PyResult<()> {
+        let mut b = self.ctl.backend().map_err(error)?;
+        b.add_rule(&head, &body, choice).map_err(error)
+    }
+
+    /// `Backend.add_weight_rule(head, lower, body, choice)`.
+    fn backend_add_weight_rule(
+        &mut self,
+        head: Vec<u32>,
+        lower: i64,
+        body: Vec<(i32, i64)>,
+        choice: bool,
+    ) -> PyResult<()> {
+        let mut b = self.ctl.backend().map_err(error)?;
+        b.add_weight_rule(&head, lower, &body, choice)
+            .map_err(error)
+    }
+
+    /// `Backend.add_minimize(priority, literals)`.
+    fn backend_add_minimize(&mut self, priority: i64, literals: Vec<(i32, i64)>) -> PyResult<()> {
+        let mut b = self.ctl.backend().map_err(error)?;
+        b.add_minimize(priority, &literals).map_err(error)
+    }
+
+    /// `Backend.add_external(atom, value)`: `value` true, false or `None` (free).
+    #[pyo3(signature = (atom, value))]
+    fn backend_add_external(&mut self, atom: u32, value: Option<bool>) -> PyResult<()> {
+        let value = match value {
+            None => TruthValue::Free,
+            Some(true) => TruthValue::True,
+            Some(false) => TruthValue::False,
+        };
+        let mut b = self.ctl.backend().map_err(error)?;
+        b.add_external(atom, value).map_err(error)
+    }
+
+    /// `Backend.add_assume(literals)`.
+    fn backend_add_assume(&mut self, literals: Vec<i32>) -> PyResult<()> {
+        let mut b = self.ctl.backend().map_err(error)?;
+        b.add_assume(&literals).map_err(error)
+    }
+}
+
+impl Control {
+    /// An assumption: a `(Symbol, bool)` pair or a literal of a symbolic atom.
+    fn assumption(&self, a: &Bound<'_, PyAny>) -> PyResult<(lucent::Symbol, bool)> {
+        if let Ok(t) = a.downcast::<PyTuple>() {
+            if t.len() == 2 {
+                return Ok((to_symbol(&t.get_item(0)?)?, t.get_item(1)?.is_truthy()?));
+            }
+        }
+        self.target(a)
+    }
+
+    /// The atom a Python value names: a `Symbol` (positive) or a literal of a symbolic atom.
+    fn target(&self, a: &Bound<'_, PyAny>) -> PyResult<(lucent::Symbol, bool)> {
+        if let Ok(s) = a.downcast::<Symbol>() {
+            return Ok((s.get().0.clone(), true));
+        }
+        let lit: i64 = a.extract().map_err(|_| {
+            PyTypeError::new_err("expected a Symbol, a literal or a (Symbol, bool) pair")
+        })?;
+        let atom = u32::try_from(lit.unsigned_abs()).unwrap_or(0);
+        match self.ctl.symbol(atom) {
+            Some(s) => Ok((s, lit > 0)),
+            None => Err(error(format!(
+                "literal {lit} names no symbolic atom (lucent assumes and assigns symbolic atoms only)"
+            ))),
+        }
+    }
+}
+
+/// clingo's `solving.solvers` figures of `stats`.
+fn solving<'py>(py: Python<'py>, stats: &Stats) -> PyResult<Bound<'py, PyDict>> {
+    let solvers = PyDict::new_bound(py);
+    solvers.set_item("choices", stats.choices as f64)?;
+    solvers.set_item("conflicts", stats.conflicts as f64)?;
+    solvers.set_item("restarts", stats.restarts as f64)?;
+    let out = PyDict::new_bound(py);
+    out.set_item("solvers", solvers)?;
+    Ok(out)
+}

@@ -1,0 +1,230 @@
+"""clingo Python scripts run under clingo 5.8 and under ``import lucent as clingo``: the same
+answers (models sorted; improving models of an optimization may differ between solvers, so only
+the optimum and the optimal models are compared)."""
+
+import pytest
+from conftest import sorted_models
+
+
+def incremental_with_externals(clingo):
+    """The incmode loop by hand: a counter that must reach 3, one step part per time point,
+    the goal checked under the external query(t)."""
+    ctl = clingo.Control(["0"])
+    ctl.add("base", [], "pos(0, 0).")
+    ctl.add(
+        "step",
+        ["t"],
+        "{ move(t) }. pos(t, P + 1) :- pos(t - 1, P), move(t). "
+        "pos(t, P) :- pos(t - 1, P), not move(t). #external query(t). "
+        ":- query(t), not pos(t, 3).",
+    )
+    ctl.ground([("base", [])])
+    trace = []
+    for t in range(1, 6):
+        ctl.ground([("step", [clingo.Number(t)])])
+        if t > 1:
+            ctl.release_external(clingo.Function("query", [clingo.Number(t - 1)]))
+        ctl.assign_external(clingo.Function("query", [clingo.Number(t)]), True)
+        models = []
+        result = ctl.solve(on_model=lambda m: models.append(m.symbols(shown=True)))
+        trace.append((t, str(result), result.exhausted, sorted_models(models)))
+        if result.satisfiable:
+            break
+    return trace
+
+
+def externals_assigned_free_and_released(clingo):
+    ctl = clingo.Control(["0"])
+    ctl.add("base", [], "#external e(1..3). p(X) :- e(X). q :- not e(2).")
+    ctl.ground([("base", [])])
+    out = []
+
+    def answers():
+        models = []
+        ctl.solve(on_model=lambda m: models.append(m.symbols(atoms=True)))
+        out.append(sorted_models(models))
+
+    answers()
+    ctl.assign_external(clingo.Function("e", [clingo.Number(1)]), True)
+    answers()
+    ctl.assign_external(clingo.Function("e", [clingo.Number(2)]), None)
+    answers()
+    ctl.release_external(clingo.Function("e", [clingo.Number(1)]))
+    answers()
+    return out
+
+
+def backend_built_program(clingo):
+    """{a; b; c(1)}. x :- a. :- not x, c(1). two :- 2 {a; b; c(1)}. #minimize {1: b}. (atom x
+    without a symbol), then the models enumerated with --opt-mode=ignore, and the optimum."""
+    out = []
+    for args in (["0", "--opt-mode=ignore"], []):
+        ctl = clingo.Control(args)
+        ctl.add("base", [], "q.")
+        ctl.ground([("base", [])])
+        with ctl.backend() as b:
+            a = b.add_atom(clingo.Function("a"))
+            bb = b.add_atom(clingo.Function("b"))
+            c = b.add_atom(clingo.Function("c", [clingo.Number(1)]))
+            x = b.add_atom()
+            two = b.add_atom(clingo.Function("two"))
+            b.add_rule([a, bb, c], [], True)
+            b.add_rule([x], [a])
+            b.add_rule([], [-x, c])
+            b.add_weight_rule([two], 2, [(a, 1), (bb, 1), (c, 1)])
+            b.add_minimize(0, [(bb, 1)])
+        models = []
+        ctl.solve(on_model=lambda m: models.append((m.symbols(shown=True), m.cost)))
+        if args:
+            out.append(sorted_models(m for m, _ in models))
+        else:
+            out.append(models[-1][1])
+        atoms = sorted((str(s.symbol), s.is_fact, s.is_external) for s in ctl.symbolic_atoms)
+        out.append(atoms)
+    return out
+
+
+def optimization_with_on_model(clingo):
+    """A small assignment problem with two priority levels: the optimum's cost, whether the
+    search was exhausted, and (with --opt-mode=optN) every optimal model."""
+    program = """
+        task(1..4). worker(a; b; c).
+        cost(a, 1, 3). cost(a, 2, 1). cost(a, 3, 2). cost(a, 4, 4).
+        cost(b, 1, 2). cost(b, 2, 2). cost(b, 3, 1). cost(b, 4, 3).
+        cost(c, 1, 1). cost(c, 2, 3). cost(c, 3, 3). cost(c, 4, 1).
+        1 { do(W, T) : worker(W) } 1 :- task(T).
+        :- worker(W), 3 { do(W, T) }.
+        #minimize { C@1, W, T : do(W, T), cost(W, T, C) }.
+        #minimize { 1@2, W : do(W, _), W = c }.
+        #show do/2.
+    """
+    out = []
+    ctl = clingo.Control()
+    ctl.add("base", [], program)
+    ctl.ground([("base", [])])
+    costs = []
+    result = ctl.solve(on_model=lambda m: costs.append(m.cost))
+    out.append((str(result), result.exhausted, costs[-1]))
+    ctl = clingo.Control(["0", "--opt-mode=optN"])
+    ctl.add("base", [], program)
+    ctl.ground([("base", [])])
+    optimal = []
+
+    def on_model(m):
+        if m.optimality_proven:
+            optimal.append(m.symbols(shown=True))
+
+    ctl.solve(on_model=on_model)
+    out.append(sorted_models(optimal))
+    out.append(ctl.statistics["summary"]["costs"])
+    return out
+
+
+def yield_handle_and_assumptions(clingo):
+    ctl = clingo.Control(["0"])
+    ctl.add("base", [], "{ p(1..3) }. :- p(1), p(2).")
+    ctl.ground([("base", [])])
+    out = []
+    with ctl.solve(yield_=True) as handle:
+        out.append(sorted_models(m.symbols(atoms=True) for m in handle))
+        out.append(str(handle.get()))
+    p = [clingo.Function("p", [clingo.Number(i)]) for i in (1, 2, 3)]
+    models = []
+    r = ctl.solve(assumptions=[(p[0], True), (p[2], False)], on_model=lambda m: models.append(m.symbols(atoms=True)))
+    out.append((str(r), sorted_models(models)))
+    r = ctl.solve(assumptions=[(p[0], True), (p[1], True)])
+    out.append((str(r), r.satisfiable, r.unsatisfiable, r.exhausted))
+    # on_model returning False stops after the first model.
+    seen = []
+    ctl.solve(on_model=lambda m: seen.append(m) and False or False)
+    out.append(len(seen))
+    lit = ctl.symbolic_atoms[p[2]].literal
+    models = []
+    ctl.solve(assumptions=[-lit], on_model=lambda m: models.append(m.symbols(atoms=True)))
+    out.append(sorted_models(models))
+    return out
+
+
+def symbolic_atoms_and_constants(clingo):
+    ctl = clingo.Control(["-c", "n=3", "--models=0"])
+    ctl.add("base", [], "#const n = 1. num(1..n). #external e(X) : num(X). f. {g}.")
+    ctl.ground([("base", [])])
+    atoms = ctl.symbolic_atoms
+    out = [ctl.configuration.solve.models]
+    out.append(sorted(str(a.symbol) for a in atoms.by_signature("num", 1)))
+    out.append(sorted((str(a.symbol), a.is_fact, a.is_external) for a in atoms))
+    out.append(atoms[clingo.Function("zzz")] is None)
+    out.append(clingo.Function("f") in atoms)
+    ctl.configuration.solve.models = 1
+    models = []
+    ctl.solve(on_model=lambda m: models.append(m))
+    out.append((len(models), ctl.configuration.solve.models))
+    return out
+
+
+def symbols(clingo):
+    f = clingo.Function
+    syms = [
+        f("p", [clingo.Number(1), clingo.String('a"b'), clingo.Tuple_([f("x")])]),
+        f("p", [clingo.Number(1)], False),
+        clingo.Number(-3),
+        clingo.String("s"),
+        f("a"),
+        f("b", [], False),
+        clingo.Tuple_([clingo.Number(1), clingo.Number(2)]),
+        clingo.Infimum,
+        clingo.Supremum,
+        clingo.parse_term('q(1,"x",(a,b),-c)'),
+    ]
+    # The negated function -p(1) is left out of the sort: see test_negated_function_order.
+    out = [str(s) for s in sorted(x for x in syms if x is not syms[1])]
+    out.append(len(set(syms + [f("a"), clingo.Number(-3)])))
+    s = syms[0]
+    out.append((s.name, [str(a) for a in s.arguments], s.positive, s.negative))
+    out.append((syms[2].number, syms[3].string, str(syms[1].type), syms[2].type == clingo.SymbolType.Number))
+    out.append((s.match("p", 3), s.match("p", 2), syms[1].match("p", 1, False)))
+    out.append(f("a") < f("b") and clingo.Number(5) < f("a"))
+    return out
+
+
+def test_incremental_with_externals(both):
+    trace = both(incremental_with_externals)
+    assert trace[-1][0] == 3, "the counter reaches 3 at step 3"
+
+
+def test_externals_assigned_free_and_released(both):
+    both(externals_assigned_free_and_released)
+
+
+def test_backend_built_program(both):
+    both(backend_built_program)
+
+
+def test_optimization_with_on_model(both):
+    both(optimization_with_on_model)
+
+
+def test_yield_handle_and_assumptions(both):
+    both(yield_handle_and_assumptions)
+
+
+def test_symbolic_atoms_and_constants(both):
+    both(symbolic_atoms_and_constants)
+
+
+def test_symbols(both):
+    both(symbols)
+
+
+def negated_function_order(clingo):
+    f = clingo.Function
+    syms = [f("p", [clingo.Number(1)], False), clingo.Tuple_([clingo.Number(1)] * 2),
+            f("q", [clingo.Number(1)] * 4), f("a", [], False), f("b")]
+    return [str(s) for s in sorted(syms)]
+
+
+@pytest.mark.xfail(strict=True, reason="known difference: clingo 5.8 orders every negated function "
+                   "after every positive one (sign before arity); lucent::Symbol's order (the crate's "
+                   "one symbol order, ground::symbol::order) compares arity first")
+def test_negated_function_order(both):
+    both(negated_function_order)

@@ -1,0 +1,18 @@
+#!/bin/sh
+# Builds the `lucent` Python package (pyproject.toml, maturin, PyO3) into a fresh virtual
+# environment and runs its tests (python/tests), which compare with clingo 5.8's Python module.
+# Usage: scripts/test_python.sh [VENV_DIR]   (default: target/python-venv)
+# The environment sees the system's site-packages (clingo); pytest and maturin are installed
+# into it with pip when missing.
+set -eu
+cd "$(dirname "$0")/.."
+venv="${1:-${CARGO_TARGET_DIR:-target}/python-venv}"
+python3 -m venv --system-site-packages "$venv"
+"$venv/bin/python" -c 'import clingo' 2>/dev/null || {
+    echo "clingo's Python module is needed: pip install clingo==5.8.*" >&2
+    exit 1
+}
+"$venv/bin/python" -m pip install -q pytest maturin
+"$venv/bin/python" -m pip install -q --force-reinstall --no-deps .
+cd python/tests
+"$venv/bin/python" -m pytest -q
