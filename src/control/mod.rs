@@ -795,6 +795,13 @@ mod tests {
         Symbol::parse(s).unwrap()
     }
 
+    /// A configuration that enumerates every model (the default asks for one, as clingo).
+    fn all_models() -> ControlConfig {
+        let mut c = ControlConfig::default();
+        c.solve.models = 0;
+        c
+    }
+
     fn answers(ctl: &mut Control) -> Vec<String> {
         let mut out: Vec<String> = ctl
             .solve_all(&SolveOptions::default())
@@ -812,7 +819,7 @@ mod tests {
 
     #[test]
     fn one_shot_models_lookup_and_assumptions() {
-        let mut ctl = Control::new(ControlConfig::default());
+        let mut ctl = Control::new(all_models());
         ctl.add_source("t", "{a; b}. c :- a. #show c/0. #show b/0.")
             .unwrap();
         ctl.ground(&[Part::base()]).unwrap();
@@ -889,7 +896,7 @@ mod tests {
     #[test]
     fn a_later_part_shows_a_term_on_an_atom_of_an_earlier_one() {
         // `#show x : p(k).` in part k reads p(k), grounded (and numbered) by `base`.
-        let mut ctl = Control::new(ControlConfig::default());
+        let mut ctl = Control::new(all_models());
         ctl.add_source(
             "s",
             "#program base. 1 { p(0..1) } 1. #program check(k). #show p/1. #show x : p(k).",
@@ -904,7 +911,7 @@ mod tests {
 
     #[test]
     fn externals_are_assigned_and_released() {
-        let mut ctl = Control::new(ControlConfig::default());
+        let mut ctl = Control::new(all_models());
         ctl.add_source("e", "#external e(1..2). p :- e(1). q :- e(2).")
             .unwrap();
         ctl.ground(&[Part::base()]).unwrap();
