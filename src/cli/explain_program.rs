@@ -169,6 +169,8 @@ pub(super) fn oracles(
     let labels = Labels::from_program(&loaded.program, &|s| loaded.sources.location(s.span));
     let ground = || -> Result<Control, String> {
         let mut config = ControlConfig::default();
+        // Every answer set is offered; the callback below stops after `models`.
+        config.solve.models = 0;
         config.ground.provenance = true;
         config.ground.consts = loaded.consts.clone();
         let mut ctl = Control::with_sources(config, loaded.sources.clone());
