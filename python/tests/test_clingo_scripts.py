@@ -223,8 +223,5 @@ def negated_function_order(clingo):
     return [str(s) for s in sorted(syms)]
 
 
-@pytest.mark.xfail(strict=True, reason="known difference: clingo 5.8 orders every negated function "
-                   "after every positive one (sign before arity); lucent::Symbol's order (the crate's "
-                   "one symbol order, ground::symbol::order) compares arity first")
 def test_negated_function_order(both):
     both(negated_function_order)

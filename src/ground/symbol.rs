@@ -336,9 +336,9 @@ impl Symbols {
 
 /// clingo's total order on ground terms, whatever their representation (the grounder's table
 /// through [`TableSym`], `control::Symbol`): `#inf` < integers < constants (positive before
-/// classically negated, then by name) < strings < functions and tuples (by arity, then positive
-/// before negated, then name, then arguments left to right) < `#sup`. The one symbol order of
-/// the crate.
+/// classically negated, then by name) < strings < functions and tuples (positive before
+/// classically negated, then by arity, then name, then arguments left to right) < `#sup`: clingo
+/// 5.4 and 5.8 put `-a(1)` after `a(1,1)` and `z(1)`. The one symbol order of the crate.
 pub fn order<'s, T: GroundTerm<'s>>(a: T, b: T) -> Ordering {
     if a.identical(b) {
         return Ordering::Equal;
@@ -364,10 +364,9 @@ pub fn order<'s, T: GroundTerm<'s>>(a: T, b: T) -> Ordering {
                 negative: gb,
                 args: ab,
             },
-        ) => aa
-            .len()
-            .cmp(&ab.len())
-            .then(ga.cmp(&gb))
+        ) => ga
+            .cmp(&gb)
+            .then(aa.len().cmp(&ab.len()))
             .then_with(|| na.cmp(nb))
             .then_with(|| {
                 aa.zip(ab)
@@ -552,5 +551,15 @@ mod tests {
         let g = s.fun_str("g", false, &[a]);
         let nf = s.fun_str("f", true, &[a]);
         assert_eq!(s.compare(g, nf), Ordering::Less);
+        // Sign before arity: clingo 5.4.1 (`X < Y` over t/1 in a program) and clingo 5.8.3
+        // (`sorted` in Python) order z(1) < a(1,1) < -a(1) < -z(1,1).
+        let z1 = s.fun_str("z", false, &[one]);
+        let a11 = s.fun_str("a", false, &[one, one]);
+        let na1 = s.fun_str("a", true, &[one]);
+        let nz11 = s.fun_str("z", true, &[one, one]);
+        let want = vec![z1, a11, na1, nz11];
+        let mut got = vec![nz11, na1, a11, z1];
+        got.sort_by(|&x, &y| s.compare(x, y));
+        assert_eq!(got, want);
     }
 }
