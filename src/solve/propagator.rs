@@ -81,6 +81,11 @@ impl Assignment<'_> {
         self.engine.decision_level()
     }
 
+    /// The number of variables (clingo's `size`): solver literals are `±1..=size`.
+    pub fn size(&self) -> usize {
+        self.engine.user_vars()
+    }
+
     /// Whether every variable the search decides on is assigned.
     pub fn is_total(&self) -> bool {
         self.engine.is_total()

@@ -110,6 +110,14 @@ impl Engine {
         Some(if l < 0 { !pos } else { pos })
     }
 
+    /// How many variables user literals name (the main engine's count).
+    pub(crate) fn user_vars(&self) -> usize {
+        match self.ext.as_ref().and_then(|e| e.map.as_ref()) {
+            None => self.num_vars(),
+            Some(m) => m.to_local.len(),
+        }
+    }
+
     /// The user literal of `l` (0 when a helper's variable has none).
     pub(crate) fn user_lit(&self, l: Lit) -> Literal {
         let pos = match self.ext.as_ref().and_then(|e| e.map.as_ref()) {
