@@ -298,6 +298,149 @@ def _parse_arguments(arguments):
     return models, opt_mode, consts
 
 
+class PropagatorCheckMode:
+    """clingo's ``PropagatorCheckMode``: lucent calls ``check`` on total assignments."""
+
+    Off = 0
+    Total = 1
+    Fixpoint = 2
+    Both = 3
+
+
+class _Assignment:
+    """clingo's ``Assignment`` over a snapshot taken when the callback started."""
+
+    def __init__(self, values, decision_level, is_total):
+        self._v = values
+        self.decision_level = decision_level
+        self.is_total = is_total
+
+    def _raw(self, lit):
+        if lit == 0 or abs(lit) > len(self._v):
+            raise RuntimeError(f"lucent: {lit} is not a solver literal")
+        v = self._v[abs(lit) - 1]
+        return v if lit > 0 else -v
+
+    def value(self, lit):
+        v = self._raw(lit)
+        return None if v == 0 else v > 0
+
+    def is_true(self, lit):
+        return self._raw(lit) > 0
+
+    def is_false(self, lit):
+        return self._raw(lit) < 0
+
+    def is_fixed(self, lit):
+        return abs(self._raw(lit)) == 2
+
+    @property
+    def size(self):
+        return len(self._v)
+
+    def __len__(self):
+        return len(self._v)
+
+
+class _AtomList:
+    """``init.symbolic_atoms``: iteration and ``by_signature``."""
+
+    def __init__(self, atoms):
+        self._atoms = atoms
+
+    def __iter__(self):
+        return iter(self._atoms)
+
+    def __len__(self):
+        return len(self._atoms)
+
+    def by_signature(self, name, arity, positive=True):
+        return iter([a for a in self._atoms if a.symbol.match(name, arity, positive)])
+
+
+class _PropagateInit:
+    """clingo's ``PropagateInit``; watches and clauses act when ``init`` returns."""
+
+    def __init__(self, atoms, threads, values):
+        self._lit = {a: lit for (_, a, _, _, lit) in atoms}
+        self.symbolic_atoms = _AtomList([SymbolicAtom(s, a, f, e) for (s, a, f, e, _) in atoms])
+        self.number_of_threads = threads
+        self.assignment = _Assignment(values, 0, False)
+        self.check_mode = PropagatorCheckMode.Total
+        self._watches = []
+        self._clauses = []
+
+    def solver_literal(self, literal):
+        return self._lit[literal]
+
+    def add_watch(self, literal, thread_id=None):
+        self._watches.append(literal)
+
+    def add_clause(self, clause):
+        self._clauses.append(list(clause))
+        return True
+
+
+class _PropagateControl:
+    """clingo's ``PropagateControl``; what it is asked acts when the callback returns, in order."""
+
+    def __init__(self, thread_id, assignment):
+        self.thread_id = thread_id
+        self.assignment = assignment
+        self._ops = []
+
+    def add_clause(self, clause, tag=False, lock=False):
+        self._ops.append(("c", list(clause)))
+        return True
+
+    def add_nogood(self, nogood, tag=False, lock=False):
+        self._ops.append(("c", [-lit for lit in nogood]))
+        return True
+
+    def propagate(self):
+        self._ops.append(("p", []))
+        return True
+
+    def add_watch(self, literal):
+        self._ops.append(("w", [literal]))
+
+    def remove_watch(self, literal):
+        self._ops.append(("u", [literal]))
+
+
+class _PropagatorAdapter:
+    """What the native Control calls: plain data in, operations out (python/src/propagator.rs)."""
+
+    def __init__(self, propagator):
+        self._p = propagator
+
+    def _init(self, atoms, threads, values):
+        init = _PropagateInit(atoms, threads, values)
+        if hasattr(self._p, "init"):
+            self._p.init(init)
+        if init.check_mode not in (PropagatorCheckMode.Total, PropagatorCheckMode.Off) and hasattr(
+            self._p, "check"
+        ):
+            raise RuntimeError("lucent: propagators check total assignments only (check_mode Total)")
+        return init._watches, init._clauses
+
+    def _propagate(self, thread_id, changes, values, level, total):
+        ctl = _PropagateControl(thread_id, _Assignment(values, level, total))
+        if hasattr(self._p, "propagate"):
+            self._p.propagate(ctl, changes)
+        return ctl._ops
+
+    def _undo(self, thread_id, changes, values, level, total):
+        if hasattr(self._p, "undo"):
+            self._p.undo(thread_id, _Assignment(values, level, total), changes)
+
+    def _check(self, thread_id, values, level, total):
+        ctl = _PropagateControl(thread_id, _Assignment(values, level, total))
+        if hasattr(self._p, "check"):
+            self._p.check(ctl)
+        return ctl._ops
+
+
 class Control:
     """clingo's ``Control``: add, load, ground, solve, externals, symbolic atoms, backend."""
 
@@ -355,6 +498,12 @@ class Control:
 
     def release_external(self, external):
         self._c.release_external(external)
+
+    def register_propagator(self, propagator):
+        """clingo's ``register_propagator``: ``init``, ``propagate``, ``undo``, ``check``
+        (total assignments) as clingo calls them; inside one callback the assignment is the
+        one the callback started with (see python/src/propagator.rs)."""
+        self._c.register_propagator(_PropagatorAdapter(propagator))
 
     @property
     def symbolic_atoms(self):

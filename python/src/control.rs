@@ -29,6 +29,8 @@ pub struct Control {
     models: Option<usize>,
     /// The last call's statistics, model count and last costs.
     last: Option<(Stats, usize, Vec<i64>, bool)>,
+    /// The first error of a registered propagator (`propagator.rs`), raised by `solve`.
+    failure: crate::propagator::Failure,
 }
 
 /// The outcome of one solve call: satisfiable, unsatisfiable, exhausted, interrupted, models
@@ -62,6 +64,7 @@ impl Control {
             ctl: lucent::Control::new(config),
             models,
             last: None,
+            failure: Default::default(),
         })
     }
 
@@ -149,6 +152,14 @@ impl Control {
         if let Some(e) = failure {
             return Err(e);
         }
+        let propagator_error = self
+            .failure
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .take();
+        if let Some(e) = propagator_error {
+            return Err(e);
+        }
         let optimal = optimal || summary.optimum_proven;
         let sat = summary.is_satisfiable();
         let unsat = summary.is_unsatisfiable();
@@ -183,6 +194,17 @@ impl Control {
         let (symbol, _) = self.target(atom)?;
         self.ctl.release_external(&symbol);
         Ok(())
+    }
+
+    /// `Control.register_propagator`: `adapter` is the Python `_PropagatorAdapter`.
+    fn register_propagator(&mut self, adapter: PyObject) {
+        let interrupter = self.ctl.interrupter();
+        self.ctl
+            .register_propagator(Box::new(crate::propagator::PyPropagator {
+                adapter,
+                failure: self.failure.clone(),
+                interrupter,
+            }));
     }
 
     /// Every symbolic atom: `(symbol, literal, is_fact, is_external)`.

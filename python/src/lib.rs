@@ -1,6 +1,6 @@
 //! `lucent._lucent`, the native module of the `lucent` Python package (issue 33 item 2): the
 //! `Symbol` type and constructors (`symbol.rs`), answer sets (`model.rs`), the native Control
-//! with its backend calls (`control.rs`) and the command line in memory for the robot verbs
+//! with its backend calls (`control.rs`), Python propagators (`propagator.rs`) and the command line in memory for the robot verbs
 //! (`run_cli`). python/lucent/__init__.py builds clingo's API on top.
 //!
 //! Invariant: nothing here prints or panics on bad input; errors are Python exceptions.
@@ -13,6 +13,7 @@ use pyo3::prelude::*;
 
 mod control;
 mod model;
+mod propagator;
 mod symbol;
 
 /// Runs `lucent ARGS...` in memory: `(exit code, standard output, standard error)`. The robot

@@ -60,6 +60,7 @@ mod context;
 pub mod incmode;
 mod model;
 mod parts;
+pub mod propagator;
 pub(crate) mod symbol;
 
 use std::cell::OnceCell;
@@ -80,6 +81,7 @@ use crate::syntax::ast::{self, Dialect, Program, Statement, StatementKind};
 pub use backend::Backend;
 use model::Names;
 pub use model::{Model, OwnedModel};
+pub use propagator::{Assignment, Literal, PropagateControl, PropagateInit, Propagator};
 pub use symbol::{Name, ParseSymbolError, Symbol};
 
 /// An atom of the Control's ground program: the aspif numbering, from 1
@@ -312,6 +314,8 @@ pub struct Control {
     session: ground::incremental::Session,
     /// The Control's atom of each of the session's grounder atoms (0: none).
     ctl_of_gatom: Vec<AtomId>,
+    /// Registered propagators (`propagator`).
+    propagators: propagator::Propagators,
 }
 
 /// Stops a solve call from another thread: see [`Control::interrupter`].
@@ -373,6 +377,7 @@ impl Control {
             gatom_of_sym: HashMap::new(),
             session: ground::incremental::Session::new(),
             ctl_of_gatom: Vec::new(),
+            propagators: Default::default(),
         }
     }
 
@@ -651,6 +656,7 @@ impl Control {
         mut on_model: impl FnMut(&Model<'_>) -> bool,
     ) -> Summary {
         self.prepare();
+        self.init_propagators();
         let mut assumptions = Vec::new();
         self.external_assumptions(&mut assumptions);
         let mut impossible = None;

@@ -38,11 +38,13 @@
 mod analyze;
 mod clauses;
 mod database;
+mod external;
 mod heuristic;
 mod loops;
 mod propagate;
 mod search;
 mod share;
+pub(crate) use external::{LitMap, SharedHook};
 pub use share::Hub;
 
 use super::config::{Config, Deletion, ReduceSchedule};
@@ -513,6 +515,8 @@ pub struct Engine {
     inconsistent: bool,
     /// Clause sharing in a portfolio: the shared numbering and the hub (`share`).
     share: share::Sharing,
+    /// The external propagator (clingo's propagator interface), if one is installed.
+    ext: Option<Box<external::External>>,
 }
 
 impl Default for Engine {
@@ -640,6 +644,7 @@ impl Engine {
             },
             inconsistent: false,
             share: share::Sharing::default(),
+            ext: None,
         }
     }
 
@@ -911,6 +916,9 @@ impl Engine {
             return;
         }
         let start = self.asg.trail_lim[level as usize];
+        if self.ext.is_some() {
+            self.undo_external(start);
+        }
         let save = self.decision_level() - level > self.settings.save_progress;
         for i in (start..self.asg.trail.len()).rev() {
             let l = self.asg.trail[i];

@@ -22,6 +22,7 @@ pub use result::{Model, Outcome, SolveResult, Stats, StopReason};
 pub(crate) mod engine;
 pub mod fuzzing;
 pub(crate) mod lit;
+pub mod propagator;
 pub(crate) mod solver;
 pub(crate) mod translate;
 pub(crate) mod unfounded;

@@ -47,6 +47,7 @@ mod core_guided;
 mod cr;
 pub(crate) use cr::transitive_closure;
 mod portfolio;
+mod propagators;
 mod search;
 mod settings;
 mod strategies;

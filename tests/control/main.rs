@@ -8,6 +8,7 @@ mod support;
 mod grid;
 mod incmode;
 mod multishot;
+mod propagator;
 mod provenance;
 mod threads;
 mod traps;

@@ -1,6 +1,7 @@
 //! Propagation to fixpoint: two-watched-literal unit propagation over binary and long clauses
 //! (with blocker literals), native weight constraints with explanations stored per variable,
-//! and the unfounded-set propagator at every fixpoint.
+//! and, at every fixpoint, the unfounded-set propagator and then an external propagator
+//! (`external`).
 //!
 //! Invariants: when a long clause is the reason of an assignment, the implied literal is at
 //! position 0; on conflict the falsified clause is left in `Analysis::conflict`.
@@ -17,30 +18,37 @@ impl Engine {
             if self.propagate_units() {
                 return Some(());
             }
-            self.uf.unfounded.as_ref()?;
-            let start = self.uf.uf_clean_upto.min(self.asg.trail.len());
-            if !self.uf.uf_dirty
-                && !self.asg.trail[start..]
-                    .iter()
-                    .any(|l| self.uf.uf_relevant[l.var().index()])
-            {
-                self.uf.uf_clean_upto = self.asg.trail.len();
-                return None;
-            }
-            let mut uf = self.uf.unfounded.take().expect("checked above");
-            let sets = uf.check(self, start);
-            self.uf.unfounded = Some(uf);
-            // The propagator has seen everything up to here; the nogoods' own assignments
-            // (and a backjump they may cause) start the next segment.
-            self.uf.uf_clean_upto = self.asg.trail.len();
-            self.uf.uf_dirty = false;
-            if sets.is_empty() {
-                return None;
-            }
-            for set in sets {
-                if self.add_loop_set(&set.atoms, &set.ext) {
-                    return Some(());
+            if self.uf.unfounded.is_some() {
+                let start = self.uf.uf_clean_upto.min(self.asg.trail.len());
+                if !self.uf.uf_dirty
+                    && !self.asg.trail[start..]
+                        .iter()
+                        .any(|l| self.uf.uf_relevant[l.var().index()])
+                {
+                    self.uf.uf_clean_upto = self.asg.trail.len();
+                } else {
+                    let mut uf = self.uf.unfounded.take().expect("checked above");
+                    let sets = uf.check(self, start);
+                    self.uf.unfounded = Some(uf);
+                    // The propagator has seen everything up to here; the nogoods' own
+                    // assignments (and a backjump they may cause) start the next segment.
+                    self.uf.uf_clean_upto = self.asg.trail.len();
+                    self.uf.uf_dirty = false;
+                    if !sets.is_empty() {
+                        for set in sets {
+                            if self.add_loop_set(&set.atoms, &set.ext) {
+                                return Some(());
+                            }
+                        }
+                        continue;
+                    }
                 }
+            }
+            self.ext.as_ref()?;
+            match self.propagate_external() {
+                external::Step::Quiet => return None,
+                external::Step::Changed => continue,
+                external::Step::Conflict => return Some(()),
             }
         }
     }

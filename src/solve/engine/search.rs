@@ -254,6 +254,9 @@ impl Engine {
             } else {
                 match self.pick_branch() {
                     Some(l) => l,
+                    // A total assignment: an external propagator's `check` may still refute
+                    // it (a clause, then conflict analysis) or extend it.
+                    None if self.ext.is_some() && self.check_external() => continue,
                     None => return SearchResult::Sat,
                 }
             };

@@ -220,6 +220,18 @@ pub(super) fn diversify(base: &Config, k: usize) -> Config {
     c
 }
 
+impl Portfolio {
+    /// The helper solvers (threads `1..`).
+    pub(super) fn helpers_mut(&mut self) -> &mut [Solver] {
+        &mut self.helpers
+    }
+
+    /// How many helpers there are.
+    pub(super) fn helpers_len(&self) -> usize {
+        self.helpers.len()
+    }
+}
+
 impl Solver {
     /// A solver for `prog` with `config.threads` threads: this one and its helpers, built in
     /// parallel and connected to one hub.
