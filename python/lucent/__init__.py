@@ -318,9 +318,9 @@ class Control:
         self._c.load(str(path))
 
     def ground(self, parts=(("base", ()),), context=None):
-        if context is not None:
-            raise RuntimeError("lucent: context functions (@f terms) are not supported")
-        self._c.ground([(n, list(a)) for n, a in parts])
+        """Grounds ``parts``; ``@f(...)`` calls ``context.f`` with ``Symbol`` arguments (it
+        returns a ``Symbol`` or a list of them, as in clingo)."""
+        self._c.ground([(n, list(a)) for n, a in parts], context)
 
     def solve(
         self,

@@ -76,13 +76,33 @@ impl Control {
         self.ctl.load(path).map_err(error)
     }
 
-    /// `Control.ground(parts)`.
-    fn ground(&mut self, parts: Vec<(String, Vec<Symbol>)>) -> PyResult<()> {
+    /// `Control.ground(parts, context)`: `@f(...)` calls `context.f` with `Symbol` arguments;
+    /// it returns a `Symbol` or a sequence of them. The first exception a function raises
+    /// (an `AttributeError` for an unknown one) is raised again, as clingo does.
+    #[pyo3(signature = (parts, context = None))]
+    fn ground(
+        &mut self,
+        py: Python<'_>,
+        parts: Vec<(String, Vec<Symbol>)>,
+        context: Option<PyObject>,
+    ) -> PyResult<()> {
         let parts: Vec<Part> = parts
             .into_iter()
             .map(|(n, a)| Part::new(n, a.into_iter().map(|s| s.0).collect()))
             .collect();
-        self.ctl.ground(&parts).map_err(error)
+        let Some(object) = context else {
+            return self.ctl.ground(&parts).map_err(error);
+        };
+        let mut ctx = PyContext {
+            py,
+            object,
+            raised: None,
+        };
+        let result = self.ctl.ground_with_context(&parts, &mut ctx);
+        match (result, ctx.raised) {
+            (Err(_), Some(e)) => Err(e),
+            (r, _) => r.map_err(error),
+        }
     }
 
     /// Solves under `assumptions` (`(Symbol, bool)` pairs or literals), calling `on_model` on
@@ -338,4 +358,51 @@ fn solving<'py>(py: Python<'py>, stats: &Stats) -> PyResult<Bound<'py, PyDict>> 
     let out = PyDict::new_bound(py);
     out.set_item("solvers", solvers)?;
     Ok(out)
+}
+
+/// A Python object as a grounding context (clingo's protocol: the method named as the
+/// function, called with `Symbol` arguments, returning a `Symbol` or a sequence of them).
+struct PyContext<'py> {
+    py: Python<'py>,
+    object: PyObject,
+    /// The first exception raised by a function (raised again by `ground`).
+    raised: Option<PyErr>,
+}
+
+impl PyContext<'_> {
+    fn values(&self, name: &str, args: &[lucent::Symbol]) -> PyResult<Vec<lucent::Symbol>> {
+        let py = self.py;
+        let f = self.object.bind(py).getattr(name)?;
+        let args: Vec<Py<Symbol>> = args
+            .iter()
+            .map(|a| Py::new(py, Symbol(a.clone())))
+            .collect::<PyResult<_>>()?;
+        let r = f.call1(PyTuple::new_bound(py, args))?;
+        if let Ok(s) = r.downcast::<Symbol>() {
+            return Ok(vec![s.get().0.clone()]);
+        }
+        let mut out = Vec::new();
+        for item in r.iter().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "function {name} returned neither a Symbol nor a sequence of them"
+            ))
+        })? {
+            out.push(to_symbol(&item?)?);
+        }
+        Ok(out)
+    }
+}
+
+impl lucent::control::Context for PyContext<'_> {
+    fn call(
+        &mut self,
+        name: &str,
+        args: &[lucent::Symbol],
+    ) -> Result<Vec<lucent::Symbol>, String> {
+        self.values(name, args).map_err(|e| {
+            let message = e.to_string();
+            self.raised.get_or_insert(e);
+            message
+        })
+    }
 }

@@ -57,6 +57,7 @@
 
 mod backend;
 mod context;
+mod functions;
 pub mod incmode;
 mod model;
 mod parts;
@@ -78,6 +79,7 @@ use crate::solve::{self, Solver};
 use crate::syntax::ast::{self, Dialect, Program, Statement, StatementKind};
 
 pub use backend::Backend;
+pub use functions::Context;
 use model::Names;
 pub use model::{Model, OwnedModel};
 pub use symbol::{Name, ParseSymbolError, Symbol};
