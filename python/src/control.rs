@@ -32,37 +32,50 @@ pub struct Control {
 }
 
 /// The outcome of one solve call: satisfiable, unsatisfiable, exhausted, interrupted, models
-/// (when collected).
-type SolveOut = (bool, bool, bool, bool, Option<Vec<Py<Model>>>);
+/// (when collected), the core (program literals of the failed assumptions, when unsatisfiable
+/// under assumptions).
+type SolveOut = (
+    bool,
+    bool,
+    bool,
+    bool,
+    Option<Vec<Py<Model>>>,
+    Option<Vec<i32>>,
+);
 
 #[pymethods]
 impl Control {
-    /// A Control: `models` (`None`: clingo's default), `opt_mode` (clasp's `--opt-mode`),
-    /// `consts` (`-c name=value`).
+    /// A Control from clingo's command-line `arguments` (`lucent::Control::from_args`: `-n`,
+    /// `-c`, `--opt-mode`, `--project`, `-t`, `--heuristic`); a bad option is a
+    /// `RuntimeError`, as in clingo.
     #[new]
-    #[pyo3(signature = (models = None, opt_mode = None, consts = Vec::new()))]
-    fn new(
-        models: Option<usize>,
-        opt_mode: Option<&str>,
-        consts: Vec<(String, String)>,
-    ) -> PyResult<Control> {
-        let mut config = lucent::ControlConfig::default();
-        if let Some(mode) = opt_mode {
-            config.solve.opt_mode = OptMode::from_name(mode)
-                .ok_or_else(|| error(format!("invalid value for option --opt-mode: {mode}")))?;
-        }
-        for (name, value) in consts {
-            let term = lucent::control::const_term(&value)
-                .ok_or_else(|| error(format!("invalid value for option -c: {name}={value}")))?;
-            config.ground.consts.push((name, term));
-        }
+    #[pyo3(signature = (arguments = Vec::new()))]
+    fn new(arguments: Vec<String>) -> PyResult<Control> {
+        let args: Vec<&str> = arguments.iter().map(String::as_str).collect();
+        let mut ctl = lucent::Control::from_args(&args).map_err(error)?;
+        let config = ctl.solve_config_mut();
+        let models = (config.models != lucent::solve::Config::AUTO_MODELS).then_some(config.models);
         // The robot layers read supports; a Python caller cannot.
-        config.solve.supports = false;
+        config.supports = false;
         Ok(Control {
-            ctl: lucent::Control::new(config),
+            ctl,
             models,
             last: None,
         })
+    }
+
+    /// The `--opt-mode` in effect, as clasp names it (`configuration.solve.opt_mode`).
+    #[getter]
+    fn opt_mode(&self) -> String {
+        match &self.ctl.config().solve.opt_mode {
+            OptMode::Opt => "opt".into(),
+            OptMode::OptN => "optN".into(),
+            OptMode::Ignore => "ignore".into(),
+            OptMode::Enum(bounds) => std::iter::once("enum".to_string())
+                .chain(bounds.iter().map(i64::to_string))
+                .collect::<Vec<_>>()
+                .join(","),
+        }
     }
 
     /// `Control.add(name, params, program)`.
@@ -176,12 +189,22 @@ impl Control {
         let exhausted = summary.exhausted;
         self.last = Some((summary.stats, summary.models, costs, optimal));
         let unknown = summary.outcome == Outcome::Unknown;
+        // clingo's core: the program literals of the failed assumptions, in assumption order.
+        let core = summary.core.map(|core| {
+            core.iter()
+                .filter_map(|(symbol, value)| {
+                    let atom = self.ctl.lookup(symbol)? as i32;
+                    Some(if *value { atom } else { -atom })
+                })
+                .collect()
+        });
         Ok((
             sat && !unknown,
             unsat,
             exhausted,
             interrupted,
             collect.then_some(kept),
+            core,
         ))
     }
 
@@ -394,11 +417,7 @@ impl PyContext<'_> {
 }
 
 impl lucent::control::Context for PyContext<'_> {
-    fn call(
-        &mut self,
-        name: &str,
-        args: &[lucent::Symbol],
-    ) -> Result<Vec<lucent::Symbol>, String> {
+    fn call(&mut self, name: &str, args: &[lucent::Symbol]) -> Result<Vec<lucent::Symbol>, String> {
         self.values(name, args).map_err(|e| {
             let message = e.to_string();
             self.raised.get_or_insert(e);
