@@ -14,7 +14,9 @@ use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use crate::model::Model;
+use std::sync::Arc;
+
+use crate::model::{AtomNames, Model};
 use crate::symbol::{to_symbol, Symbol};
 
 fn error(e: impl std::fmt::Display) -> PyErr {
@@ -29,6 +31,8 @@ pub struct Control {
     models: Option<usize>,
     /// The last call's statistics, model count and last costs.
     last: Option<(Stats, usize, Vec<i64>, bool)>,
+    /// The symbol of each atom, shared with the models (extended before each solve call).
+    names: AtomNames,
 }
 
 /// The outcome of one solve call: satisfiable, unsatisfiable, exhausted, interrupted, models
@@ -61,6 +65,7 @@ impl Control {
             ctl,
             models,
             last: None,
+            names: AtomNames::default(),
         })
     }
 
@@ -138,6 +143,14 @@ impl Control {
             None => 1,
         };
         self.ctl.solve_config_mut().models = models;
+        // The symbols of the atoms added since the last call (an atom keeps its symbol, so
+        // the table only grows; models of earlier calls may share the old one).
+        let known = self.names.len() as u32;
+        if known < self.ctl.num_atoms() {
+            let names = Arc::make_mut(&mut self.names);
+            names.extend((known + 1..=self.ctl.num_atoms()).map(|a| self.ctl.symbol(a)));
+        }
+        let names = &self.names;
         let mut failure: Option<PyErr> = None;
         let mut kept: Vec<Py<Model>> = Vec::new();
         let mut costs = Vec::new();
@@ -148,7 +161,7 @@ impl Control {
             if on_model.is_none() && !collect {
                 return true;
             }
-            let model = match Py::new(py, Model::new(m)) {
+            let model = match Py::new(py, Model::new(m, names.clone())) {
                 Ok(model) => model,
                 Err(e) => {
                     failure = Some(e);
