@@ -2,7 +2,8 @@
 # The whole test suite, from a fresh machine: installs the reference tools the differential
 # tests compare against (clingo 5.4's gringo/clasp/clingo from Debian, clingo 5.8 from PyPI),
 # then checks formatting, lints, and runs every test (unit, integration, snapshot, property,
-# differential). Used by README.md and .ci/run.
+# differential), then builds the Python package and runs its pytest scripts against clingo
+# 5.8. Used by README.md and .ci/run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -44,3 +45,13 @@ cargo clippy --all-targets -- -D warnings
 echo "== cargo test"
 cargo test --all-targets
 cargo test --doc
+# The Python package (python/): built with the dev profile into the root's target directory,
+# so that the dependencies just built can be reused (at most ~3.5 CPU minutes from scratch for
+# lucent without `sim`, PyO3 and the module: docs/bench/python-2026-12-06.md), then its pytest
+# scripts, which compare with clingo 5.8's Python module (they fail without it).
+echo "== python tests"
+if ! python3 -m venv --help >/dev/null 2>&1 || ! python3 -c 'import ensurepip' 2>/dev/null; then
+  as_root apt-get update -qq
+  as_root apt-get install -y -qq python3-venv
+fi
+CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$PWD/target}" LUCENT_PY_PROFILE=dev scripts/test_python.sh

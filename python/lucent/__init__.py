@@ -15,8 +15,9 @@ the robot's verbs ``plan`` and ``explain``, which return Python values.
 
 Differences from clingo, by design or not yet done (docs/reference.md, "Python"):
 ``yield_``/``async_`` handles hold the call's models once it is finished (the search runs
-when ``solve`` is called, not while iterating); propagators, theory atoms, ``on_unsat`` and
-context functions are not supported; atoms added through the backend are not seen by later
+when ``solve`` is called, not while iterating); propagators see a snapshot of the assignment
+per callback and check total assignments only; theory atoms, ``on_unsat`` and
+``on_statistics`` are not supported; atoms added through the backend are not seen by later
 groundings.
 """
 
@@ -253,51 +254,6 @@ def _truth(value):
     return value
 
 
-def _parse_arguments(arguments):
-    """Reads clingo's command line: ``-n N``/``N``, ``--opt-mode``, ``-c name=value``."""
-    models, opt_mode, consts = None, None, []
-    args = list(arguments)
-    i = 0
-
-    def value(flag):
-        nonlocal i
-        if i + 1 >= len(args):
-            raise RuntimeError(f"lucent: option {flag} needs a value")
-        i += 1
-        return args[i]
-
-    while i < len(args):
-        a = args[i]
-        if a.isdigit():
-            models = int(a)
-        elif a in ("-n", "--models"):
-            models = int(value(a))
-        elif a.startswith("--models="):
-            models = int(a.split("=", 1)[1])
-        elif a.startswith("-n"):
-            models = int(a[2:])
-        elif a == "--opt-mode":
-            opt_mode = value(a)
-        elif a.startswith("--opt-mode="):
-            opt_mode = a.split("=", 1)[1]
-        elif a in ("-c", "--const"):
-            consts.append(tuple(value(a).split("=", 1)))
-        elif a.startswith("--const="):
-            consts.append(tuple(a.split("=", 1)[1].split("=", 1)))
-        elif a.startswith("-c"):
-            consts.append(tuple(a[2:].split("=", 1)))
-        elif a.startswith("--warn") or a.startswith("-W"):
-            if a in ("--warn", "-W"):
-                value(a)
-        else:
-            raise RuntimeError(f"lucent: unknown option: {a}")
-        i += 1
-    for c in consts:
-        if len(c) != 2:
-            raise RuntimeError(f"lucent: -c needs name=value, got {'='.join(c)}")
-    return models, opt_mode, consts
-
-
 class PropagatorCheckMode:
     """clingo's ``PropagatorCheckMode``: lucent calls ``check`` on total assignments."""
 
@@ -445,11 +401,11 @@ class Control:
     """clingo's ``Control``: add, load, ground, solve, externals, symbolic atoms, backend."""
 
     def __init__(self, arguments=(), logger=None, message_limit=20):
-        models, opt_mode, consts = _parse_arguments(arguments)
-        self._c = _lucent.Control(models, opt_mode, consts)
+        # clingo's options (-n, -c, --opt-mode, --project, -t, --heuristic) are read by
+        # lucent::Control::from_args; a bad one raises RuntimeError.
+        self._c = _lucent.Control([str(a) for a in arguments])
         self.configuration = Configuration(self._c)
-        if opt_mode is not None:
-            object.__setattr__(self.configuration.solve, "_opt_mode", opt_mode)
+        object.__setattr__(self.configuration.solve, "_opt_mode", self._c.opt_mode)
 
     def add(self, name, parameters=None, program=None):
         """``add(name, parameters, program)`` or clingo 5.8's ``add(program)`` (to ``base``)."""
@@ -461,9 +417,9 @@ class Control:
         self._c.load(str(path))
 
     def ground(self, parts=(("base", ()),), context=None):
-        if context is not None:
-            raise RuntimeError("lucent: context functions (@f terms) are not supported")
-        self._c.ground([(n, list(a)) for n, a in parts])
+        """Grounds ``parts``; ``@f(...)`` calls ``context.f`` with ``Symbol`` arguments (it
+        returns a ``Symbol`` or a list of them, as in clingo)."""
+        self._c.ground([(n, list(a)) for n, a in parts], context)
 
     def solve(
         self,
@@ -478,10 +434,12 @@ class Control:
         async_=False,
     ):
         handle = yield_ or async_
-        sat, unsat, exhausted, interrupted, models = self._c.solve(
+        sat, unsat, exhausted, interrupted, models, core = self._c.solve(
             list(assumptions), on_model, handle
         )
         result = SolveResult(sat, unsat, exhausted, interrupted)
+        if on_core is not None and unsat and core is not None:
+            on_core(core)
         if on_last is not None and models:
             on_last(models[-1])
         if on_finish is not None:

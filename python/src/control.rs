@@ -14,7 +14,9 @@ use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
-use crate::model::Model;
+use std::sync::Arc;
+
+use crate::model::{AtomNames, Model};
 use crate::symbol::{to_symbol, Symbol};
 
 fn error(e: impl std::fmt::Display) -> PyErr {
@@ -31,41 +33,57 @@ pub struct Control {
     last: Option<(Stats, usize, Vec<i64>, bool)>,
     /// The first error of a registered propagator (`propagator.rs`), raised by `solve`.
     failure: crate::propagator::Failure,
+    /// The symbol of each atom, shared with the models (extended before each solve call).
+    names: AtomNames,
 }
 
 /// The outcome of one solve call: satisfiable, unsatisfiable, exhausted, interrupted, models
-/// (when collected).
-type SolveOut = (bool, bool, bool, bool, Option<Vec<Py<Model>>>);
+/// (when collected), the core (program literals of the failed assumptions, when unsatisfiable
+/// under assumptions).
+type SolveOut = (
+    bool,
+    bool,
+    bool,
+    bool,
+    Option<Vec<Py<Model>>>,
+    Option<Vec<i32>>,
+);
 
 #[pymethods]
 impl Control {
-    /// A Control: `models` (`None`: clingo's default), `opt_mode` (clasp's `--opt-mode`),
-    /// `consts` (`-c name=value`).
+    /// A Control from clingo's command-line `arguments` (`lucent::Control::from_args`: `-n`,
+    /// `-c`, `--opt-mode`, `--project`, `-t`, `--heuristic`); a bad option is a
+    /// `RuntimeError`, as in clingo.
     #[new]
-    #[pyo3(signature = (models = None, opt_mode = None, consts = Vec::new()))]
-    fn new(
-        models: Option<usize>,
-        opt_mode: Option<&str>,
-        consts: Vec<(String, String)>,
-    ) -> PyResult<Control> {
-        let mut config = lucent::ControlConfig::default();
-        if let Some(mode) = opt_mode {
-            config.solve.opt_mode = OptMode::from_name(mode)
-                .ok_or_else(|| error(format!("invalid value for option --opt-mode: {mode}")))?;
-        }
-        for (name, value) in consts {
-            let term = lucent::control::const_term(&value)
-                .ok_or_else(|| error(format!("invalid value for option -c: {name}={value}")))?;
-            config.ground.consts.push((name, term));
-        }
+    #[pyo3(signature = (arguments = Vec::new()))]
+    fn new(arguments: Vec<String>) -> PyResult<Control> {
+        let args: Vec<&str> = arguments.iter().map(String::as_str).collect();
+        let mut ctl = lucent::Control::from_args(&args).map_err(error)?;
+        let config = ctl.solve_config_mut();
+        let models = (config.models != lucent::solve::Config::AUTO_MODELS).then_some(config.models);
         // The robot layers read supports; a Python caller cannot.
-        config.solve.supports = false;
+        config.supports = false;
         Ok(Control {
-            ctl: lucent::Control::new(config),
+            ctl,
             models,
             last: None,
             failure: Default::default(),
+            names: AtomNames::default(),
         })
+    }
+
+    /// The `--opt-mode` in effect, as clasp names it (`configuration.solve.opt_mode`).
+    #[getter]
+    fn opt_mode(&self) -> String {
+        match &self.ctl.config().solve.opt_mode {
+            OptMode::Opt => "opt".into(),
+            OptMode::OptN => "optN".into(),
+            OptMode::Ignore => "ignore".into(),
+            OptMode::Enum(bounds) => std::iter::once("enum".to_string())
+                .chain(bounds.iter().map(i64::to_string))
+                .collect::<Vec<_>>()
+                .join(","),
+        }
     }
 
     /// `Control.add(name, params, program)`.
@@ -79,13 +97,33 @@ impl Control {
         self.ctl.load(path).map_err(error)
     }
 
-    /// `Control.ground(parts)`.
-    fn ground(&mut self, parts: Vec<(String, Vec<Symbol>)>) -> PyResult<()> {
+    /// `Control.ground(parts, context)`: `@f(...)` calls `context.f` with `Symbol` arguments;
+    /// it returns a `Symbol` or a sequence of them. The first exception a function raises
+    /// (an `AttributeError` for an unknown one) is raised again, as clingo does.
+    #[pyo3(signature = (parts, context = None))]
+    fn ground(
+        &mut self,
+        py: Python<'_>,
+        parts: Vec<(String, Vec<Symbol>)>,
+        context: Option<PyObject>,
+    ) -> PyResult<()> {
         let parts: Vec<Part> = parts
             .into_iter()
             .map(|(n, a)| Part::new(n, a.into_iter().map(|s| s.0).collect()))
             .collect();
-        self.ctl.ground(&parts).map_err(error)
+        let Some(object) = context else {
+            return self.ctl.ground(&parts).map_err(error);
+        };
+        let mut ctx = PyContext {
+            py,
+            object,
+            raised: None,
+        };
+        let result = self.ctl.ground_with_context(&parts, &mut ctx);
+        match (result, ctx.raised) {
+            (Err(_), Some(e)) => Err(e),
+            (r, _) => r.map_err(error),
+        }
     }
 
     /// Solves under `assumptions` (`(Symbol, bool)` pairs or literals), calling `on_model` on
@@ -108,6 +146,14 @@ impl Control {
             None => 1,
         };
         self.ctl.solve_config_mut().models = models;
+        // The symbols of the atoms added since the last call (an atom keeps its symbol, so
+        // the table only grows; models of earlier calls may share the old one).
+        let known = self.names.len() as u32;
+        if known < self.ctl.num_atoms() {
+            let names = Arc::make_mut(&mut self.names);
+            names.extend((known + 1..=self.ctl.num_atoms()).map(|a| self.ctl.symbol(a)));
+        }
+        let names = &self.names;
         let mut failure: Option<PyErr> = None;
         let mut kept: Vec<Py<Model>> = Vec::new();
         let mut costs = Vec::new();
@@ -118,7 +164,7 @@ impl Control {
             if on_model.is_none() && !collect {
                 return true;
             }
-            let model = match Py::new(py, Model::new(m)) {
+            let model = match Py::new(py, Model::new(m, names.clone())) {
                 Ok(model) => model,
                 Err(e) => {
                     failure = Some(e);
@@ -167,12 +213,22 @@ impl Control {
         let exhausted = summary.exhausted;
         self.last = Some((summary.stats, summary.models, costs, optimal));
         let unknown = summary.outcome == Outcome::Unknown;
+        // clingo's core: the program literals of the failed assumptions, in assumption order.
+        let core = summary.core.map(|core| {
+            core.iter()
+                .filter_map(|(symbol, value)| {
+                    let atom = self.ctl.lookup(symbol)? as i32;
+                    Some(if *value { atom } else { -atom })
+                })
+                .collect()
+        });
         Ok((
             sat && !unknown,
             unsat,
             exhausted,
             interrupted,
             collect.then_some(kept),
+            core,
         ))
     }
 
@@ -360,4 +416,47 @@ fn solving<'py>(py: Python<'py>, stats: &Stats) -> PyResult<Bound<'py, PyDict>> 
     let out = PyDict::new_bound(py);
     out.set_item("solvers", solvers)?;
     Ok(out)
+}
+
+/// A Python object as a grounding context (clingo's protocol: the method named as the
+/// function, called with `Symbol` arguments, returning a `Symbol` or a sequence of them).
+struct PyContext<'py> {
+    py: Python<'py>,
+    object: PyObject,
+    /// The first exception raised by a function (raised again by `ground`).
+    raised: Option<PyErr>,
+}
+
+impl PyContext<'_> {
+    fn values(&self, name: &str, args: &[lucent::Symbol]) -> PyResult<Vec<lucent::Symbol>> {
+        let py = self.py;
+        let f = self.object.bind(py).getattr(name)?;
+        let args: Vec<Py<Symbol>> = args
+            .iter()
+            .map(|a| Py::new(py, Symbol(a.clone())))
+            .collect::<PyResult<_>>()?;
+        let r = f.call1(PyTuple::new_bound(py, args))?;
+        if let Ok(s) = r.downcast::<Symbol>() {
+            return Ok(vec![s.get().0.clone()]);
+        }
+        let mut out = Vec::new();
+        for item in r.iter().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "function {name} returned neither a Symbol nor a sequence of them"
+            ))
+        })? {
+            out.push(to_symbol(&item?)?);
+        }
+        Ok(out)
+    }
+}
+
+impl lucent::control::Context for PyContext<'_> {
+    fn call(&mut self, name: &str, args: &[lucent::Symbol]) -> Result<Vec<lucent::Symbol>, String> {
+        self.values(name, args).map_err(|e| {
+            let message = e.to_string();
+            self.raised.get_or_insert(e);
+            message
+        })
+    }
 }

@@ -2,36 +2,72 @@
 //! solve callback so that it can be kept (clingo's models die with the callback; keeping them
 //! here is harmless).
 //!
-//! Invariant: `shown` is what `#show` outputs (atoms and terms), `atoms` every true atom with a
-//! symbol; `symbols(...)` combines them as clingo's selectors do.
+//! Invariants: `shown` is what `#show` outputs (atoms and terms), `atoms` every true atom with a
+//! symbol; `symbols(...)` combines them as clingo's selectors do. A model copies only its true
+//! atoms' numbers and its shown text when it is made; the symbols are built on first use, from
+//! the Control's table of atom symbols ([`AtomNames`], shared, extended as atoms are added and
+//! never changed, since an atom keeps its symbol), so a callback that only counts models (or
+//! reads the costs) does not pay for the whole answer set as symbols.
+
+use std::sync::{Arc, OnceLock};
 
 use pyo3::prelude::*;
 
 use crate::symbol::{to_symbol, Symbol};
 
+/// The symbol of each atom (`[a - 1]`), `None` for auxiliary atoms.
+pub type AtomNames = Arc<Vec<Option<lucent::Symbol>>>;
+
 /// An answer set (clingo's `Model`).
 #[pyclass(frozen, module = "lucent")]
 pub struct Model {
     number: usize,
-    shown: Vec<lucent::Symbol>,
-    /// Sorted, for `contains`.
-    atoms: Vec<lucent::Symbol>,
     costs: Vec<i64>,
     optimal: bool,
+    /// The true atoms, increasing.
+    atom_ids: Vec<u32>,
+    names: AtomNames,
+    /// The shown symbols as the solver printed them.
+    shown_text: Vec<String>,
+    shown: OnceLock<Vec<lucent::Symbol>>,
+    /// Sorted, for `contains`.
+    atoms: OnceLock<Vec<lucent::Symbol>>,
 }
 
 impl Model {
-    /// Copies the model the solver reports.
-    pub fn new(m: &lucent::Model<'_>) -> Model {
-        let mut atoms = m.atoms();
-        atoms.sort();
+    /// Copies the model the solver reports; `names` covers its atoms.
+    pub fn new(m: &lucent::Model<'_>, names: AtomNames) -> Model {
         Model {
             number: m.number(),
-            shown: m.symbols(),
-            atoms,
             costs: m.costs().to_vec(),
             optimal: m.optimal(),
+            atom_ids: m.atom_ids().to_vec(),
+            names,
+            shown_text: m.shown_text().to_vec(),
+            shown: OnceLock::new(),
+            atoms: OnceLock::new(),
         }
+    }
+
+    fn shown(&self) -> &[lucent::Symbol] {
+        self.shown.get_or_init(|| {
+            self.shown_text
+                .iter()
+                .filter_map(|s| lucent::Symbol::parse(s).ok())
+                .collect()
+        })
+    }
+
+    fn atoms(&self) -> &[lucent::Symbol] {
+        self.atoms.get_or_init(|| {
+            let mut atoms: Vec<lucent::Symbol> = self
+                .atom_ids
+                .iter()
+                .filter_map(|&a| self.names.get(a as usize - 1).cloned().flatten())
+                .collect();
+            atoms.sort();
+            atoms
+        })
     }
 }
 
@@ -56,17 +92,17 @@ impl Model {
         }
         let mut out: Vec<lucent::Symbol> = Vec::new();
         if atoms {
-            out.extend(self.atoms.iter().cloned());
+            out.extend(self.atoms().iter().cloned());
         }
         if shown {
-            for s in &self.shown {
+            for s in self.shown() {
                 if !out.contains(s) {
                     out.push(s.clone());
                 }
             }
         } else if terms {
-            for s in &self.shown {
-                if self.atoms.binary_search(s).is_err() && !out.contains(s) {
+            for s in self.shown() {
+                if self.atoms().binary_search(s).is_err() && !out.contains(s) {
                     out.push(s.clone());
                 }
             }
@@ -76,7 +112,7 @@ impl Model {
 
     /// Whether the atom `symbol` is true.
     fn contains(&self, symbol: &Bound<'_, PyAny>) -> PyResult<bool> {
-        Ok(self.atoms.binary_search(&to_symbol(symbol)?).is_ok())
+        Ok(self.atoms().binary_search(&to_symbol(symbol)?).is_ok())
     }
 
     /// The costs, highest priority first.
@@ -98,8 +134,7 @@ impl Model {
     }
 
     fn __str__(&self) -> String {
-        let text: Vec<String> = self.shown.iter().map(|s| s.to_string()).collect();
-        text.join(" ")
+        self.shown_text.join(" ")
     }
 
     fn __repr__(&self) -> String {

@@ -42,7 +42,7 @@ impl Control {
     /// atoms added here keep their numbers when parts are grounded later.
     pub fn backend(&mut self) -> Result<Backend<'_>, Error> {
         if self.groundings == 0 {
-            self.ground_blocks(&[], &[])?;
+            self.ground_blocks(&[], &[], None)?;
         }
         Ok(Backend { ctl: self })
     }

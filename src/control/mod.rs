@@ -55,8 +55,10 @@
 //!   and warnings collect in [`Control::diagnostics`]. Nothing here prints.
 //! - Reading files happens only in [`Control::load`] and for `#include` (clingo's `load`).
 
+mod args;
 mod backend;
 mod context;
+mod functions;
 pub mod incmode;
 mod model;
 mod parts;
@@ -78,7 +80,9 @@ use crate::ground::{self, GroundConfig, Grounding};
 use crate::solve::{self, Solver};
 use crate::syntax::ast::{self, Dialect, Program, Statement, StatementKind};
 
+pub use args::ArgsError;
 pub use backend::Backend;
+pub use functions::Context;
 use model::Names;
 pub use model::{Model, OwnedModel};
 pub use propagator::{Assignment, Literal, PropagateControl, PropagateInit, Propagator};

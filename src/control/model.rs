@@ -42,6 +42,17 @@ impl Model<'_> {
             .collect()
     }
 
+    /// The true atoms' numbers, increasing (every true atom, with a symbol or not).
+    pub fn atom_ids(&self) -> &[AtomId] {
+        &self.raw.atoms
+    }
+
+    /// The shown symbols (`#show`) as clingo prints them, in output order: what
+    /// [`Model::symbols`] parses.
+    pub fn shown_text(&self) -> &[String] {
+        &self.raw.symbols
+    }
+
     /// Every true atom with a symbol: the whole answer set (shown or not), in atom order.
     pub fn atoms(&self) -> Vec<Symbol> {
         // Sized once: nearly every true atom has a symbol.

@@ -303,6 +303,24 @@ impl Control {
     /// Parts without parameters are grounded first, together; then each group of parts whose
     /// parameter bindings agree. A part instance grounded before is skipped.
     pub fn ground(&mut self, parts: &[Part]) -> Result<(), Error> {
+        self.ground_in(parts, None)
+    }
+
+    /// [`Control::ground`] with `context` supplying the functions that `@f(...)` calls
+    /// (clingo's `ground(parts, context)`; see [`Context`]).
+    pub fn ground_with_context(
+        &mut self,
+        parts: &[Part],
+        context: &mut dyn Context,
+    ) -> Result<(), Error> {
+        self.ground_in(parts, Some(context))
+    }
+
+    fn ground_in(
+        &mut self,
+        parts: &[Part],
+        mut context: Option<&mut (dyn Context + '_)>,
+    ) -> Result<(), Error> {
         let mut plain: Vec<usize> = Vec::new();
         let mut groups: Vec<(Binding, Vec<usize>)> = Vec::new();
         let mut requested: Vec<Part> = Vec::new();
@@ -344,10 +362,10 @@ impl Control {
             }
         }
         if !plain.is_empty() || self.groundings == 0 && groups.is_empty() {
-            self.ground_blocks(&plain, &[])?;
+            self.ground_blocks(&plain, &[], context.as_deref_mut())?;
         }
         for (binding, blocks) in groups {
-            self.ground_blocks(&blocks, &binding)?;
+            self.ground_blocks(&blocks, &binding, context.as_deref_mut())?;
         }
         self.grounded.extend(requested);
         Ok(())
@@ -359,6 +377,7 @@ impl Control {
         &mut self,
         blocks: &[usize],
         binding: &[(String, Symbol)],
+        context: Option<&mut (dyn Context + '_)>,
     ) -> Result<(), Error> {
         let first = self.groundings == 0;
         let mut statements: Vec<Statement> = Vec::new();
@@ -408,9 +427,12 @@ impl Control {
             .consts
             .extend(binding.iter().map(|(n, v)| (n.clone(), v.to_term())));
         let syms = std::mem::take(&mut self.syms);
+        let mut adapter = context.map(functions::Adapter);
         let mut grounding = self
             .session
-            .ground(&program, Some(&self.sources), &gconfig, syms);
+            .ground(&program, Some(&self.sources), &gconfig, syms, {
+                adapter.as_mut().map(|a| a as &mut dyn crate::ground::Calls)
+            });
         self.syms = std::mem::take(&mut grounding.symbols);
         let mut found = std::mem::take(&mut grounding.diagnostics);
         for &k in &self.config.disabled_warnings {

@@ -20,7 +20,7 @@
 use crate::base::{Diagnostic, Diagnostics, SourceMap};
 use crate::syntax::ast;
 
-use super::instantiate::{self, GroundAtom, Grounder, Limits};
+use super::instantiate::{self, Calls, GroundAtom, Grounder, Limits};
 use super::rewrite::{self, Pred};
 use super::simplify::{self, KNOWN_FACT, NUMBERED};
 use super::symbol::Symbols;
@@ -78,14 +78,17 @@ impl Session {
     /// Grounds `program` on top of the earlier groundings, over `syms`, the table they used
     /// (it comes back in [`Grounding::symbols`]). Rules, outputs, externals and provenance of
     /// the result are this grounding's only; statement ids count its own statements.
+    /// `calls`, when given, evaluates the external function calls `@f(...)` (without it they
+    /// are reported).
     pub fn ground(
         &mut self,
         program: &ast::Program,
         sources: Option<&SourceMap>,
         config: &GroundConfig,
         syms: Symbols,
+        calls: Option<&mut dyn Calls>,
     ) -> Grounding {
-        self.ground_part(program, sources, config, syms, true)
+        self.ground_part(program, sources, config, syms, true, calls)
     }
 
     /// [`Session::ground`]; `carry`: keep what a later grounding needs (the frozen and fact
@@ -98,6 +101,7 @@ impl Session {
         config: &GroundConfig,
         mut syms: Symbols,
         carry: bool,
+        calls: Option<&mut dyn Calls>,
     ) -> Grounding {
         let mut diags = Diagnostics::new(config.message_limit.unwrap_or(20));
         let empty = |diags, syms, statement_spans| Grounding {
@@ -129,6 +133,7 @@ impl Session {
         let (compiled, projections) = {
             let mut rw = rewrite::Rewriter::new(&mut syms, &mut diags, sources);
             rw.resume(self.preds.clone(), self.projections);
+            rw.calls = calls.is_some();
             rw.program(program, &config.consts);
             let p = rw.projections();
             (rw.out, p)
@@ -153,6 +158,9 @@ impl Session {
         );
         if carry && self.groundings == 0 {
             g.reserve(RULES_PER_STATEMENT * compiled.stmts.len());
+        }
+        if let Some(calls) = calls {
+            g.set_calls(calls);
         }
         g.run(&compiled);
         g.release_dedup();

@@ -26,6 +26,7 @@ pub mod reference;
 use crate::base::{Diagnostic, Diagnostics, SourceMap, Span};
 use crate::syntax::ast;
 
+pub(crate) use instantiate::Calls;
 pub use instantiate::{Limits, StopReason};
 pub use program::GroundProgram;
 
@@ -163,7 +164,14 @@ pub fn ground(
     sources: Option<&SourceMap>,
     config: &GroundConfig,
 ) -> Grounding {
-    incremental::Session::new().ground_part(program, sources, config, symbol::Symbols::new(), false)
+    incremental::Session::new().ground_part(
+        program,
+        sources,
+        config,
+        symbol::Symbols::new(),
+        false,
+        None,
+    )
 }
 
 /// The [`Grounding`] of a finished instantiation, one-shot or incremental: the limit error added
@@ -175,7 +183,7 @@ fn finished(
     symbols: symbol::Symbols,
     stopped: Option<StopReason>,
 ) -> Grounding {
-    if let Some(reason) = stopped {
+    if let Some(reason) = stopped.filter(|&r| r != StopReason::Error) {
         diags.push(stopped_error(reason, &statement_spans));
     }
     let error = diags.has_errors();
@@ -205,6 +213,7 @@ fn stopped_error(reason: StopReason, statement_spans: &[Span]) -> Diagnostic {
                 "grounding stopped: the size limit on ground rules and atoms was exceeded"
             }
             StopReason::Deadline => "grounding stopped: the time limit was reached",
+            StopReason::Error => "grounding stopped: an error was reported",
         },
     )
 }

@@ -396,7 +396,8 @@ pub enum TermKind {
         /// For tuples: a trailing comma was written, as in `(a,)`.
         trailing_comma: bool,
     },
-    /// An external function call `@name(args)`: parsed, reported as unsupported.
+    /// An external function call `@name(args)`: the grounder calls the grounding context's
+    /// function `name` once the arguments are ground.
     ScriptCall {
         /// The function name.
         name: String,

@@ -1,10 +1,12 @@
-//! The `control` layer's integration tests: multi-shot control, incremental mode and provenance.
+//! The `control` layer's integration tests: multi-shot control, incremental mode, provenance
+//! and grounding contexts.
 //!
 //! One test binary per layer (issue 29): each module is one former `tests/*.rs` file.
 
 #[path = "../support/mod.rs"]
 mod support;
 
+mod functions;
 mod grid;
 mod incmode;
 mod multishot;

@@ -290,6 +290,25 @@ impl<'a> Grounder<'a> {
                     }
                 }
             }
+            NLit::Call {
+                pat,
+                name,
+                args,
+                span,
+            } => {
+                let Some(values) = self.call(*name, args, *span, &ctx.binding) else {
+                    return;
+                };
+                for s in values {
+                    if pat.matches(&mut self.syms, s, &mut ctx.binding) {
+                        self.join(ctx, lits, i + 1, ranges, k);
+                    }
+                    ctx.binding.undo(mark);
+                    if self.stopped.is_some() {
+                        return;
+                    }
+                }
+            }
             NLit::Agg(agg)
                 if self.optimistic && agg.binder.is_none() && self.reads_incomplete(agg) =>
             {
@@ -442,6 +461,10 @@ impl Grounder<'_> {
                     tv.push(hi);
                     tv.push(pat);
                 }
+                NLit::Call { pat, args, .. } => {
+                    args.iter().for_each(|t| tv.push(t));
+                    tv.push(pat);
+                }
                 NLit::Bool(_) | NLit::Agg(_) => {}
             }
         }
@@ -515,6 +538,17 @@ impl Grounder<'_> {
                                 }
                                 _ => 100.0,
                             })
+                        } else {
+                            None
+                        }
+                    }
+                    NLit::Call { pat, args, .. } => {
+                        let n = args.len();
+                        if (0..n).all(|k| tv.bound_in(f + k, &bound))
+                            && tv.binds_in(f + n, pat, &bound, &mut newly)
+                        {
+                            // Most functions return one symbol: an assignment.
+                            Some(1.0)
                         } else {
                             None
                         }
@@ -607,7 +641,7 @@ pub(super) fn lit_binds(l: &NLit, bound: &VarSet, out: &mut VarSet) {
                 lhs.binds(bound, out);
             }
         }
-        NLit::Interval { pat, .. } => {
+        NLit::Interval { pat, .. } | NLit::Call { pat, .. } => {
             pat.binds(bound, out);
         }
         NLit::Agg(a) => {

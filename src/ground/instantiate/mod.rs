@@ -29,15 +29,18 @@
 //! instances), `join` (candidates, indexes, joins, body order), `conditional` (conditional
 //! body literals and the helper atoms for negations), `aggregate` (aggregate elements and
 //! guards, saturation), `emit` (ground rules from a body's solutions), `schedule` (component
-//! order, semi-naive and naive rounds, warnings).
+//! order, semi-naive and naive rounds, warnings), `call` (external function calls `@f(...)`
+//! through the grounding context).
 
 mod aggregate;
+mod call;
 mod conditional;
 mod emit;
 mod join;
 mod provenance;
 mod schedule;
 
+pub use call::Calls;
 pub use join::cmp_holds;
 
 use hashbrown::HashMap;
@@ -110,6 +113,8 @@ pub enum StopReason {
     SizeLimit,
     /// The deadline passed.
     Deadline,
+    /// An error was reported that ends the grounding (a failed external function call).
+    Error,
 }
 
 /// What is known about one atom.
@@ -286,6 +291,10 @@ pub struct Grounder<'a> {
     defined: Vec<bool>,
     /// Vectors reused from one statement to the next.
     scratch: Scratch,
+    /// The grounding context's functions, for `@f(...)`.
+    calls: Option<&'a mut (dyn Calls + 'a)>,
+    /// The values of the calls made so far.
+    call_cache: call::CallCache,
 }
 
 /// What the grounder records for provenance (when provenance is on; empty otherwise).
@@ -518,6 +527,8 @@ impl<'a> Grounder<'a> {
             touched: Vec::new(),
             defined: state.defined,
             scratch: Scratch::default(),
+            calls: None,
+            call_cache: call::CallCache::new(),
         }
     }
 

@@ -1,9 +1,9 @@
 //! Lowering: pool-free terms, atoms, literals, guards, body aggregates, conditions and head
-//! elements to their rewritten forms (`NTerm`, `NLit`, ...); intervals and anonymous
-//! variables become fresh variables, ground arithmetic is folded.
+//! elements to their rewritten forms (`NTerm`, `NLit`, ...); intervals, external function
+//! calls `@f(...)` and anonymous variables become fresh variables, ground arithmetic is folded.
 //!
-//! Invariant: every variable gets a slot of the statement's `Vars`; an interval adds the
-//! literal that binds its variable.
+//! Invariant: every variable gets a slot of the statement's `Vars`; an interval or a call adds
+//! the literal that binds its variable (gringo's script literal for calls).
 
 use super::pool::*;
 use super::*;
@@ -41,9 +41,29 @@ impl Rewriter<'_> {
                 let name_sym = self.name_id(name);
                 self.fold_fun(name_sym, false, nargs)
             }
-            TermKind::ScriptCall { .. } => {
-                self.unsupported(t.span, "script calls (@f) are not supported by Lucent");
-                return None;
+            TermKind::ScriptCall { name, args } => {
+                if !self.calls {
+                    self.unsupported(
+                        t.span,
+                        "external function call without a grounding context (lucent runs no \
+                         #script; from Rust use Control::ground_with_context, from Python \
+                         ground(parts, context=...))",
+                    );
+                    return None;
+                }
+                let mut nargs = Vec::with_capacity(args.len());
+                for a in args {
+                    nargs.push(self.term(a, vars, extra)?);
+                }
+                let name = self.syms.names.intern(name);
+                let v = vars.fresh(&mut self.syms.names, "Call", t.span);
+                extra.push(NLit::Call {
+                    pat: NTerm::Var(v),
+                    name,
+                    args: nargs,
+                    span: t.span,
+                });
+                NTerm::Var(v)
             }
             TermKind::Unary { op, arg } => {
                 let a = self.term(arg, vars, extra)?;

@@ -100,6 +100,18 @@ pub enum NLit {
         /// Upper end.
         hi: NTerm,
     },
+    /// `pat = @name(args)`: an external function call (`instantiate::call`), binding the
+    /// variables of `pat` to each symbol the grounding context returns for the ground `args`.
+    Call {
+        /// Matched against each value.
+        pat: NTerm,
+        /// The function's name.
+        name: Sym,
+        /// Arguments, ground when the literal is reached.
+        args: Vec<NTerm>,
+        /// Where the call was written.
+        span: Span,
+    },
     /// `#true` / `#false`.
     Bool(bool),
     /// A body aggregate.
@@ -306,6 +318,9 @@ pub struct Rewriter<'a> {
     projections: u32,
     /// Set while rewriting a statement made for another one's translation.
     aux_role: Option<AuxKind>,
+    /// A grounding context supplies external functions: `@f(...)` becomes a call literal
+    /// (without one it is reported).
+    pub calls: bool,
     /// The ids of the tree's names in `syms.names`, direct-mapped by
     /// [`ast::Name::quick_hash`]: a program names few predicates, constants and variables
     /// many times, and a hit costs a hash of the name's bytes and one compare instead of the
@@ -442,6 +457,7 @@ impl<'a> Rewriter<'a> {
             sorts: Vec::new(),
             current: (0, Span::default()),
             aux_role: None,
+            calls: false,
             projections: 0,
             name_ids: vec![None; NAME_SLOTS],
             pred_ids: vec![None; PRED_SLOTS],

@@ -20,6 +20,10 @@ pub fn lit_vars(l: &NLit, out: &mut Vec<u32>) {
             lo.vars(out);
             hi.vars(out)
         }
+        NLit::Call { pat, args, .. } => {
+            pat.vars(out);
+            args.iter().for_each(|t| t.vars(out))
+        }
         NLit::Bool(_) => {}
         NLit::Agg(a) => {
             a.guards.iter().for_each(|(_, t)| t.vars(out));
@@ -76,6 +80,13 @@ pub(super) fn readiness(
         NLit::Interval { pat, lo, hi } => {
             if lo.bound_by(bound) && hi.bound_by(bound) && pat.binds(bound, newly) {
                 Some(3)
+            } else {
+                None
+            }
+        }
+        NLit::Call { pat, args, .. } => {
+            if args.iter().all(|t| t.bound_by(bound)) && pat.binds(bound, newly) {
+                Some(2)
             } else {
                 None
             }

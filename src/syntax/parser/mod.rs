@@ -12,8 +12,10 @@
 //! - Every loop consumes a token per iteration or stops; the statement loop asserts progress.
 //! - Nesting (parentheses, unary operators, operator chains, aggregates) is capped at
 //!   [`MAX_DEPTH`] levels, so hostile input cannot overflow the stack.
-//! - Embedded scripts (`#script`, `@f(...)`) are parsed and kept, and reported once per file
-//!   with a single "unsupported" error.
+//! - `#script` blocks are parsed and kept, and reported once per file with a single
+//!   "unsupported" error. External function calls `@f(...)` are plain terms here: the grounder
+//!   evaluates them through a grounding context (`control::Context`), or reports them when
+//!   there is none.
 //! - Memory is proportional to the input: tokens are produced on demand (one token of
 //!   lookahead beyond the current one), and the tree owns its strings.
 //!
@@ -41,9 +43,9 @@ pub(crate) use cursor::{cmp_op, Cursor, Failed, PResult, TermGrammar};
 /// test threads) even in unoptimized builds, where one level costs about 5 KiB of stack.
 pub const MAX_DEPTH: u32 = 256;
 
-/// The message of the single diagnostic reported for embedded scripts.
-pub const UNSUPPORTED_SCRIPT: &str =
-    "embedded scripts (#script, @f(...)) are not supported by lucent";
+/// The message of the single diagnostic reported for `#script` blocks.
+pub const UNSUPPORTED_SCRIPT: &str = "#script blocks are not supported by lucent (it embeds no \
+     script interpreter; @f(...) calls a function of the grounding context instead)";
 
 /// The result of parsing one file: the tree and every diagnostic.
 #[derive(Clone, Debug)]

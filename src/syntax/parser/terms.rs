@@ -175,8 +175,7 @@ impl<'a> Cursor<'a> {
                 _ => return Err(self.unexpected(&[])),
             },
             T::At => {
-                let at = self.bump();
-                self.report_script(self.span(at.start, self.tok.end.max(at.end)));
+                self.bump();
                 let name = self.identifier()?;
                 let mut args = Vec::new();
                 if self.eat(T::LParen) {
