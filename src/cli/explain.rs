@@ -82,7 +82,7 @@ const OPTIONS: &[OptionSpec] = &[
     opt("profile", None, Value, "NAME", "the description's profile", "Options"),
     opt("const", Some('c'), Value, "NAME=VALUE", "a switch of the description (or a constant of a clingo program)", "Options"),
     opt("max-horizon", None, Value, "H", "the planner's horizon budget (default 10)", "Options"),
-    opt("full", None, Flag, "", "full mode: every reason, not only the first", "Options"),
+    opt("full", None, Flag, "", "full mode: every reason, not only the first (with --why: every rule instance for the atom whose body holds; with --why-not: every failing body literal of each rule)", "Options"),
     opt("outf", None, Value, "N", "0: English (default); 2: JSON {\"type\", \"answer\", \"literals\", \"tree\"}", "Options"),
     opt("dot", None, Value, "FILE", "the proof tree as Graphviz DOT", "Options"),
     opt("svg", None, Value, "FILE", "the proof tree as SVG", "Options"),
@@ -663,6 +663,8 @@ fn write_pictures(answer: &Answer, a: &Args, err: &mut dyn Write) -> std::io::Re
         let program = a.why.is_some() || a.why_not.is_some();
         let text = if svg && program {
             crate::explain::draw_graph::svg(tree)
+        } else if program {
+            crate::explain::draw_graph::dot(tree)
         } else if svg {
             draw::svg(tree)
         } else {
@@ -831,11 +833,13 @@ fn run_generic(a: &Args, out: &mut dyn Write, err: &mut dyn Write) -> std::io::R
     let answers: Vec<Answer> = oracles
         .iter()
         .map(|oracle| {
-            crate::explain::query::explain(oracle, &query, negative).unwrap_or_else(|e| Answer {
-                kind: if negative { "why_not" } else { "why" },
-                text: format!("The explanation failed its own check ({e}); it is not given."),
-                literals: Vec::new(),
-                tree: None,
+            crate::explain::query::explain(oracle, &query, negative, a.full).unwrap_or_else(|e| {
+                Answer {
+                    kind: if negative { "why_not" } else { "why" },
+                    text: format!("The explanation failed its own check ({e}); it is not given."),
+                    literals: Vec::new(),
+                    tree: None,
+                }
             })
         })
         .collect();

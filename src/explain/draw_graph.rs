@@ -1,4 +1,5 @@
-//! A proof as a graph picture for programs (`lucent explain PROGRAM.lp --why A --svg F`): each
+//! A proof as a graph picture for programs (`lucent explain PROGRAM.lp --why A --svg F`, and as
+//! Graphviz DOT with `--dot F`): each
 //! literal drawn once, in a box with the rule instance that supports (or fails to support) it
 //! and the rule's location, whatever the number of places the proof uses it; readable at 50
 //! nodes because rows wrap at a fixed width instead of growing with the tree's bands.
@@ -242,6 +243,100 @@ pub fn svg(tree: &ProofTree) -> String {
     }
     out.push_str("</svg>\n");
     out
+}
+
+/// The proof as Graphviz DOT, each literal once (merged as in [`svg`], by literal and truth),
+/// with its rule instance and location; an edge per distinct (parent, child) pair, labelled
+/// with the blocked rules (all of them) under a literal that does not hold; the answer's path
+/// in green.
+pub fn dot(tree: &ProofTree) -> String {
+    let (boxes, _) = merge(tree);
+    let index: HashMap<(Symbol, bool), usize> = boxes
+        .iter()
+        .enumerate()
+        .map(|(b, cell)| {
+            let n = tree.node(cell.node);
+            ((n.literal.clone(), n.holds), b)
+        })
+        .collect();
+    let on_path = |b: &Cell| tree.on_path(b.node);
+    let mut out = String::from("digraph proof {\n  rankdir=TB;\n");
+    out.push_str(
+        "  node [shape=box, style=\"rounded,filled\", fillcolor=white, fontname=\"monospace\"];\n",
+    );
+    out.push_str("  edge [arrowhead=none];\n");
+    for (b, cell) in boxes.iter().enumerate() {
+        let n = tree.node(cell.node);
+        let label: Vec<String> = cell.lines.iter().map(|l| dot_escape(l)).collect();
+        let mut attrs = format!("label=\"{}\"", label.join("\\n"));
+        if on_path(cell) {
+            let _ = write!(
+                attrs,
+                ", color=\"{PATH_STROKE}\", fillcolor=\"{PATH_FILL}\", penwidth=2"
+            );
+        } else if !n.holds {
+            let _ = write!(attrs, ", fillcolor=\"{FALSE_FILL}\"");
+        }
+        if n.kind == Kind::Unsupported {
+            attrs.push_str(", style=\"rounded,dashed,filled\"");
+        }
+        let _ = writeln!(out, "  n{b} [{attrs}];");
+    }
+    // Distinct (parent, child) pairs in first-met order, each with the blocked rules it stands
+    // for (several when a false literal blocks more than one rule of its parent).
+    let mut edges: Vec<((usize, usize), Vec<String>)> = Vec::new();
+    for (b, cell) in boxes.iter().enumerate() {
+        let n = tree.node(cell.node);
+        for (i, &c) in n.children.iter().enumerate() {
+            let Some(child) = tree.nodes.get(c.index()) else {
+                continue;
+            };
+            let Some(&cb) = index.get(&(child.literal.clone(), child.holds)) else {
+                continue;
+            };
+            if cb == b {
+                continue;
+            }
+            let k = match edges.iter().position(|e| e.0 == (b, cb)) {
+                Some(k) => k,
+                None => {
+                    edges.push(((b, cb), Vec::new()));
+                    edges.len() - 1
+                }
+            };
+            if n.kind == Kind::Unsupported {
+                if let Some(r) = n.blocked.get(i) {
+                    if !edges[k].1.contains(&r.label) {
+                        edges[k].1.push(r.label.clone());
+                    }
+                }
+            }
+        }
+    }
+    for ((b, cb), blocks) in &edges {
+        let mut attrs = Vec::new();
+        if !blocks.is_empty() {
+            attrs.push(format!(
+                "label=\"blocks {}\"",
+                dot_escape(&blocks.join("; "))
+            ));
+        }
+        if on_path(&boxes[*b]) && on_path(&boxes[*cb]) {
+            attrs.push(format!("color=\"{PATH_STROKE}\", penwidth=2"));
+        }
+        let attrs = if attrs.is_empty() {
+            String::new()
+        } else {
+            format!(" [{}]", attrs.join(", "))
+        };
+        let _ = writeln!(out, "  n{b} -> n{cb}{attrs};");
+    }
+    out.push_str("}\n");
+    out
+}
+
+fn dot_escape(s: &str) -> String {
+    s.replace('\\', "\\\\").replace('"', "\\\"")
 }
 
 /// The distinct literals drawn, in box order (for tests: each appears once).

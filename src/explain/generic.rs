@@ -20,10 +20,11 @@ use super::unfired::{self, bindings_json, with};
 use crate::control::Symbol;
 
 /// What a step's text is written from: the oracle, the answer set's true atoms (for the
-/// source-level views), and the notes the JSON carries.
+/// source-level views; built on first use, as a proof of plain rules never needs them), and
+/// the notes the JSON carries.
 struct Ctx<'a> {
     oracle: &'a ProgramOracle,
-    world: World,
+    world: std::cell::OnceCell<World>,
     notes: Vec<serde_json::Value>,
 }
 
@@ -31,9 +32,15 @@ impl<'a> Ctx<'a> {
     fn new(oracle: &'a ProgramOracle) -> Self {
         Ctx {
             oracle,
-            world: World::new(oracle.true_literals()),
+            world: std::cell::OnceCell::new(),
             notes: Vec::new(),
         }
+    }
+
+    /// The answer set's true atoms as a [`World`].
+    fn world(&self) -> &World {
+        self.world
+            .get_or_init(|| World::new(self.oracle.true_literals()))
     }
 }
 
@@ -168,6 +175,72 @@ fn why_not_text(
     })
 }
 
+/// What `--full` adds to an answer about `atom`: for a true atom, every ground rule instance
+/// for it whose body holds in the answer set (the proof above uses one; the others are further
+/// reasons, each a rule of the ground program the re-check would accept as a support step,
+/// though one may rest on the atom itself); for a false atom, every body literal of each of
+/// its ground rules that fails (the answer names only the first). Appended to the text, and
+/// as a note `{"full": [...]}` in the JSON's `source`.
+pub fn add_full(oracle: &ProgramOracle, atom: &Symbol, answer: &mut Answer) {
+    let rules = oracle.rules_for(atom);
+    let holds = oracle.holds(atom);
+    let mut notes = Vec::new();
+    let mut text = String::new();
+    if holds {
+        let supports: Vec<&RuleInstance> = rules.iter().filter(|r| body_holds(oracle, r)).collect();
+        text.push_str(&format!(
+            "\nEvery rule instance for {atom} whose body holds ({}):",
+            supports.len()
+        ));
+        for r in supports {
+            text.push_str(&format!("\n  {} `{r}`", r.label));
+            notes.push(serde_json::json!({"label": r.label, "rule": r.to_string()}));
+        }
+    } else if !rules.is_empty() {
+        text.push_str(&format!(
+            "\nEvery failing body literal of each ground rule for {atom} ({} rules):",
+            rules.len()
+        ));
+        for r in &rules {
+            let failing: Vec<String> = r
+                .body
+                .iter()
+                .filter_map(|b| match b {
+                    BodyLiteral::Pos(t) if !oracle.holds(t) => Some(t.to_string()),
+                    BodyLiteral::Not(t) if oracle.holds(t) => Some(format!("not {t}")),
+                    _ => None,
+                })
+                .collect();
+            let shown = if failing.is_empty() {
+                // A choice whose body holds: nothing failed, the choice left the atom out.
+                "none (the choice left it out)".to_string()
+            } else {
+                failing.join(", ")
+            };
+            text.push_str(&format!("\n  {} `{r}`: {shown}", r.label));
+            notes.push(serde_json::json!({
+                "label": r.label, "rule": r.to_string(), "failing": failing,
+            }));
+        }
+    } else {
+        return;
+    }
+    // Internal atoms (`#aux(N)`) of a rule's translation are not shown in the text.
+    if text.contains("#aux") {
+        text = text
+            .lines()
+            .filter(|l| !l.contains("#aux"))
+            .collect::<Vec<_>>()
+            .join("\n");
+    }
+    answer.text.push('\n');
+    answer.text.push_str(&text);
+    if let Some(tree) = &mut answer.tree {
+        tree.source_notes
+            .push(serde_json::json!({"atom": atom.to_string(), "full": notes}));
+    }
+}
+
 /// The first body literal of `r` that fails in the answer set, and whether its atom holds
 /// (a default-negated literal fails when it does).
 fn first_failing(oracle: &dyn Oracle, r: &RuleInstance) -> Option<(Symbol, bool)> {
@@ -196,7 +269,7 @@ fn blocked_line(ctx: &mut Ctx, rule: &RuleInstance, blocker: &Symbol, holds: boo
             let s = &ctx.oracle.labels.statements[stmt];
             let failing = source::body_aggregates(s)
                 .into_iter()
-                .filter_map(|(a, neg)| Some((source::aggregate(a, &b, &ctx.world)?, neg)))
+                .filter_map(|(a, neg)| Some((source::aggregate(a, &b, ctx.world())?, neg)))
                 .find(|(e, neg)| e.holds == *neg);
             if let Some((e, neg)) = failing {
                 let blocker = source::Blocker::Aggregate(Box::new(e), neg);
@@ -234,7 +307,7 @@ fn blocked_line(ctx: &mut Ctx, rule: &RuleInstance, blocker: &Symbol, holds: boo
 /// Why not, for an atom without a ground rule: the source statements that could derive it,
 /// each with the first body literal that cannot hold, explained one level down.
 fn removed(ctx: &mut Ctx, atom: &Symbol, text: &mut String, literals: &mut Vec<Symbol>) {
-    let cands = unfired::candidates(ctx.oracle, &ctx.world, atom);
+    let cands = unfired::candidates(ctx.oracle, ctx.world(), atom);
     if cands.is_empty() {
         text.push_str(" No rule has it in its head.");
         return;
@@ -254,7 +327,7 @@ fn source_rules(
     text: &mut String,
     literals: &mut Vec<Symbol>,
 ) {
-    let cands: Vec<unfired::Candidate> = unfired::candidates(ctx.oracle, &ctx.world, atom)
+    let cands: Vec<unfired::Candidate> = unfired::candidates(ctx.oracle, ctx.world(), atom)
         .into_iter()
         .filter(|c| !shown.contains(&c.label.as_str()))
         .collect();
@@ -333,7 +406,7 @@ fn lead(b: &Bindings) -> String {
 fn one_level_down(ctx: &Ctx, a: &Symbol) -> String {
     let rules = ctx.oracle.rules_for(a);
     if rules.is_empty() {
-        let cands = unfired::candidates(ctx.oracle, &ctx.world, a);
+        let cands = unfired::candidates(ctx.oracle, ctx.world(), a);
         if cands.is_empty() {
             return format!("{a}: no rule has it in its head");
         }
@@ -375,7 +448,7 @@ fn not_chosen(ctx: &mut Ctx, atom: &Symbol, r: &RuleInstance, text: &mut String)
         r.label,
         with(&b)
     ));
-    let violations = unfired::if_true(ctx.oracle, &ctx.world, atom, origin.as_ref());
+    let violations = unfired::if_true(ctx.oracle, ctx.world(), atom, origin.as_ref());
     if violations.is_empty() {
         text.push_str(
             " It could be: no constraint, bound or optimization would be violated with the \
@@ -474,7 +547,7 @@ impl Writer<'_> {
         );
         let mut evals = Vec::new();
         for (a, neg) in aggs {
-            if let Some(e) = source::aggregate(a, &b, &ctx.world) {
+            if let Some(e) = source::aggregate(a, &b, ctx.world()) {
                 let not = if neg { "not " } else { "" };
                 let verdict = if e.holds != neg { "holds" } else { "fails" };
                 line.push_str(&format!(

@@ -22,7 +22,9 @@
 //! Invariants: every rule instance returned has a head the caller asked for and a body read off the ground program and provenance, never off
 //! a tree; the oracle owns its Control, so it can be kept and queried as long as needed.
 
-use std::collections::{HashMap, HashSet};
+// hashbrown with its default hasher (foldhash): the maps are keyed by every atom of the
+// ground program, and SipHash was a fifth of `explain --why` on reachability (perf).
+use hashbrown::{HashMap, HashSet};
 
 use super::pattern::SymbolExt;
 use super::tree::{AxiomKind, BodyLiteral, Oracle, RuleInstance};
@@ -171,12 +173,25 @@ pub struct ProgramOracle {
     pub(super) g_term: Vec<Option<Symbol>>,
     /// Grounder atom of each term.
     pub(super) term_g: HashMap<Symbol, GAtom>,
-    /// Rule instances by head term.
-    heads: HashMap<Symbol, Vec<Source>>,
+    /// Rule instances by head: a ground rule's under its aspif head atom, a rule grounding
+    /// removed under [`DEAD`] | its grounder head atom (keyed by number, not by term: hashing
+    /// and cloning a term per rule head was most of this constructor's time).
+    heads: HashMap<u64, Vec<Source>>,
     /// The application atom of each CR rule (by rule index).
     pub(super) cr_appl: HashMap<u32, u32>,
     /// The labels of the applied CR rules.
     applied_labels: Vec<Symbol>,
+}
+
+/// The key bit of [`ProgramOracle::heads`] for rules grounding removed.
+const DEAD: u64 = 1 << 32;
+
+/// The aspif atom of an internal `#aux(N)` term.
+fn aux_id(t: &Symbol) -> Option<u32> {
+    match (t.name(), t.args()) {
+        (Some("#aux"), [Symbol::Number(n)]) => u32::try_from(*n).ok(),
+        _ => None,
+    }
 }
 
 fn aux_term(atom: u32) -> Symbol {
@@ -205,17 +220,20 @@ impl ProgramOracle {
         let mut g_term = Vec::with_capacity(prov.atoms.len());
         let mut term_g = HashMap::new();
         for g in 1..=prov.atoms.len() as GAtom {
-            let t = prov
-                .atom(g)
-                .and_then(|r| r.sym)
-                .map(|s| ctl.symbol_of_id(s));
+            let rec = prov.atom(g);
+            // An atom of the ground program has its term already; the others are converted.
+            let t = match rec.map(|r| r.aspif) {
+                Some(a) if a != 0 => atom_term.get(a as usize).cloned().flatten(),
+                _ => None,
+            }
+            .or_else(|| rec.and_then(|r| r.sym).map(|s| ctl.symbol_of_id(s)));
             if let Some(t) = &t {
                 term_g.insert(t.clone(), g);
             }
             g_term.push(t);
         }
         let cr_atoms: HashSet<u32> = prog.cr_rules.iter().map(|c| c.appl).collect();
-        let mut heads: HashMap<Symbol, Vec<Source>> = HashMap::new();
+        let mut heads: HashMap<u64, Vec<Source>> = HashMap::new();
         let mut cr_appl = HashMap::new();
         for (i, r) in prog.rules.iter().enumerate() {
             if r.head.is_empty() {
@@ -234,12 +252,7 @@ impl ProgramOracle {
                 if cr_atoms.contains(&h) {
                     continue;
                 }
-                let t = atom_term
-                    .get(h as usize)
-                    .cloned()
-                    .flatten()
-                    .unwrap_or_else(|| aux_term(h));
-                let e = heads.entry(t).or_default();
+                let e = heads.entry(h as u64).or_default();
                 for origin in 0..n {
                     e.push(Source::Ground {
                         rule: i as u32,
@@ -251,8 +264,8 @@ impl ProgramOracle {
         for (i, d) in prov.dead.iter().enumerate() {
             if matches!(d.why, DeadReason::Literal { .. }) {
                 for &h in &d.head {
-                    if let Some(Some(t)) = g_term.get(h as usize - 1) {
-                        let e = heads.entry(t.clone()).or_default();
+                    if let Some(Some(_)) = g_term.get(h as usize - 1) {
+                        let e = heads.entry(DEAD | h as u64).or_default();
                         for origin in 0..d.origins.len().max(1) as u32 {
                             e.push(Source::Dead {
                                 index: i as u32,
@@ -529,11 +542,19 @@ impl Oracle for ProgramOracle {
     }
 
     fn rules_for(&self, head: &Symbol) -> Vec<RuleInstance> {
-        let Some(srcs) = self.heads.get(head) else {
-            return Vec::new();
-        };
+        // The ground rules (under the aspif atom), then the rules grounding removed.
+        let ground = self
+            .term_atom
+            .get(head)
+            .copied()
+            .or_else(|| aux_id(head))
+            .and_then(|a| self.heads.get(&(a as u64)));
+        let dead = self
+            .term_g
+            .get(head)
+            .and_then(|&g| self.heads.get(&(DEAD | g as u64)));
         let mut out: Vec<RuleInstance> = Vec::new();
-        for &s in srcs {
+        for &s in ground.into_iter().chain(dead).flatten() {
             if let Some(r) = self.instance(head, s) {
                 if !out.contains(&r) {
                     out.push(r);

@@ -48,18 +48,24 @@ pub fn matches(oracle: &ProgramOracle, query: &Pattern, holding: bool) -> Vec<Sy
     out
 }
 
-/// Why (or, with `negative`, why not) each atom the query matches.
+/// Why (or, with `negative`, why not) each atom the query matches; with `full`, each with
+/// every reason (`generic::add_full`).
 pub fn explain(
     oracle: &ProgramOracle,
     query: &Pattern,
     negative: bool,
+    full: bool,
 ) -> Result<Answer, AnswerError> {
     let one = |atom: &Symbol| {
-        if negative {
+        let mut a = if negative {
             generic::why_not(oracle, atom)
         } else {
             generic::why(oracle, atom)
+        }?;
+        if full {
+            generic::add_full(oracle, atom, &mut a);
         }
+        Ok(a)
     };
     if let Some(atom) = query.to_symbol() {
         return one(&atom);

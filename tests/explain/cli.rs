@@ -895,3 +895,105 @@ fn a_fifty_node_proof_is_drawn_once_per_literal() {
         }
     }
 }
+
+/// `--full` gives every reason. By hand (`full.lp`, whose only answer set is a, b, p: clingo
+/// -n0, in the file): p holds by both `p :- a.` and `p :- b.`, and without `--full` only the
+/// least proof's rule is named; q's two rules fail on c, and the second also on `not b`, where
+/// plain why-not names one blocker per rule. The proofs are re-checked as in every test.
+#[test]
+fn full_gives_every_reason() {
+    let path = "tests/data/explain/full.lp";
+    let (code, plain, err) = run(&["explain", path, "--why", "p"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!plain.contains("failed its own check"), "{plain}");
+    assert!(!plain.contains("Every rule instance"), "{plain}");
+    let (code, out, err) = run(&["explain", path, "--why", "p", "--full"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with(plain.trim_end()), "{out}");
+    assert!(
+        out.contains("Every rule instance for p whose body holds (2):"),
+        "{out}"
+    );
+    assert!(
+        out.contains("`p :- a.`") && out.contains("`p :- b.`"),
+        "{out}"
+    );
+    let (code, json, err) = run(&["explain", path, "--why-not", "q", "--full", "--outf=2"]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let answer = v["answer"].as_str().unwrap();
+    assert!(!answer.contains("failed its own check"), "{answer}");
+    let full = v["source"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find_map(|n| n.get("full"))
+        .expect("a full note");
+    let mut failing: Vec<String> = full
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["failing"].to_string())
+        .collect();
+    failing.sort();
+    assert_eq!(failing, [r#"["c","not b"]"#, r#"["c"]"#], "{v}");
+    let (_, plain, _) = run(&["explain", path, "--why-not", "q"]);
+    assert!(!plain.contains("Every failing body literal"), "{plain}");
+    assert!(answer.contains("`q :- c, not b.`: c, not b"), "{answer}");
+}
+
+/// `--dot` draws each literal once, as `--svg` does for programs: why far(25) in `chain.lp` and
+/// why not q in `shared_blocker.lp` (where the proof tree has a node for f under each of q's two
+/// rules, so one node per tree node drew f twice) give node labels whose first lines (the
+/// literals) are distinct, every edge joins two declared nodes, and the one edge from q to f
+/// names both blocked rules (lines 8 and 9).
+#[test]
+fn dot_draws_each_literal_once() {
+    let dir = std::env::temp_dir().join(format!("lucent-dot-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let dot = dir.join("p.dot");
+    for (file, flag, atom, at_least) in [
+        ("chain.lp", "--why", "far(25)", 48),
+        ("shared_blocker.lp", "--why-not", "q", 3),
+    ] {
+        let path = format!("tests/data/explain/{file}");
+        let (code, out, err) = run(&["explain", &path, flag, atom, "--dot", dot.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+        assert!(!out.contains("failed its own check"), "{out}");
+        let text = std::fs::read_to_string(&dot).unwrap();
+        let nodes: Vec<(&str, &str)> = text
+            .lines()
+            .filter(|l| l.contains("[label=\"") && !l.contains(" -> "))
+            .filter_map(|l| {
+                let id = l.trim().split(' ').next()?;
+                let label = l.split("label=\"").nth(1)?.split("\\n").next()?;
+                Some((id, label))
+            })
+            .collect();
+        assert!(nodes.len() >= at_least, "{} nodes:\n{text}", nodes.len());
+        let mut literals: Vec<&str> = nodes.iter().map(|n| n.1).collect();
+        literals.sort();
+        literals.dedup();
+        assert_eq!(
+            literals.len(),
+            nodes.len(),
+            "a literal is drawn twice:\n{text}"
+        );
+        for l in text.lines().filter(|l| l.contains(" -> ")) {
+            let mut ends = l.trim().trim_end_matches(';').split(" -> ");
+            let a = ends.next().unwrap();
+            let b = ends.next().unwrap().split(' ').next().unwrap();
+            assert!(nodes.iter().any(|n| n.0 == a), "{l}");
+            assert!(nodes.iter().any(|n| n.0 == b), "{l}");
+        }
+        if file == "shared_blocker.lp" {
+            assert_eq!(nodes.len(), 3, "q, f and g2:\n{text}");
+            assert!(
+                text.contains("blocks tests/data/explain/shared_blocker.lp:8:1-12; tests/data/explain/shared_blocker.lp:9:1-12")
+                    || text.contains("blocks tests/data/explain/shared_blocker.lp:9:1-12; tests/data/explain/shared_blocker.lp:8:1-12"),
+                "{text}"
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
