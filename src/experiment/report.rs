@@ -68,8 +68,13 @@ impl Report {
                 Hypothesis::H4 => Section::H4(Box::new(h34::aggregate_h4(&records)?)),
             });
         }
+        // Pooled seeds: the setup is named by the least one, whichever run came first.
+        let setup = Setup {
+            seed: seeds[0],
+            ..setup.clone()
+        };
         Ok(Report {
-            setup: setup.clone(),
+            setup,
             seeds,
             trials: records.len(),
             sections,
