@@ -5,6 +5,12 @@
 # and command.txt with the command line, the machine and the wall time.
 #
 # usage: scripts/experiment_full.sh [SEED] [extra `lucent experiment` options...]
+#
+# Five seeds (each a run of its own in docs/experiments/seed-S, then one pooled report; every
+# trial computes all readings of docs/experiments/gaps.md, so nothing else is needed):
+#   for s in 0 1 2 3 4; do target/release/lucent experiment all --no-classify --seed $s \
+#     --out docs/experiments/seed-$s >/dev/null; done
+#   target/release/lucent experiment merge docs/experiments/seed-{0,1,2,3,4} --out docs/experiments/seeds
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seed="${1:-0}"
@@ -35,4 +41,7 @@ wall="$((ms / 1000)).$(printf %03d $((ms % 1000)))"
   echo "wall time: ${wall} s; user CPU ${user} s, system ${sys} s, max RSS ${rss} KB"
   echo "trials reused from an earlier run: see the 'experiment:' line on standard error"
 } > "$out/command.txt"
+# The hand-written section on the gaps to the paper (docs/experiments/gaps.md) follows the
+# generated tables.
+[ -f "$out/gaps.md" ] && cat "$out/gaps.md" >> "$out/report.md"
 cat "$out/command.txt"

@@ -9,6 +9,14 @@
 #   sbatch --array=1-$(wc -l < /shared/run1/jobs.txt) scripts/experiment_slurm.sh /shared/run1/jobs.txt
 #   lucent experiment merge /shared/run1
 # With GNU parallel on one machine instead: parallel < /shared/run1/jobs.txt
+# Several seeds: one directory and job list per seed (the readings of the report are computed
+# inside every trial), then one pooled report:
+#   for s in 0 1 2 3 4; do lucent experiment all --seed $s --out /shared/seed$s \
+#     --emit-jobs /shared/seed$s/jobs.txt; done
+#   cat /shared/seed*/jobs.txt > /shared/jobs.txt   # one array over all seeds
+#   sbatch --array=1-$(wc -l < /shared/jobs.txt) scripts/experiment_slurm.sh /shared/jobs.txt
+#   lucent experiment merge /shared/seed0 /shared/seed1 /shared/seed2 /shared/seed3 \
+#     /shared/seed4 --out /shared/seeds
 #SBATCH --job-name=lucent-experiment
 #SBATCH --cpus-per-task=1
 set -euo pipefail

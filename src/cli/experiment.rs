@@ -30,12 +30,14 @@ pub(super) const VERB: Verb = Verb {
 usage: lucent experiment h1|h2|h3|h4|all [OPTIONS]
        lucent experiment classify [OPTIONS]   (scene understanding; `classify --help`)
        lucent experiment trial ID --out DIR
-       lucent experiment merge DIR [--outf=0|2]
+       lucent experiment merge DIR [DIR...] [--out OUT] [--outf=0|2]
 
 The paper's experiments (docs/domain.md 7): H1 learning accuracy (Table 1), H2 plan quality
 (Tables 2 and 3), H3 proof-tree checks, H4 explanation precision and recall (Tables 4 and 5).
-Trials run in parallel (rayon); every table is printed beside the paper's. A hypothesis whose
-pieces this build lacks is reported as \"not available: <reason>\".
+Trials run in parallel (rayon); every table is printed beside the paper's, every figure with
+its 95% bootstrap interval. A hypothesis whose pieces this build lacks is reported as \"not
+available: <reason>\". `merge` of several run directories (one per seed, same setup otherwise)
+pools their trials into one report, written to OUT when given.
 ",
     options: OPTIONS,
     epilogue: "",
@@ -228,10 +230,18 @@ pub fn run_experiment(
     };
     match positional.first().map(String::as_str) {
         Some("merge") => {
-            let [_, dir] = positional.as_slice() else {
-                return error(err, "usage: lucent experiment merge DIR", super::EXIT_USAGE);
-            };
-            return merge(Path::new(dir), parsed.json, out, err);
+            let dirs: Vec<&Path> = positional[1..].iter().map(Path::new).collect();
+            match dirs.as_slice() {
+                [] => {
+                    return error(
+                        err,
+                        "usage: lucent experiment merge DIR [DIR...] [--out OUT]",
+                        super::EXIT_USAGE,
+                    )
+                }
+                [dir] if parsed.out.is_none() => return merge(dir, parsed.json, out, err),
+                _ => return merge_seeds(&dirs, parsed.out.as_deref(), parsed.json, out, err),
+            }
         }
         Some("trial") => {
             let ([_, id], Some(dir)) = (positional.as_slice(), parsed.out.as_deref()) else {
@@ -504,19 +514,28 @@ fn trial(id: &str, dir: &Path, err: &mut dyn Write) -> std::io::Result<i32> {
     }
 }
 
-/// `lucent experiment merge DIR`: the report from the result files.
-fn merge(dir: &Path, json: bool, out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
-    let (setup, hypotheses, _, _) = match read_run(dir) {
-        Ok(r) => r,
-        Err(e) => return error(err, &e, super::EXIT_INPUT),
-    };
-    let store = DirStore::new(dir)?;
+/// A run directory's setup, hypotheses and complete records (every wanted trial, else the
+/// error names the missing ones).
+type RunRecords = (Setup, Vec<Hypothesis>, Vec<experiment::Record>);
+
+/// Reads the records of one run directory.
+fn read_records(dir: &Path) -> Result<RunRecords, String> {
+    let (setup, hypotheses, _, _) = read_run(dir)?;
+    let store = DirStore::new(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let mut records = Vec::new();
-    for (id, text) in store.all()? {
+    let all = store
+        .all()
+        .map_err(|e| format!("{}: {e}", dir.join("results").display()))?;
+    for (id, text) in all {
         match serde_json::from_str::<experiment::Record>(&text) {
             Ok(r) if r.id == id && r.setup == setup => records.push(r),
             Ok(_) => {}
-            Err(e) => return error(err, &format!("results/{id}.json: {e}"), super::EXIT_INPUT),
+            Err(e) => {
+                return Err(format!(
+                    "{}: {e}",
+                    dir.join(format!("results/{id}.json")).display()
+                ))
+            }
         }
     }
     let wanted = experiment::trials(&setup, &hypotheses);
@@ -527,20 +546,91 @@ fn merge(dir: &Path, json: bool, out: &mut dyn Write, err: &mut dyn Write) -> st
         .collect();
     if !missing.is_empty() {
         let shown: Vec<&str> = missing.iter().take(10).map(String::as_str).collect();
-        return error(
-            err,
-            &format!(
-                "{} of {} trials have no result in {}: {}{}",
-                missing.len(),
-                wanted.len(),
-                dir.join("results").display(),
-                shown.join(", "),
-                if missing.len() > 10 { ", ..." } else { "" }
-            ),
-            super::EXIT_INPUT,
-        );
+        return Err(format!(
+            "{} of {} trials have no result in {}: {}{}",
+            missing.len(),
+            wanted.len(),
+            dir.join("results").display(),
+            shown.join(", "),
+            if missing.len() > 10 { ", ..." } else { "" }
+        ));
     }
     records.retain(|r| wanted.iter().any(|t| t.id() == r.id));
+    Ok((setup, hypotheses, records))
+}
+
+/// `lucent experiment merge DIR DIR... [--out OUT]`: one report over the trials of several
+/// runs that differ only in their seed (pooled: every figure is over all their trials).
+fn merge_seeds(
+    dirs: &[&Path],
+    to: Option<&Path>,
+    json: bool,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> std::io::Result<i32> {
+    let mut first: Option<(Setup, Vec<Hypothesis>)> = None;
+    let mut records = Vec::new();
+    for dir in dirs {
+        let (setup, hypotheses, recs) = match read_records(dir) {
+            Ok(r) => r,
+            Err(e) => return error(err, &e, super::EXIT_INPUT),
+        };
+        if let Some((s, h)) = &first {
+            let same = Setup {
+                seed: s.seed,
+                ..setup.clone()
+            };
+            if &same != s || h != &hypotheses {
+                return error(
+                    err,
+                    &format!(
+                        "{}: its setup or hypotheses differ from {}'s beyond the seed",
+                        dir.display(),
+                        dirs[0].display()
+                    ),
+                    super::EXIT_INPUT,
+                );
+            }
+            if records
+                .iter()
+                .any(|q: &experiment::Record| q.setup.seed == setup.seed)
+            {
+                return error(
+                    err,
+                    &format!("{}: seed {} is merged twice", dir.display(), setup.seed),
+                    super::EXIT_INPUT,
+                );
+            }
+        } else {
+            first = Some((setup, hypotheses));
+        }
+        records.extend(recs);
+    }
+    let Some((setup, hypotheses)) = first else {
+        return error(err, "merge needs a run directory", super::EXIT_USAGE);
+    };
+    let report = match Report::new(&setup, &hypotheses, &records) {
+        Ok(r) => r,
+        Err(e) => return error(err, &e, super::EXIT_INPUT),
+    };
+    writeln!(
+        err,
+        "experiment: {} trials of {} runs merged",
+        records.len(),
+        dirs.len()
+    )?;
+    if let Some(to) = to {
+        std::fs::create_dir_all(to)?;
+    }
+    finish(&report, to, json, None, out)
+}
+
+/// `lucent experiment merge DIR`: the report from the result files.
+fn merge(dir: &Path, json: bool, out: &mut dyn Write, err: &mut dyn Write) -> std::io::Result<i32> {
+    let (setup, hypotheses, records) = match read_records(dir) {
+        Ok(r) => r,
+        Err(e) => return error(err, &e, super::EXIT_INPUT),
+    };
     let report = match Report::new(&setup, &hypotheses, &records) {
         Ok(r) => r,
         Err(e) => return error(err, &e, super::EXIT_INPUT),

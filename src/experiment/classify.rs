@@ -545,6 +545,7 @@ pub fn plots(r: &ClassifyResult) -> Vec<(String, String)> {
                 title: format!("{} accuracy against training-set size", label.name()),
                 series: System::ALL.iter().map(|s| s.name().to_string()).collect(),
                 groups,
+                errors: Vec::new(),
                 y_max: 1.0,
             };
             (

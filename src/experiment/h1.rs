@@ -10,6 +10,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::interval::{self, Interval};
 use super::{Context, Record, Trial, TrialError};
 use crate::action::ast::Statement;
 use crate::learn::h1::{one_run_with, targets, Oracle, PrecisionRecall, PAPER};
@@ -131,6 +132,9 @@ pub struct Summary {
     pub strict_counts: Tally,
     /// Summed relaxed counts.
     pub relaxed_counts: Tally,
+    /// 95% intervals of strict P, strict R, relaxed P, relaxed R (bootstrap over the runs,
+    /// each resample's counts summed as the table's are).
+    pub intervals: [Option<Interval>; 4],
     /// The paper's Table 1.
     pub paper: crate::learn::h1::PaperH1,
     /// Per run, in run order (without the AL_d text).
@@ -143,6 +147,7 @@ pub fn aggregate(records: &[Record]) -> Result<Summary, String> {
     let mut oracle = Oracle::KbFull;
     let mut count_every_trial = false;
     let (mut s, mut x) = (Counts::default(), Counts::default());
+    let mut tallies: Vec<(Tally, Tally)> = Vec::new();
     for r in records.iter().filter(|r| r.id.starts_with("h1-")) {
         oracle = r.setup.oracle;
         count_every_trial = r.setup.count_every_trial;
@@ -150,13 +155,30 @@ pub fn aggregate(records: &[Record]) -> Result<Summary, String> {
             serde_json::from_value(r.result.clone()).map_err(|e| format!("{}: {e}", r.id))?;
         s.add(run.strict.into());
         x.add(run.relaxed.into());
+        tallies.push((run.strict, run.relaxed));
         runs.push(RunResult {
             ald: String::new(),
             ..run
         });
     }
     runs.sort_by_key(|r| r.run);
+    let ci = |relaxed: bool, recall: bool| {
+        interval::bootstrap(&tallies, |sample| {
+            let mut c = Counts::default();
+            for (st, re) in sample {
+                c.add(if relaxed { *re } else { *st }.into());
+            }
+            let pr: PrecisionRecall = c.into();
+            Some(if recall { pr.recall } else { pr.precision })
+        })
+    };
     Ok(Summary {
+        intervals: [
+            ci(false, false),
+            ci(false, true),
+            ci(true, false),
+            ci(true, true),
+        ],
         oracle: oracle.name().into(),
         count_every_trial,
         strict: s.into(),
@@ -200,13 +222,19 @@ pub fn markdown(s: &Summary) -> String {
         "| scoring | precision (ours) | precision (paper) | recall (ours) | recall (paper) |\n",
     );
     out.push_str("|---|---|---|---|---|\n");
-    for (name, ours, paper) in [
+    for (k, (name, ours, paper)) in [
         ("strict", s.strict, s.paper.strict),
         ("relaxed", s.relaxed, s.paper.relaxed),
-    ] {
+    ]
+    .into_iter()
+    .enumerate()
+    {
         out.push_str(&format!(
-            "| {name} | {:.1} | {:.1} | {:.1} | {:.1} |\n",
-            ours.precision, paper.precision, ours.recall, paper.recall
+            "| {name} | {} | {:.1} | {} | {:.1} |\n",
+            interval::cell(Some(ours.precision), s.intervals[2 * k], 1),
+            paper.precision,
+            interval::cell(Some(ours.recall), s.intervals[2 * k + 1], 1),
+            paper.recall
         ));
     }
     out.push_str("\n![H1 precision and recall](h1.svg)\n\n");
@@ -246,6 +274,7 @@ pub fn plot(s: &Summary) -> String {
             s.oracle
         ),
         series: vec!["ours".into(), "paper".into()],
+        errors: s.intervals.iter().map(|i| vec![*i, None]).collect(),
         groups,
         y_max: 100.0,
     })

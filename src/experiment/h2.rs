@@ -24,6 +24,7 @@ use std::time::Instant;
 
 use serde::{Deserialize, Serialize};
 
+use super::interval::{self, Interval};
 use super::svg;
 use super::{Context, Domain, Record, Trial, TrialError};
 use crate::action::ast::{Description, Statement, Value};
@@ -43,6 +44,22 @@ pub const FIXED_CAP: usize = 50;
 
 /// States the breadth-first search for L* and E* may expand per pair.
 pub const SEARCH_STATES: usize = 2_000;
+
+/// The five H1 targets in `learn::h1::targets` order (E7, E5, E2, C3, C2), by KB_full label.
+pub const TARGETS: [&str; 5] = ["E7", "E5", "E2", "C3", "C2"];
+
+/// The H1 targets other than target `k`, as statements (labelled `kept_<label>`, so the
+/// `learner` profile's drops of the KB_full labels do not remove them): the knowledge base of
+/// the "one axiom missing" reading of 7.2 is the `learner` profile plus these.
+pub fn targets_but(k: usize) -> Vec<Statement> {
+    crate::learn::h1::targets()
+        .iter()
+        .zip(TARGETS)
+        .enumerate()
+        .filter(|(j, _)| *j != k)
+        .map(|(_, (a, label))| a.statement(&format!("kept_{label}")))
+        .collect()
+}
 
 /// Why H2 cannot run in this build, if it cannot.
 pub fn availability() -> Result<(), String> {
@@ -372,6 +389,15 @@ pub fn plan_pair(
 ) -> Result<PairResult, TrialError> {
     let problem = domain.scene_problem(scene)?;
     let (plain, sources) = (problem.description(), problem.sources.clone());
+    let one_missing: Vec<(Description, SourceMap)> = (0..TARGETS.len())
+        .map(|k| {
+            let p = crate::plan::Problem {
+                axioms: targets_but(k),
+                ..problem.clone()
+            };
+            (p.description(), p.sources)
+        })
+        .collect();
     let taught_problem = crate::plan::Problem {
         axioms: learned.to_vec(),
         ..problem
@@ -415,6 +441,20 @@ pub fn plan_pair(
     };
     let without = condition(&plain, &sources);
     let with = condition(&taught, &taught_sources);
+    // Reading "one axiom missing" (7.2): the iterative planner without target k only.
+    let without_one: Vec<ModeResult> = one_missing
+        .iter()
+        .map(|(d, s)| run_mode(d, s, &learner, Search::Incremental, &mut judge))
+        .collect();
+    // Reading "horizon L* + 1": the authors' fixed mode at one step above the least plan, so
+    // that a minimal plan and one step of detour are the only lengths.
+    let least = judge.minimal.and_then(|(m, _)| m).map(|(l, _)| l);
+    let fixed_near = least.map(|l| {
+        let mut near = |d: &Description, s: &SourceMap| {
+            run_mode(d, s, &learner, Search::Fixed(l + 1), &mut judge)
+        };
+        vec![near(&plain, &sources), near(&taught, &taught_sources)]
+    });
     Ok(PairResult {
         preset: scene.preset.name().into(),
         configuration: 0,
@@ -429,6 +469,8 @@ pub fn plan_pair(
         min_by: judge.minimal.map(|(_, by)| by).unwrap_or_default(),
         without,
         with,
+        without_one,
+        fixed_near: fixed_near.unwrap_or_default(),
     })
 }
 
@@ -517,6 +559,14 @@ pub struct PairResult {
     pub without: Condition,
     /// With them.
     pub with: Condition,
+    /// Reading "one axiom missing": the iterative planner without target `TARGETS[k]` only
+    /// (the `learner` profile plus the other four), per k; empty in results stored before.
+    #[serde(default)]
+    pub without_one: Vec<ModeResult>,
+    /// Reading "horizon L* + 1": the fixed mode at horizon L* + 1, without and with the learned
+    /// axioms; empty when L* is unknown or in results stored before.
+    #[serde(default)]
+    pub fixed_near: Vec<ModeResult>,
 }
 
 /// Table 2 for one preset and mode: ratios with/without, averaged over pairs.
@@ -528,6 +578,12 @@ pub struct Ratios {
     pub plans: Option<f64>,
     /// Planning time.
     pub planning_time: Option<f64>,
+    /// 95% intervals of the three (bootstrap over the pairs, `interval`).
+    pub steps_ci: Option<Interval>,
+    /// Of the number of plans.
+    pub plans_ci: Option<Interval>,
+    /// Of the planning time.
+    pub ci_planning_time: Option<Interval>,
     /// Pairs where both conditions found a plan (the ratios' denominators).
     pub pairs: usize,
     /// Pairs left out because a condition found no plan.
@@ -543,6 +599,12 @@ pub struct Fractions {
     pub suboptimal: Option<f64>,
     /// Incorrect.
     pub incorrect: Option<f64>,
+    /// 95% intervals of the three (bootstrap over the trials, `interval`).
+    pub optimal_ci: Option<Interval>,
+    /// Of the sub-optimal fraction.
+    pub suboptimal_ci: Option<Interval>,
+    /// Of the incorrect fraction.
+    pub incorrect_ci: Option<Interval>,
     /// Trials with at least one plan.
     pub trials: usize,
 }
@@ -586,6 +648,8 @@ pub struct PresetSummary {
     pub fixed: ModeSummary,
     /// Our iterative planner.
     pub iterative: ModeSummary,
+    /// Other readings of the paper's conditions (7.2) and horizon.
+    pub readings: Readings,
 }
 
 /// H2's tables.
@@ -621,10 +685,18 @@ fn ratio(with: f64, without: f64) -> Option<f64> {
 }
 
 fn summarize_mode(pairs: &[&PairResult], mode: impl Fn(&Condition) -> &ModeResult) -> ModeSummary {
+    let units: Vec<(&ModeResult, &ModeResult)> = pairs
+        .iter()
+        .map(|p| (mode(&p.without), mode(&p.with)))
+        .collect();
+    summarize_units(&units)
+}
+
+/// Table 2 and 3 over units, each a (without, with) outcome of one pair.
+fn summarize_units(units: &[(&ModeResult, &ModeResult)]) -> ModeSummary {
     let mut r = Ratios::default();
     let (mut steps, mut plans, mut time) = (Vec::new(), Vec::new(), Vec::new());
-    for p in pairs {
-        let (wo, w) = (mode(&p.without), mode(&p.with));
+    for &(wo, w) in units {
         if wo.plans == 0 || w.plans == 0 {
             r.pairs_without_plan += 1;
             continue;
@@ -637,10 +709,13 @@ fn summarize_mode(pairs: &[&PairResult], mode: impl Fn(&Condition) -> &ModeResul
     r.steps = mean(&steps);
     r.plans = mean(&plans);
     r.planning_time = mean(&time);
-    let fractions = |cond: &dyn Fn(&PairResult) -> &ModeResult| {
+    r.steps_ci = interval::mean(&steps);
+    r.plans_ci = interval::mean(&plans);
+    r.ci_planning_time = interval::mean(&time);
+    let fractions = |with: bool| {
         let (mut o, mut s, mut i) = (Vec::new(), Vec::new(), Vec::new());
-        for p in pairs {
-            let m = cond(p);
+        for &(wo, w) in units {
+            let m = if with { w } else { wo };
             let n = (m.optimal + m.suboptimal + m.incorrect) as f64;
             if n > 0.0 {
                 o.push(m.optimal as f64 / n);
@@ -652,13 +727,59 @@ fn summarize_mode(pairs: &[&PairResult], mode: impl Fn(&Condition) -> &ModeResul
             optimal: mean(&o),
             suboptimal: mean(&s),
             incorrect: mean(&i),
+            optimal_ci: interval::mean(&o),
+            suboptimal_ci: interval::mean(&s),
+            incorrect_ci: interval::mean(&i),
             trials: o.len(),
         }
     };
     ModeSummary {
         ratios: r,
-        without: fractions(&|p| mode(&p.without)),
-        with: fractions(&|p| mode(&p.with)),
+        without: fractions(false),
+        with: fractions(true),
+    }
+}
+
+/// The readings of 7.2's "without" and of the fixed horizon, side by side.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Readings {
+    /// "One axiom missing", pooled over the five targets: units are (pair, target), the
+    /// "with" side the iterative planner with the learned axioms.
+    pub one_missing: ModeSummary,
+    /// "One axiom missing", per target of [`TARGETS`]: (label, summary).
+    pub per_target: Vec<(String, ModeSummary)>,
+    /// The fixed mode at horizon L* + 1 (pairs with L* known).
+    pub fixed_near: ModeSummary,
+}
+
+fn readings(pairs: &[&PairResult]) -> Readings {
+    let per_target = TARGETS
+        .iter()
+        .enumerate()
+        .map(|(k, label)| {
+            let units: Vec<(&ModeResult, &ModeResult)> = pairs
+                .iter()
+                .filter_map(|p| Some((p.without_one.get(k)?, &p.with.iterative)))
+                .collect();
+            (label.to_string(), summarize_units(&units))
+        })
+        .collect();
+    // Pooled units in (pair, target) order.
+    let mut ordered = Vec::new();
+    for p in pairs {
+        for m in &p.without_one {
+            ordered.push((m, &p.with.iterative));
+        }
+    }
+    let near: Vec<(&ModeResult, &ModeResult)> = pairs
+        .iter()
+        .filter(|p| p.fixed_near.len() == 2)
+        .map(|p| (&p.fixed_near[0], &p.fixed_near[1]))
+        .collect();
+    Readings {
+        one_missing: summarize_units(&ordered),
+        per_target,
+        fixed_near: summarize_units(&near),
     }
 }
 
@@ -692,6 +813,7 @@ pub fn aggregate(records: &[Record]) -> Result<Summary, String> {
             },
             fixed: summarize_mode(&ps, |c| &c.fixed),
             iterative: summarize_mode(&ps, |c| &c.iterative),
+            readings: readings(&ps),
         }
     };
     let by_size = |cond: fn(&PairResult) -> &Condition| {
@@ -712,8 +834,13 @@ fn cell(v: Option<f64>) -> String {
     v.map_or("n/a".into(), |v| format!("{v:.2}"))
 }
 
+/// A value with its 95% interval, two decimals.
+fn ci_cell((v, i): (Option<f64>, Option<Interval>)) -> String {
+    interval::cell(v, i, 2)
+}
+
 /// A table row: its name and how to read its value.
-type Row<T> = (&'static str, fn(&T) -> Option<f64>);
+type Row<T> = (&'static str, fn(&T) -> (Option<f64>, Option<Interval>));
 
 fn tables(out: &mut String, s: &Summary, mode: &str, pick: fn(&PresetSummary) -> &ModeSummary) {
     let (r, m) = (pick(&s.real), pick(&s.simulated));
@@ -724,16 +851,16 @@ fn tables(out: &mut String, s: &Summary, mode: &str, pick: fn(&PresetSummary) ->
     ));
     out.push_str("| measure | real (ours) | real (paper) | simulated (ours) | simulated (paper) |\n|---|---|---|---|---|\n");
     let rows: [Row<Ratios>; 3] = [
-        ("Number of steps", |r| r.steps),
-        ("Number of plans", |r| r.plans),
-        ("Planning time", |r| r.planning_time),
+        ("Number of steps", |r| (r.steps, r.steps_ci)),
+        ("Number of plans", |r| (r.plans, r.plans_ci)),
+        ("Planning time", |r| (r.planning_time, r.ci_planning_time)),
     ];
     for (k, (name, f)) in rows.iter().enumerate() {
         out.push_str(&format!(
             "| {name} | {} | {} | {} | {} |\n",
-            cell(f(&r.ratios)),
+            ci_cell(f(&r.ratios)),
             PAPER_TABLE2[k][0],
-            cell(f(&m.ratios)),
+            ci_cell(f(&m.ratios)),
             PAPER_TABLE2[k][1]
         ));
     }
@@ -742,16 +869,16 @@ fn tables(out: &mut String, s: &Summary, mode: &str, pick: fn(&PresetSummary) ->
          | plans | real w/o | real w/ | sim w/o | sim w/ |\n|---|---|---|---|---|\n"
     ));
     let rows: [Row<Fractions>; 3] = [
-        ("Optimal", |f| f.optimal),
-        ("Sub-optimal", |f| f.suboptimal),
-        ("Incorrect", |f| f.incorrect),
+        ("Optimal", |f| (f.optimal, f.optimal_ci)),
+        ("Sub-optimal", |f| (f.suboptimal, f.suboptimal_ci)),
+        ("Incorrect", |f| (f.incorrect, f.incorrect_ci)),
     ];
     for (k, (name, f)) in rows.iter().enumerate() {
         let cols = [&r.without, &r.with, &m.without, &m.with];
         let cells: Vec<String> = cols
             .iter()
             .enumerate()
-            .map(|(c, fr)| format!("{} / {}", cell(f(fr)), PAPER_TABLE3[k][c]))
+            .map(|(c, fr)| format!("{} / {}", ci_cell(f(fr)), PAPER_TABLE3[k][c]))
             .collect();
         out.push_str(&format!("| {name} | {} |\n", cells.join(" | ")));
     }
@@ -792,8 +919,87 @@ pub fn markdown(s: &Summary) -> String {
         m.pairs - m.exception_pairs,
     ));
     tables(&mut out, s, "iterative planner", |p| &p.iterative);
+    readings_markdown(&mut out, s);
     out.push_str("![H2 plan quality](h2_quality.svg)\n\n![H2 planning time](h2_time.svg)\n\n");
     out
+}
+
+/// The readings side by side: 7.2's "without" as all five targets missing (the tables above)
+/// or one missing, and the fixed horizon at 9 (above) or at L* + 1.
+fn readings_markdown(out: &mut String, s: &Summary) {
+    let f = |m: &ModeSummary, with: bool| {
+        let fr = if with { &m.with } else { &m.without };
+        [
+            ci_cell((fr.optimal, fr.optimal_ci)),
+            ci_cell((fr.suboptimal, fr.suboptimal_ci)),
+            ci_cell((fr.incorrect, fr.incorrect_ci)),
+        ]
+    };
+    out.push_str(
+        "Readings of the knowledge base \"without\" (docs/domain.md 7.2), iterative planner. \
+         *All five missing* (kept: the tables above) is the `learner` profile, KB_full without \
+         E7, E5, E2, C3 and C2; *one missing* is the `learner` profile plus four of them, every \
+         pair planned once per missing target (units: pair x target). Fractions of plans \
+         without the axioms (optimal / sub-optimal / incorrect; paper: 0.33 / 0.12 / 0.55 real, \
+         0.13 / 0.44 / 0.43 simulated) and Table 2's ratios against the iterative planner with \
+         the learned axioms:\n\n| reading | preset | optimal | sub-optimal | incorrect | steps \
+         ratio | units |\n|---|---|---|---|---|---|---|\n",
+    );
+    let mut times = Vec::new();
+    for (preset, p) in [("real", &s.real), ("simulated", &s.simulated)] {
+        let rows: Vec<(String, &ModeSummary)> =
+            std::iter::once(("all five missing".to_string(), &p.iterative))
+                .chain(std::iter::once((
+                    "one missing (pooled)".to_string(),
+                    &p.readings.one_missing,
+                )))
+                .chain(
+                    p.readings
+                        .per_target
+                        .iter()
+                        .map(|(label, m)| (format!("only {label} missing"), m)),
+                )
+                .collect();
+        for (name, m) in rows {
+            let [o, so, i] = f(m, false);
+            out.push_str(&format!(
+                "| {name} | {preset} | {o} | {so} | {i} | {} | {} |\n",
+                ci_cell((m.ratios.steps, m.ratios.steps_ci)),
+                m.without.trials
+            ));
+            times.push(format!(
+                "| Planning time | {name} | {preset} | {} |\n",
+                ci_cell((m.ratios.planning_time, m.ratios.ci_planning_time))
+            ));
+        }
+    }
+    // Timings only in rows that open with `| Planning time |` (the invariant of `experiment`).
+    out.push_str("\nPlanning time ratio with/without under the same readings:\n\n| measure | reading | preset | ratio |\n|---|---|---|---|\n");
+    for t in times {
+        out.push_str(&t);
+    }
+    out.push_str(
+        "\nReading of the fixed horizon: 9 (the authors' main program; the first tables) or \
+         L* + 1 (one step above the least plan, so only minimal plans and one-step detours are \
+         answer sets), over the pairs with L* known; paper (Table 3) as above:\n\n| horizon | \
+         preset | condition | optimal | sub-optimal | incorrect | trials |\n|---|---|---|---|---|---|---|\n",
+    );
+    for (preset, p) in [("real", &s.real), ("simulated", &s.simulated)] {
+        for (h, m) in [("9", &p.fixed), ("L*+1", &p.readings.fixed_near)] {
+            for (cond, with) in [("w/o", false), ("w/", true)] {
+                let [o, so, i] = f(m, with);
+                let n = if with {
+                    m.with.trials
+                } else {
+                    m.without.trials
+                };
+                out.push_str(&format!(
+                    "| {h} | {preset} | {cond} | {o} | {so} | {i} | {n} |\n"
+                ));
+            }
+        }
+    }
+    out.push('\n');
 }
 
 /// The plots: fractions of plans per preset, condition and mode; planning time by scene size.
@@ -803,7 +1009,11 @@ pub fn plots(s: &Summary) -> Vec<(String, String)> {
         for (mode, m) in [("fixed", &p.fixed), ("iter", &p.iterative)] {
             for (cond, f) in [("w/o", &m.without), ("w/", &m.with)] {
                 let parts = match (f.optimal, f.suboptimal, f.incorrect) {
-                    (Some(a), Some(b), Some(c)) => Some(vec![a, b, c]),
+                    (Some(a), Some(b), Some(c)) => Some(vec![
+                        (a, f.optimal_ci),
+                        (b, f.suboptimal_ci),
+                        (c, f.incorrect_ci),
+                    ]),
                     _ => None,
                 };
                 bars.push((format!("{preset} {mode} {cond}"), parts));

@@ -21,6 +21,7 @@ use std::collections::BTreeSet;
 
 use serde::{Deserialize, Serialize};
 
+use super::interval::{self, Interval};
 use super::svg;
 use super::{Context, Hypothesis, Record, Trial, TrialError};
 use crate::action::ast::Description;
@@ -180,6 +181,8 @@ fn h4_trial(
         preset: trial.config.clone(),
         without: Vec::new(),
         with: Vec::new(),
+        without_one: Vec::new(),
+        removed: None,
     };
     let Some(full) = full else {
         return Ok(t);
@@ -189,11 +192,19 @@ fn h4_trial(
     let truth = literal_sets(full, &questions);
     let run = (trial.index / ctx.setup.goals.max(1)) % ctx.setup.runs.max(1);
     let learned = super::h1::learned_statements(ctx, run)?;
-    for with in [false, true] {
+    // Reading "one axiom missing" (7.2): the learner profile plus four of the five targets,
+    // the missing one drawn from the trial's seed.
+    let k = crate::base::rng::SplitMix64::new(seed)
+        .fork(0x4f4e_4500)
+        .below(super::h2::TARGETS.len() as u64) as usize;
+    t.removed = Some(super::h2::TARGETS[k].to_string());
+    for condition in 0..3 {
         let mut d = desc.clone();
         let s = sources.clone();
-        if with {
-            d.statements.extend(learned.iter().cloned());
+        match condition {
+            1 => d.statements.extend(learned.iter().cloned()),
+            2 => d.statements.extend(super::h2::targets_but(k)),
+            _ => {}
         }
         let Some(h) = run_history(&d, &s, Some("learner"))? else {
             continue;
@@ -212,10 +223,10 @@ fn h4_trial(
                 }
             })
             .collect();
-        if with {
-            t.with = scores;
-        } else {
-            t.without = scores;
+        match condition {
+            0 => t.without = scores,
+            1 => t.with = scores,
+            _ => t.without_one = scores,
         }
     }
     Ok(t)
@@ -300,6 +311,13 @@ pub struct H4Trial {
     pub without: Vec<QuestionScore>,
     /// Answers with them.
     pub with: Vec<QuestionScore>,
+    /// Reading "one axiom missing": answers without the target `removed` only (empty in
+    /// results stored before).
+    #[serde(default)]
+    pub without_one: Vec<QuestionScore>,
+    /// The target missing in `without_one`.
+    #[serde(default)]
+    pub removed: Option<String>,
 }
 
 /// One H3 trial.
@@ -327,6 +345,9 @@ pub struct H3Trial {
 pub struct H4Column {
     /// Per query type of [`QUERY_TYPES`]: mean precision and recall (%), and the count.
     pub rows: Vec<(String, Option<f64>, Option<f64>, usize)>,
+    /// Per query type: the 95% intervals of precision and recall (bootstrap over the
+    /// questions, one per trial and type).
+    pub intervals: Vec<(Option<Interval>, Option<Interval>)>,
 }
 
 /// H4's tables.
@@ -336,6 +357,8 @@ pub struct H4Summary {
     pub real: [H4Column; 2],
     /// Simulated scenes, without and with.
     pub simulated: [H4Column; 2],
+    /// Reading "one axiom missing" (without only): real, simulated.
+    pub one_missing: [H4Column; 2],
 }
 
 /// H3's totals per preset.
@@ -367,6 +390,15 @@ fn mean(v: &[f64]) -> Option<f64> {
 
 fn column(scores: &[&QuestionScore]) -> H4Column {
     H4Column {
+        intervals: QUERY_TYPES
+            .iter()
+            .map(|k| {
+                let of = scores.iter().filter(|s| s.kind == *k);
+                let p: Vec<f64> = of.clone().map(|s| s.precision).collect();
+                let r: Vec<f64> = of.map(|s| s.recall).collect();
+                (interval::mean(&p), interval::mean(&r))
+            })
+            .collect(),
         rows: QUERY_TYPES
             .iter()
             .map(|k| {
@@ -387,17 +419,22 @@ pub fn aggregate_h4(records: &[Record]) -> Result<H4Summary, String> {
             serde_json::from_value(r.result.clone()).map_err(|e| format!("{}: {e}", r.id))?;
         trials.push(t);
     }
-    let of = |preset: &str, with: bool| {
+    let of = |preset: &str, condition: usize| {
         let scores: Vec<&QuestionScore> = trials
             .iter()
             .filter(|t| t.preset == preset)
-            .flat_map(|t| if with { &t.with } else { &t.without })
+            .flat_map(|t| match condition {
+                0 => &t.without,
+                1 => &t.with,
+                _ => &t.without_one,
+            })
             .collect();
         column(&scores)
     };
     Ok(H4Summary {
-        real: [of("real", false), of("real", true)],
-        simulated: [of("simulated", false), of("simulated", true)],
+        real: [of("real", 0), of("real", 1)],
+        simulated: [of("simulated", 0), of("simulated", 1)],
+        one_missing: [of("real", 2), of("simulated", 2)],
     })
 }
 
@@ -425,10 +462,6 @@ pub fn aggregate_h3(records: &[Record]) -> Result<H3Summary, String> {
             .extend(t.failures.iter().map(|f| format!("{}: {f}", r.id)));
     }
     Ok(H3Summary { presets })
-}
-
-fn cell(v: Option<f64>) -> String {
-    v.map_or("n/a".into(), |v| format!("{v:.2}"))
 }
 
 /// The H3 markdown section.
@@ -473,22 +506,56 @@ pub fn markdown_h4(s: &H4Summary) -> String {
         ));
         for (q, qname) in QUERY_NAMES.iter().enumerate() {
             let (wo, w) = (&cols[0].rows[q], &cols[1].rows[q]);
+            let (wo_i, w_i) = (cols[0].intervals[q], cols[1].intervals[q]);
             let paper = PAPER_H4[t][q];
             out.push_str(&format!(
                 "| {qname} | {} / {} | {} / {} | {} / {} | {} / {} | {} |\n",
-                cell(wo.1),
+                interval::cell(wo.1, wo_i.0, 1),
                 paper[0],
-                cell(w.1),
+                interval::cell(w.1, w_i.0, 1),
                 paper[1],
-                cell(wo.2),
+                interval::cell(wo.2, wo_i.1, 1),
                 paper[2],
-                cell(w.2),
+                interval::cell(w.2, w_i.1, 1),
                 paper[3],
                 wo.3 + w.3
             ));
         }
         out.push('\n');
     }
+    out.push_str(
+        "Readings of the knowledge base \"without\" (docs/domain.md 7.2): *all five missing* \
+         (the tables above) or *one missing*, the `learner` profile plus four of the five targets, \
+         the missing one drawn per trial from its seed. Precision and recall without the axioms, \
+         %:\n\n| preset | query | P all five | P one | P paper | R all five | R one | R paper |\n\
+         |---|---|---|---|---|---|---|---|\n",
+    );
+    for (t, (name, cols, one)) in [
+        ("real", &s.real, &s.one_missing[0]),
+        ("simulated", &s.simulated, &s.one_missing[1]),
+    ]
+    .iter()
+    .enumerate()
+    {
+        for (q, qname) in QUERY_NAMES.iter().enumerate() {
+            let (all, all_i) = (&cols[0].rows[q], cols[0].intervals[q]);
+            let (o, o_i) = (
+                one.rows.get(q).cloned().unwrap_or_default(),
+                one.intervals.get(q).copied().unwrap_or((None, None)),
+            );
+            let paper = PAPER_H4[t][q];
+            out.push_str(&format!(
+                "| {name} | {qname} | {} | {} | {} | {} | {} | {} |\n",
+                interval::cell(all.1, all_i.0, 1),
+                interval::cell(o.1, o_i.0, 1),
+                paper[0],
+                interval::cell(all.2, all_i.1, 1),
+                interval::cell(o.2, o_i.1, 1),
+                paper[2],
+            ));
+        }
+    }
+    out.push('\n');
     out.push_str("![H4 real scenes](h4_real.svg)\n\n![H4 simulated scenes](h4_simulated.svg)\n\n");
     out
 }
@@ -500,8 +567,11 @@ pub fn plots_h4(s: &H4Summary) -> Vec<(String, String)> {
         .enumerate()
         .map(|(t, (name, cols))| {
             let mut groups = Vec::new();
+            let mut errors = Vec::new();
             for (q, qname) in QUERY_NAMES.iter().enumerate() {
                 let paper = PAPER_H4[t][q];
+                errors.push(vec![cols[0].intervals[q].0, cols[1].intervals[q].0]);
+                errors.push(vec![cols[0].intervals[q].1, cols[1].intervals[q].1]);
                 groups.push((
                     format!("{qname} P"),
                     vec![
@@ -530,6 +600,7 @@ pub fn plots_h4(s: &H4Summary) -> Vec<(String, String)> {
                     "paper w/".into(),
                 ],
                 groups,
+                errors,
                 y_max: 100.0,
             });
             (format!("h4_{name}.svg"), svg)
@@ -554,11 +625,15 @@ mod tests {
                 preset: "real".into(),
                 without: vec![q("plan", 50.0, 100.0), q("why", 0.0, 0.0)],
                 with: vec![q("plan", 100.0, 100.0)],
+                without_one: vec![],
+                removed: None,
             },
             H4Trial {
                 preset: "real".into(),
                 without: vec![q("plan", 100.0, 50.0)],
                 with: vec![],
+                without_one: vec![],
+                removed: None,
             },
         ];
         let records: Vec<Record> = trials

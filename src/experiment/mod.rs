@@ -24,6 +24,7 @@ pub(crate) mod classify;
 pub(crate) mod h1;
 pub mod h2;
 pub(crate) mod h34;
+pub(crate) mod interval;
 pub(crate) mod report;
 pub(crate) mod svg;
 

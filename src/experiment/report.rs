@@ -2,7 +2,10 @@
 //! tables beside ours, and the SVG plots, all from the trial records.
 //!
 //! Invariants: a pure function of the setup, the hypotheses asked for and the records (any
-//! order: they are sorted by id first); a hypothesis that is not available is the JSON string
+//! order: they are sorted by id, then seed, first); records of several seeds (a `merge` of
+//! runs that differ only in the seed) are pooled, so every count is the sum of the seeds'
+//! counts and every mean is over all their trials; every figure carries its 95% bootstrap
+//! interval (`interval`); a hypothesis that is not available is the JSON string
 //! `"not available: <reason>"` and a markdown paragraph saying so, with no table and no plot.
 
 use serde_json::{json, Value};
@@ -29,6 +32,8 @@ pub enum Section {
 pub struct Report {
     /// The setup.
     pub setup: Setup,
+    /// The seeds whose trials are pooled, ascending (the setup's alone without records).
+    pub seeds: Vec<u64>,
     /// The trials aggregated.
     pub trials: usize,
     /// One section per hypothesis asked for, in order.
@@ -43,7 +48,13 @@ impl Report {
         records: &[Record],
     ) -> Result<Report, String> {
         let mut records = records.to_vec();
-        records.sort_by(|a, b| a.id.cmp(&b.id));
+        records.sort_by(|a, b| (&a.id, a.setup.seed).cmp(&(&b.id, b.setup.seed)));
+        let mut seeds: Vec<u64> = records.iter().map(|r| r.setup.seed).collect();
+        seeds.sort_unstable();
+        seeds.dedup();
+        if seeds.is_empty() {
+            seeds.push(setup.seed);
+        }
         let mut sections = Vec::new();
         for &h in hypotheses {
             if let Err(reason) = availability(h) {
@@ -57,8 +68,14 @@ impl Report {
                 Hypothesis::H4 => Section::H4(Box::new(h34::aggregate_h4(&records)?)),
             });
         }
+        // Pooled seeds: the setup is named by the least one, whichever run came first.
+        let setup = Setup {
+            seed: seeds[0],
+            ..setup.clone()
+        };
         Ok(Report {
-            setup: setup.clone(),
+            setup,
+            seeds,
             trials: records.len(),
             sections,
         })
@@ -67,6 +84,9 @@ impl Report {
     /// The `--outf=2` JSON: the setup, the trial count and one key per hypothesis.
     pub fn to_json(&self) -> Value {
         let mut out = json!({ "setup": self.setup, "trials": self.trials });
+        if self.seeds != [self.setup.seed] {
+            out["seeds"] = json!(self.seeds);
+        }
         for s in &self.sections {
             let (key, value) = match s {
                 Section::H1(x) => ("h1", serde_json::to_value(x).unwrap_or_default()),
@@ -86,11 +106,32 @@ impl Report {
     pub fn to_markdown(&self) -> String {
         let s = &self.setup;
         let mut out = String::from("# Lucent: the paper's experiments H1-H4\n\n");
+        let seeds = match self.seeds.as_slice() {
+            [one] => format!("Seed {one}"),
+            many => format!(
+                "Seeds {} pooled (every count sums the seeds', every mean is over all their \
+                 trials)",
+                many.iter()
+                    .map(u64::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        };
         out.push_str(&format!(
-            "Seed {}; H1: {} learning runs of at most {} episodes; H2-H4: {} configurations per \
+            "{seeds}; H1: {} learning runs of at most {} episodes; H2-H4: {} configurations per \
              preset (real, simulated), {} goals each (docs/domain.md 7.1); {} trials in all. Each \
              table shows our figures beside the paper's.\n\n",
-            s.seed, s.runs, s.episodes, s.configurations, s.goals, self.trials
+            s.runs, s.episodes, s.configurations, s.goals, self.trials
+        ));
+        out.push_str(&format!(
+            "Intervals: every figure of ours is followed by its 95% interval in brackets, and \
+             drawn with it as a whisker in the plots. Method (src/experiment/interval.rs): the \
+             percentile bootstrap over the units the figure averages (H1: the learning runs, \
+             their counts summed per resample as in the table; H2: the (scene, goal) pairs; H4: \
+             the questions, one per trial and type), {} resamples with a fixed seed, so the same \
+             records always print the same intervals. They measure the spread over our scenes \
+             and runs, not over seeds of the generator.\n\n",
+            super::interval::RESAMPLES
         ));
         for section in &self.sections {
             match section {

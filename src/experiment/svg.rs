@@ -5,8 +5,12 @@
 //! Invariants: output is a pure function of the data (no clock, no hash order), so the same
 //! results draw the same bytes; all text is XML-escaped; sizes come from fixed advances, so no
 //! font metrics are needed; a missing value is drawn as "n/a", never as a bar of height zero.
+//! A value's 95% interval (`interval`), when given, is drawn as a black whisker over its bar;
+//! in a stacked bar, a part's whisker spans the part's own interval from the part's bottom.
 
 use std::fmt::Write;
+
+use super::interval::Interval;
 
 /// Series colours, in order (ours, the paper's, then more).
 const COLOURS: [&str; 6] = [
@@ -42,8 +46,27 @@ pub struct Bars {
     pub series: Vec<String>,
     /// Groups: label and one value per series (`None`: not available).
     pub groups: Vec<(String, Vec<Option<f64>>)>,
+    /// 95% intervals, by group and series like `groups` (missing entries: no whisker).
+    pub errors: Vec<Vec<Option<Interval>>>,
     /// The top of the value axis.
     pub y_max: f64,
+}
+
+/// A whisker at `x` from value `lo` to `hi` (offset by `base`), on a scale of `y_max`.
+fn whisker(out: &mut String, x: f64, base: f64, i: Interval, y_max: f64) {
+    let y = |v: f64| TOP + PLOT_H - PLOT_H * ((base + v) / y_max).clamp(0.0, 1.0);
+    let (top, bottom) = (y(i.hi), y(i.lo));
+    let _ = writeln!(
+        out,
+        "<path d=\"M{:.1} {top:.1}H{:.1}M{x:.1} {top:.1}V{bottom:.1}M{:.1} {bottom:.1}H{:.1}\" \
+         stroke=\"black\" fill=\"none\"><title>95% interval: {} to {}</title></path>",
+        x - 3.0,
+        x + 3.0,
+        x - 3.0,
+        x + 3.0,
+        tick((i.lo * 100.0).round() / 100.0),
+        tick((i.hi * 100.0).round() / 100.0)
+    );
 }
 
 fn header(out: &mut String, width: f64, height: f64, title: &str) {
@@ -143,6 +166,10 @@ pub fn bar_chart(b: &Bars) -> String {
                         xml_escape(&b.series.get(si).cloned().unwrap_or_default()),
                         tick((v * 100.0).round() / 100.0)
                     );
+                    let error = b.errors.get(gi).and_then(|e| e.get(si)).copied().flatten();
+                    if let Some(i) = error {
+                        whisker(&mut out, x + (bar_w - 2.0) / 2.0, 0.0, i, b.y_max);
+                    }
                 }
                 None => {
                     let _ = writeln!(
@@ -169,6 +196,9 @@ pub fn bar_chart(b: &Bars) -> String {
     out
 }
 
+/// One part of a stacked bar: its value and 95% interval.
+pub type Part = (f64, Option<Interval>);
+
 /// Stacked bars: each bar's parts add up to at most `y_max` (fractions of plans: 1).
 #[derive(Clone, Debug)]
 pub struct Stacks {
@@ -176,8 +206,9 @@ pub struct Stacks {
     pub title: String,
     /// Part names (the legend), bottom to top.
     pub parts: Vec<String>,
-    /// Bars: label and one value per part (`None`: the bar is not available).
-    pub bars: Vec<(String, Option<Vec<f64>>)>,
+    /// Bars: label and one value per part with its 95% interval (`None`: the bar is not
+    /// available).
+    pub bars: Vec<(String, Option<Vec<Part>>)>,
     /// The top of the value axis.
     pub y_max: f64,
 }
@@ -204,9 +235,15 @@ pub fn stacked_chart(s: &Stacks) -> String {
         match parts {
             Some(parts) => {
                 let mut base = TOP + PLOT_H;
-                for (pi, v) in parts.iter().enumerate() {
+                let mut below = 0.0;
+                let mut whiskers = Vec::new();
+                for (pi, &(v, error)) in parts.iter().enumerate() {
                     let h = PLOT_H * (v / s.y_max).clamp(0.0, 1.0);
                     base -= h;
+                    if let Some(i) = error {
+                        whiskers.push((pi, below, i));
+                    }
+                    below += v;
                     let _ = writeln!(
                         out,
                         "<rect x=\"{x:.1}\" y=\"{base:.1}\" width=\"28\" height=\"{h:.1}\" fill=\"{}\">\
@@ -215,6 +252,11 @@ pub fn stacked_chart(s: &Stacks) -> String {
                         xml_escape(&s.parts.get(pi).cloned().unwrap_or_default()),
                         tick((v * 100.0).round() / 100.0)
                     );
+                }
+                // Whiskers after the segments, so none is painted over; side by side.
+                for (pi, below, i) in whiskers {
+                    let wx = x + 6.0 + 8.0 * pi as f64;
+                    whisker(&mut out, wx, below, i, s.y_max);
                 }
             }
             None => {
@@ -322,11 +364,19 @@ mod tests {
             title: "a < b".into(),
             series: vec!["ours".into(), "paper".into()],
             groups: vec![("P".into(), vec![Some(50.0), None])],
+            errors: vec![vec![Some(Interval { lo: 40.0, hi: 60.0 })]],
             y_max: 100.0,
         });
         assert!(svg.contains("a &lt; b"));
         assert!(svg.contains(&format!("height=\"{:.1}\"", PLOT_H / 2.0)));
         assert!(svg.contains(">n/a<"));
+        // The whisker runs from 60 (y = TOP + 0.4 PLOT_H) down to 40 (TOP + 0.6 PLOT_H).
+        let (top, bottom) = (TOP + 0.4 * PLOT_H, TOP + 0.6 * PLOT_H);
+        assert!(
+            svg.contains(&format!("V{bottom:.1}")) && svg.contains(&format!(" {top:.1}H")),
+            "{svg}"
+        );
+        assert!(svg.contains("95% interval: 40 to 60"), "{svg}");
         assert!(svg.starts_with("<svg") && svg.ends_with("</svg>\n"));
     }
 
@@ -335,12 +385,23 @@ mod tests {
         let svg = stacked_chart(&Stacks {
             title: "t".into(),
             parts: vec!["a".into(), "b".into()],
-            bars: vec![("x".into(), Some(vec![0.5, 0.25]))],
+            bars: vec![(
+                "x".into(),
+                Some(vec![
+                    (0.5, None),
+                    (0.25, Some(Interval { lo: 0.2, hi: 0.3 })),
+                ]),
+            )],
             y_max: 1.0,
         });
         let y_a = TOP + PLOT_H - PLOT_H * 0.5;
         let y_b = y_a - PLOT_H * 0.25;
         assert!(svg.contains(&format!("y=\"{y_a:.1}\"")), "{svg}");
+        // b's whisker spans 0.5 + [0.2, 0.3]; a has none.
+        assert_eq!(svg.matches("95% interval").count(), 1, "{svg}");
+        let (top, bottom) = (TOP + PLOT_H * 0.2, TOP + PLOT_H * 0.3);
+        assert!(svg.contains(&format!("V{bottom:.1}")), "{svg}");
+        assert!(svg.contains(&format!(" {top:.1}H")), "{svg}");
         assert!(svg.contains(&format!("y=\"{y_b:.1}\"")), "{svg}");
         // Each part's legend swatch has the colour of its bar segment.
         for (i, part) in ["a", "b"].iter().enumerate() {

@@ -298,3 +298,143 @@ fn a_killed_run_resumes_and_a_damaged_result_is_computed_again() {
         let _ = std::fs::remove_dir_all(d);
     }
 }
+
+/// Runs of several seeds merged into one report (`lucent experiment merge DIR DIR --out OUT`):
+/// every count is the sum of the seeds' counts and every mean the trial-weighted mean of the
+/// seeds' means, whichever order the directories are given in; a run of another setup is
+/// refused.
+#[test]
+fn a_merge_of_seeds_equals_the_sum_of_its_parts() {
+    let small_with_seed = |seed: &'static str| -> Vec<&'static str> {
+        let mut v: Vec<&str> = SMALL.to_vec();
+        let at = v.iter().position(|a| *a == "--seed").unwrap();
+        v[at + 1] = seed;
+        v
+    };
+    let mut parts = Vec::new();
+    let mut dirs = Vec::new();
+    for seed in ["3", "4"] {
+        let d = scratch(&format!("seed{seed}"));
+        let mut a = vec!["experiment", "all"];
+        a.extend(small_with_seed(seed));
+        let d_str = d.to_str().unwrap().to_string();
+        let mut owned: Vec<String> = a.iter().map(|s| s.to_string()).collect();
+        owned.extend(["--out".to_string(), d_str, "--outf=2".to_string()]);
+        let refs: Vec<&str> = owned.iter().map(String::as_str).collect();
+        let printed = lucent(&refs);
+        parts.push(serde_json::from_slice::<Value>(&printed.stdout).unwrap());
+        dirs.push(d);
+    }
+    let merged_dir = scratch("merged");
+    let m = merged_dir.to_str().unwrap();
+    let (d0, d1) = (dirs[0].to_str().unwrap(), dirs[1].to_str().unwrap());
+    let out = lucent(&["experiment", "merge", d0, d1, "--out", m, "--outf=2"]);
+    let mut merged: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let out = lucent(&["experiment", "merge", d1, d0, "--outf=2"]);
+    let mut reversed: Value = serde_json::from_slice(&out.stdout).unwrap();
+    strip_times(&mut merged);
+    strip_times(&mut reversed);
+    assert_eq!(
+        merged, reversed,
+        "the order of the directories does not matter"
+    );
+    let md = std::fs::read_to_string(merged_dir.join("report.md")).unwrap();
+    assert!(md.contains("Seeds 3, 4 pooled"), "{md}");
+    assert_eq!(merged["seeds"], serde_json::json!([3, 4]));
+
+    let n = |v: &Value| v.as_u64().unwrap_or_else(|| panic!("a count: {v}"));
+    let f = |v: &Value| v.as_f64();
+    let sum = |path: &dyn Fn(&Value) -> &Value| n(path(&parts[0])) + n(path(&parts[1]));
+    assert_eq!(n(&merged["trials"]), sum(&|v| &v["trials"]));
+    for key in ["strict_counts", "relaxed_counts"] {
+        for c in ["tp", "fp", "fn"] {
+            assert_eq!(
+                n(&merged["h1"][key][c]),
+                sum(&|v| &v["h1"][key][c]),
+                "h1.{key}.{c}"
+            );
+        }
+    }
+    assert_eq!(
+        merged["h1"]["runs"].as_array().unwrap().len(),
+        parts
+            .iter()
+            .map(|p| p["h1"]["runs"].as_array().unwrap().len())
+            .sum::<usize>()
+    );
+    for k in 0..2 {
+        for c in ["trees", "rechecked", "repeats", "bad_leaves", "no_plan"] {
+            assert_eq!(
+                n(&merged["h3"]["presets"][k][c]),
+                sum(&|v| &v["h3"]["presets"][k][c]),
+                "h3 preset {k} {c}"
+            );
+        }
+    }
+    // H2: pair counts add up, fractions are the trial-weighted means of the parts'.
+    for preset in ["real", "simulated"] {
+        assert_eq!(
+            n(&merged["h2"][preset]["pairs"]),
+            sum(&|v| &v["h2"][preset]["pairs"])
+        );
+        for cond in ["without", "with"] {
+            let at = |v: &Value| v["h2"][preset]["iterative"][cond].clone();
+            let (a, b, m) = (at(&parts[0]), at(&parts[1]), at(&merged));
+            assert_eq!(n(&m["trials"]), n(&a["trials"]) + n(&b["trials"]));
+            for frac in ["optimal", "incorrect"] {
+                let part =
+                    |x: &Value| f(&x[frac]).map(|v| (v * n(&x["trials"]) as f64, n(&x["trials"])));
+                let (sa, na) = part(&a).unwrap_or((0.0, 0));
+                let (sb, nb) = part(&b).unwrap_or((0.0, 0));
+                if na + nb > 0 {
+                    let want = (sa + sb) / (na + nb) as f64;
+                    let got = f(&m[frac]).unwrap();
+                    assert!(
+                        (got - want).abs() < 1e-9,
+                        "{preset} {cond} {frac}: {got} vs {want}"
+                    );
+                }
+            }
+        }
+    }
+    // H4: question counts add up, precision is the count-weighted mean of the parts'.
+    for preset in ["real", "simulated"] {
+        for cond in 0..2 {
+            for q in 0..4 {
+                let row = |v: &Value| v["h4"][preset][cond]["rows"][q].clone();
+                let (a, b, m) = (row(&parts[0]), row(&parts[1]), row(&merged));
+                assert_eq!(n(&m[3]), n(&a[3]) + n(&b[3]), "{preset} {cond} {q}");
+                let w = |x: &Value| f(&x[1]).map_or(0.0, |p| p * n(&x[3]) as f64);
+                if n(&m[3]) > 0 {
+                    let want = (w(&a) + w(&b)) / n(&m[3]) as f64;
+                    let got = f(&m[1]).unwrap();
+                    assert!(
+                        (got - want).abs() < 1e-9,
+                        "{preset} {cond} {q}: {got} vs {want}"
+                    );
+                }
+            }
+        }
+    }
+    // A run of another setup (here: more runs) is refused, with exit 65.
+    let other = scratch("other");
+    let o = other.to_str().unwrap();
+    let mut a: Vec<&str> = vec!["experiment", "h1"];
+    a.extend(small_with_seed("5"));
+    let at = a.iter().position(|x| *x == "--runs").unwrap();
+    a[at + 1] = "1";
+    a.extend(["--out", o]);
+    lucent(&a);
+    let refused = Command::new(env!("CARGO_BIN_EXE_lucent"))
+        .args(["experiment", "merge", d0, o])
+        .output()
+        .unwrap();
+    assert_eq!(refused.status.code(), Some(65), "{refused:?}");
+    assert!(
+        String::from_utf8_lossy(&refused.stderr).contains("differ"),
+        "{refused:?}"
+    );
+    for d in dirs.into_iter().chain([merged_dir, other]) {
+        let _ = std::fs::remove_dir_all(d);
+    }
+}
