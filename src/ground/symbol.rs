@@ -291,10 +291,11 @@ impl Symbols {
         self.fun(name, neg, args)
     }
 
-    /// The symbol with the classical sign flipped, for functions and constants (not tuples).
+    /// The symbol with the classical sign flipped, for functions, constants and tuples (clingo
+    /// has `-(1,2)` and `-()`).
     pub fn flip_sign(&mut self, id: SymId) -> Option<SymId> {
         match self.get(id) {
-            SymData::Fun { name, neg, .. } if !self.names.resolve(name).is_empty() => {
+            SymData::Fun { name, neg, .. } => {
                 let args: smallvec::SmallVec<[SymId; 8]> = self.args(id).into();
                 Some(self.fun(name, !neg, &args))
             }
@@ -305,9 +306,7 @@ impl Symbols {
     /// [`Symbols::flip_sign`] when the result exists already (nothing is created).
     pub fn find_flip_sign(&self, id: SymId) -> Option<SymId> {
         match self.get(id) {
-            SymData::Fun { name, neg, .. } if !self.names.resolve(name).is_empty() => {
-                self.find_fun(name, !neg, self.args(id))
-            }
+            SymData::Fun { name, neg, .. } => self.find_fun(name, !neg, self.args(id)),
             _ => None,
         }
     }
