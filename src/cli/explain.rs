@@ -659,6 +659,15 @@ fn write_pictures(answer: &Answer, a: &Args, err: &mut dyn Write) -> std::io::Re
             )?;
             continue;
         };
+        if tree.roots.is_empty() {
+            // An atom decided by a choice has its reason in the text, not in rules to draw.
+            writeln!(
+                err,
+                "lucent: this answer's proof tree is empty (the answer names the choice that \
+                 decides it); {file} not written"
+            )?;
+            continue;
+        }
         // A program's proof: each literal once, with its rule (`explain::draw_graph`).
         let program = a.why.is_some() || a.why_not.is_some();
         let text = if svg && program {

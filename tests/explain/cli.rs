@@ -997,3 +997,27 @@ fn dot_draws_each_literal_once() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An atom false by a choice has an empty proof tree (its reason is the choice, in the text):
+/// `--svg`/`--dot` say so and write no file, where they wrote an empty picture before.
+#[test]
+fn pictures_of_an_unchosen_atom_are_not_empty_files() {
+    let dir = std::env::temp_dir().join(format!("lucent-unchosen-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (svg, dot) = (dir.join("u.svg"), dir.join("u.dot"));
+    let (code, out, err) = run(&[
+        "explain",
+        "tests/data/explain/unchosen.lp",
+        "--why-not",
+        "spare",
+        "--svg",
+        svg.to_str().unwrap(),
+        "--dot",
+        dot.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("It could be"), "{out}");
+    assert!(err.contains("proof tree is empty"), "{err}");
+    assert!(!svg.exists() && !dot.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
