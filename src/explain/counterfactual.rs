@@ -26,7 +26,7 @@ use super::questions::{answer, Answer, Mode, Session};
 use super::verbalize::{ActionForm, Tense, Verbalizer};
 use crate::action::{self, AxiomOrigin, HorizonMode, Options, OriginKind, Switches};
 use crate::base::Diagnostics;
-use crate::control::{Control, ControlConfig, Part, SolveOptions, Symbol, TruthValue};
+use crate::control::{Control, ControlConfig, Part, Symbol, TruthValue};
 use crate::syntax::ast;
 
 /// What if the robot had done `action` at `step` (default: the step of the plan's action with
@@ -262,29 +262,10 @@ impl NoPlan {
     /// Solves with the hypotheses `on` switched on and the others off: `None` when a plan
     /// exists, else the core, a subset of `on` that is unsolvable on its own (the others off).
     pub fn refute(&mut self, on: &[usize]) -> Option<Vec<usize>> {
-        let assumptions: Vec<(Symbol, bool)> = (0..self.hyps.len())
-            .map(|k| (hyp_atom(k), on.contains(&k)))
-            .collect();
-        let mut sat = false;
         self.solves += 1;
-        let summary = self.ctl.solve(&SolveOptions { assumptions }, |_| {
-            sat = true;
-            false
-        });
-        if sat {
-            return None;
-        }
-        // Assumed-false hypotheses in the core are dropped: switching them off is what every
-        // later call does too. Without a core (a stopped search), `on` itself.
-        let core = match summary.core {
-            Some(core) => on
-                .iter()
-                .copied()
-                .filter(|&k| core.contains(&(hyp_atom(k), true)))
-                .collect(),
-            None => on.to_vec(),
-        };
-        Some(core)
+        let gates: Vec<Symbol> = (0..self.hyps.len()).map(hyp_atom).collect();
+        let gates: Vec<&Symbol> = gates.iter().collect();
+        super::unsat::refute_gates(&mut self.ctl, &gates, on)
     }
 
     /// A minimal set of hypotheses that makes the task impossible: `None` when a plan exists

@@ -201,41 +201,53 @@ impl Search {
     /// Solves with the candidates `on` switched on and the others off: `None` when an answer
     /// set exists, else a subset of `on` that is unsatisfiable on its own (the others off).
     fn refute(&mut self, on: &[usize]) -> Option<Vec<usize>> {
-        let mut is_on = vec![false; self.cands.len()];
-        for &k in on {
-            is_on[k] = true;
-        }
-        let assumptions: Vec<(Symbol, bool)> = self
-            .cands
-            .iter()
-            .zip(&is_on)
-            .map(|(c, &b)| (c.assumption.clone(), b))
-            .collect();
-        let mut sat = false;
         self.solves += 1;
-        let summary = self.ctl.solve(&SolveOptions { assumptions }, |_| {
-            sat = true;
-            false
-        });
-        if sat {
-            return None;
-        }
-        // Without a core (a stopped search), `on` itself.
-        Some(match summary.core {
-            Some(core) => {
-                let used: std::collections::HashSet<&Symbol> = core
-                    .iter()
-                    .filter(|(_, value)| *value)
-                    .map(|(s, _)| s)
-                    .collect();
-                on.iter()
-                    .copied()
-                    .filter(|&k| used.contains(&self.cands[k].assumption))
-                    .collect()
-            }
-            None => on.to_vec(),
-        })
+        let gates: Vec<&Symbol> = self.cands.iter().map(|c| &c.assumption).collect();
+        refute_gates(&mut self.ctl, &gates, on)
     }
+}
+
+/// Solves with the gate atoms `gates[k]` assumed true for `k` in `on` and false for the others:
+/// `None` when an answer set exists, else the members of `on` whose gate the solver's core
+/// assumes true (assumed-false gates are dropped: switching them off is what the caller's
+/// later calls do too); without a core (a stopped search), `on` itself. The deletion searches
+/// of `--why-unsat` and of why-no-plan (`counterfactual::NoPlan`) both refute with it.
+pub(super) fn refute_gates(
+    ctl: &mut Control,
+    gates: &[&Symbol],
+    on: &[usize],
+) -> Option<Vec<usize>> {
+    let mut is_on = vec![false; gates.len()];
+    for &k in on {
+        is_on[k] = true;
+    }
+    let assumptions: Vec<(Symbol, bool)> = gates
+        .iter()
+        .zip(&is_on)
+        .map(|(g, &b)| ((*g).clone(), b))
+        .collect();
+    let mut sat = false;
+    let summary = ctl.solve(&SolveOptions { assumptions }, |_| {
+        sat = true;
+        false
+    });
+    if sat {
+        return None;
+    }
+    Some(match summary.core {
+        Some(core) => {
+            let used: std::collections::HashSet<&Symbol> = core
+                .iter()
+                .filter(|(_, value)| *value)
+                .map(|(s, _)| s)
+                .collect();
+            on.iter()
+                .copied()
+                .filter(|&k| used.contains(gates[k]))
+                .collect()
+        }
+        None => on.to_vec(),
+    })
 }
 
 /// A gate of the rewritten program: the statement it guards and what it is.
