@@ -15,15 +15,10 @@ use std::process::Command;
 
 use serde_json::Value;
 
-/// The sorted answer sets `lucent -n 0 --outf=2 ARGS` gives for `program` (the optimal ones
-/// with optimization: the last `Models.Optimal` witnesses).
-fn answer_sets(args: &[&str], program: &str) -> Vec<Vec<String>> {
-    let mut all = vec!["-n", "0", "--outf=2", "--opt-mode=optN"];
-    all.extend(args);
-    let (code, out, err) = lucent_in_process(&all, program);
-    assert!([10, 20, 30].contains(&code), "exit {code}: {err}");
-    let js: Value = serde_json::from_str(&out).expect("JSON");
-    let mut witnesses: Vec<Vec<String>> = js["Call"][0]["Witnesses"]
+/// The answer sets of clingo-style `--outf=2` JSON, each as its sorted atoms (Lucent's and
+/// clingo's output read alike).
+fn witnesses(js: &Value) -> Vec<Vec<String>> {
+    js["Call"][0]["Witnesses"]
         .as_array()
         .into_iter()
         .flatten()
@@ -37,7 +32,18 @@ fn answer_sets(args: &[&str], program: &str) -> Vec<Vec<String>> {
             atoms.sort();
             atoms
         })
-        .collect();
+        .collect()
+}
+
+/// The sorted answer sets `lucent -n 0 --outf=2 ARGS` gives for `program` (the optimal ones
+/// with optimization: the last `Models.Optimal` witnesses).
+fn answer_sets(args: &[&str], program: &str) -> Vec<Vec<String>> {
+    let mut all = vec!["-n", "0", "--outf=2", "--opt-mode=optN"];
+    all.extend(args);
+    let (code, out, err) = lucent_in_process(&all, program);
+    assert!([10, 20, 30].contains(&code), "exit {code}: {err}");
+    let js: Value = serde_json::from_str(&out).expect("JSON");
+    let mut witnesses = witnesses(&js);
     if let Some(k) = js["Models"]["Optimal"].as_u64() {
         witnesses = witnesses.split_off(witnesses.len() - k as usize);
     }
@@ -111,21 +117,7 @@ fn clingo_answer_sets(args: &[&str], program: &str) -> Vec<Vec<String>> {
             String::from_utf8_lossy(&out.stderr)
         )
     });
-    let mut v: Vec<Vec<String>> = js["Call"][0]["Witnesses"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .map(|w| {
-            let mut atoms: Vec<String> = w["Value"]
-                .as_array()
-                .unwrap()
-                .iter()
-                .map(|s| s.as_str().unwrap().to_owned())
-                .collect();
-            atoms.sort();
-            atoms
-        })
-        .collect();
+    let mut v = witnesses(&js);
     v.sort();
     v
 }
