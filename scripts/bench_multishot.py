@@ -7,7 +7,11 @@ grounded, `query(t)` true, one model), which writes its program (grid_program) t
 prints the ground and solve time of every part. clingo: the same loop over that file in
 Python, timed the same way (`Control.ground` and `Control.solve` around each call). Prints, for
 parts 1-W and the last W parts, both systems' mean ground times and the ratios last/first, and
-the slowest solve of each.
+the slowest solve of each. The parts of this program grow (the cells reachable in t moves, and so
+the `at`/`visited` rules of step t, grow until about step 40), so the script also counts the
+ground rules of every part (clingo's, through a `clingo.Observer`: rules and weight rules of each
+`ground` call) and prints the ground time per rule, last/first: the measure of a grounder that
+keeps its indexes between parts, where the part sizes differ.
 
 usage: scripts/bench_multishot.py [--bench PATH] [--parts 150] [--size 10] [--window 10]
        scripts/bench_multishot.py --counts N    (clingo's model count at each step 0..N)
@@ -41,16 +45,34 @@ def step(ctl, t):
     return g
 
 
+class RuleCount:
+    """clingo observer counting the ground rules (normal, choice, weight) output so far."""
+
+    def __init__(self):
+        self.rules = 0
+
+    def rule(self, choice, head, body):
+        self.rules += 1
+
+    def weight_rule(self, choice, head, lower_bound, body):
+        self.rules += 1
+
+
 def clingo_loop(path, parts):
+    """clingo's loop; rows (t, ground ms, solve ms, outcome, ground rules of part t)."""
     ctl = clingo.Control(["--warn=none"])
+    count = RuleCount()
+    ctl.register_observer(count)
     ctl.load(path)
     out = []
     for t in range(parts + 1):
+        before = count.rules
         g = step(ctl, t)
         start = time.perf_counter()
         r = ctl.solve()
         s = time.perf_counter() - start
-        out.append((t, g * 1e3, s * 1e3, "SAT" if r.satisfiable else "UNSAT"))
+        out.append((t, g * 1e3, s * 1e3, "SAT" if r.satisfiable else "UNSAT",
+                    count.rules - before))
     return out
 
 
@@ -111,6 +133,12 @@ def main():
     print(f"grid {a.size}x{a.size}, {a.parts} step parts, window {a.window}")
     lf, ll = summary("lucent", ours, a.window)
     cf, cl = summary("clingo", theirs, a.window)
+    parts = [r for r in theirs if r[0] > 0]
+    rf = sum(r[4] for r in parts[:a.window]) / a.window
+    rl = sum(r[4] for r in parts[-a.window:]) / a.window
+    print(f"ground rules per part (clingo's count): parts 1-{a.window} {rf:.1f}, last "
+          f"{a.window} {rl:.1f}, last/first {rl / rf:.2f}; ground time per rule, last/first: "
+          f"lucent {(ll / rl) / (lf / rf):.2f}, clingo {(cl / rl) / (cf / rf):.2f}")
     print(f"lucent/clingo ground time: parts 1-{a.window} {lf / cf:.2f}, last {a.window} "
           f"{ll / cl:.2f}; solve in all {sum(r[2] for r in ours) / sum(r[2] for r in theirs):.2f}")
 
