@@ -21,6 +21,10 @@
 //!   call but learnt clauses.
 //! - Reported models improve lexicographically, so the last one reported has the optimum costs
 //!   (`Solver::best`), which `OptN` then enumerates as branch and bound's optimum.
+//! - In a portfolio (`portfolio`), a cost vector another thread found bounds a level from above
+//!   when it meets the optima of the levels above (as this thread's own models do); a search
+//!   stopped by such news is resumed, never reported as a stop. When another thread's costs
+//!   close the last level, `best` holds those costs (that thread passed the model on).
 
 use super::*;
 use hashbrown::HashMap;
@@ -114,6 +118,17 @@ enum Step {
     Unsat,
     /// A limit stopped the call.
     Stop,
+    /// Another thread of the portfolio found a better model (the search resumes).
+    News,
+}
+
+/// The cost that `costs` gives the level after `fixed` when it meets their optima, else none
+/// (`i64::MAX`).
+pub(super) fn level_bound(costs: &[i64], fixed: &[i64]) -> i64 {
+    match costs.get(fixed.len()) {
+        Some(&c) if costs[..fixed.len()] == *fixed => c,
+        _ => i64::MAX,
+    }
 }
 
 impl Solver {
@@ -131,6 +146,8 @@ impl Solver {
         let mut base = assume.to_vec();
         base.push(g);
         let mut reported: Option<Vec<i64>> = None;
+        // The optima of the levels done so far.
+        let mut fixed: Vec<i64> = Vec::new();
         let levels: Vec<Vec<(Lit, i64)>> =
             self.tr.minimize.iter().map(|(_, l)| l.clone()).collect();
         for (i, lits) in levels.iter().enumerate() {
@@ -138,8 +155,10 @@ impl Solver {
             let mut stratum = level.next_stratum(i64::MAX).unwrap_or(0);
             // The best model so far meets the optima of the levels above (it is the least
             // lexicographically), so its cost here bounds this level from above.
-            let mut upper = reported.as_ref().map_or(i64::MAX, |r| r[i]);
-            while upper > level.lower {
+            let mut upper = reported
+                .as_ref()
+                .map_or(i64::MAX, |r| level_bound(r, &fixed));
+            while upper.min(self.shared_level_bound(&fixed)) > level.lower {
                 match self.core_step(call, &base, &mut level, stratum) {
                     Step::Model { done } => {
                         let costs = self.costs();
@@ -158,7 +177,7 @@ impl Solver {
                         }
                         stratum = level.next_stratum(stratum).unwrap_or(0);
                     }
-                    Step::Relaxed => {}
+                    Step::Relaxed | Step::News => {}
                     Step::Unsat => {
                         call.exhausted = true;
                         self.retire(g);
@@ -171,12 +190,17 @@ impl Solver {
                 }
             }
             // The level's optimum is `lower`: fix it for the lower levels.
+            fixed.push(level.lower);
             self.engine.backtrack(0);
             let neg: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (l, -w)).collect();
             let b = self.aux_weight(g, &neg, level.lower.saturating_neg());
             self.engine.add_clause(&[!g, b]);
         }
         self.retire(g);
+        if reported.as_ref() != Some(&fixed) {
+            // Another thread's model closed the last level (module invariants).
+            self.best = Some(fixed);
+        }
         call.optimum = true;
         call.exhausted = true;
         true
@@ -204,6 +228,7 @@ impl Solver {
                 .map(|s| !s.lit),
         );
         match self.next(&a) {
+            Next::Stopped if self.engine.limits.bound_news => Step::News,
             Next::Stopped => {
                 call.stopped = true;
                 Step::Stop

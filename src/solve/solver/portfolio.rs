@@ -202,10 +202,13 @@ pub(super) fn diversify(base: &Config, k: usize) -> Config {
         0 => {}
         1 => {
             // clasp's "frumpy"-like settings: the fixed profile, Luby restarts, some
-            // random decisions.
+            // random decisions; and, as the second configuration of clasp's portfolio
+            // (`clingo --print-portfolio`: `--opt-strat=usc,disjoint`), core-guided
+            // optimization beside thread 0's branch and bound.
             c.profile = SearchProfile::Fixed;
             c.restarts = RestartPolicy::Luby(100);
             c.random_freq_permille = 10;
+            c.opt_strategy = OptStrategy::Usc;
         }
         2 => {
             c.default_phase_false = !base.default_phase_false;
@@ -326,6 +329,19 @@ impl Solver {
         }
         self.best = Some(best);
         true
+    }
+
+    /// Core-guided optimization in a portfolio: the bound that the best costs any thread
+    /// found put on the level after `fixed` (`i64::MAX` when none, or when they miss the
+    /// optima `fixed` of the levels above); the bound news is taken as seen.
+    pub(super) fn shared_level_bound(&mut self, fixed: &[i64]) -> i64 {
+        let Some(sb) = self.shared_bound.clone() else {
+            return i64::MAX;
+        };
+        self.engine.limits.bound_seen = sb.gen.load(Ordering::Relaxed);
+        let best = sb.best.lock().unwrap_or_else(|e| e.into_inner());
+        best.as_deref()
+            .map_or(i64::MAX, |b| core_guided::level_bound(b, fixed))
     }
 
     /// How this call is spread over the threads.
