@@ -1,7 +1,8 @@
 //! The stability check of non-head-cycle-free programs: a candidate `M` (a supported model
 //! whose positive loops are founded) is an answer set when no model of the reduct `P^M` lies
 //! strictly inside it, which a fresh engine decides (`is_minimal`). When one, `Y`, does, the
-//! atoms `U = M \ Y` are unfounded with respect to `M` (Leone, Rullo, Scarcello 1997, with
+//! atoms `U = M \ Y` are unfounded with respect to `M` (`Y` is grown to a maximal one first,
+//! so `U` is a minimal such set and touches few rules) (Leone, Rullo, Scarcello 1997, with
 //! choice heads and weight bodies as clasp reads them), and `learn_unfounded` adds the loop
 //! nogoods of `U` (Drescher et al., "Conflict-driven disjunctive answer set solving", KR 2008):
 //! for each atom `p` of `U`, the clause `not p or R1 or ... or Rk`, where the `Ri` are the
@@ -125,14 +126,41 @@ impl Solver {
             return Minimality::Minimal;
         }
         match sub.search(&[]) {
-            SearchResult::Sat => Minimality::Smaller(
-                vars.iter()
-                    .map(|v| v.is_some_and(|v| sub.value(v) == Some(true)))
-                    .collect(),
-            ),
-            SearchResult::Unsat => Minimality::Minimal,
-            SearchResult::Unknown => Minimality::Stopped,
+            SearchResult::Sat => {}
+            SearchResult::Unsat => return Minimality::Minimal,
+            SearchResult::Unknown => return Minimality::Stopped,
         }
+        // Grow `Y` to a maximal model of the reduct inside `M` (each round keeps `Y` and adds
+        // an atom of `U`): a minimal unfounded set touches few rules, so its nogoods are short.
+        let mut in_y: Vec<bool> = vars
+            .iter()
+            .map(|v| v.is_some_and(|v| sub.value(v) == Some(true)))
+            .collect();
+        loop {
+            let keep: Vec<Lit> = vars
+                .iter()
+                .zip(&in_y)
+                .filter_map(|(v, &y)| v.filter(|_| y))
+                .collect();
+            let grow: Vec<Lit> = vars
+                .iter()
+                .zip(&in_y)
+                .filter_map(|(v, &y)| v.filter(|_| !y))
+                .collect();
+            if !sub.add_clause(&grow) {
+                break;
+            }
+            match sub.search(&keep) {
+                SearchResult::Sat => {
+                    for (y, v) in in_y.iter_mut().zip(&vars) {
+                        *y = v.is_some_and(|v| sub.value(v) == Some(true));
+                    }
+                }
+                SearchResult::Unsat => break,
+                SearchResult::Unknown => return Minimality::Stopped,
+            }
+        }
+        Minimality::Smaller(in_y)
     }
 
     /// Per atom (index 0 unused), whether the current assignment makes it true.
