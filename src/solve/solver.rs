@@ -4,8 +4,8 @@
 //! clauses survive between calls.
 //!
 //! This file holds the solver's state, construction, multi-shot steps, externals and the solve
-//! calls; `portfolio` runs them on several threads; `search` has the primitives (next answer set, minimality, models,
-//! blocking, cost bounds), `strategies` enumeration, optimization and consequences, `cr` the
+//! calls; `portfolio` runs them on several threads; `search` has the primitives (next answer set, models,
+//! blocking, cost bounds), `minimal` the minimality check, `strategies` enumeration, optimization and consequences, `cr` the
 //! CR-Prolog semantics.
 //!
 //! Invariants:
@@ -31,8 +31,9 @@
 //!   propagation is a consequence of the program), or by its projection with `--project` and
 //!   for CR programs (where answer sets are compared on their non-CR atoms).
 //! - For non-head-cycle-free programs every candidate is checked to be a minimal model of its
-//!   reduct (Gelfond-Lifschitz) with a fresh engine before it is reported; failed candidates are
-//!   blocked for good (later steps cannot make them minimal: see `next`).
+//!   reduct (Gelfond-Lifschitz) with a fresh engine before it is reported; a failed candidate
+//!   adds the loop nogoods of the unfounded set the check found, which hold in later steps too
+//!   (`minimal`).
 //! - Every auxiliary variable (bodies, shifted supports, cost-bound literals) is a function of
 //!   the atoms, so decision-based blocking never reports one answer set twice.
 //! - Edge directives are acyclicity constraints, checked on each total assignment: a cycle of
@@ -46,6 +47,7 @@
 mod core_guided;
 mod cr;
 pub(crate) use cr::transitive_closure;
+mod minimal;
 mod portfolio;
 mod propagators;
 mod search;

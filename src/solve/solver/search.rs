@@ -1,11 +1,12 @@
-//! The solver's search primitives: the next answer set (search, stability checks of
-//! non-head-cycle-free candidates, edge acyclicity), models and their costs, reporting, blocking
+//! The solver's search primitives: the next answer set (search, the minimality check of
+//! non-head-cycle-free candidates in `minimal`, edge acyclicity), models and their costs, reporting, blocking
 //! of found models and cost bounds.
 //!
 //! Invariants: every reported model passed the minimality check when the program is not
 //! head-cycle-free; a blocked model (by its decisions, or its projection) is never reported
 //! again in the same call; constraints of one call hang on that call's guard.
 
+use super::minimal::Minimality;
 use super::*;
 
 impl Solver {
@@ -34,9 +35,9 @@ impl Solver {
                         return Next::Model;
                     }
                     match self.is_minimal() {
-                        Some(true) => return Next::Model,
-                        Some(false) => {}
-                        None => {
+                        Minimality::Minimal => return Next::Model,
+                        Minimality::Smaller(smaller) => self.learn_unfounded(&smaller),
+                        Minimality::Stopped => {
                             self.engine.limits.interrupted =
                                 self.engine.limits.interrupted
                                     || self.config.interrupt.as_ref().is_some_and(|f| {
@@ -45,21 +46,6 @@ impl Solver {
                             return Next::Stopped;
                         }
                     }
-                    // Not a minimal model of its reduct: exclude this atom assignment for good.
-                    // Later steps only give rules to new atoms and to externals, whose values
-                    // the check keeps fixed, so a smaller model of the reduct extends by the
-                    // same new atoms and the assignment never becomes minimal.
-                    let block: Vec<Lit> = (1..=self.prog.num_atoms as usize)
-                        .map(|a| {
-                            let l = self.tr.atom_lit[a];
-                            if self.engine.value(l) == Some(true) {
-                                !l
-                            } else {
-                                l
-                            }
-                        })
-                        .collect();
-                    self.engine.add_clause(&block);
                 }
             }
         }
@@ -136,105 +122,6 @@ impl Solver {
         (1..=self.prog.num_atoms)
             .filter(|&a| self.engine.value(self.tr.atom_lit[a as usize]) == Some(true))
             .collect()
-    }
-
-    /// Whether the current total assignment's atoms form a minimal model of the reduct;
-    /// `None` when a limit stopped the check.
-    pub(super) fn is_minimal(&mut self) -> Option<bool> {
-        self.minimality_checks += 1;
-        let model = self.true_atoms();
-        let mut in_m = vec![false; self.prog.num_atoms as usize + 1];
-        for &a in &model {
-            in_m[a as usize] = true;
-        }
-        let mut sub = Engine::new();
-        sub.limits.deadline = self.engine.limits.deadline;
-        sub.limits.interrupt = self.engine.limits.interrupt.clone();
-        let vars: Vec<Option<Lit>> = (0..=self.prog.num_atoms as usize)
-            .map(|a| {
-                if in_m[a] {
-                    Some(sub.new_var().positive())
-                } else {
-                    None
-                }
-            })
-            .collect();
-        let holds = |l: i32| {
-            if l > 0 {
-                in_m[l as usize]
-            } else {
-                !in_m[(-l) as usize]
-            }
-        };
-        for r in &self.prog.rules {
-            let heads: Vec<Lit> = r.head.iter().filter_map(|&h| vars[h as usize]).collect();
-            if r.head.is_empty() {
-                continue;
-            }
-            // The reduct's body over the smaller model Y: positive literals vary, negative
-            // ones are fixed by M.
-            let mut clause_body: Vec<Lit> = Vec::new();
-            match r.body {
-                BodyRef::Normal(ls) => {
-                    if ls.iter().any(|&l| l < 0 && !holds(l)) {
-                        continue;
-                    }
-                    if ls.iter().any(|&l| l > 0 && !in_m[l as usize]) {
-                        continue;
-                    }
-                    for &l in ls.iter().filter(|&&l| l > 0) {
-                        clause_body.push(!vars[l as usize].expect("positive body atom is in M"));
-                    }
-                }
-                BodyRef::Weight { lower, lits } => {
-                    let mut fixed = 0i64;
-                    let mut var_lits = Vec::new();
-                    for &(l, w) in lits {
-                        if l < 0 {
-                            if holds(l) {
-                                fixed += w;
-                            }
-                        } else if let Some(v) = vars[l as usize] {
-                            var_lits.push((v, w));
-                        }
-                    }
-                    let b = sub.new_var().positive();
-                    sub.add_weight(b, &var_lits, lower - fixed);
-                    clause_body.push(!b);
-                }
-            }
-            match r.head_kind {
-                HeadKind::Disjunction => {
-                    let mut c = clause_body.clone();
-                    c.extend_from_slice(&heads);
-                    sub.add_clause(&c);
-                }
-                HeadKind::Choice => {
-                    for &h in &heads {
-                        let mut c = clause_body.clone();
-                        c.push(h);
-                        sub.add_clause(&c);
-                    }
-                }
-            }
-        }
-        let strict: Vec<Lit> = vars.iter().flatten().map(|&l| !l).collect();
-        // Free externals keep their value in the reduct check.
-        for &(a, _) in &self.prog.externals {
-            if self.tr.free[a as usize] {
-                if let Some(v) = vars[a as usize] {
-                    sub.add_clause(&[v]);
-                }
-            }
-        }
-        if !sub.add_clause(&strict) {
-            return Some(true);
-        }
-        match sub.search(&[]) {
-            SearchResult::Sat => Some(false),
-            SearchResult::Unsat => Some(true),
-            SearchResult::Unknown => None,
-        }
     }
 
     pub(super) fn costs(&self) -> Vec<i64> {
