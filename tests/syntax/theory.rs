@@ -55,6 +55,18 @@ fn theory_syntax_errors_are_placed_as_gringo_places_them() {
             "#theory t{term{}; &a/0 : term, bdy}.",
             "t.lp:1:32-35: error: syntax error, unexpected <IDENTIFIER>, expecting {",
         ),
+        (
+            "q :- &a{ 1 ; }.",
+            "t.lp:1:14-15: error: syntax error, unexpected }, expecting :",
+        ),
+        (
+            "q :- &a{ f(1 }.",
+            "t.lp:1:14-15: error: syntax error, unexpected }, expecting )",
+        ),
+        (
+            "q :- &a{ 1 } <= .",
+            "t.lp:1:17-18: error: syntax error, unexpected .",
+        ),
     ];
     for (input, expected) in cases {
         let mut sources = SourceMap::new();

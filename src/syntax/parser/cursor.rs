@@ -282,8 +282,10 @@ impl<'a> Cursor<'a> {
         }
         self.lexer.set_theory(theory);
         let from = self.prev_end;
-        self.diags
-            .retain(|d| d.span.start < from || d.span.file != self.file);
+        let file = self.file;
+        self.diags.retain(|d| {
+            d.span.start < from || d.span.file != file || !d.message.starts_with("lexer error")
+        });
         self.peeked = None;
         self.lexer.set_pos(from as usize);
         self.tok = self.lexer.next_token(&mut self.diags);

@@ -266,6 +266,9 @@ impl<'a> Parser<'a> {
     fn theory_element(&mut self) -> PResult<TheoryElement> {
         let start = self.tok.start;
         let mut terms = Vec::new();
+        if self.at(T::RBrace) {
+            return Err(self.unexpected(&[":"]));
+        }
         if !self.at(T::Colon) {
             loop {
                 terms.push(self.theory_opterm()?);
