@@ -132,6 +132,8 @@ fn rule_terms(rule: &mut Rule, f: &mut dyn FnMut(&mut Term)) {
                 }
                 g.set_syntax.iter_mut().for_each(|c| cond(c, f));
             }
+            // AL_d translations make no theory atoms.
+            BodyLiteral::Theory { .. } => {}
         }
     }
     if let RuleKind::ConsistencyRestoring { label: Some(l) } = &mut rule.kind {

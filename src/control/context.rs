@@ -106,6 +106,16 @@ impl Control {
         self.mark_merged_atoms(&g, &local, &map, old_atoms, &defined_here, &redefined);
         map_statements(&local, &map, &mut delta);
         self.merge_outputs(&local, &map, &mut delta);
+        for t in &local.theory_atoms {
+            let mut t = t.clone();
+            if t.atom != 0 {
+                t.atom = map[t.atom as usize];
+            }
+            for e in &mut t.elements {
+                e.condition.iter_mut().for_each(|l| *l = map_lit(&map, *l));
+            }
+            delta.theory_atoms.push(t);
+        }
         if let Some(gmap) = &gmap {
             delta.provenance = self.merge_provenance(&local, gmap, &kept, stmt_offset);
         }
@@ -362,6 +372,7 @@ impl Control {
         p.assumptions.extend(delta.assumptions);
         p.heuristics.extend(delta.heuristics);
         p.edges.extend(delta.edges);
+        p.theory_atoms.extend(delta.theory_atoms);
         p.cr_rules.extend(delta.cr_rules);
         p.prefers.extend(delta.prefers);
     }

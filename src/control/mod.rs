@@ -63,6 +63,7 @@ pub mod incmode;
 mod model;
 mod parts;
 pub mod propagator;
+pub mod theory;
 pub(crate) mod symbol;
 
 use std::cell::OnceCell;

@@ -52,12 +52,19 @@ pub trait Propagator: Send {
 pub struct PropagateInit<'a> {
     solver: &'a mut Solver,
     atoms: &'a [SymbolicAtom],
+    theory: &'a [super::theory::TheoryAtom],
 }
 
 impl PropagateInit<'_> {
     /// Every atom with a symbol (as [`Control::symbolic_atoms`]).
     pub fn symbolic_atoms(&self) -> &[SymbolicAtom] {
         self.atoms
+    }
+
+    /// The ground theory atoms (as [`Control::theory_atoms`]); map an atom's `atom` to a
+    /// solver literal with [`PropagateInit::solver_literal`].
+    pub fn theory_atoms(&self) -> &[super::theory::TheoryAtom] {
+        self.theory
     }
 
     /// The solver literal of a program atom.
@@ -142,6 +149,7 @@ impl Control {
             return;
         };
         let atoms: Vec<SymbolicAtom> = self.symbolic_atoms().collect();
+        let theory = self.program().theory_atoms.clone();
         let solver = self.solver.as_mut().expect("prepared");
         if !self.propagators.installed {
             let shared: SharedHook = hook.clone();
@@ -155,6 +163,7 @@ impl Control {
                 p.init(&mut PropagateInit {
                     solver: &mut *solver,
                     atoms: &atoms,
+                    theory: &theory,
                 });
             }
         }

@@ -277,7 +277,7 @@ impl<'a> Lit<'a> {
             ast::BodyLiteral::Aggregate { sign, aggregate } => {
                 Lit::Agg(aggregate, *sign == Sign::Not)
             }
-            ast::BodyLiteral::Conditional(_) => Lit::Other,
+            ast::BodyLiteral::Conditional(_) | ast::BodyLiteral::Theory { .. } => Lit::Other,
         }
     }
 }

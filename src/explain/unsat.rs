@@ -460,6 +460,11 @@ fn rule_preds(r: &ast::Rule) -> (BTreeSet<Pred>, BTreeSet<Pred>) {
                 e.condition.iter().for_each(|l| literal_preds(l, &mut body));
             }
         }
+        ast::Head::Theory(a) => {
+            for e in &a.elements {
+                e.condition.iter().for_each(|l| literal_preds(l, &mut body));
+            }
+        }
     }
     for b in &r.body {
         match b {
@@ -475,6 +480,11 @@ fn rule_preds(r: &ast::Rule) -> (BTreeSet<Pred>, BTreeSet<Pred>) {
                 for c in &aggregate.set_syntax {
                     literal_preds(&c.literal, &mut body);
                     c.condition.iter().for_each(|l| literal_preds(l, &mut body));
+                }
+            }
+            ast::BodyLiteral::Theory { atom, .. } => {
+                for e in &atom.elements {
+                    e.condition.iter().for_each(|l| literal_preds(l, &mut body));
                 }
             }
         }

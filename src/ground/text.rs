@@ -147,8 +147,27 @@ pub fn write_text_to(
     w: &mut dyn std::io::Write,
 ) -> std::io::Result<()> {
     let p = &g.program;
-    let names = g.atom_names();
+    let mut names = g.atom_names();
+    // Theory atoms print as themselves (their conditions name ordinary atoms).
+    let mut theory_text = Vec::new();
+    for t in &p.theory_atoms {
+        let mut s = String::new();
+        t.write(&mut s, &mut |l| lit(&names, l));
+        theory_text.push(s);
+    }
+    for (t, s) in p.theory_atoms.iter().zip(&theory_text) {
+        if t.atom != 0 {
+            if let Some(n) = names.get_mut(t.atom as usize - 1) {
+                *n = Some(s.clone());
+            }
+        }
+    }
     let mut out = String::new();
+    for (t, s) in p.theory_atoms.iter().zip(&theory_text) {
+        if t.atom == 0 {
+            let _ = writeln!(out, "{s}.");
+        }
+    }
     for (i, r) in p.rules.iter().enumerate() {
         spill(&mut out, w)?;
         if let Some(src) = sources {
@@ -195,6 +214,9 @@ pub fn write_text_to(
         let _ = writeln!(out, "#project {}.", atom(&names, a));
     }
     for &(a, v) in &p.externals {
+        if p.theory_atoms.iter().any(|t| t.atom == a) {
+            continue;
+        }
         let _ = writeln!(
             out,
             "#external {}. [{}]",

@@ -439,6 +439,9 @@ impl Solver {
             .heuristics
             .extend(delta.heuristics.iter().cloned());
         self.prog.theory.extend(delta.theory.iter().cloned());
+        self.prog
+            .theory_atoms
+            .extend(delta.theory_atoms.iter().cloned());
         self.tr.update_cycles(
             &self.prog,
             &mut self.engine,

@@ -98,6 +98,8 @@ pub enum StatementKind {
     DisplaySort(String),
     /// SPARC's `#maxint = N.` directive: integers of arithmetic and of `#nat` are 0..N.
     MaxInt(Box<Term>),
+    /// `#theory name { term and atom definitions }.`
+    Theory(Box<TheoryDef>),
     /// A statement that did not parse; its diagnostics were reported.
     Error,
 }
@@ -151,6 +153,9 @@ pub enum Head {
     Choice(Box<Choice>),
     /// A head aggregate `lower #sum { terms : literal : condition ; ... } upper`.
     Aggregate(Box<HeadAggregate>),
+    /// A theory atom `&name{ ... }` (with an empty body: a head fact or a directive, as its
+    /// definition says).
+    Theory(Box<TheoryAtom>),
 }
 
 /// `literal : condition` where the condition may be empty.
@@ -277,6 +282,13 @@ pub enum BodyLiteral {
         sign: Sign,
         /// The aggregate.
         aggregate: Box<BodyAggregate>,
+    },
+    /// A possibly negated theory atom `&name{ ... }`.
+    Theory {
+        /// Default negation in front of the atom.
+        sign: Sign,
+        /// The atom.
+        atom: Box<TheoryAtom>,
     },
 }
 
@@ -740,4 +752,138 @@ mod tests {
         assert!(size_of::<Literal>() <= 80, "{sizes:?}");
         assert!(size_of::<BodyLiteral>() <= 120, "{sizes:?}");
     }
+}
+
+/// `#theory name { definitions }.`: the term definitions (operator tables) and the atom
+/// definitions of one theory, in the order written within each kind.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TheoryDef {
+    /// The theory's name.
+    pub name: String,
+    /// `name { op : priority, unary|binary, left|right; ... }`
+    pub terms: Vec<TheoryTermDef>,
+    /// `&name/arity : term_def, [{ops}, guard_def,] head|body|any|directive`
+    pub atoms: Vec<TheoryAtomDef>,
+}
+
+/// A theory term definition: the operators its terms may use.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TheoryTermDef {
+    /// Covers the definition.
+    pub span: Span,
+    /// Its name.
+    pub name: String,
+    /// The operators.
+    pub ops: Vec<TheoryOpDef>,
+}
+
+/// One operator of a theory term definition.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TheoryOpDef {
+    /// Covers the definition.
+    pub span: Span,
+    /// The operator, a run of `/!<=>+-*\?&@|:;~^.` (or `not`).
+    pub op: String,
+    /// Binding strength: higher binds tighter.
+    pub priority: u32,
+    /// Unary, or binary with its associativity.
+    pub kind: TheoryOpKind,
+}
+
+/// The kinds of theory operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TheoryOpKind {
+    /// Prefix operator.
+    Unary,
+    /// Left-associative infix operator.
+    BinaryLeft,
+    /// Right-associative infix operator.
+    BinaryRight,
+}
+
+/// Where a theory atom may occur.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TheoryAtomKind {
+    /// Rule heads only.
+    Head,
+    /// Rule bodies only.
+    Body,
+    /// Heads and bodies.
+    Any,
+    /// Alone, as a statement without body.
+    Directive,
+}
+
+/// A theory atom definition `&name/arity : elements, [{ops}, guard,] kind`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TheoryAtomDef {
+    /// Covers the definition.
+    pub span: Span,
+    /// The atom's name.
+    pub name: String,
+    /// The number of arguments of its name.
+    pub arity: u32,
+    /// The term definition of its elements' terms.
+    pub elements: String,
+    /// The guard's operators and the term definition of its term, when a guard is allowed.
+    pub guard: Option<(Vec<String>, String)>,
+    /// Where it may occur.
+    pub kind: TheoryAtomKind,
+}
+
+/// A theory atom `&name(args){ terms : condition; ... } op guard`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TheoryAtom {
+    /// Covers the atom.
+    pub span: Span,
+    /// Name and ordinary-term arguments (never classically negated).
+    pub name: SymbolicAtom,
+    /// The elements.
+    pub elements: Vec<TheoryElement>,
+    /// The guard: operator and term.
+    pub guard: Option<(String, TheoryTerm)>,
+}
+
+/// A theory atom element `t1, ..., tn : l1, ..., lm`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TheoryElement {
+    /// Covers the element.
+    pub span: Span,
+    /// The tuple of theory terms.
+    pub terms: Vec<TheoryTerm>,
+    /// The condition (ordinary literals).
+    pub condition: Vec<Literal>,
+}
+
+/// A theory term with its span.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TheoryTerm {
+    /// Covers the term.
+    pub span: Span,
+    /// What it is.
+    pub kind: TheoryTermKind,
+}
+
+/// The kinds of theory terms. Operators are read by the parser as written
+/// ([`TheoryTermKind::Unparsed`]); the operator tables of the theory resolve them
+/// (`syntax::theory`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TheoryTermKind {
+    /// An integer, identifier, string, `#inf`, `#sup` or variable, as an ordinary term.
+    Symbol(Term),
+    /// `name(args)`.
+    Function {
+        /// The name: an identifier, or an operator once resolved.
+        name: String,
+        /// Arguments.
+        args: Vec<TheoryTerm>,
+    },
+    /// `(a, b)`, `(a,)` or `()`.
+    Tuple(Vec<TheoryTerm>),
+    /// `{a, b}`.
+    Set(Vec<TheoryTerm>),
+    /// `[a, b]`.
+    List(Vec<TheoryTerm>),
+    /// `op* term (op+ term)*` as written: each term with the operators before it.
+    Unparsed(Vec<(Vec<String>, TheoryTerm)>),
 }

@@ -11,7 +11,10 @@
 //!   position by at least one byte, so a loop over tokens always terminates.
 //! - Comments are `%` to the end of the line and `%* ... *%` blocks, which nest as in gringo.
 //!   SPARC files have only line comments (a SPARC line such as `%****` is a line comment).
-//! - The lexer keeps no state beyond its position, so the parser can save and restore it.
+//! - The lexer keeps no state beyond its position and its mode, so the parser can save and
+//!   restore it. In theory mode (inside theory atoms and `#theory` definitions, set by the
+//!   parser) a run of the characters `/!<=>+-*\\?&@|:;~^.` is one [`TokenKind::TheoryOp`],
+//!   as in gringo, unless the run is exactly `.`, `:`, `;` or `:-`.
 
 use crate::base::{Diagnostic, FileId, Span};
 
@@ -100,6 +103,8 @@ pub enum TokenKind {
     Tilde,
     /// `@`
     At,
+    /// A theory operator (theory mode only): a run of `/!<=>+-*\\?&@|:;~^.`.
+    TheoryOp,
     /// End of input.
     Eof,
 }
@@ -130,6 +135,8 @@ pub struct Lexer<'a> {
     sparc: bool,
     /// Current byte offset.
     pos: usize,
+    /// Theory mode: operator runs are [`TokenKind::TheoryOp`] tokens.
+    theory: bool,
 }
 
 /// Directive names the clingo dialect knows (without `#`).
@@ -159,6 +166,7 @@ const DIRECTIVES: &[&str] = &[
     "supremum",
     "true",
     "false",
+    "theory",
 ];
 
 /// `IDENT[b]` is true for the bytes that may continue an identifier or variable (ASCII
@@ -225,7 +233,18 @@ impl<'a> Lexer<'a> {
             block_comments: dialect == Dialect::Clingo,
             sparc: dialect == Dialect::Sparc,
             pos: 0,
+            theory: false,
         }
+    }
+
+    /// Whether the lexer is in theory mode.
+    pub fn is_theory(&self) -> bool {
+        self.theory
+    }
+
+    /// Switches theory mode on or off (see the module documentation).
+    pub fn set_theory(&mut self, on: bool) {
+        self.theory = on;
     }
 
     /// The current byte offset.
@@ -323,7 +342,7 @@ impl<'a> Lexer<'a> {
             pos += 1;
         }
         self.pos = pos;
-        if pos >= bytes.len() {
+        if pos >= bytes.len() || self.theory {
             return self.next_token_slow(diags);
         }
         let b = bytes[pos];
@@ -398,6 +417,16 @@ impl<'a> Lexer<'a> {
         let start = self.pos;
         let b = bytes[start];
         let next = bytes.get(start + 1).copied().unwrap_or(0);
+        if self.theory && is_theory_op_byte(b) {
+            let mut end = start + 1;
+            while end < bytes.len() && is_theory_op_byte(bytes[end]) {
+                end += 1;
+            }
+            if !matches!(&self.text[start..end], "." | ":" | ";" | ":-") {
+                self.pos = end;
+                return Some(T::TheoryOp);
+            }
+        }
         let (kind, len) = match b {
             b'a'..=b'z' => {
                 let end = self.ident_end(start + 1);
@@ -642,6 +671,30 @@ fn punct(b: u8, next: u8) -> Option<(TokenKind, usize)> {
         // `!` without `=` and every other byte.
         _ => return None,
     })
+}
+
+/// Whether `b` may be part of a theory operator.
+fn is_theory_op_byte(b: u8) -> bool {
+    matches!(
+        b,
+        b'/' | b'!'
+            | b'<'
+            | b'='
+            | b'>'
+            | b'+'
+            | b'-'
+            | b'*'
+            | b'\\'
+            | b'?'
+            | b'&'
+            | b'@'
+            | b'|'
+            | b':'
+            | b';'
+            | b'~'
+            | b'^'
+            | b'.'
+    )
 }
 
 /// Position of the first newline in `hay`.

@@ -14,6 +14,7 @@ pub mod lexer;
 pub(crate) mod name;
 pub(crate) mod parser;
 pub mod printer;
+pub mod theory;
 pub(crate) mod visit;
 
 pub use parser::{detect_dialect, parse, parse_auto, Parse, MAX_DEPTH, UNSUPPORTED_SCRIPT};

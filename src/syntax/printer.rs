@@ -86,6 +86,7 @@ pub fn statement(out: &mut String, kind: &StatementKind) {
             term(out, t);
             out.push('.');
         }
+        StatementKind::Theory(def) => super::theory::write_def(out, def),
         StatementKind::Error => out.push_str("% (statement with a syntax error)"),
     }
 }
@@ -339,6 +340,7 @@ fn head(out: &mut String, h: &Head) {
             out.push_str(" }");
             upper(out, &a.upper, false);
         }
+        Head::Theory(a) => super::theory::write_atom(out, a),
     }
 }
 
@@ -437,6 +439,10 @@ fn body(out: &mut String, b: &[BodyLiteral]) {
                 }
                 upper(out, &a.upper, bare);
             }
+            BodyLiteral::Theory { sign, atom } => {
+                sign_prefix(out, *sign);
+                super::theory::write_atom(out, atom);
+            }
         }
     }
 }
@@ -451,7 +457,7 @@ fn sign_prefix(out: &mut String, sign: Sign) {
 }
 
 /// Literals separated by `, `.
-fn literals(out: &mut String, ls: &[Literal]) {
+pub(super) fn literals(out: &mut String, ls: &[Literal]) {
     for (i, l) in ls.iter().enumerate() {
         if i > 0 {
             out.push_str(", ");
@@ -497,7 +503,7 @@ fn cmp(op: CmpOp) -> &'static str {
 }
 
 /// A symbolic atom: `p`, `-p(1)`, `p(1;2)`.
-fn symbolic(out: &mut String, a: &SymbolicAtom) {
+pub(super) fn symbolic(out: &mut String, a: &SymbolicAtom) {
     if a.negated {
         out.push('-');
     }

@@ -102,6 +102,17 @@ fn statement(kind: &mut StatementKind, f: &mut dyn FnMut(&mut Span)) {
         StatementKind::SortDef(d) => sort_expr(&mut d.expr, f),
         StatementKind::Display(l) => literal(l, f),
         StatementKind::MaxInt(t) => term(t, f),
+        StatementKind::Theory(d) => {
+            for t in &mut d.terms {
+                f(&mut t.span);
+                for op in &mut t.ops {
+                    f(&mut op.span);
+                }
+            }
+            for a in &mut d.atoms {
+                f(&mut a.span);
+            }
+        }
         StatementKind::Defined(_)
         | StatementKind::Include(_)
         | StatementKind::ProgramPart(_)
@@ -141,6 +152,36 @@ fn head(h: &mut Head, f: &mut dyn FnMut(&mut Span)) {
             }
             guard(&mut a.upper, f);
         }
+        Head::Theory(a) => theory_atom(a, f),
+    }
+}
+
+/// Spans of a theory atom.
+fn theory_atom(a: &mut TheoryAtom, f: &mut dyn FnMut(&mut Span)) {
+    f(&mut a.span);
+    symbolic(&mut a.name, f);
+    for e in &mut a.elements {
+        f(&mut e.span);
+        for t in &mut e.terms {
+            theory_term(t, f);
+        }
+        literals(&mut e.condition, f);
+    }
+    if let Some((_, t)) = &mut a.guard {
+        theory_term(t, f);
+    }
+}
+
+/// Spans of a theory term.
+fn theory_term(t: &mut TheoryTerm, f: &mut dyn FnMut(&mut Span)) {
+    f(&mut t.span);
+    match &mut t.kind {
+        TheoryTermKind::Symbol(s) => term(s, f),
+        TheoryTermKind::Function { args: ts, .. }
+        | TheoryTermKind::Tuple(ts)
+        | TheoryTermKind::Set(ts)
+        | TheoryTermKind::List(ts) => ts.iter_mut().for_each(|t| theory_term(t, f)),
+        TheoryTermKind::Unparsed(parts) => parts.iter_mut().for_each(|(_, t)| theory_term(t, f)),
     }
 }
 
@@ -177,6 +218,7 @@ fn body(b: &mut [BodyLiteral], f: &mut dyn FnMut(&mut Span)) {
                 }
                 guard(&mut a.upper, f);
             }
+            BodyLiteral::Theory { atom, .. } => theory_atom(atom, f),
         }
     }
 }

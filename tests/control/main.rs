@@ -11,6 +11,7 @@ mod grid;
 mod incmode;
 mod multishot;
 mod propagator;
+mod theory;
 mod provenance;
 mod threads;
 mod traps;

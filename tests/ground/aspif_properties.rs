@@ -123,6 +123,7 @@ fn program() -> impl Strategy<Value = GroundProgram> {
                     })
                     .collect(),
                 theory: Vec::new(),
+                theory_atoms: Vec::new(),
                 cr_rules: crs
                     .into_iter()
                     .map(|(appl, label)| CrRule { appl, label })

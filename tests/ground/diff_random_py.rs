@@ -37,7 +37,7 @@ fn witnesses(js: &Value) -> Vec<Vec<String>> {
 
 /// The sorted answer sets `lucent -n 0 --outf=2 ARGS` gives for `program` (the optimal ones
 /// with optimization: the last `Models.Optimal` witnesses).
-fn answer_sets(args: &[&str], program: &str) -> Vec<Vec<String>> {
+pub(super) fn answer_sets(args: &[&str], program: &str) -> Vec<Vec<String>> {
     let mut all = vec!["-n", "0", "--outf=2", "--opt-mode=optN"];
     all.extend(args);
     let (code, out, err) = lucent_in_process(&all, program);
@@ -97,7 +97,7 @@ fn projection_onto_simplified_atoms_still_projects() {
 
 /// The sorted answer sets `python3 -m clingo -n 0 --outf=2 ARGS` (clingo 5.8) gives for
 /// `program`; fails with how to install clingo when the module is missing.
-fn clingo_answer_sets(args: &[&str], program: &str) -> Vec<Vec<String>> {
+pub(super) fn clingo_answer_sets(args: &[&str], program: &str) -> Vec<Vec<String>> {
     use std::io::Write;
     let mut child = Command::new("python3")
         .args(["-m", "clingo", "-n", "0", "--outf=2"])

@@ -19,3 +19,4 @@ mod programs;
 mod provenance;
 mod reference;
 mod sparc;
+mod theory;

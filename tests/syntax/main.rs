@@ -7,3 +7,4 @@ mod corpus;
 mod grammar;
 mod messages;
 mod props;
+mod theory;

@@ -283,12 +283,20 @@ pub fn write_program_to(
     let mut buf = Vec::with_capacity(1 << 16);
     buf.extend_from_slice(b"asp 1 0 0\n");
     for stmt in canonical_layout(program) {
+        // A free theory atom is an external for the solver only (see `TheoryAtom`).
+        if let Stmt::External(i) = stmt {
+            let a = program.externals[i as usize].0;
+            if program.theory_atoms.iter().any(|t| t.atom == a) {
+                continue;
+            }
+        }
         write_statement(&mut buf, program, &[], stmt);
         if buf.len() >= 1 << 16 {
             w.write_all(&buf)?;
             buf.clear();
         }
     }
+    write::write_theory_atoms(&mut buf, &program.theory_atoms);
     buf.extend_from_slice(b"0\n");
     w.write_all(&buf)
 }

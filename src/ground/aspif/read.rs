@@ -512,6 +512,7 @@ impl<'a> Reader<'a> {
             }
             self.cur.end_of_line()?;
         }
+        free_theory_atoms(&mut step.program);
         if let Some((priority, pos)) = expect_cr_minimize {
             return Err(self.cur.error_at(
                 pos,
@@ -788,4 +789,35 @@ fn parse_atom(s: &str) -> Option<Atom> {
     s.parse::<Atom>()
         .ok()
         .filter(|&a| (1..=ATOM_MAX).contains(&a))
+}
+
+/// Theory atoms (`9 5 a ...`, `9 6 a ...` with `a != 0`) that no rule of the step heads are
+/// free, as clasp reads them: they become free externals of the program (not of the layout,
+/// so the step is written back as it was read).
+fn free_theory_atoms(p: &mut GroundProgram) {
+    let atoms: Vec<Atom> = p
+        .theory
+        .iter()
+        .filter_map(|line| {
+            let mut f = line.split_ascii_whitespace();
+            let (Some("9"), Some("5" | "6"), Some(a)) = (f.next(), f.next(), f.next()) else {
+                return None;
+            };
+            a.parse::<Atom>().ok().filter(|&a| a != 0)
+        })
+        .collect();
+    if atoms.is_empty() {
+        return;
+    }
+    let headed: hashbrown::HashSet<Atom> = p
+        .rules
+        .iter()
+        .flat_map(|r| r.head.iter().copied())
+        .collect();
+    for a in atoms {
+        if !headed.contains(&a) && !p.externals.iter().any(|&(b, _)| b == a) {
+            p.externals.push((a, ExternalValue::Free));
+            p.num_atoms = p.num_atoms.max(a);
+        }
+    }
 }

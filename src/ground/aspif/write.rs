@@ -8,7 +8,8 @@ use std::io::Write as _;
 
 use super::{AspifStep, Stmt, CR_MINIMIZE_TAG, CR_TAG, PREFER_TAG};
 use crate::ground::program::{
-    BodyRef, ExternalValue, GroundProgram, HeadKind, HeuristicModifier, Lit, Weight,
+    BodyRef, ExternalValue, GroundProgram, HeadKind, HeuristicModifier, Lit, TheoryAtom,
+    TheoryTerm, Weight,
 };
 
 pub(super) fn write_step(out: &mut Vec<u8>, step: &AspifStep) {
@@ -180,4 +181,116 @@ fn push_int(out: &mut Vec<u8>, v: i64) {
     }
     out.push(b' ');
     out.extend_from_slice(&buf[i..]);
+}
+
+/// Theory atoms as aspif theory statements (`9 0` numbers, `9 1` symbols, `9 2` compound
+/// terms, `9 4` elements, `9 5`/`9 6` atoms without/with guard), each term and element once,
+/// defined before its first use, as gringo writes them.
+pub(super) fn write_theory_atoms(out: &mut Vec<u8>, atoms: &[TheoryAtom]) {
+    let mut terms: hashbrown::HashMap<TheoryTerm, u32> = hashbrown::HashMap::new();
+    let mut names: hashbrown::HashMap<String, u32> = hashbrown::HashMap::new();
+    let mut elems: hashbrown::HashMap<(Vec<u32>, Vec<Lit>), u32> = hashbrown::HashMap::new();
+    let mut next_term = 0u32;
+    for a in atoms {
+        let name = theory_term(out, &a.term, &mut terms, &mut names, &mut next_term);
+        let mut ids = Vec::with_capacity(a.elements.len());
+        for e in &a.elements {
+            let ts: Vec<u32> = e
+                .terms
+                .iter()
+                .map(|t| theory_term(out, t, &mut terms, &mut names, &mut next_term))
+                .collect();
+            let key = (ts, e.condition.clone());
+            let n = elems.len() as u32;
+            let id = *elems.entry(key.clone()).or_insert_with(|| {
+                let _ = write!(out, "9 4 {n} {}", key.0.len());
+                key.0.iter().for_each(|t| push_int(out, i64::from(*t)));
+                write_lits(out, &key.1);
+                out.push(b'\n');
+                n
+            });
+            ids.push(id);
+        }
+        let guard = a.guard.as_ref().map(|(op, t)| {
+            let op = symbol_name(out, op, &mut names, &mut next_term);
+            (
+                op,
+                theory_term(out, t, &mut terms, &mut names, &mut next_term),
+            )
+        });
+        let _ = write!(
+            out,
+            "9 {} {} {name} {}",
+            if guard.is_some() { 6 } else { 5 },
+            a.atom,
+            ids.len()
+        );
+        ids.iter().for_each(|v| push_int(out, i64::from(*v)));
+        if let Some((op, t)) = guard {
+            let _ = write!(out, " {op} {t}");
+        }
+        out.push(b'\n');
+    }
+}
+
+/// The id of the symbolic term `name` (a `9 1` statement the first time).
+fn symbol_name(
+    out: &mut Vec<u8>,
+    name: &str,
+    names: &mut hashbrown::HashMap<String, u32>,
+    next: &mut u32,
+) -> u32 {
+    if let Some(&id) = names.get(name) {
+        return id;
+    }
+    let id = *next;
+    *next += 1;
+    let _ = writeln!(out, "9 1 {id} {} {name}", name.len());
+    names.insert(name.to_string(), id);
+    id
+}
+
+/// The id of theory term `t`, its statements (and its parts') written the first time.
+fn theory_term(
+    out: &mut Vec<u8>,
+    t: &TheoryTerm,
+    terms: &mut hashbrown::HashMap<TheoryTerm, u32>,
+    names: &mut hashbrown::HashMap<String, u32>,
+    next: &mut u32,
+) -> u32 {
+    if let Some(&id) = terms.get(t) {
+        return id;
+    }
+    let id = match t {
+        TheoryTerm::Number(n) => {
+            let id = *next;
+            *next += 1;
+            let _ = writeln!(out, "9 0 {id} {n}");
+            id
+        }
+        TheoryTerm::Symbol(s) => symbol_name(out, s, names, next),
+        TheoryTerm::Function(_, args)
+        | TheoryTerm::Tuple(args)
+        | TheoryTerm::Set(args)
+        | TheoryTerm::List(args) => {
+            let head: i64 = match t {
+                TheoryTerm::Function(name, _) => i64::from(symbol_name(out, name, names, next)),
+                TheoryTerm::Tuple(_) => -1,
+                TheoryTerm::Set(_) => -2,
+                _ => -3,
+            };
+            let ids: Vec<u32> = args
+                .iter()
+                .map(|a| theory_term(out, a, terms, names, next))
+                .collect();
+            let id = *next;
+            *next += 1;
+            let _ = write!(out, "9 2 {id} {head} {}", ids.len());
+            ids.iter().for_each(|v| push_int(out, i64::from(*v)));
+            out.push(b'\n');
+            id
+        }
+    };
+    terms.insert(t.clone(), id);
+    id
 }

@@ -11,6 +11,7 @@ impl Grounder<'_> {
     pub(super) fn emit(&mut self, stmt: &NStmt, ctx: &mut Ctx) {
         match &stmt.kind {
             NKind::Rule | NKind::Cr(_) => self.emit_rule(stmt, ctx),
+            NKind::Theory => self.emit_theory(stmt, ctx),
             NKind::Minimize {
                 weight,
                 priority,

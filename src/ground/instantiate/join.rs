@@ -316,6 +316,11 @@ impl<'a> Grounder<'a> {
                 // aggregate can hold, so no atom is missed; the final round evaluates it.
                 self.join(ctx, lits, i + 1, ranges, k);
             }
+            NLit::Agg(agg) if agg.theory.is_some() => {
+                self.theory(ctx, agg, &mut |g, ctx| g.join(ctx, lits, i + 1, ranges, k));
+                ctx.binding.undo(mark);
+                ctx.body.truncate(blen);
+            }
             NLit::Agg(agg) if agg.elems.len() == 1 && agg.elems[0].lit.is_some() => {
                 self.conditional(ctx, agg, &mut |g, ctx| g.join(ctx, lits, i + 1, ranges, k));
                 ctx.binding.undo(mark);

@@ -30,7 +30,8 @@
 //! body literals and the helper atoms for negations), `aggregate` (aggregate elements and
 //! guards, saturation), `emit` (ground rules from a body's solutions), `schedule` (component
 //! order, semi-naive and naive rounds, warnings), `call` (external function calls `@f(...)`
-//! through the grounding context).
+//! through the grounding context), `theory` (theory atoms: elements, one atom per ground
+//! theory atom).
 
 mod aggregate;
 mod call;
@@ -39,6 +40,7 @@ mod emit;
 mod join;
 mod provenance;
 mod schedule;
+pub mod theory;
 
 pub use call::Calls;
 pub use join::cmp_holds;
@@ -337,6 +339,8 @@ pub struct Directives {
     pub edges: Vec<super::program::Edge>,
     /// Node numbers of `#edge` terms.
     edge_nodes: HashMap<SymId, i32>,
+    /// Theory atoms.
+    pub theory: theory::TheoryStore,
 }
 
 /// Vectors the grounding of a statement reuses from the previous one instead of allocating

@@ -13,16 +13,19 @@
 //! - `provenance`, when not empty, has the origins of each rule of `rules` (see [`Provenance`]).
 //!
 //! Files: `mod` (the statements and the whole program), `store` (the flat rule store
-//! [`Rules`]), `provenance` (origins, atom records and dead rules for explanations).
+//! [`Rules`]), `provenance` (origins, atom records and dead rules for explanations), `theory`
+//! (ground theory atoms).
 
 mod provenance;
 mod store;
+mod theory;
 
 pub use provenance::{
     AtomRecord, AtomStatus, AuxKind, Bindings, DeadReason, DeadRule, GAtom, Origin, Provenance,
     RemovedLit, RuleOrigin,
 };
 pub use store::{Rules, RulesIter};
+pub use theory::{is_operator, TheoryAtom, TheoryElement, TheoryTerm};
 
 /// An atom of a ground program: the aspif numbering, `1..=num_atoms` (what `simplify` gives
 /// the atoms that remain, in gringo's order; the solver's variables and `control::AtomId` are
@@ -280,8 +283,10 @@ pub struct GroundProgram {
     pub heuristics: Vec<Heuristic>,
     /// Edge directives.
     pub edges: Vec<Edge>,
-    /// Theory statements, kept verbatim (aspif statement 9); Lucent does not interpret them.
+    /// Theory statements read from aspif, kept verbatim (aspif statement 9).
     pub theory: Vec<String>,
+    /// Theory atoms of a grounding (see [`TheoryAtom`]).
+    pub theory_atoms: Vec<TheoryAtom>,
     /// Consistency-restoring rules.
     pub cr_rules: Vec<CrRule>,
     /// Preferences between CR rules.
@@ -335,6 +340,26 @@ impl GroundProgram {
         Some(old)
     }
 
+    /// The theory atoms that head no rule: free, as externals are (see [`TheoryAtom`]).
+    pub fn free_theory_atoms(&self) -> Vec<Atom> {
+        if self.theory_atoms.is_empty() {
+            return Vec::new();
+        }
+        let mut headed = vec![false; self.num_atoms as usize + 1];
+        for r in self.rules.iter() {
+            for &h in r.head {
+                if let Some(x) = headed.get_mut(h as usize) {
+                    *x = true;
+                }
+            }
+        }
+        self.theory_atoms
+            .iter()
+            .map(|t| t.atom)
+            .filter(|&a| a != 0 && !headed[a as usize])
+            .collect()
+    }
+
     /// Calls `f` on every atom occurrence of every statement (theory statements excepted),
     /// literals as their atoms; `f` may change the atom, and a literal keeps its sign.
     fn for_each_atom(&mut self, f: &mut dyn FnMut(&mut Atom)) {
@@ -357,6 +382,16 @@ impl GroundProgram {
         }
         for e in &mut self.edges {
             e.condition.iter_mut().for_each(&mut lit);
+        }
+        for t in &mut self.theory_atoms {
+            if t.atom != 0 {
+                let mut l = t.atom as Lit;
+                lit(&mut l);
+                t.atom = l as Atom;
+            }
+            for e in &mut t.elements {
+                e.condition.iter_mut().for_each(&mut lit);
+            }
         }
         self.rules.for_each_head_atom(f);
         self.projections.iter_mut().for_each(&mut *f);

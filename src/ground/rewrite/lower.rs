@@ -302,6 +302,7 @@ impl Rewriter<'_> {
             guards,
             binder: None,
             elems,
+            theory: None,
         })))
     }
 
@@ -324,6 +325,9 @@ impl Rewriter<'_> {
                 ast::BodyLiteral::Aggregate { sign, aggregate } => {
                     self.body_aggregate(*sign, aggregate, vars, &mut extra)?
                 }
+                ast::BodyLiteral::Theory { sign, atom } => {
+                    self.theory_atom(*sign, atom, theory::Position::Body, vars, &mut extra)?
+                }
                 ast::BodyLiteral::Conditional(c) => {
                     // l : c holds when every instance of c has l; kept as a guard-less
                     // aggregate with one element that the instantiator treats specially.
@@ -345,6 +349,7 @@ impl Rewriter<'_> {
                             cond,
                             lit: Some(alts),
                         }],
+                        theory: None,
                     }))
                 }
             };

@@ -20,16 +20,19 @@
 //! `pool` (unfolding pools), `lower` (terms, literals, aggregates and conditions to their
 //! rewritten forms), `statement` (constants and statements other than rules), `rule` (rules,
 //! their choice bounds and head aggregates, the safety check per instance), `safety` (the
-//! body order that binds every variable before its use).
+//! body order that binds every variable before its use), `theory` (theory atoms checked against
+//! their definitions, as aggregates the instantiator makes theory atoms of).
 
 mod lower;
 mod pool;
 mod rule;
 mod safety;
 mod statement;
+mod theory;
 
 pub use pool::unpool_term;
 pub use safety::{lit_vars, plan};
+pub use theory::{NTheory, Theories};
 
 use hashbrown::HashMap;
 
@@ -131,6 +134,9 @@ pub struct NAgg {
     pub binder: Option<usize>,
     /// Elements.
     pub elems: Vec<NElem>,
+    /// Set when the aggregate stands for a theory atom (`theory`): its guards then only carry
+    /// the variables the atom's name and guard need bound.
+    pub theory: Option<Box<NTheory>>,
 }
 
 /// An aggregate element `terms : cond` (planned condition).
@@ -242,6 +248,9 @@ pub enum NKind {
     },
     /// `#edge (u, v) : body.`
     Edge(NTerm, NTerm),
+    /// A theory atom in the head (or a theory directive): the body's last literal is the
+    /// theory aggregate ([`NAgg::theory`]) whose atom the rule derives.
+    Theory,
 }
 
 /// A rewritten statement.
@@ -328,6 +337,8 @@ pub struct Rewriter<'a> {
     name_ids: Vec<Option<(ast::Name, Sym)>>,
     /// Predicate ids by signature, direct-mapped likewise (`pred_map` is the full table).
     pred_ids: Vec<Option<(Pred, PredId)>>,
+    /// The `#theory` definitions in force (multi-shot: kept from earlier groundings).
+    pub theories: Theories,
 }
 
 /// Slots of [`Rewriter`]'s name cache (a power of two).
@@ -461,6 +472,7 @@ impl<'a> Rewriter<'a> {
             projections: 0,
             name_ids: vec![None; NAME_SLOTS],
             pred_ids: vec![None; PRED_SLOTS],
+            theories: Theories::default(),
         }
     }
 

@@ -60,6 +60,8 @@ pub(super) fn pool_free_rule(r: &ast::Rule) -> bool {
             }) && pool_free_guard(&h.lower)
                 && pool_free_guard(&h.upper)
         }
+        // Theory atoms keep their pools (they are not unfolded).
+        ast::Head::Theory(_) => true,
     };
     let kind = match &r.kind {
         ast::RuleKind::Normal => true,
@@ -78,6 +80,7 @@ pub(super) fn pool_free_rule(r: &ast::Rule) -> bool {
                     && pool_free_guard(&a.lower)
                     && pool_free_guard(&a.upper)
             }
+            ast::BodyLiteral::Theory { .. } => true,
         })
 }
 
@@ -244,6 +247,7 @@ pub(super) fn unpool_body(body: &[ast::BodyLiteral]) -> Vec<Vec<ast::BodyLiteral
     let choices: Vec<Vec<Vec<ast::BodyLiteral>>> = body
         .iter()
         .map(|b| match b {
+            ast::BodyLiteral::Theory { .. } => vec![vec![b.clone()]],
             ast::BodyLiteral::Literal(l) => unpool_literal(l)
                 .into_iter()
                 .map(|l| vec![ast::BodyLiteral::Literal(l)])

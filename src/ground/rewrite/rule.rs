@@ -113,8 +113,28 @@ impl Rewriter<'_> {
             },
         };
         let head_ast = head;
+        let mut kind = kind;
         let head = match head {
             ast::Head::None => NHead::None,
+            ast::Head::Theory(a) => {
+                if !matches!(kind, NKind::Rule) {
+                    self.unsupported(span, "a theory atom in the head of a CR rule");
+                    return;
+                }
+                let pos = if body.is_empty() {
+                    theory::Position::Alone
+                } else {
+                    theory::Position::Head
+                };
+                let Some(lit) = self.theory_atom(Sign::Positive, a, pos, &mut vars, &mut extra)
+                else {
+                    return;
+                };
+                kind = NKind::Theory;
+                // Placed after the body (see `finish`): the body binds its global variables.
+                extra.push(lit);
+                NHead::None
+            }
             ast::Head::Disjunction(elems) => {
                 // `#false` alone is a constraint; `#true` alone makes the rule void.
                 if elems.len() == 1 && elems[0].condition.is_empty() {
@@ -369,7 +389,7 @@ impl Rewriter<'_> {
             NHead::None => {}
         }
         match &kind {
-            NKind::Rule | NKind::Cr(None) => {}
+            NKind::Rule | NKind::Cr(None) | NKind::Theory => {}
             NKind::Cr(Some(t)) | NKind::Show(t) => mark(t, &mut global),
             NKind::Minimize {
                 weight,

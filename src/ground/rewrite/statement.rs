@@ -18,6 +18,7 @@ impl Rewriter<'_> {
             }
         }
         self.const_definitions(program, &overrides);
+        self.theory_definitions(program);
         for (k, v) in overrides {
             self.consts.entry(k).or_insert(v);
         }
@@ -339,7 +340,7 @@ impl Rewriter<'_> {
                 ));
             }
             K::Script(_) => self.unsupported(st.span, "#script is not supported by Lucent"),
-            K::Const(_) | K::ProgramPart(_) | K::Error => {}
+            K::Const(_) | K::ProgramPart(_) | K::Theory(_) | K::Error => {}
             K::Section(_)
             | K::SortDef(_)
             | K::PredicateDecl(_)

@@ -10,7 +10,7 @@ use crate::ground::instantiate::Grounder;
 use crate::ground::program::{GroundProgram, Lit};
 
 /// `cond` without its true literals, renumbered; `None` when one is false.
-fn cond_map(cond: &[Lit], status: &[Status], number: &[u32]) -> Option<Vec<Lit>> {
+pub(super) fn cond_map(cond: &[Lit], status: &[Status], number: &[u32]) -> Option<Vec<Lit>> {
     let mut c = Vec::new();
     for &l in cond {
         match truth(l, status) {

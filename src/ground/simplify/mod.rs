@@ -14,6 +14,7 @@
 //! - `outputs`: shown atoms, facts and `#show` terms;
 //! - `directives`: externals, projections, heuristics and edges;
 //! - `cr`: CR rules and the `prefer` pairs between them;
+//! - `theory`: theory atoms, their elements' conditions, free ones as externals;
 //! - `scope`: the atoms a grounding visits, and the arrays a session keeps between groundings.
 //!
 //! This module runs them in that order ([`finish_after`]).
@@ -36,6 +37,7 @@ mod propagate;
 mod provenance;
 mod rules;
 mod scope;
+mod theory;
 
 use complement::add_classical_constraints;
 use numbering::{number_remaining, Numbering};
@@ -197,6 +199,7 @@ pub fn finish_after(
     );
     outputs::show_terms(g, &status, &number, &mut out.outputs);
     directives::directives(g, &status, &number, &mut out);
+    theory::theory_atoms(g, &status, &number, &mut out);
     let prefer_atoms = cr::cr_rules(
         g,
         &scope,
@@ -213,6 +216,9 @@ pub fn finish_after(
     scratch.number = number;
     let mut external = external;
     for &(a, _) in &g.directives.externals {
+        external[a.get() as usize] = false;
+    }
+    for a in g.directives.theory.atoms.iter().filter_map(|t| t.atom) {
         external[a.get() as usize] = false;
     }
     scratch.external = external;
@@ -261,6 +267,10 @@ fn decide(
     let mut external = std::mem::take(&mut scratch.external);
     external.resize(n + 1, false);
     for &(a, _) in &g.directives.externals {
+        external[a.get() as usize] = true;
+    }
+    // Theory atoms are never false by the program either (free without rules).
+    for a in g.directives.theory.atoms.iter().filter_map(|t| t.atom) {
         external[a.get() as usize] = true;
     }
     // What propagation may not make false: externals and frozen atoms.

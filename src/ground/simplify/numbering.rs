@@ -145,6 +145,9 @@ pub(super) fn number_remaining(
     for &(a, _) in &g.directives.externals {
         used[scope.index(a.get() as usize)] = true;
     }
+    for a in g.directives.theory.atoms.iter().filter_map(|t| t.atom) {
+        used[scope.index(a.get() as usize)] = true;
+    }
     for (i, &a) in scope.atoms.iter().enumerate() {
         let a = a as usize;
         if frozen(a) {

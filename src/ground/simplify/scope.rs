@@ -98,6 +98,12 @@ impl Scope {
         for e in &d.edges {
             add_lits(&e.condition);
         }
+        for t in &d.theory.atoms {
+            t.elems.iter().for_each(|(_, c)| add_lits(c));
+            if let Some(a) = t.atom {
+                add_lits(&[a.lit()]);
+            }
+        }
         let named = d.cr_rules.iter().map(|(a, _)| a);
         let named = named
             .chain(&d.projections)

@@ -429,6 +429,7 @@ pub(super) fn mentions_sort(program: &ast::Program, name: &str) -> bool {
                 .elements
                 .iter()
                 .any(|e| lit(&e.literal) || e.condition.iter().any(lit)),
+            ast::Head::Theory(a) => a.elements.iter().any(|e| e.condition.iter().any(lit)),
         };
         head || r.body.iter().any(|b| match b {
             ast::BodyLiteral::Literal(l) => lit(l),
@@ -439,6 +440,9 @@ pub(super) fn mentions_sort(program: &ast::Program, name: &str) -> bool {
                     .iter()
                     .any(|e| e.condition.iter().any(lit))
                     || aggregate.set_syntax.iter().any(cond)
+            }
+            ast::BodyLiteral::Theory { atom, .. } => {
+                atom.elements.iter().any(|e| e.condition.iter().any(lit))
             }
         })
     };

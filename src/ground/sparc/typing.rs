@@ -105,7 +105,7 @@ fn body_vars(body: &[ast::BodyLiteral]) -> HashSet<String> {
                 guard_vars(&aggregate.lower, &mut out);
                 guard_vars(&aggregate.upper, &mut out);
             }
-            ast::BodyLiteral::Conditional(_) => {}
+            ast::BodyLiteral::Conditional(_) | ast::BodyLiteral::Theory { .. } => {}
         }
     }
     out
@@ -360,7 +360,7 @@ impl Typing {
         let mut extra: Vec<ast::Literal> = Vec::new();
         let mut global = body_vars(&r.body);
         match &mut r.head {
-            ast::Head::None => {}
+            ast::Head::None | ast::Head::Theory(_) => {}
             ast::Head::Disjunction(es) => self.head_elements(rw, es, &mut extra, None)?,
             ast::Head::Choice(c) => {
                 guard_vars(&c.lower, &mut global);
@@ -383,6 +383,7 @@ impl Typing {
                 ast::BodyLiteral::Literal(l) => {
                     extra.extend(self.literals(rw, std::slice::from_ref(l))?)
                 }
+                ast::BodyLiteral::Theory { .. } => {}
                 ast::BodyLiteral::Conditional(c) => {
                     let t = self.literals(rw, std::slice::from_ref(&c.literal))?;
                     let u = self.literals(rw, &c.condition)?;

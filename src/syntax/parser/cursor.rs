@@ -274,6 +274,23 @@ impl<'a> Cursor<'a> {
         self.depth -= 1;
     }
 
+    /// Sets the lexer's theory mode and reads the current token again in it (from the end of
+    /// the last consumed token; the lexer errors the first reading reported from there are dropped).
+    pub(crate) fn relex(&mut self, theory: bool) {
+        if self.lexer.is_theory() == theory {
+            return;
+        }
+        self.lexer.set_theory(theory);
+        let from = self.prev_end;
+        let file = self.file;
+        self.diags.retain(|d| {
+            d.span.start < from || d.span.file != file || !d.message.starts_with("lexer error")
+        });
+        self.peeked = None;
+        self.lexer.set_pos(from as usize);
+        self.tok = self.lexer.next_token(&mut self.diags);
+    }
+
     /// Reports embedded scripts once per file.
     pub(super) fn report_script(&mut self, span: Span) {
         if !self.script_reported {

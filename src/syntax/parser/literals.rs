@@ -15,6 +15,9 @@ impl<'a> Parser<'a> {
         if self.at(T::LBrace) {
             return Ok((Head::Choice(Box::new(self.choice(start, None)?)), None));
         }
+        if self.at(T::Amp) {
+            return Ok((Head::Theory(Box::new(self.theory_atom()?)), None));
+        }
         if self.at_aggregate() {
             return Ok((
                 Head::Aggregate(Box::new(self.head_aggregate(start, None)?)),
@@ -252,6 +255,12 @@ impl<'a> Parser<'a> {
         let sign = self.sign()?;
         if self.at(T::LBrace) || self.at_aggregate() {
             return self.body_aggregate_literal(start, sign, None, out);
+        }
+        if self.at(T::Amp) {
+            let atom = Box::new(self.theory_atom()?);
+            out.push(BodyLiteral::Theory { sign, atom });
+            self.body_end = AFTER_AGGREGATE;
+            return Ok(());
         }
         let mut lits = Vec::with_capacity(1);
         if self.at(T::Hash) && (matches!(self.cur(), "#true" | "#false") || self.at_sort_name()) {

@@ -35,6 +35,7 @@ mod directives;
 mod literals;
 mod sparc;
 mod terms;
+mod theory;
 
 pub(crate) use cursor::{cmp_op, Cursor, Failed, PResult, TermGrammar};
 
@@ -384,6 +385,7 @@ impl<'a> Parser<'a> {
             let kind = match self.statement() {
                 Ok(kind) => kind,
                 Err(Failed) => {
+                    self.cursor.relex(false);
                     self.recover();
                     StatementKind::Error
                 }
@@ -448,6 +450,7 @@ impl<'a> Parser<'a> {
                 "#include" => self.include(),
                 "#program" => self.program_part(),
                 "#script" => self.script(),
+                "#theory" => self.theory_def(),
                 "#count" | "#sum" | "#min" | "#max" | "#true" | "#false" | "#inf" | "#sup"
                 | "#infimum" | "#supremum" => self.rule(),
                 _ => Err(self.unexpected(&[])),
