@@ -7,6 +7,7 @@
 mod support;
 
 mod functions;
+mod handle;
 mod grid;
 mod incmode;
 mod multishot;
