@@ -16,7 +16,7 @@ the robot's verbs ``plan`` and ``explain``, which return Python values.
 Differences from clingo, by design or not yet done (docs/reference.md, "Python"): handles
 search on a thread of their own, lazily with ``yield_``, but without ``yield_``, ``async_`` hands the models to ``on_model`` on the thread that calls
 ``wait``/``get`` (clingo: on the search thread); propagators see a snapshot of the assignment
-per callback and check total assignments only; theory atoms, ``on_unsat`` and
+per callback and cannot ``add_literal``; theory atoms, ``on_unsat`` and
 ``on_statistics`` are not supported; atoms added through the backend are not seen by later
 groundings.
 """
@@ -335,7 +335,8 @@ def _truth(value):
 
 
 class PropagatorCheckMode:
-    """clingo's ``PropagatorCheckMode``: lucent calls ``check`` on total assignments."""
+    """clingo's ``PropagatorCheckMode``: when ``check`` runs (total assignments, every
+    propagation fixpoint, both, never)."""
 
     Off = 0
     Total = 1
@@ -346,10 +347,17 @@ class PropagatorCheckMode:
 class _Assignment:
     """clingo's ``Assignment`` over a snapshot taken when the callback started."""
 
-    def __init__(self, values, decision_level, is_total):
+    def __init__(self, values, decision_level, is_total, decisions=()):
         self._v = values
         self.decision_level = decision_level
         self.is_total = is_total
+        self._d = decisions
+
+    def decision(self, level):
+        """The decision literal of ``level`` (1 to ``decision_level``)."""
+        if not 1 <= level <= len(self._d) or self._d[level - 1] == 0:
+            raise RuntimeError(f"lucent: no decision at level {level}")
+        return self._d[level - 1]
 
     def _raw(self, lit):
         if lit == 0 or abs(lit) > len(self._v):
@@ -454,24 +462,20 @@ class _PropagatorAdapter:
         init = _PropagateInit(atoms, threads, values)
         if hasattr(self._p, "init"):
             self._p.init(init)
-        if init.check_mode not in (PropagatorCheckMode.Total, PropagatorCheckMode.Off) and hasattr(
-            self._p, "check"
-        ):
-            raise RuntimeError("lucent: propagators check total assignments only (check_mode Total)")
-        return init._watches, init._clauses
+        return init._watches, init._clauses, int(init.check_mode)
 
-    def _propagate(self, thread_id, changes, values, level, total):
-        ctl = _PropagateControl(thread_id, _Assignment(values, level, total))
+    def _propagate(self, thread_id, changes, snapshot):
+        ctl = _PropagateControl(thread_id, _Assignment(*snapshot))
         if hasattr(self._p, "propagate"):
             self._p.propagate(ctl, changes)
         return ctl._ops
 
-    def _undo(self, thread_id, changes, values, level, total):
+    def _undo(self, thread_id, changes, snapshot):
         if hasattr(self._p, "undo"):
-            self._p.undo(thread_id, _Assignment(values, level, total), changes)
+            self._p.undo(thread_id, _Assignment(*snapshot), changes)
 
-    def _check(self, thread_id, values, level, total):
-        ctl = _PropagateControl(thread_id, _Assignment(values, level, total))
+    def _check(self, thread_id, snapshot):
+        ctl = _PropagateControl(thread_id, _Assignment(*snapshot))
         if hasattr(self._p, "check"):
             self._p.check(ctl)
         return ctl._ops

@@ -12,6 +12,7 @@ mod grid;
 mod incmode;
 mod multishot;
 mod propagator;
+mod propagator_modes;
 mod provenance;
 mod threads;
 mod traps;
