@@ -16,9 +16,9 @@ the robot's verbs ``plan`` and ``explain``, which return Python values.
 Differences from clingo, by design or not yet done (docs/reference.md, "Python"): handles
 search on a thread of their own, lazily with ``yield_``, but without ``yield_``, ``async_`` hands the models to ``on_model`` on the thread that calls
 ``wait``/``get`` (clingo: on the search thread); propagators see a snapshot of the assignment
-per callback and cannot ``add_literal``; theory atoms, ``on_unsat`` and
-``on_statistics`` are not supported; atoms added through the backend are not seen by later
-groundings.
+per callback and cannot ``add_literal``; theory atoms and ``on_unsat`` are not supported
+(``on_unsat`` is accepted and never called); atoms added through the backend are not seen by
+later groundings.
 """
 
 import enum as _enum
@@ -87,14 +87,14 @@ class SolveHandle:
     """
 
     def __init__(self, native, yield_, on_model=None, on_finish=None, on_core=None, on_last=None,
-                 on_unsat=None):
+                 on_statistics=None):
         self._h = native
         self._yield = yield_
         self._on_model = on_model
         self._on_finish = on_finish
         self._on_core = on_core
         self._on_last = on_last
-        self._on_unsat = on_unsat
+        self._on_statistics = on_statistics
         self._seen = None
         self._last = None
         self._stop = False
@@ -134,6 +134,8 @@ class SolveHandle:
                 self._on_core(core)
             if self._on_last is not None and self._last is not None:
                 self._on_last(self._last)
+            if self._on_statistics is not None:
+                self._on_statistics()
             if self._on_finish is not None:
                 self._on_finish(self._result)
         return SolveResult(sat, unsat, exhausted, interrupted)
@@ -328,6 +330,15 @@ class Backend:
         self._c.backend_add_assume(list(literals))
 
 
+def _floats(value):
+    """User statistics as clingo shows them: numbers as floats, maps and lists kept."""
+    if isinstance(value, dict):
+        return {k: _floats(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_floats(v) for v in value]
+    return float(value)
+
+
 def _truth(value):
     if isinstance(value, TruthValue):
         return value.value
@@ -489,6 +500,8 @@ class Control:
         # lucent::Control::from_args; a bad one raises RuntimeError.
         self._c = _lucent.Control([str(a) for a in arguments])
         self._interrupter = self._c.interrupter()
+        # on_statistics: the user's maps (``user_step`` of the last call, ``user_accu`` kept).
+        self._user = None
         self.configuration = Configuration(self._c)
         object.__setattr__(self.configuration.solve, "_opt_mode", self._c.opt_mode)
 
@@ -521,7 +534,8 @@ class Control:
         if yield_ or async_:
             native = self._c.solve_handle(list(assumptions), bool(yield_), bool(async_))
             # clingo 5.8 does not call on_core for a handle.
-            return SolveHandle(native, bool(yield_), on_model, on_finish, None, on_last, on_unsat)
+            stats = None if on_statistics is None else (lambda: self._user_statistics(on_statistics))
+            return SolveHandle(native, bool(yield_), on_model, on_finish, None, on_last, stats)
         last = []
         callback = on_model
         if on_last is not None:
@@ -536,6 +550,8 @@ class Control:
             on_core(core)
         if last:
             on_last(last[0])
+        if on_statistics is not None:
+            self._user_statistics(on_statistics)
         if on_finish is not None:
             on_finish(result)
         return result
@@ -559,9 +575,21 @@ class Control:
     def symbolic_atoms(self):
         return SymbolicAtoms(self._c)
 
+    def _user_statistics(self, on_statistics):
+        """clingo's ``on_statistics(step, accu)``: the user's own figures, shown as
+        ``statistics["user_step"]`` and ``statistics["user_accu"]``."""
+        accu = {} if self._user is None else self._user[1]
+        step = {}
+        on_statistics(step, accu)
+        self._user = (step, accu)
+
     @property
     def statistics(self):
-        return self._c.statistics()
+        out = self._c.statistics()
+        if self._user is not None:
+            out["user_step"] = _floats(self._user[0])
+            out["user_accu"] = _floats(self._user[1])
+        return out
 
     def backend(self):
         return Backend(self._c)

@@ -144,3 +144,30 @@ def test_propagator_in_a_handle(both):
     models = both(propagator_in_a_handle)
     # Subsets of 1..5 without two consecutive numbers: Fibonacci(7) = 13.
     assert len(models) == 13
+
+
+def user_statistics(clingo):
+    """``on_statistics(step, accu)``: figures the user adds, per call and accumulated, shown
+    as ``statistics["user_step"]`` / ``["user_accu"]`` (numbers as floats), also for a
+    handle."""
+    ctl = clingo.Control(["0"])
+    ctl.add("base", [], "{a; b}.")
+    ctl.ground([("base", [])])
+
+    def count(step, accu):
+        step["mine"] = 1
+        accu["total"] = accu["total"] + 1 if "total" in accu else 1
+
+    seen = []
+    for _ in range(2):
+        ctl.solve(on_statistics=count)
+        seen.append((ctl.statistics["user_step"], ctl.statistics["user_accu"]))
+    with ctl.solve(yield_=True, on_statistics=count) as h:
+        list(h)
+    seen.append(ctl.statistics["user_accu"])
+    return seen
+
+
+def test_user_statistics(both):
+    seen = both(user_statistics)
+    assert seen[-1] == {"total": 3.0}
