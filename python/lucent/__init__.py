@@ -13,12 +13,12 @@ Control's calls; this module shapes them as clingo's classes (``Control``, ``Sol
 ``SolveHandle``, ``SymbolicAtoms``, ``Backend``, ``configuration``, ``statistics``) and adds
 the robot's verbs ``plan`` and ``explain``, which return Python values.
 
-Differences from clingo, by design or not yet done (docs/reference.md, "Python"):
-``yield_``/``async_`` handles hold the call's models once it is finished (the search runs
-when ``solve`` is called, not while iterating); propagators see a snapshot of the assignment
-per callback and check total assignments only; theory atoms, ``on_unsat`` and
-``on_statistics`` are not supported; atoms added through the backend are not seen by later
-groundings.
+Differences from clingo, by design or not yet done (docs/reference.md, "Python"): handles
+search on a thread of their own, lazily with ``yield_``, but without ``yield_``, ``async_`` hands the models to ``on_model`` on the thread that calls
+``wait``/``get`` (clingo: on the search thread); propagators see a snapshot of the assignment
+per callback and cannot ``add_literal``; theory atoms and ``on_unsat`` are not supported
+(``on_unsat`` is accepted and never called); atoms added through the backend are not seen by
+later groundings.
 """
 
 import enum as _enum
@@ -77,50 +77,132 @@ class SolveResult:
 
 
 class SolveHandle:
-    """clingo's ``SolveHandle``: a context manager and an iterator over the call's models."""
+    """clingo's ``SolveHandle``: a context manager and an iterator over the call's models.
 
-    def __init__(self, result, models):
-        self._result = result
-        self._models = models
-        self._next = 0
+    The search runs on a thread of its own (python/src/handle.rs) and stops after each model
+    until ``resume`` (``yield_``), so a loop that breaks early pays for the models it read;
+    with ``async_`` it starts at once, and without ``yield_`` it runs ahead, the models going
+    to ``on_model`` when ``wait`` or ``get`` is called (clingo calls it from the search
+    thread). Every wait releases the GIL.
+    """
+
+    def __init__(self, native, yield_, on_model=None, on_finish=None, on_core=None, on_last=None,
+                 on_statistics=None):
+        self._h = native
+        self._yield = yield_
+        self._on_model = on_model
+        self._on_finish = on_finish
+        self._on_core = on_core
+        self._on_last = on_last
+        self._on_statistics = on_statistics
+        self._seen = None
+        self._last = None
+        self._stop = False
+        self._result = None
 
     def __enter__(self):
         return self
 
     def __exit__(self, *exc):
+        self.close()
         return False
 
     def __iter__(self):
         return self
 
     def __next__(self):
+        self.resume()
         model = self.model()
         if model is None:
             raise StopIteration
-        self._next += 1
         return model
 
+    def _see(self, model):
+        """``on_model`` once per model; ``False`` stops the search after it."""
+        if model is None or model is self._seen:
+            return
+        self._seen = model
+        self._last = model
+        if self._on_model is not None and self._on_model(model) is False:
+            self._stop = True
+
+    def _flags(self):
+        (sat, unsat, exhausted, interrupted, core), finished = self._h.get()
+        if finished and self._result is None:
+            self._result = SolveResult(sat, unsat, exhausted, interrupted)
+            if self._on_core is not None and unsat and core is not None:
+                self._on_core(core)
+            if self._on_last is not None and self._last is not None:
+                self._on_last(self._last)
+            if self._on_statistics is not None:
+                self._on_statistics()
+            if self._on_finish is not None:
+                self._on_finish(self._result)
+        return SolveResult(sat, unsat, exhausted, interrupted)
+
+    def _drain(self, timeout):
+        """Without ``yield_``: hands the models found to ``on_model`` until the end or the
+        timeout; True at the end."""
+        import time
+
+        deadline = None if timeout is None else time.monotonic() + timeout
+        while True:
+            left = None if deadline is None else max(0.0, deadline - time.monotonic())
+            if not self._h.wait(left):
+                return False
+            model = self._h.model()
+            if model is None:
+                self._flags()
+                return True
+            self._see(model)
+            if self._stop:
+                self.cancel()
+                return True
+            self._h.resume()
+
     def resume(self):
-        """Moves on to the next model (``model()`` then returns it)."""
-        self._next += 1
+        """Discards the current model; the search goes on."""
+        if self._stop:
+            self.cancel()
+        else:
+            self._h.resume()
 
     def model(self):
-        """The current model, or ``None`` when there is none left."""
-        if self._next < len(self._models):
-            return self._models[self._next]
-        return None
-
-    def get(self):
-        """The call's ``SolveResult``."""
-        return self._result
+        """The current model (waiting for it), or ``None`` when the search is over."""
+        model = self._h.model()
+        if model is None:
+            self._flags()
+        self._see(model)
+        return model
 
     def wait(self, timeout=None):
-        """True: the call is finished."""
-        return True
+        """Waits up to ``timeout`` seconds (forever: ``None``) for the next result; True when
+        it is there (without ``yield_``: when the search is over)."""
+        if not self._yield:
+            return self._drain(timeout)
+        ready = self._h.wait(timeout)
+        if ready:
+            self.model()
+        return ready
+
+    def get(self):
+        """The call's ``SolveResult`` once the next result is there (with ``yield_`` and a
+        model current: satisfiable so far)."""
+        if not self._yield:
+            self._drain(None)
+        else:
+            self.model()
+        return self._flags()
 
     def cancel(self):
-        """Stops iterating."""
-        self._next = len(self._models)
+        """Stops the search."""
+        self._h.cancel()
+        self._flags()
+
+    def close(self):
+        """Stops what is unfinished and gives the Control back (leaving a ``with`` block)."""
+        self._h.close()
+        self._flags()
 
 
 class SymbolicAtom:
@@ -248,6 +330,15 @@ class Backend:
         self._c.backend_add_assume(list(literals))
 
 
+def _floats(value):
+    """User statistics as clingo shows them: numbers as floats, maps and lists kept."""
+    if isinstance(value, dict):
+        return {k: _floats(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_floats(v) for v in value]
+    return float(value)
+
+
 def _truth(value):
     if isinstance(value, TruthValue):
         return value.value
@@ -255,7 +346,8 @@ def _truth(value):
 
 
 class PropagatorCheckMode:
-    """clingo's ``PropagatorCheckMode``: lucent calls ``check`` on total assignments."""
+    """clingo's ``PropagatorCheckMode``: when ``check`` runs (total assignments, every
+    propagation fixpoint, both, never)."""
 
     Off = 0
     Total = 1
@@ -266,10 +358,17 @@ class PropagatorCheckMode:
 class _Assignment:
     """clingo's ``Assignment`` over a snapshot taken when the callback started."""
 
-    def __init__(self, values, decision_level, is_total):
+    def __init__(self, values, decision_level, is_total, decisions=()):
         self._v = values
         self.decision_level = decision_level
         self.is_total = is_total
+        self._d = decisions
+
+    def decision(self, level):
+        """The decision literal of ``level`` (1 to ``decision_level``)."""
+        if not 1 <= level <= len(self._d) or self._d[level - 1] == 0:
+            raise RuntimeError(f"lucent: no decision at level {level}")
+        return self._d[level - 1]
 
     def _raw(self, lit):
         if lit == 0 or abs(lit) > len(self._v):
@@ -374,24 +473,20 @@ class _PropagatorAdapter:
         init = _PropagateInit(atoms, threads, values)
         if hasattr(self._p, "init"):
             self._p.init(init)
-        if init.check_mode not in (PropagatorCheckMode.Total, PropagatorCheckMode.Off) and hasattr(
-            self._p, "check"
-        ):
-            raise RuntimeError("lucent: propagators check total assignments only (check_mode Total)")
-        return init._watches, init._clauses
+        return init._watches, init._clauses, int(init.check_mode)
 
-    def _propagate(self, thread_id, changes, values, level, total):
-        ctl = _PropagateControl(thread_id, _Assignment(values, level, total))
+    def _propagate(self, thread_id, changes, snapshot):
+        ctl = _PropagateControl(thread_id, _Assignment(*snapshot))
         if hasattr(self._p, "propagate"):
             self._p.propagate(ctl, changes)
         return ctl._ops
 
-    def _undo(self, thread_id, changes, values, level, total):
+    def _undo(self, thread_id, changes, snapshot):
         if hasattr(self._p, "undo"):
-            self._p.undo(thread_id, _Assignment(values, level, total), changes)
+            self._p.undo(thread_id, _Assignment(*snapshot), changes)
 
-    def _check(self, thread_id, values, level, total):
-        ctl = _PropagateControl(thread_id, _Assignment(values, level, total))
+    def _check(self, thread_id, snapshot):
+        ctl = _PropagateControl(thread_id, _Assignment(*snapshot))
         if hasattr(self._p, "check"):
             self._p.check(ctl)
         return ctl._ops
@@ -404,6 +499,9 @@ class Control:
         # clingo's options (-n, -c, --opt-mode, --project, -t, --heuristic) are read by
         # lucent::Control::from_args; a bad one raises RuntimeError.
         self._c = _lucent.Control([str(a) for a in arguments])
+        self._interrupter = self._c.interrupter()
+        # on_statistics: the user's maps (``user_step`` of the last call, ``user_accu`` kept).
+        self._user = None
         self.configuration = Configuration(self._c)
         object.__setattr__(self.configuration.solve, "_opt_mode", self._c.opt_mode)
 
@@ -433,19 +531,29 @@ class Control:
         yield_=False,
         async_=False,
     ):
-        handle = yield_ or async_
-        sat, unsat, exhausted, interrupted, models, core = self._c.solve(
-            list(assumptions), on_model, handle
+        if yield_ or async_:
+            native = self._c.solve_handle(list(assumptions), bool(yield_), bool(async_))
+            # clingo 5.8 does not call on_core for a handle.
+            stats = None if on_statistics is None else (lambda: self._user_statistics(on_statistics))
+            return SolveHandle(native, bool(yield_), on_model, on_finish, None, on_last, stats)
+        last = []
+        callback = on_model
+        if on_last is not None:
+            def callback(m):
+                last[:] = [m]
+                return None if on_model is None else on_model(m)
+        sat, unsat, exhausted, interrupted, _, core = self._c.solve(
+            list(assumptions), callback, False
         )
         result = SolveResult(sat, unsat, exhausted, interrupted)
         if on_core is not None and unsat and core is not None:
             on_core(core)
-        if on_last is not None and models:
-            on_last(models[-1])
+        if last:
+            on_last(last[0])
+        if on_statistics is not None:
+            self._user_statistics(on_statistics)
         if on_finish is not None:
             on_finish(result)
-        if handle:
-            return SolveHandle(result, models if yield_ else [])
         return result
 
     def assign_external(self, external, truth):
@@ -467,9 +575,21 @@ class Control:
     def symbolic_atoms(self):
         return SymbolicAtoms(self._c)
 
+    def _user_statistics(self, on_statistics):
+        """clingo's ``on_statistics(step, accu)``: the user's own figures, shown as
+        ``statistics["user_step"]`` and ``statistics["user_accu"]``."""
+        accu = {} if self._user is None else self._user[1]
+        step = {}
+        on_statistics(step, accu)
+        self._user = (step, accu)
+
     @property
     def statistics(self):
-        return self._c.statistics()
+        out = self._c.statistics()
+        if self._user is not None:
+            out["user_step"] = _floats(self._user[0])
+            out["user_accu"] = _floats(self._user[1])
+        return out
 
     def backend(self):
         return Backend(self._c)
@@ -478,7 +598,8 @@ class Control:
         pass
 
     def interrupt(self):
-        pass
+        """Stops the running solve call (from any thread, as clingo's)."""
+        self._interrupter.interrupt()
 
 
 def _cli(args):

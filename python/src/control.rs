@@ -8,7 +8,7 @@
 //! without an explicit model count a program with `#minimize` enumerates until the optimum
 //! (clingo's default `-n 0` for optimization), any other one model.
 
-use lucent::control::{Part, SolveOptions, TruthValue};
+use lucent::control::{HandleMode, Part, Search, SolveOptions, Summary, TruthValue};
 use lucent::solve::{OptMode, Outcome, Stats, StopReason};
 use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
@@ -16,6 +16,7 @@ use pyo3::types::{PyDict, PyTuple};
 
 use std::sync::Arc;
 
+use crate::handle::SolveHandle;
 use crate::model::{AtomNames, Model};
 use crate::symbol::{to_symbol, Symbol};
 
@@ -35,6 +36,21 @@ pub struct Control {
     failure: crate::propagator::Failure,
     /// The symbol of each atom, shared with the models (extended before each solve call).
     names: AtomNames,
+}
+
+/// A summary as flags: satisfiable, unsatisfiable, exhausted, interrupted, and the core.
+pub type Flags = (bool, bool, bool, bool, Option<Vec<i32>>);
+
+/// Stops the running solve call of a Control from any thread (`Control.interrupt`).
+#[pyclass(frozen, module = "lucent._lucent")]
+pub struct Interrupter(lucent::control::Interrupter);
+
+#[pymethods]
+impl Interrupter {
+    /// Asks the running (or the next) solve call to stop.
+    fn interrupt(&self) {
+        self.0.interrupt();
+    }
 }
 
 /// The outcome of one solve call: satisfiable, unsatisfiable, exhausted, interrupted, models
@@ -88,12 +104,14 @@ impl Control {
 
     /// `Control.add(name, params, program)`.
     fn add(&mut self, name: &str, params: Vec<String>, program: &str) -> PyResult<()> {
+        self.idle()?;
         let params: Vec<&str> = params.iter().map(String::as_str).collect();
         self.ctl.add(name, &params, program).map_err(error)
     }
 
     /// `Control.load(path)`.
     fn load(&mut self, path: &str) -> PyResult<()> {
+        self.idle()?;
         self.ctl.load(path).map_err(error)
     }
 
@@ -107,6 +125,7 @@ impl Control {
         parts: Vec<(String, Vec<Symbol>)>,
         context: Option<PyObject>,
     ) -> PyResult<()> {
+        self.idle()?;
         let parts: Vec<Part> = parts
             .into_iter()
             .map(|(n, a)| Part::new(n, a.into_iter().map(|s| s.0).collect()))
@@ -136,23 +155,7 @@ impl Control {
         on_model: Option<PyObject>,
         collect: bool,
     ) -> PyResult<SolveOut> {
-        let mut options = SolveOptions::default();
-        for a in &assumptions {
-            options.assumptions.push(self.assumption(a)?);
-        }
-        let models = match self.models {
-            Some(n) => n,
-            None if self.ctl.has_minimize() => 0,
-            None => 1,
-        };
-        self.ctl.solve_config_mut().models = models;
-        // The symbols of the atoms added since the last call (an atom keeps its symbol, so
-        // the table only grows; models of earlier calls may share the old one).
-        let known = self.names.len() as u32;
-        if known < self.ctl.num_atoms() {
-            let names = Arc::make_mut(&mut self.names);
-            names.extend((known + 1..=self.ctl.num_atoms()).map(|a| self.ctl.symbol(a)));
-        }
+        let options = self.begin(&assumptions)?;
         let names = &self.names;
         let mut failure: Option<PyErr> = None;
         let mut kept: Vec<Py<Model>> = Vec::new();
@@ -198,32 +201,12 @@ impl Control {
         if let Some(e) = failure {
             return Err(e);
         }
-        let propagator_error = self
-            .failure
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .take();
-        if let Some(e) = propagator_error {
-            return Err(e);
-        }
+        self.raise_propagator_error()?;
         let optimal = optimal || summary.optimum_proven;
-        let sat = summary.is_satisfiable();
-        let unsat = summary.is_unsatisfiable();
-        let interrupted = summary.stop == Some(StopReason::Interrupted);
-        let exhausted = summary.exhausted;
+        let (sat, unsat, exhausted, interrupted, core) = self.outcome(&summary);
         self.last = Some((summary.stats, summary.models, costs, optimal));
-        let unknown = summary.outcome == Outcome::Unknown;
-        // clingo's core: the program literals of the failed assumptions, in assumption order.
-        let core = summary.core.map(|core| {
-            core.iter()
-                .filter_map(|(symbol, value)| {
-                    let atom = self.ctl.lookup(symbol)? as i32;
-                    Some(if *value { atom } else { -atom })
-                })
-                .collect()
-        });
         Ok((
-            sat && !unknown,
+            sat,
             unsat,
             exhausted,
             interrupted,
@@ -232,9 +215,35 @@ impl Control {
         ))
     }
 
+    /// `Control.solve(yield_=..., async_=...)`: a `SolveHandle` over a search on its own thread
+    /// (python/src/handle.rs); `yield_` stops it after each model, `async_` starts it at once.
+    fn solve_handle(
+        slf: &Bound<'_, Self>,
+        assumptions: Vec<Bound<'_, PyAny>>,
+        yield_: bool,
+        async_: bool,
+    ) -> PyResult<SolveHandle> {
+        let mut this = slf.borrow_mut();
+        let options = this.begin(&assumptions)?;
+        let mode = HandleMode {
+            yield_models: yield_,
+            background: async_,
+        };
+        let search = this.ctl.start_search(&options, mode);
+        let names = this.names.clone();
+        drop(this);
+        Ok(SolveHandle::new(slf.clone().unbind(), search, names))
+    }
+
+    /// `Control.interrupt` from any thread: an `Interrupter` of this Control's solve calls.
+    fn interrupter(&mut self) -> Interrupter {
+        Interrupter(self.ctl.interrupter())
+    }
+
     /// `Control.assign_external(atom, value)`: `value` true, false or `None` (free).
     #[pyo3(signature = (atom, value))]
     fn assign_external(&mut self, atom: &Bound<'_, PyAny>, value: Option<bool>) -> PyResult<()> {
+        self.idle()?;
         let (symbol, positive) = self.target(atom)?;
         let value = match value {
             None => TruthValue::Free,
@@ -247,13 +256,15 @@ impl Control {
 
     /// `Control.release_external(atom)`.
     fn release_external(&mut self, atom: &Bound<'_, PyAny>) -> PyResult<()> {
+        self.idle()?;
         let (symbol, _) = self.target(atom)?;
         self.ctl.release_external(&symbol);
         Ok(())
     }
 
     /// `Control.register_propagator`: `adapter` is the Python `_PropagatorAdapter`.
-    fn register_propagator(&mut self, adapter: PyObject) {
+    fn register_propagator(&mut self, adapter: PyObject) -> PyResult<()> {
+        self.idle()?;
         let interrupter = self.ctl.interrupter();
         self.ctl
             .register_propagator(Box::new(crate::propagator::PyPropagator {
@@ -261,6 +272,7 @@ impl Control {
                 failure: self.failure.clone(),
                 interrupter,
             }));
+        Ok(())
     }
 
     /// Every symbolic atom: `(symbol, literal, is_fact, is_external)`.
@@ -293,6 +305,7 @@ impl Control {
 
     /// `--opt-mode`.
     fn set_opt_mode(&mut self, mode: &str) -> PyResult<()> {
+        self.idle()?;
         self.ctl.solve_config_mut().opt_mode = OptMode::from_name(mode)
             .ok_or_else(|| error(format!("invalid value for option --opt-mode: {mode}")))?;
         Ok(())
@@ -330,12 +343,14 @@ impl Control {
     /// `Backend.add_atom(symbol=None)`.
     #[pyo3(signature = (symbol = None))]
     fn backend_add_atom(&mut self, symbol: Option<Symbol>) -> PyResult<u32> {
+        self.idle()?;
         let mut b = self.ctl.backend().map_err(error)?;
         Ok(b.add_atom(symbol.as_ref().map(|s| &s.0)))
     }
 
     /// `Backend.add_rule(head, body, choice)`.
     fn backend_add_rule(&mut self, head: Vec<u32>, body: Vec<i32>, choice: bool) -> PyResult<()> {
+        self.idle()?;
         let mut b = self.ctl.backend().map_err(error)?;
         b.add_rule(&head, &body, choice).map_err(error)
     }
@@ -348,6 +363,7 @@ impl Control {
         body: Vec<(i32, i64)>,
         choice: bool,
     ) -> PyResult<()> {
+        self.idle()?;
         let mut b = self.ctl.backend().map_err(error)?;
         b.add_weight_rule(&head, lower, &body, choice)
             .map_err(error)
@@ -355,6 +371,7 @@ impl Control {
 
     /// `Backend.add_minimize(priority, literals)`.
     fn backend_add_minimize(&mut self, priority: i64, literals: Vec<(i32, i64)>) -> PyResult<()> {
+        self.idle()?;
         let mut b = self.ctl.backend().map_err(error)?;
         b.add_minimize(priority, &literals).map_err(error)
     }
@@ -362,6 +379,7 @@ impl Control {
     /// `Backend.add_external(atom, value)`: `value` true, false or `None` (free).
     #[pyo3(signature = (atom, value))]
     fn backend_add_external(&mut self, atom: u32, value: Option<bool>) -> PyResult<()> {
+        self.idle()?;
         let value = match value {
             None => TruthValue::Free,
             Some(true) => TruthValue::True,
@@ -373,12 +391,90 @@ impl Control {
 
     /// `Backend.add_assume(literals)`.
     fn backend_add_assume(&mut self, literals: Vec<i32>) -> PyResult<()> {
+        self.idle()?;
         let mut b = self.ctl.backend().map_err(error)?;
         b.add_assume(&literals).map_err(error)
     }
 }
 
 impl Control {
+    /// Refuses a call while a solve handle's search has the solver.
+    fn idle(&self) -> PyResult<()> {
+        if self.ctl.is_searching() {
+            return Err(error(
+                "a solve handle is running: close it (or leave its `with` block) first",
+            ));
+        }
+        Ok(())
+    }
+
+    /// What every solve call does first: the model count, the assumptions, the symbols of the
+    /// atoms added since the last call.
+    fn begin(&mut self, assumptions: &[Bound<'_, PyAny>]) -> PyResult<SolveOptions> {
+        self.idle()?;
+        let mut options = SolveOptions::default();
+        for a in assumptions {
+            options.assumptions.push(self.assumption(a)?);
+        }
+        let models = match self.models {
+            Some(n) => n,
+            None if self.ctl.has_minimize() => 0,
+            None => 1,
+        };
+        self.ctl.solve_config_mut().models = models;
+        // The symbols of the atoms added since the last call (an atom keeps its symbol, so
+        // the table only grows; models of earlier calls may share the old one).
+        let known = self.names.len() as u32;
+        if known < self.ctl.num_atoms() {
+            let names = Arc::make_mut(&mut self.names);
+            names.extend((known + 1..=self.ctl.num_atoms()).map(|a| self.ctl.symbol(a)));
+        }
+        Ok(options)
+    }
+
+    /// The first exception a propagator raised during the last call, raised.
+    pub fn raise_propagator_error(&self) -> PyResult<()> {
+        match self
+            .failure
+            .lock()
+            .unwrap_or_else(|p| p.into_inner())
+            .take()
+        {
+            Some(e) => Err(e),
+            None => Ok(()),
+        }
+    }
+
+    /// A summary as `SolveResult` flags and clingo's core (the program literals of the failed
+    /// assumptions, in assumption order).
+    pub fn outcome(&self, summary: &Summary) -> Flags {
+        let sat = summary.is_satisfiable() && summary.outcome != Outcome::Unknown;
+        let unsat = summary.is_unsatisfiable();
+        let interrupted = summary.stop == Some(StopReason::Interrupted);
+        let core = summary.core.as_ref().map(|core| {
+            core.iter()
+                .filter_map(|(symbol, value)| {
+                    let atom = self.ctl.lookup(symbol)? as i32;
+                    Some(if *value { atom } else { -atom })
+                })
+                .collect()
+        });
+        (sat, unsat, summary.exhausted, interrupted, core)
+    }
+
+    /// A model of a handle's search as a Python `Model`.
+    pub fn read_model(&self, raw: &lucent::solve::Model, names: &AtomNames) -> Model {
+        self.ctl.read_model(raw, |m| Model::new(m, names.clone()))
+    }
+
+    /// The end of a handle's search: the solver back, the call recorded for the statistics.
+    pub fn end_handle(&mut self, search: Search, costs: Vec<i64>, optimal: bool) -> Summary {
+        let summary = self.ctl.end_search(search);
+        let optimal = optimal || summary.optimum_proven;
+        self.last = Some((summary.stats.clone(), summary.models, costs, optimal));
+        summary
+    }
+
     /// An assumption: a `(Symbol, bool)` pair or a literal of a symbolic atom.
     fn assumption(&self, a: &Bound<'_, PyAny>) -> PyResult<(lucent::Symbol, bool)> {
         if let Ok(t) = a.downcast::<PyTuple>() {

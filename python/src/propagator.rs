@@ -2,20 +2,25 @@
 //! `lucent::control::Propagator`. The Python side (`_PropagatorAdapter` in
 //! python/lucent/__init__.py) builds clingo's `PropagateInit` / `PropagateControl` /
 //! `Assignment` objects over plain data: each callback gets a snapshot of the assignment
-//! (values `±1`, `±2` when fixed at level 0, `0` unassigned, per variable) and returns the
+//! (values `±1`, `±2` when fixed at level 0, `0` unassigned, per variable; the decisions) and
+//! returns the
 //! operations the propagator asked for (clauses, `propagate`, watches), which are replayed
 //! here on the real engine in order, stopping at the first conflict.
 //!
 //! Differences from clingo, documented in the package: inside one callback the propagator sees
 //! the assignment as it was when the callback started (its own clauses and `propagate` act
-//! when it returns), and `add_clause`/`propagate` answer `True`. A snapshot costs one pass
-//! over the variables per callback. The Python Control runs one thread, so the GIL is never
+//! when it returns), and `add_clause`/`propagate` answer `True`; for the same reason
+//! `PropagateControl.add_literal` is missing (the literal would be needed inside the callback,
+//! before the replay makes the variable). A snapshot costs one pass over the variables per
+//! callback; a live view would need the engine borrowed by a Python object across the call. The Python Control runs one thread, so the GIL is never
 //! awaited by a solver thread while the caller's thread holds it.
 //!
 //! Invariant: an exception raised by the propagator (or a literal it invents) is kept, the
 //! solve call is interrupted, and `Control.solve` raises it; nothing panics.
 
-use lucent::control::{Assignment, Literal, PropagateControl, PropagateInit, Propagator};
+use lucent::control::{
+    Assignment, CheckMode, Literal, PropagateControl, PropagateInit, Propagator,
+};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use std::sync::{Arc, Mutex};
@@ -32,8 +37,9 @@ pub struct PyPropagator {
     pub interrupter: lucent::control::Interrupter,
 }
 
-/// The assignment as the Python side reads it: values per variable, decision level, total.
-fn snapshot(a: &Assignment<'_>) -> (Vec<i8>, u32, bool) {
+/// The assignment as the Python side reads it: values per variable, decision level, total,
+/// the decision literal of each level (0: an empty level).
+fn snapshot(a: &Assignment<'_>) -> (Vec<i8>, u32, bool, Vec<Literal>) {
     let values = (1..=a.size() as Literal)
         .map(|l| match a.value(l) {
             None => 0,
@@ -47,7 +53,10 @@ fn snapshot(a: &Assignment<'_>) -> (Vec<i8>, u32, bool) {
             }
         })
         .collect();
-    (values, a.decision_level(), a.is_total())
+    let decisions = (1..=a.decision_level())
+        .map(|l| a.decision(l).unwrap_or(0))
+        .collect();
+    (values, a.decision_level(), a.is_total(), decisions)
 }
 
 type Ops = Vec<(String, Vec<Literal>)>;
@@ -114,16 +123,22 @@ impl Propagator for PyPropagator {
                 )
             })
             .collect();
-        let (values, _, _) = snapshot(&init.assignment());
+        let (values, _, _, _) = snapshot(&init.assignment());
         let threads = init.number_of_threads();
         let size = values.len();
-        let out: PyResult<(Vec<Literal>, Vec<Vec<Literal>>)> = Python::with_gil(|py| {
+        let out: PyResult<(Vec<Literal>, Vec<Vec<Literal>>, u8)> = Python::with_gil(|py| {
             self.adapter
                 .call_method1(py, "_init", (atoms, threads, values))?
                 .extract(py)
         });
         match out {
-            Ok((watches, clauses)) => {
+            Ok((watches, clauses, mode)) => {
+                init.set_check_mode(match mode {
+                    0 => CheckMode::None,
+                    2 => CheckMode::Fixpoint,
+                    3 => CheckMode::Both,
+                    _ => CheckMode::Total,
+                });
                 let bad = watches
                     .iter()
                     .chain(clauses.iter().flatten())
@@ -149,14 +164,14 @@ impl Propagator for PyPropagator {
         if self.failed() {
             return;
         }
-        let (values, level, total) = snapshot(&ctl.assignment());
+        let (values, level, total, decisions) = snapshot(&ctl.assignment());
         let thread = ctl.thread_id();
         let ops: PyResult<Ops> = Python::with_gil(|py| {
             self.adapter
                 .call_method1(
                     py,
                     "_propagate",
-                    (thread, changes.to_vec(), values, level, total),
+                    (thread, changes.to_vec(), (values, level, total, decisions)),
                 )?
                 .extract(py)
         });
@@ -170,14 +185,10 @@ impl Propagator for PyPropagator {
         if self.failed() {
             return;
         }
-        let (values, level, total) = snapshot(assignment);
+        let snap = snapshot(assignment);
         let r = Python::with_gil(|py| {
             self.adapter
-                .call_method1(
-                    py,
-                    "_undo",
-                    (thread_id, changes.to_vec(), values, level, total),
-                )
+                .call_method1(py, "_undo", (thread_id, changes.to_vec(), snap))
                 .map(|_| ())
         });
         if let Err(e) = r {
@@ -189,11 +200,11 @@ impl Propagator for PyPropagator {
         if self.failed() {
             return;
         }
-        let (values, level, total) = snapshot(&ctl.assignment());
+        let snap = snapshot(&ctl.assignment());
         let thread = ctl.thread_id();
         let ops: PyResult<Ops> = Python::with_gil(|py| {
             self.adapter
-                .call_method1(py, "_check", (thread, values, level, total))?
+                .call_method1(py, "_check", (thread, snap))?
                 .extract(py)
         });
         match ops {

@@ -38,6 +38,7 @@ def context_functions(clingo):
     for program in [
         "p(1..3). q(@inc(X)) :- p(X).",
         "p(1..2). q(@both(X)) :- p(X). r(Y) :- p(X), Y = @both(X), Y > 5.",
+        "#const k = @inc(2). #const m = @inc(k). p(1..k). q(m).",
         'q(@up("ab")). r(@up(S)) :- S = ("x";"yz").',
         "p(1). q(X) :- p(X), r(@inc(X)). r(2). s :- p(X), @inc(X) > 1.",
         "q(X) :- X = @inc(@inc(1)). r(@pair(1, a)). s(@none(1)). t.",

@@ -137,3 +137,43 @@ def test_optimum(both):
 def test_undo_keeps_counts(both):
     # 2^5 subsets minus the 8 with p(1) but not p(2).
     assert both(counting) == (24, 0)
+
+
+class AtMostTwo:
+    """check_mode Fixpoint: more than two true p atoms are refuted as soon as propagation is
+    quiet; every decision is true (tests/data/propagator/clingo_check_modes.py in Rust)."""
+
+    def __init__(self, clingo):
+        self.mode = clingo.PropagatorCheckMode.Fixpoint
+        self.partial = False
+
+    def init(self, init):
+        init.check_mode = self.mode
+        self.lits = [init.solver_literal(a.literal) for a in init.symbolic_atoms.by_signature("p", 1)]
+
+    def check(self, control):
+        a = control.assignment
+        if not a.is_total:
+            self.partial = True
+        for level in range(1, a.decision_level + 1):
+            assert a.is_true(a.decision(level))
+        true = [l for l in self.lits if a.is_true(l)]
+        if len(true) > 2:
+            control.add_clause([-l for l in true[:3]])
+
+
+def at_most_two(clingo):
+    ctl = clingo.Control(["0"])
+    ctl.add("base", [], "{p(1..5)}.")
+    ctl.ground([("base", [])])
+    p = AtMostTwo(clingo)
+    ctl.register_propagator(p)
+    models = []
+    ctl.solve(on_model=lambda m: models.append(m.symbols(atoms=True)))
+    return sorted_models(models), p.partial
+
+
+def test_fixpoint_check_mode(both):
+    models, partial = both(at_most_two)
+    # Subsets of five atoms with at most two: 1 + 5 + 10.
+    assert len(models) == 16 and partial

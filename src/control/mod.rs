@@ -59,6 +59,7 @@ mod args;
 mod backend;
 mod context;
 mod functions;
+pub mod handle;
 pub mod incmode;
 mod model;
 mod parts;
@@ -84,9 +85,10 @@ use crate::syntax::ast::{self, Dialect, Program, Statement, StatementKind};
 pub use args::ArgsError;
 pub use backend::Backend;
 pub use functions::Context;
+pub use handle::{HandleMode, Search, SolveHandle};
 use model::Names;
 pub use model::{Model, OwnedModel};
-pub use propagator::{Assignment, Literal, PropagateControl, PropagateInit, Propagator};
+pub use propagator::{Assignment, CheckMode, Literal, PropagateControl, PropagateInit, Propagator};
 pub use symbol::{Name, ParseSymbolError, Symbol};
 
 /// An atom of the Control's ground program: the aspif numbering, from 1
@@ -321,6 +323,8 @@ pub struct Control {
     ctl_of_gatom: Vec<AtomId>,
     /// Registered propagators (`propagator`).
     propagators: propagator::Propagators,
+    /// A detached search has the solver (`handle`).
+    searching: bool,
 }
 
 /// Stops a solve call from another thread: see [`Control::interrupter`].
@@ -383,6 +387,7 @@ impl Control {
             session: ground::incremental::Session::new(),
             ctl_of_gatom: Vec::new(),
             propagators: Default::default(),
+            searching: false,
         }
     }
 
@@ -660,26 +665,10 @@ impl Control {
         options: &SolveOptions,
         mut on_model: impl FnMut(&Model<'_>) -> bool,
     ) -> Summary {
-        self.prepare();
-        self.init_propagators();
-        let mut assumptions = Vec::new();
-        self.external_assumptions(&mut assumptions);
-        let mut impossible = None;
-        // Per assumption of the caller, its solver literal (for the core).
-        let mut lits: Vec<Option<i32>> = Vec::with_capacity(options.assumptions.len());
-        for (k, (s, positive)) in options.assumptions.iter().enumerate() {
-            let lit = self
-                .lookup(s)
-                .map(|a| if *positive { a as i32 } else { -(a as i32) });
-            match lit {
-                Some(l) => assumptions.push(l),
-                None if *positive => {
-                    impossible.get_or_insert(k);
-                }
-                None => {}
-            }
-            lits.push(lit);
-        }
+        let call = match self.begin_call(options) {
+            Ok(call) => call,
+            Err(summary) => return *summary,
+        };
         let Control {
             solver,
             syms,
@@ -687,46 +676,30 @@ impl Control {
             sym_atom,
             ..
         } = self;
-        let solver = solver.as_mut().expect("prepared");
-        if let Some(k) = impossible {
-            return Summary {
-                outcome: solve::Outcome::Unsatisfiable,
-                exhausted: true,
-                optimum_proven: false,
-                stop: None,
-                stats: solve::Stats::default(),
-                models: 0,
-                core: Some(vec![options.assumptions[k].clone()]),
-            };
-        }
         let names = Names {
             syms,
             atom_sym,
             sym_atom,
         };
+        let solver = solver.as_mut().expect("prepared");
         let mut count = 0;
         let result = {
             // Supports are built only for the models whose reader asks for them.
             let want_supports = solver.config_mut().supports;
-            solver.for_each_model_lazy(&assumptions, &mut |m, prog| {
+            solver.for_each_model_lazy(&call.assumptions, &mut |m, prog| {
                 count += 1;
                 on_model(&Model {
                     raw: m,
-                    names: &names,
+                    names,
                     lazy_support: want_supports.then_some(prog),
                     full: OnceCell::new(),
                 })
             })
         };
-        let core = (count == 0).then(|| solver.core()).flatten().map(|core| {
-            options
-                .assumptions
-                .iter()
-                .zip(&lits)
-                .filter(|(_, l)| l.is_some_and(|l| core.contains(&l)))
-                .map(|(a, _)| a.clone())
-                .collect()
-        });
+        let core = (count == 0)
+            .then(|| solver.core())
+            .flatten()
+            .map(|core| handle::map_core(&options.assumptions, &call.lits, core));
         if result.stop == Some(solve::StopReason::Interrupted) {
             if let Some(flag) = &solver.config_mut().interrupt {
                 flag.store(false, std::sync::atomic::Ordering::Relaxed);

@@ -10,6 +10,7 @@
 use super::*;
 
 /// The atom tables a model reads its symbols from.
+#[derive(Clone, Copy)]
 pub(super) struct Names<'a> {
     pub(super) syms: &'a Symbols,
     pub(super) atom_sym: &'a [Option<SymId>],
@@ -19,7 +20,7 @@ pub(super) struct Names<'a> {
 /// One answer set, as the callback of [`Control::solve`] sees it.
 pub struct Model<'a> {
     pub(super) raw: &'a solve::Model,
-    pub(super) names: &'a Names<'a>,
+    pub(super) names: Names<'a>,
     /// The program `raw` is a model of, when `raw` came without the supports the solver
     /// configuration asks for (`Solver::for_each_model_lazy`); `None` when `raw` is complete.
     pub(super) lazy_support: Option<&'a GroundProgram>,

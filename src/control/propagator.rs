@@ -2,7 +2,8 @@
 //! [`Control::register_propagator`] gets `init` before every solve call (symbolic atoms to
 //! solver literals, watches, static clauses, fixed values), then `propagate` when watched
 //! literals become true, `undo` when backtracking unassigns them, and `check` on every total
-//! assignment (clingo's check mode `total`), from inside the CDCL search (`solve::propagator`).
+//! assignment or at every propagation fixpoint as its [`CheckMode`] says (clingo's
+//! `check_mode`, set in `init`), from inside the CDCL search (`solve::propagator`).
 //!
 //! Semantics, as clingo's where they agree, and the differences:
 //! - Clauses a propagator adds during search are learnt clauses (clingo's default
@@ -16,6 +17,9 @@
 //!   literal any of them watches (clingo filters by each one's watches); a propagator that
 //!   added a conflicting clause ends the round.
 //! - Watches persist across solve calls; `init` may add them again (no effect).
+//! - Literals: `PropagateInit::add_literal` makes a variable kept across calls,
+//!   `PropagateControl::add_literal` one for the current call (clingo's volatile literal),
+//!   both with one thread only.
 //!
 //! Invariant: the propagators are installed on the solver once it exists and reinstalled (watches
 //! reset, every `init` called again) after a registration.
@@ -42,9 +46,34 @@ pub trait Propagator: Send {
     fn undo(&mut self, thread_id: u32, assignment: &Assignment<'_>, changes: &[Literal]) {
         let _ = (thread_id, assignment, changes);
     }
-    /// The assignment is total; a clause refuting it makes the search go on.
+    /// The assignment is total (or, as the check mode says, propagation reached a fixpoint); a
+    /// clause refuting it makes the search go on.
     fn check(&mut self, ctl: &mut PropagateControl<'_>) {
         let _ = ctl;
+    }
+}
+
+/// When a propagator's `check` is called (clingo's `PropagatorCheckMode`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum CheckMode {
+    /// Never.
+    None,
+    /// On total assignments (clingo's default).
+    #[default]
+    Total,
+    /// At every propagation fixpoint (a total assignment is one too).
+    Fixpoint,
+    /// At fixpoints and on total assignments.
+    Both,
+}
+
+impl CheckMode {
+    fn total(self) -> bool {
+        matches!(self, CheckMode::Total | CheckMode::Both)
+    }
+
+    fn fixpoint(self) -> bool {
+        matches!(self, CheckMode::Fixpoint | CheckMode::Both)
     }
 }
 
@@ -53,6 +82,7 @@ pub struct PropagateInit<'a> {
     solver: &'a mut Solver,
     atoms: &'a [SymbolicAtom],
     theory: &'a [super::theory::TheoryAtom],
+    mode: &'a mut CheckMode,
 }
 
 impl PropagateInit<'_> {
@@ -91,15 +121,34 @@ impl PropagateInit<'_> {
     pub fn assignment(&self) -> Assignment<'_> {
         self.solver.propagator_assignment()
     }
+
+    /// When this propagator's `check` runs (clingo's `check_mode`; `Total` unless set).
+    pub fn check_mode(&self) -> CheckMode {
+        *self.mode
+    }
+
+    /// Sets when this propagator's `check` runs.
+    pub fn set_check_mode(&mut self, mode: CheckMode) {
+        *self.mode = mode;
+    }
+
+    /// A new solver variable, kept across solve calls (clingo's `add_literal`): its positive
+    /// literal. Unconstrained, it doubles the models, as in clingo. Panics with helper threads
+    /// (`-t N`), whose literals name only atoms.
+    pub fn add_literal(&mut self) -> Literal {
+        self.solver
+            .propagator_new_var()
+            .expect("PropagateInit::add_literal needs one thread (-t 1)")
+    }
 }
 
-/// The registered propagators, one hook for the engines.
+/// The registered propagators with their check modes, one hook for the engines.
 #[derive(Default)]
-pub(super) struct Registered(Vec<Box<dyn Propagator>>);
+pub(super) struct Registered(Vec<(Box<dyn Propagator>, CheckMode)>);
 
 impl Hook for Registered {
     fn propagate(&mut self, ctl: &mut PropagateControl<'_>, changes: &[Literal]) {
-        for p in &mut self.0 {
+        for (p, _) in &mut self.0 {
             p.propagate(ctl, changes);
             if ctl.assignment().has_conflict() {
                 return;
@@ -108,16 +157,29 @@ impl Hook for Registered {
     }
 
     fn undo(&mut self, thread_id: u32, assignment: &Assignment<'_>, changes: &[Literal]) {
-        for p in &mut self.0 {
+        for (p, _) in &mut self.0 {
             p.undo(thread_id, assignment, changes);
         }
     }
 
     fn check(&mut self, ctl: &mut PropagateControl<'_>) {
-        for p in &mut self.0 {
-            p.check(ctl);
-            if ctl.assignment().has_conflict() {
-                return;
+        for (p, mode) in &mut self.0 {
+            if mode.total() {
+                p.check(ctl);
+                if ctl.assignment().has_conflict() {
+                    return;
+                }
+            }
+        }
+    }
+
+    fn check_fixpoint(&mut self, ctl: &mut PropagateControl<'_>) {
+        for (p, mode) in &mut self.0 {
+            if mode.fixpoint() {
+                p.check(ctl);
+                if ctl.assignment().has_conflict() {
+                    return;
+                }
             }
         }
     }
@@ -138,7 +200,7 @@ impl Control {
         hook.lock()
             .unwrap_or_else(|p| p.into_inner())
             .0
-            .push(propagator);
+            .push((propagator, CheckMode::Total));
         self.propagators.installed = false;
     }
 
@@ -159,13 +221,17 @@ impl Control {
         solver.begin_propagator_init();
         {
             let mut guard = hook.lock().unwrap_or_else(|p| p.into_inner());
-            for p in &mut guard.0 {
+            for (p, mode) in &mut guard.0 {
+                *mode = CheckMode::Total;
                 p.init(&mut PropagateInit {
                     solver: &mut *solver,
                     atoms: &atoms,
                     theory: &theory,
+                    mode,
                 });
             }
+            let fixpoint = guard.0.iter().any(|(_, m)| m.fixpoint());
+            solver.set_fixpoint_checks(fixpoint);
         }
         solver.end_propagator_init();
     }

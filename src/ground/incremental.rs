@@ -101,7 +101,7 @@ impl Session {
         config: &GroundConfig,
         mut syms: Symbols,
         carry: bool,
-        calls: Option<&mut dyn Calls>,
+        mut calls: Option<&mut dyn Calls>,
     ) -> Grounding {
         let mut diags = Diagnostics::new(config.message_limit.unwrap_or(20));
         let empty = |diags, syms, statement_spans| Grounding {
@@ -134,6 +134,9 @@ impl Session {
             let mut rw = rewrite::Rewriter::new(&mut syms, &mut diags, sources);
             rw.resume(self.preds.clone(), self.projections);
             rw.calls = calls.is_some();
+            if let Some(c) = calls.as_mut() {
+                rw.host = Some(&mut **c);
+            }
             rw.program(program, &config.consts);
             let p = rw.projections();
             (rw.out, p)

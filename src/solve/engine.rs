@@ -879,6 +879,15 @@ impl Engine {
         self.asg.trail_lim.len() as u32
     }
 
+    /// The decision literal of `level` (`1..=decision_level()`); `None` for a level outside
+    /// that range or one an assumption already true left empty.
+    pub(crate) fn decision_at(&self, level: u32) -> Option<Lit> {
+        let start = *self.asg.trail_lim.get((level as usize).checked_sub(1)?)?;
+        let l = *self.asg.trail.get(start)?;
+        let i = l.var().index();
+        (self.asg.level[i] == level && matches!(self.asg.reason[i], Reason::Decision)).then_some(l)
+    }
+
     /// The assigned literals in order (the unfounded-set propagator reads what changed).
     pub fn trail(&self) -> &[Lit] {
         &self.asg.trail

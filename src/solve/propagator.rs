@@ -20,6 +20,8 @@
 //!   program plus the propagator's constraint, as in clingo.
 //! - The hook is called with the engine's propagation at a fixpoint and never re-entered: an
 //!   engine calls it only while no call of it runs on that engine.
+//! - Variables `add_literal` makes live for one solve call (retired when it ends, with the
+//!   clauses that mention them), as clingo's volatile literals.
 
 use super::engine::Engine;
 use super::lit::Lit;
@@ -37,6 +39,11 @@ pub trait Hook: Send {
     fn undo(&mut self, thread_id: u32, assignment: &Assignment<'_>, changes: &[Literal]);
     /// The assignment is total (clingo's check mode `total`).
     fn check(&mut self, ctl: &mut PropagateControl<'_>);
+    /// Propagation reached a fixpoint (clingo's check mode `fixpoint`); called only on engines
+    /// told so (`Solver::set_fixpoint_checks`).
+    fn check_fixpoint(&mut self, ctl: &mut PropagateControl<'_>) {
+        let _ = ctl;
+    }
 }
 
 /// The assignment of one engine, as a propagator reads it.
@@ -79,6 +86,15 @@ impl Assignment<'_> {
     /// The current decision level.
     pub fn decision_level(&self) -> u32 {
         self.engine.decision_level()
+    }
+
+    /// The decision literal of `level` (`1..=decision_level()`; assumptions are decisions too,
+    /// as in clasp); `None` for another level, and for a level an assumption that was already
+    /// true left without a decision.
+    pub fn decision(&self, level: u32) -> Option<Literal> {
+        self.engine
+            .decision_at(level)
+            .map(|l| self.engine.user_lit(l))
     }
 
     /// The number of variables (clingo's `size`): solver literals are `±1..=size`.
@@ -156,6 +172,17 @@ impl PropagateControl<'_> {
     pub fn remove_watch(&mut self, l: Literal) {
         let l = self.lits(&[l])[0];
         self.engine.watch_external(l, false);
+    }
+
+    /// A new variable for this solve call (clingo's volatile `add_literal`): free, decided on
+    /// like any other, and retired with every clause that mentions it when the call ends.
+    /// Answers its positive literal. Panics on a portfolio's helper thread (`thread_id() > 0`),
+    /// whose literals must name the main engine's variables.
+    pub fn add_literal(&mut self) -> Literal {
+        let v = self.engine.external_var().expect(
+            "add_literal during search needs one thread (-t 1): helpers cannot name new variables",
+        );
+        self.engine.user_lit(v.positive())
     }
 
     /// Whether `l` is watched.

@@ -634,6 +634,8 @@ impl Solver {
             self.config.models = Config::AUTO_MODELS;
         }
         self.total.accumulate(&r.stats);
+        // A propagator's volatile variables (`PropagateControl::add_literal`) end with the call.
+        self.engine.retire_external_vars();
         r
     }
 

@@ -85,6 +85,11 @@ fn calls_in_heads_and_bodies_match_clingo() {
             "p(1..2). { q(@inc(X)) : p(X) } = 2. s(N) :- N = #sum{ @inc(X) : p(X) }.",
             "p(1) p(2) q(2) q(3) s(5)",
         ),
+        // `#const` values computed by calls at grounding, one constant from another.
+        (
+            "#const k = @inc(2). #const m = @inc(k). p(1..k). q(m). r(@zero).",
+            "p(1) p(2) p(3) q(4) r(z)",
+        ),
     ];
     for (program, expected) in cases {
         assert_eq!(answer(program), expected, "{program}");

@@ -7,11 +7,13 @@
 mod support;
 
 mod functions;
+mod handle;
 mod grid;
 mod incmode;
 mod multishot;
 mod propagator;
 mod theory;
+mod propagator_modes;
 mod provenance;
 mod threads;
 mod traps;

@@ -330,6 +330,9 @@ pub struct Rewriter<'a> {
     /// A grounding context supplies external functions: `@f(...)` becomes a call literal
     /// (without one it is reported).
     pub calls: bool,
+    /// The context itself, for the calls of `#const` values (evaluated while rewriting, as
+    /// clingo evaluates `#const k = @f().` at grounding).
+    pub host: Option<&'a mut dyn super::Calls>,
     /// The ids of the tree's names in `syms.names`, direct-mapped by
     /// [`ast::Name::quick_hash`]: a program names few predicates, constants and variables
     /// many times, and a hit costs a hash of the name's bytes and one compare instead of the
@@ -469,6 +472,7 @@ impl<'a> Rewriter<'a> {
             current: (0, Span::default()),
             aux_role: None,
             calls: false,
+            host: None,
             projections: 0,
             name_ids: vec![None; NAME_SLOTS],
             pred_ids: vec![None; PRED_SLOTS],
@@ -559,19 +563,60 @@ impl<'a> Rewriter<'a> {
         });
     }
 
-    /// Evaluates a ground term (for `#const` values).
+    /// One external call of a `#const` value (`V = @f(args)`, arguments bound by the calls
+    /// before it): `V` bound to the one symbol the host returns; an error otherwise.
+    fn const_call(&mut self, l: &NLit, b: &mut super::term::Binding) -> Option<()> {
+        let NLit::Call {
+            pat: NTerm::Var(v),
+            name,
+            args,
+            span,
+        } = l
+        else {
+            return None;
+        };
+        let mut vals = Vec::with_capacity(args.len());
+        for a in args {
+            vals.push(a.eval(self.syms, b).ok()?);
+        }
+        let text = self.syms.names.resolve(*name).to_string();
+        let host = self.host.as_deref_mut()?;
+        let message = match host.call(self.syms, &text, &vals) {
+            Ok(values) if values.len() == 1 => {
+                b.unify(*v, values[0]);
+                return Some(());
+            }
+            Ok(values) => format!(
+                "@{text} gave {} symbols for a #const value (one expected)",
+                values.len()
+            ),
+            Err(e) => e,
+        };
+        self.diags
+            .push(Diagnostic::error(*span, message).with_snippet(self.snippet(*span)));
+        None
+    }
+
+    /// Evaluates a ground term (for `#const` values; external calls `@f(...)` are made with
+    /// the grounding context, [`Rewriter::host`]).
     pub fn eval_ground(&mut self, t: &ast::Term) -> Option<SymId> {
         let mut vars = Vars::default();
         let mut extra = Vec::new();
         let n = self.term(t, &mut vars, &mut extra)?;
-        if !extra.is_empty() || !vars.names.is_empty() {
+        let only_calls = extra.iter().all(|l| matches!(l, NLit::Call { .. }));
+        let fresh_only = vars.names.len() == extra.len();
+        if !only_calls || !fresh_only || (!extra.is_empty() && self.host.is_none()) {
             self.diags.push(
                 Diagnostic::error(t.span, "constant term expected")
                     .with_snippet(self.snippet(t.span)),
             );
             return None;
         }
-        match n.eval(self.syms, &super::term::Binding::new(0)) {
+        let mut b = super::term::Binding::new(vars.names.len());
+        for l in &extra {
+            self.const_call(l, &mut b)?;
+        }
+        match n.eval(self.syms, &b) {
             Ok(s) => Some(s),
             Err(span) => {
                 self.diags.push(

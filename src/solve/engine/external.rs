@@ -6,7 +6,8 @@
 //! step: clauses the hook left waiting are added (`add_clause_in_search`, which backjumps as
 //! for a loop nogood), then the trail past `head` is scanned for watched literals, which the
 //! hook gets in one `propagate` call; whatever it assigned or added sends propagation round
-//! again. `search` calls `check_external` where it would answer `Sat`.
+//! again. With fixpoint checks on, a quiet step ends with the hook's `check_fixpoint`.
+//! `search` calls `check_external` where it would answer `Sat`.
 //!
 //! Invariants:
 //! - `notified` holds, in trail order, the watched literals the hook was given that are still
@@ -51,6 +52,10 @@ pub(super) struct External {
     busy: bool,
     /// `None` on the main engine (user literal `±(v + 1)` is variable `v`).
     map: Option<LitMap>,
+    /// The hook's `check_fixpoint` runs at every quiet propagation step.
+    fixpoint: bool,
+    /// Variables the hook added during this solve call (`external_var`).
+    added: Vec<Var>,
 }
 
 /// What the propagation step did.
@@ -79,6 +84,8 @@ impl Engine {
                 stashed: false,
                 busy: false,
                 map: None,
+                fixpoint: false,
+                added: Vec::new(),
             })
         });
     }
@@ -95,6 +102,34 @@ impl Engine {
         if let Some(e) = self.ext.as_mut() {
             e.busy = busy;
         }
+    }
+
+    /// Calls the hook's `check_fixpoint` at every propagation fixpoint (or stops).
+    pub(crate) fn set_fixpoint_checks(&mut self, on: bool) {
+        if let Some(e) = self.ext.as_mut() {
+            e.fixpoint = on;
+        }
+    }
+
+    /// A variable for the hook, live until [`Engine::retire_external_vars`]; `None` on a
+    /// helper engine (its user literals name the main engine's variables).
+    pub(crate) fn external_var(&mut self) -> Option<Var> {
+        if self.ext.as_ref().is_none_or(|e| e.map.is_some()) {
+            return None;
+        }
+        let v = self.new_var();
+        self.ext.as_mut().expect("checked").added.push(v);
+        Some(v)
+    }
+
+    /// After a solve call: the hook's variables retire (`Engine::retire_vars`).
+    pub(crate) fn retire_external_vars(&mut self) {
+        let added = match self.ext.as_mut() {
+            Some(e) if !e.added.is_empty() => std::mem::take(&mut e.added),
+            _ => return,
+        };
+        self.backtrack(0);
+        self.retire_vars(&added);
     }
 
     /// This engine's literal of a user literal, `None` when it names no variable here.
@@ -266,12 +301,22 @@ impl Engine {
                 changes.push(l);
             }
         }
-        if changes.is_empty() {
+        let hook = e.hook.clone();
+        let fixpoint = e.fixpoint;
+        if !changes.is_empty() {
+            let user: Vec<Literal> = changes.iter().map(|&l| self.user_lit(l)).collect();
+            self.call_hook(|h, ctl| h.propagate(ctl, &user), &hook);
+            match self.after_hook(len) {
+                Step::Quiet => {}
+                step => return step,
+            }
+        }
+        if !fixpoint {
             return Step::Quiet;
         }
-        let user: Vec<Literal> = changes.iter().map(|&l| self.user_lit(l)).collect();
-        let hook = self.ext.as_ref().expect("checked above").hook.clone();
-        self.call_hook(|h, ctl| h.propagate(ctl, &user), &hook);
+        // clingo's check mode `fixpoint`: propagation (the hook's included) is quiet.
+        let len = self.asg.trail.len();
+        self.call_hook(|h, ctl| h.check_fixpoint(ctl), &hook);
         self.after_hook(len)
     }
 
@@ -285,10 +330,13 @@ impl Engine {
             return false;
         }
         let hook = e.hook.clone();
+        let added = e.added.len();
         let len = self.asg.trail.len();
         self.call_hook(|h, ctl| h.check(ctl), &hook);
+        let grown = self.ext.as_ref().is_some_and(|e| e.added.len() != added);
         match self.after_hook(len) {
-            Step::Quiet => false,
+            // A new variable (`add_literal`) is still to be decided.
+            Step::Quiet => grown,
             Step::Changed => true,
             Step::Conflict => {
                 // `search` goes round to `propagate`, which reports it.

@@ -79,6 +79,24 @@ impl Solver {
         }
     }
 
+    /// Whether every engine calls the hook's `check_fixpoint` at each propagation fixpoint.
+    pub(crate) fn set_fixpoint_checks(&mut self, on: bool) {
+        for e in self.engines_mut() {
+            e.set_fixpoint_checks(on);
+        }
+    }
+
+    /// A new variable of the main engine for a propagator's `init` (clingo's
+    /// `PropagateInit.add_literal`): kept across calls, decided on like any other. `None` with
+    /// helper threads, whose literal maps name only atoms.
+    pub(crate) fn propagator_new_var(&mut self) -> Option<Literal> {
+        if self.par.is_some() {
+            return None;
+        }
+        let v = self.engine.new_var();
+        Some(self.engine.user_lit(v.positive()))
+    }
+
     /// Every engine of the solver, the main one first.
     fn engines_mut(&mut self) -> Vec<&mut Engine> {
         let mut out = vec![&mut self.engine];

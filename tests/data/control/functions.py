@@ -37,6 +37,7 @@ PROGRAMS = [
     "q(@none(1)). r.",
     "q(@pair(1, a)). r(@zero). r(@zero()).",
     "p(1..2). { q(@inc(X)) : p(X) } = 2. s(N) :- N = #sum{ @inc(X) : p(X) }.",
+    "#const k = @inc(2). #const m = @inc(k). p(1..k). q(m). r(@zero).",
 ]
 
 
