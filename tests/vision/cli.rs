@@ -100,7 +100,10 @@ fn a_tiny_classification_experiment_reports_every_system() {
         }
     }
     // One learning run: no interval (the bootstrap needs two units).
-    assert_eq!(v["learning"]["intervals"], serde_json::json!([null, null, null, null]));
+    assert_eq!(
+        v["learning"]["intervals"],
+        serde_json::json!([null, null, null, null])
+    );
     assert_eq!(v["learning"]["runs"], 1);
     assert_eq!(v["removals"].as_array().unwrap().len(), 6);
 }
