@@ -6,8 +6,10 @@
 # resumes); the pooled report goes to OUT/seeds. The classification experiment is not a trial
 # (`lucent experiment all` runs it in process), so it is not in the job list.
 #
-# usage: scripts/experiment_seeds.sh OUT [SEEDS] [JOBS]
-#   SEEDS: a list as "0 1 2 3 4" (default); JOBS: parallel's -j (default 2, this machine's cores)
+# usage: scripts/experiment_seeds.sh OUT [SEEDS] [JOBS] [lucent experiment options...]
+#   SEEDS: a list as "0 1 2 3 4" (default); JOBS: parallel's -j (default 2, this machine's cores);
+#   further options go to every seed's `lucent experiment all` (e.g. a small configuration:
+#   --runs 2 --episodes 1 --configurations 1 --goals 1)
 # Each seed's job list lists H1 first (H2-H4 trials read the learned axioms of H1's runs), and
 # the lists are concatenated seed by seed, so whole seeds finish in order.
 set -euo pipefail
@@ -15,13 +17,14 @@ cd "$(dirname "$0")/.."
 out="${1:?usage: experiment_seeds.sh OUT [SEEDS] [JOBS]}"
 seeds="${2:-0 1 2 3 4}"
 jobs="${3:-2}"
+shift $(( $# < 3 ? $# : 3 ))
 bin="${CARGO_TARGET_DIR:-target}/release/lucent"
 cargo build --release --quiet
 mkdir -p "$out"
 : > "$out/jobs.txt"
 dirs=()
 for s in $seeds; do
-  "$bin" experiment all --seed "$s" --out "$out/seed-$s" --emit-jobs "$out/seed-$s/jobs.txt" 2>/dev/null
+  "$bin" experiment all --seed "$s" --out "$out/seed-$s" --emit-jobs "$out/seed-$s/jobs.txt" "$@" 2>/dev/null
   cat "$out/seed-$s/jobs.txt" >> "$out/jobs.txt"
   dirs+=("$out/seed-$s")
 done
