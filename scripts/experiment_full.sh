@@ -6,11 +6,9 @@
 #
 # usage: scripts/experiment_full.sh [SEED] [extra `lucent experiment` options...]
 #
-# Five seeds (each a run of its own in docs/experiments/seed-S, then one pooled report; every
-# trial computes all readings of docs/experiments/gaps.md, so nothing else is needed):
-#   for s in 0 1 2 3 4; do target/release/lucent experiment all --no-classify --seed $s \
-#     --out docs/experiments/seed-$s >/dev/null; done
-#   target/release/lucent experiment merge docs/experiments/seed-{0,1,2,3,4} --out docs/experiments/seeds
+# Five seeds in one GNU parallel invocation, then one pooled report (every trial computes all
+# readings of docs/experiments/gaps.md, so nothing else is needed): scripts/experiment_seeds.sh
+# (`scripts/experiment_seeds.sh docs/experiments/five "0 1 2 3 4" 2`).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seed="${1:-0}"
@@ -18,7 +16,7 @@ shift || true
 out=docs/experiments
 cargo build --release --quiet
 mkdir -p "$out"
-cmd=(target/release/lucent experiment all --seed "$seed" --out "$out" "$@")
+cmd=("${CARGO_TARGET_DIR:-target}/release/lucent" experiment all --seed "$seed" --out "$out" "$@")
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
 start=$(date +%s%N)

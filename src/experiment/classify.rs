@@ -17,6 +17,7 @@ use std::time::Instant;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+use super::interval::{self, Interval};
 use crate::base::rng::SplitMix64;
 use crate::learn::score::{self, Counts};
 use crate::learn::term::Axiom;
@@ -91,6 +92,11 @@ pub struct Row {
     pub precision: f64,
     /// Recall of the positive class.
     pub recall: f64,
+    /// 95% intervals of accuracy, precision and recall: the percentile bootstrap over the test
+    /// scenes (`experiment::interval`, fixed seed), each resample's counts summed; `None` in
+    /// results written before.
+    #[serde(default)]
+    pub intervals: [Option<Interval>; 3],
     /// Fraction of test examples decided by reasoning.
     pub by_reasoning: f64,
     /// Training examples given to the network.
@@ -112,6 +118,10 @@ pub struct LearningScore {
     pub strict_pr: (f64, f64),
     /// Relaxed precision and recall, percent.
     pub relaxed_pr: (f64, f64),
+    /// 95% intervals of strict P, strict R, relaxed P, relaxed R: the bootstrap over the runs,
+    /// each resample's counts summed (as H1's); `None` in results written before.
+    #[serde(default)]
+    pub intervals: [Option<Interval>; 4],
     /// Every constraint learned in some run, with the number of runs that learned it.
     pub learned: Vec<(String, usize)>,
 }
@@ -159,11 +169,41 @@ fn slot(label: Label) -> usize {
     }
 }
 
-/// Scores a trained classifier on reasoned test scenes.
-fn evaluate(c: &Classifier, test: &[Reasoned<'_>], label: Label) -> (usize, f64, f64, f64, f64) {
-    let decisions: Vec<(bool, bool, bool)> = test
+/// One test scene's decisions: examples, right, tp, fp, fn, decided by reasoning.
+type SceneCounts = [usize; 6];
+
+/// Accuracy, precision and recall of summed scene counts (0 when undefined).
+fn rates(counts: &[&SceneCounts]) -> [f64; 3] {
+    let mut t = [0usize; 6];
+    for c in counts {
+        for (a, b) in t.iter_mut().zip(c.iter()) {
+            *a += b;
+        }
+    }
+    let ratio = |a: usize, b: usize| if b == 0 { 0.0 } else { a as f64 / b as f64 };
+    [
+        ratio(t[1], t[0]),
+        ratio(t[2], t[2] + t[3]),
+        ratio(t[2], t[2] + t[4]),
+    ]
+}
+
+/// Scores of one classifier on the test scenes.
+struct Scores {
+    examples: usize,
+    /// Accuracy, precision, recall.
+    rates: [f64; 3],
+    /// Their 95% intervals over the test scenes.
+    intervals: [Option<Interval>; 3],
+    by_reasoning: f64,
+}
+
+/// Scores a trained classifier on reasoned test scenes; the intervals resample the scenes (the
+/// examples of one image are not independent).
+fn evaluate(c: &Classifier, test: &[Reasoned<'_>], label: Label) -> Scores {
+    let scenes: Vec<SceneCounts> = test
         .par_iter()
-        .flat_map_iter(|r| {
+        .map(|r| {
             asked(label, r.scene)
                 .map(|o| {
                     let d = c.decide(label, Some(&r.reasoning), o);
@@ -177,26 +217,31 @@ fn evaluate(c: &Classifier, test: &[Reasoned<'_>], label: Label) -> (usize, f64,
                         d.source == classify::Source::Reasoning,
                     )
                 })
-                .collect::<Vec<_>>()
+                .fold([0usize; 6], |mut n, (p, t, r)| {
+                    n[0] += 1;
+                    n[1] += usize::from(p == t);
+                    n[2] += usize::from(p && t);
+                    n[3] += usize::from(p && !t);
+                    n[4] += usize::from(!p && t);
+                    n[5] += usize::from(r);
+                    n
+                })
         })
         .collect();
-    let n = decisions.len();
-    let (mut tp, mut fp, mut fn_, mut right, mut reasoned) = (0, 0, 0, 0, 0);
-    for &(p, t, r) in &decisions {
-        right += usize::from(p == t);
-        tp += usize::from(p && t);
-        fp += usize::from(p && !t);
-        fn_ += usize::from(!p && t);
-        reasoned += usize::from(r);
+    let all: Vec<&SceneCounts> = scenes.iter().collect();
+    let n: usize = scenes.iter().map(|c| c[0]).sum();
+    let reasoned: usize = scenes.iter().map(|c| c[5]).sum();
+    let ci = |k: usize| interval::bootstrap(&scenes, |sample| Some(rates(sample)[k]));
+    Scores {
+        examples: n,
+        rates: rates(&all),
+        intervals: [ci(0), ci(1), ci(2)],
+        by_reasoning: if n == 0 {
+            0.0
+        } else {
+            reasoned as f64 / n as f64
+        },
     }
-    let ratio = |a: usize, b: usize| if b == 0 { 0.0 } else { a as f64 / b as f64 };
-    (
-        n,
-        ratio(right, n),
-        ratio(tp, tp + fp),
-        ratio(tp, tp + fn_),
-        ratio(reasoned, n),
-    )
 }
 
 /// How many scenes [`run`] generates (training and test): the length of its progress.
@@ -247,16 +292,18 @@ pub fn run(
                 &relearned
             };
             for label in Label::ALL {
-                let (n, acc, p, r, by) = evaluate(&c, test, label);
+                let sc = evaluate(&c, test, label);
+                let [accuracy, precision, recall] = sc.rates;
                 rows.push(Row {
                     system: system.key().into(),
                     train_scenes: size,
                     label: label.name().into(),
-                    examples: n,
-                    accuracy: acc,
-                    precision: p,
-                    recall: r,
-                    by_reasoning: by,
+                    examples: sc.examples,
+                    accuracy,
+                    precision,
+                    recall,
+                    intervals: sc.intervals,
+                    by_reasoning: sc.by_reasoning,
                     cnn_examples: c.trained_on[slot(label)],
                     train_seconds: secs,
                 });
@@ -347,16 +394,37 @@ fn learning_runs(config: &ClassifyConfig, train: &[Reasoned<'_>]) -> LearningSco
         .collect();
     let (mut strict, mut relaxed) = (Counts::default(), Counts::default());
     let mut tally: std::collections::BTreeMap<String, usize> = Default::default();
+    let mut per_run_counts = Vec::new();
     for found in &per_run {
-        strict.add(score::strict(found, &targets));
-        relaxed.add(score::relaxed(found, &targets));
+        let (st, re) = (
+            score::strict(found, &targets),
+            score::relaxed(found, &targets),
+        );
+        per_run_counts.push((st, re));
+        strict.add(st);
+        relaxed.add(re);
         for a in found {
             *tally.entry(a.to_ald()).or_default() += 1;
         }
     }
     let mut learned: Vec<(String, usize)> = tally.into_iter().collect();
     learned.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
+    let ci = |relaxed: bool, recall: bool| {
+        interval::bootstrap(&per_run_counts, |sample| {
+            let mut c = Counts::default();
+            for (st, re) in sample {
+                c.add(if relaxed { *re } else { *st });
+            }
+            Some(if recall { c.recall() } else { c.precision() })
+        })
+    };
     LearningScore {
+        intervals: [
+            ci(false, false),
+            ci(false, true),
+            ci(true, false),
+            ci(true, true),
+        ],
         runs: config.runs,
         strict: (strict.tp, strict.fp, strict.fn_),
         relaxed: (relaxed.tp, relaxed.fp, relaxed.fn_),
@@ -422,7 +490,10 @@ pub fn markdown(r: &ClassifyResult) -> String {
         s,
         "{} test scenes; {:.0}% of stacked objects unstable, {:.0}% of objects occluded. \
          Reasoning starts from KB_full without {}; the last system learns them back from its \
-         training set.\n",
+         training set. Each figure is followed by its 95% interval in brackets: the percentile \
+         bootstrap over the test scenes (an image's objects are not independent), 2000 \
+         resamples with a fixed seed (src/experiment/interval.rs); the plots draw the accuracy's \
+         interval as a whisker.\n",
         r.test_scenes,
         100.0 * r.balance.0,
         100.0 * r.balance.1,
@@ -449,10 +520,13 @@ pub fn markdown(r: &ClassifyResult) -> String {
                 }) {
                     Some(x) => {
                         last_time = x.train_seconds;
+                        let [a, p, r] = x.intervals;
                         let _ = write!(
                             s,
-                            " {:.3} ({:.2} / {:.2}) |",
-                            x.accuracy, x.precision, x.recall
+                            " {} ({} / {}) |",
+                            interval::cell(Some(x.accuracy), a, 3),
+                            interval::cell(Some(x.precision), p, 2),
+                            interval::cell(Some(x.recall), r, 2)
                         );
                     }
                     None => {
@@ -467,9 +541,13 @@ pub fn markdown(r: &ClassifyResult) -> String {
     let l = &r.learning;
     let _ = writeln!(
         s,
-        "### Learning the removed constraints back ({} runs)\n\n| | TP | FP | FN | Precision | Recall |\n|---|---|---|---|---|---|\n| Strict | {} | {} | {} | {:.1}% | {:.1}% |\n| Relaxed | {} | {} | {} | {:.1}% | {:.1}% |\n",
-        l.runs, l.strict.0, l.strict.1, l.strict.2, l.strict_pr.0, l.strict_pr.1,
-        l.relaxed.0, l.relaxed.1, l.relaxed.2, l.relaxed_pr.0, l.relaxed_pr.1
+        "### Learning the removed constraints back ({} runs; intervals: bootstrap over the runs)\n\n| | TP | FP | FN | Precision % | Recall % |\n|---|---|---|---|---|---|\n| Strict | {} | {} | {} | {} | {} |\n| Relaxed | {} | {} | {} | {} | {} |\n",
+        l.runs, l.strict.0, l.strict.1, l.strict.2,
+        interval::cell(Some(l.strict_pr.0), l.intervals[0], 1),
+        interval::cell(Some(l.strict_pr.1), l.intervals[1], 1),
+        l.relaxed.0, l.relaxed.1, l.relaxed.2,
+        interval::cell(Some(l.relaxed_pr.0), l.intervals[2], 1),
+        interval::cell(Some(l.relaxed_pr.1), l.intervals[3], 1)
     );
     let _ = writeln!(s, "Learned (runs that learned it):\n");
     for (a, n) in &l.learned {
@@ -541,11 +619,30 @@ pub fn plots(r: &ClassifyResult) -> Vec<(String, String)> {
                     (format!("{n} scenes"), values)
                 })
                 .collect();
+            let errors = r
+                .sizes
+                .iter()
+                .map(|n| {
+                    System::ALL
+                        .iter()
+                        .map(|sys| {
+                            r.rows
+                                .iter()
+                                .find(|x| {
+                                    x.system == sys.key()
+                                        && x.label == label.name()
+                                        && x.train_scenes == *n
+                                })
+                                .and_then(|x| x.intervals[0])
+                        })
+                        .collect()
+                })
+                .collect();
             let bars = super::svg::Bars {
                 title: format!("{} accuracy against training-set size", label.name()),
                 series: System::ALL.iter().map(|s| s.name().to_string()).collect(),
                 groups,
-                errors: Vec::new(),
+                errors,
                 y_max: 1.0,
             };
             (
@@ -554,4 +651,24 @@ pub fn plots(r: &ClassifyResult) -> Vec<(String, String)> {
             )
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rates_sum_the_scenes_counts() {
+        // Scene a: 4 examples, 3 right, tp 1, fp 1, fn 0; scene b: 2 examples, 1 right, tp 0,
+        // fp 0, fn 1. Summed: 4 right of 6, precision 1/2, recall 1/2.
+        let a: SceneCounts = [4, 3, 1, 1, 0, 2];
+        let b: SceneCounts = [2, 1, 0, 0, 1, 0];
+        assert_eq!(rates(&[&a, &b]), [4.0 / 6.0, 0.5, 0.5]);
+        // No positive predicted or present: precision and recall are 0, not NaN.
+        let c: SceneCounts = [3, 3, 0, 0, 0, 0];
+        assert_eq!(rates(&[&c]), [1.0, 0.0, 0.0]);
+        // The bootstrap over scenes: a resample of a alone or b alone spans the interval.
+        let i = interval::bootstrap(&[a, b], |s| Some(rates(s)[0])).unwrap();
+        assert!(i.lo <= 0.5 && i.hi >= 0.75, "{i:?}");
+    }
 }

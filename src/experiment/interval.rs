@@ -11,7 +11,7 @@
 //! in-process run, a resumed run and a merge of job outputs print the same intervals. Fewer
 //! than two units give no interval (`None`, printed as no bracket).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::base::rng::SplitMix64;
 
@@ -22,7 +22,7 @@ pub const RESAMPLES: usize = 2_000;
 pub const SEED: u64 = 0x0042_4f4f_5453_5452;
 
 /// A 95% interval.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Interval {
     /// The 2.5th percentile.
     pub lo: f64,

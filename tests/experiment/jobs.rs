@@ -299,12 +299,14 @@ fn a_killed_run_resumes_and_a_damaged_result_is_computed_again() {
     }
 }
 
-/// Runs of several seeds merged into one report (`lucent experiment merge DIR DIR --out OUT`):
+/// Runs of five seeds merged into one report (`lucent experiment merge DIR... --out OUT`):
 /// every count is the sum of the seeds' counts and every mean the trial-weighted mean of the
-/// seeds' means, whichever order the directories are given in; a run of another setup is
-/// refused.
+/// seeds' means, whichever order the directories are given in; the five seeds' job lists run
+/// by one GNU parallel invocation and merged give the same report as the in-process runs
+/// merged; a run of another setup is refused.
 #[test]
 fn a_merge_of_seeds_equals_the_sum_of_its_parts() {
+    const SEEDS: [&str; 5] = ["3", "4", "5", "6", "7"];
     let small_with_seed = |seed: &'static str| -> Vec<&'static str> {
         let mut v: Vec<&str> = SMALL.to_vec();
         let at = v.iter().position(|a| *a == "--seed").unwrap();
@@ -313,7 +315,7 @@ fn a_merge_of_seeds_equals_the_sum_of_its_parts() {
     };
     let mut parts = Vec::new();
     let mut dirs = Vec::new();
-    for seed in ["3", "4"] {
+    for seed in SEEDS {
         let d = scratch(&format!("seed{seed}"));
         let mut a = vec!["experiment", "all"];
         a.extend(small_with_seed(seed));
@@ -327,11 +329,15 @@ fn a_merge_of_seeds_equals_the_sum_of_its_parts() {
     }
     let merged_dir = scratch("merged");
     let m = merged_dir.to_str().unwrap();
-    let (d0, d1) = (dirs[0].to_str().unwrap(), dirs[1].to_str().unwrap());
-    let out = lucent(&["experiment", "merge", d0, d1, "--out", m, "--outf=2"]);
-    let mut merged: Value = serde_json::from_slice(&out.stdout).unwrap();
-    let out = lucent(&["experiment", "merge", d1, d0, "--outf=2"]);
-    let mut reversed: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let names: Vec<&str> = dirs.iter().map(|d| d.to_str().unwrap()).collect();
+    let mut a = vec!["experiment", "merge"];
+    a.extend(&names);
+    a.extend(["--out", m, "--outf=2"]);
+    let mut merged: Value = serde_json::from_slice(&lucent(&a).stdout).unwrap();
+    let mut a = vec!["experiment", "merge"];
+    a.extend(names.iter().rev());
+    a.push("--outf=2");
+    let mut reversed: Value = serde_json::from_slice(&lucent(&a).stdout).unwrap();
     strip_times(&mut merged);
     strip_times(&mut reversed);
     assert_eq!(
@@ -339,12 +345,12 @@ fn a_merge_of_seeds_equals_the_sum_of_its_parts() {
         "the order of the directories does not matter"
     );
     let md = std::fs::read_to_string(merged_dir.join("report.md")).unwrap();
-    assert!(md.contains("Seeds 3, 4 pooled"), "{md}");
-    assert_eq!(merged["seeds"], serde_json::json!([3, 4]));
+    assert!(md.contains("Seeds 3, 4, 5, 6, 7 pooled"), "{md}");
+    assert_eq!(merged["seeds"], serde_json::json!([3, 4, 5, 6, 7]));
 
     let n = |v: &Value| v.as_u64().unwrap_or_else(|| panic!("a count: {v}"));
     let f = |v: &Value| v.as_f64();
-    let sum = |path: &dyn Fn(&Value) -> &Value| n(path(&parts[0])) + n(path(&parts[1]));
+    let sum = |path: &dyn Fn(&Value) -> &Value| parts.iter().map(|p| n(path(p))).sum::<u64>();
     assert_eq!(n(&merged["trials"]), sum(&|v| &v["trials"]));
     for key in ["strict_counts", "relaxed_counts"] {
         for c in ["tp", "fp", "fn"] {
@@ -371,29 +377,51 @@ fn a_merge_of_seeds_equals_the_sum_of_its_parts() {
             );
         }
     }
-    // H2: pair counts add up, fractions are the trial-weighted means of the parts'.
+    // A trial-weighted mean of the parts' fractions, checked against the merged figure.
+    let weighted = |at: &dyn Fn(&Value) -> Value, value: &str, weight: &dyn Fn(&Value) -> u64| {
+        let (mut total, mut count) = (0.0, 0);
+        for p in &parts {
+            let x = at(p);
+            if let Some(v) = f(&x[value]) {
+                total += v * weight(&x) as f64;
+                count += weight(&x);
+            }
+        }
+        (count > 0).then(|| total / count as f64)
+    };
+    // H2: pair counts add up, fractions are the trial-weighted means of the parts', in both
+    // modes and in the readings.
     for preset in ["real", "simulated"] {
         assert_eq!(
             n(&merged["h2"][preset]["pairs"]),
             sum(&|v| &v["h2"][preset]["pairs"])
         );
-        for cond in ["without", "with"] {
-            let at = |v: &Value| v["h2"][preset]["iterative"][cond].clone();
-            let (a, b, m) = (at(&parts[0]), at(&parts[1]), at(&merged));
-            assert_eq!(n(&m["trials"]), n(&a["trials"]) + n(&b["trials"]));
-            for frac in ["optimal", "incorrect"] {
-                let part =
-                    |x: &Value| f(&x[frac]).map(|v| (v * n(&x["trials"]) as f64, n(&x["trials"])));
-                let (sa, na) = part(&a).unwrap_or((0.0, 0));
-                let (sb, nb) = part(&b).unwrap_or((0.0, 0));
-                if na + nb > 0 {
-                    let want = (sa + sb) / (na + nb) as f64;
-                    let got = f(&m[frac]).unwrap();
-                    assert!(
-                        (got - want).abs() < 1e-9,
-                        "{preset} {cond} {frac}: {got} vs {want}"
-                    );
+        for mode in ["fixed", "iterative"] {
+            for cond in ["without", "with"] {
+                let at = |v: &Value| v["h2"][preset][mode][cond].clone();
+                let total: u64 = parts.iter().map(|p| n(&at(p)["trials"])).sum();
+                assert_eq!(n(&at(&merged)["trials"]), total, "{preset} {mode} {cond}");
+                for frac in ["optimal", "suboptimal", "incorrect"] {
+                    if let Some(want) = weighted(&at, frac, &|x| n(&x["trials"])) {
+                        let got = f(&at(&merged)[frac]).unwrap();
+                        assert!(
+                            (got - want).abs() < 1e-9,
+                            "{preset} {mode} {cond} {frac}: {got} vs {want}"
+                        );
+                    }
                 }
+            }
+        }
+        for reading in ["one_missing", "fixed_one"] {
+            let at = |v: &Value| v["h2"][preset]["readings"][reading]["without"].clone();
+            let total: u64 = parts.iter().map(|p| n(&at(p)["trials"])).sum();
+            assert_eq!(n(&at(&merged)["trials"]), total, "{preset} {reading}");
+            if let Some(want) = weighted(&at, "incorrect", &|x| n(&x["trials"])) {
+                let got = f(&at(&merged)["incorrect"]).unwrap();
+                assert!(
+                    (got - want).abs() < 1e-9,
+                    "{preset} {reading}: {got} vs {want}"
+                );
             }
         }
     }
@@ -402,19 +430,64 @@ fn a_merge_of_seeds_equals_the_sum_of_its_parts() {
         for cond in 0..2 {
             for q in 0..4 {
                 let row = |v: &Value| v["h4"][preset][cond]["rows"][q].clone();
-                let (a, b, m) = (row(&parts[0]), row(&parts[1]), row(&merged));
-                assert_eq!(n(&m[3]), n(&a[3]) + n(&b[3]), "{preset} {cond} {q}");
-                let w = |x: &Value| f(&x[1]).map_or(0.0, |p| p * n(&x[3]) as f64);
-                if n(&m[3]) > 0 {
-                    let want = (w(&a) + w(&b)) / n(&m[3]) as f64;
-                    let got = f(&m[1]).unwrap();
+                let total: u64 = parts.iter().map(|p| n(&row(p)[3])).sum();
+                assert_eq!(n(&row(&merged)[3]), total, "{preset} {cond} {q}");
+                if total > 0 {
+                    let w: f64 = parts
+                        .iter()
+                        .map(|p| f(&row(p)[1]).map_or(0.0, |v| v * n(&row(p)[3]) as f64))
+                        .sum();
+                    let got = f(&row(&merged)[1]).unwrap();
                     assert!(
-                        (got - want).abs() < 1e-9,
-                        "{preset} {cond} {q}: {got} vs {want}"
+                        (got - w / total as f64).abs() < 1e-9,
+                        "{preset} {cond} {q}: {got} vs {}",
+                        w / total as f64
                     );
                 }
             }
         }
+    }
+    // The same five seeds as one job list, run by one GNU parallel invocation, then merged:
+    // the report of the in-process runs, merged.
+    let mut job_dirs = Vec::new();
+    let mut all_jobs = String::new();
+    for seed in SEEDS {
+        let d = scratch(&format!("jobs{seed}"));
+        let jobs = d.join("jobs.txt");
+        let mut a = vec!["experiment", "all"];
+        a.extend(small_with_seed(seed));
+        a.extend([
+            "--out",
+            d.to_str().unwrap(),
+            "--emit-jobs",
+            jobs.to_str().unwrap(),
+        ]);
+        lucent(&a);
+        all_jobs.push_str(&std::fs::read_to_string(&jobs).unwrap());
+        job_dirs.push(d);
+    }
+    let jobs = merged_dir.join("all-jobs.txt");
+    std::fs::write(&jobs, &all_jobs).unwrap();
+    assert_eq!(all_jobs.lines().count() as u64, n(&merged["trials"]));
+    let status = Command::new("parallel")
+        .args(["--will-cite", "--halt", "now,fail=1", "-j", "2"])
+        .stdin(std::fs::File::open(&jobs).unwrap())
+        .status()
+        .expect("GNU parallel runs (`apt-get install -y parallel`)");
+    assert!(status.success(), "parallel ran the five seeds' jobs");
+    let pooled = scratch("pooled");
+    let mut a = vec!["experiment", "merge"];
+    let job_names: Vec<&str> = job_dirs.iter().map(|d| d.to_str().unwrap()).collect();
+    a.extend(&job_names);
+    a.extend(["--out", pooled.to_str().unwrap()]);
+    lucent(&a);
+    assert_eq!(
+        report(&merged_dir),
+        report(&pooled),
+        "one parallel run of the five seeds merges to the in-process runs' report"
+    );
+    for d in job_dirs.into_iter().chain([pooled]) {
+        let _ = std::fs::remove_dir_all(d);
     }
     // A run of another setup (here: more runs) is refused, with exit 65.
     let other = scratch("other");
@@ -426,7 +499,7 @@ fn a_merge_of_seeds_equals_the_sum_of_its_parts() {
     a.extend(["--out", o]);
     lucent(&a);
     let refused = Command::new(env!("CARGO_BIN_EXE_lucent"))
-        .args(["experiment", "merge", d0, o])
+        .args(["experiment", "merge", names[0], o])
         .output()
         .unwrap();
     assert_eq!(refused.status.code(), Some(65), "{refused:?}");

@@ -93,7 +93,17 @@ fn a_tiny_classification_experiment_reports_every_system() {
     for r in rows {
         let acc = r["accuracy"].as_f64().unwrap();
         assert!((0.0..=1.0).contains(&acc), "{r}");
+        // 95% intervals of accuracy, precision and recall over the 3 test scenes.
+        for i in r["intervals"].as_array().unwrap() {
+            let (lo, hi) = (i["lo"].as_f64().unwrap(), i["hi"].as_f64().unwrap());
+            assert!(0.0 <= lo && lo <= hi && hi <= 1.0, "{r}");
+        }
     }
+    // One learning run: no interval (the bootstrap needs two units).
+    assert_eq!(
+        v["learning"]["intervals"],
+        serde_json::json!([null, null, null, null])
+    );
     assert_eq!(v["learning"]["runs"], 1);
     assert_eq!(v["removals"].as_array().unwrap().len(), 6);
 }

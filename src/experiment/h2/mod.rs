@@ -387,6 +387,21 @@ pub fn plan_pair(
     learned: &[Statement],
     fixed: bool,
 ) -> Result<PairResult, TrialError> {
+    plan_pair_with(domain, name, scene, learned, fixed, None)
+}
+
+/// [`plan_pair`], and with `fixed_one = Some(k)` also the reading "one axiom missing" in the
+/// fixed mode at horizon [`FIXED_HORIZON`]: the `learner` profile plus the targets other than
+/// `TARGETS[k]` (one target per pair, as H4 draws it, since a fixed-horizon solve costs as much
+/// as the other conditions together).
+pub fn plan_pair_with(
+    domain: &Domain,
+    name: &str,
+    scene: &Scene,
+    learned: &[Statement],
+    fixed: bool,
+    fixed_one: Option<usize>,
+) -> Result<PairResult, TrialError> {
     let problem = domain.scene_problem(scene)?;
     let (plain, sources) = (problem.description(), problem.sources.clone());
     let one_missing: Vec<(Description, SourceMap)> = (0..TARGETS.len())
@@ -446,6 +461,12 @@ pub fn plan_pair(
         .iter()
         .map(|(d, s)| run_mode(d, s, &learner, Search::Incremental, &mut judge))
         .collect();
+    // Reading "one axiom missing" in the authors' fixed mode, for the drawn target only.
+    let fixed_one = fixed_one.filter(|&k| k < TARGETS.len()).map(|k| {
+        let (d, s) = &one_missing[k];
+        let m = run_mode(d, s, &learner, Search::Fixed(FIXED_HORIZON), &mut judge);
+        (TARGETS[k].to_string(), m)
+    });
     // Reading "horizon L* + 1": the authors' fixed mode at one step above the least plan, so
     // that a minimal plan and one step of detour are the only lengths.
     let least = judge.minimal.and_then(|(m, _)| m).map(|(l, _)| l);
@@ -471,15 +492,12 @@ pub fn plan_pair(
         with,
         without_one,
         fixed_near: fixed_near.unwrap_or_default(),
+        fixed_one,
     })
 }
 
 /// Runs one (scene, goal) pair.
-pub fn run_trial(
-    ctx: &Context,
-    trial: &Trial,
-    _seed: u64,
-) -> Result<serde_json::Value, TrialError> {
+pub fn run_trial(ctx: &Context, trial: &Trial, seed: u64) -> Result<serde_json::Value, TrialError> {
     let preset = preset_of(&trial.config)
         .ok_or_else(|| TrialError::Input(format!("unknown preset '{}'", trial.config)))?;
     let goals = ctx.setup.goals.max(1);
@@ -492,7 +510,11 @@ pub fn run_trial(
     let learned = super::h1::learned_statements(ctx, configuration % ctx.setup.runs)?;
     let scene = pair(preset, ctx.setup.seed, configuration, goal);
     let name = format!("<h2 {}>", trial.id());
-    let mut result = plan_pair(ctx.domain, &name, &scene, &learned, true)?;
+    // The target missing in the fixed-horizon "one missing" reading, drawn as H4 draws its own.
+    let k = SplitMix64::new(seed)
+        .fork(0x4f4e_4500)
+        .below(TARGETS.len() as u64) as usize;
+    let mut result = plan_pair_with(ctx.domain, &name, &scene, &learned, true, Some(k))?;
     result.configuration = configuration;
     result.goal = goal;
     serde_json::to_value(result).map_err(|e| TrialError::Store(e.to_string()))
@@ -567,6 +589,10 @@ pub struct PairResult {
     /// axioms; empty when L* is unknown or in results stored before.
     #[serde(default)]
     pub fixed_near: Vec<ModeResult>,
+    /// Reading "one axiom missing" in the fixed mode at horizon [`FIXED_HORIZON`]: the missing
+    /// target (drawn per trial from its seed) and the result; `None` in results stored before.
+    #[serde(default)]
+    pub fixed_one: Option<(String, ModeResult)>,
 }
 
 /// Table 2 for one preset and mode: ratios with/without, averaged over pairs.
