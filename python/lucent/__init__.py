@@ -13,6 +13,9 @@ Control's calls; this module shapes them as clingo's classes (``Control``, ``Sol
 ``SolveHandle``, ``SymbolicAtoms``, ``Backend``, ``configuration``, ``statistics``) and adds
 the robot's verbs ``plan`` and ``explain``, which return Python values.
 
+Applications (``Application``, ``clingo_main``) are in ``lucent.application``, clingo's
+submodules (``symbol``, ``control``, ``solving``, ``core``) beside it.
+
 Differences from clingo, by design or not yet done (docs/reference.md, "Python"): handles
 search on a thread of their own, lazily with ``yield_``, but without ``yield_``, ``async_`` hands the models to ``on_model`` on the thread that calls
 ``wait``/``get`` (clingo: on the search thread); propagators see a snapshot of the assignment
@@ -49,6 +52,14 @@ class TruthValue(_enum.Enum):
     False_ = False
     Free = None
     Release = "release"
+
+
+class ModelType(_enum.Enum):
+    """clingo's ``ModelType`` (a ``Control``'s models are stable models)."""
+
+    StableModel = 0
+    BraveConsequences = 1
+    CautiousConsequences = 2
 
 
 class SolveResult:
@@ -514,6 +525,11 @@ class Control:
     def load(self, path):
         self._c.load(str(path))
 
+    def get_const(self, name):
+        """The value of the constant ``name`` (``#const`` or ``-c``) as a ``Symbol``, or ``None``."""
+        return self._c.get_const(str(name))
+
+
     def ground(self, parts=(("base", ()),), context=None):
         """Grounds ``parts``; ``@f(...)`` calls ``context.f`` with ``Symbol`` arguments (it
         returns a ``Symbol`` or a list of them, as in clingo)."""
@@ -661,3 +677,10 @@ def explain(*files, question=None, happened=None, goal=None, why=None, why_not=N
     if code != 0 or not out.strip():
         raise RuntimeError((err or out).strip())
     return _json.loads(out.strip().splitlines()[-1])
+
+
+# clingo's submodules (``from clingo.symbol import Function``, ``from clingo.application
+# import Application, clingo_main``, ...) and the application interface at the top level, as
+# clingo has them.
+from . import application, control, core, solving, symbol  # noqa: E402,F401
+from .application import Application, ApplicationOptions, Flag, clingo_main  # noqa: E402,F401

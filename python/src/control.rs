@@ -157,6 +157,7 @@ impl Control {
     ) -> PyResult<SolveOut> {
         let options = self.begin(&assumptions)?;
         let names = &self.names;
+        let priorities = Arc::new(self.ctl.minimize_priorities());
         let mut failure: Option<PyErr> = None;
         let mut kept: Vec<Py<Model>> = Vec::new();
         let mut costs = Vec::new();
@@ -167,7 +168,7 @@ impl Control {
             if on_model.is_none() && !collect {
                 return true;
             }
-            let model = match Py::new(py, Model::new(m, names.clone())) {
+            let model = match Py::new(py, Model::new(m, names.clone(), priorities.clone())) {
                 Ok(model) => model,
                 Err(e) => {
                     failure = Some(e);
@@ -281,6 +282,11 @@ impl Control {
             .symbolic_atoms()
             .map(|a| (Symbol(a.symbol), a.atom, a.fact, a.external))
             .collect()
+    }
+
+    /// The value of the constant `name` (`#const` or `-c`), or `None` (clingo's `get_const`).
+    fn get_const(&self, name: &str) -> Option<Symbol> {
+        self.ctl.get_const(name).map(Symbol)
     }
 
     /// The atom of `symbol`: `(literal, is_fact, is_external)`, or `None`.
@@ -464,7 +470,9 @@ impl Control {
 
     /// A model of a handle's search as a Python `Model`.
     pub fn read_model(&self, raw: &lucent::solve::Model, names: &AtomNames) -> Model {
-        self.ctl.read_model(raw, |m| Model::new(m, names.clone()))
+        let priorities = Arc::new(self.ctl.minimize_priorities());
+        self.ctl
+            .read_model(raw, |m| Model::new(m, names.clone(), priorities))
     }
 
     /// The end of a handle's search: the solver back, the call recorded for the statistics.

@@ -9,7 +9,7 @@
 //! never changed, since an atom keeps its symbol), so a callback that only counts models (or
 //! reads the costs) does not pay for the whole answer set as symbols.
 
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use pyo3::prelude::*;
 
@@ -32,11 +32,16 @@ pub struct Model {
     shown: OnceLock<Vec<lucent::Symbol>>,
     /// Sorted, for `contains`.
     atoms: OnceLock<Vec<lucent::Symbol>>,
+    /// The priority of each cost level, highest first (clingo's `Model.priority`).
+    priorities: Arc<Vec<i64>>,
+    /// Symbols added by `extend` (printed after the model by `lucent.application`).
+    extended: Mutex<Vec<lucent::Symbol>>,
 }
 
 impl Model {
-    /// Copies the model the solver reports; `names` covers its atoms.
-    pub fn new(m: &lucent::Model<'_>, names: AtomNames) -> Model {
+    /// Copies the model the solver reports; `names` covers its atoms, `priorities` are the
+    /// program's minimize priorities, highest first.
+    pub fn new(m: &lucent::Model<'_>, names: AtomNames, priorities: Arc<Vec<i64>>) -> Model {
         Model {
             number: m.number(),
             costs: m.costs().to_vec(),
@@ -46,6 +51,8 @@ impl Model {
             shown_text: m.shown_text().to_vec(),
             shown: OnceLock::new(),
             atoms: OnceLock::new(),
+            priorities,
+            extended: Mutex::new(Vec::new()),
         }
     }
 
@@ -119,6 +126,56 @@ impl Model {
     #[getter]
     fn cost(&self) -> Vec<i64> {
         self.costs.clone()
+    }
+
+    /// The priority of each cost level, as `cost` (empty without optimization).
+    #[getter]
+    fn priority(&self) -> Vec<i64> {
+        if self.costs.is_empty() {
+            Vec::new()
+        } else {
+            self.priorities.to_vec()
+        }
+    }
+
+    /// Whether the program literal (an atom's literal from `symbolic_atoms`, negative for its
+    /// negation) is true in the model.
+    fn is_true(&self, literal: i64) -> bool {
+        let atom = literal.unsigned_abs();
+        let holds = u32::try_from(atom).is_ok_and(|a| self.atom_ids.binary_search(&a).is_ok());
+        holds == (literal > 0)
+    }
+
+    /// clingo's `Model.type`: always a stable model (a `Control` enumerates stable models; the
+    /// brave and cautious consequences of `--enum-mode` are the command line's).
+    #[getter]
+    fn r#type<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        py.import_bound("lucent")?
+            .getattr("ModelType")?
+            .getattr("StableModel")
+    }
+
+    /// Adds symbols to the model's output (clingo prints them after the model when an
+    /// application runs; `str(model)` and `symbols` do not change, as in clingo).
+    fn extend(&self, symbols: Vec<Bound<'_, PyAny>>) -> PyResult<()> {
+        let mut added = Vec::with_capacity(symbols.len());
+        for s in &symbols {
+            added.push(to_symbol(s)?);
+        }
+        self.extended
+            .lock()
+            .map_err(|_| pyo3::exceptions::PyRuntimeError::new_err("model lock poisoned"))?
+            .extend(added);
+        Ok(())
+    }
+
+    /// The symbols added by `extend`, in order (for `lucent.application`).
+    #[getter]
+    fn _extended(&self) -> Vec<Symbol> {
+        self.extended
+            .lock()
+            .map(|e| e.iter().cloned().map(Symbol).collect())
+            .unwrap_or_default()
     }
 
     /// The model's number in its solve call (from 1).

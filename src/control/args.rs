@@ -3,8 +3,12 @@
 //!
 //! Read: the model count (`N`, `-n N`, `-nN`, `--models=N`), constants (`-c name=value`,
 //! `--const`), `--opt-mode`, `--project[=mode]`, the thread count (`-t N`,
-//! `--parallel-mode=N[,mode]`) and `--heuristic`, each written `--opt=value` or `--opt value`;
-//! warning options (`-W`, `--warn`) are accepted and change nothing a Control reports.
+//! `--parallel-mode=N[,mode]`), `--heuristic`, `--opt-strategy`, `--seed` and `--rand-freq`,
+//! each written `--opt=value` or `--opt value`; warning options (`-W`, `--warn`), clingo's
+//! search presets (`--configuration`) and the switches `--stats`, `--restart-on-model`,
+//! `--keep-facts`, `--single-shot`, `--sat-prepro` are accepted and change nothing a Control
+//! reports (they tune clasp's search, which Lucent does not have, or its statistics, which a
+//! Control always keeps).
 //!
 //! Invariant: any other option, or a bad value, is an error naming it (clingo raises a
 //! `RuntimeError` for both); nothing is half-applied, the Control is made only from a
@@ -67,7 +71,7 @@ fn read(args: &[&str], config: &mut ControlConfig) -> Result<(), ArgsError> {
         } else {
             return Err(ArgsError(format!("unknown option: {a}")));
         };
-        const KNOWN: [&str; 7] = [
+        const KNOWN: [&str; 11] = [
             "models",
             "const",
             "opt-mode",
@@ -75,7 +79,23 @@ fn read(args: &[&str], config: &mut ControlConfig) -> Result<(), ArgsError> {
             "parallel-mode",
             "heuristic",
             "warn",
+            "opt-strategy",
+            "seed",
+            "rand-freq",
+            "configuration",
         ];
+        // Switches that change how fast, never what, a Control answers: accepted as clingo's
+        // Control accepts them (statistics are always kept; Lucent has one search setting).
+        const NO_EFFECT: [&str; 5] = [
+            "stats",
+            "restart-on-model",
+            "keep-facts",
+            "single-shot",
+            "sat-prepro",
+        ];
+        if NO_EFFECT.contains(&name) {
+            continue;
+        }
         if !KNOWN.contains(&name) {
             return Err(ArgsError(format!("unknown option: {a}")));
         }
@@ -120,6 +140,28 @@ fn read(args: &[&str], config: &mut ControlConfig) -> Result<(), ArgsError> {
                 config.solve.heuristic =
                     solve::Heuristic::from_name(value).ok_or_else(|| invalid(name, value))?;
             }
+            "opt-strategy" => {
+                config.solve.opt_strategy =
+                    solve::OptStrategy::from_name(value).ok_or_else(|| invalid(name, value))?;
+            }
+            "seed" => {
+                config.solve.seed = value.parse().map_err(|_| invalid(name, value))?;
+            }
+            "rand-freq" => match value.parse::<f64>() {
+                Ok(p) if (0.0..=1.0).contains(&p) => {
+                    config.solve.random_freq_permille = (p * 1000.0).round() as u32;
+                }
+                _ => return Err(invalid(name, value)),
+            },
+            // clingo's search presets; Lucent has one search setting, which answers the same.
+            "configuration" => {
+                const PRESETS: [&str; 8] = [
+                    "auto", "frumpy", "jumpy", "tweety", "handy", "crafty", "trendy", "many",
+                ];
+                if !PRESETS.contains(&value) {
+                    return Err(invalid(name, value));
+                }
+            }
             _ => {} // `warn`: accepted, nothing to change.
         }
     }
@@ -136,6 +178,13 @@ impl Control {
     /// let ctl = Control::from_args(&["0", "--opt-mode=optN", "-c", "k=2", "-t", "2"]).unwrap();
     /// assert_eq!(ctl.config().solve.models, 0);
     /// assert_eq!(ctl.config().solve.threads, 2);
+    /// // clingo's search options: those that change the search, and presets that only tune it
+    /// let ctl = Control::from_args(&["--opt-strategy=usc", "--seed=7", "--rand-freq=0.05",
+    ///                                "--configuration=trendy", "--stats"]).unwrap();
+    /// assert_eq!(ctl.config().solve.seed, 7);
+    /// assert_eq!(ctl.config().solve.random_freq_permille, 50);
+    /// assert!(Control::from_args(&["--configuration=fast"]).is_err());
+    /// assert!(Control::from_args(&["--rand-freq=2"]).is_err());
     /// assert!(Control::from_args(&["--no-such-option"]).is_err());
     /// assert!(Control::from_args(&["--models=x"]).is_err());
     /// ```

@@ -288,7 +288,7 @@ fn run(
     }
     let mut count = 0;
     let want_supports = solver.config_mut().supports;
-    let result = solver.for_each_model_lazy(&assumptions, &mut |m, prog| {
+    let mut result = solver.for_each_model_lazy(&assumptions, &mut |m, prog| {
         if cancelled.load(Ordering::Relaxed) {
             return false;
         }
@@ -306,6 +306,9 @@ fn run(
             !cancelled.load(Ordering::Relaxed)
         }
     });
+    if super::at_model_limit(&mut solver, count) {
+        result.exhausted = false;
+    }
     let core = if count == 0 {
         solver.core().map(<[i32]>::to_vec)
     } else {

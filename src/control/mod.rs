@@ -175,6 +175,17 @@ pub struct SolveOptions {
     pub assumptions: Vec<(Symbol, bool)>,
 }
 
+/// True when a call that reported `count` models stopped at its model limit: clingo's library
+/// then reports the call as not exhausted, even when the solver could tell that no model is left
+/// (clingo's command line prints `Models : 1` there; 5.8's `Control.solve` says not exhausted).
+/// Optimization counts its limit in optimal models, so it is left as the solver says.
+pub(crate) fn at_model_limit(solver: &mut solve::Solver, count: usize) -> bool {
+    let limit = solver.config_mut().models;
+    let optimizing = !solver.program().minimize.is_empty()
+        && solver.config_mut().opt_mode != solve::OptMode::Ignore;
+    limit > 0 && count >= limit && !optimizing
+}
+
 /// What a solve call answers besides its models.
 #[derive(Clone, Debug)]
 pub struct Summary {
@@ -571,6 +582,22 @@ impl Control {
                 .is_some_and(|s| !s.program().minimize.is_empty())
     }
 
+    /// The priorities of the minimize statements grounded or added so far, highest first: the
+    /// levels of a model's costs (clingo's `Model.priority`).
+    pub fn minimize_priorities(&self) -> Vec<i64> {
+        let solved = self.solver.as_ref().map(|s| &s.program().minimize);
+        let mut levels: Vec<i64> = self
+            .pending
+            .minimize
+            .iter()
+            .chain(solved.into_iter().flatten())
+            .map(|m| m.priority)
+            .collect();
+        levels.sort_unstable_by(|a, b| b.cmp(a));
+        levels.dedup();
+        levels
+    }
+
     /// Number of atoms so far.
     pub fn num_atoms(&self) -> u32 {
         self.atom_sym.len() as u32
@@ -705,9 +732,10 @@ impl Control {
                 flag.store(false, std::sync::atomic::Ordering::Relaxed);
             }
         }
+        let at_limit = at_model_limit(solver, count);
         Summary {
             outcome: result.outcome,
-            exhausted: result.exhausted,
+            exhausted: result.exhausted && !at_limit,
             optimum_proven: result.optimum_proven,
             stop: result.stop,
             stats: result.stats,

@@ -261,3 +261,37 @@ fn symbolic_atoms_by_signature() {
         .collect();
     assert_eq!(sigs, want);
 }
+
+/// A call that stops at its model limit is not exhausted, as clingo 5.8's library says even
+/// when no model is left; below the limit (or with no limit) it is. Recorded with clingo 5.8.3:
+/// `python3 -c "import clingo; c = clingo.Control(['1']); c.add('base', [], 'a.');
+/// c.ground([('base', [])]); print(c.solve().exhausted)"` prints False (True with `['0']` and
+/// with `['2']`; `{a}.` under `['2']`: False), and the same through `solve(yield_=True)`.
+#[test]
+fn a_call_stopped_at_its_model_limit_is_not_exhausted() {
+    use lucent::control::HandleMode;
+    for (program, limit, exhausted) in [
+        ("a.", 1, false),
+        ("a.", 0, true),
+        ("a.", 2, true),
+        ("{a}.", 2, false),
+        ("{a}.", 3, true),
+    ] {
+        let mut ctl = Control::new(ControlConfig::default());
+        ctl.add("base", &[], program).unwrap();
+        ctl.ground(&[Part::base()]).unwrap();
+        ctl.solve_config_mut().models = limit;
+        let summary = ctl.solve(&Default::default(), |_| true);
+        assert_eq!(summary.exhausted, exhausted, "{program} with limit {limit}");
+        // the default mode is clingo's `yield_=True`
+        let mut handle = ctl.solve_handle(&Default::default(), HandleMode::default());
+        while handle.model().is_some() {
+            handle.resume();
+        }
+        let summary = handle.get();
+        assert_eq!(
+            summary.exhausted, exhausted,
+            "{program} with limit {limit} (handle)"
+        );
+    }
+}

@@ -1,0 +1,3 @@
+"""clingo's ``clingo.control``: the ``Control`` class (the same as ``lucent.Control``)."""
+
+from . import Control  # noqa: F401

@@ -1,0 +1,3 @@
+"""clingo's ``clingo.core``: ``TruthValue`` (the same as ``lucent.TruthValue``)."""
+
+from . import TruthValue  # noqa: F401
