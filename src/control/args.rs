@@ -240,7 +240,7 @@ mod tests {
     #[test]
     fn bad_options_are_errors() {
         for (args, message) in [
-            (&["--stats"][..], "unknown option: --stats"),
+            (&["--frobnicate"][..], "unknown option: --frobnicate"),
             (&["-x"], "unknown option: -x"),
             (&["file.lp"], "unknown option: file.lp"),
             (&["-n"], "option --models needs a value"),

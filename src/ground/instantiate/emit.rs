@@ -205,13 +205,17 @@ impl Grounder<'_> {
         let mut extra_choices: Vec<(GroundAtom, Vec<Lit>)> = Vec::new();
         let mut elems: Vec<ElemInstance> = Vec::new();
         let is_choice = matches!(stmt.head, NHead::Choice(_));
+        // The tuples of a gated choice's elements (see `HeadGate`); `None` when one cannot be
+        // read, and the instance is then not gated.
+        let mut gate_tuples: Option<Vec<Vec<SymId>>> = stmt.gate.as_ref().map(|_| Vec::new());
         match &stmt.head {
             NHead::None => {}
             NHead::Disj(es) | NHead::Choice(es) => {
                 // An undefined head atom (`p(a+0)`) drops its element from a choice, and the
                 // whole rule from a disjunction, conditional elements included (clingo 5.8).
-                for e in es {
+                for (i, e) in es.iter().enumerate() {
                     if !e.conj.is_empty() {
+                        gate_tuples = None;
                         if !self.conj_elems(e, ctx, &mut elems) {
                             return;
                         }
@@ -219,7 +223,15 @@ impl Grounder<'_> {
                     }
                     if e.cond.is_empty() {
                         match self.atom_sym(&e.atom, &ctx.binding) {
-                            Some(s) => head.push(self.atom_of(s, e.atom.pred).get()),
+                            Some(s) => {
+                                if let Some(ts) = &mut gate_tuples {
+                                    let gate = stmt.gate.as_deref().expect("a gate");
+                                    if let Some(t) = self.gate_tuple(gate, i, s, &ctx.binding) {
+                                        ts.push(t);
+                                    }
+                                }
+                                head.push(self.atom_of(s, e.atom.pred).get())
+                            }
                             None if is_choice => {}
                             None => return,
                         }
@@ -228,10 +240,18 @@ impl Grounder<'_> {
                     let blen = ctx.body.len();
                     let mut found: Vec<(SymId, Vec<Lit>)> = Vec::new();
                     let mut undefined = false;
+                    let gate = stmt.gate.as_deref();
                     self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| match g
                         .atom_sym(&e.atom, &ctx.binding)
                     {
-                        Some(s) => found.push((s, ctx.body[blen..].to_vec())),
+                        Some(s) => {
+                            if let (Some(ts), Some(gate)) = (&mut gate_tuples, gate) {
+                                if let Some(t) = g.gate_tuple(gate, i, s, &ctx.binding) {
+                                    ts.push(t);
+                                }
+                            }
+                            found.push((s, ctx.body[blen..].to_vec()))
+                        }
                         None => undefined = true,
                     });
                     ctx.body.truncate(blen);
@@ -259,6 +279,11 @@ impl Grounder<'_> {
                         }
                     }
                 }
+            }
+        }
+        if let (Some(gate), Some(tuples)) = (stmt.gate.as_deref(), gate_tuples) {
+            if !self.gate_reachable(gate, tuples, &ctx.binding) {
+                return;
             }
         }
         head.dedup();
@@ -365,6 +390,74 @@ impl Grounder<'_> {
             },
             |g| g.origin(stmt, ctx),
         );
+    }
+
+    /// The tuple of element `i` of a gated choice whose atom is `atom` (its atom for a choice
+    /// rule, its terms for a head aggregate); `None` when a term is undefined.
+    fn gate_tuple(
+        &mut self,
+        gate: &HeadGate,
+        i: usize,
+        atom: SymId,
+        binding: &Binding,
+    ) -> Option<Vec<SymId>> {
+        match &gate.tuples {
+            None => Some(vec![atom]),
+            Some(ts) => ts.get(i)?.iter().map(|t| self.eval(t, binding)).collect(),
+        }
+    }
+
+    /// Whether the elements grounded so far (`tuples`, repeats counted once) can reach the
+    /// bounds of a gated choice: some value between their least and greatest count or sum
+    /// satisfies every guard (gringo grounds the atoms of a head aggregate only then). A guard
+    /// that is not an integer leaves the instance ungated.
+    fn gate_reachable(
+        &mut self,
+        gate: &HeadGate,
+        mut tuples: Vec<Vec<SymId>>,
+        b: &Binding,
+    ) -> bool {
+        tuples.sort_unstable();
+        tuples.dedup();
+        let (mut lo, mut hi) = (0i64, 0i64);
+        for t in &tuples {
+            let w = if gate.sum {
+                // A weight that is not an integer drops its element (as in a body `#sum`).
+                match t.first().and_then(|&w| self.syms.num(w)) {
+                    Some(w) => w as i64,
+                    None => continue,
+                }
+            } else {
+                1
+            };
+            if w < 0 {
+                lo += w;
+            } else {
+                hi += w;
+            }
+        }
+        for (op, term) in &gate.guards {
+            let Some(k) = self.eval(term, b).and_then(|v| self.syms.num(v)) else {
+                return true;
+            };
+            let k = k as i64;
+            match op {
+                CmpOp::Lt => hi = hi.min(k - 1),
+                CmpOp::Le => hi = hi.min(k),
+                CmpOp::Gt => lo = lo.max(k + 1),
+                CmpOp::Ge => lo = lo.max(k),
+                CmpOp::Eq => {
+                    lo = lo.max(k);
+                    hi = hi.min(k);
+                }
+                CmpOp::Ne => {
+                    if lo == k && hi == k {
+                        return false;
+                    }
+                }
+            }
+        }
+        lo <= hi
     }
 
     /// A new application atom for the instance of CR rule `stmt` with the global values `key`:

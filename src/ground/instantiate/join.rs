@@ -310,10 +310,17 @@ impl<'a> Grounder<'a> {
                 }
             }
             NLit::Agg(agg)
-                if self.optimistic && agg.binder.is_none() && self.reads_incomplete(agg) =>
+                if self.optimistic
+                    && agg.sign != Sign::Positive
+                    && agg.binder.is_none()
+                    && self.reads_incomplete(agg) =>
             {
-                // Computing the domain of a component with recursive aggregates: assume the
-                // aggregate can hold, so no atom is missed; the final round evaluates it.
+                // Computing the domain of a component with recursive aggregates: a negated one
+                // is assumed to hold, so no atom is missed (the final round evaluates it). A
+                // positive one is evaluated over the atoms found so far, as gringo does: its
+                // rule is grounded once the aggregate can hold, so `p :- #count { 1 : p } >= 1.`
+                // never makes `p` possible (and a bounded choice whose elements depend on its
+                // own atoms stays as small as gringo's; see `HeadGate`).
                 self.join(ctx, lits, i + 1, ranges, k);
             }
             NLit::Agg(agg) if agg.theory.is_some() => {

@@ -58,7 +58,7 @@ use super::program::{
     HeuristicModifier, Lit, Origin, RemovedLit, Rule, RuleOrigin, RuleRef, Rules, Weight,
 };
 use super::rewrite::{
-    lit_vars, Compiled, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
+    lit_vars, Compiled, HeadGate, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
 };
 use super::symbol::{SymData, SymId, Symbols};
 use super::term::{Binding, NTerm, TermVars, VarSet};

@@ -275,6 +275,27 @@ pub struct NStmt {
     /// Set when the rewriting made this statement as part of statement `stmt`'s translation
     /// (the constraint of a choice's bounds, a projection rule): its rules are auxiliaries.
     pub aux: Option<AuxKind>,
+    /// For the choice of a bounded choice rule or a `#count`/`#sum` head aggregate: its bounds,
+    /// which an instance must be able to reach before it is grounded (see [`HeadGate`]).
+    pub gate: Option<Box<HeadGate>>,
+}
+
+/// The bounds of a choice rule `l { e } u` or head aggregate `l #f { t : a : c } u`, kept with
+/// its unbounded choice. As gringo grounds them, an instance makes its atoms possible only once
+/// the elements grounded so far can reach the bounds (the greatest possible count or sum is at
+/// least the lower bound, the least at most the upper one). This matters when an element's
+/// condition depends on the aggregate's own atoms: `2 { p; q(X) : s(X) } 2. s(1) :- p.` has no
+/// answer set under clingo, since `p` alone cannot reach 2, so `p` never becomes possible and
+/// neither does `s(1)`; the program's answer set {p, s(1), q(1)} is never grounded.
+#[derive(Clone, Debug)]
+pub struct HeadGate {
+    /// `#sum` (or `#sum+`) rather than `#count`.
+    pub sum: bool,
+    /// The guards, read as `aggregate op term`.
+    pub guards: Vec<(CmpOp, NTerm)>,
+    /// The tuple of each head element (parallel to the choice's elements; its first term is
+    /// the weight of a `#sum`); `None` for a choice rule, whose tuples are its atoms.
+    pub tuples: Option<Vec<Vec<NTerm>>>,
 }
 
 /// `#show` configuration.
@@ -327,6 +348,8 @@ pub struct Rewriter<'a> {
     projections: u32,
     /// Set while rewriting a statement made for another one's translation.
     aux_role: Option<AuxKind>,
+    /// The gate of the choice statement being finished (set just before `finish`).
+    gate: Option<HeadGate>,
     /// A grounding context supplies external functions: `@f(...)` becomes a call literal
     /// (without one it is reported).
     pub calls: bool,
@@ -453,6 +476,15 @@ fn lower_upper(lower: &Option<ast::Guard>, upper: &Option<ast::Guard>) -> bool {
     lower.is_some() || upper.is_some()
 }
 
+/// The guards of a head's bounds, each with `true` for the left (lower) one.
+fn bounds<'g>(
+    lower: &'g Option<ast::Guard>,
+    upper: &'g Option<ast::Guard>,
+) -> Vec<(&'g ast::Guard, bool)> {
+    let left = lower.iter().map(|g| (g, true));
+    left.chain(upper.iter().map(|g| (g, false))).collect()
+}
+
 impl<'a> Rewriter<'a> {
     /// A rewriter writing into `syms` and `diags`.
     pub fn new(
@@ -471,6 +503,7 @@ impl<'a> Rewriter<'a> {
             sorts: Vec::new(),
             current: (0, Span::default()),
             aux_role: None,
+            gate: None,
             calls: false,
             host: None,
             projections: 0,

@@ -114,6 +114,8 @@ impl Rewriter<'_> {
         };
         let head_ast = head;
         let mut kind = kind;
+        // The gate of a bounded choice or head aggregate: `Some(None)` for a choice rule's.
+        let mut gate_tuples: Option<Option<Vec<Vec<NTerm>>>> = None;
         let head = match head {
             ast::Head::None => NHead::None,
             ast::Head::Theory(a) => {
@@ -221,6 +223,7 @@ impl Rewriter<'_> {
                     es.push(e);
                 }
                 if lower_upper(&c.lower, &c.upper) {
+                    gate_tuples = Some(None);
                     // l { e } u :- B.  ==  { e } :- B.  and  :- B, not l #count{ e } u.
                     let agg = ast::BodyAggregate {
                         span: c.span,
@@ -236,7 +239,10 @@ impl Rewriter<'_> {
             }
             ast::Head::Aggregate(h) => {
                 match self.aggregate_head(index, span, body, h, &mut vars, &mut extra) {
-                    Some(head) => head,
+                    Some((head, tuples)) => {
+                        gate_tuples = tuples.map(Some);
+                        head
+                    }
                     None => return,
                 }
             }
@@ -246,13 +252,22 @@ impl Rewriter<'_> {
         }
         // A choice whose bounds are undefined (say `X+1` with X=a) is dropped with them: the
         // bounds are evaluated in its body as `t = t`.
-        let guards: Vec<&ast::Guard> = match head_ast {
-            ast::Head::Choice(c) => c.lower.iter().chain(c.upper.iter()).collect(),
-            ast::Head::Aggregate(h) => h.lower.iter().chain(h.upper.iter()).collect(),
-            _ => Vec::new(),
+        let (guards, sum): (Vec<(&ast::Guard, bool)>, bool) = match head_ast {
+            ast::Head::Choice(c) => (bounds(&c.lower, &c.upper), false),
+            ast::Head::Aggregate(h) => (
+                bounds(&h.lower, &h.upper),
+                matches!(
+                    h.function,
+                    AggregateFunction::Sum | AggregateFunction::SumPlus
+                ),
+            ),
+            _ => (Vec::new(), false),
         };
-        for g in guards {
+        let mut gate_guards = Vec::new();
+        for (g, left) in guards {
             if let Some(t) = self.term(&g.term, &mut vars, &mut extra) {
+                let op = if left { flip_cmp(g.op) } else { g.op };
+                gate_guards.push((op, t.clone()));
                 if !matches!(t, NTerm::Sym(_)) {
                     out.push(NLit::Cmp {
                         op: CmpOp::Eq,
@@ -262,12 +277,19 @@ impl Rewriter<'_> {
                 }
             }
         }
+        self.gate = gate_tuples.map(|tuples| HeadGate {
+            sum,
+            guards: gate_guards,
+            tuples,
+        });
         out.append(&mut extra);
         self.finish(index, span, head, out, kind, vars);
     }
 
-    /// The head of a head aggregate instance, with the constraint that checks its bounds;
-    /// `None`: an element is undefined, and the rule instance is dropped.
+    /// The head of a head aggregate instance, with the constraint that checks its bounds, and
+    /// the tuple of each head element when the aggregate is a `#count` or `#sum` with bounds
+    /// and every tuple term is a plain term (see [`HeadGate`]); `None`: an element is
+    /// undefined, and the rule instance is dropped.
     fn aggregate_head(
         &mut self,
         index: u32,
@@ -276,9 +298,17 @@ impl Rewriter<'_> {
         h: &ast::HeadAggregate,
         vars: &mut Vars,
         extra: &mut Vec<NLit>,
-    ) -> Option<NHead> {
+    ) -> Option<(NHead, Option<Vec<Vec<NTerm>>>)> {
+        let gated = lower_upper(&h.lower, &h.upper)
+            && matches!(
+                h.function,
+                AggregateFunction::Count | AggregateFunction::Sum | AggregateFunction::SumPlus
+            );
+        let mut tuples = gated.then(Vec::new);
         // l #f { w,t : a : c } u :- B.  ==  { a : c } :- B.  and
-        // :- B, not l #f { w,t,a : a, c } u.
+        // :- B, not l #f { w,t : a, c } u.
+        // The tuple alone identifies an element, as in clingo 5.8: `2 #count { 1: p; 1: q }.`
+        // has no answer set (both atoms true still count the one tuple `1`).
         let mut es = Vec::new();
         let mut elements = Vec::new();
         for e in &h.elements {
@@ -293,16 +323,25 @@ impl Rewriter<'_> {
                 if !self.tuple_checks(h.function, &e.terms, vars, &mut n.cond) {
                     continue;
                 }
+                if let Some(ts) = &mut tuples {
+                    let mut scratch = Vec::new();
+                    let lowered: Option<Vec<NTerm>> = e
+                        .terms
+                        .iter()
+                        .map(|t| self.term(t, vars, &mut scratch))
+                        .collect();
+                    match lowered {
+                        // An interval in a tuple binds a variable of its own: no gate.
+                        Some(lowered) if scratch.is_empty() => ts.push(lowered),
+                        _ => tuples = None,
+                    }
+                }
                 es.push(n);
                 let mut condition = vec![ce.literal.clone()];
                 condition.extend(ce.condition.iter().cloned());
-                let mut terms = e.terms.clone();
-                if let ast::Atom::Symbolic(sa) = &ce.literal.atom {
-                    terms.push(atom_as_term(sa));
-                }
                 elements.push(ast::BodyAggregateElement {
                     span: e.span,
-                    terms,
+                    terms: e.terms.clone(),
                     condition,
                 });
             }
@@ -318,7 +357,7 @@ impl Rewriter<'_> {
             };
             self.bound_check(index, span, body, agg);
         }
-        Some(NHead::Choice(es))
+        Some((NHead::Choice(es), tuples))
     }
 
     /// Emits the constraint `:- B, not AGG.` that checks a choice or head aggregate's bounds,
@@ -487,6 +526,7 @@ impl Rewriter<'_> {
             var_names,
             globals,
             aux: self.aux_role,
+            gate: self.gate.take().map(Box::new),
         });
     }
 }
