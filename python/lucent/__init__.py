@@ -14,13 +14,13 @@ Control's calls; this module shapes them as clingo's classes (``Control``, ``Sol
 the robot's verbs ``plan`` and ``explain``, which return Python values.
 
 Applications (``Application``, ``clingo_main``) are in ``lucent.application``, clingo's
-submodules (``symbol``, ``control``, ``solving``, ``core``) beside it.
+submodules (``symbol``, ``control``, ``solving``, ``core``, ``theory_atoms``) beside it.
 
 Differences from clingo, by design or not yet done (docs/reference.md, "Python"): handles
 search on a thread of their own, lazily with ``yield_``, but without ``yield_``, ``async_`` hands the models to ``on_model`` on the thread that calls
 ``wait``/``get`` (clingo: on the search thread); propagators see a snapshot of the assignment
-per callback and cannot ``add_literal``; theory atoms and ``on_unsat`` are not supported
-(``on_unsat`` is accepted and never called); atoms added through the backend are not seen by
+per callback and cannot ``add_literal``; a theory element whose condition has several
+literals has no ``condition_id``; ``on_unsat`` is accepted and never called; atoms added through the backend are not seen by
 later groundings.
 """
 
@@ -409,10 +409,19 @@ class _Assignment:
 
 
 class _AtomList:
-    """``init.symbolic_atoms``: iteration and ``by_signature``."""
+    """``init.symbolic_atoms``: iteration, lookup by symbol and ``by_signature``."""
 
     def __init__(self, atoms):
         self._atoms = atoms
+        self._by_symbol = None
+
+    def __getitem__(self, symbol):
+        if self._by_symbol is None:
+            self._by_symbol = {a.symbol: a for a in self._atoms}
+        return self._by_symbol.get(symbol)
+
+    def __contains__(self, symbol):
+        return self[symbol] is not None
 
     def __iter__(self):
         return iter(self._atoms)
@@ -424,11 +433,122 @@ class _AtomList:
         return iter([a for a in self._atoms if a.symbol.match(name, arity, positive)])
 
 
+class TheoryTermType(_enum.IntEnum):
+    """clingo's ``TheoryTermType``, with clingo 5.8's numbers."""
+
+    Tuple = 0
+    List = 1
+    Set = 2
+    Function = 3
+    Number = 4
+    Symbol = 5
+
+
+_BRACKETS = {TheoryTermType.Tuple: "()", TheoryTermType.List: "[]", TheoryTermType.Set: "{}"}
+_OPERATOR = set("-+*/\\^?&|<=>@!~")
+
+
+class TheoryTerm:
+    """clingo's ``TheoryTerm``: ``type``, ``name``, ``number``, ``arguments``; printed as clingo
+    prints it."""
+
+    def __init__(self, type_, name, number, arguments):
+        self.type = TheoryTermType(type_)
+        self.name = name
+        self.number = number
+        self.arguments = arguments
+
+    @staticmethod
+    def _read(nodes, i=0):
+        type_, name, number, arity = nodes[i]
+        i += 1
+        args = []
+        for _ in range(arity):
+            arg, i = TheoryTerm._read(nodes, i)
+            args.append(arg)
+        return TheoryTerm(type_, name, number, args), i
+
+    def _key(self):
+        return (int(self.type), self.name, self.number, [a._key() for a in self.arguments])
+
+    def __eq__(self, other):
+        return isinstance(other, TheoryTerm) and self._key() == other._key()
+
+    def __lt__(self, other):
+        return self._key() < other._key()
+
+    def __hash__(self):
+        return hash(str(self))
+
+    def __str__(self):
+        if self.type == TheoryTermType.Number:
+            return str(self.number)
+        if self.type == TheoryTermType.Symbol:
+            return self.name
+        args = ",".join(str(a) for a in self.arguments)
+        if self.type == TheoryTermType.Function:
+            op = self.name and all(c in _OPERATOR for c in self.name)
+            if op and len(self.arguments) == 1:
+                return f"({self.name}{self.arguments[0]})"
+            if op and len(self.arguments) == 2:
+                return f"({self.arguments[0]}{self.name}{self.arguments[1]})"
+            return f"{self.name}({args})"
+        left, right = _BRACKETS[self.type]
+        if self.type == TheoryTermType.Tuple and len(self.arguments) == 1:
+            args += ","
+        return f"{left}{args}{right}"
+
+    def __repr__(self):
+        return f"TheoryTerm({self})"
+
+
+class TheoryElement:
+    """clingo's ``TheoryElement``: ``terms``, ``condition`` (program literals) and
+    ``condition_id`` (the literal of a one-literal condition, 0 for an empty one; ``None`` for a
+    condition of several literals, which Lucent does not name by one literal)."""
+
+    def __init__(self, terms, condition, text):
+        self.terms = [TheoryTerm._read(t)[0] for t in terms]
+        self.condition = list(condition)
+        self._text = text
+        if not self.condition:
+            self.condition_id = 0
+        elif len(self.condition) == 1:
+            self.condition_id = self.condition[0]
+        else:
+            self.condition_id = None
+
+    def __str__(self):
+        return self._text
+
+    def __repr__(self):
+        return f"TheoryElement({self._text})"
+
+
+class TheoryAtom:
+    """clingo's ``TheoryAtom``: ``term``, ``elements``, ``guard`` (``(operator, TheoryTerm)`` or
+    ``None``) and ``literal`` (its program atom; 0 for a directive); ``str`` as clingo 5.8."""
+
+    def __init__(self, literal, term, elements, guard, text):
+        self.literal = literal
+        self.term = TheoryTerm._read(term)[0]
+        self.elements = [TheoryElement(*e) for e in elements]
+        self.guard = None if guard is None else (guard[0], TheoryTerm._read(guard[1])[0])
+        self._text = text
+
+    def __str__(self):
+        return self._text
+
+    def __repr__(self):
+        return f"TheoryAtom({self._text})"
+
+
 class _PropagateInit:
     """clingo's ``PropagateInit``; watches and clauses act when ``init`` returns."""
 
-    def __init__(self, atoms, threads, values):
+    def __init__(self, atoms, threads, values, theory_atoms=()):
         self._lit = {a: lit for (_, a, _, _, lit) in atoms}
+        self.theory_atoms = list(theory_atoms)
         self.symbolic_atoms = _AtomList([SymbolicAtom(s, a, f, e) for (s, a, f, e, _) in atoms])
         self.number_of_threads = threads
         self.assignment = _Assignment(values, 0, False)
@@ -437,6 +557,8 @@ class _PropagateInit:
         self._clauses = []
 
     def solver_literal(self, literal):
+        if literal < 0:
+            return -self._lit[-literal]
         return self._lit[literal]
 
     def add_watch(self, literal, thread_id=None):
@@ -479,9 +601,11 @@ class _PropagatorAdapter:
 
     def __init__(self, propagator):
         self._p = propagator
+        # The Control's theory atoms when the solve call started (set by Control.solve).
+        self._theory = ()
 
     def _init(self, atoms, threads, values):
-        init = _PropagateInit(atoms, threads, values)
+        init = _PropagateInit(atoms, threads, values, self._theory)
         if hasattr(self._p, "init"):
             self._p.init(init)
         return init._watches, init._clauses, int(init.check_mode)
@@ -515,6 +639,7 @@ class Control:
         self._user = None
         self.configuration = Configuration(self._c)
         object.__setattr__(self.configuration.solve, "_opt_mode", self._c.opt_mode)
+        self._adapters = []
 
     def add(self, name, parameters=None, program=None):
         """``add(name, parameters, program)`` or clingo 5.8's ``add(program)`` (to ``base``)."""
@@ -547,6 +672,7 @@ class Control:
         yield_=False,
         async_=False,
     ):
+        self._theory_for_propagators()
         if yield_ or async_:
             native = self._c.solve_handle(list(assumptions), bool(yield_), bool(async_))
             # clingo 5.8 does not call on_core for a handle.
@@ -585,7 +711,21 @@ class Control:
         """clingo's ``register_propagator``: ``init``, ``propagate``, ``undo``, ``check``
         (total assignments) as clingo calls them; inside one callback the assignment is the
         one the callback started with (see python/src/propagator.rs)."""
-        self._c.register_propagator(_PropagatorAdapter(propagator))
+        adapter = _PropagatorAdapter(propagator)
+        self._adapters.append(adapter)
+        self._c.register_propagator(adapter)
+
+    @property
+    def theory_atoms(self):
+        """The ground theory atoms of everything grounded so far (clingo's ``theory_atoms``)."""
+        return [TheoryAtom(*a) for a in self._c.theory_atoms()]
+
+    def _theory_for_propagators(self):
+        """Hands the propagators the theory atoms their ``init`` will see."""
+        if self._adapters:
+            atoms = self.theory_atoms
+            for adapter in self._adapters:
+                adapter._theory = atoms
 
     @property
     def symbolic_atoms(self):
@@ -682,5 +822,5 @@ def explain(*files, question=None, happened=None, goal=None, why=None, why_not=N
 # clingo's submodules (``from clingo.symbol import Function``, ``from clingo.application
 # import Application, clingo_main``, ...) and the application interface at the top level, as
 # clingo has them.
-from . import application, control, core, solving, symbol  # noqa: E402,F401
+from . import application, control, core, solving, symbol, theory_atoms  # noqa: E402,F401
 from .application import Application, ApplicationOptions, Flag, clingo_main  # noqa: E402,F401

@@ -284,6 +284,15 @@ impl Control {
             .collect()
     }
 
+    /// The ground theory atoms, as data (see `theory.rs`).
+    fn theory_atoms(&self) -> Vec<crate::theory::Atom> {
+        self.ctl
+            .theory_atoms()
+            .iter()
+            .map(|a| crate::theory::atom(&self.ctl, a))
+            .collect()
+    }
+
     /// The value of the constant `name` (`#const` or `-c`), or `None` (clingo's `get_const`).
     fn get_const(&self, name: &str) -> Option<Symbol> {
         self.ctl.get_const(name).map(Symbol)

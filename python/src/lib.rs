@@ -1,6 +1,7 @@
 //! `lucent._lucent`, the native module of the `lucent` Python package (issue 33 item 2): the
 //! `Symbol` type and constructors (`symbol.rs`), answer sets (`model.rs`), the native Control
-//! with its backend calls (`control.rs`), solve handles (`handle.rs`), Python propagators (`propagator.rs`) and the command line in memory for the robot verbs
+//! with its backend calls (`control.rs`), solve handles (`handle.rs`), Python propagators (`propagator.rs`), theory atoms
+//! (`theory.rs`) and the command line in memory for the robot verbs
 //! (`run_cli`). python/lucent/__init__.py builds clingo's API on top.
 //!
 //! Invariant: nothing here prints or panics on bad input; errors are Python exceptions.
@@ -16,6 +17,7 @@ mod handle;
 mod model;
 mod propagator;
 mod symbol;
+mod theory;
 
 /// Runs `lucent ARGS...` in memory: `(exit code, standard output, standard error)`. The robot
 /// verbs (`plan`, `explain`) are read from its `--outf=2` JSON by the Python layer.
