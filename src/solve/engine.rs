@@ -49,6 +49,7 @@ pub use share::Hub;
 
 use super::config::{Config, Deletion, ReduceSchedule};
 use super::lit::{Lit, Var};
+use super::stability::Stability;
 use super::unfounded::Unfounded;
 use loops::{is_loop_watch, Loops, LOOP_TAG};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -346,6 +347,9 @@ struct UfState {
     uf_clean_upto: usize,
     /// Set when the propagator was (re)installed and the assignment was never checked.
     uf_dirty: bool,
+    /// The stability check of the non-head-cycle-free components (install with
+    /// `set_stability`), run at fixpoints after the unfounded-set propagator.
+    stability: Option<Box<Stability>>,
 }
 
 /// Restarts, learnt-clause reductions and level-0 simplifications: when each is due next.
@@ -587,6 +591,7 @@ impl Engine {
                 uf_relevant: Vec::new(),
                 uf_clean_upto: 0,
                 uf_dirty: true,
+                stability: None,
             },
             sched: Schedule {
                 restarts: Restarts::Glucose {
@@ -842,6 +847,26 @@ impl Engine {
         self.uf.uf_dirty = true;
     }
 
+    /// Installs (or removes) the stability check of non-head-cycle-free components; it counts
+    /// the whole trail at the next propagation.
+    pub fn set_stability(&mut self, st: Option<Stability>) {
+        self.uf.stability = st.map(Box::new);
+    }
+
+    /// Whether the stability check passed for every component on the current assignment
+    /// (true when none is installed).
+    pub fn stability_verified(&self) -> bool {
+        self.uf.stability.as_ref().is_none_or(|s| s.all_verified())
+    }
+
+    /// Component stability checks run, and how many found an unfounded set.
+    pub fn stability_checks(&self) -> (u64, u64) {
+        self.uf
+            .stability
+            .as_ref()
+            .map_or((0, 0), |s| (s.checks, s.found))
+    }
+
     /// Whether an unfounded-set propagator is installed (the program is not tight).
     pub fn has_unfounded(&self) -> bool {
         self.uf.unfounded.is_some()
@@ -927,6 +952,9 @@ impl Engine {
         let start = self.asg.trail_lim[level as usize];
         if self.ext.is_some() {
             self.undo_external(start);
+        }
+        if let Some(st) = &mut self.uf.stability {
+            st.undo(&self.asg.trail[start..], start);
         }
         let save = self.decision_level() - level > self.settings.save_progress;
         for i in (start..self.asg.trail.len()).rev() {

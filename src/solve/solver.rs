@@ -5,7 +5,7 @@
 //!
 //! This file holds the solver's state, construction, multi-shot steps, externals and the solve
 //! calls; `portfolio` runs them on several threads; `search` has the primitives (next answer set, models,
-//! blocking, cost bounds), `minimal` the minimality check, `strategies` enumeration, optimization and consequences, `cr` the
+//! blocking, cost bounds), `minimal` the whole-program minimality check (fallback of `solve::stability`), `strategies` enumeration, optimization and consequences, `cr` the
 //! CR-Prolog semantics.
 //!
 //! Invariants:
@@ -766,7 +766,7 @@ impl Solver {
 
     /// Number of minimality checks done for non-head-cycle-free programs.
     pub fn minimality_checks(&self) -> u64 {
-        self.minimality_checks
+        self.minimality_checks + self.engine.stability_checks().0
     }
 
     /// A fresh guard literal (never decided; assumed while its constraints hold).

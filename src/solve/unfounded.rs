@@ -38,8 +38,8 @@
 //!   every check until they get one or are false at level 0.
 //! - Loop nogoods stay valid in later steps of a multi-shot program: the rules of an atom are
 //!   all given in one step, so the external supports of a set of defined atoms never change.
-//! - For non-head-cycle-free programs supports use the rule body only (a weaker but sound
-//!   nogood); minimality is then checked separately.
+//! - In a component where a disjunctive rule has two head atoms (not head-cycle-free) supports
+//!   use the rule body only (a weaker but sound nogood); `stability` checks those components.
 //!
 //! Cost: a check with no invalidated source touches only the watch lists of the newly false
 //! literals. Weight bodies in recursive components are handled natively (no fallback).

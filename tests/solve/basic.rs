@@ -612,3 +612,41 @@ fn a_later_step_closes_a_loop_through_an_atom_that_could_have_been_merged() {
         assert_eq!(atom_sets(&mut s), vec![vec![], vec![1, 2, 3, 4]], "eq {eq}");
     }
 }
+
+#[test]
+fn head_cycles_through_double_negation() {
+    // A random non-head-cycle-free program (the stability check per component, on partial
+    // assignments). {a0,a2,a3,a4,a6} is a supported model whose reduct (rule 6 becomes
+    // `a6 :- a4.`, rule 7 `a1 | a4 :- a2.`; rules 1, 4 and 8 vanish) has the smaller model
+    // {a0,a3}, so it is no answer set (clingo 5.4.1 reports it; 5.8.3 does not). The other six
+    // are answer sets (clingo 5.8.3).
+    let text = "{a5} :- a0, not a3.
+        a3 | a2.
+        a2 | a0 | a4 :- a6.
+        a0 | a1 | a5 :- not a6, a2.
+        a3 :- a0, a2.
+        a6 :- not not a6, a4.
+        a1 | a4 :- not a1, a2, not not a2.
+        a5 | a2 :- not a4, a2, not a5.
+        a1 | a5 | a0.
+        a1 | a2 :- a6.";
+    let mut sources = lucent::base::SourceMap::new();
+    let id = sources.add("not_not.lp", text);
+    let parsed = lucent::syntax::parse(id, text, lucent::syntax::ast::Dialect::Clingo);
+    let g = lucent::ground::ground(&parsed.program, Some(&sources), &Default::default());
+    let expected = sets(&[
+        &["a0", "a3"],
+        &["a1", "a2"],
+        &["a1", "a3"],
+        &["a2", "a4", "a5"],
+        &["a2", "a4", "a5", "a6"],
+        &["a3", "a5"],
+    ]);
+    for eq in [true, false] {
+        let config = Config {
+            eq,
+            ..Config::all_models()
+        };
+        assert_eq!(answer_sets(&g.program, config), expected, "eq {eq}");
+    }
+}

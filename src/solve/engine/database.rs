@@ -297,6 +297,9 @@ impl Engine {
             self.asg.qhead = self.asg.trail.len();
             self.asg.pf_head = self.asg.qhead;
             self.uf.uf_clean_upto = self.uf.uf_clean_upto.min(self.asg.trail.len());
+            if let Some(st) = &mut self.uf.stability {
+                st.rescan();
+            }
         }
         for v in std::mem::take(&mut self.pool.dead_vars) {
             let slot = self.wc.weight_slot[v.index()];

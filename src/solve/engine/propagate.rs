@@ -1,6 +1,7 @@
 //! Propagation to fixpoint: two-watched-literal unit propagation over binary and long clauses
 //! (with blocker literals), native weight constraints with explanations stored per variable,
-//! and, at every fixpoint, the unfounded-set propagator and then an external propagator
+//! and, at every fixpoint, the unfounded-set propagator, the stability check of
+//! non-head-cycle-free components (`solve::stability`) and then an external propagator
 //! (`external`).
 //!
 //! Invariants: when a long clause is the reason of an assignment, the implied literal is at
@@ -42,6 +43,18 @@ impl Engine {
                         }
                         continue;
                     }
+                }
+            }
+            if let Some(mut st) = self.uf.stability.take() {
+                let sets = st.propagate(self);
+                self.uf.stability = Some(st);
+                if !sets.is_empty() {
+                    for set in sets {
+                        if self.add_loop_set(&set.atoms, &set.ext) {
+                            return Some(());
+                        }
+                    }
+                    continue;
                 }
             }
             self.ext.as_ref()?;

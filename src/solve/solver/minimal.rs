@@ -1,6 +1,8 @@
-//! The stability check of non-head-cycle-free programs: a candidate `M` (a supported model
-//! whose positive loops are founded) is an answer set when no model of the reduct `P^M` lies
-//! strictly inside it, which a fresh engine decides (`is_minimal`). When one, `Y`, does, the
+//! The whole-program stability check of non-head-cycle-free programs, the fallback of the
+//! component checks of `solve::stability` (used when one was cut short by a limit, or a total
+//! assignment left a variable it reads open): a candidate `M` (a supported model whose positive
+//! loops are founded) is an answer set when no model of the reduct `P^M` lies strictly inside
+//! it, which a fresh engine decides (`is_minimal`). When one, `Y`, does, the
 //! atoms `U = M \ Y` are unfounded with respect to `M` (`Y` is grown to a maximal one first,
 //! so `U` is a minimal such set and touches few rules) (Leone, Rullo, Scarcello 1997, with
 //! choice heads and weight bodies as clasp reads them), and `learn_unfounded` adds the loop

@@ -2,8 +2,8 @@
 //! non-head-cycle-free candidates in `minimal`, edge acyclicity), models and their costs, reporting, blocking
 //! of found models and cost bounds.
 //!
-//! Invariants: every reported model passed the minimality check when the program is not
-//! head-cycle-free; a blocked model (by its decisions, or its projection) is never reported
+//! Invariants: every reported model passed the stability check (per component, or the
+//! whole-program minimality check) when the program is not head-cycle-free; a blocked model (by its decisions, or its projection) is never reported
 //! again in the same call; constraints of one call hang on that call's guard.
 
 use super::minimal::Minimality;
@@ -31,7 +31,10 @@ impl Solver {
                         self.engine.add_clause(&cycle);
                         continue;
                     }
-                    if !self.tr.non_hcf {
+                    // The component checks (`solve::stability`) verified every head cycle
+                    // during propagation; the whole-program check is the fallback when one
+                    // was cut short (a limit) or a relevant variable stayed unassigned.
+                    if !self.tr.non_hcf || self.engine.stability_verified() {
                         return Next::Model;
                     }
                     match self.is_minimal() {

@@ -9,13 +9,16 @@
 //!   every component number in use.
 //! - A program is head-cycle-free when no disjunctive rule has two head atoms in one strongly
 //!   connected component of the positive dependency graph; only then are answer sets exactly
-//!   the supported, unfounded-free assignments. Otherwise `non_hcf` is set and the caller checks
-//!   minimality of each candidate.
+//!   the supported, unfounded-free assignments. Otherwise `non_hcf` is set, the components
+//!   with a head cycle get the stability check (`solve::stability`, installed here with the
+//!   propagator), and only their atoms' supports are the rule bodies alone.
 
 use super::graph::{scc, Graph};
 use super::Translation;
+use crate::ground::program::HeadKind;
 use crate::ground::program::{BodyRef, GroundProgram, RuleRef};
 use crate::solve::engine::Engine;
+use crate::solve::stability::{Stability, StabilityBody, StabilityComponent, StabilityRule};
 use crate::solve::unfounded::{Support, SupportBody, Unfounded};
 use hashbrown::HashMap;
 use smallvec::SmallVec;
@@ -132,16 +135,32 @@ impl Translation {
     /// cyclic atoms (none installed when there are none). Work proportional to the cyclic
     /// atoms, their supports and the disjunctive rules.
     fn rebuild_unfounded(&mut self, p: &GroundProgram, e: &mut Engine) {
-        let (comp, cyclic) = (&self.comp, &self.cyclic);
-        self.non_hcf = self.disj_rules.iter().any(|&ri| {
-            let r = p.rules.get(ri as usize);
-            r.head.iter().enumerate().any(|(i, &h)| {
-                cyclic[h as usize]
-                    && r.head[i + 1..]
-                        .iter()
-                        .any(|&g| g != h && comp[g as usize] == comp[h as usize])
-            })
-        });
+        // The components where some disjunctive rule has two head atoms: only their atoms
+        // need the stability check, and only their supports are the rule bodies alone.
+        let mut non_hcf_comps: Vec<u32> = Vec::new();
+        {
+            let (comp, cyclic) = (&self.comp, &self.cyclic);
+            for &ri in &self.disj_rules {
+                let r = p.rules.get(ri as usize);
+                for (i, &h) in r.head.iter().enumerate() {
+                    if cyclic[h as usize]
+                        && r.head[i + 1..]
+                            .iter()
+                            .any(|&g| g != h && comp[g as usize] == comp[h as usize])
+                    {
+                        non_hcf_comps.push(comp[h as usize]);
+                    }
+                }
+            }
+        }
+        non_hcf_comps.sort_unstable();
+        non_hcf_comps.dedup();
+        self.non_hcf = !non_hcf_comps.is_empty();
+        let in_non_hcf = |c: u32| non_hcf_comps.binary_search(&c).is_ok();
+        e.set_stability(
+            self.stability_components(p, &non_hcf_comps)
+                .map(Stability::new),
+        );
         let mut local: HashMap<u32, u32> = HashMap::new();
         let mut atom_lits = Vec::new();
         let mut components = Vec::new();
@@ -175,8 +194,12 @@ impl Translation {
             for &(s, ri) in &self.supports[a as usize] {
                 let ri = ri as usize;
                 let r = p.rules.get(ri);
-                // Non-HCF programs use the rule body as support (see the module comment).
-                let lit = if self.non_hcf { self.rule_body[ri] } else { s };
+                // Non-HCF components use the rule body as support (see the module comment).
+                let lit = if in_non_hcf(self.comp[a as usize]) {
+                    self.rule_body[ri]
+                } else {
+                    s
+                };
                 let body = match r.body {
                     BodyRef::Normal(ls) => {
                         SupportBody::Normal(ls.iter().filter_map(|&l| loc(l)).collect())
@@ -207,6 +230,94 @@ impl Translation {
         }
         let uf = Unfounded::new(atom_lits, components, sups);
         e.set_unfounded(Some(uf));
+    }
+
+    /// The rules and atoms of the non-HCF components `comps` (sorted) for the stability
+    /// check; `None` when there are none.
+    fn stability_components(
+        &self,
+        p: &GroundProgram,
+        comps: &[u32],
+    ) -> Option<Vec<StabilityComponent>> {
+        if comps.is_empty() {
+            return None;
+        }
+        let index = |a: u32| comps.binary_search(&self.comp[a as usize]).ok();
+        // Per atom of a non-HCF component: (component position, local index).
+        let mut local: HashMap<u32, (usize, u32)> = HashMap::new();
+        let mut atoms: Vec<Vec<u32>> = vec![Vec::new(); comps.len()];
+        let mut cyc: Vec<u32> = self
+            .cyclic_atoms
+            .iter()
+            .copied()
+            .filter(|&a| !self.free[a as usize])
+            .collect();
+        cyc.sort_unstable();
+        for a in cyc {
+            if let Some(k) = index(a) {
+                local.insert(a, (k, atoms[k].len() as u32));
+                atoms[k].push(a);
+            }
+        }
+        let mut out = Vec::with_capacity(comps.len());
+        for (k, list) in atoms.iter().enumerate() {
+            let mut rules: Vec<u32> = list
+                .iter()
+                .flat_map(|&a| self.supports[a as usize].iter().map(|&(_, ri)| ri))
+                .collect();
+            rules.sort_unstable();
+            rules.dedup();
+            let inside = |a: u32| local.get(&a).filter(|&&(c, _)| c == k).map(|&(_, i)| i);
+            let rules = rules
+                .into_iter()
+                .map(|ri| {
+                    let r = p.rules.get(ri as usize);
+                    let mut heads: Vec<u32> = r.head.iter().filter_map(|&h| inside(h)).collect();
+                    heads.sort_unstable();
+                    heads.dedup();
+                    let other_heads = r
+                        .head
+                        .iter()
+                        .filter(|&&h| inside(h).is_none())
+                        .map(|&h| self.atom_lit[h as usize])
+                        .collect();
+                    let body = match r.body {
+                        BodyRef::Normal(ls) => {
+                            let mut internal = Vec::new();
+                            let mut fixed = Vec::new();
+                            for &l in ls {
+                                match inside(l.unsigned_abs()).filter(|_| l > 0) {
+                                    Some(i) => internal.push(i),
+                                    None => fixed.push(self.lit(l)),
+                                }
+                            }
+                            StabilityBody::Normal { internal, fixed }
+                        }
+                        BodyRef::Weight { lower, lits } => StabilityBody::Weight {
+                            lower,
+                            lits: lits
+                                .iter()
+                                .filter(|&&(_, w)| w != 0)
+                                .map(|&(l, w)| {
+                                    let at = inside(l.unsigned_abs()).filter(|_| l > 0 && w > 0);
+                                    (self.lit(l), w, at)
+                                })
+                                .collect(),
+                        },
+                    };
+                    StabilityRule {
+                        choice: r.head_kind == HeadKind::Choice,
+                        heads,
+                        other_heads,
+                        body_lit: self.rule_body[ri as usize],
+                        body,
+                    }
+                })
+                .collect();
+            let atoms = list.iter().map(|&a| self.atom_lit[a as usize]).collect();
+            out.push(StabilityComponent { atoms, rules });
+        }
+        Some(out)
     }
 }
 
