@@ -244,12 +244,12 @@ impl Engine {
     pub(super) fn weight_may_propagate(&self, id: usize) -> bool {
         let c = &self.wc.weights[id];
         let max = c.total - c.sum_false;
-        if c.sum_true >= c.bound || max < c.bound {
+        if max < c.bound || (c.sum_true >= c.bound && !c.implication) {
             return true;
         }
         match self.val(c.head) {
             1 => max.saturating_sub(c.max_weight) < c.bound,
-            -1 => c.sum_true + c.max_weight >= c.bound,
+            -1 => !c.implication && c.sum_true + c.max_weight >= c.bound,
             _ => false,
         }
     }
@@ -266,7 +266,11 @@ impl Engine {
         let sum_true = c.sum_true;
         let max = c.total - c.sum_false;
         let hv = self.val(head);
+        let implication = c.implication;
         if sum_true >= bound {
+            if implication {
+                return false;
+            }
             match hv {
                 1 => {}
                 0 => self.assign_weight_implied(head, None, id, true),
@@ -310,7 +314,7 @@ impl Engine {
                     self.assign_weight_implied(l, Some(!head), id, false);
                 }
             }
-        } else if hv == -1 {
+        } else if hv == -1 && !implication {
             // Every unassigned literal that would reach the bound must be false:
             // weight >= bound - sum_true. The explanation (the true literals) does not change
             // while these literals become false.
