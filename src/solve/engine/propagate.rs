@@ -305,13 +305,14 @@ impl Engine {
             // hold: weight > max - bound. The explanation (the false literals) does not change
             // while these literals become true.
             let slack = max - bound;
+            let mut first = None;
             for k in 0..self.wc.weights[id].lits.len() {
                 let (l, w) = self.wc.weights[id].lits[k];
                 if w <= slack {
                     break;
                 }
                 if self.val(l) == 0 {
-                    self.assign_weight_implied(l, Some(!head), id, false);
+                    first = Some(self.assign_weight_implied_as(l, first, id, Some(!head), false));
                 }
             }
         } else if hv == -1 && !implication {
@@ -319,13 +320,14 @@ impl Engine {
             // weight >= bound - sum_true. The explanation (the true literals) does not change
             // while these literals become false.
             let gap = bound - sum_true;
+            let mut first = None;
             for k in 0..self.wc.weights[id].lits.len() {
                 let (l, w) = self.wc.weights[id].lits[k];
                 if w < gap {
                     break;
                 }
                 if self.val(l) == 0 {
-                    self.assign_weight_implied(!l, Some(head), id, true);
+                    first = Some(self.assign_weight_implied_as(!l, first, id, Some(head), true));
                 }
             }
         }
@@ -365,6 +367,37 @@ impl Engine {
         self.weight_lits(id, of_true, &mut r);
         self.asg.stored[slot] = r;
         self.assign(l, Reason::Stored);
+    }
+
+    /// [`Engine::assign_weight_implied`] for the literals one evaluation of constraint `id`
+    /// implies together, whose explanations differ only in the implied literal: the first
+    /// (`like` None) collects it, the later ones copy it from the first's buffer (`like`, the
+    /// returned slot). Returns the explanation's slot.
+    fn assign_weight_implied_as(
+        &mut self,
+        l: Lit,
+        like: Option<usize>,
+        id: usize,
+        extra: Option<Lit>,
+        of_true: bool,
+    ) -> usize {
+        let Some(src) = like else {
+            self.assign_weight_implied(l, extra, id, of_true);
+            return self.asg.stored_slot[l.var().index()] as usize;
+        };
+        let v = l.var().index();
+        if self.asg.stored_slot[v] == NO_SLOT {
+            self.asg.stored_slot[v] = self.asg.stored.len() as u32;
+            self.asg.stored.push(Vec::new());
+        }
+        let slot = self.asg.stored_slot[v] as usize;
+        let mut r = std::mem::take(&mut self.asg.stored[slot]);
+        r.clear();
+        r.push(l);
+        r.extend_from_slice(&self.asg.stored[src][1..]);
+        self.asg.stored[slot] = r;
+        self.assign(l, Reason::Stored);
+        src
     }
 
     /// Appends the false literals of the reason of `v` (excluding `v` itself) to `out`.
