@@ -395,4 +395,69 @@ impl Engine {
         }
         true
     }
+
+    /// [`Engine::raise_weight_bound`] on the total assignment of a model, without leaving the
+    /// search: backtracks only to the level below the lowest one at which the new bound is
+    /// violated and evaluates the constraint there, so that `search_from(.., true)` goes on
+    /// from that assignment (what the constraint implies lower down, it implies at that level:
+    /// sound, and conflict analysis copes with it). Returns false as `raise_weight_bound` does.
+    pub fn raise_weight_bound_resuming(&mut self, head: Lit, bound: i64) -> bool {
+        if self.decision_level() == 0 {
+            return self.raise_weight_bound(head, bound);
+        }
+        let Some(id) = self.weight_id(head) else {
+            return false;
+        };
+        let c = &mut self.wc.weights[id];
+        if !c.implication {
+            return false;
+        }
+        let new = bound as i128 + c.shift;
+        if new <= c.bound as i128 {
+            return true;
+        }
+        c.bound = new.min(c.total as i128 + 1) as u64;
+        // The false literals by level: the bound is violated from the level where the sum of
+        // their weights exceeds `total - bound`.
+        let c = &self.wc.weights[id];
+        let room = c.total - c.bound.min(c.total);
+        let mut false_at: Vec<(u32, u64)> = c
+            .lits
+            .iter()
+            .filter(|&&(l, _)| self.val(l) == -1)
+            .map(|&(l, w)| (self.asg.level[l.var().index()], w))
+            .collect();
+        false_at.sort_unstable();
+        let mut sum = 0u64;
+        let mut violated = None;
+        for &(level, w) in &false_at {
+            sum += w;
+            if sum > room {
+                violated = Some(level);
+                break;
+            }
+        }
+        let Some(level) = violated else {
+            // Not violated by this assignment (not a model's, then): start over at level 0.
+            self.backtrack(0);
+            if self.propagate_weight(id) || self.propagate().is_some() {
+                self.inconsistent = true;
+                return false;
+            }
+            return true;
+        };
+        let target = level.saturating_sub(1);
+        self.backtrack(target);
+        if target == 0 {
+            if self.propagate_weight(id) || self.propagate().is_some() {
+                self.inconsistent = true;
+                return false;
+            }
+            return true;
+        }
+        // Not violated at `target`: the evaluation implies literals at most.
+        let conflict = self.propagate_weight(id);
+        debug_assert!(!conflict);
+        true
+    }
 }

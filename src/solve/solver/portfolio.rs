@@ -322,7 +322,7 @@ impl Solver {
         if self.best.as_ref().is_some_and(|b| *b <= best) {
             return false;
         }
-        self.tighten_bound(bound_guard, &best);
+        self.tighten_bound(bound_guard, &best, false);
         self.best = Some(best);
         true
     }

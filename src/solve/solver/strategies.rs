@@ -123,14 +123,18 @@ impl Solver {
     ) -> bool {
         let mut bound_guard = BoundGuard::default();
         let mut found = false;
+        let mut resume = false;
         loop {
             // Portfolio: a better bound another thread found (`portfolio`).
-            found |= self.adopt_bound(&mut bound_guard);
+            if self.adopt_bound(&mut bound_guard) {
+                found = true;
+                resume = false;
+            }
             let mut a = assume.to_vec();
             if let Some(g) = bound_guard.guard {
                 a.push(g);
             }
-            match self.next(&a) {
+            match self.next_from(&a, std::mem::take(&mut resume)) {
                 Next::Exhausted => {
                     if let Some(g) = bound_guard.guard {
                         self.retire(g);
@@ -161,7 +165,7 @@ impl Solver {
                         }
                         return false;
                     }
-                    self.tighten_bound(&mut bound_guard, &costs);
+                    resume = self.tighten_bound(&mut bound_guard, &costs, true);
                 }
             }
         }
@@ -171,8 +175,15 @@ impl Solver {
     /// bound (one weight constraint over all levels, see `combined_cost`), the bound is raised
     /// in place: the clauses learnt under the old bound follow from the new one and stay.
     /// Otherwise a fresh guard with a fresh constraint replaces the old one, which is retired
-    /// with what was learnt from it.
-    pub(super) fn tighten_bound(&mut self, bg: &mut BoundGuard, bound: &[i64]) {
+    /// with what was learnt from it. With `resuming`, on the total assignment of a model whose
+    /// costs are `bound`, an in-place raise backtracks only as far as the new bound needs;
+    /// returns true when the search may go on from the assignment left (`next_from`).
+    pub(super) fn tighten_bound(
+        &mut self,
+        bg: &mut BoundGuard,
+        bound: &[i64],
+        resuming: bool,
+    ) -> bool {
         let Some(c) = self.combined_cost(bound) else {
             let g = self.new_guard();
             self.add_cost_bound(g, bound, false);
@@ -180,18 +191,24 @@ impl Solver {
                 self.retire(old);
             }
             bg.raisable = false;
-            return;
+            return false;
         };
         // costs < bound  <=>  -cost >= 1 - c.
         let at_least = 1 - c;
         if bg.raisable {
             if let Some(g) = bg.guard {
+                let raised = if resuming {
+                    self.engine.raise_weight_bound_resuming(g, at_least)
+                } else {
+                    self.engine.raise_weight_bound(g, at_least)
+                };
+                if raised {
+                    return resuming;
+                }
                 // Not raisable after all when its constraint only fixed `g` false: then `g`
                 // is false at level 0 and the next search fails on it.
-                if self.engine.raise_weight_bound(g, at_least)
-                    || self.engine.value(g) == Some(false)
-                {
-                    return;
+                if self.engine.value(g) == Some(false) {
+                    return false;
                 }
             }
         }
@@ -203,6 +220,7 @@ impl Solver {
             self.retire(old);
         }
         bg.raisable = true;
+        false
     }
 
     /// The multipliers that fold the cost levels into one sum ordered as the levels are,
