@@ -126,8 +126,14 @@ struct WeightConstraint {
     total: u64,
     /// Largest weight.
     max_weight: u64,
-    /// The literal equivalent to the constraint.
+    /// The literal equivalent to the constraint (only implying it when `implication`).
     head: Lit,
+    /// `head -> sum >= bound` only: the constraint never makes `head` true and a false `head`
+    /// constrains nothing, so its bound may be raised later (`raise_weight_bound`) without
+    /// invalidating a clause learnt with its help.
+    implication: bool,
+    /// What normalising negative weights added to the bound given by the caller.
+    shift: i128,
     /// Literals with positive weights.
     lits: Vec<(Lit, u64)>,
     /// The lower bound.

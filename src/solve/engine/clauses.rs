@@ -228,7 +228,24 @@ impl Engine {
     /// Adds a native weight constraint `head <-> sum(w * l) >= bound` at level 0. Weights may be
     /// negative; they are normalised by negating their literals.
     pub fn add_weight(&mut self, head: Lit, lits: &[(Lit, i64)], bound: i64) -> bool {
+        self.add_weight_constraint(head, lits, bound, false)
+    }
+
+    /// Adds the native weight constraint `head -> sum(w * l) >= bound` (one direction only) at
+    /// level 0, whose bound `raise_weight_bound` may raise later.
+    pub fn add_weight_implication(&mut self, head: Lit, lits: &[(Lit, i64)], bound: i64) -> bool {
+        self.add_weight_constraint(head, lits, bound, true)
+    }
+
+    fn add_weight_constraint(
+        &mut self,
+        head: Lit,
+        lits: &[(Lit, i64)],
+        bound: i64,
+        implication: bool,
+    ) -> bool {
         self.backtrack(0);
+        let given = bound as i128;
         let mut bound = bound as i128;
         let mut norm: Vec<(Lit, u64)> = Vec::new();
         for &(l, w) in lits {
@@ -240,14 +257,15 @@ impl Engine {
                 norm.push((!l, (-(w as i128)) as u64));
             }
         }
-        if bound <= 0 {
+        let shift = bound - given;
+        if bound <= 0 && !implication {
             return self.add_clause(&[head]);
         }
         let total: i128 = norm.iter().map(|&(_, w)| w as i128).sum();
         if total < bound {
             return self.add_clause(&[!head]);
         }
-        let bound = bound as u64;
+        let bound = bound.max(0) as u64;
         norm.sort_by_key(|x| std::cmp::Reverse(x.1));
         if self.propagate().is_some() {
             self.inconsistent = true;
@@ -285,6 +303,8 @@ impl Engine {
             total,
             max_weight,
             head,
+            implication,
+            shift,
             lits: norm,
             bound,
             removed: false,
@@ -318,17 +338,7 @@ impl Engine {
     /// `head`), so callers may retire auxiliary bounds this way once nothing reads `head`.
     pub fn remove_weight(&mut self, head: Lit) {
         self.backtrack(0);
-        // The constraint is found through its head's occurrence (weight 0, which no body
-        // literal has); its slot is reused by a later `add_weight`.
-        let slot = self.wc.weight_slot[head.var().index()];
-        if slot == NO_SLOT {
-            return;
-        }
-        let Some(id) = self.wc.weight_watch[slot as usize]
-            .iter()
-            .find(|w| w.weight == 0 && w.lit == head && !self.wc.weights[w.id as usize].removed)
-            .map(|w| w.id as usize)
-        else {
+        let Some(id) = self.weight_id(head) else {
             return;
         };
         self.wc.free_weights.push(id as u32);
@@ -343,5 +353,111 @@ impl Engine {
                 self.wc.weight_watch[slot as usize].retain(|w| w.id != idu);
             }
         }
+    }
+
+    /// The live weight constraint whose head is `head`, found through the head's occurrence
+    /// (weight 0, which no body literal has).
+    fn weight_id(&self, head: Lit) -> Option<usize> {
+        let slot = self.wc.weight_slot[head.var().index()];
+        if slot == NO_SLOT {
+            return None;
+        }
+        self.wc.weight_watch[slot as usize]
+            .iter()
+            .find(|w| w.weight == 0 && w.lit == head && !self.wc.weights[w.id as usize].removed)
+            .map(|w| w.id as usize)
+    }
+
+    /// Raises the bound of the implication `head -> sum(w * l) >= bound` that
+    /// `add_weight_implication` made to `bound` (a lower bound leaves it as it is), at level
+    /// 0. Every clause learnt with the old bound's help still follows from the new one, so
+    /// nothing learnt is dropped. Returns false when the engine became inconsistent; false
+    /// too, with nothing changed, when `head` has no such constraint (`add_weight_implication`
+    /// then only fixed `head` false, or it was removed).
+    pub fn raise_weight_bound(&mut self, head: Lit, bound: i64) -> bool {
+        self.backtrack(0);
+        let Some(id) = self.weight_id(head) else {
+            return false;
+        };
+        let c = &mut self.wc.weights[id];
+        if !c.implication {
+            return false;
+        }
+        let new = bound as i128 + c.shift;
+        if new <= c.bound as i128 {
+            return true;
+        }
+        // Above the total the constraint only says `!head`; the bound stays representable.
+        c.bound = new.min(c.total as i128 + 1) as u64;
+        if self.propagate_weight(id) || self.propagate().is_some() {
+            self.inconsistent = true;
+            return false;
+        }
+        true
+    }
+
+    /// [`Engine::raise_weight_bound`] on the total assignment of a model, without leaving the
+    /// search: backtracks only to the level below the lowest one at which the new bound is
+    /// violated and evaluates the constraint there, so that `search_from(.., true)` goes on
+    /// from that assignment (what the constraint implies lower down, it implies at that level:
+    /// sound, and conflict analysis copes with it). Returns false as `raise_weight_bound` does.
+    pub fn raise_weight_bound_resuming(&mut self, head: Lit, bound: i64) -> bool {
+        if self.decision_level() == 0 {
+            return self.raise_weight_bound(head, bound);
+        }
+        let Some(id) = self.weight_id(head) else {
+            return false;
+        };
+        let c = &mut self.wc.weights[id];
+        if !c.implication {
+            return false;
+        }
+        let new = bound as i128 + c.shift;
+        if new <= c.bound as i128 {
+            return true;
+        }
+        c.bound = new.min(c.total as i128 + 1) as u64;
+        // The false literals by level: the bound is violated from the level where the sum of
+        // their weights exceeds `total - bound`.
+        let c = &self.wc.weights[id];
+        let room = c.total - c.bound.min(c.total);
+        let mut false_at: Vec<(u32, u64)> = c
+            .lits
+            .iter()
+            .filter(|&&(l, _)| self.val(l) == -1)
+            .map(|&(l, w)| (self.asg.level[l.var().index()], w))
+            .collect();
+        false_at.sort_unstable();
+        let mut sum = 0u64;
+        let mut violated = None;
+        for &(level, w) in &false_at {
+            sum += w;
+            if sum > room {
+                violated = Some(level);
+                break;
+            }
+        }
+        let Some(level) = violated else {
+            // Not violated by this assignment (not a model's, then): start over at level 0.
+            self.backtrack(0);
+            if self.propagate_weight(id) || self.propagate().is_some() {
+                self.inconsistent = true;
+                return false;
+            }
+            return true;
+        };
+        let target = level.saturating_sub(1);
+        self.backtrack(target);
+        if target == 0 {
+            if self.propagate_weight(id) || self.propagate().is_some() {
+                self.inconsistent = true;
+                return false;
+            }
+            return true;
+        }
+        // Not violated at `target`: the evaluation implies literals at most.
+        let conflict = self.propagate_weight(id);
+        debug_assert!(!conflict);
+        true
     }
 }

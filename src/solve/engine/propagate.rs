@@ -257,12 +257,12 @@ impl Engine {
     pub(super) fn weight_may_propagate(&self, id: usize) -> bool {
         let c = &self.wc.weights[id];
         let max = c.total - c.sum_false;
-        if c.sum_true >= c.bound || max < c.bound {
+        if max < c.bound || (c.sum_true >= c.bound && !c.implication) {
             return true;
         }
         match self.val(c.head) {
             1 => max.saturating_sub(c.max_weight) < c.bound,
-            -1 => c.sum_true + c.max_weight >= c.bound,
+            -1 => !c.implication && c.sum_true + c.max_weight >= c.bound,
             _ => false,
         }
     }
@@ -279,7 +279,11 @@ impl Engine {
         let sum_true = c.sum_true;
         let max = c.total - c.sum_false;
         let hv = self.val(head);
+        let implication = c.implication;
         if sum_true >= bound {
+            if implication {
+                return false;
+            }
             match hv {
                 1 => {}
                 0 => self.assign_weight_implied(head, None, id, true),
@@ -314,27 +318,29 @@ impl Engine {
             // hold: weight > max - bound. The explanation (the false literals) does not change
             // while these literals become true.
             let slack = max - bound;
+            let mut first = None;
             for k in 0..self.wc.weights[id].lits.len() {
                 let (l, w) = self.wc.weights[id].lits[k];
                 if w <= slack {
                     break;
                 }
                 if self.val(l) == 0 {
-                    self.assign_weight_implied(l, Some(!head), id, false);
+                    first = Some(self.assign_weight_implied_as(l, first, id, Some(!head), false));
                 }
             }
-        } else if hv == -1 {
+        } else if hv == -1 && !implication {
             // Every unassigned literal that would reach the bound must be false:
             // weight >= bound - sum_true. The explanation (the true literals) does not change
             // while these literals become false.
             let gap = bound - sum_true;
+            let mut first = None;
             for k in 0..self.wc.weights[id].lits.len() {
                 let (l, w) = self.wc.weights[id].lits[k];
                 if w < gap {
                     break;
                 }
                 if self.val(l) == 0 {
-                    self.assign_weight_implied(!l, Some(head), id, true);
+                    first = Some(self.assign_weight_implied_as(!l, first, id, Some(head), true));
                 }
             }
         }
@@ -374,6 +380,37 @@ impl Engine {
         self.weight_lits(id, of_true, &mut r);
         self.asg.stored[slot] = r;
         self.assign(l, Reason::Stored);
+    }
+
+    /// [`Engine::assign_weight_implied`] for the literals one evaluation of constraint `id`
+    /// implies together, whose explanations differ only in the implied literal: the first
+    /// (`like` None) collects it, the later ones copy it from the first's buffer (`like`, the
+    /// returned slot). Returns the explanation's slot.
+    fn assign_weight_implied_as(
+        &mut self,
+        l: Lit,
+        like: Option<usize>,
+        id: usize,
+        extra: Option<Lit>,
+        of_true: bool,
+    ) -> usize {
+        let Some(src) = like else {
+            self.assign_weight_implied(l, extra, id, of_true);
+            return self.asg.stored_slot[l.var().index()] as usize;
+        };
+        let v = l.var().index();
+        if self.asg.stored_slot[v] == NO_SLOT {
+            self.asg.stored_slot[v] = self.asg.stored.len() as u32;
+            self.asg.stored.push(Vec::new());
+        }
+        let slot = self.asg.stored_slot[v] as usize;
+        let mut r = std::mem::take(&mut self.asg.stored[slot]);
+        r.clear();
+        r.push(l);
+        r.extend_from_slice(&self.asg.stored[src][1..]);
+        self.asg.stored[slot] = r;
+        self.assign(l, Reason::Stored);
+        src
     }
 
     /// Appends the false literals of the reason of `v` (excluding `v` itself) to `out`.

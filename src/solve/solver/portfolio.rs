@@ -308,9 +308,9 @@ impl Solver {
     }
 
     /// Before a branch-and-bound search: adopts the portfolio's best bound when it is better
-    /// than this thread's (a new guard with `costs <lex best`, replacing `bound_guard`).
+    /// than this thread's (`bound_guard` tightened to `costs <lex best`).
     /// Returns true when it did.
-    pub(super) fn adopt_bound(&mut self, bound_guard: &mut Option<Lit>) -> bool {
+    pub(super) fn adopt_bound(&mut self, bound_guard: &mut strategies::BoundGuard) -> bool {
         let Some(sb) = self.shared_bound.clone() else {
             return false;
         };
@@ -322,11 +322,7 @@ impl Solver {
         if self.best.as_ref().is_some_and(|b| *b <= best) {
             return false;
         }
-        let g = self.new_guard();
-        self.add_cost_bound(g, &best, false);
-        if let Some(old) = bound_guard.replace(g) {
-            self.retire(old);
-        }
+        self.tighten_bound(bound_guard, &best, false);
         self.best = Some(best);
         true
     }

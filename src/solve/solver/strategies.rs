@@ -6,6 +6,7 @@
 //! model must change it (a clause on the call's guard), so the last one reported is the answer.
 
 use super::*;
+use hashbrown::HashMap;
 
 impl Solver {
     // ------------------------------------------------------------------ strategies
@@ -120,18 +121,22 @@ impl Solver {
         dedup: bool,
         report: bool,
     ) -> bool {
-        let mut bound_guard: Option<Lit> = None;
+        let mut bound_guard = BoundGuard::default();
         let mut found = false;
+        let mut resume = false;
         loop {
             // Portfolio: a better bound another thread found (`portfolio`).
-            found |= self.adopt_bound(&mut bound_guard);
+            if self.adopt_bound(&mut bound_guard) {
+                found = true;
+                resume = false;
+            }
             let mut a = assume.to_vec();
-            if let Some(g) = bound_guard {
+            if let Some(g) = bound_guard.guard {
                 a.push(g);
             }
-            match self.next(&a) {
+            match self.next_from(&a, std::mem::take(&mut resume)) {
                 Next::Exhausted => {
-                    if let Some(g) = bound_guard {
+                    if let Some(g) = bound_guard.guard {
                         self.retire(g);
                     }
                     if found {
@@ -145,7 +150,7 @@ impl Solver {
                 Next::Stopped if self.engine.limits.bound_news => {}
                 Next::Stopped => {
                     call.stopped = true;
-                    if let Some(g) = bound_guard {
+                    if let Some(g) = bound_guard.guard {
                         self.retire(g);
                     }
                     return false;
@@ -155,20 +160,123 @@ impl Solver {
                     let costs = self.costs();
                     self.best = Some(costs.clone());
                     if report && !self.report(call, false, dedup) {
-                        if let Some(g) = bound_guard {
+                        if let Some(g) = bound_guard.guard {
                             self.retire(g);
                         }
                         return false;
                     }
-                    let g = self.new_guard();
-                    self.add_cost_bound(g, &costs, false);
-                    if let Some(old) = bound_guard {
-                        self.retire(old);
-                    }
-                    bound_guard = Some(g);
+                    resume = self.tighten_bound(&mut bound_guard, &costs, true);
                 }
             }
         }
+    }
+
+    /// Makes `bg` the guard of `costs <lex bound`. When its constraint can say that with a new
+    /// bound (one weight constraint over all levels, see `combined_cost`), the bound is raised
+    /// in place: the clauses learnt under the old bound follow from the new one and stay.
+    /// Otherwise a fresh guard with a fresh constraint replaces the old one, which is retired
+    /// with what was learnt from it. With `resuming`, on the total assignment of a model whose
+    /// costs are `bound`, an in-place raise backtracks only as far as the new bound needs;
+    /// returns true when the search may go on from the assignment left (`next_from`).
+    pub(super) fn tighten_bound(
+        &mut self,
+        bg: &mut BoundGuard,
+        bound: &[i64],
+        resuming: bool,
+    ) -> bool {
+        let Some(c) = self.combined_cost(bound) else {
+            let g = self.new_guard();
+            self.add_cost_bound(g, bound, false);
+            if let Some(old) = bg.guard.replace(g) {
+                self.retire(old);
+            }
+            bg.raisable = false;
+            return false;
+        };
+        // costs < bound  <=>  -cost >= 1 - c.
+        let at_least = 1 - c;
+        if bg.raisable {
+            if let Some(g) = bg.guard {
+                let raised = if resuming {
+                    self.engine.raise_weight_bound_resuming(g, at_least)
+                } else {
+                    self.engine.raise_weight_bound(g, at_least)
+                };
+                if raised {
+                    return resuming;
+                }
+                // Not raisable after all when its constraint only fixed `g` false: then `g`
+                // is false at level 0 and the next search fails on it.
+                if self.engine.value(g) == Some(false) {
+                    return false;
+                }
+            }
+        }
+        let g = self.new_guard();
+        let neg: Vec<(Lit, i64)> = self.combined_lits().iter().map(|&(l, w)| (l, -w)).collect();
+        self.engine.add_weight_implication(g, &neg, at_least);
+        self.scope(g).weights.push(g);
+        if let Some(old) = bg.guard.replace(g) {
+            self.retire(old);
+        }
+        bg.raisable = true;
+        false
+    }
+
+    /// The multipliers that fold the cost levels into one sum ordered as the levels are,
+    /// lexicographically: a level's multiplier exceeds the range of every sum the levels
+    /// below it can take. None when the folded sums might leave +-2^62.
+    fn level_multipliers(&self) -> Option<Vec<i128>> {
+        let levels = &self.tr.minimize;
+        let mut mult = vec![0i128; levels.len()];
+        let mut m: i128 = 1;
+        let mut extent: i128 = 0;
+        for (i, (_, lits)) in levels.iter().enumerate().rev() {
+            let lo: i128 = lits.iter().map(|&(_, w)| (w as i128).min(0)).sum();
+            let hi: i128 = lits.iter().map(|&(_, w)| (w as i128).max(0)).sum();
+            mult[i] = m;
+            extent = extent.checked_add((hi - lo).checked_mul(m)?)?;
+            if extent >= 1 << 62 {
+                return None;
+            }
+            m = m.checked_mul(hi - lo + 1)?;
+        }
+        Some(mult)
+    }
+
+    /// The folded cost (`level_multipliers`) of the level costs `costs`, which must give every
+    /// level; None when the levels do not fold.
+    fn combined_cost(&self, costs: &[i64]) -> Option<i64> {
+        if costs.len() != self.tr.minimize.len() || costs.is_empty() {
+            return None;
+        }
+        let mult = self.level_multipliers()?;
+        let c: i128 = costs.iter().zip(&mult).map(|(&c, &m)| c as i128 * m).sum();
+        i64::try_from(c).ok()
+    }
+
+    /// The literals of all levels with their folded weights (`level_multipliers`), one entry
+    /// per literal.
+    fn combined_lits(&self) -> Vec<(Lit, i64)> {
+        let mult = self.level_multipliers().expect("the levels fold");
+        let mut acc: HashMap<Lit, i128> = HashMap::new();
+        let mut order = Vec::new();
+        for ((_, lits), &m) in self.tr.minimize.iter().zip(&mult) {
+            for &(l, w) in lits {
+                let e = acc.entry(l).or_insert_with(|| {
+                    order.push(l);
+                    0
+                });
+                *e += w as i128 * m;
+            }
+        }
+        order
+            .into_iter()
+            .filter_map(|l| {
+                let w = acc[&l];
+                (w != 0).then_some((l, w as i64))
+            })
+            .collect()
     }
 
     pub(super) fn run_consequences(&mut self, call: &mut Call<'_>, assume: &[Lit], guard: Lit) {
@@ -231,4 +339,12 @@ impl Solver {
             }
         }
     }
+}
+
+/// The guard of the current bound of a branch-and-bound search.
+#[derive(Default)]
+pub(super) struct BoundGuard {
+    pub(super) guard: Option<Lit>,
+    /// The guard's constraint is one `add_weight_implication` over the folded levels.
+    pub(super) raisable: bool,
 }
