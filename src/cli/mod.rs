@@ -417,7 +417,7 @@ fn solve_control(
     let result = solve::SolveResult {
         models,
         outcome: summary.outcome,
-        exhausted: summary.exhausted,
+        exhausted: summary.search_exhausted,
         optimum_proven: summary.optimum_proven,
         stop: summary.stop,
         stats: summary.stats,
@@ -662,7 +662,7 @@ fn run_incmode(
     flush_control_diagnostics(options, io, control)?;
     let (word, code) = match &summary.last {
         Some(s) if s.outcome == solve::Outcome::Optimum => ("OPTIMUM FOUND", EXIT_EXHAUSTED),
-        Some(s) if s.is_satisfiable() && s.exhausted => ("SATISFIABLE", EXIT_EXHAUSTED),
+        Some(s) if s.is_satisfiable() && s.search_exhausted => ("SATISFIABLE", EXIT_EXHAUSTED),
         Some(s) if s.is_satisfiable() => ("SATISFIABLE", EXIT_SAT),
         Some(s) if s.is_unsatisfiable() => ("UNSATISFIABLE", EXIT_UNSAT),
         _ => ("UNKNOWN", EXIT_INTERRUPTED),

@@ -116,6 +116,7 @@ fn impossible(assumption: &(Symbol, bool)) -> Summary {
     Summary {
         outcome: solve::Outcome::Unsatisfiable,
         exhausted: true,
+        search_exhausted: true,
         optimum_proven: false,
         stop: None,
         stats: solve::Stats::default(),
@@ -363,6 +364,7 @@ impl Search {
             None => Summary {
                 outcome: solve::Outcome::Unknown,
                 exhausted: false,
+                search_exhausted: false,
                 optimum_proven: false,
                 stop: Some(solve::StopReason::Interrupted),
                 stats: solve::Stats::default(),
@@ -377,6 +379,7 @@ impl Search {
                 Summary {
                     outcome: r.outcome,
                     exhausted: r.exhausted,
+                    search_exhausted: r.exhausted,
                     optimum_proven: r.optimum_proven,
                     stop,
                     stats: r.stats,
@@ -433,6 +436,7 @@ impl Search {
             None => Summary {
                 outcome: solve::Outcome::Satisfiable,
                 exhausted: false,
+                search_exhausted: false,
                 optimum_proven: false,
                 stop: None,
                 stats: solve::Stats::default(),

@@ -191,8 +191,12 @@ pub(crate) fn at_model_limit(solver: &mut solve::Solver, count: usize) -> bool {
 pub struct Summary {
     /// Satisfiable, unsatisfiable, unknown or optimum.
     pub outcome: solve::Outcome,
-    /// True when the search space was fully explored.
+    /// True when the search space was fully explored; false for a call stopped at its model
+    /// limit (clingo 5.8's `SolveResult.exhausted`).
     pub exhausted: bool,
+    /// True when the solver found no model left, even in a call stopped at its model limit
+    /// (what clingo's command line reports: `Models : 1` and exit code 30 for `a.`).
+    pub search_exhausted: bool,
     /// True when the last model's costs are proven optimal.
     pub optimum_proven: bool,
     /// Why the search stopped early, if it did.
@@ -736,6 +740,7 @@ impl Control {
         Summary {
             outcome: result.outcome,
             exhausted: result.exhausted && !at_limit,
+            search_exhausted: result.exhausted,
             optimum_proven: result.optimum_proven,
             stop: result.stop,
             stats: result.stats,
