@@ -188,7 +188,7 @@ fn fixed_plans(
     let mut count = 0;
     let summary = ctl.solve(&SolveOptions::default(), |m| {
         count += 1;
-        plans.push(plan_of(&m.atoms()));
+        plans.push(plan_of(&m.atoms_named("occurs", 2)));
         count < FIXED_CAP
     });
     let capped = count >= FIXED_CAP && !summary.exhausted;
