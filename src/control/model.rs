@@ -66,6 +66,28 @@ impl Model<'_> {
         out
     }
 
+    /// The true atoms whose symbol is a positive function `name/arity`, in atom order: what
+    /// [`Model::atoms`] would give, filtered, without building the other symbols.
+    pub fn atoms_named(&self, name: &str, arity: usize) -> Vec<Symbol> {
+        let mut out = Vec::new();
+        for &a in &self.raw.atoms {
+            if let Some(&Some(s)) = self.names.atom_sym.get(a as usize - 1) {
+                if let crate::ground::symbol::SymData::Fun {
+                    name: n,
+                    neg: false,
+                    len,
+                    ..
+                } = self.names.syms.get(s)
+                {
+                    if len as usize == arity && self.names.syms.names.resolve(n) == name {
+                        out.push(Symbol::from_table(self.names.syms, s));
+                    }
+                }
+            }
+        }
+        out
+    }
+
     /// Whether the atom of `symbol` is true.
     pub fn contains(&self, symbol: &Symbol) -> bool {
         let Some(id) = symbol.find_in(self.names.syms) else {

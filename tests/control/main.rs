@@ -10,6 +10,7 @@ mod functions;
 mod handle;
 mod grid;
 mod incmode;
+mod model;
 mod multishot;
 mod propagator;
 mod theory;

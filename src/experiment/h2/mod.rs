@@ -188,7 +188,7 @@ fn fixed_plans(
     let mut count = 0;
     let summary = ctl.solve(&SolveOptions::default(), |m| {
         count += 1;
-        plans.push(plan_of(&m.atoms()));
+        plans.push(plan_of(&m.atoms_named("occurs", 2)));
         count < FIXED_CAP
     });
     let capped = count >= FIXED_CAP && !summary.exhausted;
@@ -299,16 +299,18 @@ impl Judge<'_> {
     }
 }
 
-/// Plans one condition in one mode and classifies its distinct plans.
-fn run_mode(
+/// The plans of one condition in one mode, in the order the planner returns them (answer sets
+/// in the solver's order in fixed mode, duplicates kept): (answer sets, plans, capped, error).
+type ModePlans = (usize, Vec<Vec<Symbol>>, bool, Option<String>);
+
+/// Plans one condition in one mode ([`ModePlans`]).
+fn mode_plans(
     desc: &Description,
     sources: &SourceMap,
     options: &Options,
     mode: Search,
-    judge: &mut Judge,
-) -> ModeResult {
-    let start = Instant::now();
-    let (answer_sets, plans, capped, error) = match mode {
+) -> ModePlans {
+    match mode {
         Search::Fixed(n) => match fixed_plans(desc, sources, options, n) {
             Ok((count, plans, capped)) => (count, plans, capped, None),
             Err(e) => (0, Vec::new(), false, Some(e)),
@@ -337,7 +339,19 @@ fn run_mode(
                 Err(e) => (0, Vec::new(), false, Some(e.to_string())),
             }
         }
-    };
+    }
+}
+
+/// Plans one condition in one mode and classifies its distinct plans.
+fn run_mode(
+    desc: &Description,
+    sources: &SourceMap,
+    options: &Options,
+    mode: Search,
+    judge: &mut Judge,
+) -> ModeResult {
+    let start = Instant::now();
+    let (answer_sets, plans, capped, error) = mode_plans(desc, sources, options, mode);
     let time = start.elapsed().as_secs_f64();
     let distinct: BTreeSet<Vec<Symbol>> = plans.into_iter().collect();
     let mut out = ModeResult {
@@ -693,6 +707,7 @@ pub struct Summary {
 
 mod report;
 pub use report::*;
+pub mod trace;
 
 #[cfg(test)]
 mod tests {
