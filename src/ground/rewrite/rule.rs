@@ -216,6 +216,7 @@ impl Rewriter<'_> {
             }
             ast::Head::Choice(c) => {
                 let mut es = Vec::new();
+                let before = extra.len();
                 for e in &c.elements {
                     let Some(e) = self.head_elem(e, &mut vars, &mut extra) else {
                         return;
@@ -223,7 +224,11 @@ impl Rewriter<'_> {
                     es.push(e);
                 }
                 if lower_upper(&c.lower, &c.upper) {
-                    gate_tuples = Some(None);
+                    // An interval in a head atom (`2 { p(1..4) } 2.`) is bound in the body, so
+                    // each instance holds one of the elements: no gate then.
+                    if extra.len() == before {
+                        gate_tuples = Some(None);
+                    }
                     // l { e } u :- B.  ==  { e } :- B.  and  :- B, not l #count{ e } u.
                     let agg = ast::BodyAggregate {
                         span: c.span,
@@ -305,6 +310,7 @@ impl Rewriter<'_> {
                 AggregateFunction::Count | AggregateFunction::Sum | AggregateFunction::SumPlus
             );
         let mut tuples = gated.then(Vec::new);
+        let before = extra.len();
         // l #f { w,t : a : c } u :- B.  ==  { a : c } :- B.  and
         // :- B, not l #f { w,t : a, c } u.
         // The tuple alone identifies an element, as in clingo 5.8: `2 #count { 1: p; 1: q }.`
@@ -356,6 +362,10 @@ impl Rewriter<'_> {
                 upper: h.upper.clone(),
             };
             self.bound_check(index, span, body, agg);
+        }
+        if extra.len() != before {
+            // An interval in a head atom is bound in the body: no gate (see `rule_instance`).
+            tuples = None;
         }
         Some((NHead::Choice(es), tuples))
     }
