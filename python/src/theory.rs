@@ -48,19 +48,6 @@ fn term(t: &TheoryTerm) -> Vec<Node> {
     out
 }
 
-/// A condition literal as clingo 5.8 prints it: its atom's symbol, `not` when negative.
-fn literal(ctl: &Control, l: i32) -> String {
-    let a = l.unsigned_abs();
-    let name = ctl
-        .symbol(a)
-        .map_or_else(|| format!("#aux({a})"), |s| s.to_string());
-    if l < 0 {
-        format!("not {name}")
-    } else {
-        name
-    }
-}
-
 /// The atom as data, its text as clingo 5.8 prints it.
 pub fn atom(ctl: &Control, a: &TheoryAtom) -> Atom {
     let elements = a
@@ -70,7 +57,7 @@ pub fn atom(ctl: &Control, a: &TheoryAtom) -> Atom {
             let terms: Vec<String> = e.terms.iter().map(|t| t.to_string()).collect();
             let mut text = terms.join(",");
             if !e.condition.is_empty() {
-                let lits: Vec<String> = e.condition.iter().map(|&l| literal(ctl, l)).collect();
+                let lits: Vec<String> = e.condition.iter().map(|&l| ctl.theory_literal_text(l)).collect();
                 text.push_str(": ");
                 text.push_str(&lits.join(","));
             }

@@ -78,17 +78,21 @@ impl Control {
     /// symbols.
     pub fn theory_atom_text(&self, atom: &TheoryAtom) -> String {
         let mut s = String::new();
-        atom.write(&mut s, &mut |l| {
-            let a = l.unsigned_abs();
-            let name = self
-                .symbol(a)
-                .map_or_else(|| format!("#aux({a})"), |s| s.to_string());
-            if l < 0 {
-                format!("not {name}")
-            } else {
-                name
-            }
-        });
+        atom.write(&mut s, &mut |l| self.theory_literal_text(l));
         s
+    }
+
+    /// A condition literal of a theory element as clingo 5.8 prints it: its atom's symbol
+    /// (`#aux(n)` for an atom without one), `not` in front when negative.
+    pub fn theory_literal_text(&self, l: crate::ground::program::Lit) -> String {
+        let a = l.unsigned_abs();
+        let name = self
+            .symbol(a)
+            .map_or_else(|| format!("#aux({a})"), |s| s.to_string());
+        if l < 0 {
+            format!("not {name}")
+        } else {
+            name
+        }
     }
 }

@@ -207,7 +207,8 @@ impl Grounder<'_> {
         let is_choice = matches!(stmt.head, NHead::Choice(_));
         // The tuples of a gated choice's elements (see `HeadGate`); `None` when one cannot be
         // read, and the instance is then not gated.
-        let mut gate_tuples: Option<Vec<Vec<SymId>>> = stmt.gate.as_ref().map(|_| Vec::new());
+        let gate = stmt.gate.as_deref();
+        let mut gate_tuples: Option<Vec<Vec<SymId>>> = gate.map(|_| Vec::new());
         match &stmt.head {
             NHead::None => {}
             NHead::Disj(es) | NHead::Choice(es) => {
@@ -224,8 +225,7 @@ impl Grounder<'_> {
                     if e.cond.is_empty() {
                         match self.atom_sym(&e.atom, &ctx.binding) {
                             Some(s) => {
-                                if let Some(ts) = &mut gate_tuples {
-                                    let gate = stmt.gate.as_deref().expect("a gate");
+                                if let (Some(ts), Some(gate)) = (&mut gate_tuples, gate) {
                                     if let Some(t) = self.gate_tuple(gate, i, s, &ctx.binding) {
                                         ts.push(t);
                                     }
@@ -240,7 +240,6 @@ impl Grounder<'_> {
                     let blen = ctx.body.len();
                     let mut found: Vec<(SymId, Vec<Lit>)> = Vec::new();
                     let mut undefined = false;
-                    let gate = stmt.gate.as_deref();
                     self.join(ctx, &e.cond, 0, &[], &mut |g, ctx| match g
                         .atom_sym(&e.atom, &ctx.binding)
                     {
@@ -281,7 +280,7 @@ impl Grounder<'_> {
                 }
             }
         }
-        if let (Some(gate), Some(tuples)) = (stmt.gate.as_deref(), gate_tuples) {
+        if let (Some(gate), Some(tuples)) = (gate, gate_tuples) {
             if !self.gate_reachable(gate, tuples, &ctx.binding) {
                 return;
             }
