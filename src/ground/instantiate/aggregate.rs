@@ -4,7 +4,7 @@
 //! assignments.
 //!
 //! Invariant: an aggregate over atoms of its own component keeps its positive dependency on
-//! them (complements are saturated atoms, not default negations).
+//! them (complements of element atoms are saturated atoms, not default negations).
 
 use super::*;
 
@@ -511,10 +511,10 @@ impl<'a> Grounder<'a> {
     /// weights are signed (Alviano, Faber, Gebser: "Rewriting recursive aggregates in answer
     /// set programming: back to monotonicity", TPLP 2015; gringo translates so too). A literal
     /// `l` weighing `-w < 0` counts as its complement with weight `w` (the bound grows by `w`),
-    /// which makes every disjunct monotone; the complement of an atom of the current component
-    /// is an atom `c` saturated on `A`, so that `A` keeps its positive dependency on `l`:
+    /// which makes every disjunct monotone; the complement of an atom is an atom `c` saturated
+    /// on `A`, so that `A` keeps its positive dependency on `l` (see `complement`):
     ///   c :- not l.   c :- A.   c | l :- not not A.
-    /// Other complements are default negations. Then `A :- bound' { lits = weights }` for each
+    /// The complement of `not l` is `l`. Then `A :- bound' { lits = weights }` for each
     /// disjunct that can hold; `True` when one always holds, `False` when none can.
     pub(super) fn saturated(&mut self, disjuncts: Vec<(Vec<(Lit, i64)>, i64)>) -> Truth {
         let mut live: Vec<(Vec<(Lit, i64)>, i64)> = Vec::new();
@@ -571,13 +571,12 @@ impl<'a> Grounder<'a> {
     }
 
     /// The complement of an element literal `l` inside the saturated atom `a` (see
-    /// `saturated`).
+    /// `saturated`). Every positive element atom is saturated, not only those of the current
+    /// component, as gringo does: the two agree on normal atoms (the saturating disjunction
+    /// never supports `l`, `c :- A.` satisfies it first), and an external atom so put in a rule
+    /// head is defined by a rule and loses its external value, as it does in clingo.
     pub(super) fn complement(&mut self, l: Lit, a: GroundAtom) -> Lit {
-        let recursive = l > 0 && {
-            let p = self.info(GroundAtom::of_lit(l)).pred;
-            p == u32::MAX || !self.domains[p as usize].complete
-        };
-        if !recursive {
+        if l < 0 {
             return self.negate_lit(l);
         }
         let c = self.aux();
