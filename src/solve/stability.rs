@@ -376,16 +376,55 @@ fn check(comp: &StabilityComponent, e: &Engine) -> Found {
             }
         }
     }
+    let in_y = match smaller_model(&mut sub, &vars) {
+        Minimality::Minimal => return Found::Nothing,
+        Minimality::Smaller(in_y) => in_y,
+        Minimality::Stopped => return Found::Stopped,
+    };
+    let in_u: Vec<bool> = in_n.iter().zip(&in_y).map(|(&t, &y)| t && !y).collect();
+    let (atoms, mut ext) = match reasons(comp, e, &in_u) {
+        Some(ext) => {
+            let atoms = (0..n).filter(|&i| in_u[i]).map(|i| comp.atoms[i]);
+            (atoms.collect(), ext)
+        }
+        None => {
+            // The fallback blocks the assignment, which only a true atom of `U` refutes.
+            let Some(t) = (0..n).find(|&i| in_u[i] && in_t[i]) else {
+                return Found::Nothing;
+            };
+            (vec![comp.atoms[t]], block(comp, e))
+        }
+    };
+    ext.sort_unstable();
+    ext.dedup();
+    Found::Set(LoopSet { atoms, ext })
+}
+
+/// What a search for a model of a reduct smaller than the candidate found.
+pub(crate) enum Minimality {
+    /// No model of the reduct strictly inside the candidate.
+    Minimal,
+    /// A smaller model of the reduct: per variable of `vars`, whether it is in it.
+    Smaller(Vec<bool>),
+    /// A limit (deadline, interrupt) stopped the check.
+    Stopped,
+}
+
+/// Searches the reduct `sub`, whose candidate atoms are `vars` (`None`: not in the candidate),
+/// for a model that leaves out at least one of them, and grows it to a maximal one inside the
+/// candidate (each round keeps the model and adds an atom): a minimal unfounded set touches few
+/// rules, so its nogoods are short. Used by the per-component check here and by the whole-model
+/// check of `solver::minimal`.
+pub(crate) fn smaller_model(sub: &mut Engine, vars: &[Option<Lit>]) -> Minimality {
     let strict: Vec<Lit> = vars.iter().flatten().map(|&l| !l).collect();
     if !sub.add_clause(&strict) {
-        return Found::Nothing;
+        return Minimality::Minimal;
     }
     match sub.search(&[]) {
         SearchResult::Sat => {}
-        SearchResult::Unsat => return Found::Nothing,
-        SearchResult::Unknown => return Found::Stopped,
+        SearchResult::Unsat => return Minimality::Minimal,
+        SearchResult::Unknown => return Minimality::Stopped,
     }
-    // Grow `Y` to a maximal model inside `T ∩ C` (each round keeps `Y` and adds an atom).
     let mut in_y: Vec<bool> = vars
         .iter()
         .map(|v| v.is_some_and(|v| sub.value(v) == Some(true)))
@@ -406,31 +445,15 @@ fn check(comp: &StabilityComponent, e: &Engine) -> Found {
         }
         match sub.search(&keep) {
             SearchResult::Sat => {
-                for (y, v) in in_y.iter_mut().zip(&vars) {
+                for (y, v) in in_y.iter_mut().zip(vars) {
                     *y = v.is_some_and(|v| sub.value(v) == Some(true));
                 }
             }
             SearchResult::Unsat => break,
-            SearchResult::Unknown => return Found::Stopped,
+            SearchResult::Unknown => return Minimality::Stopped,
         }
     }
-    let in_u: Vec<bool> = in_n.iter().zip(&in_y).map(|(&t, &y)| t && !y).collect();
-    let (atoms, mut ext) = match reasons(comp, e, &in_u) {
-        Some(ext) => {
-            let atoms = (0..n).filter(|&i| in_u[i]).map(|i| comp.atoms[i]);
-            (atoms.collect(), ext)
-        }
-        None => {
-            // The fallback blocks the assignment, which only a true atom of `U` refutes.
-            let Some(t) = (0..n).find(|&i| in_u[i] && in_t[i]) else {
-                return Found::Nothing;
-            };
-            (vec![comp.atoms[t]], block(comp, e))
-        }
-    };
-    ext.sort_unstable();
-    ext.dedup();
-    Found::Set(LoopSet { atoms, ext })
+    Minimality::Smaller(in_y)
 }
 
 /// The literals (all false now) that keep every rule with a head atom in `U` from supporting

@@ -24,16 +24,8 @@
 //!   back to blocking `M`'s whole atom assignment, which is sound for the same reason.
 
 use super::*;
-
-/// What the minimality check found.
-pub(super) enum Minimality {
-    /// No model of the reduct strictly inside the candidate: an answer set.
-    Minimal,
-    /// A smaller model of the reduct: per atom, whether it is in it.
-    Smaller(Vec<bool>),
-    /// A limit (deadline, interrupt) stopped the check.
-    Stopped,
-}
+use crate::solve::stability::smaller_model;
+use crate::solve::stability::Minimality;
 
 impl Solver {
     /// Whether the current total assignment's atoms form a minimal model of the reduct.
@@ -115,7 +107,6 @@ impl Solver {
                 }
             }
         }
-        let strict: Vec<Lit> = vars.iter().flatten().map(|&l| !l).collect();
         // Free externals keep their value in the reduct check.
         for &(a, _) in &self.prog.externals {
             if self.tr.free[a as usize] {
@@ -124,45 +115,7 @@ impl Solver {
                 }
             }
         }
-        if !sub.add_clause(&strict) {
-            return Minimality::Minimal;
-        }
-        match sub.search(&[]) {
-            SearchResult::Sat => {}
-            SearchResult::Unsat => return Minimality::Minimal,
-            SearchResult::Unknown => return Minimality::Stopped,
-        }
-        // Grow `Y` to a maximal model of the reduct inside `M` (each round keeps `Y` and adds
-        // an atom of `U`): a minimal unfounded set touches few rules, so its nogoods are short.
-        let mut in_y: Vec<bool> = vars
-            .iter()
-            .map(|v| v.is_some_and(|v| sub.value(v) == Some(true)))
-            .collect();
-        loop {
-            let keep: Vec<Lit> = vars
-                .iter()
-                .zip(&in_y)
-                .filter_map(|(v, &y)| v.filter(|_| y))
-                .collect();
-            let grow: Vec<Lit> = vars
-                .iter()
-                .zip(&in_y)
-                .filter_map(|(v, &y)| v.filter(|_| !y))
-                .collect();
-            if !sub.add_clause(&grow) {
-                break;
-            }
-            match sub.search(&keep) {
-                SearchResult::Sat => {
-                    for (y, v) in in_y.iter_mut().zip(&vars) {
-                        *y = v.is_some_and(|v| sub.value(v) == Some(true));
-                    }
-                }
-                SearchResult::Unsat => break,
-                SearchResult::Unknown => return Minimality::Stopped,
-            }
-        }
-        Minimality::Smaller(in_y)
+        smaller_model(&mut sub, &vars)
     }
 
     /// Per atom (index 0 unused), whether the current assignment makes it true.

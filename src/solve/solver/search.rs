@@ -6,8 +6,8 @@
 //! whole-program minimality check) when the program is not head-cycle-free; a blocked model (by its decisions, or its projection) is never reported
 //! again in the same call; constraints of one call hang on that call's guard.
 
-use super::minimal::Minimality;
 use super::*;
+use crate::solve::stability::Minimality;
 
 impl Solver {
     // ------------------------------------------------------------------ search primitives
