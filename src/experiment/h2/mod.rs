@@ -404,6 +404,39 @@ pub fn plan_pair(
     plan_pair_with(domain, name, scene, learned, fixed, None)
 }
 
+/// The judge of a pair (the ground truth is the knowledge base without learned axioms, `plain`)
+/// and the options every planner of the pair runs with (the learner's profile, planning on);
+/// shared by the trial and its trace (`trace::trace_pair`).
+fn judge_and_learner<'a>(
+    name: &str,
+    plain: &'a Description,
+    sources: &'a SourceMap,
+) -> Result<(Judge<'a>, Options), TrialError> {
+    let truth_config = PlanConfig {
+        overrides: shared_overrides(),
+        ..PlanConfig::default()
+    };
+    let truth = StateSearch::new(plain, sources, &truth_config)
+        .map_err(|e| TrialError::Input(format!("{name}: ground truth: {e}")))?;
+    let judge = Judge {
+        truth,
+        desc: plain,
+        sources,
+        minimal: None,
+        start: None,
+        transitions: HashMap::new(),
+    };
+    let learner = Options {
+        profile: Some("learner".into()),
+        overrides: shared_overrides(),
+        switches: Switches {
+            planning: Some(true),
+            ..Switches::default()
+        },
+    };
+    Ok((judge, learner))
+}
+
 /// [`plan_pair`], and with `fixed_one = Some(k)` also the reading "one axiom missing" in the
 /// fixed mode at horizon [`FIXED_HORIZON`]: the `learner` profile plus the targets other than
 /// `TARGETS[k]` (one target per pair, as H4 draws it, since a fixed-horizon solve costs as much
@@ -432,28 +465,7 @@ pub fn plan_pair_with(
         ..problem
     };
     let (taught, taught_sources) = (taught_problem.description(), taught_problem.sources);
-    let truth_config = PlanConfig {
-        overrides: shared_overrides(),
-        ..PlanConfig::default()
-    };
-    let truth = StateSearch::new(&plain, &sources, &truth_config)
-        .map_err(|e| TrialError::Input(format!("{name}: ground truth: {e}")))?;
-    let mut judge = Judge {
-        truth,
-        desc: &plain,
-        sources: &sources,
-        minimal: None,
-        start: None,
-        transitions: HashMap::new(),
-    };
-    let learner = Options {
-        profile: Some("learner".into()),
-        overrides: shared_overrides(),
-        switches: Switches {
-            planning: Some(true),
-            ..Switches::default()
-        },
-    };
+    let (mut judge, learner) = judge_and_learner(name, &plain, &sources)?;
     let mut condition = |desc: &Description, sources: &SourceMap| Condition {
         fixed: if fixed {
             run_mode(

@@ -14,13 +14,13 @@
 use serde::Serialize;
 
 use super::{
-    mode_plans, shared_overrides, Judge, Search, Statement, TrialError, FIXED_HORIZON, TARGETS,
+    judge_and_learner, mode_plans, shared_overrides, Judge, Search, Statement, TrialError,
+    FIXED_HORIZON, TARGETS,
 };
 use crate::action::{Options, Switches};
 use crate::experiment::Domain;
 use crate::explain::h3::{Goal, Scene};
-use crate::plan::{self, StateSearch};
-use std::collections::HashMap;
+use crate::plan;
 
 /// One plan as the planner returned it.
 #[derive(Clone, Debug, Serialize)]
@@ -92,28 +92,7 @@ pub fn trace_pair(
         axioms: learned.to_vec(),
         ..problem.clone()
     };
-    let truth_config = crate::plan::PlanConfig {
-        overrides: shared_overrides(),
-        ..crate::plan::PlanConfig::default()
-    };
-    let truth = StateSearch::new(&plain, &sources, &truth_config)
-        .map_err(|e| TrialError::Input(format!("{name}: ground truth: {e}")))?;
-    let mut judge = Judge {
-        truth,
-        desc: &plain,
-        sources: &sources,
-        minimal: None,
-        start: None,
-        transitions: HashMap::new(),
-    };
-    let learner = Options {
-        profile: Some("learner".into()),
-        overrides: shared_overrides(),
-        switches: Switches {
-            planning: Some(true),
-            ..Switches::default()
-        },
-    };
+    let (mut judge, learner) = judge_and_learner(name, &plain, &sources)?;
     let horizon = horizon.unwrap_or(FIXED_HORIZON);
     let mut kbs = vec![
         ("without".to_string(), plain.clone(), sources.clone()),
