@@ -376,24 +376,33 @@ impl Engine {
     /// then only fixed `head` false, or it was removed).
     pub fn raise_weight_bound(&mut self, head: Lit, bound: i64) -> bool {
         self.backtrack(0);
-        let Some(id) = self.weight_id(head) else {
-            return false;
+        let id = match self.lift_bound(head, bound) {
+            Ok(id) => id,
+            Err(unchanged) => return unchanged,
         };
-        let c = &mut self.wc.weights[id];
-        if !c.implication {
-            return false;
-        }
-        let new = bound as i128 + c.shift;
-        if new <= c.bound as i128 {
-            return true;
-        }
-        // Above the total the constraint only says `!head`; the bound stays representable.
-        c.bound = new.min(c.total as i128 + 1) as u64;
         if self.propagate_weight(id) || self.propagate().is_some() {
             self.inconsistent = true;
             return false;
         }
         true
+    }
+
+    /// Sets the bound of `head`'s implication constraint (see `raise_weight_bound`) to `bound`
+    /// when that is higher: `Ok` with the constraint's index when raised, `Err(true)` when the
+    /// bound already was as high, `Err(false)` when `head` has no implication constraint.
+    fn lift_bound(&mut self, head: Lit, bound: i64) -> Result<usize, bool> {
+        let id = self.weight_id(head).ok_or(false)?;
+        let c = &mut self.wc.weights[id];
+        if !c.implication {
+            return Err(false);
+        }
+        let new = bound as i128 + c.shift;
+        if new <= c.bound as i128 {
+            return Err(true);
+        }
+        // Above the total the constraint only says `!head`; the bound stays representable.
+        c.bound = new.min(c.total as i128 + 1) as u64;
+        Ok(id)
     }
 
     /// [`Engine::raise_weight_bound`] on the total assignment of a model, without leaving the
@@ -405,18 +414,10 @@ impl Engine {
         if self.decision_level() == 0 {
             return self.raise_weight_bound(head, bound);
         }
-        let Some(id) = self.weight_id(head) else {
-            return false;
+        let id = match self.lift_bound(head, bound) {
+            Ok(id) => id,
+            Err(unchanged) => return unchanged,
         };
-        let c = &mut self.wc.weights[id];
-        if !c.implication {
-            return false;
-        }
-        let new = bound as i128 + c.shift;
-        if new <= c.bound as i128 {
-            return true;
-        }
-        c.bound = new.min(c.total as i128 + 1) as u64;
         // The false literals by level: the bound is violated from the level where the sum of
         // their weights exceeds `total - bound`.
         let c = &self.wc.weights[id];

@@ -358,15 +358,10 @@ impl Engine {
         }
     }
 
-    /// Assigns `l` with a stored explanation: `l`, then `extra` if given, then the literals of
-    /// `weight_lits(id, of_true)`. Reuses the variable's explanation buffer.
-    pub(super) fn assign_weight_implied(
-        &mut self,
-        l: Lit,
-        extra: Option<Lit>,
-        id: usize,
-        of_true: bool,
-    ) {
+    /// The explanation slot of `l`'s variable (made on first use) and its buffer, taken out
+    /// and holding `l` alone; the caller completes it and puts it back.
+    #[inline]
+    fn explanation_buffer(&mut self, l: Lit) -> (usize, Vec<Lit>) {
         let v = l.var().index();
         if self.asg.stored_slot[v] == NO_SLOT {
             self.asg.stored_slot[v] = self.asg.stored.len() as u32;
@@ -376,6 +371,19 @@ impl Engine {
         let mut r = std::mem::take(&mut self.asg.stored[slot]);
         r.clear();
         r.push(l);
+        (slot, r)
+    }
+
+    /// Assigns `l` with a stored explanation: `l`, then `extra` if given, then the literals of
+    /// `weight_lits(id, of_true)`. Reuses the variable's explanation buffer.
+    pub(super) fn assign_weight_implied(
+        &mut self,
+        l: Lit,
+        extra: Option<Lit>,
+        id: usize,
+        of_true: bool,
+    ) {
+        let (slot, mut r) = self.explanation_buffer(l);
         r.extend(extra);
         self.weight_lits(id, of_true, &mut r);
         self.asg.stored[slot] = r;
@@ -398,15 +406,7 @@ impl Engine {
             self.assign_weight_implied(l, extra, id, of_true);
             return self.asg.stored_slot[l.var().index()] as usize;
         };
-        let v = l.var().index();
-        if self.asg.stored_slot[v] == NO_SLOT {
-            self.asg.stored_slot[v] = self.asg.stored.len() as u32;
-            self.asg.stored.push(Vec::new());
-        }
-        let slot = self.asg.stored_slot[v] as usize;
-        let mut r = std::mem::take(&mut self.asg.stored[slot]);
-        r.clear();
-        r.push(l);
+        let (slot, mut r) = self.explanation_buffer(l);
         r.extend_from_slice(&self.asg.stored[src][1..]);
         self.asg.stored[slot] = r;
         self.assign(l, Reason::Stored);
