@@ -29,15 +29,43 @@ import tempfile
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
 
-def run(cmd, timeout):
-    """(CPU seconds, optimum text or a failure word) of one run."""
+def child_cpu(cmd, timeout):
+    """(CPU seconds of the child, user + system, its stdout) of one run; None on timeout."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     try:
         out = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout).stdout
     except subprocess.TimeoutExpired:
-        return None, "TIMEOUT"
+        return None
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime), out
+
+
+def rows(pattern):
+    """The rows (name, file) of benches/data/opt whose file name matches `pattern`."""
+    files = sorted(glob.glob(os.path.join(ROOT, "benches", "data", "opt", "*.lp")))
+    return [(os.path.basename(f)[:-3], f) for f in files
+            if re.search(pattern, os.path.basename(f))]
+
+
+def ground_aspif(f, tmp):
+    """gringo's aspif of `f`, written once into `tmp`; returns its path."""
+    aspif = os.path.join(tmp, os.path.basename(f)[:-3] + ".aspif")
+    with open(aspif, "w") as out:
+        subprocess.run(["gringo", "--output=intermediate", f], stdout=out, check=True)
+    return aspif
+
+
+def default_lucent():
+    return os.path.join(os.environ.get("CARGO_TARGET_DIR", os.path.join(ROOT, "target")),
+                        "release", "lucent")
+
+
+def run(cmd, timeout):
+    """(CPU seconds, optimum text or a failure word) of one run."""
+    r = child_cpu(cmd, timeout)
+    if r is None:
+        return None, "TIMEOUT"
+    cpu, out = r
     if "OPTIMUM FOUND" not in out:
         return None, "NO-OPTIMUM"
     m = re.search(r"^Optimization\s*:\s*(.*)$", out, re.M)
@@ -72,8 +100,7 @@ def fmt(x):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--lucent", default=os.path.join(
-        os.environ.get("CARGO_TARGET_DIR", os.path.join(ROOT, "target")), "release", "lucent"))
+    ap.add_argument("--lucent", default=default_lucent())
     ap.add_argument("--timeout", type=float, default=60)
     ap.add_argument("--reps", type=int, default=1)
     ap.add_argument("--rows", default=".")
@@ -83,18 +110,13 @@ def main():
             sys.exit(f"{tool} is missing: apt-get install -y gringo clasp")
     if not os.access(a.lucent, os.X_OK):
         sys.exit(f"{a.lucent} is missing: cargo build --release")
-    files = sorted(f for f in glob.glob(os.path.join(ROOT, "benches", "data", "opt", "*.lp"))
-                   if re.search(a.rows, os.path.basename(f)))
     tmp = tempfile.mkdtemp(prefix="lucent-bench-opt-")
     usc = "--opt-strategy=usc"
     cols = {"e2e": ([], [], []), "solver": ([], [], [])}
     print(f"{'row':16} {'part':6} {'clingo_bb':>9} {'clingo_usc':>10} {'lucent_bb':>9} "
           f"{'lucent_usc':>10} {'bb/bb':>6} {'usc/usc':>7} {'best/best':>9}  optimum")
-    for f in files:
-        name = os.path.basename(f)[:-3]
-        aspif = os.path.join(tmp, name + ".aspif")
-        with open(aspif, "w") as out:
-            subprocess.run(["gringo", "--output=intermediate", f], stdout=out, check=True)
+    for name, f in rows(a.rows):
+        aspif = ground_aspif(f, tmp)
         parts = {
             "e2e": (["clingo", "-q", f], [a.lucent, "-q", f]),
             "solver": (["clasp", "-q", aspif], [a.lucent, "--mode=clasp", "-q", aspif]),

@@ -10,27 +10,20 @@ conflicts took a longer search path (the branch-and-bound bound, restarts, heuri
   scripts/opt_conflicts.py [--lucent target/release/lucent] [--rows RE] [--timeout 60]
                            [--args "--opt-strategy=usc"]"""
 import argparse
-import glob
 import os
 import re
-import resource
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+from bench_opt import child_cpu, default_lucent, ground_aspif, rows
 
 
 def stats(cmd, timeout):
     """(cpu seconds, models, choices, conflicts, optimum) of one run with --stats."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    try:
-        out = subprocess.run(cmd + ["--stats"], capture_output=True, text=True,
-                             timeout=timeout).stdout
-    except subprocess.TimeoutExpired:
+    r = child_cpu(cmd + ["--stats"], timeout)
+    if r is None:
         return None
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    cpu, out = r
 
     def num(key):
         m = re.search(rf"^{key}\s*:\s*(\d+)", out, re.M)
@@ -43,25 +36,20 @@ def stats(cmd, timeout):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--lucent", default=os.path.join(
-        os.environ.get("CARGO_TARGET_DIR", os.path.join(ROOT, "target")), "release", "lucent"))
+    ap.add_argument("--lucent", default=default_lucent())
     ap.add_argument("--rows", default=".")
     ap.add_argument("--timeout", type=float, default=60)
     ap.add_argument("--args", default="", help="extra arguments for both sides")
     a = ap.parse_args()
     extra = a.args.split()
-    files = sorted(f for f in glob.glob(os.path.join(ROOT, "benches", "data", "opt", "*.lp"))
-                   if re.search(a.rows, os.path.basename(f)))
+    files = rows(a.rows)
     if not files:
         sys.exit("no rows")
     tmp = tempfile.mkdtemp(prefix="lucent-opt-conflicts-")
     print(f"{'row':14} {'part':6} {'who':6} {'cpu':>7} {'models':>6} {'choices':>8} "
           f"{'conflicts':>9} {'confl/s':>8}  optimum")
-    for f in files:
-        name = os.path.basename(f)[:-3]
-        aspif = os.path.join(tmp, name + ".aspif")
-        with open(aspif, "w") as out:
-            subprocess.run(["gringo", "--output=intermediate", f], stdout=out, check=True)
+    for name, f in files:
+        aspif = ground_aspif(f, tmp)
         runs = [("solver", "clasp", ["clasp", "-q", aspif]),
                 ("solver", "lucent", [a.lucent, "--mode=clasp", "-q", aspif]),
                 ("e2e", "clingo", ["clingo", "-q", f]),
