@@ -128,8 +128,15 @@ impl<'a> Grounder<'a> {
                 .collect(),
         };
         // A positive aggregate over atoms still being grounded may need the translation that
-        // keeps Ferraris' semantics when it is not monotone (see `sum_saturated`).
-        let recursive = agg.sign == Sign::Positive && self.reads_incomplete(agg);
+        // keeps Ferraris' semantics when it is not monotone (see `sum_saturated`): when one of
+        // its ground elements reads such an atom, as gringo decides (an element of a recursive
+        // predicate that grounds to no atom leaves the aggregate over earlier atoms only).
+        let recursive = agg.sign == Sign::Positive
+            && self.reads_incomplete(agg)
+            && elems.iter().flat_map(|(_, c)| c).flatten().any(|&l| {
+                let p = self.info(GroundAtom::of_lit(l)).pred;
+                p == u32::MAX || !self.domains[p as usize].complete
+            });
         let mark = ctx.binding.mark();
         let blen = ctx.body.len();
         for cand in candidates {
