@@ -15,7 +15,13 @@ pub type Node = (u8, String, i32, usize);
 pub type Element = (Vec<Vec<Node>>, Vec<i32>, String);
 
 /// One atom: program literal (0 for a directive), name term, elements, guard, text.
-pub type Atom = (u32, Vec<Node>, Vec<Element>, Option<(String, Vec<Node>)>, String);
+pub type Atom = (
+    u32,
+    Vec<Node>,
+    Vec<Element>,
+    Option<(String, Vec<Node>)>,
+    String,
+);
 
 /// clingo 5.8's `TheoryTermType` numbering.
 fn type_number(t: TheoryTermType) -> u8 {
@@ -57,13 +63,27 @@ pub fn atom(ctl: &Control, a: &TheoryAtom) -> Atom {
             let terms: Vec<String> = e.terms.iter().map(|t| t.to_string()).collect();
             let mut text = terms.join(",");
             if !e.condition.is_empty() {
-                let lits: Vec<String> = e.condition.iter().map(|&l| ctl.theory_literal_text(l)).collect();
+                let lits: Vec<String> = e
+                    .condition
+                    .iter()
+                    .map(|&l| ctl.theory_literal_text(l))
+                    .collect();
                 text.push_str(": ");
                 text.push_str(&lits.join(","));
             }
-            (e.terms.iter().map(term).collect(), e.condition.clone(), text)
+            (
+                e.terms.iter().map(term).collect(),
+                e.condition.clone(),
+                text,
+            )
         })
         .collect();
     let guard = a.guard.as_ref().map(|(op, t)| (op.clone(), term(t)));
-    (a.atom, term(&a.term), elements, guard, ctl.theory_atom_text(a))
+    (
+        a.atom,
+        term(&a.term),
+        elements,
+        guard,
+        ctl.theory_atom_text(a),
+    )
 }
