@@ -20,8 +20,9 @@ submodules (``symbol``, ``control``, ``solving``, ``core``, ``theory_atoms``,
 Differences from clingo, by design or not yet done (docs/reference.md, "Python"): handles
 search on a thread of their own, lazily with ``yield_``, but without ``yield_``, ``async_`` hands the models to ``on_model`` on the thread that calls
 ``wait``/``get`` (clingo: on the search thread); a theory element whose condition has several
-literals has no ``condition_id``; ``on_unsat`` is accepted and never called; atoms added through the backend are not seen by
-later groundings.
+literals has no ``condition_id``; ``on_unsat`` gets the lower bounds of core-guided
+optimization (``--opt-strategy=usc``), each core's, as clingo, but the cores are Lucent's own;
+atoms added through the backend are not seen by later groundings.
 """
 
 import enum as _enum
@@ -574,7 +575,9 @@ class Control:
     ):
         self._theory_for_propagators()
         if yield_ or async_:
-            native = self._c.solve_handle(list(assumptions), bool(yield_), bool(async_))
+            native = self._c.solve_handle(
+                list(assumptions), bool(yield_), bool(async_), on_unsat
+            )
             # clingo 5.8 does not call on_core for a handle.
             stats = None if on_statistics is None else (lambda: self._user_statistics(on_statistics))
             return SolveHandle(native, bool(yield_), on_model, on_finish, None, on_last, stats)
@@ -585,7 +588,7 @@ class Control:
                 last[:] = [m]
                 return None if on_model is None else on_model(m)
         sat, unsat, exhausted, interrupted, _, core = self._c.solve(
-            list(assumptions), callback, False
+            list(assumptions), callback, False, on_unsat
         )
         result = SolveResult(sat, unsat, exhausted, interrupted)
         if on_core is not None and unsat and core is not None:

@@ -147,15 +147,17 @@ impl Control {
 
     /// Solves under `assumptions` (`(Symbol, bool)` pairs or literals), calling `on_model` on
     /// each model (a `False` result stops) and, with `collect`, returning the models.
-    #[pyo3(signature = (assumptions, on_model = None, collect = false))]
+    #[pyo3(signature = (assumptions, on_model = None, collect = false, on_unsat = None))]
     fn solve(
         &mut self,
         py: Python<'_>,
         assumptions: Vec<Bound<'_, PyAny>>,
         on_model: Option<PyObject>,
         collect: bool,
+        on_unsat: Option<PyObject>,
     ) -> PyResult<SolveOut> {
         let options = self.begin(&assumptions)?;
+        self.observe_lower_bounds(on_unsat);
         let names = &self.names;
         let priorities = Arc::new(self.ctl.minimize_priorities());
         let mut failure: Option<PyErr> = None;
@@ -218,14 +220,17 @@ impl Control {
 
     /// `Control.solve(yield_=..., async_=...)`: a `SolveHandle` over a search on its own thread
     /// (python/src/handle.rs); `yield_` stops it after each model, `async_` starts it at once.
+    #[pyo3(signature = (assumptions, yield_, async_, on_unsat = None))]
     fn solve_handle(
         slf: &Bound<'_, Self>,
         assumptions: Vec<Bound<'_, PyAny>>,
         yield_: bool,
         async_: bool,
+        on_unsat: Option<PyObject>,
     ) -> PyResult<SolveHandle> {
         let mut this = slf.borrow_mut();
         let options = this.begin(&assumptions)?;
+        this.observe_lower_bounds(on_unsat);
         let mode = HandleMode {
             yield_models: yield_,
             background: async_,
@@ -445,6 +450,29 @@ impl Control {
             names.extend((known + 1..=self.ctl.num_atoms()).map(|a| self.ctl.symbol(a)));
         }
         Ok(options)
+    }
+
+    /// clingo's `on_unsat`: `f` gets each lower bound the next call proves (a list, highest
+    /// priority first) on the solving thread; its exception stops the call and is raised by
+    /// it, as a propagator's. `None` removes the previous call's.
+    fn observe_lower_bounds(&mut self, f: Option<PyObject>) {
+        let observer = f.map(|f| {
+            let failure = self.failure.clone();
+            let interrupter = self.ctl.interrupter();
+            let call = move |bound: &[i64]| {
+                let failed = || failure.lock().unwrap_or_else(|p| p.into_inner());
+                if failed().is_some() {
+                    return;
+                }
+                if let Err(e) = Python::with_gil(|py| f.call1(py, (bound.to_vec(),))) {
+                    failed().get_or_insert(e);
+                    interrupter.interrupt();
+                }
+            };
+            let observer: lucent::solve::LowerBoundObserver = Arc::new(std::sync::Mutex::new(call));
+            observer
+        });
+        self.ctl.on_lower_bound(observer);
     }
 
     /// The first exception a propagator raised during the last call, raised.

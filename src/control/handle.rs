@@ -126,6 +126,14 @@ fn impossible(assumption: &(Symbol, bool)) -> Summary {
 }
 
 impl Control {
+    /// Sets (or removes) what later solve calls tell each lower bound of the costs they prove
+    /// (clingo's `on_unsat`): with `--opt-strategy=usc`, once per core, the optima of the
+    /// priority levels done and the current level's bound, highest priority first; branch and
+    /// bound tells nothing, as clingo's model-guided search. Called on the solving thread.
+    pub fn on_lower_bound(&mut self, observer: Option<crate::solve::LowerBoundObserver>) {
+        self.lower_observer = observer;
+    }
+
     /// Prepares a solve call: the pending statements to the solver, the propagators' `init`,
     /// the assumptions as solver literals. `Err` holds the summary of a call that an assumed
     /// atom that does not exist makes unsatisfiable.
@@ -135,6 +143,11 @@ impl Control {
             "a detached search is running: end it (Control::end_search) before the next call"
         );
         self.prepare();
+        let observer = self.lower_observer.clone();
+        self.solver
+            .as_mut()
+            .expect("prepared")
+            .set_lower_bound_observer(observer);
         self.init_propagators();
         let mut assumptions = Vec::new();
         self.external_assumptions(&mut assumptions);

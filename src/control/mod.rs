@@ -340,6 +340,8 @@ pub struct Control {
     propagators: propagator::Propagators,
     /// A detached search has the solver (`handle`).
     searching: bool,
+    /// Told the lower bounds core-guided optimization proves (`handle`).
+    lower_observer: Option<solve::LowerBoundObserver>,
 }
 
 /// Stops a solve call from another thread: see [`Control::interrupter`].
@@ -403,6 +405,7 @@ impl Control {
             ctl_of_gatom: Vec::new(),
             propagators: Default::default(),
             searching: false,
+            lower_observer: None,
         }
     }
 

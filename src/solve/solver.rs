@@ -132,7 +132,11 @@ pub struct Solver {
     applied: Config,
     /// The statistics of every call so far, added up.
     total: Stats,
+    /// Told each lower bound core-guided optimization proves (`core_guided`).
+    lower_observer: Option<LowerBoundObserver>,
 }
+
+pub use core_guided::LowerBoundObserver;
 
 /// What one guard owns: variables defined for the constraints it guards (cost and CR bounds,
 /// their conjunctions), and which of them head a weight constraint.
@@ -276,6 +280,7 @@ impl Solver {
             shared_bound: None,
             cube: Vec::new(),
             keep_learnts: false,
+            lower_observer: None,
         }
     }
 
