@@ -19,8 +19,7 @@ submodules (``symbol``, ``control``, ``solving``, ``core``, ``theory_atoms``,
 
 Differences from clingo, by design or not yet done (docs/reference.md, "Python"): handles
 search on a thread of their own, lazily with ``yield_``, but without ``yield_``, ``async_`` hands the models to ``on_model`` on the thread that calls
-``wait``/``get`` (clingo: on the search thread); a theory element whose condition has several
-literals has no ``condition_id``; ``on_unsat`` gets the lower bounds of core-guided
+``wait``/``get`` (clingo: on the search thread); ``on_unsat`` gets the lower bounds of core-guided
 optimization (``--opt-strategy=usc``), each core's, as clingo, but the cores are Lucent's own;
 atoms added through the backend are not seen by later groundings.
 """
@@ -460,19 +459,16 @@ class TheoryTerm:
 
 class TheoryElement:
     """clingo's ``TheoryElement``: ``terms``, ``condition`` (program literals) and
-    ``condition_id`` (the literal of a one-literal condition, 0 for an empty one; ``None`` for a
-    condition of several literals, which Lucent does not name by one literal)."""
+    ``condition_id``: 0 for an empty condition, its literal for one literal, and for several
+    a number of its own above the atoms (from ``2**28 + 1``, as clingo 5.8), which
+    ``PropagateInit.solver_literal`` turns into a literal true exactly when the condition
+    holds."""
 
-    def __init__(self, terms, condition, text):
+    def __init__(self, terms, condition, condition_id, text):
         self.terms = [TheoryTerm._read(t)[0] for t in terms]
         self.condition = list(condition)
+        self.condition_id = condition_id
         self._text = text
-        if not self.condition:
-            self.condition_id = 0
-        elif len(self.condition) == 1:
-            self.condition_id = self.condition[0]
-        else:
-            self.condition_id = None
 
     def __str__(self):
         return self._text

@@ -134,12 +134,23 @@ class PropagateInit:
         self.number_of_threads = threads
         self.assignment = Assignment(live)
         self.check_mode = PropagatorCheckMode.Total
+        # condition_id -> condition, for the theory elements' ids that are no atoms.
+        self._conditions = None
 
     def solver_literal(self, literal):
         if literal < 0:
             return -self.solver_literal(-literal)
         if literal in self._lit:
             return self._lit[literal]
+        if self._conditions is None:
+            self._conditions = {
+                e.condition_id: e.condition
+                for a in self.theory_atoms
+                for e in a.elements
+                if len(e.condition) > 1 or not e.condition
+            }
+        if literal in self._conditions:
+            return self._l.condition_literal(self._conditions[literal])
         raise RuntimeError(f"lucent: {literal} is not a program literal")
 
     def add_watch(self, literal, thread_id=None):

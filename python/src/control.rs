@@ -291,11 +291,7 @@ impl Control {
 
     /// The ground theory atoms, as data (see `theory.rs`).
     fn theory_atoms(&self) -> Vec<crate::theory::Atom> {
-        self.ctl
-            .theory_atoms()
-            .iter()
-            .map(|a| crate::theory::atom(&self.ctl, a))
-            .collect()
+        crate::theory::atoms(&self.ctl)
     }
 
     /// The value of the constant `name` (`#const` or `-c`), or `None` (clingo's `get_const`).

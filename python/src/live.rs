@@ -265,6 +265,18 @@ impl Live {
         self.control(|c| Ok(c.has_watch(l)))
     }
 
+    /// In `init`: the solver literal of a theory element's condition (program literals), a
+    /// variable defined as their conjunction when there are several. One thread only.
+    fn condition_literal(&self, condition: Vec<i32>) -> PyResult<Literal> {
+        self.init(|i| {
+            i.condition_literal(&condition).ok_or_else(|| {
+                PyRuntimeError::new_err(
+                    "lucent: a condition of several literals has a solver literal with one thread (-t 1) only",
+                )
+            })
+        })
+    }
+
     /// A new variable's positive literal: in `init` kept across solve calls, during search
     /// for this call only (clingo's volatile literal). One thread only.
     fn add_literal(&self) -> PyResult<Literal> {
