@@ -242,25 +242,27 @@ class SymbolicAtoms:
     """clingo's ``SymbolicAtoms``: iteration, lookup by symbol, ``by_signature``."""
 
     def __init__(self, native):
-        self._c = native
+        # The native Control, or a model's context (``SolveControl``: ``_atoms``, ``_atom``).
+        self._atoms = getattr(native, "_atoms", None) or native.symbolic_atoms
+        self._atom = getattr(native, "_atom", None) or native.symbolic_atom
 
     def _all(self):
-        return [SymbolicAtom(*t) for t in self._c.symbolic_atoms()]
+        return [SymbolicAtom(*t) for t in self._atoms()]
 
     def __iter__(self):
         return iter(self._all())
 
     def __len__(self):
-        return len(self._c.symbolic_atoms())
+        return len(self._atoms())
 
     def __getitem__(self, symbol):
-        found = self._c.symbolic_atom(symbol)
+        found = self._atom(symbol)
         if found is None:
             return None
         return SymbolicAtom(symbol, *found)
 
     def __contains__(self, symbol):
-        return self._c.symbolic_atom(symbol) is not None
+        return self._atom(symbol) is not None
 
     def by_signature(self, name, arity, positive=True):
         return iter([a for a in self._all() if a.symbol.match(name, arity, positive)])

@@ -18,6 +18,7 @@ use std::sync::Arc;
 
 use crate::handle::SolveHandle;
 use crate::model::{AtomNames, Model};
+use crate::solve_control::SolveControl;
 use crate::symbol::{to_symbol, Symbol};
 
 fn error(e: impl std::fmt::Display) -> PyErr {
@@ -36,6 +37,8 @@ pub struct Control {
     failure: crate::propagator::Failure,
     /// The symbol of each atom, shared with the models (extended before each solve call).
     names: AtomNames,
+    /// The current (or last) solve call's `SolveControl`, given to its models.
+    context: Option<Py<SolveControl>>,
 }
 
 /// A summary as flags: satisfiable, unsatisfiable, exhausted, interrupted, and the core.
@@ -85,6 +88,7 @@ impl Control {
             last: None,
             failure: Default::default(),
             names: AtomNames::default(),
+            context: None,
         })
     }
 
@@ -159,6 +163,7 @@ impl Control {
         let options = self.begin(&assumptions)?;
         self.observe_lower_bounds(on_unsat);
         let names = &self.names;
+        let context = self.context.as_ref().map(|c| c.clone_ref(py));
         let priorities = Arc::new(self.ctl.minimize_priorities());
         let mut failure: Option<PyErr> = None;
         let mut kept: Vec<Py<Model>> = Vec::new();
@@ -170,7 +175,13 @@ impl Control {
             if on_model.is_none() && !collect {
                 return true;
             }
-            let model = match Py::new(py, Model::new(m, names.clone(), priorities.clone())) {
+            let model = Model::new(
+                m,
+                names.clone(),
+                priorities.clone(),
+                context.as_ref().map(|c| c.clone_ref(py)),
+            );
+            let model = match Py::new(py, model) {
                 Ok(model) => model,
                 Err(e) => {
                     failure = Some(e);
@@ -445,6 +456,12 @@ impl Control {
             let names = Arc::make_mut(&mut self.names);
             names.extend((known + 1..=self.ctl.num_atoms()).map(|a| self.ctl.symbol(a)));
         }
+        let context = SolveControl::new(
+            self.names.clone(),
+            self.ctl.atom_kinds(),
+            self.ctl.model_clauses(),
+        );
+        self.context = Some(Python::with_gil(|py| Py::new(py, context))?);
         Ok(options)
     }
 
@@ -504,8 +521,9 @@ impl Control {
     /// A model of a handle's search as a Python `Model`.
     pub fn read_model(&self, raw: &lucent::solve::Model, names: &AtomNames) -> Model {
         let priorities = Arc::new(self.ctl.minimize_priorities());
+        let context = Python::with_gil(|py| self.context.as_ref().map(|c| c.clone_ref(py)));
         self.ctl
-            .read_model(raw, |m| Model::new(m, names.clone(), priorities))
+            .read_model(raw, |m| Model::new(m, names.clone(), priorities, context))
     }
 
     /// The end of a handle's search: the solver back, the call recorded for the statistics.

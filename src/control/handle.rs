@@ -134,6 +134,16 @@ impl Control {
         self.lower_observer = observer;
     }
 
+    /// Where a model callback puts clauses for the rest of its solve call (clingo's
+    /// `SolveControl.add_clause`): each clause is program literals (`a` true, `-a` false),
+    /// added under the call's guard before the search goes on, so it ends with the call.
+    /// Clauses left when a call ends are dropped; with `-t N` they reach thread 0 only.
+    pub fn model_clauses(&mut self) -> crate::solve::ModelClauses {
+        self.model_clauses
+            .get_or_insert_with(Default::default)
+            .clone()
+    }
+
     /// Prepares a solve call: the pending statements to the solver, the propagators' `init`,
     /// the assumptions as solver literals. `Err` holds the summary of a call that an assumed
     /// atom that does not exist makes unsatisfiable.
@@ -144,10 +154,13 @@ impl Control {
         );
         self.prepare();
         let observer = self.lower_observer.clone();
-        self.solver
-            .as_mut()
-            .expect("prepared")
-            .set_lower_bound_observer(observer);
+        let clauses = self.model_clauses.clone();
+        if let Some(c) = &clauses {
+            c.lock().unwrap_or_else(|p| p.into_inner()).clear();
+        }
+        let solver = self.solver.as_mut().expect("prepared");
+        solver.set_lower_bound_observer(observer);
+        solver.set_model_clauses(clauses);
         self.init_propagators();
         let mut assumptions = Vec::new();
         self.external_assumptions(&mut assumptions);

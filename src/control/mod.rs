@@ -342,6 +342,8 @@ pub struct Control {
     searching: bool,
     /// Told the lower bounds core-guided optimization proves (`handle`).
     lower_observer: Option<solve::LowerBoundObserver>,
+    /// Clauses model callbacks add (`handle`), made at the first `model_clauses`.
+    model_clauses: Option<solve::ModelClauses>,
 }
 
 /// Stops a solve call from another thread: see [`Control::interrupter`].
@@ -406,6 +408,7 @@ impl Control {
             propagators: Default::default(),
             searching: false,
             lower_observer: None,
+            model_clauses: None,
         }
     }
 

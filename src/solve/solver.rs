@@ -134,7 +134,14 @@ pub struct Solver {
     total: Stats,
     /// Told each lower bound core-guided optimization proves (`core_guided`).
     lower_observer: Option<LowerBoundObserver>,
+    /// Clauses the model callback adds (`set_model_clauses`), and the running call's guard.
+    model_clauses: Option<ModelClauses>,
+    call_guard: Option<Lit>,
 }
+
+/// Clauses (aspif literals) a model callback adds for the rest of its solve call (clingo's
+/// `SolveControl.add_clause`): the solver takes them before its next search.
+pub type ModelClauses = std::sync::Arc<std::sync::Mutex<Vec<Vec<i32>>>>;
 
 pub use core_guided::LowerBoundObserver;
 
@@ -281,6 +288,8 @@ impl Solver {
             cube: Vec::new(),
             keep_learnts: false,
             lower_observer: None,
+            model_clauses: None,
+            call_guard: None,
         }
     }
 
@@ -680,6 +689,7 @@ impl Solver {
         assume.extend_from_slice(&self.cube);
         let call_guard = self.new_guard();
         assume.push(call_guard);
+        self.call_guard = Some(call_guard);
         let mut call = Call {
             count: 0,
             phase_count: 0,
@@ -714,6 +724,7 @@ impl Solver {
                 .filter(|&l| failed.contains(&self.lit_of(l)))
                 .collect()
         });
+        self.call_guard = None;
         self.retire(call_guard);
         let outcome = if call.count > 0 {
             if call.optimum && call.has_costs {
