@@ -14,14 +14,14 @@ Control's calls; this module shapes them as clingo's classes (``Control``, ``Sol
 the robot's verbs ``plan`` and ``explain``, which return Python values.
 
 Applications (``Application``, ``clingo_main``) are in ``lucent.application``, clingo's
-submodules (``symbol``, ``control``, ``solving``, ``core``, ``theory_atoms``) beside it.
+submodules (``symbol``, ``control``, ``solving``, ``core``, ``theory_atoms``,
+``propagator``) beside it.
 
 Differences from clingo, by design or not yet done (docs/reference.md, "Python"): handles
 search on a thread of their own, lazily with ``yield_``, but without ``yield_``, ``async_`` hands the models to ``on_model`` on the thread that calls
-``wait``/``get`` (clingo: on the search thread); propagators see a snapshot of the assignment
-per callback and cannot ``add_literal``; a theory element whose condition has several
-literals has no ``condition_id``; ``on_unsat`` is accepted and never called; atoms added through the backend are not seen by
-later groundings.
+``wait``/``get`` (clingo: on the search thread); ``on_unsat`` gets the lower bounds of core-guided
+optimization (``--opt-strategy=usc``), each core's, as clingo, but the cores are Lucent's own;
+atoms added through the backend are not seen by later groundings.
 """
 
 import enum as _enum
@@ -39,6 +39,13 @@ from ._lucent import (  # noqa: F401 (re-exported: clingo's names)
     SymbolType,
     Tuple_,
     parse_term,
+)
+from .propagator import (  # noqa: F401 (re-exported: clingo's names)
+    Assignment,
+    PropagateControl,
+    PropagateInit,
+    PropagatorCheckMode,
+    Trail,
 )
 
 __version__ = "5.8.0"
@@ -235,25 +242,27 @@ class SymbolicAtoms:
     """clingo's ``SymbolicAtoms``: iteration, lookup by symbol, ``by_signature``."""
 
     def __init__(self, native):
-        self._c = native
+        # The native Control, or a model's context (``SolveControl``: ``_atoms``, ``_atom``).
+        self._atoms = getattr(native, "_atoms", None) or native.symbolic_atoms
+        self._atom = getattr(native, "_atom", None) or native.symbolic_atom
 
     def _all(self):
-        return [SymbolicAtom(*t) for t in self._c.symbolic_atoms()]
+        return [SymbolicAtom(*t) for t in self._atoms()]
 
     def __iter__(self):
         return iter(self._all())
 
     def __len__(self):
-        return len(self._c.symbolic_atoms())
+        return len(self._atoms())
 
     def __getitem__(self, symbol):
-        found = self._c.symbolic_atom(symbol)
+        found = self._atom(symbol)
         if found is None:
             return None
         return SymbolicAtom(symbol, *found)
 
     def __contains__(self, symbol):
-        return self._c.symbolic_atom(symbol) is not None
+        return self._atom(symbol) is not None
 
     def by_signature(self, name, arity, positive=True):
         return iter([a for a in self._all() if a.symbol.match(name, arity, positive)])
@@ -356,58 +365,6 @@ def _truth(value):
     return value
 
 
-class PropagatorCheckMode:
-    """clingo's ``PropagatorCheckMode``: when ``check`` runs (total assignments, every
-    propagation fixpoint, both, never)."""
-
-    Off = 0
-    Total = 1
-    Fixpoint = 2
-    Both = 3
-
-
-class _Assignment:
-    """clingo's ``Assignment`` over a snapshot taken when the callback started."""
-
-    def __init__(self, values, decision_level, is_total, decisions=()):
-        self._v = values
-        self.decision_level = decision_level
-        self.is_total = is_total
-        self._d = decisions
-
-    def decision(self, level):
-        """The decision literal of ``level`` (1 to ``decision_level``)."""
-        if not 1 <= level <= len(self._d) or self._d[level - 1] == 0:
-            raise RuntimeError(f"lucent: no decision at level {level}")
-        return self._d[level - 1]
-
-    def _raw(self, lit):
-        if lit == 0 or abs(lit) > len(self._v):
-            raise RuntimeError(f"lucent: {lit} is not a solver literal")
-        v = self._v[abs(lit) - 1]
-        return v if lit > 0 else -v
-
-    def value(self, lit):
-        v = self._raw(lit)
-        return None if v == 0 else v > 0
-
-    def is_true(self, lit):
-        return self._raw(lit) > 0
-
-    def is_false(self, lit):
-        return self._raw(lit) < 0
-
-    def is_fixed(self, lit):
-        return abs(self._raw(lit)) == 2
-
-    @property
-    def size(self):
-        return len(self._v)
-
-    def __len__(self):
-        return len(self._v)
-
-
 class _AtomList:
     """``init.symbolic_atoms``: iteration, lookup by symbol and ``by_signature``."""
 
@@ -504,19 +461,16 @@ class TheoryTerm:
 
 class TheoryElement:
     """clingo's ``TheoryElement``: ``terms``, ``condition`` (program literals) and
-    ``condition_id`` (the literal of a one-literal condition, 0 for an empty one; ``None`` for a
-    condition of several literals, which Lucent does not name by one literal)."""
+    ``condition_id``: 0 for an empty condition, its literal for one literal, and for several
+    a number of its own above the atoms (from ``2**28 + 1``, as clingo 5.8), which
+    ``PropagateInit.solver_literal`` turns into a literal true exactly when the condition
+    holds."""
 
-    def __init__(self, terms, condition, text):
+    def __init__(self, terms, condition, condition_id, text):
         self.terms = [TheoryTerm._read(t)[0] for t in terms]
         self.condition = list(condition)
+        self.condition_id = condition_id
         self._text = text
-        if not self.condition:
-            self.condition_id = 0
-        elif len(self.condition) == 1:
-            self.condition_id = self.condition[0]
-        else:
-            self.condition_id = None
 
     def __str__(self):
         return self._text
@@ -543,88 +497,33 @@ class TheoryAtom:
         return f"TheoryAtom({self._text})"
 
 
-class _PropagateInit:
-    """clingo's ``PropagateInit``; watches and clauses act when ``init`` returns."""
-
-    def __init__(self, atoms, threads, values, theory_atoms=()):
-        self._lit = {a: lit for (_, a, _, _, lit) in atoms}
-        self.theory_atoms = list(theory_atoms)
-        self.symbolic_atoms = _AtomList([SymbolicAtom(s, a, f, e) for (s, a, f, e, _) in atoms])
-        self.number_of_threads = threads
-        self.assignment = _Assignment(values, 0, False)
-        self.check_mode = PropagatorCheckMode.Total
-        self._watches = []
-        self._clauses = []
-
-    def solver_literal(self, literal):
-        if literal < 0:
-            return -self._lit[-literal]
-        return self._lit[literal]
-
-    def add_watch(self, literal, thread_id=None):
-        self._watches.append(literal)
-
-    def add_clause(self, clause):
-        self._clauses.append(list(clause))
-        return True
-
-
-class _PropagateControl:
-    """clingo's ``PropagateControl``; what it is asked acts when the callback returns, in order."""
-
-    def __init__(self, thread_id, assignment):
-        self.thread_id = thread_id
-        self.assignment = assignment
-        self._ops = []
-
-    def add_clause(self, clause, tag=False, lock=False):
-        self._ops.append(("c", list(clause)))
-        return True
-
-    def add_nogood(self, nogood, tag=False, lock=False):
-        self._ops.append(("c", [-lit for lit in nogood]))
-        return True
-
-    def propagate(self):
-        self._ops.append(("p", []))
-        return True
-
-    def add_watch(self, literal):
-        self._ops.append(("w", [literal]))
-
-    def remove_watch(self, literal):
-        self._ops.append(("u", [literal]))
-
-
 class _PropagatorAdapter:
-    """What the native Control calls: plain data in, operations out (python/src/propagator.rs)."""
+    """What the native Control calls (python/src/propagator.rs): each callback gets a live
+    view of the solver, valid while it runs (``lucent.propagator``)."""
 
     def __init__(self, propagator):
         self._p = propagator
         # The Control's theory atoms when the solve call started (set by Control.solve).
         self._theory = ()
 
-    def _init(self, atoms, threads, values):
-        init = _PropagateInit(atoms, threads, values, self._theory)
+    def _init(self, atoms, threads, live):
+        symbolic = _AtomList([SymbolicAtom(s, a, f, e) for (s, a, f, e, _) in atoms])
+        init = PropagateInit(atoms, threads, live, self._theory, symbolic)
         if hasattr(self._p, "init"):
             self._p.init(init)
-        return init._watches, init._clauses, int(init.check_mode)
+        return int(init.check_mode)
 
-    def _propagate(self, thread_id, changes, snapshot):
-        ctl = _PropagateControl(thread_id, _Assignment(*snapshot))
+    def _propagate(self, thread_id, changes, live):
         if hasattr(self._p, "propagate"):
-            self._p.propagate(ctl, changes)
-        return ctl._ops
+            self._p.propagate(PropagateControl(thread_id, live), changes)
 
-    def _undo(self, thread_id, changes, snapshot):
+    def _undo(self, thread_id, changes, live):
         if hasattr(self._p, "undo"):
-            self._p.undo(thread_id, _Assignment(*snapshot), changes)
+            self._p.undo(thread_id, Assignment(live), changes)
 
-    def _check(self, thread_id, snapshot):
-        ctl = _PropagateControl(thread_id, _Assignment(*snapshot))
+    def _check(self, thread_id, live):
         if hasattr(self._p, "check"):
-            self._p.check(ctl)
-        return ctl._ops
+            self._p.check(PropagateControl(thread_id, live))
 
 
 class Control:
@@ -674,7 +573,9 @@ class Control:
     ):
         self._theory_for_propagators()
         if yield_ or async_:
-            native = self._c.solve_handle(list(assumptions), bool(yield_), bool(async_))
+            native = self._c.solve_handle(
+                list(assumptions), bool(yield_), bool(async_), on_unsat
+            )
             # clingo 5.8 does not call on_core for a handle.
             stats = None if on_statistics is None else (lambda: self._user_statistics(on_statistics))
             return SolveHandle(native, bool(yield_), on_model, on_finish, None, on_last, stats)
@@ -685,7 +586,7 @@ class Control:
                 last[:] = [m]
                 return None if on_model is None else on_model(m)
         sat, unsat, exhausted, interrupted, _, core = self._c.solve(
-            list(assumptions), callback, False
+            list(assumptions), callback, False, on_unsat
         )
         result = SolveResult(sat, unsat, exhausted, interrupted)
         if on_core is not None and unsat and core is not None:
@@ -708,9 +609,8 @@ class Control:
         self._c.release_external(external)
 
     def register_propagator(self, propagator):
-        """clingo's ``register_propagator``: ``init``, ``propagate``, ``undo``, ``check``
-        (total assignments) as clingo calls them; inside one callback the assignment is the
-        one the callback started with (see python/src/propagator.rs)."""
+        """clingo's ``register_propagator``: ``init``, ``propagate``, ``undo``, ``check`` as
+        clingo calls them, over live views of the solver (``lucent.propagator``)."""
         adapter = _PropagatorAdapter(propagator)
         self._adapters.append(adapter)
         self._c.register_propagator(adapter)

@@ -18,6 +18,7 @@ use std::sync::Arc;
 
 use crate::handle::SolveHandle;
 use crate::model::{AtomNames, Model};
+use crate::solve_control::SolveControl;
 use crate::symbol::{to_symbol, Symbol};
 
 fn error(e: impl std::fmt::Display) -> PyErr {
@@ -36,6 +37,8 @@ pub struct Control {
     failure: crate::propagator::Failure,
     /// The symbol of each atom, shared with the models (extended before each solve call).
     names: AtomNames,
+    /// The current (or last) solve call's `SolveControl`, given to its models.
+    context: Option<Py<SolveControl>>,
 }
 
 /// A summary as flags: satisfiable, unsatisfiable, exhausted, interrupted, and the core.
@@ -85,6 +88,7 @@ impl Control {
             last: None,
             failure: Default::default(),
             names: AtomNames::default(),
+            context: None,
         })
     }
 
@@ -147,16 +151,19 @@ impl Control {
 
     /// Solves under `assumptions` (`(Symbol, bool)` pairs or literals), calling `on_model` on
     /// each model (a `False` result stops) and, with `collect`, returning the models.
-    #[pyo3(signature = (assumptions, on_model = None, collect = false))]
+    #[pyo3(signature = (assumptions, on_model = None, collect = false, on_unsat = None))]
     fn solve(
         &mut self,
         py: Python<'_>,
         assumptions: Vec<Bound<'_, PyAny>>,
         on_model: Option<PyObject>,
         collect: bool,
+        on_unsat: Option<PyObject>,
     ) -> PyResult<SolveOut> {
         let options = self.begin(&assumptions)?;
+        self.observe_lower_bounds(on_unsat);
         let names = &self.names;
+        let context = self.context.as_ref().map(|c| c.clone_ref(py));
         let priorities = Arc::new(self.ctl.minimize_priorities());
         let mut failure: Option<PyErr> = None;
         let mut kept: Vec<Py<Model>> = Vec::new();
@@ -168,7 +175,13 @@ impl Control {
             if on_model.is_none() && !collect {
                 return true;
             }
-            let model = match Py::new(py, Model::new(m, names.clone(), priorities.clone())) {
+            let model = Model::new(
+                m,
+                names.clone(),
+                priorities.clone(),
+                context.as_ref().map(|c| c.clone_ref(py)),
+            );
+            let model = match Py::new(py, model) {
                 Ok(model) => model,
                 Err(e) => {
                     failure = Some(e);
@@ -218,14 +231,17 @@ impl Control {
 
     /// `Control.solve(yield_=..., async_=...)`: a `SolveHandle` over a search on its own thread
     /// (python/src/handle.rs); `yield_` stops it after each model, `async_` starts it at once.
+    #[pyo3(signature = (assumptions, yield_, async_, on_unsat = None))]
     fn solve_handle(
         slf: &Bound<'_, Self>,
         assumptions: Vec<Bound<'_, PyAny>>,
         yield_: bool,
         async_: bool,
+        on_unsat: Option<PyObject>,
     ) -> PyResult<SolveHandle> {
         let mut this = slf.borrow_mut();
         let options = this.begin(&assumptions)?;
+        this.observe_lower_bounds(on_unsat);
         let mode = HandleMode {
             yield_models: yield_,
             background: async_,
@@ -286,11 +302,7 @@ impl Control {
 
     /// The ground theory atoms, as data (see `theory.rs`).
     fn theory_atoms(&self) -> Vec<crate::theory::Atom> {
-        self.ctl
-            .theory_atoms()
-            .iter()
-            .map(|a| crate::theory::atom(&self.ctl, a))
-            .collect()
+        crate::theory::atoms(&self.ctl)
     }
 
     /// The value of the constant `name` (`#const` or `-c`), or `None` (clingo's `get_const`).
@@ -444,7 +456,36 @@ impl Control {
             let names = Arc::make_mut(&mut self.names);
             names.extend((known + 1..=self.ctl.num_atoms()).map(|a| self.ctl.symbol(a)));
         }
+        let context = SolveControl::new(
+            self.names.clone(),
+            self.ctl.atom_kinds(),
+            self.ctl.model_clauses(),
+        );
+        self.context = Some(Python::with_gil(|py| Py::new(py, context))?);
         Ok(options)
+    }
+
+    /// clingo's `on_unsat`: `f` gets each lower bound the next call proves (a list, highest
+    /// priority first) on the solving thread; its exception stops the call and is raised by
+    /// it, as a propagator's. `None` removes the previous call's.
+    fn observe_lower_bounds(&mut self, f: Option<PyObject>) {
+        let observer = f.map(|f| {
+            let failure = self.failure.clone();
+            let interrupter = self.ctl.interrupter();
+            let call = move |bound: &[i64]| {
+                let failed = || failure.lock().unwrap_or_else(|p| p.into_inner());
+                if failed().is_some() {
+                    return;
+                }
+                if let Err(e) = Python::with_gil(|py| f.call1(py, (bound.to_vec(),))) {
+                    failed().get_or_insert(e);
+                    interrupter.interrupt();
+                }
+            };
+            let observer: lucent::solve::LowerBoundObserver = Arc::new(std::sync::Mutex::new(call));
+            observer
+        });
+        self.ctl.on_lower_bound(observer);
     }
 
     /// The first exception a propagator raised during the last call, raised.
@@ -480,8 +521,9 @@ impl Control {
     /// A model of a handle's search as a Python `Model`.
     pub fn read_model(&self, raw: &lucent::solve::Model, names: &AtomNames) -> Model {
         let priorities = Arc::new(self.ctl.minimize_priorities());
+        let context = Python::with_gil(|py| self.context.as_ref().map(|c| c.clone_ref(py)));
         self.ctl
-            .read_model(raw, |m| Model::new(m, names.clone(), priorities))
+            .read_model(raw, |m| Model::new(m, names.clone(), priorities, context))
     }
 
     /// The end of a handle's search: the solver back, the call recorded for the statistics.

@@ -1,8 +1,10 @@
 //! `lucent._lucent`, the native module of the `lucent` Python package (issue 33 item 2): the
 //! `Symbol` type and constructors (`symbol.rs`), answer sets (`model.rs`), the native Control
-//! with its backend calls (`control.rs`), solve handles (`handle.rs`), Python propagators (`propagator.rs`), theory atoms
-//! (`theory.rs`) and the command line in memory for the robot verbs
-//! (`run_cli`). python/lucent/__init__.py builds clingo's API on top.
+//! with its backend calls (`control.rs`), solve handles (`handle.rs`), Python propagators
+//! (`propagator.rs`) and their live views of the solver (`live.rs`), a model's solve control
+//! (`solve_control.rs`), theory atoms (`theory.rs`)
+//! and the command line in memory for the robot verbs (`run_cli`). python/lucent/__init__.py
+//! builds clingo's API on top.
 //!
 //! Invariant: nothing here prints or panics on bad input; errors are Python exceptions.
 
@@ -14,8 +16,10 @@ use pyo3::prelude::*;
 
 mod control;
 mod handle;
+mod live;
 mod model;
 mod propagator;
+mod solve_control;
 mod symbol;
 mod theory;
 
@@ -41,6 +45,8 @@ fn _lucent(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<control::Control>()?;
     m.add_class::<control::Interrupter>()?;
     m.add_class::<handle::SolveHandle>()?;
+    m.add_class::<live::Live>()?;
+    m.add_class::<solve_control::SolveControl>()?;
     m.add_function(wrap_pyfunction!(run_cli, m)?)?;
     Ok(())
 }

@@ -13,6 +13,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 
 use pyo3::prelude::*;
 
+use crate::solve_control::SolveControl;
 use crate::symbol::{to_symbol, Symbol};
 
 /// The symbol of each atom (`[a - 1]`), `None` for auxiliary atoms.
@@ -36,13 +37,24 @@ pub struct Model {
     priorities: Arc<Vec<i64>>,
     /// Symbols added by `extend` (printed after the model by `lucent.application`).
     extended: Mutex<Vec<lucent::Symbol>>,
+    /// The portfolio thread that found it.
+    thread_id: u32,
+    /// The solve call's `SolveControl` (`solve_control.rs`).
+    context: Option<Py<SolveControl>>,
 }
 
 impl Model {
     /// Copies the model the solver reports; `names` covers its atoms, `priorities` are the
-    /// program's minimize priorities, highest first.
-    pub fn new(m: &lucent::Model<'_>, names: AtomNames, priorities: Arc<Vec<i64>>) -> Model {
+    /// program's minimize priorities, highest first, `context` the call's `SolveControl`.
+    pub fn new(
+        m: &lucent::Model<'_>,
+        names: AtomNames,
+        priorities: Arc<Vec<i64>>,
+        context: Option<Py<SolveControl>>,
+    ) -> Model {
         Model {
+            thread_id: m.thread_id(),
+            context,
             number: m.number(),
             costs: m.costs().to_vec(),
             optimal: m.optimal(),
@@ -176,6 +188,23 @@ impl Model {
             .lock()
             .map(|e| e.iter().cloned().map(Symbol).collect())
             .unwrap_or_default()
+    }
+
+    /// The portfolio thread that found the model (0 with one thread).
+    #[getter]
+    fn thread_id(&self) -> u32 {
+        self.thread_id
+    }
+
+    /// The solve call's `SolveControl`: its symbolic atoms, clauses for the rest of the call.
+    #[getter]
+    fn context(&self, py: Python<'_>) -> PyResult<Py<SolveControl>> {
+        self.context
+            .as_ref()
+            .map(|c| c.clone_ref(py))
+            .ok_or_else(|| {
+                pyo3::exceptions::PyRuntimeError::new_err("lucent: this model has no solve call")
+            })
     }
 
     /// The model's number in its solve call (from 1).

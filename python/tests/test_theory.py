@@ -87,3 +87,66 @@ def test_a_propagator_reads_its_constraints_from_theory_atoms(both):
     # 16 subsets of q(1..4), minus those with q(1), q(2) (4) and with q(2), q(3), q(4) (2),
     # one subset counted in both: 16 - 4 - 2 + 1.
     assert len(models) == 11
+
+
+CONDITIONS = """#theory c { term { }; &a/0 : term, any }.
+{p(1..3)}. {q}. &a { x : p(1), p(2); y : p(3); z : q, not p(1); w }."""
+
+
+class ConditionLiterals:
+    """Each element's ``solver_literal(condition_id)`` is watched and checked against its
+    condition at every total assignment; the clause ``-x | -p(3)`` over x's condition literal
+    forbids p(1), p(2), p(3) together. clingo 5.8 hands the theory atoms to the first call's
+    ``init`` only (its clause stays); Lucent to every call's."""
+
+    def __init__(self):
+        self.wrong, self.ids = 0, None
+
+    def init(self, init):
+        self.defs = []
+        first = self.ids is None
+        self.ids = self.ids or []
+        p3 = init.solver_literal(init.symbolic_atoms[self.p3].literal)
+        for atom in init.theory_atoms:
+            for e in atom.elements:
+                cid = e.condition_id
+                if first:
+                    self.ids.append((str(e.terms[0]), cid == 0, len(e.condition) == 1 and cid == e.condition[0],
+                                     cid > 2**28))
+                if cid == 0:
+                    continue
+                lit = init.solver_literal(cid)
+                body = [init.solver_literal(l) for l in e.condition]
+                init.add_watch(lit)
+                self.defs.append((lit, body))
+                if str(e.terms[0]) == "x":
+                    init.add_clause([-lit, -p3])
+
+    def check(self, control):
+        a = control.assignment
+        for lit, body in self.defs:
+            if a.is_true(lit) != all(a.is_true(b) for b in body):
+                self.wrong += 1
+
+
+def condition_literals(clingo):
+    ctl = clingo.Control(["0"])
+    ctl.add("base", [], CONDITIONS)
+    ctl.ground([("base", [])])
+    # Keyed by the term: Lucent prints the condition "z: not p(1),q", clingo "z: q,not p(1)".
+    ids = [(str(e.terms[0]), e.condition_id > 2**28) for a in ctl.theory_atoms for e in a.elements]
+    prop = ConditionLiterals()
+    prop.p3 = clingo.Function("p", [clingo.Number(3)])
+    ctl.register_propagator(prop)
+    out = []
+    for _ in range(2):
+        models = []
+        ctl.solve(on_model=lambda m: models.append(m.symbols(shown=True)))
+        out.append(sorted_models(models))
+    return out, sorted(prop.ids), sorted(ids), prop.wrong
+
+
+def test_condition_ids_name_conjunctions(both):
+    calls, init_ids, ids, wrong = both(condition_literals)
+    assert [len(c) for c in calls] == [14, 14] and wrong == 0
+    assert [i for (_, _, _, i) in init_ids].count(True) == 2

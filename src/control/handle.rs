@@ -126,6 +126,24 @@ fn impossible(assumption: &(Symbol, bool)) -> Summary {
 }
 
 impl Control {
+    /// Sets (or removes) what later solve calls tell each lower bound of the costs they prove
+    /// (clingo's `on_unsat`): with `--opt-strategy=usc`, once per core, the optima of the
+    /// priority levels done and the current level's bound, highest priority first; branch and
+    /// bound tells nothing, as clingo's model-guided search. Called on the solving thread.
+    pub fn on_lower_bound(&mut self, observer: Option<crate::solve::LowerBoundObserver>) {
+        self.lower_observer = observer;
+    }
+
+    /// Where a model callback puts clauses for the rest of its solve call (clingo's
+    /// `SolveControl.add_clause`): each clause is program literals (`a` true, `-a` false),
+    /// added under the call's guard before the search goes on, so it ends with the call.
+    /// Clauses left when a call ends are dropped; with `-t N` they reach thread 0 only.
+    pub fn model_clauses(&mut self) -> crate::solve::ModelClauses {
+        self.model_clauses
+            .get_or_insert_with(Default::default)
+            .clone()
+    }
+
     /// Prepares a solve call: the pending statements to the solver, the propagators' `init`,
     /// the assumptions as solver literals. `Err` holds the summary of a call that an assumed
     /// atom that does not exist makes unsatisfiable.
@@ -135,6 +153,14 @@ impl Control {
             "a detached search is running: end it (Control::end_search) before the next call"
         );
         self.prepare();
+        let observer = self.lower_observer.clone();
+        let clauses = self.model_clauses.clone();
+        if let Some(c) = &clauses {
+            c.lock().unwrap_or_else(|p| p.into_inner()).clear();
+        }
+        let solver = self.solver.as_mut().expect("prepared");
+        solver.set_lower_bound_observer(observer);
+        solver.set_model_clauses(clauses);
         self.init_propagators();
         let mut assumptions = Vec::new();
         self.external_assumptions(&mut assumptions);

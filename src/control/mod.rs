@@ -340,6 +340,10 @@ pub struct Control {
     propagators: propagator::Propagators,
     /// A detached search has the solver (`handle`).
     searching: bool,
+    /// Told the lower bounds core-guided optimization proves (`handle`).
+    lower_observer: Option<solve::LowerBoundObserver>,
+    /// Clauses model callbacks add (`handle`), made at the first `model_clauses`.
+    model_clauses: Option<solve::ModelClauses>,
 }
 
 /// Stops a solve call from another thread: see [`Control::interrupter`].
@@ -403,6 +407,8 @@ impl Control {
             ctl_of_gatom: Vec::new(),
             propagators: Default::default(),
             searching: false,
+            lower_observer: None,
+            model_clauses: None,
         }
     }
 

@@ -43,6 +43,12 @@ impl Model<'_> {
             .collect()
     }
 
+    /// The portfolio thread that found the model (clingo's `Model.thread_id`; 0 with one
+    /// thread).
+    pub fn thread_id(&self) -> u32 {
+        self.raw.thread_id
+    }
+
     /// The true atoms' numbers, increasing (every true atom, with a symbol or not).
     pub fn atom_ids(&self) -> &[AtomId] {
         &self.raw.atoms
@@ -182,5 +188,17 @@ impl OwnedModel {
     /// Whether `symbol` is a true atom.
     pub fn contains(&self, symbol: &Symbol) -> bool {
         self.atoms.binary_search(symbol).is_ok()
+    }
+}
+
+impl Control {
+    /// Per atom (`[a - 1]`), whether it is a fact; and the atoms that are (still) externals,
+    /// increasing: what [`SymbolicAtom`]'s `fact` and `external` say, without building symbols
+    /// (a model callback's view of the atoms, `python/src/solve_control.rs`).
+    pub fn atom_kinds(&self) -> (Vec<bool>, Vec<AtomId>) {
+        let facts = self.flags.iter().map(|f| f & FACT != 0).collect();
+        let mut externals: Vec<AtomId> = self.externals.keys().copied().collect();
+        externals.sort_unstable();
+        (facts, externals)
     }
 }

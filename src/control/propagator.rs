@@ -19,7 +19,9 @@
 //! - Watches persist across solve calls; `init` may add them again (no effect).
 //! - Literals: `PropagateInit::add_literal` makes a variable kept across calls,
 //!   `PropagateControl::add_literal` one for the current call (clingo's volatile literal),
-//!   both with one thread only.
+//!   both with one thread only; `PropagateInit::condition_literal` names a theory element's
+//!   condition by a variable defined as the conjunction (one per condition, kept across
+//!   calls), also with one thread only.
 //!
 //! Invariant: the propagators are installed on the solver once it exists and reinstalled (watches
 //! reset, every `init` called again) after a registration.
@@ -29,6 +31,7 @@ use crate::solve::engine::SharedHook;
 use crate::solve::propagator::Hook;
 pub use crate::solve::propagator::{Assignment, Literal, PropagateControl};
 use crate::solve::Solver;
+use hashbrown::HashMap;
 use std::sync::{Arc, Mutex};
 
 /// A propagator (clingo's `Propagator`): every method has a default that does nothing.
@@ -83,6 +86,7 @@ pub struct PropagateInit<'a> {
     atoms: &'a [SymbolicAtom],
     theory: &'a [super::theory::TheoryAtom],
     mode: &'a mut CheckMode,
+    conditions: &'a mut HashMap<Vec<i32>, Literal>,
 }
 
 impl PropagateInit<'_> {
@@ -130,6 +134,38 @@ impl PropagateInit<'_> {
     /// Sets when this propagator's `check` runs.
     pub fn set_check_mode(&mut self, mode: CheckMode) {
         *self.mode = mode;
+    }
+
+    /// The solver literal of a theory element's condition (program literals, all of which
+    /// must hold; clingo's `solver_literal(condition_id)`): the literal itself for one, else
+    /// a variable defined as their conjunction by three kinds of problem clauses, made once
+    /// per condition and kept across calls (so it adds no models). `None` with helper
+    /// threads (`-t N`), whose literals name only atoms, when a variable would be needed.
+    pub fn condition_literal(&mut self, condition: &[i32]) -> Option<Literal> {
+        let lit = |s: &Solver, l: i32| {
+            let x = s.solver_literal(l.unsigned_abs());
+            if l < 0 {
+                -x
+            } else {
+                x
+            }
+        };
+        if let [l] = condition {
+            return Some(lit(self.solver, *l));
+        }
+        if let Some(&x) = self.conditions.get(condition) {
+            return Some(x);
+        }
+        let x = self.solver.propagator_new_var()?;
+        let body: Vec<Literal> = condition.iter().map(|&l| lit(self.solver, l)).collect();
+        for &b in &body {
+            self.solver.propagator_clause(&[-x, b]);
+        }
+        let mut all: Vec<Literal> = body.iter().map(|&b| -b).collect();
+        all.push(x);
+        self.solver.propagator_clause(&all);
+        self.conditions.insert(condition.to_vec(), x);
+        Some(x)
     }
 
     /// A new solver variable, kept across solve calls (clingo's `add_literal`): its positive
@@ -190,6 +226,8 @@ impl Hook for Registered {
 pub(super) struct Propagators {
     hook: Option<Arc<Mutex<Registered>>>,
     installed: bool,
+    /// The variable of each theory condition named so far (`condition_literal`).
+    conditions: HashMap<Vec<i32>, Literal>,
 }
 
 impl Control {
@@ -228,6 +266,7 @@ impl Control {
                     atoms: &atoms,
                     theory: &theory,
                     mode,
+                    conditions: &mut self.propagators.conditions,
                 });
             }
             let fixpoint = guard.0.iter().any(|(_, m)| m.fixpoint());

@@ -4,11 +4,19 @@
 //! atoms; a propagator maps an atom's literal to a solver literal with
 //! `PropagateInit::solver_literal` and watches it.
 //!
+//! An element's condition is named by one program literal, as clingo's `condition_id`
+//! ([`condition_ids`]): 0 when empty, its literal when it has one, and for several literals a
+//! number of its own from [`CONDITION_BASE`] `+ 1` (above every atom, as clingo's), counted
+//! over the distinct conditions in grounding order. A propagator turns a condition into a
+//! solver literal equivalent to the conjunction with `PropagateInit::condition_literal`.
+//!
 //! Invariant: the atoms are listed in grounding order and keep their program atom (0 for a
 //! directive) across solve calls; terms are [`TheoryTerm`]s, printed as clingo 5.8 prints them.
 
 use super::Control;
+use crate::ground::program::Lit;
 pub use crate::ground::program::{TheoryAtom, TheoryElement, TheoryTerm};
+use hashbrown::HashMap;
 
 /// clingo's `TheoryTermType`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -66,6 +74,30 @@ impl TheoryTerm {
             _ => &[],
         }
     }
+}
+
+/// Where the numbers of conditions of several literals start (clingo 5.8's `2^28`).
+pub const CONDITION_BASE: i32 = 1 << 28;
+
+/// The `condition_id` of every element of `atoms`, atom by atom (see the module documentation).
+pub fn condition_ids(atoms: &[TheoryAtom]) -> Vec<Vec<i32>> {
+    let mut numbered: HashMap<&[Lit], i32> = HashMap::new();
+    atoms
+        .iter()
+        .map(|a| {
+            a.elements
+                .iter()
+                .map(|e| match e.condition[..] {
+                    [] => 0,
+                    [l] => l,
+                    _ => {
+                        let next = CONDITION_BASE + 1 + numbered.len() as i32;
+                        *numbered.entry(&e.condition[..]).or_insert(next)
+                    }
+                })
+                .collect()
+        })
+        .collect()
 }
 
 impl Control {

@@ -924,6 +924,20 @@ impl Engine {
         &self.asg.trail
     }
 
+    /// The trail position where decision level `level` starts (0 for level 0, the trail's
+    /// length past the current level).
+    pub(crate) fn level_start(&self, level: u32) -> usize {
+        match (level as usize).checked_sub(1) {
+            None => 0,
+            Some(i) => self
+                .asg
+                .trail_lim
+                .get(i)
+                .copied()
+                .unwrap_or(self.asg.trail.len()),
+        }
+    }
+
     /// The decision level at which the variable of `l` was assigned.
     pub fn level_of(&self, l: Lit) -> u32 {
         self.asg.level[l.var().index()]

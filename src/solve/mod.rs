@@ -29,4 +29,4 @@ pub(crate) mod stability;
 pub(crate) mod translate;
 pub(crate) mod unfounded;
 
-pub use solver::{SolveError, Solver};
+pub use solver::{LowerBoundObserver, ModelClauses, SolveError, Solver};

@@ -112,6 +112,36 @@ impl Assignment<'_> {
     pub fn has_conflict(&self) -> bool {
         self.engine.external_conflict()
     }
+
+    /// Whether `l` names a variable of this solver (clingo's `has_literal`): the other
+    /// methods panic on a literal that does not.
+    pub fn has_literal(&self, l: Literal) -> bool {
+        self.engine.user_to_local(l).is_some()
+    }
+
+    /// The decision levels the solve call's assumptions occupy (clingo's `root_level`; the
+    /// search never backjumps below it). Each call assumes its guard variable, so during
+    /// search it is usually 1, as clingo's.
+    pub fn root_level(&self) -> u32 {
+        self.engine.external_root()
+    }
+
+    /// The number of assigned literals (the trail's length).
+    pub fn trail_len(&self) -> usize {
+        self.engine.trail().len()
+    }
+
+    /// The `i`-th assigned literal, in assignment order (clingo's `Trail`); `None` past the
+    /// end. On a portfolio's helper thread a variable of the helper's own (no atom) reads 0.
+    pub fn trail_at(&self, i: usize) -> Option<Literal> {
+        self.engine.trail().get(i).map(|&l| self.engine.user_lit(l))
+    }
+
+    /// Where decision level `level` starts on the trail (clingo's `Trail.begin`); its end is
+    /// where `level + 1` starts (the trail's length for the current level).
+    pub fn trail_begin(&self, level: u32) -> usize {
+        self.engine.level_start(level)
+    }
 }
 
 /// What a propagator may do during search (clingo's `PropagateControl`).

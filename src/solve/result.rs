@@ -31,6 +31,8 @@ pub struct Model {
     /// True when this model is known to be optimal (optN enumeration phase, or the last model of
     /// an optimization whose optimum was proven).
     pub optimal: bool,
+    /// The portfolio thread that found it (clingo's `Model.thread_id`; 0 with one thread).
+    pub thread_id: u32,
 }
 
 impl Model {

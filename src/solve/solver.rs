@@ -132,7 +132,18 @@ pub struct Solver {
     applied: Config,
     /// The statistics of every call so far, added up.
     total: Stats,
+    /// Told each lower bound core-guided optimization proves (`core_guided`).
+    lower_observer: Option<LowerBoundObserver>,
+    /// Clauses the model callback adds (`set_model_clauses`), and the running call's guard.
+    model_clauses: Option<ModelClauses>,
+    call_guard: Option<Lit>,
 }
+
+/// Clauses (aspif literals) a model callback adds for the rest of its solve call (clingo's
+/// `SolveControl.add_clause`): the solver takes them before its next search.
+pub type ModelClauses = std::sync::Arc<std::sync::Mutex<Vec<Vec<i32>>>>;
+
+pub use core_guided::LowerBoundObserver;
 
 /// What one guard owns: variables defined for the constraints it guards (cost and CR bounds,
 /// their conjunctions), and which of them head a weight constraint.
@@ -276,6 +287,9 @@ impl Solver {
             shared_bound: None,
             cube: Vec::new(),
             keep_learnts: false,
+            lower_observer: None,
+            model_clauses: None,
+            call_guard: None,
         }
     }
 
@@ -675,6 +689,7 @@ impl Solver {
         assume.extend_from_slice(&self.cube);
         let call_guard = self.new_guard();
         assume.push(call_guard);
+        self.call_guard = Some(call_guard);
         let mut call = Call {
             count: 0,
             phase_count: 0,
@@ -709,6 +724,7 @@ impl Solver {
                 .filter(|&l| failed.contains(&self.lit_of(l)))
                 .collect()
         });
+        self.call_guard = None;
         self.retire(call_guard);
         let outcome = if call.count > 0 {
             if call.optimum && call.has_costs {

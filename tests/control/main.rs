@@ -10,6 +10,7 @@ mod functions;
 mod handle;
 mod grid;
 mod incmode;
+mod lower_bound;
 mod model;
 mod multishot;
 mod propagator;

@@ -39,3 +39,52 @@ fn atoms_named_is_atoms_filtered() {
     });
     assert_eq!(seen, 4);
 }
+
+/// `Control::model_clauses` (clingo's `SolveControl.add_clause` from `on_model`): after the
+/// first model the clause `p(1)` holds for the rest of the call, so every later model has
+/// `p(1)` and none is missed; the next call has all eight again.
+#[test]
+fn a_clause_from_the_model_callback_holds_for_the_rest_of_the_call() {
+    let mut cc = ControlConfig::default();
+    cc.solve.models = 0;
+    let mut ctl = Control::new(cc);
+    ctl.add("base", &[], "{p(1..3)}.").unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let p1 = lucent::Symbol::parse("p(1)").unwrap();
+    let atom = ctl.lookup(&p1).unwrap() as i32;
+    let clauses = ctl.model_clauses();
+    let mut seen: Vec<bool> = Vec::new();
+    ctl.solve(&SolveOptions::default(), |m| {
+        if seen.is_empty() {
+            clauses.lock().unwrap().push(vec![atom]);
+        }
+        seen.push(m.contains(&p1));
+        true
+    });
+    assert!(seen[1..].iter().all(|&x| x), "{seen:?}");
+    let with_p1 = seen.iter().filter(|&&x| x).count();
+    assert_eq!(with_p1, 4, "every model with p(1): {seen:?}");
+    let mut n = 0;
+    ctl.solve(&SolveOptions::default(), |_| {
+        n += 1;
+        true
+    });
+    assert_eq!(n, 8, "the clause ended with its call");
+}
+
+/// `Model::thread_id`: 0 with one thread; with `-t 3` every model names a thread below 3.
+#[test]
+fn models_name_their_thread() {
+    for (threads, bound) in [("1", 1), ("3", 3)] {
+        let mut ctl = Control::from_args(&["-t", threads, "0"]).unwrap();
+        ctl.add("base", &[], "{p(1..6)}.").unwrap();
+        ctl.ground(&[Part::base()]).unwrap();
+        let mut ids = Vec::new();
+        ctl.solve(&SolveOptions::default(), |m| {
+            ids.push(m.thread_id());
+            true
+        });
+        assert_eq!(ids.len(), 64);
+        assert!(ids.iter().all(|&t| t < bound), "{ids:?}");
+    }
+}

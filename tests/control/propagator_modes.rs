@@ -199,3 +199,50 @@ impl Propagator for FreeLiteral {
 fn a_literal_added_in_init_is_free() {
     assert_eq!(answers("{a}.", Box::new(FreeLiteral), 1), ";;a;a");
 }
+
+/// Reads the whole assignment at every total assignment and checks it against itself: the
+/// trail holds exactly the assigned literals, level by level from `trail_begin`, each decision
+/// first on its level; `has_literal` covers `±1..=size`; the root level is within the search.
+/// Counts the checks in `seen` (the answers must stay those of `{p(1..3)}`).
+struct TrailReader {
+    seen: Arc<std::sync::atomic::AtomicUsize>,
+}
+
+impl Propagator for TrailReader {
+    fn check(&mut self, ctl: &mut PropagateControl<'_>) {
+        let a = ctl.assignment();
+        let size = a.size() as Literal;
+        assert!(a.has_literal(size) && a.has_literal(-size) && a.has_literal(1));
+        assert!(!a.has_literal(0) && !a.has_literal(size + 1));
+        let assigned = (1..=size).filter(|&v| a.value(v).is_some()).count();
+        assert_eq!(a.trail_len(), assigned);
+        assert_eq!(a.trail_begin(0), 0);
+        assert!(a.root_level() <= a.decision_level());
+        for level in 0..=a.decision_level() {
+            let (begin, end) = (a.trail_begin(level), a.trail_begin(level + 1));
+            assert!(begin <= end && end <= a.trail_len());
+            for i in begin..end {
+                let l = a.trail_at(i).unwrap();
+                assert!(a.is_true(l) && a.level(l) == level, "{l} on level {level}");
+            }
+            if let Some(d) = a.decision(level).filter(|_| level > 0) {
+                assert_eq!(a.trail_at(begin), Some(d));
+            }
+        }
+        assert_eq!(a.trail_at(a.trail_len()), None);
+        self.seen.fetch_add(1, Ordering::Relaxed);
+    }
+}
+
+#[test]
+fn the_trail_and_root_level_describe_the_assignment() {
+    let seen = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+    let got = answers(
+        "{p(1..3)}.",
+        Box::new(TrailReader { seen: seen.clone() }),
+        2,
+    );
+    let one = ";p(1);p(1) p(2);p(1) p(2) p(3);p(1) p(3);p(2);p(2) p(3);p(3)";
+    assert_eq!(got, format!("{one}|{one}"));
+    assert!(seen.load(Ordering::Relaxed) >= 16, "a check per model");
+}

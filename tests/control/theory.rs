@@ -165,3 +165,92 @@ fn a_negative_cycle_is_refused() {
         subsets(&["a", "b", "c"], &[&["a", "b"], &["a", "b", "c"]])
     );
 }
+
+/// Theory conditions of several literals named by one literal (clingo's `condition_id`; clingo
+/// 5.8 numbers `x` and `z` below `2^28 + 1` and `2^28 + 2`, `y` by `p(3)`'s atom, `w` 0):
+/// `condition_literal` is true exactly when its condition holds, at every total assignment,
+/// and a clause over it acts as over the conjunction. `checks` counts the checks.
+struct Conditions {
+    defs: Vec<(Vec<Literal>, Literal)>,
+    checks: std::sync::Arc<std::sync::atomic::AtomicUsize>,
+}
+
+const CONDITIONS: &str = "#theory t { term { }; &a/0 : term, any }.
+    {p(1..3)}. {q}. &a { x : p(1), p(2); y : p(3); z : q, not p(1); w }.";
+
+impl Propagator for Conditions {
+    fn init(&mut self, init: &mut PropagateInit<'_>) {
+        let signed = |init: &PropagateInit<'_>, l: i32| {
+            let x = init.solver_literal(l.unsigned_abs());
+            if l < 0 {
+                -x
+            } else {
+                x
+            }
+        };
+        let atoms = init.theory_atoms().to_vec();
+        self.defs.clear();
+        let mut x_of_p12 = None;
+        for e in &atoms[0].elements {
+            let lit = init.condition_literal(&e.condition).unwrap();
+            let body = e.condition.iter().map(|&l| signed(init, l)).collect();
+            init.add_watch(lit);
+            self.defs.push((body, lit));
+            if e.terms[0].name() == Some("x") {
+                x_of_p12 = Some(lit);
+                // The same condition twice: one variable.
+                assert_eq!(init.condition_literal(&e.condition), Some(lit));
+            }
+        }
+        let p3 = init
+            .symbolic_atoms()
+            .iter()
+            .find(|a| a.symbol.to_string() == "p(3)")
+            .map(|a| init.solver_literal(a.atom))
+            .unwrap();
+        assert!(init.add_clause(&[-x_of_p12.unwrap(), -p3]));
+    }
+
+    fn check(&mut self, ctl: &mut PropagateControl<'_>) {
+        let a = ctl.assignment();
+        for (body, lit) in &self.defs {
+            assert_eq!(a.is_true(*lit), body.iter().all(|&b| a.is_true(b)));
+        }
+        self.checks
+            .fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    }
+}
+
+#[test]
+fn a_condition_of_several_literals_is_one_literal() {
+    let mut ctl = Control::new(ControlConfig {
+        solve: Config {
+            models: 0,
+            ..Config::default()
+        },
+        ..ControlConfig::default()
+    });
+    ctl.add("base", &[], CONDITIONS).unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let atoms = ctl.theory_atoms().to_vec();
+    let p3 = ctl.lookup(&Symbol::parse("p(3)").unwrap()).unwrap() as i32;
+    let base = lucent::control::theory::CONDITION_BASE;
+    assert_eq!(
+        lucent::control::theory::condition_ids(&atoms),
+        vec![vec![base + 1, p3, base + 2, 0]]
+    );
+    let checks = std::sync::Arc::new(std::sync::atomic::AtomicUsize::new(0));
+    ctl.register_propagator(Box::new(Conditions {
+        defs: Vec::new(),
+        checks: checks.clone(),
+    }));
+    for _ in 0..2 {
+        let models = ctl.solve_all(&SolveOptions::default()).models;
+        // {p(1..3)} x {q}, without p(1), p(2), p(3) together: 16 - 2.
+        assert_eq!(models.len(), 14);
+        assert!(models.iter().all(|m| !["p(1)", "p(2)", "p(3)"]
+            .iter()
+            .all(|s| m.shown.iter().any(|x| x.to_string() == *s))));
+    }
+    assert!(checks.load(std::sync::atomic::Ordering::Relaxed) >= 28);
+}

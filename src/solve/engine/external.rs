@@ -56,6 +56,8 @@ pub(super) struct External {
     fixpoint: bool,
     /// Variables the hook added during this solve call (`external_var`).
     added: Vec<Var>,
+    /// The decision levels the current search's assumptions occupy (clingo's root level).
+    root: u32,
 }
 
 /// What the propagation step did.
@@ -86,6 +88,7 @@ impl Engine {
                 map: None,
                 fixpoint: false,
                 added: Vec::new(),
+                root: 0,
             })
         });
     }
@@ -169,6 +172,21 @@ impl Engine {
     /// The thread id the hook is called with.
     pub(crate) fn external_thread(&self) -> u32 {
         self.ext.as_ref().map_or(0, |e| e.thread_id)
+    }
+
+    /// The decision levels the assumptions of the running search occupy (at most the
+    /// current decision level): clingo's root level.
+    pub(crate) fn external_root(&self) -> u32 {
+        self.ext
+            .as_ref()
+            .map_or(0, |e| e.root.min(self.decision_level()))
+    }
+
+    /// Records the assumption levels of a search starting (see `external_root`).
+    pub(super) fn set_external_root(&mut self, assumptions: usize) {
+        if let Some(e) = self.ext.as_mut() {
+            e.root = u32::try_from(assumptions).unwrap_or(u32::MAX);
+        }
     }
 
     /// Whether a conflict of the hook waits for analysis.

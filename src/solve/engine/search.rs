@@ -125,6 +125,7 @@ impl Engine {
         self.limits.conflict_hit = false;
         self.limits.bound_news = false;
         self.an.failed.clear();
+        self.set_external_root(assumptions.len());
         if let Some((save_progress, sign)) = self.heur.phase_switched.take() {
             self.settings.save_progress = save_progress;
             self.settings.sign_from_learnts = sign;

@@ -11,6 +11,11 @@
 //! (clasp's stratification): a model under a partial stratum is an upper bound, reported when it
 //! improves on the last model reported, and lowers the stratum.
 //!
+//! Each core raises a lower bound, which the observer set by
+//! [`Solver::set_lower_bound_observer`] is told (clingo's `on_unsat`): the optima of the levels
+//! done, then the current level's bound, highest priority first. Branch and bound proves no
+//! bound on the way, so it tells nothing, as clasp's model-guided search.
+//!
 //! Invariants:
 //! - `lower` is a proven lower bound of the level's cost under the higher levels' optima, and
 //!   the level's cost of every assignment is `lower + sum(weight of true soft literals)` (OLL's
@@ -28,6 +33,10 @@
 
 use super::*;
 use hashbrown::HashMap;
+
+/// Told each lower bound of the costs that core-guided optimization proves, highest priority
+/// first (only the levels done and the current one), from the thread that solves.
+pub type LowerBoundObserver = std::sync::Arc<std::sync::Mutex<dyn FnMut(&[i64]) + Send>>;
 
 /// A soft literal of the level being optimized.
 struct Soft {
@@ -132,6 +141,20 @@ pub(super) fn level_bound(costs: &[i64], fixed: &[i64]) -> i64 {
 }
 
 impl Solver {
+    /// Sets (or removes) the observer of proven lower bounds (see the module documentation).
+    pub fn set_lower_bound_observer(&mut self, observer: Option<LowerBoundObserver>) {
+        self.lower_observer = observer;
+    }
+
+    /// Tells the observer the bound `fixed ++ [lower]`.
+    fn tell_lower(&self, fixed: &[i64], lower: i64) {
+        if let Some(o) = &self.lower_observer {
+            let mut bound = fixed.to_vec();
+            bound.push(lower);
+            (o.lock().unwrap_or_else(|p| p.into_inner()))(&bound);
+        }
+    }
+
     /// Core-guided optimization; returns true when the optimum was proven (as
     /// [`Solver::run_optimize`], whose contract it shares: improving models are reported when
     /// `report` is set, and `self.best` holds the optimum's costs).
@@ -177,7 +200,8 @@ impl Solver {
                         }
                         stratum = level.next_stratum(stratum).unwrap_or(0);
                     }
-                    Step::Relaxed | Step::News => {}
+                    Step::Relaxed => self.tell_lower(&fixed, level.lower),
+                    Step::News => {}
                     Step::Unsat => {
                         call.exhausted = true;
                         self.retire(g);

@@ -144,6 +144,7 @@ struct Relay<'a> {
 impl Relay<'_> {
     /// Delivers (or drops, or buffers) one model; returns whether its thread may go on.
     fn deliver(&mut self, from: usize, mut m: Model, prog: &GroundProgram) -> bool {
+        m.thread_id = u32::try_from(from).unwrap_or(u32::MAX);
         if self.user_stop {
             return false;
         }

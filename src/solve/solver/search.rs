@@ -20,7 +20,7 @@ impl Solver {
     /// [`Solver::next`]; with `resume`, the first search goes on from the current assignment
     /// (after `block` added the clause excluding the last model's decisions in search).
     pub(super) fn next_from(&mut self, assume: &[Lit], resume: bool) -> Next {
-        let mut resume = resume;
+        let mut resume = resume && !self.take_model_clauses();
         loop {
             match self.engine.search_from(assume, std::mem::take(&mut resume)) {
                 SearchResult::Unsat => return Next::Exhausted,
@@ -52,6 +52,34 @@ impl Solver {
                 }
             }
         }
+    }
+
+    /// Sets (or removes) where the model callback puts clauses for the rest of its call.
+    pub fn set_model_clauses(&mut self, clauses: Option<ModelClauses>) {
+        self.model_clauses = clauses;
+    }
+
+    /// Adds the clauses the model callback left, under the call's guard (so they end with
+    /// the call); true when there were any (the engine is back at level 0). Literals that name
+    /// no atom of the program were refused by the caller; any left are dropped with their
+    /// clause.
+    fn take_model_clauses(&mut self) -> bool {
+        let (Some(queue), Some(guard)) = (&self.model_clauses, self.call_guard) else {
+            return false;
+        };
+        let clauses = std::mem::take(&mut *queue.lock().unwrap_or_else(|p| p.into_inner()));
+        let n = self.prog.num_atoms;
+        let mut added = false;
+        for c in clauses {
+            if c.iter().any(|&l| l == 0 || l.unsigned_abs() > n) {
+                continue;
+            }
+            let mut lits: Vec<Lit> = c.iter().map(|&l| self.lit_of(l)).collect();
+            lits.push(!guard);
+            self.engine.add_clause(&lits);
+            added = true;
+        }
+        added
     }
 
     /// When the edges (aspif edge directives) whose conditions hold contain a cycle, the
@@ -172,6 +200,7 @@ impl Solver {
             cr_applied,
             support,
             optimal,
+            thread_id: 0,
         }
     }
 
