@@ -451,6 +451,9 @@ impl Control {
         self.ctl.solve_config_mut().models = models;
         // The symbols of the atoms added since the last call (an atom keeps its symbol, so
         // the table only grows; models of earlier calls may share the old one).
+        // The last call's context shares the table: dropped first, so that the table is
+        // extended in place rather than copied whole (models kept by the caller still copy).
+        self.context = None;
         let known = self.names.len() as u32;
         if known < self.ctl.num_atoms() {
             let names = Arc::make_mut(&mut self.names);
