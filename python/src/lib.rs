@@ -14,6 +14,13 @@
 
 use pyo3::prelude::*;
 
+// The Rust side allocates through mimalloc, as the `lucent` binary does (`src/mi_alloc.rs`).
+#[path = "../../src/mi_alloc.rs"]
+mod mi_alloc;
+
+#[global_allocator]
+static GLOBAL: mi_alloc::Mi = mi_alloc::Mi;
+
 mod control;
 mod handle;
 mod live;
