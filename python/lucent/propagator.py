@@ -22,15 +22,17 @@ class PropagatorCheckMode:
     Both = 3
 
 
-class Trail(_Sequence):
-    """clingo's ``Trail``: the assigned literals in assignment order; ``begin(level)`` and
-    ``end(level)`` delimit a decision level's part."""
+class _LiveSequence(_Sequence):
+    """A sequence over a live view: indexing (negative indices and slices included) checks
+    the bounds and asks ``_item`` for an index in range."""
+
+    _what = "sequence"
 
     def __init__(self, live):
         self._l = live
 
-    def __len__(self):
-        return self._l.trail_len()
+    def _item(self, i):
+        raise NotImplementedError
 
     def __getitem__(self, i):
         if isinstance(i, slice):
@@ -39,7 +41,20 @@ class Trail(_Sequence):
         if i < 0:
             i += n
         if not 0 <= i < n:
-            raise IndexError("trail index out of range")
+            raise IndexError(f"{self._what} index out of range")
+        return self._item(i)
+
+
+class Trail(_LiveSequence):
+    """clingo's ``Trail``: the assigned literals in assignment order; ``begin(level)`` and
+    ``end(level)`` delimit a decision level's part."""
+
+    _what = "trail"
+
+    def __len__(self):
+        return self._l.trail_len()
+
+    def _item(self, i):
         return self._l.trail_at(i)
 
     def begin(self, level):
@@ -49,24 +64,16 @@ class Trail(_Sequence):
         return self._l.trail_begin(level + 1)
 
 
-class Assignment(_Sequence):
+class Assignment(_LiveSequence):
     """clingo's ``Assignment``: the solver's values now; as a sequence, the positive literal
     of each variable (``assignment[i]`` is ``i + 1``, ``len`` the number of variables)."""
 
-    def __init__(self, live):
-        self._l = live
+    _what = "assignment"
 
     def __len__(self):
         return self._l.size()
 
-    def __getitem__(self, i):
-        if isinstance(i, slice):
-            return [self[j] for j in range(*i.indices(len(self)))]
-        n = len(self)
-        if i < 0:
-            i += n
-        if not 0 <= i < n:
-            raise IndexError("assignment index out of range")
+    def _item(self, i):
         return i + 1
 
     def value(self, literal):
