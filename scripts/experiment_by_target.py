@@ -10,19 +10,13 @@ records (results/*.json of `lucent experiment`), with 95% percentile-bootstrap i
 
 usage: scripts/experiment_by_target.py RUN_DIR
 """
-import collections, glob, json, random, sys
+import collections, functools, glob, json, sys
 
+import bootstrap_ci
 
-def ci(values):
-    if len(values) < 2:
-        return ""
-    rng = random.Random(0x424F4F54)
-    means = sorted(sum(rng.choice(values) for _ in values) / len(values) for _ in range(2000))
-    return f" [{means[int(0.025 * 1999)]:.1f}, {means[-1 - int(0.025 * 1999)]:.1f}]"
-
-
-def cell(values):
-    return f"{sum(values) / len(values):.1f}{ci(values)}" if values else "n/a"
+# One decimal: the figures here are percentages.
+ci = functools.partial(bootstrap_ci.ci, digits=1)
+cell = functools.partial(bootstrap_ci.cell, digits=1)
 
 
 run = sys.argv[1]

@@ -28,19 +28,9 @@ fraction by L*.
 
 usage: scripts/h2_readings.py RUN_DIR TRACE.jsonl [TRACE_H4.jsonl]
 """
-import collections, glob, json, random, re, sys
+import collections, glob, json, re, sys
 
-
-def ci(values):
-    if len(values) < 2:
-        return ""
-    rng = random.Random(0x424F4F54)
-    means = sorted(sum(rng.choice(values) for _ in values) / len(values) for _ in range(2000))
-    return f" [{means[int(0.025 * 1999)]:.2f}, {means[-1 - int(0.025 * 1999)]:.2f}]"
-
-
-def cell(values):
-    return f"{sum(values) / len(values):.2f}{ci(values)}" if values else "n/a"
+from bootstrap_ci import ci, cell
 
 
 def fractions(per_pair):
