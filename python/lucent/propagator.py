@@ -3,8 +3,9 @@
 (python/src/live.rs): each callback's objects read the solver as it is now and act at once,
 as clingo's do, and stop working (``RuntimeError``) when the callback returns.
 
-Differences from clingo: ``Assignment.decision(0)`` raises (Lucent has no literal that is
-true by construction); ``add_literal`` needs one thread; ``add_clause``'s ``tag`` and
+Differences from clingo: ``Assignment.decision(0)`` raises, where clingo returns its
+always-true literal 1 (Lucent's solver literal 1 is true at level 0 too, but ``decision`` does
+not return it yet); ``add_literal`` needs one thread; ``add_clause``'s ``tag`` and
 ``lock`` are accepted and ignored (clauses added during search are learnt, as clingo's
 default); the trail shows 0 for a helper thread's own variables.
 """
