@@ -18,6 +18,7 @@ mod mi_alloc;
 static GLOBAL: mi_alloc::Mi = mi_alloc::Mi;
 
 fn main() {
+    mi_alloc::purge_at_once();
     let args: Vec<String> = std::env::args().collect();
     let Some(path) = args.get(1) else {
         eprintln!("usage: learner_loop FILE [N]");

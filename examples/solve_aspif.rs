@@ -26,6 +26,7 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 fn main() -> ExitCode {
+    mi_alloc::purge_at_once();
     let start = Instant::now();
     // As `lucent --mode=clasp`: nothing printed reads a model's supports.
     let mut config = Config {

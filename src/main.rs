@@ -8,5 +8,6 @@ mod mi_alloc;
 static GLOBAL: mi_alloc::Mi = mi_alloc::Mi;
 
 fn main() {
+    mi_alloc::purge_at_once();
     std::process::exit(lucent::cli::main());
 }

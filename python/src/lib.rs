@@ -47,6 +47,7 @@ fn run_cli(args: Vec<String>) -> (i32, String, String) {
 
 #[pymodule]
 fn _lucent(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    mi_alloc::purge_at_once();
     symbol::register(m)?;
     m.add_class::<model::Model>()?;
     m.add_class::<control::Control>()?;
