@@ -225,11 +225,7 @@ impl Grounder<'_> {
                     if e.cond.is_empty() {
                         match self.atom_sym(&e.atom, &ctx.binding) {
                             Some(s) => {
-                                if let (Some(ts), Some(gate)) = (&mut gate_tuples, gate) {
-                                    if let Some(t) = self.gate_tuple(gate, i, s, &ctx.binding) {
-                                        ts.push(t);
-                                    }
-                                }
+                                self.push_gate_tuple(&mut gate_tuples, gate, i, s, &ctx.binding);
                                 head.push(self.atom_of(s, e.atom.pred).get())
                             }
                             None if is_choice => {}
@@ -244,11 +240,7 @@ impl Grounder<'_> {
                         .atom_sym(&e.atom, &ctx.binding)
                     {
                         Some(s) => {
-                            if let (Some(ts), Some(gate)) = (&mut gate_tuples, gate) {
-                                if let Some(t) = g.gate_tuple(gate, i, s, &ctx.binding) {
-                                    ts.push(t);
-                                }
-                            }
+                            g.push_gate_tuple(&mut gate_tuples, gate, i, s, &ctx.binding);
                             found.push((s, ctx.body[blen..].to_vec()))
                         }
                         None => undefined = true,
@@ -389,6 +381,23 @@ impl Grounder<'_> {
             },
             |g| g.origin(stmt, ctx),
         );
+    }
+
+    /// Adds to `tuples` (while collecting a gated choice's, `Some`) the tuple of element `i`
+    /// whose atom is `atom`, when its terms are defined.
+    fn push_gate_tuple(
+        &mut self,
+        tuples: &mut Option<Vec<Vec<SymId>>>,
+        gate: Option<&HeadGate>,
+        i: usize,
+        atom: SymId,
+        binding: &Binding,
+    ) {
+        if let (Some(ts), Some(gate)) = (tuples, gate) {
+            if let Some(t) = self.gate_tuple(gate, i, atom, binding) {
+                ts.push(t);
+            }
+        }
     }
 
     /// The tuple of element `i` of a gated choice whose atom is `atom` (its atom for a choice
