@@ -28,6 +28,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 
@@ -45,13 +46,25 @@ def run(cmd, timeout):
         # program running, loading the machine for every later row.
         p = subprocess.Popen([TIME, "-f", "%U %S %M", "-o", rss.name] + cmd, stdout=out, stderr=err,
                              start_new_session=True)
-        try:
-            p.wait(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            os.killpg(p.pid, signal.SIGKILL)
-            p.wait()
-            return None
+        # A blocking wait with a timer for the timeout: `Popen.wait(timeout=...)` polls with
+        # sleeps of up to 50 ms, which quantized every wall time to about 50 ms (0.064, 0.115,
+        # 0.165 s...) and made tiny rows read up to 2x either way.
+        expired = []
+
+        def kill():
+            expired.append(True)
+            try:
+                os.killpg(p.pid, signal.SIGKILL)
+            except ProcessLookupError:  # it ended just now
+                pass
+
+        timer = threading.Timer(timeout, kill)
+        timer.start()
+        p.wait()
         secs = time.perf_counter() - t0
+        timer.cancel()
+        if expired:
+            return None
         # The last line (GNU time writes "Command exited with non-zero status N" first when
         # the exit code is not 0): user seconds, system seconds, peak RSS.
         last = rss.read().strip().split("\n")[-1].split()
