@@ -3,9 +3,7 @@
 (python/src/live.rs): each callback's objects read the solver as it is now and act at once,
 as clingo's do, and stop working (``RuntimeError``) when the callback returns.
 
-Differences from clingo: ``Assignment.decision(0)`` raises, where clingo returns its
-always-true literal 1 (Lucent's solver literal 1 is true at level 0 too, but ``decision`` does
-not return it yet); ``add_literal`` needs one thread; ``add_clause``'s ``tag`` and
+Differences from clingo: ``add_literal`` needs one thread; ``add_clause``'s ``tag`` and
 ``lock`` are accepted and ignored (clauses added during search are learnt, as clingo's
 default); the trail shows 0 for a helper thread's own variables.
 """
@@ -99,7 +97,11 @@ class Assignment(_LiveSequence):
         return self._l.has_literal(literal)
 
     def decision(self, level):
-        """The decision literal of ``level`` (1 to ``decision_level``)."""
+        """The decision literal of ``level`` (0 to ``decision_level``); at level 0 the
+        always-true literal 1, as clingo answers (Lucent's literal 1 is the translation's true
+        literal: true and fixed at level 0)."""
+        if level == 0:
+            return 1
         d = self._l.decision(level)
         if d is None:
             raise RuntimeError(f"lucent: no decision at level {level}")

@@ -138,10 +138,12 @@ class Inspector:
                 for lv in range(a.decision_level + 1)
                 for i in range(a.trail.begin(lv), a.trail.end(lv))
             ),
+            # Level 0 included: clingo's decision(0) is its always-true literal 1.
             "decisions": all(
                 a.is_true(a.decision(lv)) and a.level(a.decision(lv)) == lv
-                for lv in range(1, a.decision_level + 1)
+                for lv in range(0, a.decision_level + 1)
             ),
+            "decision0": a.decision(0) == 1 and a.is_fixed(1),
             "root": 0 <= a.root_level <= a.decision_level,
             "values": all(
                 (a.value(lit) is True) == a.is_true(lit) and (a.value(-lit) is True) == a.is_false(lit)
