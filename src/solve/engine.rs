@@ -141,6 +141,11 @@ struct WeightConstraint {
     bound: u64,
     /// Detached by `remove_weight`: no longer watched or propagated.
     removed: bool,
+    /// `lits[..scan_from]` are all assigned, as `propagate_weight`'s scans found them during
+    /// epoch `scan_epoch` ([`WeightDb::epoch`]); within an epoch nothing is unassigned, so the
+    /// scans start there instead of rescanning the assigned prefix at every call.
+    scan_from: u32,
+    scan_epoch: u64,
 }
 
 /// Asks the processor to start loading the cache line at `p` into its caches. Propagation
@@ -313,6 +318,9 @@ struct WeightDb {
     weights: Vec<WeightConstraint>,
     /// Slots of removed weight constraints, reused by `add_weight`.
     free_weights: Vec<u32>,
+    /// Counts the operations that unassign variables (backtracking, dropping retired
+    /// variables); a constraint's `scan_from` holds only within the epoch it was found in.
+    epoch: u64,
 }
 
 /// Conflict analysis: the last conflict, the learnt clause, failed assumptions and scratch space.
@@ -580,6 +588,7 @@ impl Engine {
                 weight_watch: Vec::new(),
                 weights: Vec::new(),
                 free_weights: Vec::new(),
+                epoch: 0,
             },
             an: Analysis {
                 seen: Vec::new(),
@@ -862,6 +871,7 @@ impl Engine {
             return;
         }
         let start = self.asg.trail_lim[level as usize];
+        self.wc.epoch += 1;
         if self.ext.is_some() {
             self.undo_external(start);
         }

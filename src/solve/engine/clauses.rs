@@ -308,6 +308,8 @@ impl Engine {
             lits: norm,
             bound,
             removed: false,
+            scan_from: 0,
+            scan_epoch: 0,
         };
         if id as usize == self.wc.weights.len() {
             self.wc.weights.push(c);

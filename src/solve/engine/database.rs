@@ -284,6 +284,7 @@ impl Engine {
         }
         let retired = &self.pool.retired;
         if self.asg.trail.iter().any(|l| retired[l.var().index()]) {
+            self.wc.epoch += 1;
             let mut kept = Vec::with_capacity(self.asg.trail.len());
             for &l in &self.asg.trail {
                 if self.pool.retired[l.var().index()] {

@@ -319,7 +319,9 @@ impl Engine {
             // while these literals become true.
             let slack = max - bound;
             let mut first = None;
-            for k in 0..self.wc.weights[id].lits.len() {
+            let start = self.weight_scan_start(id);
+            let mut prefix = start;
+            for k in start..self.wc.weights[id].lits.len() {
                 let (l, w) = self.wc.weights[id].lits[k];
                 if w <= slack {
                     break;
@@ -327,14 +329,20 @@ impl Engine {
                 if self.val(l) == 0 {
                     first = Some(self.assign_weight_implied_as(l, first, id, Some(!head), false));
                 }
+                if k == prefix && self.val(l) != 0 {
+                    prefix += 1;
+                }
             }
+            self.wc.weights[id].scan_from = prefix as u32;
         } else if hv == -1 && !implication {
             // Every unassigned literal that would reach the bound must be false:
             // weight >= bound - sum_true. The explanation (the true literals) does not change
             // while these literals become false.
             let gap = bound - sum_true;
             let mut first = None;
-            for k in 0..self.wc.weights[id].lits.len() {
+            let start = self.weight_scan_start(id);
+            let mut prefix = start;
+            for k in start..self.wc.weights[id].lits.len() {
                 let (l, w) = self.wc.weights[id].lits[k];
                 if w < gap {
                     break;
@@ -342,9 +350,26 @@ impl Engine {
                 if self.val(l) == 0 {
                     first = Some(self.assign_weight_implied_as(!l, first, id, Some(head), true));
                 }
+                if k == prefix && self.val(l) != 0 {
+                    prefix += 1;
+                }
             }
+            self.wc.weights[id].scan_from = prefix as u32;
         }
         false
+    }
+
+    /// Where `propagate_weight`'s scans of constraint `id` start: past the prefix of its
+    /// literals already found assigned in this epoch (0 in a new epoch).
+    #[inline]
+    fn weight_scan_start(&mut self, id: usize) -> usize {
+        let epoch = self.wc.epoch;
+        let c = &mut self.wc.weights[id];
+        if c.scan_epoch != epoch {
+            c.scan_epoch = epoch;
+            c.scan_from = 0;
+        }
+        c.scan_from as usize
     }
 
     /// Appends the currently false literals of constraint `id` to `out`, or, when `of_true`,
