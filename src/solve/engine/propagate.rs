@@ -317,46 +317,39 @@ impl Engine {
             // Every unassigned literal whose loss would drop the maximum below the bound must
             // hold: weight > max - bound. The explanation (the false literals) does not change
             // while these literals become true.
-            let slack = max - bound;
-            let mut first = None;
-            let start = self.weight_scan_start(id);
-            let mut prefix = start;
-            for k in start..self.wc.weights[id].lits.len() {
-                let (l, w) = self.wc.weights[id].lits[k];
-                if w <= slack {
-                    break;
-                }
-                if self.val(l) == 0 {
-                    first = Some(self.assign_weight_implied_as(l, first, id, Some(!head), false));
-                }
-                if k == prefix && self.val(l) != 0 {
-                    prefix += 1;
-                }
-            }
-            self.wc.weights[id].scan_from = prefix as u32;
+            self.imply_heavy(id, max - bound, true, !head);
         } else if hv == -1 && !implication {
             // Every unassigned literal that would reach the bound must be false:
-            // weight >= bound - sum_true. The explanation (the true literals) does not change
-            // while these literals become false.
-            let gap = bound - sum_true;
-            let mut first = None;
-            let start = self.weight_scan_start(id);
-            let mut prefix = start;
-            for k in start..self.wc.weights[id].lits.len() {
-                let (l, w) = self.wc.weights[id].lits[k];
-                if w < gap {
-                    break;
-                }
-                if self.val(l) == 0 {
-                    first = Some(self.assign_weight_implied_as(!l, first, id, Some(head), true));
-                }
-                if k == prefix && self.val(l) != 0 {
-                    prefix += 1;
-                }
-            }
-            self.wc.weights[id].scan_from = prefix as u32;
+            // weight >= bound - sum_true (at least 1: `sum_true < bound` here). The explanation
+            // (the true literals) does not change while these literals become false.
+            self.imply_heavy(id, bound - sum_true - 1, false, head);
         }
         false
+    }
+
+    /// Assigns each unassigned literal of constraint `id` heavier than `limit` (true when
+    /// `positive`, else false), with `extra` in its explanation. Literals are sorted by
+    /// decreasing weight, so the scan stops at the first one of weight `limit` or less; it
+    /// starts past the prefix found assigned earlier in this epoch and records the new prefix.
+    fn imply_heavy(&mut self, id: usize, limit: u64, positive: bool, extra: Lit) {
+        let mut first = None;
+        let start = self.weight_scan_start(id);
+        let mut prefix = start;
+        for k in start..self.wc.weights[id].lits.len() {
+            let (l, w) = self.wc.weights[id].lits[k];
+            if w <= limit {
+                break;
+            }
+            if self.val(l) == 0 {
+                let implied = if positive { l } else { !l };
+                first =
+                    Some(self.assign_weight_implied_as(implied, first, id, Some(extra), !positive));
+            }
+            if k == prefix && self.val(l) != 0 {
+                prefix += 1;
+            }
+        }
+        self.wc.weights[id].scan_from = prefix as u32;
     }
 
     /// Where `propagate_weight`'s scans of constraint `id` start: past the prefix of its
