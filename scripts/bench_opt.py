@@ -10,8 +10,8 @@ End to end: `clingo -q FILE` against `lucent -q FILE`. Solver only: gringo's asp
 `lucent --mode=clasp -q` (Lucent reads aspif), as scripts/bench_solve.sh compares solvers.
 Times are CPU seconds of the child process (user + system, from the kernel's rusage: steadier
 than wall time on a loaded machine), the minimum over --reps runs, floored at 10 ms in ratios.
-Each binary runs once untimed before the table (warm-up). Every run must prove the same optimum as clingo's bb run, or the row is marked. Ratios printed:
-Lucent bb / clingo bb, Lucent usc / clingo usc and the better Lucent strategy / the better
+Each binary runs once untimed before the table (warm-up). Every run must prove the same
+optimum as clingo's bb run, or the row is marked. Ratios printed: Lucent bb / clingo bb, Lucent usc / clingo usc and the better Lucent strategy / the better
 clingo strategy, with geometric means over the rows where all runs finished. The targets
 (issue 31): Lucent's default (bb) within 1.5x clingo end to end and 2x clasp solver only.
 Needs clingo, gringo and clasp (apt-get install -y gringo clasp)."""
@@ -48,8 +48,11 @@ def rows(pattern):
 
 
 def ground_aspif(f, tmp):
-    """gringo's aspif of `f`, written once into `tmp`; returns its path."""
+    """gringo's aspif of `f`, written once into `tmp` (a later call finds it); returns its
+    path."""
     aspif = os.path.join(tmp, os.path.basename(f)[:-3] + ".aspif")
+    if os.path.exists(aspif):
+        return aspif
     with open(aspif, "w") as out:
         subprocess.run(["gringo", "--output=intermediate", f], stdout=out, check=True)
     return aspif
