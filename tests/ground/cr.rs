@@ -81,3 +81,29 @@ fn text_form_is_gringos() {
     // literals last to first, then negative ones.
     assert_eq!(out, "a.\nb:-not c.\nc:-not b.\n{e}.\n:-b,e.\nd:-b.\n");
 }
+
+#[test]
+fn dependencies_follow_unification_and_source_order() {
+    // Each expected text was recorded with `gringo --text` (5.4.1) on the program above it.
+    // `s(X) :- n(e,X)` depends on the rule for `n(e,X)` alone, not on the one for `n(w,X)`
+    // (whose atoms cannot unify with it), so it is grounded before `t`, `u` and `n(w,X)`.
+    let (g, _) = run(
+        "f(1..3).\nt(X) :- f(X), not u(X).\nu(X) :- f(X), X > 2.\nn(e,X) :- f(X).\nn(w,X) :- t(X).\ns(X) :- n(e,X).\n",
+        false,
+    );
+    assert_eq!(
+        text::write_text(&g, None),
+        "f(1).\nf(2).\nf(3).\nn(e,1).\nn(e,2).\nn(e,3).\ns(1).\ns(2).\ns(3).\nu(3).\nt(1).\nt(2).\nn(w,1).\nn(w,2).\n"
+    );
+    // The depth-first search follows the body as written (`d` then `c`, searched last to
+    // first), not the order the rule is evaluated in (`c` binds fewer variables, so it comes
+    // first there).
+    let (g, _) = run(
+        "a(1..2).\nb(X) :- a(X).\nc(X) :- a(X).\nd(X,Y,Z) :- b(X), Y=X+1, Z=X+2.\nr(X) :- d(X,Y,Z), c(X).\n",
+        false,
+    );
+    assert_eq!(
+        text::write_text(&g, None),
+        "a(1).\na(2).\nc(1).\nc(2).\nb(1).\nb(2).\nd(1,2,3).\nd(2,3,4).\nr(1).\nr(2).\n"
+    );
+}

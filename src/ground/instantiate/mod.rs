@@ -2,7 +2,8 @@
 //!
 //! Algorithm (Kaminski, Schaub, TPLP 2022, simplified): ground facts first, then the strongly
 //! connected components of the statement dependency graph (a statement depends on every
-//! statement heading a predicate it reads) in topological order, each split, as gringo does,
+//! statement heading an atom that unifies with one it reads, as in gringo: `p(a)` does not
+//! depend on the rules for `p(b)`) in topological order, each split, as gringo does,
 //! into the components of its positive dependencies (a statement read only under `not` inside
 //! its component is grounded after the reader, whose literal stays); inside a recursive part,
 //! semi-naive evaluation grounds each rule once per combination that uses at least one atom new

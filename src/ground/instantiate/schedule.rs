@@ -42,6 +42,11 @@ impl Rows {
         &self.items[self.start[i] as usize..self.start[i + 1] as usize]
     }
 
+    /// The positions of row `i` in `items`.
+    fn span(&self, i: usize) -> std::ops::Range<usize> {
+        self.start[i] as usize..self.start[i + 1] as usize
+    }
+
     /// The items of the row being built.
     fn open_row(&self) -> &[u32] {
         &self.items[*self.start.last().expect("a start") as usize..]
@@ -58,28 +63,39 @@ impl Grounder<'_> {
         let mut reads = Rows::with_capacity(ns, 3 * ns);
         // What each statement reads other than under default negation.
         let mut pos_reads = Rows::with_capacity(ns, 3 * ns);
+        // The atom of each read (aligned with `reads.items` and `pos_reads.items`): the
+        // dependency edges below go only to statements whose head atoms unify with it.
+        let mut read_atoms: Vec<&NAtom> = Vec::with_capacity(3 * ns);
+        let mut pos_read_atoms: Vec<&NAtom> = Vec::with_capacity(3 * ns);
         let negative = |l: &NLit| matches!(l, NLit::Pred { sign, .. } if *sign != Sign::Positive);
+        let mut by_source: Vec<&NLit> = Vec::new();
         for s in &prog.stmts {
             stmt_heads(s, &mut heads);
             heads.end_row();
             // In gringo's order of the body (positive literals last to first, then the negative
             // ones), which decides the order of its depth-first search.
-            for l in s.body.iter().rev().filter(|l| !negative(l)) {
-                lit_preds(l, &mut pos_reads.items);
+            // (The planned body is in evaluation order; the source order is that of the spans.)
+            by_source.clear();
+            by_source.extend(s.body.iter());
+            by_source.sort_by_key(|l| source_pos(l));
+            for l in by_source.iter().rev().filter(|l| !negative(l)) {
+                lit_occs(l, &mut pos_reads.items, &mut pos_read_atoms);
             }
             let pos_start = *pos_reads.start.last().expect("a start") as usize;
             reads.items.extend_from_slice(&pos_reads.items[pos_start..]);
-            for l in s.body.iter().filter(|l| negative(l)) {
-                lit_preds(l, &mut reads.items);
+            read_atoms.extend_from_slice(&pos_read_atoms[pos_start..]);
+            for l in by_source.iter().filter(|l| negative(l)) {
+                lit_occs(l, &mut reads.items, &mut read_atoms);
             }
             if let NHead::Disj(es) | NHead::Choice(es) = &s.head {
                 for e in es {
                     for l in &e.cond {
-                        lit_preds(l, &mut reads.items);
-                        lit_preds(l, &mut pos_reads.items);
+                        lit_occs(l, &mut reads.items, &mut read_atoms);
+                        lit_occs(l, &mut pos_reads.items, &mut pos_read_atoms);
                     }
                     for l in e.conj.iter().filter(|l| l.sign != Sign::Positive) {
                         reads.items.push(l.atom.pred);
+                        read_atoms.push(&l.atom);
                     }
                 }
             }
@@ -99,7 +115,8 @@ impl Grounder<'_> {
             }
         }
         // Statement dependency graph, as gringo's (Dependency::analyze): a statement depends on
-        // every statement heading a predicate it reads. Ground facts are no nodes (gringo keeps
+        // every statement heading an atom that unifies with one it reads (the edges are made
+        // below). Ground facts are no nodes (gringo keeps
         // them apart and outputs them first); they are grounded before everything.
         let mut nodes: Vec<u32> = Vec::new();
         let mut node_of = vec![u32::MAX; ns];
@@ -152,14 +169,18 @@ impl Grounder<'_> {
                 finished(self, si, &mut pending);
             }
         }
-        let edges_of = |reads: &Rows| -> Rows {
+        // A statement depends on a statement heading an atom that unifies with one it reads
+        // (gringo's `Dependency::analyze`): `p(a)` does not wait for the rules of `p(b, ..)`.
+        let syms = &self.syms;
+        let edges_of = |reads: &Rows, atoms: &[&NAtom]| -> Rows {
             let mut e = Rows::with_capacity(nodes.len(), reads.items.len());
             for &si in &nodes {
-                for &p in reads.row(si as usize) {
+                let span = reads.span(si as usize);
+                for (&p, &atom) in reads.items[span.clone()].iter().zip(&atoms[span]) {
                     for &t in providers.row(p as usize) {
-                        let t = node_of[t as usize];
-                        if t != u32::MAX {
-                            e.items.push(t);
+                        let tn = node_of[t as usize];
+                        if tn != u32::MAX && heads_unify(syms, &prog.stmts[t as usize], atom) {
+                            e.items.push(tn);
                         }
                     }
                 }
@@ -167,8 +188,9 @@ impl Grounder<'_> {
             }
             e
         };
-        let edges = edges_of(&reads);
-        let pos_edges = edges_of(&pos_reads);
+        let edges = edges_of(&reads, &read_atoms);
+        let pos_edges = edges_of(&pos_reads, &pos_read_atoms);
+        drop((read_atoms, pos_read_atoms));
         drop((reads, pos_reads));
         let comps = positive_split(gringo_tarjan(&edges), &pos_edges);
         let mut comp_mark = vec![usize::MAX; n];
@@ -474,6 +496,110 @@ pub(super) fn lit_preds(l: &NLit, out: &mut Vec<PredId>) {
             }
         }
         _ => {}
+    }
+}
+
+/// As [`lit_preds`], with the atom of each predicate read pushed to `atoms`.
+fn lit_occs<'p>(l: &'p NLit, preds: &mut Vec<PredId>, atoms: &mut Vec<&'p NAtom>) {
+    match l {
+        NLit::Pred { atom, .. } => {
+            preds.push(atom.pred);
+            atoms.push(atom);
+        }
+        NLit::Agg(a) => {
+            for e in &a.elems {
+                e.cond.iter().for_each(|c| lit_occs(c, preds, atoms));
+                e.lit_lits().for_each(|l| lit_occs(l, preds, atoms));
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Where a body literal was written: the start of its atom's span (for an aggregate, of its
+/// first atom's); literals without an atom come last, in planned order.
+fn source_pos(l: &NLit) -> u32 {
+    match l {
+        NLit::Pred { atom, .. } => atom.span.start,
+        NLit::Agg(a) => a
+            .elems
+            .iter()
+            .flat_map(|e| e.cond.iter().chain(e.lit_lits()))
+            .map(source_pos)
+            .min()
+            .unwrap_or(u32::MAX),
+        _ => u32::MAX,
+    }
+}
+
+/// Whether statement `s` heads an atom of `atom`'s predicate whose arguments unify with
+/// `atom`'s.
+fn heads_unify(syms: &Symbols, s: &NStmt, atom: &NAtom) -> bool {
+    let same = |h: &NAtom| {
+        h.pred == atom.pred
+            && h.args.len() == atom.args.len()
+            && h.args
+                .iter()
+                .zip(&atom.args)
+                .all(|(x, y)| may_unify(syms, x, y))
+    };
+    let head = match &s.head {
+        NHead::Disj(es) | NHead::Choice(es) => es.iter().flat_map(|e| e.derived_atoms()).any(same),
+        NHead::None => false,
+    };
+    head || matches!(&s.kind, NKind::External(a, _) if same(a))
+}
+
+/// Whether two terms may stand for the same ground term under some substitution. Conservative:
+/// a variable, and an operation other than arithmetic, may be anything (variables shared
+/// between arguments are not followed); arithmetic yields only integers. So two terms are
+/// told apart only by a constant, a function symbol or an integer that differ.
+fn may_unify(syms: &Symbols, a: &NTerm, b: &NTerm) -> bool {
+    match (a, b) {
+        (NTerm::Var(_), _)
+        | (_, NTerm::Var(_))
+        | (NTerm::Unary { .. }, _)
+        | (_, NTerm::Unary { .. }) => true,
+        (NTerm::Binary { .. }, NTerm::Binary { .. }) => true,
+        (NTerm::Binary { .. }, NTerm::Sym(x)) | (NTerm::Sym(x), NTerm::Binary { .. }) => {
+            syms.num(*x).is_some()
+        }
+        (NTerm::Binary { .. }, NTerm::Fun { .. }) | (NTerm::Fun { .. }, NTerm::Binary { .. }) => {
+            false
+        }
+        (NTerm::Sym(x), NTerm::Sym(y)) => x == y,
+        (NTerm::Sym(x), NTerm::Fun { name, neg, args })
+        | (NTerm::Fun { name, neg, args }, NTerm::Sym(x)) => match syms.get(*x) {
+            SymData::Fun {
+                name: n,
+                neg: g,
+                len,
+                ..
+            } => {
+                n == *name
+                    && g == *neg
+                    && len as usize == args.len()
+                    && syms
+                        .args(*x)
+                        .iter()
+                        .zip(args)
+                        .all(|(&s, t)| may_unify(syms, &NTerm::Sym(s), t))
+            }
+            _ => false,
+        },
+        (
+            NTerm::Fun { name, neg, args },
+            NTerm::Fun {
+                name: n2,
+                neg: g2,
+                args: a2,
+            },
+        ) => {
+            name == n2
+                && neg == g2
+                && args.len() == a2.len()
+                && args.iter().zip(a2).all(|(x, y)| may_unify(syms, x, y))
+        }
     }
 }
 
