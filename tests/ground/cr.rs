@@ -107,3 +107,20 @@ fn dependencies_follow_unification_and_source_order() {
         "a(1).\na(2).\nc(1).\nc(2).\nb(1).\nb(2).\nd(1,2,3).\nd(2,3,4).\nr(1).\nr(2).\n"
     );
 }
+
+#[test]
+fn new_atoms_of_an_unbound_recursive_literal_are_read_newest_first() {
+    // `gringo --text` (5.4.1) on this program prints the rules in this order:
+    //   a(1). a(2). a(3). b(3):-not c(3). b(2):-not c(2). b(1):-not c(1). c(3):-b(3). c(2):-b(2).
+    // `a` and `b` form a positive cycle; `b(X) :- a(X), ...` reads the atoms of `a` new in the
+    // round with no argument bound, which gringo walks from the newest to the oldest. Lucent
+    // prints the same order; it also drops `not c(1)`, since no rule can derive `c(1)`.
+    let (g, _) = run(
+        "n(1..3).\na(X) :- n(X).\na(X) :- b(X).\nb(X) :- a(X), not c(X).\nc(X) :- b(X), X > 1.\n",
+        false,
+    );
+    assert_eq!(
+        text::write_text(&g, None),
+        "n(1).\nn(2).\nn(3).\na(1).\na(2).\na(3).\nb(3):-not c(3).\nb(2):-not c(2).\nb(1).\nc(3):-b(3).\nc(2):-b(2).\n"
+    );
+}

@@ -160,7 +160,11 @@ impl<'a> Grounder<'a> {
                     Candidates::One(Some(p)) => (p, p + 1),
                     Candidates::Group { lo, hi, .. } => (lo, hi),
                 };
+                // gringo's order: new atoms of an unbound literal newest first (`new_lit`).
+                let backward = matches!(cands, Candidates::Range(..))
+                    && std::ptr::eq(lit, self.new_lit as *const NLit);
                 for j in lo..hi {
+                    let j = if backward { hi - 1 - (j - lo) } else { j };
                     let d = &self.domains[atom.pred as usize];
                     let pos = match cands {
                         Candidates::Group { index, group, .. } => {

@@ -283,6 +283,11 @@ pub struct Grounder<'a> {
     /// Grounding a component naively: derived atoms are not marked as facts, since a later
     /// round may withdraw the rule that derived them.
     naive: bool,
+    /// The address of the body literal a semi-naive round reads over the last round's new
+    /// atoms (0: none). Where no argument of it is bound, its candidates are walked from the
+    /// newest atom to the oldest, as gringo walks a full index over new atoms; so the rules
+    /// come out in gringo's order. The address is only compared, never followed.
+    new_lit: usize,
     /// Computing a naive component's domain: aggregates over its predicates are assumed true.
     optimistic: bool,
     /// Multi-shot: atoms `1..=old_atoms` existed before this grounding (0 for one-shot).
@@ -527,6 +532,7 @@ impl<'a> Grounder<'a> {
             directives: Directives::default(),
             since_check: 0,
             naive: false,
+            new_lit: 0,
             optimistic: false,
             old_atoms,
             touched: Vec::new(),

@@ -325,8 +325,14 @@ impl Grounder<'_> {
                     _ => None,
                 })
                 .collect();
+            // The first recursive literal reads every atom as new (gringo's first round).
+            self.new_lit = ranges
+                .iter()
+                .position(Option::is_some)
+                .map_or(0, |i| &s.body[i] as *const NLit as usize);
             self.ground_stmt(s, &ranges);
         }
+        self.new_lit = 0;
         // Later rounds follow gringo's queue of instantiators (Queue::process): an instantiator
         // is a statement with one recursive literal over the last round's new atoms (earlier
         // recursive literals over older atoms, later ones over all). After a round, the
@@ -422,7 +428,9 @@ impl Grounder<'_> {
                     ranges[i] = Some(r);
                 }
                 if !empty {
+                    self.new_lit = &s.body[rec[t][jj]] as *const NLit as usize;
                     self.ground_stmt(s, &ranges);
+                    self.new_lit = 0;
                 }
             }
         }
