@@ -296,6 +296,12 @@ pub enum SearchProfile {
     Decision,
     /// The configured values for every program.
     Fixed,
+    /// The other half of `Auto`: the tweety values for tight programs without `#minimize`,
+    /// the configured values (with the phase switch) for non-tight ones. The second thread of
+    /// a two-thread portfolio searches with it, so that the two threads run the two profiles
+    /// whose conflict counts differ most from row to row (docs/bench/threads-2026-12-07d.md:
+    /// over the benchmark rows each profile wins about half of the rows, by up to 25 times).
+    Complement,
 }
 
 /// Which learnt clauses a reduction deletes. Both delete up to half of the learnt clauses and

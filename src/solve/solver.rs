@@ -241,14 +241,20 @@ impl Solver {
             SearchProfile::Auto => engine.has_unfounded() && !optimizing,
             SearchProfile::Decision => !optimizing,
             SearchProfile::Fixed => false,
+            SearchProfile::Complement => !engine.has_unfounded() && !optimizing,
         };
-        if config.profile == SearchProfile::Auto && !tweety && !optimizing {
-            // Tight decision problems: clasp's phase handling after a long run without a
-            // model (`Config::phase_switch`).
+        let auto_like = matches!(
+            config.profile,
+            SearchProfile::Auto | SearchProfile::Complement
+        );
+        if auto_like && !tweety && !optimizing {
+            // Decision problems without the tweety values: clasp's phase handling after a
+            // long run without a model (`Config::phase_switch`).
             engine.settings.phase_switch = config.phase_switch;
         }
         if tweety {
-            // Non-tight decision problems: clasp's `tweety` search settings (`SearchProfile`).
+            // clasp's `tweety` search settings (`SearchProfile`): under `Auto` for non-tight
+            // decision problems, under `Complement` for tight ones.
             engine.configure(0.92, config.seed);
             engine.sched.restarts = restart_state(RestartPolicy::Luby(60));
             engine.settings.save_progress = 160;
