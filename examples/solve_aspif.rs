@@ -6,7 +6,7 @@
 //! Usage: `solve_aspif [-n N] [--opt-mode=opt|optN|enum[,B..]|ignore]
 //! [--enum-mode=auto|brave|cautious] [--project] [--cr=subset] [--time-limit=S] [--parallel-mode=N]
 //! [--init-moms|--no-init-moms] [--vsids-decay=X] [--restarts=L,N|glucose|no]
-//! [--save-progress=N] [--eq=0|1] [--score-other=all|no] [--profile=auto|fixed] [--sign-occ=0|1] [--block-restarts=0|1] [--phase-switch=CONFLICTS|0] [--solve-limit=CONFLICTS] [--body-phase=true|false] [--del-cfl=[+,]FIRST,INC[,REPEAT]] [--deletion=sorted|basic] [--loops=shared|atom] [-q] [FILE]`; the search options override the solver's search defaults, for tuning experiments.
+//! [--save-progress=N] [--eq=0|1] [--score-other=all|no] [--profile=decision|auto|fixed|complement] [--sign-occ=0|1] [--block-restarts=0|1] [--phase-switch=CONFLICTS|0] [--solve-limit=CONFLICTS] [--body-phase=true|false] [--del-cfl=[+,]FIRST,INC[,REPEAT]] [--deletion=sorted|basic] [--loops=shared|atom] [-q] [FILE]`; the search options override the solver's search defaults, for tuning experiments.
 
 use lucent::ground::aspif;
 use lucent::solve::{
@@ -103,8 +103,9 @@ fn main() -> ExitCode {
         } else if let Some(v) = a.strip_prefix("--profile=") {
             config.profile = match v {
                 "fixed" => SearchProfile::Fixed,
-                "decision" => SearchProfile::Decision,
-                _ => SearchProfile::Auto,
+                "auto" => SearchProfile::Auto,
+                "complement" => SearchProfile::Complement,
+                _ => SearchProfile::Decision,
             };
         } else if let Some(v) = a.strip_prefix("--phase-switch=") {
             config.phase_switch = v.parse().ok().filter(|&k| k > 0);

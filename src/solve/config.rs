@@ -230,7 +230,7 @@ pub struct Config {
     pub save_progress: u32,
     /// Restart policy.
     pub restarts: RestartPolicy,
-    /// Whether the search settings depend on the program class (`SearchProfile::Auto`).
+    /// Whether the search settings depend on the program class (`SearchProfile`).
     pub profile: SearchProfile,
     /// When learnt clauses are reduced.
     pub reduce: ReduceSchedule,
@@ -249,12 +249,12 @@ pub struct Config {
     pub score_other: bool,
     /// Decide variables without a saved phase with the polarity that occurs more often in
     /// learnt clauses (clasp's VSIDS sign score). Only matters when phases are rarely saved
-    /// (`save_progress` > 0); `SearchProfile::Auto` turns it on with the tweety values.
+    /// (`save_progress` > 0); the tweety values of `SearchProfile` turn it on.
     pub sign_from_learnts: bool,
     /// Postpone glucose restarts while the trail is much longer than on average.
     pub restart_blocking: bool,
     /// After this many conflicts in one search call without a model, a tight program without
-    /// `#minimize` (under `SearchProfile::Auto`) switches to clasp's phase handling for the
+    /// `#minimize` (under `SearchProfile::Auto` and `Complement`) switches to clasp's phase handling for the
     /// rest of the call: saved phases are forgotten once, phases are saved only on backjumps
     /// over more than 160 levels, and the sign score decides the rest (`Engine::phase_switch`).
     /// A long run without a model is the mark of a refutation such as pigeons 10/9, where this
@@ -284,23 +284,23 @@ pub enum SearchProfile {
     /// for programs with positive loops (an unfounded-set propagator is installed) and no
     /// `#minimize`: these get clasp's `tweety` values instead (decay 0.92, Luby restarts with
     /// unit 60, save-progress 160, and clasp's sign score from learnt-clause occurrences for
-    /// variables without a saved phase). An empirical choice, measured in conflicts over the
-    /// benchmark pairs: the tweety values cut the conflicts on the labyrinth instances by 5 to
-    /// 13 times, but cost 2 to 4 times more on tight programs (pigeon, color, hanoi) and up to
-    /// 15 times more on the non-tight optimization problem tsp.
-    #[default]
+    /// variables without a saved phase); tight decision programs get the phase switch
+    /// (`Config::phase_switch`). The default until 2026-12-07 (chosen on 2026-12-03, when the
+    /// tweety values cost 1.17 times the conflicts on tight programs); a tuning option now.
     Auto,
     /// The tweety values for every program without `#minimize`, tight or not (clasp's choice);
-    /// the configured values for the others. A tuning option: over the benchmark rows it took
-    /// 1.17 times the conflicts of `Auto` (docs/bench/solve-2026-12-03.txt).
+    /// the configured values for the others. The default since 2026-12-07: on the current
+    /// solver, over the 45 tight decision rows of the benchmark table, the tweety values take
+    /// 0.91 times the conflicts of `Auto`'s, and end to end against clingo the geometric mean
+    /// is 0.84 instead of 0.88 (docs/bench/profile-2026-12-07.md).
+    #[default]
     Decision,
     /// The configured values for every program.
     Fixed,
-    /// The other half of `Auto`: the tweety values for tight programs without `#minimize`,
-    /// the configured values (with the phase switch) for non-tight ones. The second thread of
-    /// a two-thread portfolio searches with it, so that the two threads run the two profiles
-    /// whose conflict counts differ most from row to row (docs/bench/threads-2026-12-07d.md:
-    /// over the benchmark rows each profile wins about half of the rows, by up to 25 times).
+    /// The other half of `Decision`: the configured values, with the phase switch, for every
+    /// program (never tweety's). The second thread of a two-thread portfolio searches with it,
+    /// so that the two threads run the two profiles whose conflict counts differ most from row
+    /// to row (docs/bench/threads-2026-12-07d.md: each wins rows by up to 25 times).
     Complement,
 }
 
@@ -379,7 +379,7 @@ impl Default for Config {
             body_phase_true: true,
             save_progress: 0,
             restarts: RestartPolicy::Glucose,
-            profile: SearchProfile::Auto,
+            profile: SearchProfile::Decision,
             init_moms: true,
             reduce: ReduceSchedule::Conflicts {
                 first: 2000,

@@ -241,7 +241,7 @@ impl Solver {
             SearchProfile::Auto => engine.has_unfounded() && !optimizing,
             SearchProfile::Decision => !optimizing,
             SearchProfile::Fixed => false,
-            SearchProfile::Complement => !engine.has_unfounded() && !optimizing,
+            SearchProfile::Complement => false,
         };
         let auto_like = matches!(
             config.profile,
@@ -253,8 +253,8 @@ impl Solver {
             engine.settings.phase_switch = config.phase_switch;
         }
         if tweety {
-            // clasp's `tweety` search settings (`SearchProfile`): under `Auto` for non-tight
-            // decision problems, under `Complement` for tight ones.
+            // clasp's `tweety` search settings (`SearchProfile`): decision problems under
+            // `Decision`, non-tight ones under `Auto`.
             engine.configure(0.92, config.seed);
             engine.sched.restarts = restart_state(RestartPolicy::Luby(60));
             engine.settings.save_progress = 160;

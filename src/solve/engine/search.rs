@@ -111,6 +111,21 @@ impl Engine {
         self.heur.phase_saved.iter_mut().for_each(|s| *s = false);
     }
 
+    /// Saves the phase of every variable as the assignment on the trail (a model) has it,
+    /// whatever `save_progress` says. Called when a call ends on a model: a later call
+    /// without new clauses or other assumptions then decides as this model does and meets no
+    /// conflict, so it finds the same model (the promise of `control::Control::solve`). Not
+    /// called between the models of one enumeration: starting next to the last model made
+    /// projected enumerations (the planner's) wade through its many neighbours with the same
+    /// projection.
+    pub fn save_model_phases(&mut self) {
+        for &l in &self.asg.trail {
+            let i = l.var().index();
+            self.heur.phase[i] = !l.is_neg();
+            self.heur.phase_saved[i] = true;
+        }
+    }
+
     /// Searches for a total assignment extending `assumptions`. On `Sat` the assignment stays
     /// on the trail until the next `backtrack`/`add_clause`.
     pub fn search(&mut self, assumptions: &[Lit]) -> SearchResult {

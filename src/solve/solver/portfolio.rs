@@ -201,11 +201,11 @@ pub(super) fn diversify(base: &Config, k: usize) -> Config {
     c.seed = base.seed.wrapping_add(k as u64 * 7919);
     match k % 4 {
         0 => {}
-        1 if base.profile == SearchProfile::Auto => {
-            // The other search profile than thread 0's (`SearchProfile::Complement`): clasp's
-            // tweety values where thread 0 has glucose restarts and progress saving, and
-            // these where thread 0 has tweety's; on decision problems the two profiles win
-            // different rows, by up to 25 times in conflicts. As the second configuration of
+        1 if matches!(base.profile, SearchProfile::Decision | SearchProfile::Auto) => {
+            // The other search profile than thread 0's (`SearchProfile::Complement`): glucose
+            // restarts, progress saving and the phase switch where thread 0 has clasp's tweety
+            // values; on decision problems the two profiles win different rows, by up to 25
+            // times in conflicts. As the second configuration of
             // clasp's portfolio (`clingo --print-portfolio`: `--opt-strat=usc,disjoint`),
             // core-guided optimization beside thread 0's branch and bound.
             c.profile = SearchProfile::Complement;
@@ -813,12 +813,12 @@ mod tests {
 
     #[test]
     fn the_second_thread_searches_with_the_other_profile() {
-        // Tight: a choice and a rule. Thread 0 has the configured values, thread 1 tweety's.
+        // Tight: a choice and a rule. Thread 0 has tweety's values, thread 1 the configured ones.
         let tight = two_threads(vec![Rule::choice(&[1], &[]), Rule::normal(&[2], &[1])], 2);
         let helper = &tight.par.as_ref().expect("two threads").helpers[0];
-        assert!(!tweety(&tight));
-        assert!(tweety(helper));
-        // Not tight (1 and 2 support each other): the other way round.
+        assert!(tweety(&tight));
+        assert!(!tweety(helper));
+        // Not tight (1 and 2 support each other): the same.
         let loops = two_threads(
             vec![
                 Rule::choice(&[3], &[]),

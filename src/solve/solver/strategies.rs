@@ -99,6 +99,9 @@ impl Solver {
                         // it anyway, and adding it would first flip the last decision, which
                         // the backtrack would then save as that variable's phase (a later
                         // step's call then starts its search off the model it should extend).
+                        // The phases are saved explicitly: the backtrack saves them only when
+                        // it crosses more than `save_progress` levels (160 under tweety's).
+                        self.engine.save_model_phases();
                         self.engine.backtrack(0);
                         if unique {
                             call.exhausted = true;
