@@ -253,10 +253,11 @@ pub struct Config {
     pub sign_from_learnts: bool,
     /// Postpone glucose restarts while the trail is much longer than on average.
     pub restart_blocking: bool,
-    /// After this many conflicts in one search call without a model, a tight program without
-    /// `#minimize` (under `SearchProfile::Auto` and `Complement`) switches to clasp's phase handling for the
-    /// rest of the call: saved phases are forgotten once, phases are saved only on backjumps
-    /// over more than 160 levels, and the sign score decides the rest (`Engine::phase_switch`).
+    /// After this many conflicts in one search call without a model, a program without
+    /// `#minimize` and without tweety's values (tight ones under `SearchProfile::Auto`, all
+    /// under `Complement`) switches to clasp's phase handling for the rest of the call: saved
+    /// phases are forgotten once, phases are saved only on backjumps over more than 160
+    /// levels, and the sign score decides the rest (`Engine::phase_switch`).
     /// A long run without a model is the mark of a refutation such as pigeons 10/9, where this
     /// halves the conflicts and their cost; satisfiable planning rows lose from it when it
     /// starts early (docs/bench/pigeon-2026-12-06.txt). `None` never switches.

@@ -898,8 +898,7 @@ impl Engine {
             self.asg.values[l.code()] = 0;
             self.asg.values[(!l).code()] = 0;
             if save {
-                self.heur.phase[v.index()] = !l.is_neg();
-                self.heur.phase_saved[v.index()] = true;
+                self.save_phase(l);
             }
             if self.heur.heap_pos[v.index()] == NO_SLOT && self.heur.decidable[v.index()] {
                 self.heap_insert(v);

@@ -240,8 +240,7 @@ impl Solver {
         let tweety = match config.profile {
             SearchProfile::Auto => engine.has_unfounded() && !optimizing,
             SearchProfile::Decision => !optimizing,
-            SearchProfile::Fixed => false,
-            SearchProfile::Complement => false,
+            SearchProfile::Fixed | SearchProfile::Complement => false,
         };
         let auto_like = matches!(
             config.profile,

@@ -129,6 +129,14 @@ impl Engine {
         self.heur.rng.wrapping_mul(0x2545_F491_4F6C_DD1D)
     }
 
+    /// Remembers the polarity of `l` as its variable's phase (phase saving).
+    #[inline]
+    pub(super) fn save_phase(&mut self, l: Lit) {
+        let i = l.var().index();
+        self.heur.phase[i] = !l.is_neg();
+        self.heur.phase_saved[i] = true;
+    }
+
     /// The sign to decide `v` with: its saved phase, else (with `sign_from_learnts`) the
     /// polarity occurring more often in learnt clauses, else its initial sign.
     pub(super) fn decision_sign(&self, v: Var) -> bool {

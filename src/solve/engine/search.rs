@@ -119,10 +119,8 @@ impl Engine {
     /// projected enumerations (the planner's) wade through its many neighbours with the same
     /// projection.
     pub fn save_model_phases(&mut self) {
-        for &l in &self.asg.trail {
-            let i = l.var().index();
-            self.heur.phase[i] = !l.is_neg();
-            self.heur.phase_saved[i] = true;
+        for i in 0..self.asg.trail.len() {
+            self.save_phase(self.asg.trail[i]);
         }
     }
 

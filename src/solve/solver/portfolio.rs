@@ -205,9 +205,9 @@ pub(super) fn diversify(base: &Config, k: usize) -> Config {
             // The other search profile than thread 0's (`SearchProfile::Complement`): glucose
             // restarts, progress saving and the phase switch where thread 0 has clasp's tweety
             // values; on decision problems the two profiles win different rows, by up to 25
-            // times in conflicts. As the second configuration of
-            // clasp's portfolio (`clingo --print-portfolio`: `--opt-strat=usc,disjoint`),
-            // core-guided optimization beside thread 0's branch and bound.
+            // times in conflicts. As the second configuration of clasp's portfolio (`clingo
+            // --print-portfolio`: `--opt-strat=usc,disjoint`), core-guided optimization beside
+            // thread 0's branch and bound.
             c.profile = SearchProfile::Complement;
             c.opt_strategy = OptStrategy::Usc;
         }
