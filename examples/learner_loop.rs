@@ -1,5 +1,5 @@
 //! The learner's inner loop as a benchmark client of `control::Control`: N times, a fresh
-//! Control parses a one-step program, grounds it, solves it and reads the model (every true
+//! Control (built from the argument `0`, every model, as the Python side's) parses a one-step program, grounds it, solves it and reads the model (every true
 //! atom as a `Symbol`). Prints the calls per second; `scripts/bench_learner_loop.py` runs it
 //! beside clingo's Python API doing the same.
 //!
@@ -9,7 +9,7 @@
 
 use std::time::Instant;
 
-use lucent::control::{Control, ControlConfig, Part, SolveOptions};
+use lucent::control::{Control, Part, SolveOptions};
 
 #[path = "../src/mi_alloc.rs"]
 mod mi_alloc;
@@ -32,7 +32,9 @@ fn main() {
     let start = Instant::now();
     let mut atoms = 0usize;
     for _ in 0..n {
-        let mut ctl = Control::new(ControlConfig::default());
+        // As the Python side's `clingo.Control(["0"])`: every model (every improving model of
+        // a program that optimizes).
+        let mut ctl = Control::from_args(&["0"]).expect("0 is a valid argument");
         ctl.add_source(path, &text).expect("the program parses");
         ctl.ground(&[Part::base()]).expect("the program grounds");
         ctl.solve(&SolveOptions::default(), |m| {

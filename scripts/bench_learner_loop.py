@@ -71,7 +71,8 @@ def main():
         subprocess.run(["cargo", "build", "--profile", "release-lto", "--quiet",
                         "--no-default-features", "--example", "learner_loop"], cwd=root,
                        check=True)
-        exes = [os.path.join(root, "target", "release-lto", "examples", "learner_loop")]
+        target = os.environ.get("CARGO_TARGET_DIR", os.path.join(root, "target"))
+        exes = [os.path.join(target, "release-lto", "examples", "learner_loop")]
     with open(a.program) as fh:
         text = fh.read()
     import clingo
