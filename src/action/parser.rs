@@ -83,7 +83,7 @@ impl<'a> Cursor<'a> {
     fn description(&mut self) -> Vec<Statement> {
         let mut statements = Vec::new();
         while !self.at(T::Eof) {
-            let start = self.tok.start;
+            let start = self.tok.start();
             self.depth = 0;
             let statement = self.statement();
             let st = statement.unwrap_or_else(|_| {
@@ -135,7 +135,7 @@ impl<'a> Cursor<'a> {
     }
 
     fn statement(&mut self) -> PResult<Statement> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         let mut guards = Vec::new();
         while self.at(T::LBrack) {
             let open = self.bump();
@@ -143,7 +143,7 @@ impl<'a> Cursor<'a> {
             let switch = self.ident()?;
             self.expect(T::RBrack, &["\"]\""])?;
             guards.push(Guard {
-                span: self.span_from(open.start),
+                span: self.span_from(open.start()),
                 negated,
                 switch,
             });
@@ -376,7 +376,7 @@ impl<'a> Cursor<'a> {
     }
 
     fn sort_expr(&mut self) -> PResult<SortExpr> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         let mut parts = vec![self.sort_part()?];
         while self.eat(T::Plus) {
             parts.push(self.sort_part()?);
@@ -425,7 +425,7 @@ impl<'a> Cursor<'a> {
     }
 
     fn body_item(&mut self) -> PResult<BodyItem> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         let term = self.term()?;
         if let Some(op) = cmp_op(self.tok.kind) {
             self.bump();

@@ -133,7 +133,7 @@ impl<'a> Cursor<'a> {
 
     /// The text of a token.
     pub(crate) fn word(&self, tok: Token) -> &'a str {
-        &self.text[tok.start as usize..tok.end as usize]
+        &self.text[tok.start() as usize..tok.end() as usize]
     }
 
     /// The text of the current token.
@@ -148,7 +148,7 @@ impl<'a> Cursor<'a> {
 
     /// The span of a token.
     pub(crate) fn span_of(&self, tok: Token) -> Span {
-        self.span(tok.start, tok.end)
+        self.span(tok.start(), tok.end())
     }
 
     /// The span from `start` to the end of the last consumed token.
@@ -159,7 +159,7 @@ impl<'a> Cursor<'a> {
     /// Consumes the current token and returns it; at end of input it stays there.
     pub(crate) fn bump(&mut self) -> Token {
         let tok = self.tok;
-        self.prev_end = tok.end;
+        self.prev_end = tok.end();
         if tok.kind != T::Eof {
             self.tok = match self.peeked.take() {
                 Some(t) => t,
@@ -304,7 +304,7 @@ impl<'a> Cursor<'a> {
     /// offsets, and the cursor on the token after `#end` (`None` when there is no `#end`; the
     /// cursor is then at end of input).
     pub(super) fn script_body(&mut self) -> Option<(usize, usize)> {
-        let code_start = self.tok.end as usize;
+        let code_start = self.tok.end() as usize;
         self.peeked = None;
         self.lexer.set_pos(code_start);
         let found = self.lexer.script_body();

@@ -48,7 +48,7 @@ impl<'a> Parser<'a> {
         let mut elements = Vec::new();
         if !self.at(T::RBrace) {
             loop {
-                let start = self.tok.start;
+                let start = self.tok.start();
                 let (weight, priority, terms) = self.weight_tuple()?;
                 let condition = if self.eat(T::Colon) {
                     self.condition(true)?

@@ -11,7 +11,7 @@ impl<'a> Parser<'a> {
 
     /// A rule head, and the term its first literal was read from (a CR rule's label candidate).
     pub(super) fn head(&mut self) -> PResult<(Head, Option<Term>)> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         if self.at(T::LBrace) {
             return Ok((Head::Choice(Box::new(self.choice(start, None)?)), None));
         }
@@ -55,7 +55,7 @@ impl<'a> Parser<'a> {
         // continues the condition, which `condition` has consumed already).
         while self.at(T::Bar) || self.at(T::Semi) || self.at(T::Comma) {
             self.bump();
-            let start = self.tok.start;
+            let start = self.tok.start();
             let literal = self.single_literal()?;
             elements.push(self.head_element(start, literal, true)?);
         }
@@ -140,7 +140,7 @@ impl<'a> Parser<'a> {
         let mut elements = Vec::new();
         if !self.at(T::RBrace) {
             loop {
-                let start = self.tok.start;
+                let start = self.tok.start();
                 elements.push(element(self, start)?);
                 if !self.eat(T::Semi) {
                     break;
@@ -251,7 +251,7 @@ impl<'a> Parser<'a> {
 
     /// One body literal (several for a comparison chain).
     pub(super) fn body_literal(&mut self, out: &mut Vec<BodyLiteral>) -> PResult<()> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         let sign = self.sign()?;
         if self.at(T::LBrace) || self.at_aggregate() {
             return self.body_aggregate_literal(start, sign, None, out);
@@ -382,7 +382,7 @@ impl<'a> Parser<'a> {
 
     /// One literal (several for a comparison chain when `ctx` allows chains).
     pub(super) fn literal(&mut self, ctx: Ctx, out: &mut Vec<Literal>) -> PResult<()> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         let sign = self.sign()?;
         if self.at(T::Hash) && (matches!(self.cur(), "#true" | "#false") || self.at_sort_name()) {
             return self.atom_literal(start, sign, out);

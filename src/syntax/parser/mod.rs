@@ -115,7 +115,7 @@ pub fn detect_dialect(text: &str) -> Dialect {
     loop {
         let tok = lexer.next_token(&mut sink);
         sink.clear();
-        let word = &text[tok.start as usize..tok.end as usize];
+        let word = &text[tok.start() as usize..tok.end() as usize];
         match tok.kind {
             T::Hash if word == "#const" || word == "#maxint" => loop {
                 let t = lexer.next_token(&mut sink);
@@ -126,7 +126,7 @@ pub fn detect_dialect(text: &str) -> Dialect {
             },
             T::Ident if word == "sorts" => {
                 let next = lexer.next_token(&mut sink);
-                let next_word = &text[next.start as usize..next.end as usize];
+                let next_word = &text[next.start() as usize..next.end() as usize];
                 let sparc = matches!(next.kind, T::Hash | T::Eof)
                     || (next.kind == T::Ident && next_word == "predicates");
                 return if sparc {
@@ -379,7 +379,7 @@ impl<'a> Parser<'a> {
     /// Parses every statement of the file.
     fn program(&mut self) {
         while !self.at(T::Eof) {
-            let start = self.tok.start;
+            let start = self.tok.start();
             let before = self.lexer.pos();
             self.depth = 0;
             let kind = match self.statement() {

@@ -58,7 +58,7 @@ impl<'a> Parser<'a> {
 
     /// A sort expression without binary operators.
     pub(super) fn sort_primary(&mut self) -> PResult<SortExpr> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         let record = self.at(T::Ident) && self.peek().kind == T::LParen;
         let kind = match self.tok.kind {
             T::LBrace => {
@@ -78,7 +78,7 @@ impl<'a> Parser<'a> {
             T::LBrack => {
                 let mut parts = Vec::new();
                 while self.at(T::LBrack) {
-                    let part_start = self.bump().start;
+                    let part_start = self.bump().start();
                     let kind = self.concat_part()?;
                     self.expect(T::RBrack, &["]"])?;
                     parts.push(SortExpr {
@@ -137,7 +137,7 @@ impl<'a> Parser<'a> {
         self.expect(T::LParen, &["("])?;
         let mut args = Vec::new();
         loop {
-            let start = self.tok.start;
+            let start = self.tok.start();
             if self.at_sort_name() {
                 let tok = self.bump();
                 let sort = SortExprKind::Ref(self.word(tok)[1..].to_string());

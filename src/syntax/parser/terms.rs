@@ -100,7 +100,7 @@ impl<'a> Cursor<'a> {
             _ => return self.primary(),
         };
         self.enter()?;
-        let start = self.bump().start;
+        let start = self.bump().start();
         let arg = self.unary()?;
         self.leave();
         let span = self.span_from(start);
@@ -123,7 +123,7 @@ impl<'a> Cursor<'a> {
     /// pools, `|t|`, `#inf`, `#sup`, `@f(...)`; in the arithmetic grammar numbers, variables,
     /// constants, functions and `(t)` only.
     fn primary(&mut self) -> PResult<Term> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         if self.grammar == TermGrammar::Arithmetic
             && !matches!(
                 self.tok.kind,
@@ -257,7 +257,7 @@ impl<'a> Cursor<'a> {
         }
         let mut alts: Vec<(u32, Vec<Term>, bool)> = Vec::new();
         loop {
-            let alt_start = self.tok.start;
+            let alt_start = self.tok.start();
             let mut terms = vec![self.term()?];
             let mut trailing = false;
             while self.eat(T::Comma) {
@@ -326,7 +326,7 @@ impl<'a> Cursor<'a> {
 
     /// The contents of a string token with escapes resolved (the lexer checked them).
     pub(crate) fn unescape(&self, tok: Token) -> String {
-        let raw = &self.text[tok.start as usize + 1..tok.end as usize - 1];
+        let raw = &self.text[tok.start() as usize + 1..tok.end() as usize - 1];
         if !raw.contains('\\') {
             return raw.to_string();
         }

@@ -44,7 +44,7 @@ impl<'a> Parser<'a> {
         };
         if !self.eat(T::RBrace) {
             loop {
-                let start = self.tok.start;
+                let start = self.tok.start();
                 if self.eat(T::Amp) {
                     def.atoms.push(self.theory_atom_def(start)?);
                 } else {
@@ -72,7 +72,7 @@ impl<'a> Parser<'a> {
         let mut ops = Vec::new();
         if !self.at(T::RBrace) {
             loop {
-                let op_start = self.tok.start;
+                let op_start = self.tok.start();
                 let Some(op) = self.theory_op() else {
                     self.theory_mode(false);
                     return Err(self.unexpected(&["<THEORYOP>"]));
@@ -186,9 +186,9 @@ impl<'a> Parser<'a> {
     }
 
     fn theory_atom_inner(&mut self) -> PResult<TheoryAtom> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         self.bump();
-        let name_start = self.tok.start;
+        let name_start = self.tok.start();
         let tok = self.expect(T::Ident, &["<IDENTIFIER>"])?;
         let name = Name::new(self.word(tok));
         let args = if self.at(T::LParen) {
@@ -264,7 +264,7 @@ impl<'a> Parser<'a> {
 
     /// `t1, ..., tn [: condition]` or `: condition`, in theory mode; ends in theory mode.
     fn theory_element(&mut self) -> PResult<TheoryElement> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         let mut terms = Vec::new();
         if self.at(T::RBrace) {
             return Err(self.unexpected(&[":"]));
@@ -295,7 +295,7 @@ impl<'a> Parser<'a> {
 
     /// `op* term (op+ term)*`: the term alone when no operator was written.
     fn theory_opterm(&mut self) -> PResult<TheoryTerm> {
-        let start = self.tok.start;
+        let start = self.tok.start();
         let mut parts: Vec<(Vec<String>, TheoryTerm)> = Vec::new();
         loop {
             let mut ops = Vec::new();
@@ -338,7 +338,7 @@ impl<'a> Parser<'a> {
     /// One theory term without operators at its top.
     fn theory_term(&mut self) -> PResult<TheoryTerm> {
         self.enter()?;
-        let start = self.tok.start;
+        let start = self.tok.start();
         let fun = self.at(T::Ident) && self.peek().kind == T::LParen;
         let kind = match self.tok.kind {
             T::LBrace => {
