@@ -289,10 +289,14 @@ impl Symbol {
             SymData::Str(s) => Symbol::String(syms.names.resolve(s).to_string()),
             SymData::Fun { name, neg, .. } => {
                 let ids = syms.args(id);
-                let mut args = Vec::with_capacity(ids.len());
-                for &a in ids {
-                    args.push(Symbol::leaf_from_table(syms, a));
-                }
+                // Each argument is written in place into the vector (`extend` over an exact
+                // size): pushing a `Symbol` built on the stack copied it with wider loads than
+                // the stores that built it, which stalled on store forwarding (`perf
+                // annotate`, the learner-loop benchmark).
+                let args: Vec<Symbol> = ids
+                    .iter()
+                    .map(|&a| Symbol::leaf_from_table(syms, a))
+                    .collect();
                 Symbol::Function {
                     name: Name(syms.names.resolve_shared(name)),
                     args,
