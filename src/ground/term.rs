@@ -152,6 +152,12 @@ impl Known for Binding {
     }
 }
 
+/// A short list of variable slots, each once, in the order found: what [`NTerm::vars`] and the
+/// rewriter's safety planning collect per literal. Kept on the stack up to 8 slots (a rule's
+/// literal has a handful of variables), so collecting allocates nothing: the rewriter and the
+/// grounder made some 150 such vectors a call in the learner-loop benchmark.
+pub type VarList = smallvec::SmallVec<[u32; 8]>;
+
 /// Where [`NTerm::binds`] adds the slots a match binds (each once).
 pub trait Newly {
     /// Adds slot `v`, if not there yet.
@@ -159,6 +165,15 @@ pub trait Newly {
 }
 
 impl Newly for Vec<u32> {
+    #[inline]
+    fn add(&mut self, v: u32) {
+        if !self.contains(&v) {
+            self.push(v);
+        }
+    }
+}
+
+impl Newly for VarList {
     #[inline]
     fn add(&mut self, v: u32) {
         if !self.contains(&v) {
@@ -372,7 +387,7 @@ impl NTerm {
     }
 
     /// Adds the variable slots of the term to `out`.
-    pub fn vars(&self, out: &mut Vec<u32>) {
+    pub fn vars(&self, out: &mut VarList) {
         match self {
             NTerm::Sym(_) => {}
             NTerm::Var(v) => {

@@ -539,9 +539,9 @@ impl Grounder<'_> {
         // As gringo does, instances of the condition that agree on the local variables shared
         // by the condition and the literals form one element: its condition is their
         // disjunction, its literals their union.
-        let mut cond_vars = Vec::new();
+        let mut cond_vars = VarList::new();
         e.cond.iter().for_each(|l| lit_vars(l, &mut cond_vars));
-        let mut head_vars = Vec::new();
+        let mut head_vars = VarList::new();
         for l in &e.conj {
             l.atom.args.iter().for_each(|t| t.vars(&mut head_vars));
             l.expand.iter().for_each(|x| lit_vars(x, &mut head_vars));

@@ -62,7 +62,7 @@ use super::rewrite::{
     lit_vars, Compiled, HeadGate, NAgg, NAtom, NCondLit, NHead, NKind, NLit, NStmt, PredId,
 };
 use super::symbol::{SymData, SymId, Symbols};
-use super::term::{Binding, NTerm, TermVars, VarSet};
+use super::term::{Binding, NTerm, TermVars, VarList, VarSet};
 use crate::base::intern::Sym;
 
 /// A grounder atom: the grounder's own number for an atom, counted from 1 in order of creation

@@ -31,7 +31,7 @@ mod statement;
 mod theory;
 
 pub use pool::unpool_term;
-pub use safety::{lit_vars, plan};
+pub use safety::{lit_vars, plan, Flags};
 pub use theory::{NTheory, Theories};
 
 use hashbrown::HashMap;
@@ -41,7 +41,7 @@ use crate::syntax::ast::{self, AggregateFunction, CmpOp, Sign, TermKind};
 
 use super::program::AuxKind;
 use super::symbol::{SymId, Symbols};
-use super::term::NTerm;
+use super::term::{NTerm, VarList};
 use crate::base::intern::{Interner, Sym};
 
 /// Index of a predicate signature in [`Compiled::preds`].

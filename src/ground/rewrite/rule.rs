@@ -407,16 +407,17 @@ impl Rewriter<'_> {
     ) {
         let n = vars.names.len();
         // Global variables: those outside aggregate elements and head conditions.
-        let mut global = vec![false; n];
-        let mut buf = Vec::new();
-        let mut mark = |t: &NTerm, g: &mut Vec<bool>| {
+        // Per variable slot: global, and bound by the body (on the stack for up to 32 slots).
+        let mut global: Flags = smallvec::smallvec![false; n];
+        let mut buf = VarList::new();
+        let mut mark = |t: &NTerm, g: &mut [bool]| {
             buf.clear();
             t.vars(&mut buf);
             for &v in &buf {
                 g[v as usize] = true;
             }
         };
-        let mut vs = Vec::new();
+        let mut vs = VarList::new();
         for l in &body {
             match l {
                 NLit::Agg(a) => a.guards.iter().for_each(|(_, t)| mark(t, &mut global)),
@@ -473,7 +474,7 @@ impl Rewriter<'_> {
         }
         // Global variables occurring only in elements of several aggregates are still local to
         // each; a variable is global iff marked above.
-        let mut bound = vec![false; n];
+        let mut bound: Flags = smallvec::smallvec![false; n];
         let mut unsafe_vars: Vec<u32> = Vec::new();
         let body = plan(body, &mut bound, &global, &mut unsafe_vars);
         for (v, g) in global.iter().enumerate() {
@@ -487,7 +488,7 @@ impl Rewriter<'_> {
                     let mut b = bound.clone();
                     let cond = std::mem::take(&mut e.cond);
                     e.cond = plan(cond, &mut b, &global, &mut unsafe_vars);
-                    let mut vs = Vec::new();
+                    let mut vs = VarList::new();
                     if e.conj.is_empty() {
                         e.atom.args.iter().for_each(|t| t.vars(&mut vs));
                     }
@@ -495,7 +496,7 @@ impl Rewriter<'_> {
                         let mut bl = b.clone();
                         let expand = std::mem::take(&mut l.expand);
                         l.expand = plan(expand, &mut bl, &global, &mut unsafe_vars);
-                        let mut lv = Vec::new();
+                        let mut lv = VarList::new();
                         l.atom.args.iter().for_each(|t| t.vars(&mut lv));
                         vs.extend(lv.into_iter().filter(|&v| !bl[v as usize]));
                     }

@@ -7,8 +7,11 @@
 
 use super::*;
 
+/// One flag per variable slot (bound, global), on the stack for rules of up to 32 variables.
+pub type Flags = smallvec::SmallVec<[bool; 32]>;
+
 /// Adds the variables of a literal (for aggregates: of guards and elements) to `out`.
-pub fn lit_vars(l: &NLit, out: &mut Vec<u32>) {
+pub fn lit_vars(l: &NLit, out: &mut VarList) {
     match l {
         NLit::Pred { atom, .. } => atom.args.iter().for_each(|t| t.vars(out)),
         NLit::Cmp { lhs, rhs, .. } => {
@@ -42,7 +45,7 @@ pub(super) fn readiness(
     l: &mut NLit,
     bound: &[bool],
     global: &[bool],
-    newly: &mut Vec<u32>,
+    newly: &mut VarList,
 ) -> Option<u32> {
     newly.clear();
     match l {
@@ -94,7 +97,7 @@ pub(super) fn readiness(
         NLit::Agg(a) => {
             // Every global variable of the elements must be bound first.
             for e in &a.elems {
-                let mut vs = Vec::new();
+                let mut vs = VarList::new();
                 e.terms.iter().for_each(|t| t.vars(&mut vs));
                 e.cond.iter().for_each(|c| lit_vars(c, &mut vs));
                 e.lit_lits().for_each(|l| lit_vars(l, &mut vs));
@@ -110,7 +113,7 @@ pub(super) fn readiness(
                 if *op == CmpOp::Eq && a.sign == Sign::Positive && a.binder.is_none() {
                     // `X = #agg{...}`, and as in gringo any term matching can bind, such as
                     // the linear `X+1 = #min{...}` (a value it cannot match is skipped).
-                    let mut vs = Vec::new();
+                    let mut vs = VarList::new();
                     if t.binds(bound, &mut vs) && !vs.is_empty() {
                         a.binder = Some(i);
                         newly.extend(vs);
@@ -134,12 +137,12 @@ pub fn plan(
     unsafe_vars: &mut Vec<u32>,
 ) -> Vec<NLit> {
     let mut out = Vec::with_capacity(lits.len());
-    let mut newly = Vec::new();
+    let mut newly = VarList::new();
     // What the best literal so far binds: `readiness` leaves in `newly` what the literal it
     // scored binds, and `bound` does not change during a round, so the chosen literal's is kept
     // instead of scoring it again (an aggregate's `binder`, set by `readiness`, is likewise the
     // one of this round's bound variables).
-    let mut best_newly = Vec::new();
+    let mut best_newly = VarList::new();
     while !lits.is_empty() {
         let mut best: Option<(u32, usize)> = None;
         for (i, lit) in lits.iter_mut().enumerate() {
@@ -152,7 +155,7 @@ pub fn plan(
         }
         let Some((_, i)) = best else {
             for l in &lits {
-                let mut vs = Vec::new();
+                let mut vs = VarList::new();
                 lit_vars(l, &mut vs);
                 for v in vs {
                     if !bound[v as usize]
@@ -172,16 +175,16 @@ pub fn plan(
         // Plan aggregate element conditions with the global variables bound so far.
         if let NLit::Agg(a) = &mut l {
             for e in &mut a.elems {
-                let mut b = bound.to_vec();
+                let mut b = Flags::from_slice(bound);
                 let cond = std::mem::take(&mut e.cond);
                 e.cond = plan(cond, &mut b, global, unsafe_vars);
-                let mut vs = Vec::new();
+                let mut vs = VarList::new();
                 e.terms.iter().for_each(|t| t.vars(&mut vs));
                 // Each alternative of a conditional literal may bind its own local variables.
                 for alt in e.lit.iter_mut().flatten() {
                     let mut ba = b.clone();
                     *alt = plan(std::mem::take(alt), &mut ba, global, unsafe_vars);
-                    let mut av = Vec::new();
+                    let mut av = VarList::new();
                     alt.iter().for_each(|l| lit_vars(l, &mut av));
                     vs.extend(av.into_iter().filter(|&v| !ba[v as usize]));
                 }
