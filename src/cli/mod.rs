@@ -461,10 +461,52 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
     let deadline = options
         .time_limit
         .map(|secs| start + Duration::from_secs_f64(secs));
-    let mut diags = diagnostics_for(options);
     if options.mode == options::Mode::Clasp {
         return run_clasp_mode(options, io, start, deadline);
     }
+    if options.mode != options::Mode::Clingo {
+        return run_text_pipeline(options, io, start, deadline);
+    }
+    // As clingo: inputs that are all ground programs in aspif (`gringo enc.lp | lucent`) are
+    // solved as `--mode=clasp` solves them. Standard input is read here and handed on.
+    let reads_stdin = options.files.is_empty() || options.files.iter().any(|f| f == "-");
+    let mut stdin_bytes = Vec::new();
+    if reads_stdin {
+        // A read error leaves the input empty here; the text pipeline reports it as before.
+        let _ = io.stdin.read_to_end(&mut stdin_bytes);
+    }
+    let all_aspif = if options.files.is_empty() {
+        input::is_aspif(&stdin_bytes)
+    } else {
+        options.files.iter().all(|f| {
+            if f == "-" {
+                input::is_aspif(&stdin_bytes)
+            } else {
+                input::file_is_aspif(f)
+            }
+        })
+    };
+    let mut stdin = std::io::Cursor::new(stdin_bytes);
+    let mut io = Io {
+        stdin: &mut stdin,
+        out: &mut *io.out,
+        err: &mut *io.err,
+    };
+    if all_aspif {
+        run_clasp_mode(options, &mut io, start, deadline)
+    } else {
+        run_text_pipeline(options, &mut io, start, deadline)
+    }
+}
+
+/// Grounds and solves (or only grounds, in gringo mode) the text inputs.
+fn run_text_pipeline(
+    options: &Options,
+    io: &mut Io,
+    start: Instant,
+    deadline: Option<Instant>,
+) -> std::io::Result<i32> {
+    let mut diags = diagnostics_for(options);
     let consts = match const_terms(options, io)? {
         Ok(c) => c,
         Err(code) => return Ok(code),
