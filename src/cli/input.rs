@@ -92,6 +92,19 @@ pub fn add_bytes(
     (file, diag)
 }
 
+/// True when the file `name` starts with aspif's header
+/// ([`crate::ground::aspif::is_aspif`]); false when it cannot be read (the text pipeline then
+/// reports it).
+pub fn file_is_aspif(name: &str) -> bool {
+    let mut head = Vec::with_capacity(256);
+    match std::fs::File::open(name) {
+        Ok(f) => {
+            f.take(256).read_to_end(&mut head).is_ok() && crate::ground::aspif::is_aspif(&head)
+        }
+        Err(_) => false,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -128,49 +141,5 @@ mod tests {
         let (loaded, diags) = load(&names, &mut input, &mut sources);
         assert_eq!(loaded.len(), 1);
         assert!(diags.is_empty());
-    }
-}
-
-/// True when `text` starts with aspif's header line, `asp MAJOR MINOR REVISION` (optionally
-/// followed by tags), as a ground program from `gringo` or `lucent --mode=gringo` does. No ASP
-/// program starts that way (three integers after a constant are a syntax error), so clingo's
-/// reading, where such an input is solved as a ground program, takes nothing from text input.
-pub fn is_aspif(text: &[u8]) -> bool {
-    let line = text.split(|&b| b == b'\n').next().unwrap_or_default();
-    let line = line.strip_suffix(b"\r").unwrap_or(line);
-    let mut words = line.split(|&b| b == b' ');
-    words.next() == Some(b"asp")
-        && (0..3).all(|_| {
-            words
-                .next()
-                .is_some_and(|w| !w.is_empty() && w.iter().all(u8::is_ascii_digit))
-        })
-}
-
-/// True when the file `name` starts with aspif's header ([`is_aspif`]); false when it cannot be
-/// read (the text pipeline then reports it).
-pub fn file_is_aspif(name: &str) -> bool {
-    let mut head = Vec::with_capacity(256);
-    match std::fs::File::open(name) {
-        Ok(f) => f.take(256).read_to_end(&mut head).is_ok() && is_aspif(&head),
-        Err(_) => false,
-    }
-}
-
-#[cfg(test)]
-mod aspif_tests {
-    use super::is_aspif;
-
-    #[test]
-    fn only_aspif_headers_are_aspif() {
-        assert!(is_aspif(b"asp 1 0 0\n1 0 1 1 0 0\n0\n"));
-        assert!(is_aspif(b"asp 1 0 0 incremental\r\n0\n"));
-        assert!(is_aspif(b"asp 1 0 0"));
-        assert!(!is_aspif(b"asp :- b.\n"));
-        assert!(!is_aspif(b"asp(1). asp 1 0 0\n"));
-        assert!(!is_aspif(b"asp 1 0\n"));
-        assert!(!is_aspif(b"asp 1 0 x\n"));
-        assert!(!is_aspif(b"% asp 1 0 0\n"));
-        assert!(!is_aspif(b""));
     }
 }

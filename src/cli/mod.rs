@@ -476,11 +476,11 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
         let _ = io.stdin.read_to_end(&mut stdin_bytes);
     }
     let all_aspif = if options.files.is_empty() {
-        input::is_aspif(&stdin_bytes)
+        crate::ground::aspif::is_aspif(&stdin_bytes)
     } else {
         options.files.iter().all(|f| {
             if f == "-" {
-                input::is_aspif(&stdin_bytes)
+                crate::ground::aspif::is_aspif(&stdin_bytes)
             } else {
                 input::file_is_aspif(f)
             }

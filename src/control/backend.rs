@@ -131,6 +131,11 @@ impl Backend<'_> {
         Ok(())
     }
 
+    /// The atom of `symbol`, if there is one (as [`Control::lookup`]).
+    pub(super) fn lookup(&self, symbol: &Symbol) -> Option<AtomId> {
+        self.ctl.lookup(symbol)
+    }
+
     fn check(&self, head: &[AtomId], lits: impl Iterator<Item = Lit>) -> Result<(), String> {
         let n = self.ctl.num_atoms();
         for &h in head {

@@ -56,6 +56,7 @@
 //! - Reading files happens only in [`Control::load`] and for `#include` (clingo's `load`).
 
 mod args;
+mod aspif_input;
 mod backend;
 mod context;
 mod functions;

@@ -16,6 +16,9 @@ impl Control {
     /// part, so `add("step", &["t"], "q(t).")` and grounding `step(1)` give `q(1)`.
     /// Diagnostics name the text `<block>`, as clingo's do.
     pub fn add(&mut self, part: &str, params: &[&str], text: &str) -> Result<(), Error> {
+        if ground::aspif::is_aspif(text.as_bytes()) {
+            return self.add_aspif("<block>", text.as_bytes());
+        }
         let file = self.sources.add("<block>", text);
         let params: Vec<String> = params.iter().map(|p| p.to_string()).collect();
         self.add_file_in(file, None, Some((part, &params)))
@@ -24,6 +27,9 @@ impl Control {
     /// Parses `text` as a source named `name` (a file name in diagnostics) and keeps its
     /// statements: those before any `#program` directive belong to `base`, as a file's do.
     pub fn add_source(&mut self, name: &str, text: &str) -> Result<(), Error> {
+        if ground::aspif::is_aspif(text.as_bytes()) {
+            return self.add_aspif(name, text.as_bytes());
+        }
         let file = self.sources.add(name, text);
         self.add_file(file, None)
     }

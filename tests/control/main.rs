@@ -6,6 +6,7 @@
 #[path = "../support/mod.rs"]
 mod support;
 
+mod aspif;
 mod functions;
 mod handle;
 mod grid;

@@ -232,6 +232,22 @@ pub fn read(src: &[u8]) -> Result<Aspif, AspifError> {
     .file()
 }
 
+/// True when `text` starts with aspif's header line, `asp MAJOR MINOR REVISION` (optionally
+/// followed by tags), as a ground program from `gringo` or `lucent --mode=gringo` does. No ASP
+/// program starts that way (three integers after a constant are a syntax error), so clingo's
+/// reading, where such an input is solved as a ground program, takes nothing from text input.
+pub fn is_aspif(text: &[u8]) -> bool {
+    let line = text.split(|&b| b == b'\n').next().unwrap_or_default();
+    let line = line.strip_suffix(b"\r").unwrap_or(line);
+    let mut words = line.split(|&b| b == b' ');
+    words.next() == Some(b"asp")
+        && (0..3).all(|_| {
+            words
+                .next()
+                .is_some_and(|w| !w.is_empty() && w.iter().all(u8::is_ascii_digit))
+        })
+}
+
 /// Reads an aspif file with a single step (incremental files with one step are accepted).
 pub fn read_program(src: &[u8]) -> Result<GroundProgram, AspifError> {
     let aspif = read(src)?;
@@ -432,5 +448,23 @@ mod tests {
         assert_eq!((e.line, e.column), (2, 7));
         let e = read(b"asp 1 0 0\n11 0\n0\n").unwrap_err();
         assert_eq!(e.kind, AspifErrorKind::UnknownStatement(11));
+    }
+}
+
+#[cfg(test)]
+mod header_tests {
+    use super::is_aspif;
+
+    #[test]
+    fn only_aspif_headers_are_aspif() {
+        assert!(is_aspif(b"asp 1 0 0\n1 0 1 1 0 0\n0\n"));
+        assert!(is_aspif(b"asp 1 0 0 incremental\r\n0\n"));
+        assert!(is_aspif(b"asp 1 0 0"));
+        assert!(!is_aspif(b"asp :- b.\n"));
+        assert!(!is_aspif(b"asp(1). asp 1 0 0\n"));
+        assert!(!is_aspif(b"asp 1 0\n"));
+        assert!(!is_aspif(b"asp 1 0 x\n"));
+        assert!(!is_aspif(b"% asp 1 0 0\n"));
+        assert!(!is_aspif(b""));
     }
 }
