@@ -225,3 +225,39 @@ def negated_function_order(clingo):
 
 def test_negated_function_order(both):
     both(negated_function_order)
+
+
+# `printf '{a;b;d}.\n:- not d.\n#show c : a, b.\n#show a/0.\n#show d/0.\n#minimize{1:a; 1:b}.\n'
+# | gringo` (clingo 5.4.1's gringo): a ground program in aspif.
+GROUND_ASPIF = ("asp 1 0 0\n1 1 3 1 2 3 0 0\n1 0 0 0 1 -3\n1 0 1 4 0 1 1\n1 0 1 4 0 1 2\n"
+                "2 0 1 4 1\n4 1 a 1 1\n4 1 d 1 3\n1 0 1 5 0 2 1 2\n4 1 c 1 5\n0\n")
+
+
+def aspif_added_and_loaded(clingo, path):
+    """A ground program in aspif through `add` and through `load`: the shown models with the
+    minimize statement ignored, and the optimum."""
+    out = []
+    for load in (False, True):
+        ctl = clingo.Control(["0", "--opt-mode=ignore"])
+        if load:
+            ctl.load(path)
+        else:
+            ctl.add("base", [], GROUND_ASPIF)
+        ctl.ground([("base", [])])
+        models = []
+        ctl.solve(on_model=lambda m: models.append(m.symbols(shown=True)))
+        out.append(sorted_models(models))
+    ctl = clingo.Control(["0", "--opt-mode=optN"])
+    ctl.load(path)
+    ctl.ground([("base", [])])
+    best = []
+    ctl.solve(on_model=lambda m: best.append((m.cost, m.symbols(shown=True)))
+              if m.optimality_proven else None)
+    out.append([(cost, [str(s) for s in syms]) for cost, syms in best])
+    return out
+
+
+def test_aspif_added_and_loaded(both, tmp_path):
+    path = tmp_path / "ground.aspif"
+    path.write_text(GROUND_ASPIF)
+    both(aspif_added_and_loaded, str(path))
