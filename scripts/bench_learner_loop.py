@@ -10,8 +10,8 @@ this process's `time.process_time()` over its loop; Lucent's: the child's user+s
 fastest round (the steadiest figure on a shared machine).
 
 With --bin (repeatable), prebuilt learner_loop binaries (say main's and a branch's) run instead
-of building one, in --rounds rounds of clingo then each binary, so that a loaded machine's
-drift hits them alike.
+of building one, in --rounds rounds of clingo then each binary (their order rotated from round
+to round), so that a loaded machine's drift hits them alike.
 
 usage: scripts/bench_learner_loop.py [--n N] [--rounds R] [--bin BIN]... [PROGRAM]
        (default benches/data/learner_step.lp)
@@ -85,10 +85,19 @@ def main():
     for r in range(a.rounds):
         if a.rounds > 1 or a.bin:
             print("round {} (load average {:.1f})".format(r, os.getloadavg()[0]))
-        runs = [lucent_run(exe, a.program, a.n) for exe in exes[:1]]
-        clingo_rate, secs, atoms = clingo_loop(text, a.n)
+        if len(exes) == 1:
+            runs = [lucent_run(exes[0], a.program, a.n)]
+            clingo_rate, secs, atoms = clingo_loop(text, a.n)
+        else:
+            # Several builds: clingo first, then the builds in an order rotated every round,
+            # so that no build always runs right after clingo (the position moved a build's
+            # figures by more than the difference between two builds, 2026-12-07).
+            clingo_rate, secs, atoms = clingo_loop(text, a.n)
+            k = r % len(exes)
+            order = exes[k:] + exes[:k]
+            done = {exe: lucent_run(exe, a.program, a.n) for exe in order}
+            runs = [done[exe] for exe in exes]
         clingo_cpu = clingo_loop.cpu / a.n
-        runs += [lucent_run(exe, a.program, a.n) for exe in exes[1:]]
         for exe, (out, rate, cpu) in zip(exes, runs):
             if a.bin:
                 print(exe)
