@@ -164,15 +164,6 @@ pub trait Newly {
     fn add(&mut self, v: u32);
 }
 
-impl Newly for Vec<u32> {
-    #[inline]
-    fn add(&mut self, v: u32) {
-        if !self.contains(&v) {
-            self.push(v);
-        }
-    }
-}
-
 impl Newly for VarList {
     #[inline]
     fn add(&mut self, v: u32) {
