@@ -23,13 +23,8 @@ impl Control {
             Err(e) => {
                 let text = String::from_utf8_lossy(bytes).into_owned();
                 let at = offset_of(&text, e.line, e.column);
-                let file = self.sources.add(name, &text);
-                let mut d = self.new_diags();
-                d.push(Diagnostic::error(
-                    Span::new(file, at, at),
-                    format!("malformed aspif input: {}", e.kind),
-                ));
-                return Err(self.error(d));
+                let message = format!("malformed aspif input: {}", e.kind);
+                return Err(self.aspif_error(name, &text, at, message));
             }
         };
         let unsupported = [
@@ -40,26 +35,16 @@ impl Control {
             (!program.cr_rules.is_empty(), "CR rules"),
         ];
         if let Some((_, what)) = unsupported.iter().find(|(found, _)| *found) {
-            let file = self.sources.add(name, "");
-            let mut d = self.new_diags();
-            d.push(Diagnostic::error(
-                Span::new(file, 0, 0),
-                format!("unsupported: {what} in an aspif program added to a Control"),
-            ));
-            return Err(self.error(d));
+            let message = format!("unsupported: {what} in an aspif program added to a Control");
+            return Err(self.aspif_error(name, "", 0, message));
         }
         let mut symbols = Vec::with_capacity(program.outputs.len());
         for out in &program.outputs {
             match Symbol::parse(&out.symbol) {
                 Ok(s) => symbols.push(s),
                 Err(e) => {
-                    let file = self.sources.add(name, "");
-                    let mut d = self.new_diags();
-                    d.push(Diagnostic::error(
-                        Span::new(file, 0, 0),
-                        format!("malformed aspif input: output `{}`: {e}", out.symbol),
-                    ));
-                    return Err(self.error(d));
+                    let message = format!("malformed aspif input: output `{}`: {e}", out.symbol);
+                    return Err(self.aspif_error(name, "", 0, message));
                 }
             }
         }
@@ -131,12 +116,16 @@ impl Control {
             }
             Ok(())
         })();
-        result.map_err(|message| {
-            let file = self.sources.add(name, "");
-            let mut d = self.new_diags();
-            d.push(Diagnostic::error(Span::new(file, 0, 0), message));
-            self.error(d)
-        })
+        result.map_err(|message| self.aspif_error(name, "", 0, message))
+    }
+
+    /// The error `message` at byte `at` of the aspif input `name` (`text`, as far as the
+    /// diagnostic needs it).
+    fn aspif_error(&mut self, name: &str, text: &str, at: u32, message: String) -> Error {
+        let file = self.sources.add(name, text);
+        let mut d = self.new_diags();
+        d.push(Diagnostic::error(Span::new(file, at, at), message));
+        self.error(d)
     }
 }
 
