@@ -335,21 +335,6 @@ fn external_value_is_a_term_of_the_instance() {
 /// it: `printf 'a :- not b.\nb :- not a.\n' | gringo`. Its answer sets are {a} and {b}.
 const CHOICE_ASPIF: &str = "asp 1 0 0\n1 0 1 1 0 1 -2\n1 0 1 2 0 1 -1\n4 1 b 1 1\n4 1 a 1 2\n0\n";
 
-/// The answers of a run's text output, each sorted, in order.
-fn answers(out: &str) -> Vec<String> {
-    let lines: Vec<&str> = out.lines().collect();
-    lines
-        .iter()
-        .enumerate()
-        .filter(|(_, l)| l.starts_with("Answer:"))
-        .map(|(i, _)| {
-            let mut atoms: Vec<&str> = lines[i + 1].split_whitespace().collect();
-            atoms.sort_unstable();
-            atoms.join(" ")
-        })
-        .collect()
-}
-
 /// clingo 5.8 solves an input that is a ground program in aspif (`gringo enc.lp | clingo`,
 /// `clingo prog.aspif`): `python3 -m clingo prog.aspif 0` prints the answers b and a. Lucent reads
 /// such inputs as `--mode=clasp` does, from standard input and from files.
@@ -357,7 +342,7 @@ fn answers(out: &str) -> Vec<String> {
 fn aspif_input_is_solved_as_a_ground_program() {
     let (code, out, err) = lucent(&["0"], CHOICE_ASPIF);
     assert_eq!(code, 30, "{err}");
-    assert_eq!(answers(&out), ["a", "b"]);
+    assert_eq!(answer_sets(&out), [["a"], ["b"]]);
     let dir = std::env::temp_dir().join(format!("lucent-aspif-input-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("choice.aspif");
@@ -365,10 +350,10 @@ fn aspif_input_is_solved_as_a_ground_program() {
     let path = file.to_str().unwrap();
     let (code, out, err) = lucent(&[path, "0"], "");
     assert_eq!(code, 30, "{err}");
-    assert_eq!(answers(&out), ["a", "b"]);
+    assert_eq!(answer_sets(&out), [["a"], ["b"]]);
     let (code, clasp_out, _) = lucent(&["--mode=clasp", path, "0"], "");
     assert_eq!(code, 30);
-    assert_eq!(answers(&clasp_out), answers(&out));
+    assert_eq!(answer_sets(&clasp_out), answer_sets(&out));
     std::fs::remove_dir_all(&dir).unwrap();
     // A malformed ground program is reported as aspif, with its position.
     let (code, _, err) = lucent(&[], "asp 1 0 0\n1 0 1 1 0\n");
@@ -385,7 +370,7 @@ fn aspif_input_is_solved_as_a_ground_program() {
 fn text_starting_with_asp_is_still_text() {
     let (code, out, err) = lucent(&["0"], "asp(1). asp :- asp(1).\n");
     assert_eq!(code, 30, "{err}");
-    assert_eq!(answers(&out), ["asp asp(1)"]);
+    assert_eq!(answer_sets(&out), [["asp", "asp(1)"]]);
     let (code, _, err) = lucent(&[], "asp 1 0\n");
     assert_eq!(code, 65);
     assert!(err.contains("syntax error"), "{err}");
