@@ -475,16 +475,14 @@ fn run_pipeline(options: &Options, io: &mut Io) -> std::io::Result<i32> {
         // A read error leaves the input empty here; the text pipeline reports it as before.
         let _ = io.stdin.read_to_end(&mut stdin_bytes);
     }
+    let is_aspif = |name: &str| match name {
+        "-" => crate::ground::aspif::is_aspif(&stdin_bytes),
+        file => input::file_is_aspif(file),
+    };
     let all_aspif = if options.files.is_empty() {
-        crate::ground::aspif::is_aspif(&stdin_bytes)
+        is_aspif("-")
     } else {
-        options.files.iter().all(|f| {
-            if f == "-" {
-                crate::ground::aspif::is_aspif(&stdin_bytes)
-            } else {
-                input::file_is_aspif(f)
-            }
-        })
+        options.files.iter().all(|f| is_aspif(f))
     };
     let mut stdin = std::io::Cursor::new(stdin_bytes);
     let mut io = Io {
