@@ -335,9 +335,10 @@ impl Symbols {
 
 /// clingo's total order on ground terms, whatever their representation (the grounder's table
 /// through [`TableSym`], `control::Symbol`): `#inf` < integers < constants (positive before
-/// classically negated, then by name) < strings < functions and tuples (positive before
-/// classically negated, then by arity, then name, then arguments left to right) < `#sup`: clingo
-/// 5.4 and 5.8 put `-a(1)` after `a(1,1)` and `z(1)`. The one symbol order of the crate.
+/// classically negated, then by name; the empty tuple `()` is the constant with the empty name,
+/// so the smallest) < strings < functions and tuples (positive before classically negated, then
+/// by arity, then name, then arguments left to right) < `#sup`: clingo 5.4 and 5.8 put `-a(1)`
+/// after `a(1,1)` and `z(1)`, and `()` before `a` and `"s"`. The one symbol order of the crate.
 pub fn order<'s, T: GroundTerm<'s>>(a: T, b: T) -> Ordering {
     if a.identical(b) {
         return Ordering::Equal;
@@ -382,7 +383,7 @@ fn rank<I: ExactSizeIterator>(shape: &Shape<'_, I>) -> u8 {
     match shape {
         Shape::Inf => 0,
         Shape::Number(_) => 1,
-        Shape::Function { name, args, .. } if args.len() == 0 && !name.is_empty() => 2,
+        Shape::Function { args, .. } if args.len() == 0 => 2,
         Shape::String(_) => 3,
         Shape::Function { .. } => 4,
         Shape::Sup => 5,
@@ -558,6 +559,16 @@ mod tests {
         let nz11 = s.fun_str("z", true, &[one, one]);
         let want = vec![z1, a11, na1, nz11];
         let mut got = vec![nz11, na1, a11, z1];
+        got.sort_by(|&x, &y| s.compare(x, y));
+        assert_eq!(got, want);
+        // The empty tuple is the constant with the empty name: clingo 5.4.1 and 5.8.3 answer
+        // `x("s") y(()) z w` for `x(X) :- X = #max { (),1 : #true ; "s",1 : #true }.
+        // y(X) :- X = #min { (),1 : #true ; a,1 : #true }. z :- () < "s". w :- () < a.`
+        // (`clingo o.lp`, `python3 -m clingo o.lp`).
+        let unit = s.fun_str("", false, &[]);
+        let want = vec![one, unit, a, na, s.string("s"), s.fun_str("", false, &[a])];
+        let mut got = want.clone();
+        got.reverse();
         got.sort_by(|&x, &y| s.compare(x, y));
         assert_eq!(got, want);
     }
