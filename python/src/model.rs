@@ -72,7 +72,7 @@ impl Model {
         self.shown.get_or_init(|| {
             self.shown_text
                 .iter()
-                .filter_map(|s| lucent::Symbol::parse(s).ok())
+                .map(|s| lucent::Symbol::from_shown(s))
                 .collect()
         })
     }

@@ -34,12 +34,14 @@ impl Model<'_> {
         self.raw.number
     }
 
-    /// The shown symbols (`#show`), in output order, without duplicates.
+    /// The shown symbols (`#show`), in output order, without duplicates. Each prints as it was
+    /// shown ([`Symbol::from_shown`]: a name made by a context function need not be an
+    /// identifier).
     pub fn symbols(&self) -> Vec<Symbol> {
         self.raw
             .symbols
             .iter()
-            .filter_map(|s| Symbol::parse(s).ok())
+            .map(|s| Symbol::from_shown(s))
             .collect()
     }
 

@@ -7,8 +7,9 @@
 //!   `Symbol::parse(&s.to_string()) == Ok(s)` for every symbol.
 //! - `Ord` is clingo's total order, the crate's one symbol order (`ground::symbol::order`, which
 //!   orders the grounder's symbol table too): `#inf` < numbers < constants (positive before
-//!   negated, then by name) < strings < functions and tuples (by arity, then positive before
-//!   negated, then name, then arguments) < `#sup`.
+//!   negated, then by name; the empty tuple `()` is the constant with the empty name) < strings
+//!   < functions and tuples (positive before negated, then by arity, then name, then
+//!   arguments) < `#sup`.
 //! - Numbers are 32-bit, as in clingo. A constant is a function without arguments; a tuple is a
 //!   function with the empty name.
 //! - Conversion to and from the grounder's hash-consed table is exact in both directions.
@@ -267,10 +268,30 @@ impl Symbol {
     /// assert!(Symbol::parse("p(X)").is_err());
     /// ```
     pub fn parse(text: &str) -> Result<Symbol, ParseSymbolError> {
+        Symbol::read(text, false)
+    }
+
+    /// A shown term as a model prints it: as [`Symbol::parse`], except that an identifier is a
+    /// name whatever its first letter (a context function may return `Function("FOO")`, which
+    /// clingo prints `FOO`); text that still does not read (a name with other characters) is
+    /// the constant named by the whole text, so that it prints as it was shown.
+    ///
+    /// ```
+    /// use lucent::control::Symbol;
+    /// assert_eq!(Symbol::from_shown("u(FOO)").to_string(), "u(FOO)");
+    /// assert_eq!(Symbol::from_shown("u(FOO)").args()[0].name(), Some("FOO"));
+    /// assert_eq!(Symbol::from_shown("a b(1)").name(), Some("a b(1)"));
+    /// ```
+    pub fn from_shown(text: &str) -> Symbol {
+        Symbol::read(text, true).unwrap_or_else(|_| Symbol::constant(text))
+    }
+
+    fn read(text: &str, any_case: bool) -> Result<Symbol, ParseSymbolError> {
         let mut p = Parser {
             s: text.as_bytes(),
             text,
             i: 0,
+            any_case,
         };
         let sym = p.term()?;
         p.ws();
@@ -497,6 +518,8 @@ struct Parser<'a> {
     s: &'a [u8],
     text: &'a str,
     i: usize,
+    /// Identifiers starting with a capital are names too (shown text, `Symbol::from_shown`).
+    any_case: bool,
 }
 
 impl Parser<'_> {
@@ -574,7 +597,11 @@ impl Parser<'_> {
                     Ok(Symbol::tuple(args))
                 }
             }
-            Some(c) if c == b'_' || c.is_ascii_lowercase() => {
+            Some(c)
+                if c == b'_'
+                    || c.is_ascii_lowercase()
+                    || (self.any_case && c.is_ascii_uppercase()) =>
+            {
                 let start = self.i;
                 while self
                     .peek()

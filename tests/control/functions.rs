@@ -152,6 +152,31 @@ fn closures_are_contexts() {
     assert!(model.contains(&Symbol::parse("q(42)").unwrap()));
 }
 
+#[test]
+fn names_made_by_the_host_are_shown_as_made() {
+    // clingo 5.8.3 answers `u(FOO) w(xfoo)` for this program with a context whose `up` returns
+    // `Function(name.upper())` and `low` `Function("x" + name)`. The shown term `u(FOO)` does
+    // not read back as a ground term (FOO reads as a variable): the model's shown symbols
+    // dropped it, silently.
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("base", &[], "u(@up(foo)). w(@low(foo)).").unwrap();
+    let mut ctx = |f: &str, args: &[Symbol]| -> Result<Vec<Symbol>, String> {
+        let name = args[0].name().unwrap();
+        Ok(vec![Symbol::constant(match f {
+            "up" => name.to_uppercase(),
+            _ => format!("x{name}"),
+        })])
+    };
+    ctl.ground_with_context(&[Part::base()], &mut ctx).unwrap();
+    let mut shown = Vec::new();
+    ctl.solve(&Default::default(), |m| {
+        shown = m.symbols().iter().map(|s| s.to_string()).collect();
+        true
+    });
+    shown.sort();
+    assert_eq!(shown, ["u(FOO)", "w(xfoo)"]);
+}
+
 /// The error of grounding `program` (with a context or without), rendered.
 fn error(program: &str, with_context: bool) -> String {
     let mut ctl = Control::new(ControlConfig::default());
