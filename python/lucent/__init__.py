@@ -44,12 +44,30 @@ from .propagator import (  # noqa: F401 (re-exported: clingo's names)
     Assignment,
     PropagateControl,
     PropagateInit,
+    Propagator,
     PropagatorCheckMode,
     Trail,
 )
 
 __version__ = "5.8.0"
 """The clingo Python API version this module follows."""
+
+
+def version():
+    """The clingo version whose Python API this module follows, as clingo's ``version()``."""
+    return tuple(int(p) for p in __version__.split("."))
+
+
+class MessageCode(_enum.Enum):
+    """clingo's ``MessageCode`` (the first argument of a ``logger``)."""
+
+    OperationUndefined = 0
+    RuntimeError = 1
+    AtomUndefined = 2
+    FileIncluded = 3
+    VariableUnbounded = 4
+    GlobalVariable = 5
+    Other = 6
 
 
 class TruthValue(_enum.Enum):
@@ -536,6 +554,8 @@ class Control:
         self._interrupter = self._c.interrupter()
         # on_statistics: the user's maps (``user_step`` of the last call, ``user_accu`` kept).
         self._user = None
+        # The model whose on_model callback runs (Control.solve), else None.
+        self._model = None
         self.configuration = Configuration(self._c)
         object.__setattr__(self.configuration.solve, "_opt_mode", self._c.opt_mode)
         self._adapters = []
@@ -580,11 +600,20 @@ class Control:
             stats = None if on_statistics is None else (lambda: self._user_statistics(on_statistics))
             return SolveHandle(native, bool(yield_), on_model, on_finish, None, on_last, stats)
         last = []
-        callback = on_model
-        if on_last is not None:
+        callback = None
+        if on_model is not None or on_last is not None:
             def callback(m):
-                last[:] = [m]
-                return None if on_model is None else on_model(m)
+                if on_last is not None:
+                    last[:] = [m]
+                if on_model is None:
+                    return None
+                # The native Control is busy with the search while on_model runs: reads of
+                # the symbolic atoms go to the model's context meanwhile (clingo allows them).
+                self._model = m
+                try:
+                    return on_model(m)
+                finally:
+                    self._model = None
         sat, unsat, exhausted, interrupted, _, core = self._c.solve(
             list(assumptions), callback, False, on_unsat
         )
@@ -629,6 +658,8 @@ class Control:
 
     @property
     def symbolic_atoms(self):
+        if self._model is not None:
+            return SymbolicAtoms(self._model.context)
         return SymbolicAtoms(self._c)
 
     def _user_statistics(self, on_statistics):

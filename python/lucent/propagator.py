@@ -1,6 +1,7 @@
 """clingo's ``clingo.propagator``: ``Assignment``, ``Trail``, ``PropagateInit``,
-``PropagateControl`` and ``PropagatorCheckMode``, over the live views of the native module
-(python/src/live.rs): each callback's objects read the solver as it is now and act at once,
+``PropagateControl``, ``PropagatorCheckMode`` and the ``Propagator`` base class, over the live
+views of the native module (python/src/live.rs): each callback's objects read the solver as it
+is now and act at once,
 as clingo's do, and stop working (``RuntimeError``) when the callback returns.
 
 Differences from clingo: ``add_literal`` needs one thread; ``add_clause``'s ``tag`` and
@@ -19,6 +20,28 @@ class PropagatorCheckMode:
     Total = 1
     Fixpoint = 2
     Both = 3
+
+
+class Propagator:
+    """clingo's ``Propagator`` interface, as a base class: every method does nothing, so a
+    subclass defines only those it needs (as with clingo, a propagator need not derive from
+    it). ``decide`` is not called by Lucent's solver: the decision is always its own."""
+
+    def init(self, init):
+        """Called once before each solve call (watches, literal maps)."""
+
+    def propagate(self, control, changes):
+        """Called with the watched literals that became true."""
+
+    def undo(self, thread_id, assignment, changes):
+        """Called when the literals of ``changes`` are unassigned again."""
+
+    def check(self, control):
+        """Called on total assignments (or every fixpoint, by ``check_mode``)."""
+
+    def decide(self, thread_id, assignment, fallback):
+        """The literal to decide on (``fallback`` unchanged)."""
+        return fallback
 
 
 class _LiveSequence(_Sequence):

@@ -31,14 +31,50 @@ pub struct Control {
     ctl: lucent::Control,
     /// The model count given (`-n`, `configuration.solve.models`); `None`: clingo's default.
     models: Option<usize>,
-    /// The last call's statistics, model count and last costs.
-    last: Option<(Stats, usize, Vec<i64>, bool)>,
+    /// The last call's figures (`statistics["summary"]`, `["solving"]`).
+    last: Option<LastCall>,
+    /// Solve calls made so far (clingo's `summary.call` of the last is this minus one).
+    calls: u32,
     /// The first error of a registered propagator (`propagator.rs`), raised by `solve`.
     failure: crate::propagator::Failure,
     /// The symbol of each atom, shared with the models (extended before each solve call).
     names: AtomNames,
     /// The current (or last) solve call's `SolveControl`, given to its models.
     context: Option<Py<SolveControl>>,
+}
+
+/// What the statistics report of the last solve call.
+#[derive(Clone, Default)]
+struct LastCall {
+    stats: Stats,
+    models: usize,
+    /// The last model's costs, highest priority first.
+    costs: Vec<i64>,
+    /// The costs were proven optimal.
+    optimal: bool,
+    /// clingo's `summary.result`: 1 satisfiable, 2 unsatisfiable, 0 unknown.
+    result: u8,
+    exhausted: bool,
+}
+
+impl LastCall {
+    fn new(summary: &Summary, costs: Vec<i64>, optimal: bool) -> LastCall {
+        let result = if summary.is_unsatisfiable() {
+            2
+        } else if summary.is_satisfiable() && summary.outcome != Outcome::Unknown {
+            1
+        } else {
+            0
+        };
+        LastCall {
+            stats: summary.stats.clone(),
+            models: summary.models,
+            costs,
+            optimal,
+            result,
+            exhausted: summary.exhausted,
+        }
+    }
 }
 
 /// A summary as flags: satisfiable, unsatisfiable, exhausted, interrupted, and the core.
@@ -86,6 +122,7 @@ impl Control {
             ctl,
             models,
             last: None,
+            calls: 0,
             failure: Default::default(),
             names: AtomNames::default(),
             context: None,
@@ -218,7 +255,8 @@ impl Control {
         self.raise_propagator_error()?;
         let optimal = optimal || summary.optimum_proven;
         let (sat, unsat, exhausted, interrupted, core) = self.outcome(&summary);
-        self.last = Some((summary.stats, summary.models, costs, optimal));
+        self.last = Some(LastCall::new(&summary, costs, optimal));
+        self.calls += 1;
         Ok((
             sat,
             unsat,
@@ -345,7 +383,14 @@ impl Control {
         let summary = PyDict::new_bound(py);
         let models = PyDict::new_bound(py);
         let times = PyDict::new_bound(py);
-        let (stats, n, costs, optimal) = self.last.clone().unwrap_or_default();
+        let LastCall {
+            stats,
+            models: n,
+            costs,
+            optimal,
+            result,
+            exhausted,
+        } = self.last.clone().unwrap_or_default();
         models.set_item("enumerated", n as f64)?;
         models.set_item(
             "optimal",
@@ -359,6 +404,25 @@ impl Control {
         summary.set_item("models", models)?;
         summary.set_item("times", times)?;
         summary.set_item("costs", costs.iter().map(|&c| c as f64).collect::<Vec<_>>())?;
+        // As clingo's summary: the call's index, its result, whether the search space was
+        // exhausted, the lower bounds of the costs (the costs once proven optimal, else 0),
+        // the threads, the signal that stopped it (none) and the winning thread (the first).
+        summary.set_item("call", f64::from(self.calls.saturating_sub(1)))?;
+        summary.set_item("result", f64::from(result))?;
+        summary.set_item("exhausted", if exhausted { 1.0 } else { 0.0 })?;
+        summary.set_item(
+            "lower",
+            costs
+                .iter()
+                .map(|&c| if optimal { c as f64 } else { 0.0 })
+                .collect::<Vec<_>>(),
+        )?;
+        summary.set_item(
+            "concurrency",
+            self.ctl.config().solve.threads.max(1) as f64,
+        )?;
+        summary.set_item("signal", 0.0)?;
+        summary.set_item("winner", 0.0)?;
         out.set_item("summary", summary)?;
         out.set_item("solving", solving(py, &stats)?)?;
         let accu = PyDict::new_bound(py);
@@ -533,7 +597,8 @@ impl Control {
     pub fn end_handle(&mut self, search: Search, costs: Vec<i64>, optimal: bool) -> Summary {
         let summary = self.ctl.end_search(search);
         let optimal = optimal || summary.optimum_proven;
-        self.last = Some((summary.stats.clone(), summary.models, costs, optimal));
+        self.last = Some(LastCall::new(&summary, costs, optimal));
+        self.calls += 1;
         summary
     }
 

@@ -149,19 +149,17 @@ pub fn to_symbol(obj: &Bound<'_, PyAny>) -> PyResult<lucent::Symbol> {
 }
 
 /// clingo's `Function(name, arguments=[], positive=True)`.
+///
+/// Any name is taken, as clingo takes it (`Function("FOO")` prints `FOO`, which would read back
+/// as a variable): a script that builds names from data runs unchanged.
 #[pyfunction]
 #[pyo3(name = "Function", signature = (name, arguments = Vec::new(), positive = true))]
-pub fn function(name: &str, arguments: Vec<Symbol>, positive: bool) -> PyResult<Symbol> {
-    if !name.is_empty() && !is_identifier(name) {
-        return Err(PyRuntimeError::new_err(format!(
-            "invalid function name: {name:?}"
-        )));
-    }
-    Ok(Symbol(lucent::Symbol::Function {
+pub fn function(name: &str, arguments: Vec<Symbol>, positive: bool) -> Symbol {
+    Symbol(lucent::Symbol::Function {
         name: Name::from(name),
         args: arguments.into_iter().map(|s| s.0).collect(),
         negative: !positive,
-    }))
+    })
 }
 
 /// clingo's `Number(n)`.
@@ -193,15 +191,6 @@ pub fn parse_term(text: &str) -> PyResult<Symbol> {
     lucent::Symbol::parse(text.trim())
         .map(Symbol)
         .map_err(|e| PyRuntimeError::new_err(format!("parsing failed: {e:?}")))
-}
-
-/// A lowercase identifier, optionally with leading underscores or primes (gringo's names).
-fn is_identifier(name: &str) -> bool {
-    let body = name.trim_start_matches('_');
-    body.chars().next().is_some_and(|c| c.is_ascii_lowercase())
-        && body
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '\'')
 }
 
 /// The symbol constants and constructors of the module.

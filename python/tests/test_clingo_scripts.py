@@ -261,3 +261,108 @@ def test_aspif_added_and_loaded(both, tmp_path):
     path = tmp_path / "ground.aspif"
     path.write_text(GROUND_ASPIF)
     both(aspif_added_and_loaded, str(path))
+
+
+def symbolic_atoms_read_in_on_model(clingo):
+    """A script that looks atoms up through the Control inside on_model (clingo allows it;
+    Lucent's Control was busy with the search and raised 'Already mutably borrowed')."""
+    ctl = clingo.Control(["0"])
+    ctl.add("base", [], "{a; b}. c :- a. p(1..2).")
+    ctl.ground([("base", [])])
+    out = []
+
+    def on_model(m):
+        atoms = ctl.symbolic_atoms
+        c = atoms[clingo.Function("c")]
+        ps = sorted(str(a.symbol) for a in atoms.by_signature("p", 1))
+        out.append((m.is_true(c.literal), clingo.Function("b") in atoms, ps,
+                    sorted(str(s) for s in m.symbols(atoms=True))))
+
+    ctl.solve(on_model=on_model)
+    return sorted(out, key=lambda o: o[3])
+
+
+def test_symbolic_atoms_read_in_on_model(both):
+    both(symbolic_atoms_read_in_on_model)
+
+
+def names_from_data(clingo):
+    """Context functions that build symbols whose names are not identifiers (clingo takes any
+    name: `Function("FOO")` prints `FOO`), and the empty tuple's place in the order (the constant
+    with the empty name: before `a` and strings)."""
+
+    class Context:
+        def upper(self, s):
+            return clingo.Function(s.name.upper())
+
+        def items(self):
+            return [clingo.String("s"), clingo.Function("a"), clingo.Tuple_([]), clingo.Number(2)]
+
+    ctl = clingo.Control()
+    ctl.add("base", [], "u(@upper(foo)). v(X) :- X = @items(). "
+                        "lo(X) :- X = #min { Y : v(Y) }. hi(X) :- X = #max { Y : v(Y) }.")
+    ctl.ground([("base", [])], context=Context())
+    models = []
+    ctl.solve(on_model=lambda m: models.append(m.symbols(shown=True)))
+    syms = [clingo.String("s"), clingo.Function("a"), clingo.Tuple_([]), clingo.Number(2),
+            clingo.Function("a", [], False), clingo.Function("f", [clingo.Number(1)])]
+    return sorted_models(models), [str(s) for s in sorted(syms)]
+
+
+def test_names_from_data(both):
+    both(names_from_data)
+
+
+def summary_statistics(clingo):
+    """statistics["summary"] after an optimization and after two unsatisfiable calls: clingo's
+    keys, the call index, result, exhaustion, costs and their lower bounds."""
+    out = []
+    for program, calls in (("{a;b}. :- a, b. #minimize{1:a; 2:b}. :- not a, not b.", 1),
+                           ("a. :- a.", 2), ("{a;b}.", 1)):
+        ctl = clingo.Control(["0"])
+        ctl.add("base", [], program)
+        ctl.ground([("base", [])])
+        for _ in range(calls):
+            ctl.solve()
+        s = ctl.statistics["summary"]
+        out.append((sorted(s.keys()), s["call"], s["result"], s["exhausted"], list(s["costs"]),
+                    list(s["lower"]), s["concurrency"], s["models"]["enumerated"]))
+    return out
+
+
+def test_summary_statistics(both):
+    both(summary_statistics)
+
+
+def propagator_subclass(clingo):
+    """A propagator derived from clingo.Propagator that defines only init and propagate (the
+    base class gives the rest): no two chosen cells next to each other in a row."""
+
+    class NoAdjacent(clingo.Propagator):
+        def init(self, init):
+            self.cell = {}
+            for sa in init.symbolic_atoms.by_signature("pick", 2):
+                lit = init.solver_literal(sa.literal)
+                r, c = sa.symbol.arguments
+                self.cell.setdefault(lit, []).append((r.number, c.number))
+                init.add_watch(lit)
+            self.lit = {rc: l for l, rcs in self.cell.items() for rc in rcs}
+
+        def propagate(self, control, changes):
+            for lit in changes:
+                for r, c in self.cell.get(lit, []):
+                    for nb in ((r, c + 1), (r, c - 1)):
+                        if nb in self.lit and not control.add_nogood([lit, self.lit[nb]]):
+                            return
+
+    ctl = clingo.Control(["0"])
+    ctl.register_propagator(NoAdjacent())
+    ctl.add("base", [], "row(1..2). col(1..4). { pick(R,C) : col(C) } = 2 :- row(R).")
+    ctl.ground([("base", [])])
+    models = []
+    ctl.solve(on_model=lambda m: models.append(m.symbols(atoms=True)))
+    return sorted_models(models), clingo.version() >= (5, 8, 0), clingo.MessageCode.Other.value
+
+
+def test_propagator_subclass(both):
+    both(propagator_subclass)
