@@ -26,6 +26,7 @@ atoms added through the backend are not seen by later groundings.
 
 import enum as _enum
 import json as _json
+import sys as _sys
 
 from . import _lucent
 from ._lucent import (  # noqa: F401 (re-exported: clingo's names)
@@ -551,6 +552,10 @@ class Control:
         # clingo's options (-n, -c, --opt-mode, --project, -t, --heuristic) are read by
         # lucent::Control::from_args; a bad one raises RuntimeError.
         self._c = _lucent.Control([str(a) for a in arguments])
+        # Warnings go to `logger(code, message)`, else to standard error, at most
+        # `message_limit` of them, as clingo's.
+        self._logger = logger
+        self._message_limit = message_limit
         self._interrupter = self._c.interrupter()
         # on_statistics: the user's maps (``user_step`` of the last call, ``user_accu`` kept).
         self._user = None
@@ -560,14 +565,31 @@ class Control:
         object.__setattr__(self.configuration.solve, "_opt_mode", self._c.opt_mode)
         self._adapters = []
 
+    def _messages(self):
+        """Hands the warnings of the last call to the logger (or standard error)."""
+        for code, text in self._c.take_messages():
+            if self._message_limit <= 0:
+                continue
+            self._message_limit -= 1
+            if self._logger is not None:
+                self._logger(MessageCode(code), text)
+            else:
+                print(text, file=_sys.stderr)
+
     def add(self, name, parameters=None, program=None):
         """``add(name, parameters, program)`` or clingo 5.8's ``add(program)`` (to ``base``)."""
         if parameters is None and program is None:
             name, parameters, program = "base", [], name
-        self._c.add(name, list(parameters), program)
+        try:
+            self._c.add(name, list(parameters), program)
+        finally:
+            self._messages()
 
     def load(self, path):
-        self._c.load(str(path))
+        try:
+            self._c.load(str(path))
+        finally:
+            self._messages()
 
     def get_const(self, name):
         """The value of the constant ``name`` (``#const`` or ``-c``) as a ``Symbol``, or ``None``."""
@@ -577,7 +599,10 @@ class Control:
     def ground(self, parts=(("base", ()),), context=None):
         """Grounds ``parts``; ``@f(...)`` calls ``context.f`` with ``Symbol`` arguments (it
         returns a ``Symbol`` or a list of them, as in clingo)."""
-        self._c.ground([(n, list(a)) for n, a in parts], context)
+        try:
+            self._c.ground([(n, list(a)) for n, a in parts], context)
+        finally:
+            self._messages()
 
     def solve(
         self,

@@ -343,6 +343,33 @@ impl Control {
         crate::theory::atoms(&self.ctl)
     }
 
+    /// The warnings collected since the last call, each as clingo's `MessageCode` number and
+    /// the message as gringo prints it (what `Control`'s `logger` receives).
+    fn take_messages(&mut self) -> Vec<(u8, String)> {
+        use lucent::base::WarningKind;
+        let diags = self.ctl.take_diagnostics();
+        let sources = self.ctl.sources();
+        diags
+            .items()
+            .iter()
+            .filter(|d| !d.is_error())
+            .map(|d| {
+                let code = match d.kind {
+                    Some(WarningKind::OperationUndefined) => 0,
+                    Some(WarningKind::AtomUndefined) => 2,
+                    Some(WarningKind::FileIncluded) => 3,
+                    Some(WarningKind::VariableUnbounded) => 4,
+                    Some(WarningKind::GlobalVariable) => 5,
+                    Some(WarningKind::Other) | None => 6,
+                };
+                // One line end, as clingo's messages (the command line's blank line after
+                // each message is not part of it).
+                let text = d.render(sources);
+                (code, format!("{}\n", text.trim_end_matches('\n')))
+            })
+            .collect()
+    }
+
     /// The value of the constant `name` (`#const` or `-c`), or `None` (clingo's `get_const`).
     fn get_const(&self, name: &str) -> Option<Symbol> {
         self.ctl.get_const(name).map(Symbol)

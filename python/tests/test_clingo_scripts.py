@@ -366,3 +366,22 @@ def propagator_subclass(clingo):
 
 def test_propagator_subclass(both):
     both(propagator_subclass)
+
+
+def logged_warnings(clingo):
+    """A logger given to the Control receives the grounder's warnings (code and message), at
+    most message_limit of them."""
+    out = []
+    for limit in (20, 1):
+        msgs = []
+        ctl = clingo.Control(logger=lambda code, msg: msgs.append((code.name, msg)),
+                             message_limit=limit)
+        ctl.add("base", [], "a :- b.\nc :- d.")
+        ctl.ground([("base", [])])
+        ctl.solve()
+        out.append(msgs)
+    return out
+
+
+def test_logged_warnings(both):
+    both(logged_warnings)
