@@ -375,3 +375,16 @@ fn text_starting_with_asp_is_still_text() {
     assert_eq!(code, 65);
     assert!(err.contains("syntax error"), "{err}");
 }
+
+#[test]
+fn consequences_stop_at_the_model_limit() {
+    // clingo 5.4.1: `clingo -e cautious 1 cq.lp` on this program prints one answer (`d c`,
+    // `Consequences: [1;2]`) and SATISFIABLE; Lucent went on to the next approximation.
+    let prog = "1{a;b;c}1. d. e :- a. e :- b.";
+    let (code, out, _) = lucent(&["-e", "cautious", "1"], prog);
+    assert_eq!(code, 10, "{out}");
+    assert_eq!(out.matches("Answer:").count(), 1, "{out}");
+    // Without -n, every approximation until the consequences are known (exit 30).
+    let (code, out, _) = lucent(&["-e", "cautious"], prog);
+    assert_eq!(code, 30, "{out}");
+}

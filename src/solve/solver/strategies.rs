@@ -328,6 +328,11 @@ impl Solver {
                         call.done = true;
                         break;
                     }
+                    // `-n N`: N approximations, as clasp (`clingo -e cautious 1` prints one).
+                    if self.config.models > 0 && call.count >= self.config.models {
+                        call.done = true;
+                        break;
+                    }
                     let mut c = vec![!guard];
                     for (&l, &now) in self.tr.output_lits.iter().zip(&cur) {
                         if brave && !now {
