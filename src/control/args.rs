@@ -2,7 +2,8 @@
 //! the Python package's `Control(["-n", "0", ...])`): [`Control::from_args`].
 //!
 //! Read: the model count (`N`, `-n N`, `-nN`, `--models=N`), constants (`-c name=value`,
-//! `--const`), `--opt-mode`, `--project[=mode]`, the thread count (`-t N`,
+//! `--const`), `--opt-mode`, `--enum-mode` (`-e`: brave and cautious consequences, every
+//! model by default as in clingo), `--project[=mode]`, the thread count (`-t N`,
 //! `--parallel-mode=N[,mode]`), `--heuristic`, `--opt-strategy`, `--seed` and `--rand-freq`,
 //! each written `--opt=value` or `--opt value`; warning options (`-W`, `--warn`), clingo's
 //! search presets (`--configuration`) and the switches `--stats`, `--restart-on-model`,
@@ -35,6 +36,7 @@ fn long_of(short: char) -> Option<&'static str> {
         'c' => "const",
         't' => "parallel-mode",
         'W' => "warn",
+        'e' => "enum-mode",
         _ => return None,
     })
 }
@@ -71,8 +73,9 @@ fn read(args: &[&str], config: &mut ControlConfig) -> Result<(), ArgsError> {
         } else {
             return Err(ArgsError(format!("unknown option: {a}")));
         };
-        const KNOWN: [&str; 11] = [
+        const KNOWN: [&str; 12] = [
             "models",
+            "enum-mode",
             "const",
             "opt-mode",
             "project",
@@ -139,6 +142,10 @@ fn read(args: &[&str], config: &mut ControlConfig) -> Result<(), ArgsError> {
             "heuristic" => {
                 config.solve.heuristic =
                     solve::Heuristic::from_name(value).ok_or_else(|| invalid(name, value))?;
+            }
+            "enum-mode" => {
+                config.solve.enum_mode =
+                    solve::EnumMode::from_name(value).ok_or_else(|| invalid(name, value))?;
             }
             "opt-strategy" => {
                 config.solve.opt_strategy =

@@ -196,7 +196,8 @@ pub struct Config {
     /// Number of models to compute; 0 means all (`-n`). With `#minimize` in `Opt` mode, 0 means
     /// "until the optimum is proven" and N stops after N improving models, as in clasp; the
     /// command line passes 0 there unless the user gave `-n`. [`Config::AUTO_MODELS`] is
-    /// clasp's default (`-n -1`): 0 for a program that optimizes, else 1, decided at each call.
+    /// clasp's default (`-n -1`): 0 for a program that optimizes or for consequences (brave,
+    /// cautious), else 1, decided at each call.
     pub models: usize,
     /// Optimization mode.
     pub opt_mode: OptMode,

@@ -642,7 +642,8 @@ impl Solver {
         if auto {
             let optimizing =
                 !self.prog.minimize.is_empty() && self.config.opt_mode != OptMode::Ignore;
-            self.config.models = usize::from(!optimizing);
+            let consequences = self.config.enum_mode != EnumMode::Auto;
+            self.config.models = usize::from(!optimizing && !consequences);
         }
         let r = if self.par.is_some() {
             self.run_parallel(assumptions, sink, lazy_support)

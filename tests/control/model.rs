@@ -88,3 +88,43 @@ fn models_name_their_thread() {
         assert!(ids.iter().all(|&t| t < bound), "{ids:?}");
     }
 }
+
+/// The last model of a call and whether the search was exhausted, for clingo's `args`.
+fn last_shown(args: &[&str], program: &str) -> (Vec<String>, bool) {
+    let mut ctl = Control::from_args(args).unwrap();
+    ctl.add("base", &[], program).unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let mut last = Vec::new();
+    let summary = ctl.solve(&SolveOptions::default(), |m| {
+        last = m.symbols().iter().map(|s| s.to_string()).collect();
+        last.sort();
+        true
+    });
+    (last, summary.exhausted)
+}
+
+#[test]
+fn consequences_through_the_enum_mode_argument() {
+    // clingo 5.8.3's Python API (`Control(args)`, `solve(on_model=...)`, the last model's
+    // `symbols(shown=True)` and `SolveResult.exhausted`) on this program:
+    // --enum-mode=brave: [a, b, c, d, e] exhausted; --enum-mode=cautious: [d] exhausted;
+    // --enum-mode=cautious 1: [c, d] not exhausted (its first model is {c, d}, as Lucent's).
+    let program = "1{a;b;c}1. d. e :- a. e :- b. \
+                   #show a/0. #show b/0. #show c/0. #show d/0. #show e/0.";
+    let all = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+    assert_eq!(
+        last_shown(&["--enum-mode=brave"], program),
+        (all(&["a", "b", "c", "d", "e"]), true)
+    );
+    assert_eq!(
+        last_shown(&["-e", "cautious"], program),
+        (all(&["d"]), true)
+    );
+    let (first, exhausted) = last_shown(&["--enum-mode=cautious", "1"], program);
+    assert!(!exhausted);
+    assert!(
+        first.contains(&"d".to_string()) && first.len() == 2,
+        "{first:?}"
+    );
+    assert!(Control::from_args(&["--enum-mode=all"]).is_err());
+}
