@@ -299,11 +299,13 @@ class SymbolicAtoms:
 
 
 class _SolveConfiguration:
-    """``configuration.solve``: ``models`` and ``opt_mode``, string-valued as clingo's."""
+    """``configuration.solve``: ``models``, ``opt_mode`` and ``enum_mode``, string-valued as
+    clingo's."""
 
     def __init__(self, native):
         object.__setattr__(self, "_c", native)
         object.__setattr__(self, "_opt_mode", "opt")
+        object.__setattr__(self, "_enum_mode", "auto")
 
     @property
     def models(self):
@@ -314,6 +316,10 @@ class _SolveConfiguration:
     def opt_mode(self):
         return self._opt_mode
 
+    @property
+    def enum_mode(self):
+        return self._enum_mode
+
     def __setattr__(self, key, value):
         if key == "models":
             n = int(value)
@@ -321,6 +327,9 @@ class _SolveConfiguration:
         elif key == "opt_mode":
             self._c.set_opt_mode(str(value))
             object.__setattr__(self, "_opt_mode", str(value))
+        elif key == "enum_mode":
+            self._c.set_enum_mode(str(value))
+            object.__setattr__(self, "_enum_mode", str(value))
         else:
             raise RuntimeError(f"lucent: configuration option solve.{key} is not supported")
 
@@ -563,6 +572,7 @@ class Control:
         self._model = None
         self.configuration = Configuration(self._c)
         object.__setattr__(self.configuration.solve, "_opt_mode", self._c.opt_mode)
+        object.__setattr__(self.configuration.solve, "_enum_mode", self._c.enum_mode)
         self._adapters = []
 
     def _messages(self):

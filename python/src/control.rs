@@ -9,7 +9,7 @@
 //! (clingo's default `-n 0` for optimization), any other one model.
 
 use lucent::control::{HandleMode, Part, Search, SolveOptions, Summary, TruthValue};
-use lucent::solve::{OptMode, Outcome, Stats, StopReason};
+use lucent::solve::{EnumMode, OptMode, Outcome, Stats, StopReason};
 use pyo3::exceptions::{PyRuntimeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -129,6 +129,16 @@ impl Control {
         })
     }
 
+    /// The `--enum-mode` in effect (`configuration.solve.enum_mode`).
+    #[getter]
+    fn enum_mode(&self) -> &'static str {
+        match self.ctl.config().solve.enum_mode {
+            EnumMode::Auto => "auto",
+            EnumMode::Brave => "brave",
+            EnumMode::Cautious => "cautious",
+        }
+    }
+
     /// The `--opt-mode` in effect, as clasp names it (`configuration.solve.opt_mode`).
     #[getter]
     fn opt_mode(&self) -> String {
@@ -202,6 +212,7 @@ impl Control {
         let names = &self.names;
         let context = self.context.as_ref().map(|c| c.clone_ref(py));
         let priorities = Arc::new(self.ctl.minimize_priorities());
+        let mode = self.ctl.config().solve.enum_mode;
         let mut failure: Option<PyErr> = None;
         let mut kept: Vec<Py<Model>> = Vec::new();
         let mut costs = Vec::new();
@@ -217,6 +228,7 @@ impl Control {
                 names.clone(),
                 priorities.clone(),
                 context.as_ref().map(|c| c.clone_ref(py)),
+                mode,
             );
             let model = match Py::new(py, model) {
                 Ok(model) => model,
@@ -395,6 +407,14 @@ impl Control {
         self.models = n;
     }
 
+    /// `--enum-mode`: `auto` (also `bt`, `record`), `brave` or `cautious`.
+    fn set_enum_mode(&mut self, mode: &str) -> PyResult<()> {
+        self.idle()?;
+        self.ctl.solve_config_mut().enum_mode = EnumMode::from_name(mode)
+            .ok_or_else(|| error(format!("invalid value for option --enum-mode: {mode}")))?;
+        Ok(())
+    }
+
     /// `--opt-mode`.
     fn set_opt_mode(&mut self, mode: &str) -> PyResult<()> {
         self.idle()?;
@@ -536,7 +556,12 @@ impl Control {
         }
         let models = match self.models {
             Some(n) => n,
-            None if self.ctl.has_minimize() => 0,
+            // clingo's default: every model of an optimization or of consequences, else one.
+            None if self.ctl.has_minimize()
+                || self.ctl.config().solve.enum_mode != EnumMode::Auto =>
+            {
+                0
+            }
             None => 1,
         };
         self.ctl.solve_config_mut().models = models;
@@ -617,7 +642,10 @@ impl Control {
         let priorities = Arc::new(self.ctl.minimize_priorities());
         let context = Python::with_gil(|py| self.context.as_ref().map(|c| c.clone_ref(py)));
         self.ctl
-            .read_model(raw, |m| Model::new(m, names.clone(), priorities, context))
+            .read_model(raw, |m| {
+                let mode = self.ctl.config().solve.enum_mode;
+                Model::new(m, names.clone(), priorities, context, mode)
+            })
     }
 
     /// The end of a handle's search: the solver back, the call recorded for the statistics.

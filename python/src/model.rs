@@ -11,6 +11,7 @@
 
 use std::sync::{Arc, Mutex, OnceLock};
 
+use lucent::solve::EnumMode;
 use pyo3::prelude::*;
 
 use crate::solve_control::SolveControl;
@@ -41,6 +42,8 @@ pub struct Model {
     thread_id: u32,
     /// The solve call's `SolveControl` (`solve_control.rs`).
     context: Option<Py<SolveControl>>,
+    /// What the call enumerates: answer sets, or brave or cautious consequences.
+    mode: EnumMode,
 }
 
 impl Model {
@@ -51,8 +54,10 @@ impl Model {
         names: AtomNames,
         priorities: Arc<Vec<i64>>,
         context: Option<Py<SolveControl>>,
+        mode: EnumMode,
     ) -> Model {
         Model {
+            mode,
             thread_id: m.thread_id(),
             context,
             number: m.number(),
@@ -158,13 +163,16 @@ impl Model {
         holds == (literal > 0)
     }
 
-    /// clingo's `Model.type`: always a stable model (a `Control` enumerates stable models; the
-    /// brave and cautious consequences of `--enum-mode` are the command line's).
+    /// clingo's `Model.type`: a stable model, or the brave or cautious consequences found so
+    /// far under `--enum-mode` (`configuration.solve.enum_mode`).
     #[getter]
     fn r#type<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        py.import_bound("lucent")?
-            .getattr("ModelType")?
-            .getattr("StableModel")
+        let name = match self.mode {
+            EnumMode::Auto => "StableModel",
+            EnumMode::Brave => "BraveConsequences",
+            EnumMode::Cautious => "CautiousConsequences",
+        };
+        py.import_bound("lucent")?.getattr("ModelType")?.getattr(name)
     }
 
     /// Adds symbols to the model's output (clingo prints them after the model when an

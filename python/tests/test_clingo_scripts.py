@@ -385,3 +385,26 @@ def logged_warnings(clingo):
 
 def test_logged_warnings(both):
     both(logged_warnings)
+
+
+def consequences(clingo):
+    """Brave and cautious consequences through the arguments and through
+    configuration.solve.enum_mode: the last model, its type, and exhaustion."""
+    program = ("1{a;b;c}1. d. e :- a. e :- b. "
+               "#show a/0. #show b/0. #show c/0. #show d/0. #show e/0.")
+    out = []
+    for args, mode in ((["--enum-mode=brave"], None), (["0"], "cautious"), ([], "brave")):
+        ctl = clingo.Control(args)
+        if mode is not None:
+            ctl.configuration.solve.enum_mode = mode
+        ctl.add("base", [], program)
+        ctl.ground([("base", [])])
+        models = []
+        result = ctl.solve(on_model=lambda m: models.append((str(m.type), m.symbols(shown=True))))
+        out.append((ctl.configuration.solve.enum_mode, models[-1][0],
+                    sorted_models([models[-1][1]]), result.exhausted))
+    return out
+
+
+def test_consequences(both):
+    both(consequences)
