@@ -231,6 +231,17 @@ class SolveHandle:
             self.model()
         return self._flags()
 
+    def core(self):
+        """The failed assumptions (program literals) once the call is unsatisfiable under
+        assumptions, else an empty list (clingo 5.8's ``SolveHandle.core``)."""
+        result = self.get()
+        (_, unsat, _, _, core), _ = self._h.get()
+        return list(core) if result.unsatisfiable and unsat and core is not None else []
+
+    def last(self):
+        """The last model handed out so far, or ``None`` (clingo 5.8's ``SolveHandle.last``)."""
+        return self._last
+
     def cancel(self):
         """Stops the search."""
         self._h.cancel()

@@ -408,3 +408,26 @@ def consequences(clingo):
 
 def test_consequences(both):
     both(consequences)
+
+
+def handle_core_and_last(clingo):
+    """SolveHandle.core after an unsatisfiable call under assumptions (and empty after a
+    satisfiable one), SolveHandle.last before and after iterating."""
+    ctl = clingo.Control(["0"])
+    ctl.add("base", [], "{a;b;c}. :- a, b.")
+    ctl.ground([("base", [])])
+    la = ctl.symbolic_atoms[clingo.Function("a")].literal
+    lb = ctl.symbolic_atoms[clingo.Function("b")].literal
+    out = []
+    with ctl.solve(assumptions=[la, lb], yield_=True) as h:
+        out.append((str(h.get()), sorted(h.core()) == sorted([la, lb])))
+    with ctl.solve(assumptions=[la], yield_=True) as h:
+        before = h.last()
+        models = [m.symbols(atoms=True) for m in h]
+        out.append((str(h.get()), h.core(), before is None, len(models),
+                    h.last() is not None))
+    return out
+
+
+def test_handle_core_and_last(both):
+    both(handle_core_and_last)
