@@ -28,6 +28,41 @@ pub enum SymbolType {
     Supremum,
 }
 
+#[pymethods]
+impl SymbolType {
+    /// The member's name, as a Python enum's (`Number`).
+    #[getter]
+    fn name(&self) -> &'static str {
+        match self {
+            SymbolType::Infimum => "Infimum",
+            SymbolType::Number => "Number",
+            SymbolType::String => "String",
+            SymbolType::Function => "Function",
+            SymbolType::Supremum => "Supremum",
+        }
+    }
+
+    /// clingo's number for the member (`SymbolType.Number.value == 1`).
+    #[getter]
+    fn value(&self) -> u8 {
+        match self {
+            SymbolType::Infimum => 0,
+            SymbolType::Number => 1,
+            SymbolType::String => 4,
+            SymbolType::Function => 5,
+            SymbolType::Supremum => 7,
+        }
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<SymbolType.{}: {}>", self.name(), self.value())
+    }
+
+    fn __str__(&self) -> String {
+        format!("SymbolType.{}", self.name())
+    }
+}
+
 /// A ground term (clingo's `Symbol`).
 #[pyclass(frozen, module = "lucent")]
 #[derive(Clone)]

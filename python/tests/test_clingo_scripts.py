@@ -431,3 +431,15 @@ def handle_core_and_last(clingo):
 
 def test_handle_core_and_last(both):
     both(handle_core_and_last)
+
+
+def symbol_types(clingo):
+    """SymbolType members as a Python enum's: name, value, str and repr."""
+    syms = [clingo.Infimum, clingo.Number(1), clingo.String("s"), clingo.Function("f"),
+            clingo.Supremum]
+    return [(s.type.name, s.type.value, str(s.type), repr(s.type),
+             s.type == getattr(clingo.SymbolType, s.type.name)) for s in syms]
+
+
+def test_symbol_types(both):
+    both(symbol_types)
