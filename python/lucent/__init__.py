@@ -54,12 +54,36 @@ __version__ = "5.8.0"
 """The clingo Python API version this module follows."""
 
 
+class OrderedEnum(_enum.Enum):
+    """clingo's ``OrderedEnum``: an enum whose members compare by their values."""
+
+    def __lt__(self, other):
+        if self.__class__ is other.__class__:
+            return self.value < other.value
+        return NotImplemented
+
+    def __le__(self, other):
+        if self.__class__ is other.__class__:
+            return self.value <= other.value
+        return NotImplemented
+
+    def __gt__(self, other):
+        if self.__class__ is other.__class__:
+            return self.value > other.value
+        return NotImplemented
+
+    def __ge__(self, other):
+        if self.__class__ is other.__class__:
+            return self.value >= other.value
+        return NotImplemented
+
+
 def version():
     """The clingo version whose Python API this module follows, as clingo's ``version()``."""
     return tuple(int(p) for p in __version__.split("."))
 
 
-class MessageCode(_enum.Enum):
+class MessageCode(OrderedEnum):
     """clingo's ``MessageCode`` (the first argument of a ``logger``)."""
 
     OperationUndefined = 0
@@ -80,7 +104,7 @@ class TruthValue(_enum.Enum):
     Release = "release"
 
 
-class ModelType(_enum.Enum):
+class ModelType(OrderedEnum):
     """clingo's ``ModelType`` (a ``Control``'s models are stable models)."""
 
     StableModel = 0
@@ -429,8 +453,9 @@ class _AtomList:
         return iter([a for a in self._atoms if a.symbol.match(name, arity, positive)])
 
 
-class TheoryTermType(_enum.IntEnum):
-    """clingo's ``TheoryTermType``, with clingo 5.8's numbers."""
+class TheoryTermType(OrderedEnum):
+    """clingo's ``TheoryTermType``, with clingo 5.8's numbers (an ordered enum as clingo's:
+    ``str`` is ``TheoryTermType.Number``, not the number)."""
 
     Tuple = 0
     List = 1

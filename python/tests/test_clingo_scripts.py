@@ -443,3 +443,34 @@ def symbol_types(clingo):
 
 def test_symbol_types(both):
     both(symbol_types)
+
+
+def theory_terms_read_back(clingo):
+    """Ground theory atoms read through ctl.theory_atoms: their text, name, elements, guards and
+    the type, name, number and arguments of each term (types print as clingo's enum members)."""
+    ctl = clingo.Control()
+    ctl.add("base", [], """
+#theory diff { term { - : 1, unary; + : 0, binary, left };
+               &dom/0 : term, any; &diff/0 : term, {<=}, term, head }.
+x(1..2).
+&diff { X + 0 } <= 5 :- x(X).
+&dom { 1 ; 2 : x(1) }.
+""")
+    ctl.ground([("base", [])])
+    kinds = clingo.TheoryTermType
+    out = []
+    for a in sorted(ctl.theory_atoms, key=str):
+        terms = []
+        for e in a.elements:
+            for t in e.terms:
+                detail = (t.name if t.type in (kinds.Function, kinds.Symbol)
+                          else t.number if t.type == kinds.Number else None)
+                terms.append((str(t), str(t.type), detail, [str(x) for x in t.arguments]))
+        out.append((str(a), a.term.name, [str(e) for e in a.elements],
+                    a.guard[0] if a.guard else None, str(a.guard[1]) if a.guard else None,
+                    terms, kinds.Number > kinds.Function))
+    return out
+
+
+def test_theory_terms_read_back(both):
+    both(theory_terms_read_back)
