@@ -17,7 +17,7 @@ use pyo3::types::{PyDict, PyTuple};
 use std::sync::Arc;
 
 use crate::handle::SolveHandle;
-use crate::model::{AtomNames, Model};
+use crate::model::{AtomNames, CallKind, Model};
 use crate::solve_control::SolveControl;
 use crate::symbol::{to_symbol, Symbol};
 
@@ -58,7 +58,10 @@ struct LastCall {
 }
 
 impl LastCall {
-    fn new(summary: &Summary, costs: Vec<i64>, optimal: bool) -> LastCall {
+    fn new(summary: &Summary, mut costs: Vec<i64>, optimal: bool, kind: CallKind) -> LastCall {
+        if kind.ignore_costs {
+            costs.clear();
+        }
         let result = if summary.is_unsatisfiable() {
             2
         } else if summary.is_satisfiable() && summary.outcome != Outcome::Unknown {
@@ -212,7 +215,7 @@ impl Control {
         let names = &self.names;
         let context = self.context.as_ref().map(|c| c.clone_ref(py));
         let priorities = Arc::new(self.ctl.minimize_priorities());
-        let mode = self.ctl.config().solve.enum_mode;
+        let kind = self.call_kind();
         let mut failure: Option<PyErr> = None;
         let mut kept: Vec<Py<Model>> = Vec::new();
         let mut costs = Vec::new();
@@ -228,7 +231,7 @@ impl Control {
                 names.clone(),
                 priorities.clone(),
                 context.as_ref().map(|c| c.clone_ref(py)),
-                mode,
+                kind,
             );
             let model = match Py::new(py, model) {
                 Ok(model) => model,
@@ -267,7 +270,7 @@ impl Control {
         self.raise_propagator_error()?;
         let optimal = optimal || summary.optimum_proven;
         let (sat, unsat, exhausted, interrupted, core) = self.outcome(&summary);
-        self.last = Some(LastCall::new(&summary, costs, optimal));
+        self.last = Some(LastCall::new(&summary, costs, optimal, self.call_kind()));
         self.calls += 1;
         Ok((
             sat,
@@ -637,14 +640,22 @@ impl Control {
         (sat, unsat, summary.exhausted, interrupted, core)
     }
 
+    /// What the solve calls ask for, as their models report it.
+    fn call_kind(&self) -> CallKind {
+        let config = &self.ctl.config().solve;
+        CallKind {
+            mode: config.enum_mode,
+            ignore_costs: matches!(config.opt_mode, OptMode::Ignore),
+        }
+    }
+
     /// A model of a handle's search as a Python `Model`.
     pub fn read_model(&self, raw: &lucent::solve::Model, names: &AtomNames) -> Model {
         let priorities = Arc::new(self.ctl.minimize_priorities());
         let context = Python::with_gil(|py| self.context.as_ref().map(|c| c.clone_ref(py)));
         self.ctl
             .read_model(raw, |m| {
-                let mode = self.ctl.config().solve.enum_mode;
-                Model::new(m, names.clone(), priorities, context, mode)
+                Model::new(m, names.clone(), priorities, context, self.call_kind())
             })
     }
 
@@ -652,7 +663,7 @@ impl Control {
     pub fn end_handle(&mut self, search: Search, costs: Vec<i64>, optimal: bool) -> Summary {
         let summary = self.ctl.end_search(search);
         let optimal = optimal || summary.optimum_proven;
-        self.last = Some(LastCall::new(&summary, costs, optimal));
+        self.last = Some(LastCall::new(&summary, costs, optimal, self.call_kind()));
         self.calls += 1;
         summary
     }

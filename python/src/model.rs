@@ -46,6 +46,15 @@ pub struct Model {
     mode: EnumMode,
 }
 
+/// What a solve call asks for, as its models report it.
+#[derive(Clone, Copy)]
+pub struct CallKind {
+    /// Answer sets, or brave or cautious consequences (`Model.type`).
+    pub mode: EnumMode,
+    /// `--opt-mode=ignore`: the minimize statements are ignored, so models have no costs.
+    pub ignore_costs: bool,
+}
+
 impl Model {
     /// Copies the model the solver reports; `names` covers its atoms, `priorities` are the
     /// program's minimize priorities, highest first, `context` the call's `SolveControl`.
@@ -54,14 +63,18 @@ impl Model {
         names: AtomNames,
         priorities: Arc<Vec<i64>>,
         context: Option<Py<SolveControl>>,
-        mode: EnumMode,
+        kind: CallKind,
     ) -> Model {
         Model {
-            mode,
+            mode: kind.mode,
             thread_id: m.thread_id(),
             context,
             number: m.number(),
-            costs: m.costs().to_vec(),
+            costs: if kind.ignore_costs {
+                Vec::new()
+            } else {
+                m.costs().to_vec()
+            },
             optimal: m.optimal(),
             atom_ids: m.atom_ids().to_vec(),
             names,

@@ -474,3 +474,19 @@ x(1..2).
 
 def test_theory_terms_read_back(both):
     both(theory_terms_read_back)
+
+
+def costs_ignored(clingo):
+    """--opt-mode=ignore: every model, none with costs (clingo 5.8's Model.cost is [] then),
+    and no costs in the summary."""
+    ctl = clingo.Control(["0", "--opt-mode=ignore"])
+    ctl.add("base", [], "{a;b}. #minimize{1:a; 2:b}.")
+    ctl.ground([("base", [])])
+    models = []
+    ctl.solve(on_model=lambda m: models.append((sorted(map(str, m.symbols(shown=True))),
+                                                list(m.cost), list(m.priority))))
+    return sorted(models), list(ctl.statistics["summary"]["costs"])
+
+
+def test_costs_ignored(both):
+    both(costs_ignored)
