@@ -388,3 +388,20 @@ fn consequences_stop_at_the_model_limit() {
     let (code, out, _) = lucent(&["-e", "cautious"], prog);
     assert_eq!(code, 30, "{out}");
 }
+
+#[test]
+fn shown_signatures_without_atoms_are_reported() {
+    // `echo PROG | clingo 0` (clingo 5.4.1) reports the two signatures no statement mentions
+    // (s/1 occurs in a body, p/1 in a head), by signature:
+    //   -:1:1-11: info: no atoms over signature occur in program:\n  q/1
+    //   -:1:12-23: info: no atoms over signature occur in program:\n  -r/0
+    // besides `atom does not occur in any rule head` for s(1).
+    let prog = "#show q/1. #show -r/0. #show. {p(1)}. #show p/1. x :- s(1). #show s/1.";
+    let (_, _, err) = lucent(&["0"], prog);
+    let want = "-:1:1-11: info: no atoms over signature occur in program:\n  q/1\n\n\
+                -:1:12-23: info: no atoms over signature occur in program:\n  -r/0\n";
+    assert!(err.contains(want), "{err}");
+    assert_eq!(err.matches("no atoms over signature").count(), 2, "{err}");
+    let (_, _, err) = lucent(&["0", "-Wno-atom-undefined"], prog);
+    assert!(!err.contains("no atoms over signature"), "{err}");
+}

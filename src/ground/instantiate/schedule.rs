@@ -1,7 +1,7 @@
 //! Scheduling: facts first, then the strongly connected components of the statement
 //! dependency graph in gringo's order (`Graph::tarjan`, the positive split), each to its
 //! fixpoint by semi-naive rounds (or naive rounds for recursive aggregates); then gringo's
-//! warnings for atoms no rule heads.
+//! warnings for atoms no rule heads and for `#show p/n.` signatures no statement mentions.
 //!
 //! Invariant: a predicate is complete once every statement heading it is grounded, and its
 //! readers come after it (or in the same component).
@@ -103,6 +103,7 @@ impl Grounder<'_> {
             pos_reads.end_row();
         }
         self.warn_undefined(prog, &heads);
+        self.warn_unshown(prog, &reads);
         // SPARC sorts: facts of their hidden predicates.
         for &(pred, v) in &prog.sort_facts {
             let name = prog.preds[pred as usize].name;
@@ -477,6 +478,46 @@ impl Grounder<'_> {
             }
         }
         self.defined = defined;
+    }
+}
+
+impl Grounder<'_> {
+    /// gringo's `no atoms over signature occur in program` for each `#show p/n.` whose
+    /// predicate no statement mentions (in a head, in a body, or in an earlier grounding's
+    /// heads), one per signature, in the order of the signatures (name, arity, sign).
+    /// Runs after `warn_undefined`, whose `defined` covers the heads.
+    fn warn_unshown(&mut self, prog: &Compiled, reads: &Rows) {
+        let show = &prog.show;
+        if show.signatures.is_empty() {
+            return;
+        }
+        let mut mentioned = self.defined.clone();
+        mentioned.resize(prog.preds.len().max(mentioned.len()), false);
+        for &p in &reads.items {
+            mentioned[p as usize] = true;
+        }
+        let mut missing: Vec<(&str, u32, bool, Span)> = Vec::new();
+        for (pred, &span) in show.signatures.iter().zip(&show.signature_spans) {
+            let Some(p) = prog.preds.iter().position(|q| q == pred) else {
+                continue;
+            };
+            if !mentioned[p] {
+                let name = self.syms.names.resolve(pred.name);
+                missing.push((name, pred.arity, pred.neg, span));
+            }
+        }
+        missing.sort_by(|a, b| (a.0, a.1, a.2).cmp(&(b.0, b.1, b.2)));
+        missing.dedup_by(|a, b| (a.0, a.1, a.2) == (b.0, b.1, b.2));
+        for (name, arity, neg, span) in missing {
+            let sign = if neg { "-" } else { "" };
+            let d = Diagnostic::warning(
+                WarningKind::AtomUndefined,
+                span,
+                "no atoms over signature occur in program",
+            )
+            .with_snippet(format!("{sign}{name}/{arity}"));
+            self.diags.push(d);
+        }
     }
 }
 
