@@ -25,6 +25,7 @@ atoms added through the backend are not seen by later groundings.
 """
 
 import enum as _enum
+import functools as _functools
 import json as _json
 import sys as _sys
 
@@ -54,27 +55,13 @@ __version__ = "5.8.0"
 """The clingo Python API version this module follows."""
 
 
+@_functools.total_ordering
 class OrderedEnum(_enum.Enum):
     """clingo's ``OrderedEnum``: an enum whose members compare by their values."""
 
     def __lt__(self, other):
         if self.__class__ is other.__class__:
             return self.value < other.value
-        return NotImplemented
-
-    def __le__(self, other):
-        if self.__class__ is other.__class__:
-            return self.value <= other.value
-        return NotImplemented
-
-    def __gt__(self, other):
-        if self.__class__ is other.__class__:
-            return self.value > other.value
-        return NotImplemented
-
-    def __ge__(self, other):
-        if self.__class__ is other.__class__:
-            return self.value >= other.value
         return NotImplemented
 
 
@@ -105,7 +92,8 @@ class TruthValue(_enum.Enum):
 
 
 class ModelType(OrderedEnum):
-    """clingo's ``ModelType`` (a ``Control``'s models are stable models)."""
+    """clingo's ``ModelType``: stable models, or the brave or cautious consequences found so
+    far under ``--enum-mode``."""
 
     StableModel = 0
     BraveConsequences = 1
