@@ -62,6 +62,7 @@ FEATURES = {
     "priority": "@", "negative weight": "[-", "#project sig": "#project q/1",
     "#project atom": "#project p(V", "#heuristic": "#heuristic", "#show": "#show",
     "#external": "#external", "#external free": "[free]", "conditional literal": ") : ",
+    "symbol order": "omin(X)",
 }
 
 MAX_MODELS = 2000

@@ -10,7 +10,8 @@ constraints; disjunction (`;`, `|`); default (`not`,
 `#count`, `#sum`, `#sum+`, `#min`, `#max` in bodies (one or two bounds, negated, assigned);
 weak constraints, `#minimize` and `#maximize` with priorities and negative weights; `#project`
 in both forms (signature, atom with a condition); `#heuristic` with every modifier; `#show`
-(signatures, `#show.`, terms with conditions); `#external` with and without a value.
+(signatures, `#show.`, terms with conditions); `#external` with and without a value; the order
+of ground terms of every kind (`#min`, `#max`, `<` over `o/1`).
 
 A program is a list of statements; a statement is a list of pieces, each a string or a
 `Part` (a list of strings joined when rendered), so that scripts/diff_random.py can shrink a
@@ -374,6 +375,16 @@ class Gen:
             return [f"#external {self.pick(names)}({v}) : ", Part(cond, least=1), "." + value]
         return [f"#external {self.pick(atoms)}." + value]
 
+    def symbol_order(self):
+        """Facts `o(T)` over ground terms of every kind, and their order as rules read it:
+        `#min`, `#max` and `<` (predicates of their own, shown unless `#show` restricts)."""
+        terms = self.rng.sample(ORDER_TERMS, 2 + self.rng.randrange(4))
+        stmts = [[f"o({t})."] for t in terms]
+        stmts.append(["omin(X) :- X = #min { T : o(T) }."])
+        stmts.append(["omax(X) :- X = #max { T : o(T) }."])
+        stmts.append(["olt(X,Y) :- o(X), o(Y), X < Y."])
+        return stmts
+
     def show(self):
         k = self.rng.randrange(7)
         if k == 0:
@@ -387,6 +398,13 @@ class Gen:
         if k == 4:
             return [["#show s/1."], ["#show c/0."], ["#show -c/0."]]
         return []
+
+
+# Ground terms of every kind, for the order of symbols (`#min`/`#max` over them, `<`): the
+# empty tuple is the constant with the empty name, strings come after constants, functions
+# and tuples after strings, by sign, arity and name.
+ORDER_TERMS = ["()", "a", "-a", "b", '"s"', '"a"', "(1,)", "(1,2)", "f(1)", "f(a)", "-f(1)",
+               "g(1,2)", "0", "2", "-1", "#inf", "#sup"]
 
 
 def program(seed):
@@ -420,5 +438,7 @@ def program(seed):
         value = g.pick(["", "", " [true]", " [false]", " [free]"])
         for _ in range(1 + g.rng.randrange(2)):
             stmts.append(g.external(value))
+    if g.chance(10):
+        stmts.extend(g.symbol_order())
     stmts.extend(g.show())
     return stmts, {"project": project, "heuristic": heuristic}
