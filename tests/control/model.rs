@@ -128,3 +128,22 @@ fn consequences_through_the_enum_mode_argument() {
     );
     assert!(Control::from_args(&["--enum-mode=all"]).is_err());
 }
+
+#[test]
+fn a_consequence_model_holds_the_consequences_as_atoms() {
+    // clingo 5.8.3's Python API, `symbols(atoms=True)` of the last model on this program:
+    // brave [a, b, c, d, e], cautious [d] (the consequences, not the last answer set found).
+    let program = "1{a;b;c}1. d. e :- a. e :- b.";
+    for (mode, want) in [("brave", vec!["a", "b", "c", "d", "e"]), ("cautious", vec!["d"])] {
+        let mut ctl = Control::from_args(&["--enum-mode", mode]).unwrap();
+        ctl.add("base", &[], program).unwrap();
+        ctl.ground(&[Part::base()]).unwrap();
+        let mut last = Vec::new();
+        ctl.solve(&SolveOptions::default(), |m| {
+            last = m.atoms().iter().map(|s| s.to_string()).collect();
+            true
+        });
+        last.sort();
+        assert_eq!(last, want, "{mode}");
+    }
+}

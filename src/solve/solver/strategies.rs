@@ -286,6 +286,7 @@ impl Solver {
         let brave = self.config.enum_mode == EnumMode::Brave;
         let n = self.tr.output_lits.len();
         let mut current: Option<Vec<bool>> = None;
+        let mut current_atoms: Option<Vec<u32>> = None;
         loop {
             match self.next(assume) {
                 Next::Exhausted => {
@@ -323,6 +324,24 @@ impl Solver {
                             m.symbols.push(o.symbol.clone());
                         }
                     }
+                    // The model is the consequences so far, as clasp reports them: its true
+                    // atoms are the union (brave) or intersection (cautious) of the answer
+                    // sets' (both lists sorted).
+                    let atoms = match current_atoms.take() {
+                        None => m.atoms.clone(),
+                        Some(c) if brave => {
+                            let mut u: Vec<u32> = c.iter().chain(&m.atoms).copied().collect();
+                            u.sort_unstable();
+                            u.dedup();
+                            u
+                        }
+                        Some(c) => c
+                            .into_iter()
+                            .filter(|a| m.atoms.binary_search(a).is_ok())
+                            .collect(),
+                    };
+                    m.atoms.clone_from(&atoms);
+                    current_atoms = Some(atoms);
                     call.note_model();
                     if !(call.sink)(&m, &self.prog) {
                         call.done = true;
