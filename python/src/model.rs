@@ -176,6 +176,29 @@ impl Model {
         holds == (literal > 0)
     }
 
+    /// clingo's `Model.is_consequence(literal)`: for a stable model whether the literal is
+    /// true; for brave consequences `True` for an atom of the model and `None` (not known yet)
+    /// otherwise; for cautious consequences `False` for an atom not in the model, `True` for a
+    /// fact and `None` otherwise. A negative literal under `--enum-mode` is `None`.
+    fn is_consequence(&self, py: Python<'_>, literal: i64) -> Option<bool> {
+        if self.mode == EnumMode::Auto {
+            return Some(self.is_true(literal));
+        }
+        let atom = u32::try_from(literal).ok()?;
+        let holds = self.atom_ids.binary_search(&atom).is_ok();
+        match self.mode {
+            EnumMode::Brave => holds.then_some(true),
+            _ if !holds => Some(false),
+            _ => {
+                let fact = self
+                    .context
+                    .as_ref()
+                    .is_some_and(|c| c.bind(py).get().kinds(atom).0);
+                fact.then_some(true)
+            }
+        }
+    }
+
     /// clingo's `Model.type`: a stable model, or the brave or cautious consequences found so
     /// far under `--enum-mode` (`configuration.solve.enum_mode`).
     #[getter]

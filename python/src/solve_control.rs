@@ -47,7 +47,7 @@ impl SolveControl {
         }
     }
 
-    fn kinds(&self, atom: u32) -> (bool, bool) {
+    pub(crate) fn kinds(&self, atom: u32) -> (bool, bool) {
         let fact = self.facts.get(atom as usize - 1).copied().unwrap_or(false);
         (fact, self.externals.binary_search(&atom).is_ok())
     }

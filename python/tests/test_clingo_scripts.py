@@ -490,3 +490,24 @@ def costs_ignored(clingo):
 
 def test_costs_ignored(both):
     both(costs_ignored)
+
+
+def consequence_queries(clingo):
+    """Model.is_consequence for every atom, under plain enumeration and for brave and cautious
+    consequences (the models in the order found, which both solvers share here)."""
+    out = []
+    for args in ([], ["--enum-mode=brave"], ["--enum-mode=cautious"]):
+        ctl = clingo.Control(args + ["0"])
+        ctl.add("base", [], "1{a;b;c}1. d. e :- a. e :- b.")
+        ctl.ground([("base", [])])
+        lit = {s: ctl.symbolic_atoms[clingo.Function(s)].literal for s in "abcde"}
+        models = []
+        ctl.solve(on_model=lambda m: models.append(
+            (sorted(map(str, m.symbols(atoms=True))),
+             sorted((s, m.is_consequence(l)) for s, l in lit.items()))))
+        out.append(sorted(models) if not args else models[-1])
+    return out
+
+
+def test_consequence_queries(both):
+    both(consequence_queries)
