@@ -134,7 +134,10 @@ fn a_consequence_model_holds_the_consequences_as_atoms() {
     // clingo 5.8.3's Python API, `symbols(atoms=True)` of the last model on this program:
     // brave [a, b, c, d, e], cautious [d] (the consequences, not the last answer set found).
     let program = "1{a;b;c}1. d. e :- a. e :- b.";
-    for (mode, want) in [("brave", vec!["a", "b", "c", "d", "e"]), ("cautious", vec!["d"])] {
+    for (mode, want) in [
+        ("brave", vec!["a", "b", "c", "d", "e"]),
+        ("cautious", vec!["d"]),
+    ] {
         let mut ctl = Control::from_args(&["--enum-mode", mode]).unwrap();
         ctl.add("base", &[], program).unwrap();
         ctl.ground(&[Part::base()]).unwrap();
