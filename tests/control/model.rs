@@ -89,18 +89,28 @@ fn models_name_their_thread() {
     }
 }
 
-/// The last model of a call and whether the search was exhausted, for clingo's `args`.
-fn last_shown(args: &[&str], program: &str) -> (Vec<String>, bool) {
+/// What `read` gives of the last model of a call (sorted, as text) and whether the search was
+/// exhausted, for clingo's `args`.
+fn last_model(
+    args: &[&str],
+    program: &str,
+    read: fn(&lucent::control::Model<'_>) -> Vec<lucent::control::Symbol>,
+) -> (Vec<String>, bool) {
     let mut ctl = Control::from_args(args).unwrap();
     ctl.add("base", &[], program).unwrap();
     ctl.ground(&[Part::base()]).unwrap();
     let mut last = Vec::new();
     let summary = ctl.solve(&SolveOptions::default(), |m| {
-        last = m.symbols().iter().map(|s| s.to_string()).collect();
+        last = read(m).iter().map(|s| s.to_string()).collect();
         last.sort();
         true
     });
     (last, summary.exhausted)
+}
+
+/// The shown symbols of the last model, and whether the search was exhausted.
+fn last_shown(args: &[&str], program: &str) -> (Vec<String>, bool) {
+    last_model(args, program, |m| m.symbols())
 }
 
 #[test]
@@ -138,15 +148,7 @@ fn a_consequence_model_holds_the_consequences_as_atoms() {
         ("brave", vec!["a", "b", "c", "d", "e"]),
         ("cautious", vec!["d"]),
     ] {
-        let mut ctl = Control::from_args(&["--enum-mode", mode]).unwrap();
-        ctl.add("base", &[], program).unwrap();
-        ctl.ground(&[Part::base()]).unwrap();
-        let mut last = Vec::new();
-        ctl.solve(&SolveOptions::default(), |m| {
-            last = m.atoms().iter().map(|s| s.to_string()).collect();
-            true
-        });
-        last.sort();
+        let (last, _) = last_model(&["--enum-mode", mode], program, |m| m.atoms());
         assert_eq!(last, want, "{mode}");
     }
 }
