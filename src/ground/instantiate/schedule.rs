@@ -488,7 +488,7 @@ impl Grounder<'_> {
     /// Runs after `warn_undefined`, whose `defined` covers the heads.
     fn warn_unshown(&mut self, prog: &Compiled, reads: &Rows) {
         let show = &prog.show;
-        if show.signatures.is_empty() {
+        if show.signature_sites.is_empty() {
             return;
         }
         let mut mentioned = self.defined.clone();
@@ -497,11 +497,9 @@ impl Grounder<'_> {
             mentioned[p as usize] = true;
         }
         let mut missing: Vec<(&str, u32, bool, Span)> = Vec::new();
-        for (pred, &span) in show.signatures.iter().zip(&show.signature_spans) {
-            let Some(p) = prog.preds.iter().position(|q| q == pred) else {
-                continue;
-            };
-            if !mentioned[p] {
+        for &(p, span) in &show.signature_sites {
+            if !mentioned[p as usize] {
+                let pred = &prog.preds[p as usize];
                 let name = self.syms.names.resolve(pred.name);
                 missing.push((name, pred.arity, pred.neg, span));
             }

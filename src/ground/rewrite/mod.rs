@@ -305,9 +305,9 @@ pub struct ShowConfig {
     pub restricted: bool,
     /// Signatures shown by `#show p/n.`.
     pub signatures: Vec<Pred>,
-    /// The span of each `#show p/n.` (aligned with `signatures`), for gringo's
-    /// `no atoms over signature occur in program`.
-    pub signature_spans: Vec<Span>,
+    /// The predicate and span of each `#show p/n.`, for gringo's `no atoms over signature
+    /// occur in program`.
+    pub signature_sites: Vec<(PredId, Span)>,
 }
 
 /// The whole rewritten program.

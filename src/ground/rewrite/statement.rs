@@ -248,7 +248,7 @@ impl Rewriter<'_> {
                     let p = self.sig_pred(s);
                     let pred = self.out.preds[p as usize].clone();
                     self.out.show.signatures.push(pred);
-                    self.out.show.signature_spans.push(st.span);
+                    self.out.show.signature_sites.push((p, st.span));
                 }
                 ast::Show::Term { term, body } => {
                     for t in unpool_term(term) {
