@@ -103,3 +103,23 @@ proptest! {
         prop_assert_eq!(shown, expected);
     }
 }
+
+/// A case the property above found (proptest, 2026-12-07): `p3`'s rule is grounded while
+/// `p2(0,0)` is still undecided (its rule waits on `p1(1)`, which nothing derives). Every atom
+/// is decided by the rules (the perfect model is `p0`, `p2(0,0)`), so what is left must be
+/// those two facts and nothing else: before the simplifier derived facts from bodies that hold,
+/// `p3` stayed possible, shown under its own literal with no rule left to derive it.
+#[test]
+fn an_atom_whose_rule_a_later_fact_kills_is_not_shown() {
+    let text = "p3 :- not p2(0,0). p1(2) :- p0, p1(1), not p0. p0. p2(0,0) :- p0, not p1(1).";
+    let (g, _) = crate::support::ground::ground_text("order.lp", text, &GroundConfig::default());
+    let facts: BTreeSet<String> = g.facts().into_iter().collect();
+    let expected: BTreeSet<String> = ["p0", "p2(0,0)"].map(String::from).into();
+    assert_eq!(facts, expected);
+    for r in &g.program.rules {
+        assert!(r.body.is_empty_normal(), "{r:?}");
+    }
+    let shown: BTreeSet<String> = g.program.outputs.iter().map(|o| o.symbol.clone()).collect();
+    assert_eq!(shown, expected);
+    assert!(g.program.outputs.iter().all(|o| o.condition.is_empty()));
+}

@@ -7,10 +7,17 @@
 //! - a rule with a positive body literal over a false atom, or `not a` with `a` a fact, is dead
 //!   (a weight body loses the literal's weight and dies once its bound is out of reach);
 //! - a disjunctive rule with a fact among its heads (other than the fact's own rule) is dead,
-//!   and so is a rule whose body contains a literal and its negation.
+//!   and so is a rule whose body contains a literal and its negation;
+//! - the single head of a live normal rule whose body literals are all true (positive ones
+//!   over facts, negative ones over false atoms) is a fact, unless kept.
 //!
-//! Invariant: each rule is killed at most once and each atom made false at most once, so the
-//! pass is linear in the size of the rules.
+//! The last rule makes the decided atoms a fixpoint whatever the order of the rules: a rule
+//! `p :- not q.` grounded before `q`'s only rule `q :- not r.` (with `r` false) is dead here,
+//! and `p` false, instead of `p` staying possible with no rule left to derive it.
+//!
+//! Invariant: each rule is killed at most once and each atom decided (made false or a fact) at
+//! most once, so each body occurrence is visited at most once and the pass is linear in the
+//! size of the rules.
 
 use super::scope::Scope;
 use super::Status;
@@ -179,6 +186,15 @@ pub(super) fn propagate(
         pos_occ.end(pass);
         neg_occ.end(pass);
     }
+    // For each normal body: how many of its literals are not yet known to hold.
+    let pending: Vec<u32> = g
+        .rules
+        .iter()
+        .map(|r| match r.body {
+            BodyRef::Normal(lits) => lits.len() as u32,
+            BodyRef::Weight { .. } => u32::MAX,
+        })
+        .collect();
     let mut p = Propagation {
         rules: &g.rules,
         scope,
@@ -188,7 +204,9 @@ pub(super) fn propagate(
         dead: vec![false; g.rules.len()],
         head_count,
         slack,
+        pending,
         work: Vec::new(),
+        facts: Vec::new(),
     };
     for &a in &scope.atoms {
         p.falsify_if_unsupported(a as usize);
@@ -196,28 +214,57 @@ pub(super) fn propagate(
     for (ri, reason) in dead_at_start {
         p.kill(ri as usize, reason);
     }
-    // Rules with `not a`, a a fact, lose that literal from the start.
-    for (i, &a) in scope.atoms.iter().enumerate() {
+    // The facts known from the start, and the heads of rules with empty bodies.
+    for &a in &scope.atoms {
         if p.status[a as usize - 1] == Status::Fact {
-            for &(ri, w) in neg_occ.of(i) {
-                p.lose(ri as usize, w, false, GroundAtom::new(a));
-            }
+            p.facts.push(GroundAtom::new(a));
         }
     }
-    while let Some(a) = p.work.pop() {
-        for &(ri, w) in pos_occ.of(scope.index(a.get() as usize)) {
-            p.lose(ri as usize, w, true, a);
+    for ri in 0..g.rules.len() {
+        if p.pending[ri] == 0 {
+            p.body_holds(ri);
+        }
+    }
+    loop {
+        if let Some(a) = p.work.pop() {
+            // False: rules with `a` lose that literal; `not a` holds.
+            let i = scope.index(a.get() as usize);
+            for &(ri, w) in pos_occ.of(i) {
+                p.lose(ri as usize, w, true, a);
+            }
+            for &(ri, w) in neg_occ.of(i) {
+                if w == 0 {
+                    p.literal_holds(ri as usize);
+                }
+            }
+        } else if let Some(a) = p.facts.pop() {
+            // A fact: rules with `not a` lose that literal; `a` holds.
+            let i = scope.index(a.get() as usize);
+            for &(ri, w) in neg_occ.of(i) {
+                p.lose(ri as usize, w, false, a);
+            }
+            for &(ri, w) in pos_occ.of(i) {
+                if w == 0 {
+                    p.literal_holds(ri as usize);
+                }
+            }
+        } else {
+            break;
         }
     }
     (p.dead, killed_contradictory)
 }
 
 /// The state of [`propagate`] once the occurrences are counted: which rules are dead (and
-/// why), how many live rules head each atom, the slack of each weight body, and the atoms made
-/// false whose positive occurrences are still to visit.
+/// why), how many live rules head each atom, the slack of each weight body, how many literals
+/// of each normal body are not yet known to hold, and the atoms decided whose occurrences are
+/// still to visit (made false in `work`, facts in `facts`).
 ///
 /// Invariant: an atom is made false (and queued) exactly once, when it is unknown, not kept,
-/// and no live rule heads it.
+/// and no live rule heads it; it is made a fact (and queued) exactly once, when it is unknown,
+/// not kept, and heads a live normal rule alone whose body holds. An atom decided one way is
+/// never decided the other: a false atom heads no live rule, and a fact's supporting rule
+/// stays live (only a false body literal, or a fact among several heads, kills a rule).
 struct Propagation<'a> {
     rules: &'a Rules,
     scope: &'a Scope,
@@ -227,7 +274,9 @@ struct Propagation<'a> {
     dead: Vec<bool>,
     head_count: Vec<u32>,
     slack: Vec<i64>,
+    pending: Vec<u32>,
     work: Vec<GroundAtom>,
+    facts: Vec<GroundAtom>,
 }
 
 impl Propagation<'_> {
@@ -239,6 +288,30 @@ impl Propagation<'_> {
         {
             self.status[a - 1] = Status::False;
             self.work.push(GroundAtom::new(a as u32));
+        }
+    }
+
+    /// A literal of the normal body of rule `ri` holds.
+    fn literal_holds(&mut self, ri: usize) {
+        self.pending[ri] -= 1;
+        if self.pending[ri] == 0 {
+            self.body_holds(ri);
+        }
+    }
+
+    /// Every literal of the normal body of rule `ri` holds: a live rule with one disjunctive
+    /// head makes it a fact (a choice derives nothing; a constraint is left to the solver).
+    fn body_holds(&mut self, ri: usize) {
+        if self.dead[ri] {
+            return;
+        }
+        let r = self.rules.get(ri);
+        if let (HeadKind::Disjunction, &[h]) = (r.head_kind, r.head) {
+            let a = h as usize;
+            if self.status[a - 1] == Status::Unknown && !(self.keep)(a) {
+                self.status[a - 1] = Status::Fact;
+                self.facts.push(GroundAtom::new(h));
+            }
         }
     }
 
