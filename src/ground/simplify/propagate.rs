@@ -134,6 +134,8 @@ pub(super) fn propagate(
     let mut neg_occ = Occurrences::new(n);
     // For weight bodies: the weight still reachable minus the bound; below 0 the rule is dead.
     let mut slack: Vec<i64> = vec![0; g.rules.len()];
+    // For each normal body: how many of its literals are not yet known to hold.
+    let mut pending: Vec<u32> = vec![u32::MAX; g.rules.len()];
     // A disjunctive rule with a fact among its heads is satisfied in every model and, by
     // minimality, supports none of its other heads: it is dead from the start (as in gringo),
     // so atoms only it could derive become false. The fact's own rule `a.` is kept. So is a
@@ -146,8 +148,11 @@ pub(super) fn propagate(
                 for &h in r.head {
                     head_count[scope.index(h as usize)] += 1;
                 }
-                if let BodyRef::Weight { lower, lits } = r.body {
-                    slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
+                match r.body {
+                    BodyRef::Weight { lower, lits } => {
+                        slack[ri] = lits.iter().map(|&(_, w)| w).sum::<i64>() - lower;
+                    }
+                    BodyRef::Normal(lits) => pending[ri] = lits.len() as u32,
                 }
                 let fact_head = r
                     .head
@@ -186,15 +191,6 @@ pub(super) fn propagate(
         pos_occ.end(pass);
         neg_occ.end(pass);
     }
-    // For each normal body: how many of its literals are not yet known to hold.
-    let pending: Vec<u32> = g
-        .rules
-        .iter()
-        .map(|r| match r.body {
-            BodyRef::Normal(lits) => lits.len() as u32,
-            BodyRef::Weight { .. } => u32::MAX,
-        })
-        .collect();
     let mut p = Propagation {
         rules: &g.rules,
         scope,
