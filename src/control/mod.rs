@@ -623,6 +623,23 @@ impl Control {
         }
     }
 
+    /// Whether the program is known to have no answer set whatever the externals and
+    /// assumptions (clingo's `is_conflicting`): a constraint with an empty body was grounded
+    /// (`:- .`, as `a. :- a.` simplifies), or a solve call met a conflict that holds at the top
+    /// level. A program found unsatisfiable only under its assumptions or its externals' values
+    /// is not conflicting; nor is one whose inconsistency only a search would show before the
+    /// first solve call (`a :- not a.`), as in clingo.
+    pub fn is_conflicting(&self) -> bool {
+        let empty_constraint = |p: &GroundProgram| {
+            p.rules.iter().any(|r| {
+                r.head.is_empty()
+                    && r.head_kind == crate::ground::program::HeadKind::Disjunction
+                    && r.body.is_empty_normal()
+            })
+        };
+        empty_constraint(&self.pending) || self.solver.as_ref().is_some_and(Solver::is_conflicting)
+    }
+
     /// Takes the grounding of a one-shot control (one grounding, no solve call yet) with its
     /// program and its symbol table (which provenance bindings and atom records index), for
     /// output as aspif or text; the control is spent afterwards. Panics when used otherwise.

@@ -286,6 +286,29 @@ impl Control {
         })
     }
 
+    /// Every constant defined (`-c` and `#const`), each once, with its value as
+    /// [`Control::get_const`] gives it: a snapshot a client can read while the control is busy
+    /// (clingo allows `get_const` inside a model callback).
+    pub fn consts(&self) -> Vec<(String, Symbol)> {
+        let mut names: Vec<&str> = self
+            .config
+            .ground
+            .consts
+            .iter()
+            .map(|(n, _)| n.as_str())
+            .chain(self.globals.iter().filter_map(|(_, st)| match &st.kind {
+                StatementKind::Const(c) => Some(c.name.as_str()),
+                _ => None,
+            }))
+            .collect();
+        names.sort_unstable();
+        names.dedup();
+        names
+            .into_iter()
+            .filter_map(|n| Some((n.to_string(), self.get_const(n)?)))
+            .collect()
+    }
+
     fn get_const_depth(&self, name: &str, depth: usize) -> Option<Symbol> {
         let term = self
             .config

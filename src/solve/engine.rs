@@ -806,6 +806,12 @@ impl Engine {
         self.asg.values[l.code()]
     }
 
+    /// True once a conflict was found at decision level 0: no assignment of the assumptions
+    /// (nor of the externals, which are assumed) can give a model any more.
+    pub fn is_inconsistent(&self) -> bool {
+        self.inconsistent
+    }
+
     /// The current decision level.
     pub fn decision_level(&self) -> u32 {
         self.asg.trail_lim.len() as u32

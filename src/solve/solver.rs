@@ -298,6 +298,12 @@ impl Solver {
         }
     }
 
+    /// True once a search found the program without answer sets whatever the assumptions and
+    /// externals (a conflict at decision level 0; clingo's `is_conflicting`).
+    pub fn is_conflicting(&self) -> bool {
+        self.engine.is_inconsistent()
+    }
+
     /// The ground program as extended so far.
     pub fn program(&self) -> &GroundProgram {
         &self.prog

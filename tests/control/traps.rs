@@ -3,7 +3,7 @@
 //! (its Python API: `Control.add(name, params, program)`, one model by default, statistics
 //! per call and accumulated kept apart, settings read at every solve call).
 
-use lucent::control::{Control, ControlConfig, Part, Symbol};
+use lucent::control::{Control, ControlConfig, Part, Symbol, TruthValue};
 use lucent::solve::StopReason;
 
 fn sym(s: &str) -> Symbol {
@@ -293,5 +293,80 @@ fn a_call_stopped_at_its_model_limit_is_not_exhausted() {
             summary.exhausted, exhausted,
             "{program} with limit {limit} (handle)"
         );
+    }
+}
+
+/// clingo 5.8's `Control.is_conflicting` after grounding and after solving, recorded with
+/// clingo 5.8.3's Python API (a script grounding each program below with `clingo.Control()`
+/// and with `clingo.Control(["0"])`, printing the property before grounding, after grounding
+/// and after `solve()`; the external case as written at the end): true after
+/// grounding exactly when a constraint with an empty body remains, and after a solve call
+/// also for a program whose conflict only the search finds; an external assigned true that a
+/// constraint forbids gives an unsatisfiable call but no conflict.
+#[test]
+fn is_conflicting_as_clingo() {
+    for (program, after_ground, after_solve) in [
+        (":- a. a.", true, true),
+        ("a.", false, false),
+        (":- not a. {a}.", false, false),
+        (":- .", true, true),
+        ("-a. a.", true, true),
+        ("#false.", true, true),
+        ("a :- not a.", false, true),
+        ("{a; b}. #minimize{1,X : X = a; 1,X : X = b}.", false, false),
+    ] {
+        let mut ctl = Control::new(ControlConfig::default());
+        assert!(!ctl.is_conflicting(), "{program}: before grounding");
+        ctl.add("base", &[], program).unwrap();
+        ctl.ground(&[Part::base()]).unwrap();
+        assert_eq!(
+            ctl.is_conflicting(),
+            after_ground,
+            "{program}: after grounding"
+        );
+        let mut all = Control::from_args(&["0"]).unwrap();
+        all.add("base", &[], program).unwrap();
+        all.ground(&[Part::base()]).unwrap();
+        for c in [&mut ctl, &mut all] {
+            c.solve(&Default::default(), |_| true);
+            assert_eq!(c.is_conflicting(), after_solve, "{program}: after solving");
+        }
+    }
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("base", &[], "#external e. :- e.").unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    ctl.assign_external(&sym("e"), TruthValue::True);
+    let summary = ctl.solve(&Default::default(), |_| true);
+    assert!(summary.is_unsatisfiable());
+    assert!(!ctl.is_conflicting());
+    ctl.assign_external(&sym("e"), TruthValue::False);
+    assert!(ctl.solve(&Default::default(), |_| true).is_satisfiable());
+    assert!(!ctl.is_conflicting());
+}
+
+/// Every constant with its value, as `get_const` gives each (`-c` over `#const`; a constant
+/// defined by another is evaluated): what a client reads while the control is busy solving.
+/// Values derived by hand from the program: `n = 2`, `m = n+1 = 3`, `k = 3` from the
+/// command line overriding `#const k = 7.`.
+#[test]
+fn constants_are_listed_with_their_values() {
+    let mut ctl = Control::from_args(&["-c", "k=3"]).unwrap();
+    ctl.add(
+        "base",
+        &[],
+        "#const n = 2. #const m = n+1. #const k = 7. p(n).",
+    )
+    .unwrap();
+    let listed: Vec<(String, String)> = ctl
+        .consts()
+        .into_iter()
+        .map(|(n, v)| (n, v.to_string()))
+        .collect();
+    let expected: Vec<(String, String)> = [("k", "3"), ("m", "3"), ("n", "2")]
+        .map(|(n, v)| (n.to_string(), v.to_string()))
+        .into();
+    assert_eq!(listed, expected);
+    for (name, value) in ctl.consts() {
+        assert_eq!(ctl.get_const(&name), Some(value));
     }
 }
