@@ -594,6 +594,8 @@ class Control:
         self._user = None
         # The model whose on_model callback runs (Control.solve), else None.
         self._model = None
+        # The constants as the running solve call began (get_const inside on_model).
+        self._consts = {}
         self.configuration = Configuration(self._c)
         object.__setattr__(self.configuration.solve, "_opt_mode", self._c.opt_mode)
         object.__setattr__(self.configuration.solve, "_enum_mode", self._c.enum_mode)
@@ -626,8 +628,17 @@ class Control:
             self._messages()
 
     def get_const(self, name):
-        """The value of the constant ``name`` (``#const`` or ``-c``) as a ``Symbol``, or ``None``."""
+        """The value of the constant ``name`` (``#const`` or ``-c``) as a ``Symbol``, or ``None``
+        (inside ``on_model`` too, as in clingo: from the constants read when the call began)."""
+        if self._model is not None:
+            return self._consts.get(str(name))
         return self._c.get_const(str(name))
+
+    @property
+    def is_conflicting(self):
+        """clingo's ``is_conflicting``: no answer set whatever the externals and assumptions
+        (an empty constraint was grounded, or a search met a top-level conflict)."""
+        return self._c.is_conflicting()
 
 
     def ground(self, parts=(("base", ()),), context=None):
@@ -660,6 +671,9 @@ class Control:
             return SolveHandle(native, bool(yield_), on_model, on_finish, None, on_last, stats)
         last = []
         callback = None
+        if on_model is not None:
+            # The native Control is busy while on_model runs: get_const reads these.
+            self._consts = dict(self._c.consts())
         if on_model is not None or on_last is not None:
             def callback(m):
                 if on_last is not None:
@@ -731,6 +745,9 @@ class Control:
 
     @property
     def statistics(self):
+        if self._model is not None:
+            # As clingo: the figures exist once the call is over.
+            raise RuntimeError("statistics not (yet) available")
         out = self._c.statistics()
         if self._user is not None:
             out["user_step"] = _floats(self._user[0])

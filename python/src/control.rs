@@ -390,6 +390,23 @@ impl Control {
         self.ctl.get_const(name).map(Symbol)
     }
 
+    /// Every constant with its value: what `get_const` answers while a model callback runs
+    /// (the control is busy then).
+    fn consts(&self) -> Vec<(String, Symbol)> {
+        self.ctl
+            .consts()
+            .into_iter()
+            .map(|(n, v)| (n, Symbol(v)))
+            .collect()
+    }
+
+    /// clingo's `is_conflicting`: the program has no answer set whatever the externals and
+    /// assumptions (a constraint with an empty body, or a top-level conflict found by a
+    /// search).
+    fn is_conflicting(&self) -> bool {
+        self.ctl.is_conflicting()
+    }
+
     /// The atom of `symbol`: `(literal, is_fact, is_external)`, or `None`.
     fn symbolic_atom(&self, symbol: &Symbol) -> Option<(u32, bool, bool)> {
         let atom = self.ctl.lookup(&symbol.0)?;

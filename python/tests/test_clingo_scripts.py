@@ -511,3 +511,41 @@ def consequence_queries(clingo):
 
 def test_consequence_queries(both):
     both(consequence_queries)
+
+
+def constants_and_conflicts_while_solving(clingo):
+    """get_const inside on_model (clingo answers it; Lucent's Control was busy and raised
+    'Already mutably borrowed'), statistics inside on_model (clingo raises RuntimeError), and
+    is_conflicting before grounding, after grounding and after solving."""
+    out = []
+    ctl = clingo.Control(["0", "-c", "k=3"])
+    ctl.add("base", [], "#const n = 2. #const m = n+1. #const k = 7. {a; b}. :- a, b.")
+    ctl.ground([("base", [])])
+
+    def on_model(m):
+        consts = [ctl.get_const(c) for c in ("n", "m", "k", "zz")]
+        try:
+            ctl.statistics
+            stats = "available"
+        except RuntimeError:
+            stats = "RuntimeError"
+        out.append((sorted(str(s) for s in m.symbols(atoms=True)), [str(c) for c in consts], stats))
+
+    ctl.solve(on_model=on_model)
+    out.sort()
+    out.append(str(ctl.get_const("m")))
+    for program in (":- a. a.", "a.", ":- .", "-a. a.", "a :- not a.", "#external e. :- e."):
+        ctl = clingo.Control()
+        before = ctl.is_conflicting
+        ctl.add("base", [], program)
+        ctl.ground([("base", [])])
+        grounded = ctl.is_conflicting
+        if program.startswith("#external"):
+            ctl.assign_external(clingo.Function("e"), True)
+        result = str(ctl.solve())
+        out.append((program, before, grounded, result, ctl.is_conflicting))
+    return out
+
+
+def test_constants_and_conflicts_while_solving(both):
+    both(constants_and_conflicts_while_solving)
