@@ -1,7 +1,8 @@
 //! Ground statements added from code (clingo's `Control.backend()`): atoms with or without a
-//! symbol, rules (normal, choice, weight bodies), minimize statements, externals and assumptions
-//! join the Control's pending program exactly as a grounding's rules do (`context`: numbered
-//! after the Control's atoms, handed to the solver at the next solve call).
+//! symbol, rules (normal, choice, weight bodies), minimize statements, externals, assumptions,
+//! projections, heuristics and acyclicity edges join the Control's pending program exactly as
+//! a grounding's rules do (`context`: numbered after the Control's atoms, handed to the solver
+//! at the next solve call).
 //!
 //! ```
 //! use lucent::control::{Control, ControlConfig, Symbol};
@@ -29,7 +30,9 @@
 //!   (clingo's grounder would; documented in docs/reference.md's Python section).
 
 use super::*;
-use crate::ground::program::{Body, HeadKind, Lit, Minimize, Rule, Weight};
+use crate::ground::program::{
+    Body, Edge, HeadKind, Heuristic, HeuristicModifier, Lit, Minimize, Rule, Weight,
+};
 
 /// Adds ground statements to a [`Control`] (see the module documentation).
 pub struct Backend<'a> {
@@ -128,6 +131,50 @@ impl Backend<'_> {
     pub fn add_assume(&mut self, lits: &[Lit]) -> Result<(), String> {
         self.check(&[], lits.iter().copied())?;
         self.ctl.pending.assumptions.extend_from_slice(lits);
+        Ok(())
+    }
+
+    /// `#project a.` for each of `atoms`: with projection on (`--project`), models are told
+    /// apart by these atoms only and show only them, as a grounded `#project` does.
+    pub fn add_project(&mut self, atoms: &[AtomId]) -> Result<(), String> {
+        self.check(&[], atoms.iter().map(|&a| a as Lit))?;
+        self.ctl.pending.projections.extend_from_slice(atoms);
+        Ok(())
+    }
+
+    /// `#heuristic a : condition. [bias@priority, modifier]` (read under
+    /// `--heuristic=domain`, as a grounded `#heuristic`).
+    pub fn add_heuristic(
+        &mut self,
+        atom: AtomId,
+        modifier: HeuristicModifier,
+        bias: i32,
+        priority: u32,
+        condition: &[Lit],
+    ) -> Result<(), String> {
+        self.check(
+            &[],
+            std::iter::once(atom as Lit).chain(condition.iter().copied()),
+        )?;
+        self.ctl.pending.heuristics.push(Heuristic {
+            modifier,
+            atom,
+            bias,
+            priority,
+            condition: condition.to_vec(),
+        });
+        Ok(())
+    }
+
+    /// `#edge (from, to) : condition.`: the edges whose conditions hold form no cycle
+    /// (clingo's `add_acyc_edge`; nodes are numbers).
+    pub fn add_acyc_edge(&mut self, from: i32, to: i32, condition: &[Lit]) -> Result<(), String> {
+        self.check(&[], condition.iter().copied())?;
+        self.ctl.pending.edges.push(Edge {
+            from,
+            to,
+            condition: condition.to_vec(),
+        });
         Ok(())
     }
 
@@ -322,6 +369,67 @@ mod tests {
         let last = models.last().unwrap();
         assert_eq!(last.shown, [Symbol::constant("c")]);
         assert_eq!(last.costs, [2]);
+    }
+
+    /// Expected answers recorded from clingo 5.8.3's Python API with the same backend calls on
+    /// an empty grounded `base` (`Control(["0", "--project"])`, `Control(["0"])`,
+    /// `Control(["1", "--heuristic=Domain"])`; sorted shown symbols of every model).
+    #[test]
+    fn projections_edges_and_heuristics_from_code() {
+        let sym = |s: &str| Symbol::parse(s).unwrap();
+        // {p(1); p(2); c}. #project p(1). #project p(2).
+        let projected = |args: &[&str]| {
+            let mut ctl = Control::from_args(args).unwrap();
+            let mut b = ctl.backend().unwrap();
+            let atoms: Vec<AtomId> = ["p(1)", "p(2)", "c"]
+                .iter()
+                .map(|s| b.add_atom(Some(&sym(s))))
+                .collect();
+            b.add_rule(&atoms, &[], true).unwrap();
+            b.add_project(&atoms[..2]).unwrap();
+            sorted_answers(&mut ctl)
+        };
+        assert_eq!(
+            projected(&["0", "--project"]),
+            ["", "p(1)", "p(1) p(2)", "p(2)"]
+        );
+        assert_eq!(projected(&["0"]).len(), 8, "without --project every model");
+        // {e(0); e(1); e(2)}. with the edges 1->2 if e(0), 2->3 if e(1), 3->1 if e(2).
+        let mut ctl = all_models();
+        let mut b = ctl.backend().unwrap();
+        let e: Vec<AtomId> = (0..3)
+            .map(|i| b.add_atom(Some(&Symbol::function("e", vec![Symbol::number(i)]))))
+            .collect();
+        b.add_rule(&e, &[], true).unwrap();
+        for (i, &a) in e.iter().enumerate() {
+            let i = i as i32;
+            b.add_acyc_edge(i + 1, (i + 1) % 3 + 1, &[a as Lit])
+                .unwrap();
+        }
+        let answers = sorted_answers(&mut ctl);
+        assert_eq!(answers.len(), 7, "every subset but the cycle: {answers:?}");
+        assert!(!answers.contains(&"e(0) e(1) e(2)".to_string()));
+        // {a; b}. :- a, b. :- not a, not b. #heuristic X. [5@1, true], for X = a, then b.
+        for (preferred, expected) in [("a", "a"), ("b", "b")] {
+            let mut ctl = Control::from_args(&["1", "--heuristic=Domain"]).unwrap();
+            let mut b = ctl.backend().unwrap();
+            let (a, bb) = (b.add_atom(Some(&sym("a"))), b.add_atom(Some(&sym("b"))));
+            b.add_rule(&[a, bb], &[], true).unwrap();
+            b.add_rule(&[], &[a as Lit, bb as Lit], false).unwrap();
+            b.add_rule(&[], &[-(a as Lit), -(bb as Lit)], false)
+                .unwrap();
+            let atom = if preferred == "a" { a } else { bb };
+            b.add_heuristic(atom, HeuristicModifier::True, 5, 1, &[])
+                .unwrap();
+            assert_eq!(sorted_answers(&mut ctl), [expected]);
+        }
+        let mut ctl = all_models();
+        let mut b = ctl.backend().unwrap();
+        assert!(b.add_project(&[3]).is_err());
+        assert!(b.add_acyc_edge(1, 2, &[-4]).is_err());
+        assert!(b
+            .add_heuristic(9, HeuristicModifier::Sign, 1, 0, &[])
+            .is_err());
     }
 
     #[test]
