@@ -91,6 +91,18 @@ class TruthValue(_enum.Enum):
     Release = "release"
 
 
+class HeuristicType(OrderedEnum):
+    """clingo's ``HeuristicType``: the modifier of a ``#heuristic`` directive
+    (``Backend.add_heuristic``)."""
+
+    Level = 0
+    Sign = 1
+    Factor = 2
+    Init = 3
+    True_ = 4
+    False_ = 5
+
+
 class ModelType(OrderedEnum):
     """clingo's ``ModelType``: stable models, or the brave or cautious consequences found so
     far under ``--enum-mode``."""
@@ -399,6 +411,19 @@ class Backend:
 
     def add_assume(self, literals):
         self._c.backend_add_assume(list(literals))
+
+    def add_project(self, atoms):
+        """Projection atoms (read with ``--project``)."""
+        self._c.backend_add_project(list(atoms))
+
+    def add_heuristic(self, atom, type_, bias, priority, condition):
+        """A ``#heuristic`` directive (read with ``--heuristic=Domain``)."""
+        self._c.backend_add_heuristic(atom, HeuristicType(type_).value, bias, priority,
+                                      list(condition))
+
+    def add_acyc_edge(self, node_u, node_v, condition):
+        """An edge of the acyclicity constraint, present when ``condition`` holds."""
+        self._c.backend_add_acyc_edge(node_u, node_v, list(condition))
 
 
 def _floats(value):
@@ -829,5 +854,5 @@ def explain(*files, question=None, happened=None, goal=None, why=None, why_not=N
 # clingo's submodules (``from clingo.symbol import Function``, ``from clingo.application
 # import Application, clingo_main``, ...) and the application interface at the top level, as
 # clingo has them.
-from . import application, control, core, solving, symbol, theory_atoms  # noqa: E402,F401
+from . import application, backend, control, core, solving, symbol, theory_atoms  # noqa: E402,F401
 from .application import Application, ApplicationOptions, Flag, clingo_main  # noqa: E402,F401

@@ -553,6 +553,46 @@ impl Control {
         let mut b = self.ctl.backend().map_err(error)?;
         b.add_assume(&literals).map_err(error)
     }
+
+    /// `Backend.add_project(atoms)`.
+    fn backend_add_project(&mut self, atoms: Vec<u32>) -> PyResult<()> {
+        self.idle()?;
+        let mut b = self.ctl.backend().map_err(error)?;
+        b.add_project(&atoms).map_err(error)
+    }
+
+    /// `Backend.add_heuristic(atom, type, bias, priority, condition)`; `kind` is the value of
+    /// clingo's `HeuristicType` (aspif's numbering: level, sign, factor, init, true, false).
+    fn backend_add_heuristic(
+        &mut self,
+        atom: u32,
+        kind: u32,
+        bias: i32,
+        priority: u32,
+        condition: Vec<i32>,
+    ) -> PyResult<()> {
+        use lucent::ground::program::HeuristicModifier as M;
+        let modifier = match kind {
+            0 => M::Level,
+            1 => M::Sign,
+            2 => M::Factor,
+            3 => M::Init,
+            4 => M::True,
+            5 => M::False,
+            _ => return Err(error(format!("invalid heuristic type: {kind}"))),
+        };
+        self.idle()?;
+        let mut b = self.ctl.backend().map_err(error)?;
+        b.add_heuristic(atom, modifier, bias, priority, &condition)
+            .map_err(error)
+    }
+
+    /// `Backend.add_acyc_edge(node_u, node_v, condition)`.
+    fn backend_add_acyc_edge(&mut self, from: i32, to: i32, condition: Vec<i32>) -> PyResult<()> {
+        self.idle()?;
+        let mut b = self.ctl.backend().map_err(error)?;
+        b.add_acyc_edge(from, to, &condition).map_err(error)
+    }
 }
 
 impl Control {

@@ -549,3 +549,57 @@ def constants_and_conflicts_while_solving(clingo):
 
 def test_constants_and_conflicts_while_solving(both):
     both(constants_and_conflicts_while_solving)
+
+
+def backend_projections_edges_heuristics(clingo):
+    """Backend.add_project (read with --project), add_acyc_edge (no cycle of edges whose
+    conditions hold) and add_heuristic (with --heuristic=Domain the preferred atom comes first),
+    with clingo.backend.HeuristicType as scripts import it."""
+    from importlib import import_module
+
+    heuristic_type = import_module(clingo.__name__ + ".backend").HeuristicType
+
+    def run(args, build):
+        ctl = clingo.Control(args)
+        ctl.add("base", [], "")
+        ctl.ground([("base", [])])
+        with ctl.backend() as b:
+            build(b)
+        models = []
+        ctl.solve(on_model=lambda m: models.append(m.symbols(shown=True)))
+        return sorted_models(models)
+
+    def projected(b):
+        atoms = [b.add_atom(clingo.Function(n, a)) for n, a in
+                 (("p", [clingo.Number(1)]), ("p", [clingo.Number(2)]), ("c", []))]
+        b.add_rule(atoms, [], True)
+        b.add_project(atoms[:2])
+
+    def edges(b):
+        e = [b.add_atom(clingo.Function("e", [clingo.Number(i)])) for i in range(3)]
+        b.add_rule(e, [], True)
+        for i in range(3):
+            b.add_acyc_edge(i + 1, (i + 1) % 3 + 1, [e[i]])
+
+    def preferring(name, kind):
+        def build(b):
+            a, c = b.add_atom(clingo.Function("a")), b.add_atom(clingo.Function("b"))
+            b.add_rule([a, c], [], True)
+            b.add_rule([], [a, c])
+            b.add_rule([], [-a, -c])
+            b.add_heuristic(a if name == "a" else c, kind, 5, 1, [])
+        return build
+
+    return [
+        run(["0", "--project"], projected),
+        run(["0"], projected),
+        run(["0"], edges),
+        run(["1", "--heuristic=Domain"], preferring("a", heuristic_type.True_)),
+        run(["1", "--heuristic=Domain"], preferring("b", heuristic_type.True_)),
+        run(["1", "--heuristic=Domain"], preferring("a", clingo.HeuristicType.False_)),
+        [str(t) for t in sorted(heuristic_type)],
+    ]
+
+
+def test_backend_projections_edges_heuristics(both):
+    both(backend_projections_edges_heuristics)
