@@ -89,7 +89,10 @@ pub use functions::Context;
 pub use handle::{HandleMode, Search, SolveHandle};
 use model::Names;
 pub use model::{Model, OwnedModel};
-pub use propagator::{Assignment, CheckMode, Literal, PropagateControl, PropagateInit, Propagator};
+pub use propagator::{
+    Assignment, CheckMode, Literal, PropagateControl, PropagateInit, Propagator,
+    WeightConstraintType,
+};
 pub use symbol::{Name, ParseSymbolError, Symbol};
 
 /// An atom of the Control's ground program: the aspif numbering, from 1

@@ -80,6 +80,19 @@ impl CheckMode {
     }
 }
 
+/// How [`PropagateInit::add_weight_constraint`] ties its literal to the constraint (clingo's
+/// `type_`: -1, 1, 0).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum WeightConstraintType {
+    /// The constraint implies the literal (-1).
+    LeftImplication,
+    /// The literal implies the constraint (1).
+    RightImplication,
+    /// The literal holds exactly when the constraint does (0, the default).
+    #[default]
+    Equivalence,
+}
+
 /// What `init` gets (clingo's `PropagateInit`).
 pub struct PropagateInit<'a> {
     solver: &'a mut Solver,
@@ -114,6 +127,48 @@ impl PropagateInit<'_> {
     /// Adds a problem clause; false when the problem became unsatisfiable.
     pub fn add_clause(&mut self, clause: &[Literal]) -> bool {
         self.solver.propagator_clause(clause)
+    }
+
+    /// Stops watching `l` on every thread.
+    pub fn remove_watch(&mut self, l: Literal) {
+        self.solver.propagator_unwatch(l);
+    }
+
+    /// Propagates what the clauses added so far imply before the search (clingo's
+    /// `PropagateInit.propagate`); false when the problem became unsatisfiable.
+    pub fn propagate(&mut self) -> bool {
+        self.solver.propagator_propagate()
+    }
+
+    /// Adds the weight constraint `sum(w * l for (l, w) in lits) >= bound` tied to `literal`
+    /// as `kind` says (clingo's `add_weight_constraint`); false when the problem became
+    /// unsatisfiable. With `compare_equal`, as clasp: the same tie of `-literal` to
+    /// `sum >= bound + 1` is added too (so under an equivalence only `sum == bound` with
+    /// `literal` true remains; recorded from clingo 5.8, tests/control/propagator.rs).
+    pub fn add_weight_constraint(
+        &mut self,
+        literal: Literal,
+        lits: &[(Literal, i32)],
+        bound: i32,
+        kind: WeightConstraintType,
+        compare_equal: bool,
+    ) -> bool {
+        let ws: Vec<(Literal, i64)> = lits.iter().map(|&(l, w)| (l, i64::from(w))).collect();
+        // `sum < bound` is `sum(-w * l) >= 1 - bound`.
+        let neg: Vec<(Literal, i64)> = ws.iter().map(|&(l, w)| (l, -w)).collect();
+        let s = &mut *self.solver;
+        let mut tie = |lit: Literal, b: i64| match kind {
+            WeightConstraintType::RightImplication => s.propagator_weight(lit, &ws, b, true),
+            // The constraint implies `lit`: without it the sum stays below the bound.
+            WeightConstraintType::LeftImplication => s.propagator_weight(-lit, &neg, 1 - b, true),
+            WeightConstraintType::Equivalence => s.propagator_weight(lit, &ws, b, false),
+        };
+        let b = i64::from(bound);
+        let mut ok = tie(literal, b);
+        if compare_equal {
+            ok &= tie(-literal, b + 1);
+        }
+        ok
     }
 
     /// The threads the propagator will be called from.

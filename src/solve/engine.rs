@@ -806,6 +806,20 @@ impl Engine {
         self.asg.values[l.code()]
     }
 
+    /// Unit propagation at decision level 0 (what clauses added before the search imply);
+    /// false, and the engine inconsistent, on a conflict.
+    pub(crate) fn propagate_root(&mut self) -> bool {
+        if self.inconsistent {
+            return false;
+        }
+        self.backtrack(0);
+        if self.propagate().is_some() {
+            self.inconsistent = true;
+            return false;
+        }
+        true
+    }
+
     /// True once a conflict was found at decision level 0: no assignment of the assumptions
     /// (nor of the externals, which are assumed) can give a model any more.
     pub fn is_inconsistent(&self) -> bool {

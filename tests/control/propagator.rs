@@ -11,7 +11,7 @@
 
 use lucent::control::{
     Assignment, Control, ControlConfig, Literal, Part, PropagateControl, PropagateInit, Propagator,
-    SolveOptions, Symbol,
+    SolveOptions, Symbol, WeightConstraintType,
 };
 use lucent::solve::{Config, OptMode};
 use std::collections::HashMap;
@@ -322,4 +322,85 @@ fn undo_keeps_a_counting_propagator_consistent() {
         assert!(checks.load(Ordering::Relaxed) >= 31);
         assert!(undos.load(Ordering::Relaxed) > 0);
     }
+}
+
+/// Ties `q` to `p(1) + p(2) + p(3) >= 2` in `init` (clingo's `add_weight_constraint`).
+struct WeightTie {
+    kind: WeightConstraintType,
+    equal: bool,
+}
+
+impl Propagator for WeightTie {
+    fn init(&mut self, init: &mut PropagateInit<'_>) {
+        let ps: Vec<(Literal, i32)> = p_literals(init).into_iter().map(|(_, l)| (l, 1)).collect();
+        let q = init
+            .symbolic_atoms()
+            .iter()
+            .find(|a| a.symbol.is("q", 0))
+            .map(|a| init.solver_literal(a.atom))
+            .unwrap();
+        assert!(init.add_weight_constraint(q, &ps, 2, self.kind, self.equal));
+    }
+}
+
+#[test]
+fn weight_constraints_added_in_init_follow_clingo() {
+    let want = clingo_answers();
+    for threads in [1, 2] {
+        for (kind, name) in [
+            (WeightConstraintType::LeftImplication, "-1"),
+            (WeightConstraintType::Equivalence, "0"),
+            (WeightConstraintType::RightImplication, "1"),
+        ] {
+            for equal in [false, true] {
+                let mut ctl = control(threads, 0, false);
+                ctl.add_source("w.lp", "{p(1..3)}. {q}.").unwrap();
+                ctl.ground(&[Part::base()]).unwrap();
+                ctl.register_propagator(Box::new(WeightTie { kind, equal }));
+                let key = format!("weight{name}-{}", if equal { "eq" } else { "ge" });
+                assert_eq!(
+                    sets(&mut ctl, &SolveOptions::default()),
+                    want[&key],
+                    "{key}, {threads} threads"
+                );
+            }
+        }
+    }
+}
+
+/// Clauses added in `init` and propagated there fix what they imply before the search, and a
+/// watch removed in `init` is not reported (derived by hand: `p(1)` and `p(1) -> q` fix `q`).
+#[test]
+fn init_propagates_and_removes_watches() {
+    struct Fix(Arc<AtomicUsize>);
+    impl Propagator for Fix {
+        fn init(&mut self, init: &mut PropagateInit<'_>) {
+            let ps = p_literals(init);
+            let q = init
+                .symbolic_atoms()
+                .iter()
+                .find(|a| a.symbol.is("q", 0))
+                .map(|a| init.solver_literal(a.atom))
+                .unwrap();
+            let p1 = ps.iter().find(|(i, _)| *i == 1).unwrap().1;
+            assert!(init.add_clause(&[p1]) && init.add_clause(&[-p1, q]));
+            assert!(init.propagate());
+            assert_eq!(init.assignment().value(q), Some(true));
+            for &(_, l) in &ps {
+                init.add_watch(l);
+                init.remove_watch(l);
+            }
+        }
+        fn propagate(&mut self, _: &mut PropagateControl<'_>, changes: &[Literal]) {
+            self.0.fetch_add(changes.len(), Ordering::Relaxed);
+        }
+    }
+    let calls = Arc::new(AtomicUsize::new(0));
+    let mut ctl = control(1, 0, false);
+    ctl.add_source("fix.lp", "{p(1..2)}. {q}.").unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    ctl.register_propagator(Box::new(Fix(calls.clone())));
+    let got = sets(&mut ctl, &SolveOptions::default());
+    assert_eq!(got, r#"[["p(1)", "p(2)", "q"], ["p(1)", "q"]]"#);
+    assert_eq!(calls.load(Ordering::Relaxed), 0, "no watch left");
 }

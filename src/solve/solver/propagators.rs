@@ -116,6 +116,52 @@ impl Solver {
         }
     }
 
+    /// Stops watching `l` on every engine (`PropagateInit::remove_watch`).
+    pub(crate) fn propagator_unwatch(&mut self, l: Literal) {
+        for e in self.engines_mut() {
+            if let Some(local) = e.user_to_local(l) {
+                e.watch_external(local, false);
+            }
+        }
+    }
+
+    /// Unit propagation at level 0 on every engine (`PropagateInit::propagate`); false when the
+    /// problem became inconsistent.
+    pub(crate) fn propagator_propagate(&mut self) -> bool {
+        let mut ok = true;
+        for e in self.engines_mut() {
+            ok &= e.propagate_root();
+        }
+        ok
+    }
+
+    /// Adds the weight constraint `head -> sum >= bound` (with `implication`) or
+    /// `head <-> sum >= bound` at level 0 to every engine; false when the problem became
+    /// inconsistent.
+    pub(crate) fn propagator_weight(
+        &mut self,
+        head: Literal,
+        lits: &[(Literal, i64)],
+        bound: i64,
+        implication: bool,
+    ) -> bool {
+        let mut ok = true;
+        for e in self.engines_mut() {
+            let local = |l: Literal| {
+                e.user_to_local(l)
+                    .unwrap_or_else(|| panic!("{l} is not a solver literal of this solver"))
+            };
+            let h = local(head);
+            let ls: Vec<(Lit, i64)> = lits.iter().map(|&(l, w)| (local(l), w)).collect();
+            ok &= if implication {
+                e.add_weight_implication(h, &ls, bound)
+            } else {
+                e.add_weight(h, &ls, bound)
+            };
+        }
+        ok
+    }
+
     /// Adds a clause at level 0 to every engine (`PropagateInit::add_clause`); false when the
     /// problem became inconsistent.
     pub(crate) fn propagator_clause(&mut self, clause: &[Literal]) -> bool {

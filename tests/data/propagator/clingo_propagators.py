@@ -98,3 +98,25 @@ ctl.register_propagator(NoConsecutive())
 best = []
 ctl.solve(on_model=lambda m: best.append((list(m.cost), sorted(str(s) for s in m.symbols(shown=True)))))
 line("optimum", "%s %s" % (best[-1][0], fmt([best[-1][1]])))
+
+
+class WeightTie:
+    """In init: q tied to `p(1) + p(2) + p(3) >= 2` (type -1, 0 or 1, `==` or not)."""
+
+    def __init__(self, kind, equal):
+        self.kind, self.equal = kind, equal
+
+    def init(self, init):
+        ps = [init.solver_literal(a.literal) for a in init.symbolic_atoms.by_signature("p", 1)]
+        q = init.solver_literal(init.symbolic_atoms[clingo.Function("q")].literal)
+        init.add_weight_constraint(q, [(l, 1) for l in ps], 2, self.kind, self.equal)
+
+
+# (e) weight constraints added in init, every type, with and without compare_equal.
+for kind in (-1, 0, 1):
+    for equal in (False, True):
+        ctl = clingo.Control(["0"])
+        ctl.add("base", [], "{p(1..3)}. {q}.")
+        ctl.ground([("base", [])])
+        ctl.register_propagator(WeightTie(kind, equal))
+        line("weight%d-%s" % (kind, "eq" if equal else "ge"), sets(ctl))
