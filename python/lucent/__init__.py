@@ -48,6 +48,7 @@ from .propagator import (  # noqa: F401 (re-exported: clingo's names)
     PropagateInit,
     Propagator,
     PropagatorCheckMode,
+    PropagatorUndoMode,
     Trail,
 )
 

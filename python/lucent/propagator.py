@@ -22,6 +22,13 @@ class PropagatorCheckMode:
     Both = 3
 
 
+class PropagatorUndoMode:
+    """clingo's ``PropagatorUndoMode``: when ``undo`` is called."""
+
+    Default = 0
+    Always = 1
+
+
 class Propagator:
     """clingo's ``Propagator`` interface, as a base class: every method does nothing, so a
     subclass defines only those it needs (as with clingo, a propagator need not derive from
@@ -167,6 +174,9 @@ class PropagateInit:
         self.number_of_threads = threads
         self.assignment = Assignment(live)
         self.check_mode = PropagatorCheckMode.Total
+        # clingo's undo_mode (Default or Always): Lucent calls undo for every watched
+        # literal that was reported, as clingo's default; kept for scripts that set it.
+        self.undo_mode = PropagatorUndoMode.Default
         # condition_id -> condition, for the theory elements' ids that are no atoms.
         self._conditions = None
 
@@ -197,6 +207,24 @@ class PropagateInit:
 
     def add_literal(self, freeze=True):
         return self._l.add_literal()
+
+    def remove_watch(self, literal, thread_id=None):
+        self._l.remove_watch(literal)
+
+    def freeze_literal(self, literal):
+        """Nothing to do: Lucent's solver eliminates no variable a propagator may name."""
+
+    def propagate(self):
+        """Propagates the clauses added so far; ``False`` on a conflict."""
+        return self._l.propagate()
+
+    def add_weight_constraint(self, literal, literals, bound, type_=0, compare_equal=False):
+        """``literal`` tied to ``sum(w * l) >= bound`` (``type_``: -1 the constraint implies
+        it, 0 equivalent, 1 it implies the constraint); with ``compare_equal`` as clingo (the
+        same tie of ``-literal`` to ``bound + 1`` too). ``False`` on a conflict."""
+        return self._l.add_weight_constraint(
+            literal, [tuple(x) for x in literals], bound, int(type_), bool(compare_equal)
+        )
 
 
 class PropagateControl:

@@ -16,7 +16,9 @@
 //!   frame that lent it does not touch it until the callback returns; the engine never calls
 //!   the hook again while one of its calls runs, so nothing here re-enters Python.
 
-use lucent::control::{Assignment, Literal, PropagateControl, PropagateInit};
+use lucent::control::{
+    Assignment, Literal, PropagateControl, PropagateInit, WeightConstraintType,
+};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use std::sync::Mutex;
@@ -232,9 +234,40 @@ impl Live {
         self.control(|c| Ok(c.add_clause(&clause)))
     }
 
-    /// Unit propagation of what was added; false on a conflict.
+    /// Unit propagation of what was added (in `init`: before the search); false on a
+    /// conflict.
     fn propagate(&self) -> PyResult<bool> {
+        if self.is_init() {
+            return self.init(|i| Ok(i.propagate()));
+        }
         self.control(|c| Ok(c.propagate()))
+    }
+
+    /// In `init`: `literal` tied to `sum(w * l) >= bound` (clingo's `add_weight_constraint`;
+    /// `kind` -1 left implication, 0 equivalence, 1 right implication); false on a conflict.
+    fn add_weight_constraint(
+        &self,
+        literal: Literal,
+        lits: Vec<(Literal, i32)>,
+        bound: i32,
+        kind: i32,
+        compare_equal: bool,
+    ) -> PyResult<bool> {
+        let kind = match kind {
+            -1 => WeightConstraintType::LeftImplication,
+            0 => WeightConstraintType::Equivalence,
+            1 => WeightConstraintType::RightImplication,
+            _ => {
+                return Err(PyRuntimeError::new_err(format!(
+                    "invalid weight constraint type: {kind} (-1, 0 or 1)"
+                )))
+            }
+        };
+        let all: Vec<Literal> = std::iter::once(literal)
+            .chain(lits.iter().map(|&(l, _)| l))
+            .collect();
+        self.checked(&all)?;
+        self.init(|i| Ok(i.add_weight_constraint(literal, &lits, bound, kind, compare_equal)))
     }
 
     /// Watches `l` (in `init`: on every thread).
@@ -254,6 +287,12 @@ impl Live {
 
     fn remove_watch(&self, l: Literal) -> PyResult<()> {
         self.checked(&[l])?;
+        if self.is_init() {
+            return self.init(|i| {
+                i.remove_watch(l);
+                Ok(())
+            });
+        }
         self.control(|c| {
             c.remove_watch(l);
             Ok(())

@@ -603,3 +603,42 @@ def backend_projections_edges_heuristics(clingo):
 
 def test_backend_projections_edges_heuristics(both):
     both(backend_projections_edges_heuristics)
+
+
+def propagator_init_weight_constraints(clingo):
+    """PropagateInit.add_weight_constraint (every type, with and without compare_equal),
+    propagate (what the clauses added in init imply), remove_watch and freeze_literal."""
+
+    class Tie:
+        def __init__(self, kind, equal):
+            self.kind, self.equal, self.fixed, self.seen = kind, equal, None, 0
+
+        def init(self, init):
+            ps = [init.solver_literal(a.literal) for a in init.symbolic_atoms.by_signature("p", 1)]
+            q = init.solver_literal(init.symbolic_atoms[clingo.Function("q")].literal)
+            init.add_weight_constraint(q, [(l, 1) for l in ps], 2, self.kind, self.equal)
+            for l in ps:
+                init.add_watch(l)
+                init.remove_watch(l)
+                init.freeze_literal(l)
+            self.fixed = (init.propagate(), init.assignment.value(q))
+
+        def propagate(self, control, changes):
+            self.seen += len(changes)
+
+    out = []
+    for kind in (-1, 0, 1):
+        for equal in (False, True):
+            ctl = clingo.Control(["0"])
+            ctl.add("base", [], "{p(1..3)}. {q}.")
+            ctl.ground([("base", [])])
+            tie = Tie(kind, equal)
+            ctl.register_propagator(tie)
+            models = []
+            ctl.solve(on_model=lambda m: models.append(m.symbols(atoms=True)))
+            out.append((kind, equal, sorted_models(models), tie.fixed, tie.seen))
+    return out
+
+
+def test_propagator_init_weight_constraints(both):
+    both(propagator_init_weight_constraints)
