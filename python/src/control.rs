@@ -50,18 +50,24 @@ struct LastCall {
     models: usize,
     /// The last model's costs, highest priority first.
     costs: Vec<i64>,
-    /// The costs were proven optimal.
-    optimal: bool,
+    /// The models reported as optimal (clingo's `summary.models.optimal`): those flagged so
+    /// as they came (`--opt-mode=optN`), else 1 when the last one was proven optimal after.
+    optimal: usize,
     /// clingo's `summary.result`: 1 satisfiable, 2 unsatisfiable, 0 unknown.
     result: u8,
     exhausted: bool,
 }
 
 impl LastCall {
-    fn new(summary: &Summary, mut costs: Vec<i64>, optimal: bool, kind: CallKind) -> LastCall {
+    fn new(summary: &Summary, mut costs: Vec<i64>, optimal: usize, kind: CallKind) -> LastCall {
         if kind.ignore_costs {
             costs.clear();
         }
+        let optimal = if optimal == 0 && summary.optimum_proven && summary.models > 0 {
+            1
+        } else {
+            optimal
+        };
         let result = if summary.is_unsatisfiable() {
             2
         } else if summary.is_satisfiable() && summary.outcome != Outcome::Unknown {
@@ -219,10 +225,10 @@ impl Control {
         let mut failure: Option<PyErr> = None;
         let mut kept: Vec<Py<Model>> = Vec::new();
         let mut costs = Vec::new();
-        let mut optimal = false;
+        let mut optimal = 0;
         let summary = self.ctl.solve(&options, |m| {
             costs = m.costs().to_vec();
-            optimal = m.optimal();
+            optimal += usize::from(m.optimal());
             if on_model.is_none() && !collect {
                 return true;
             }
@@ -268,7 +274,6 @@ impl Control {
             return Err(e);
         }
         self.raise_propagator_error()?;
-        let optimal = optimal || summary.optimum_proven;
         let (sat, unsat, exhausted, interrupted, core) = self.outcome(&summary);
         self.last = Some(LastCall::new(&summary, costs, optimal, self.call_kind()));
         self.calls += 1;
@@ -459,14 +464,8 @@ impl Control {
             exhausted,
         } = self.last.clone().unwrap_or_default();
         models.set_item("enumerated", n as f64)?;
-        models.set_item(
-            "optimal",
-            if optimal && !costs.is_empty() {
-                1.0
-            } else {
-                0.0
-            },
-        )?;
+        let optimal = if costs.is_empty() { 0 } else { optimal };
+        models.set_item("optimal", optimal as f64)?;
         times.set_item("solve", stats.time.as_secs_f64())?;
         summary.set_item("models", models)?;
         summary.set_item("times", times)?;
@@ -481,7 +480,7 @@ impl Control {
             "lower",
             costs
                 .iter()
-                .map(|&c| if optimal { c as f64 } else { 0.0 })
+                .map(|&c| if optimal > 0 { c as f64 } else { 0.0 })
                 .collect::<Vec<_>>(),
         )?;
         summary.set_item(
@@ -717,9 +716,8 @@ impl Control {
     }
 
     /// The end of a handle's search: the solver back, the call recorded for the statistics.
-    pub fn end_handle(&mut self, search: Search, costs: Vec<i64>, optimal: bool) -> Summary {
+    pub fn end_handle(&mut self, search: Search, costs: Vec<i64>, optimal: usize) -> Summary {
         let summary = self.ctl.end_search(search);
-        let optimal = optimal || summary.optimum_proven;
         self.last = Some(LastCall::new(&summary, costs, optimal, self.call_kind()));
         self.calls += 1;
         summary

@@ -29,9 +29,10 @@ pub struct SolveHandle {
     current: Option<Py<Model>>,
     /// The summary once the search is over.
     summary: Option<Summary>,
-    /// The last model's costs and optimality (for the statistics).
+    /// The last model's costs, and how many models were reported optimal (for the
+    /// statistics).
     costs: Vec<i64>,
-    optimal: bool,
+    optimal: usize,
 }
 
 impl SolveHandle {
@@ -43,7 +44,7 @@ impl SolveHandle {
             current: None,
             summary: None,
             costs: Vec::new(),
-            optimal: false,
+            optimal: 0,
         }
     }
 
@@ -108,7 +109,7 @@ impl SolveHandle {
             return Ok(None);
         };
         self.costs = raw.costs.clone();
-        self.optimal = raw.optimal;
+        self.optimal += usize::from(raw.optimal);
         let control = self.control.borrow(py);
         let model = control.read_model(raw, &self.names);
         let model = Py::new(py, model)?;

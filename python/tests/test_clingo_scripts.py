@@ -642,3 +642,28 @@ def propagator_init_weight_constraints(clingo):
 
 def test_propagator_init_weight_constraints(both):
     both(propagator_init_weight_constraints)
+
+
+def optimal_model_counts(clingo):
+    """statistics["summary"]["models"]: enumerated and optimal under each --opt-mode (clingo
+    counts the models reported as optimal: two of three with optN; none without costs)."""
+    out = []
+    program = "{a;b;c}. :- not a, not b. #minimize{1,X: X=a, a; 1,X:X=b,b; 1,X:X=c,c}."
+    for args in ([], ["0"], ["--opt-mode=optN"], ["--opt-mode=optN", "1"],
+                 ["--opt-mode=ignore", "0"]):
+        ctl = clingo.Control(args)
+        ctl.add("base", [], program)
+        ctl.ground([("base", [])])
+        ctl.solve()
+        models = ctl.statistics["summary"]["models"]
+        out.append((args, models["enumerated"], models["optimal"]))
+        with ctl.solve(yield_=True) as handle:
+            for _ in handle:
+                pass
+        models = ctl.statistics["summary"]["models"]
+        out.append((args, "handle", models["enumerated"], models["optimal"]))
+    return out
+
+
+def test_optimal_model_counts(both):
+    both(optimal_model_counts)
