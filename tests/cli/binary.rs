@@ -390,6 +390,21 @@ fn consequences_stop_at_the_model_limit() {
 }
 
 #[test]
+fn a_first_approximation_is_clasps() {
+    // clingo 5.4.1: `clingo cq1.lp -e cautious 1` prints one answer, empty (`Consequences:
+    // [0;0]`), and `clingo cq1.lp -e brave 1` one answer `a b c`: clasp decides the shown atoms
+    // false first for cautious consequences and true first for brave ones. Lucent's first
+    // cautious approximation was the model with every atom true.
+    let prog = "{a;b}. c :- a, b.";
+    for (mode, want) in [("cautious", ""), ("brave", "a b c")] {
+        let (code, out, _) = lucent(&["-e", mode, "1"], prog);
+        assert_eq!(code, 10, "{out}");
+        let answer = out.lines().skip_while(|l| !l.starts_with("Answer:")).nth(1);
+        assert_eq!(answer, Some(want), "{mode}: {out}");
+    }
+}
+
+#[test]
 fn shown_signatures_without_atoms_are_reported() {
     // `echo PROG | clingo 0` (clingo 5.4.1) reports the two signatures no statement mentions
     // (s/1 occurs in a body, p/1 in a head), by signature:

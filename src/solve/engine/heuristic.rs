@@ -152,6 +152,30 @@ impl Engine {
         self.heur.phase[i]
     }
 
+    /// Decides each of `lits` true when it is decided on (the sign of its variable set as
+    /// [`Engine::prefer`] sets it), returning the signs replaced, for
+    /// [`Engine::restore_signs`].
+    pub(crate) fn push_signs(&mut self, lits: impl IntoIterator<Item = Lit>) -> Vec<(Var, i8)> {
+        let mut saved = Vec::new();
+        for l in lits {
+            let v = l.var();
+            if self.heur.dom_sign.len() <= v.index() {
+                self.heur.dom_sign.resize(v.index() + 1, 0);
+            }
+            saved.push((v, self.heur.dom_sign[v.index()]));
+            self.heur.dom_sign[v.index()] = if l.is_neg() { -1 } else { 1 };
+        }
+        saved
+    }
+
+    /// Undoes [`Engine::push_signs`] (in reverse, so a variable pushed twice gets its first
+    /// sign back).
+    pub(crate) fn restore_signs(&mut self, saved: Vec<(Var, i8)>) {
+        for (v, s) in saved.into_iter().rev() {
+            self.heur.dom_sign[v.index()] = s;
+        }
+    }
+
     /// A domain preference (clingo's `#heuristic` under `--heuristic=domain`): decide `v`
     /// with `sign` (when given), and before every variable of a lower level (when `level` is
     /// positive; the default level is 0).

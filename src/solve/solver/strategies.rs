@@ -287,6 +287,16 @@ impl Solver {
         let n = self.tr.output_lits.len();
         let mut current: Option<Vec<bool>> = None;
         let mut current_atoms: Option<Vec<u32>> = None;
+        // As clasp: brave consequences decide the shown atoms true first (each model adds as
+        // many as it can), cautious ones false (each model removes as many), so the first
+        // approximation is already close and `-n 1` gives clingo's.
+        let signs =
+            self.engine.push_signs(
+                self.tr
+                    .output_lits
+                    .iter()
+                    .map(|&l| if brave { l } else { !l }),
+            );
         loop {
             match self.next(assume) {
                 Next::Exhausted => {
@@ -365,6 +375,7 @@ impl Solver {
                 }
             }
         }
+        self.engine.restore_signs(signs);
     }
 }
 
