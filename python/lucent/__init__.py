@@ -56,6 +56,15 @@ __version__ = "5.8.0"
 """The clingo Python API version this module follows."""
 
 
+class _SymbolSequence(list):
+    """A model's symbols (``Model.symbols``), as clingo's sequence: printed, the symbols show
+    as ``str`` (``[a, b(1)]``); its ``repr`` and a plain list of them show each symbol's
+    ``repr`` (``Function('a', [], True)``)."""
+
+    def __str__(self):
+        return "[" + ", ".join(str(s) for s in self) + "]"
+
+
 @_functools.total_ordering
 class OrderedEnum(_enum.Enum):
     """clingo's ``OrderedEnum``: an enum whose members compare by their values."""

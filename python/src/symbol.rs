@@ -153,8 +153,13 @@ impl Symbol {
         self.0.to_string()
     }
 
-    fn __repr__(&self) -> String {
-        self.0.to_string()
+    /// clingo's constructor form: `Number(3)`, `String('s')`, `Function('f', [Number(1)],
+    /// True)`, `Infimum`, `Supremum` (what a list of symbols prints; a model's `symbols()`
+    /// prints its elements as `str`, see `_SymbolSequence`).
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        let mut out = String::new();
+        constructor_form(py, &self.0, &mut out)?;
+        Ok(out)
     }
 
     fn __hash__(&self) -> u64 {
@@ -239,5 +244,33 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(parse_term, m)?)?;
     m.add("Infimum", Symbol(lucent::Symbol::Inf))?;
     m.add("Supremum", Symbol(lucent::Symbol::Sup))?;
+    Ok(())
+}
+
+/// `symbol` as clingo's `repr` writes it, strings quoted as Python quotes them.
+fn constructor_form(py: Python<'_>, symbol: &lucent::Symbol, out: &mut String) -> PyResult<()> {
+    let quoted = |t: &str| -> PyResult<String> {
+        Ok(pyo3::types::PyString::new_bound(py, t).repr()?.to_string())
+    };
+    match symbol {
+        lucent::Symbol::Number(n) => out.push_str(&format!("Number({n})")),
+        lucent::Symbol::String(t) => out.push_str(&format!("String({})", quoted(t)?)),
+        lucent::Symbol::Inf => out.push_str("Infimum"),
+        lucent::Symbol::Sup => out.push_str("Supremum"),
+        lucent::Symbol::Function {
+            name,
+            args,
+            negative,
+        } => {
+            out.push_str(&format!("Function({}, [", quoted(name)?));
+            for (i, a) in args.iter().enumerate() {
+                if i > 0 {
+                    out.push_str(", ");
+                }
+                constructor_form(py, a, out)?;
+            }
+            out.push_str(if *negative { "], False)" } else { "], True)" });
+        }
+    }
     Ok(())
 }

@@ -667,3 +667,36 @@ def optimal_model_counts(clingo):
 
 def test_optimal_model_counts(both):
     both(optimal_model_counts)
+
+
+def printed_symbols(clingo):
+    """What a script prints: a model's symbols print as clingo's sequence (`[a, b(1)]`), a
+    plain list of symbols (sorted) and a symbol's repr in clingo's constructor form; and the
+    first cautious approximation under the default model count (clasp decides the shown atoms
+    false first: one model, empty)."""
+    ctl = clingo.Control()
+    ctl.add("base", [], 'a. b(1). c("s\\n", (2,x), -d, #sup).')
+    ctl.ground([("base", [])])
+    out = []
+
+    def on_model(m):
+        syms = m.symbols(shown=True)
+        out.append(str(syms))
+        out.append(repr(sorted(syms)))
+        out.append(str(sorted(syms)))
+        out.append(repr(syms[0]))
+
+    ctl.solve(on_model=on_model)
+    out.append([repr(s) for s in (clingo.Infimum, clingo.Supremum, clingo.String("it's"),
+                                  clingo.Tuple_([]), clingo.Function("f", [clingo.Number(-1)], False))])
+    ctl = clingo.Control(["--enum-mode=cautious"])
+    ctl.add("base", [], "{a;b}. c :- a, b.")
+    ctl.ground([("base", [])])
+    models = []
+    ctl.solve(on_model=lambda m: models.append(str(m.symbols(shown=True))))
+    out.append(models)
+    return out
+
+
+def test_printed_symbols(both):
+    both(printed_symbols)
