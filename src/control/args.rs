@@ -4,9 +4,11 @@
 //! Read: the model count (`N`, `-n N`, `-nN`, `--models=N`), constants (`-c name=value`,
 //! `--const`), `--opt-mode`, `--enum-mode` (`-e`: brave and cautious consequences, every
 //! model by default as in clingo), `--project[=mode]`, the thread count (`-t N`,
-//! `--parallel-mode=N[,mode]`), `--heuristic`, `--opt-strategy`, `--seed` and `--rand-freq`,
-//! each written `--opt=value` or `--opt value`; warning options (`-W`, `--warn`), clingo's
-//! search presets (`--configuration`) and the switches `--stats`, `--restart-on-model`,
+//! `--parallel-mode=N[,mode]`), `--heuristic`, `--opt-strategy`, `--seed`, `--rand-freq` and
+//! `--restarts` (`no`, `L,n` Luby restarts of unit n, `D,...` dynamic ones; clasp's fixed and
+//! geometric schedules are read as Luby's), each written `--opt=value` or `--opt value`;
+//! warning options (`-W`, `--warn`), clingo's search presets (`--configuration`), the default
+//! decision sign (`--sign-def`) and the switches `--stats`, `--restart-on-model`,
 //! `--keep-facts`, `--single-shot`, `--sat-prepro` are accepted and change nothing a Control
 //! reports (they tune clasp's search, which Lucent does not have, or its statistics, which a
 //! Control always keeps).
@@ -73,7 +75,9 @@ fn read(args: &[&str], config: &mut ControlConfig) -> Result<(), ArgsError> {
         } else {
             return Err(ArgsError(format!("unknown option: {a}")));
         };
-        const KNOWN: [&str; 12] = [
+        const KNOWN: [&str; 14] = [
+            "restarts",
+            "sign-def",
             "models",
             "enum-mode",
             "const",
@@ -160,6 +164,23 @@ fn read(args: &[&str], config: &mut ControlConfig) -> Result<(), ArgsError> {
                 }
                 _ => return Err(invalid(name, value)),
             },
+            "restarts" => {
+                let mut parts = value.split(',');
+                let kind = parts.next().unwrap_or("");
+                let unit: Option<u32> = parts.next().and_then(|n| n.parse().ok());
+                config.solve.restarts = match (kind, unit) {
+                    ("no" | "0", _) => solve::RestartPolicy::Never,
+                    ("D" | "d", _) => solve::RestartPolicy::Glucose,
+                    ("L" | "l" | "F" | "f" | "x" | "+", Some(n)) if n > 0 => {
+                        solve::RestartPolicy::Luby(n)
+                    }
+                    _ => return Err(invalid(name, value)),
+                };
+            }
+            // clasp's default sign of a decision; Lucent's heuristic chooses its own.
+            "sign-def" if !["asp", "pos", "neg", "rnd", "0", "1", "2", "3"].contains(&value) => {
+                return Err(invalid(name, value));
+            }
             // clingo's search presets; Lucent has one search setting, which answers the same.
             "configuration" => {
                 const PRESETS: [&str; 8] = [
@@ -169,7 +190,7 @@ fn read(args: &[&str], config: &mut ControlConfig) -> Result<(), ArgsError> {
                     return Err(invalid(name, value));
                 }
             }
-            _ => {} // `warn`: accepted, nothing to change.
+            _ => {} // `warn`, a valid `sign-def`: accepted, nothing to change.
         }
     }
     Ok(())
@@ -242,6 +263,16 @@ mod tests {
         let names: Vec<&str> = c.ground.consts.iter().map(|(n, _)| n.as_str()).collect();
         assert_eq!(names, ["k", "s", "f"]);
         config(&["-W", "none", "--warn=no-atom-undefined"]);
+        for (value, policy) in [
+            ("no", solve::RestartPolicy::Never),
+            ("L,64", solve::RestartPolicy::Luby(64)),
+            ("F,100", solve::RestartPolicy::Luby(100)),
+            ("D,100,0.7", solve::RestartPolicy::Glucose),
+        ] {
+            let arg = format!("--restarts={value}");
+            assert_eq!(config(&[&arg]).solve.restarts, policy, "{value}");
+        }
+        config(&["--sign-def=pos"]);
     }
 
     #[test]
@@ -266,6 +297,15 @@ mod tests {
                 "invalid value for option --heuristic: 'x'",
             ),
             (&["--project=x"], "invalid value for option --project: 'x'"),
+            (
+                &["--restarts=L"],
+                "invalid value for option --restarts: 'L'",
+            ),
+            (
+                &["--sign-def=up"],
+                "invalid value for option --sign-def: 'up'",
+            ),
+            (&["--supp-models"], "unknown option: --supp-models"),
         ] {
             let e = Control::from_args(args).err().expect("an error");
             assert_eq!(e.0, message, "{args:?}");
