@@ -537,7 +537,9 @@ impl Control {
                 atom,
                 symbol: Symbol::from_table(&self.syms, s),
                 fact: self.flags[i] & FACT != 0,
-                external: self.externals.contains_key(&atom),
+                // A released external (value `None` until the next solve call hands the
+                // release to the solver) is no longer external, as in clingo.
+                external: matches!(self.externals.get(&atom), Some(Some(_))),
             })
         })
     }

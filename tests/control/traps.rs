@@ -370,3 +370,26 @@ fn constants_are_listed_with_their_values() {
         assert_eq!(ctl.get_const(&name), Some(value));
     }
 }
+
+/// A released external is no longer external (clingo 5.8's `is_external`, recorded with
+/// `ctl.release_external(Function("e", [Number(2)]))` on `#external e(1..2). a :- e(1).`:
+/// `e(1)` external, `e(2)` not, before and after the next solve call).
+#[test]
+fn a_released_external_is_not_external() {
+    let mut ctl = Control::new(ControlConfig::default());
+    ctl.add("base", &[], "#external e(1..2). a :- e(1).")
+        .unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    let flags = |ctl: &Control| -> Vec<(String, bool)> {
+        ctl.symbolic_atoms_by_signature("e", 1, true)
+            .map(|a| (a.symbol.to_string(), a.external))
+            .collect()
+    };
+    let both = [("e(1)".to_string(), true), ("e(2)".to_string(), true)];
+    assert_eq!(flags(&ctl), both);
+    ctl.release_external(&sym("e(2)"));
+    let released = [("e(1)".to_string(), true), ("e(2)".to_string(), false)];
+    assert_eq!(flags(&ctl), released);
+    ctl.solve(&Default::default(), |_| true);
+    assert_eq!(flags(&ctl), released);
+}
