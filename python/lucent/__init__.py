@@ -737,10 +737,15 @@ class Control:
         return result
 
     def assign_external(self, external, truth):
-        if truth == TruthValue.Release:
-            self._c.release_external(external)
+        """clingo 5.8's: ``True`` or ``False`` fixes the external, ``None`` frees it. Any other
+        value counts by its truth, as in clingo 5.8: a ``TruthValue`` member is truthy, so
+        ``TruthValue.False_`` and ``TruthValue.Free`` fix the atom true there (scripts that
+        pass booleans and ``None`` get what they ask for under both)."""
+        if truth is None:
+            value = None
         else:
-            self._c.assign_external(external, _truth(truth))
+            value = bool(truth)
+        self._c.assign_external(external, value)
 
     def release_external(self, external):
         self._c.release_external(external)

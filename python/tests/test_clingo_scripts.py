@@ -700,3 +700,23 @@ def printed_symbols(clingo):
 
 def test_printed_symbols(both):
     both(printed_symbols)
+
+
+def externals_assigned_with_truth_values(clingo):
+    """assign_external with booleans, None and TruthValue members: clingo 5.8 reads the value
+    by its truth (None frees), so every TruthValue member fixes the atom true."""
+    out = []
+    for value in (True, False, None, clingo.TruthValue.True_, clingo.TruthValue.False_,
+                  clingo.TruthValue.Free, 1, 0):
+        ctl = clingo.Control(["0"])
+        ctl.add("base", [], "#external e. a :- e.")
+        ctl.ground([("base", [])])
+        ctl.assign_external(clingo.Function("e"), value)
+        models = []
+        ctl.solve(on_model=lambda m: models.append(m.symbols(atoms=True)))
+        out.append((str(value).replace("lucent", "clingo"), sorted_models(models)))
+    return out
+
+
+def test_externals_assigned_with_truth_values(both):
+    both(externals_assigned_with_truth_values)
