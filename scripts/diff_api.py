@@ -8,7 +8,9 @@ ours). Each session, from its seed:
   constraint under `q(t)`;
 - a random sequence of calls: ground the next step, assign an external true, false or free,
   release one, solve (every model, or with assumptions over `a/1` as symbols or as literals
-  from `symbolic_atoms`), read `is_external`/`is_fact` of the externals.
+  from `symbolic_atoms`; through a `yield_` handle or an `async_` one; under a model limit,
+  where only the number of models is compared), add a rule through the backend, read
+  `is_external`/`is_fact` of the externals.
 
 The trace records each call's result: the sorted models (all true atoms), `SolveResult` and
 `exhausted`, the external flags. Models are compared as sorted lists, since the two solvers find
@@ -72,8 +74,16 @@ def calls(rng):
         elif r < 0.6:
             which = ("e", rng.randint(1, 3)) if rng.random() < 0.6 or step == 0 else ("q", rng.randint(1, step))
             out.append(("release", which))
-        elif r < 0.7:
+        elif r < 0.65:
             out.append(("flags",))
+        elif r < 0.72:
+            # A rule added through the backend: x(n) :- [not] a(i).  or  :- x(n), [not] b(i).
+            out.append(("backend", len(out), rng.randint(1, 3), rng.random() < 0.5,
+                        rng.random() < 0.3))
+        elif r < 0.78:
+            out.append(("limit", rng.randint(1, 3)))
+        elif r < 0.86:
+            out.append(("handle", rng.random() < 0.5))
         else:
             k = rng.randint(0, 2)
             assumptions = [(rng.randint(1, 3), rng.random() < 0.5) for _ in range(k)]
@@ -114,6 +124,36 @@ def run(clingo, text, sequence):
                                for name in ("e", "q") for a in ctl.symbolic_atoms.by_signature(name, 1)
                                if str(a.symbol) not in released)
                 trace.append(("flags", flags))
+            elif c[0] == "backend":
+                _, n, i, positive, constraint = c
+                atom = ctl.symbolic_atoms[clingo.Function("a", [clingo.Number(i)])]
+                with ctl.backend() as b:
+                    x = b.add_atom(clingo.Function("x", [clingo.Number(n)]))
+                    body = [] if atom is None else [atom.literal if positive else -atom.literal]
+                    if constraint:
+                        b.add_rule([], [x] + [-l for l in body])
+                    b.add_rule([x], body, choice=constraint)
+                trace.append(("backend", n, atom is not None))
+            elif c[0] == "limit":
+                # The models found under a limit depend on the search: only their number.
+                count = []
+                ctl.configuration.solve.models = c[1]
+                result = ctl.solve(on_model=lambda m: count.append(1))
+                ctl.configuration.solve.models = 0
+                trace.append(("limit", c[1], str(result), len(count)))
+            elif c[0] == "handle":
+                models = []
+                if c[1]:
+                    with ctl.solve(yield_=True) as handle:
+                        for m in handle:
+                            models.append(sorted(str(s) for s in m.symbols(atoms=True)))
+                        result = handle.get()
+                else:
+                    with ctl.solve(async_=True, on_model=lambda m: models.append(
+                            sorted(str(s) for s in m.symbols(atoms=True)))) as handle:
+                        handle.wait()
+                        result = handle.get()
+                trace.append(("handle", c[1], str(result), result.exhausted, sorted(models)))
             else:
                 _, assumptions, as_literals = c
                 assume = []
