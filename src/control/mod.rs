@@ -430,6 +430,16 @@ impl Control {
             .unwrap_or_default()
     }
 
+    /// The solver's configuration as the next solve call reads it: once a call has built the
+    /// solver, its own (what [`Control::solve_config_mut`] changes), no longer
+    /// `config().solve`, which keeps the values the Control was made with.
+    pub fn solve_config(&self) -> &solve::Config {
+        match &self.solver {
+            Some(s) => s.config(),
+            None => &self.config.solve,
+        }
+    }
+
     /// The solver's configuration, to change between solve calls (e.g. the model count); a
     /// change takes effect at the next call.
     pub fn solve_config_mut(&mut self) -> &mut solve::Config {

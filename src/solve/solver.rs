@@ -309,6 +309,11 @@ impl Solver {
         &self.prog
     }
 
+    /// The solver's configuration, as the next call reads it.
+    pub fn config(&self) -> &Config {
+        &self.config
+    }
+
     /// The solver's configuration (mutable between calls, e.g. to change the model count).
     pub fn config_mut(&mut self) -> &mut Config {
         &mut self.config

@@ -393,3 +393,25 @@ fn a_released_external_is_not_external() {
     ctl.solve(&Default::default(), |_| true);
     assert_eq!(flags(&ctl), released);
 }
+
+/// Settings changed after the first solve call are read back as changed (`solve_config`),
+/// where `config().solve` keeps the values the Control was made with (derived by hand).
+#[test]
+fn settings_changed_after_a_solve_are_read_back() {
+    let mut ctl = Control::from_args(&["0", "--opt-mode=ignore"]).unwrap();
+    ctl.add("base", &[], "{a}. #minimize{1:a}.").unwrap();
+    ctl.ground(&[Part::base()]).unwrap();
+    ctl.solve(&Default::default(), |_| true);
+    ctl.solve_config_mut().opt_mode = lucent::solve::OptMode::OptN;
+    assert_eq!(ctl.solve_config().opt_mode, lucent::solve::OptMode::OptN);
+    let mut costs = Vec::new();
+    ctl.solve(&Default::default(), |m| {
+        costs.push(m.costs().to_vec());
+        true
+    });
+    assert_eq!(
+        costs.last(),
+        Some(&vec![0]),
+        "the optimum {{}} costs 0: {costs:?}"
+    );
+}
