@@ -9,8 +9,9 @@ ours). Each session, from its seed:
 - a random sequence of calls: ground the next step, assign an external true, false or free,
   release one, solve (every model, or with assumptions over `a/1` as symbols or as literals
   from `symbolic_atoms`; through a `yield_` handle or an `async_` one; under a model limit,
-  where only the number of models is compared), add a rule through the backend, read
-  `is_external`/`is_fact` of the externals.
+  where only the number of models is compared; the optimal models under `--opt-mode=optN`,
+  optimization being ignored otherwise), add a rule through the backend, register a
+  propagator forbidding a pattern, read `is_external`/`is_fact` of the externals.
 
 The trace records each call's result: the sorted models (all true atoms), `SolveResult` and
 `exhausted`, the external flags. Models are compared as sorted lists, since the two solvers find
@@ -55,6 +56,8 @@ def program(rng):
         body = ["d(1..3).", "#external e(X) : d(X), X > 1.", "#external e(1). [true]"]
     else:
         body = ["d(1..3).", "#external e(X) : d(X)."]
+    if rng.random() < 0.5:
+        body.append("#minimize { X,a : a(X); 1,b,X : b(X) }.")
     for r in rules:
         body.append(r.format(neg_e=rng.choice(["", ", not e(X)"]), k=rng.randint(1, 3)))
     return "\n".join(body + STEP)
@@ -82,8 +85,12 @@ def calls(rng):
                         rng.random() < 0.3))
         elif r < 0.78:
             out.append(("limit", rng.randint(1, 3)))
-        elif r < 0.86:
+        elif r < 0.83:
             out.append(("handle", rng.random() < 0.5))
+        elif r < 0.88:
+            out.append(("optimum",))
+        elif r < 0.9 and not any(c[0] == "propagator" for c in out):
+            out.append(("propagator", rng.randint(1, 3)))
         else:
             k = rng.randint(0, 2)
             assumptions = [(rng.randint(1, 3), rng.random() < 0.5) for _ in range(k)]
@@ -92,9 +99,33 @@ def calls(rng):
     return out
 
 
+class Forbid:
+    """A propagator that forbids s(t, k) together with a(k): it watches the s/2 atoms with
+    second argument k and, when one becomes true, adds the nogood with a(k)."""
+
+    def __init__(self, clingo, k):
+        self.clingo, self.k = clingo, k
+
+    def init(self, init):
+        self.a = None
+        atom = init.symbolic_atoms[self.clingo.Function("a", [self.clingo.Number(self.k)])]
+        if atom is not None:
+            self.a = init.solver_literal(atom.literal)
+        for atom in init.symbolic_atoms.by_signature("s", 2):
+            if atom.symbol.arguments[1].number == self.k and self.a is not None:
+                init.add_watch(init.solver_literal(atom.literal))
+
+    def propagate(self, control, changes):
+        for lit in changes:
+            if not control.add_nogood([lit, self.a]) or not control.propagate():
+                return
+
+
 def run(clingo, text, sequence):
     """The trace of one session under `clingo` (either module)."""
-    ctl = clingo.Control(["0"])
+    # Optimization statements are ignored except in the `optimum` call (the improving models
+    # before an optimum depend on the search).
+    ctl = clingo.Control(["0", "--opt-mode=ignore"])
     ctl.add("base", [], text)
     ctl.ground([("base", [])])
     trace = []
@@ -141,6 +172,20 @@ def run(clingo, text, sequence):
                 result = ctl.solve(on_model=lambda m: count.append(1))
                 ctl.configuration.solve.models = 0
                 trace.append(("limit", c[1], str(result), len(count)))
+            elif c[0] == "optimum":
+                ctl.configuration.solve.opt_mode = "optN"
+                optimal = []
+
+                def keep_optimal(m):
+                    if m.optimality_proven:
+                        optimal.append((list(m.cost), sorted(str(s) for s in m.symbols(atoms=True))))
+
+                result = ctl.solve(on_model=keep_optimal)
+                ctl.configuration.solve.opt_mode = "ignore"
+                trace.append(("optimum", str(result), sorted(optimal)))
+            elif c[0] == "propagator":
+                ctl.register_propagator(Forbid(clingo, c[1]))
+                trace.append(("propagator", c[1]))
             elif c[0] == "handle":
                 models = []
                 if c[1]:

@@ -141,7 +141,7 @@ impl Control {
     /// The `--enum-mode` in effect (`configuration.solve.enum_mode`).
     #[getter]
     fn enum_mode(&self) -> &'static str {
-        match self.ctl.config().solve.enum_mode {
+        match self.ctl.solve_config().enum_mode {
             EnumMode::Auto => "auto",
             EnumMode::Brave => "brave",
             EnumMode::Cautious => "cautious",
@@ -151,7 +151,7 @@ impl Control {
     /// The `--opt-mode` in effect, as clasp names it (`configuration.solve.opt_mode`).
     #[getter]
     fn opt_mode(&self) -> String {
-        match &self.ctl.config().solve.opt_mode {
+        match &self.ctl.solve_config().opt_mode {
             OptMode::Opt => "opt".into(),
             OptMode::OptN => "optN".into(),
             OptMode::Ignore => "ignore".into(),
@@ -485,7 +485,7 @@ impl Control {
         )?;
         summary.set_item(
             "concurrency",
-            self.ctl.config().solve.threads.max(1) as f64,
+            self.ctl.solve_config().threads.max(1) as f64,
         )?;
         summary.set_item("signal", 0.0)?;
         summary.set_item("winner", 0.0)?;
@@ -617,7 +617,7 @@ impl Control {
             Some(n) => n,
             // clingo's default: every model of an optimization or of consequences, else one.
             None if self.ctl.has_minimize()
-                || self.ctl.config().solve.enum_mode != EnumMode::Auto =>
+                || self.ctl.solve_config().enum_mode != EnumMode::Auto =>
             {
                 0
             }
@@ -698,7 +698,7 @@ impl Control {
 
     /// What the solve calls ask for, as their models report it.
     fn call_kind(&self) -> CallKind {
-        let config = &self.ctl.config().solve;
+        let config = self.ctl.solve_config();
         CallKind {
             mode: config.enum_mode,
             ignore_costs: matches!(config.opt_mode, OptMode::Ignore),

@@ -720,3 +720,27 @@ def externals_assigned_with_truth_values(clingo):
 
 def test_externals_assigned_with_truth_values(both):
     both(externals_assigned_with_truth_values)
+
+
+def opt_mode_changed_between_calls(clingo):
+    """configuration.solve.opt_mode set after a solve call: read back as set, and the next
+    call's models carry their costs (Lucent read the mode it was made with and dropped them)."""
+    ctl = clingo.Control(["0", "--opt-mode=ignore"])
+    ctl.add("base", [], "{a; b}. :- not a, not b. #minimize{2:a; 1:b}.")
+    ctl.ground([("base", [])])
+    out = [len([1 for _ in ctl.solve(yield_=True)])]
+    ctl.configuration.solve.opt_mode = "optN"
+    out.append(ctl.configuration.solve.opt_mode)
+    optimal = []
+
+    def keep(m):
+        if m.optimality_proven:
+            optimal.append((list(m.cost), sorted(str(s) for s in m.symbols(atoms=True))))
+
+    ctl.solve(on_model=keep)
+    out.append(sorted(optimal))
+    return out
+
+
+def test_opt_mode_changed_between_calls(both):
+    both(opt_mode_changed_between_calls)
