@@ -11,7 +11,8 @@ ours). Each session, from its seed:
   from `symbolic_atoms`; through a `yield_` handle or an `async_` one; under a model limit,
   where only the number of models is compared; the optimal models under `--opt-mode=optN`,
   optimization being ignored otherwise), add a rule through the backend, register a
-  propagator forbidding a pattern, read `is_external`/`is_fact` of the externals.
+  propagator forbidding a pattern, add and ground a part with a context function, read
+  `is_external`/`is_fact` of the externals.
 
 The trace records each call's result: the sorted models (all true atoms), `SolveResult` and
 `exhausted`, the external flags. Models are compared as sorted lists, since the two solvers find
@@ -91,12 +92,24 @@ def calls(rng):
             out.append(("optimum",))
         elif r < 0.9 and not any(c[0] == "propagator" for c in out):
             out.append(("propagator", rng.randint(1, 3)))
+        elif r < 0.93 and not any(c[0] == "extra" for c in out):
+            out.append(("extra", rng.randint(1, 3)))
         else:
             k = rng.randint(0, 2)
             assumptions = [(rng.randint(1, 3), rng.random() < 0.5) for _ in range(k)]
             out.append(("solve", assumptions, rng.random() < 0.3))
     out.append(("solve", [], False))
     return out
+
+
+class Inc:
+    """The grounding context of the `extra` part: `@inc(n)` is n + 1."""
+
+    def __init__(self, clingo):
+        self.clingo = clingo
+
+    def inc(self, n):
+        return self.clingo.Number(n.number + 1)
 
 
 class Forbid:
@@ -183,6 +196,11 @@ def run(clingo, text, sequence):
                 result = ctl.solve(on_model=keep_optimal)
                 ctl.configuration.solve.opt_mode = "ignore"
                 trace.append(("optimum", str(result), sorted(optimal)))
+            elif c[0] == "extra":
+                # A part added mid-session, grounded with a context function.
+                ctl.add("extra", ["n"], "z(n,T) :- s(T,n). w(@inc(n)) :- z(n,_). :- w(3), e(3).")
+                ctl.ground([("extra", [clingo.Number(c[1])])], context=Inc(clingo))
+                trace.append(("extra", c[1]))
             elif c[0] == "propagator":
                 ctl.register_propagator(Forbid(clingo, c[1]))
                 trace.append(("propagator", c[1]))
