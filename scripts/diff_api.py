@@ -11,8 +11,9 @@ ours). Each session, from its seed:
   from `symbolic_atoms`; through a `yield_` handle or an `async_` one; under a model limit,
   where only the number of models is compared; the optimal models under `--opt-mode=optN`,
   optimization being ignored otherwise), add a rule through the backend, register a
-  propagator forbidding a pattern, add and ground a part with a context function, read
-  `is_external`/`is_fact` of the externals.
+  propagator forbidding a pattern, add and ground a part with a context function, compute
+  brave or cautious consequences (the last model compared), read `is_external`/`is_fact` of
+  the externals.
 
 The trace records each call's result: the sorted models (all true atoms), `SolveResult` and
 `exhausted`, the external flags. Models are compared as sorted lists, since the two solvers find
@@ -94,6 +95,8 @@ def calls(rng):
             out.append(("propagator", rng.randint(1, 3)))
         elif r < 0.93 and not any(c[0] == "extra" for c in out):
             out.append(("extra", rng.randint(1, 3)))
+        elif r < 0.96:
+            out.append(("consequences", rng.choice(["brave", "cautious"])))
         else:
             k = rng.randint(0, 2)
             assumptions = [(rng.randint(1, 3), rng.random() < 0.5) for _ in range(k)]
@@ -196,6 +199,15 @@ def run(clingo, text, sequence):
                 result = ctl.solve(on_model=keep_optimal)
                 ctl.configuration.solve.opt_mode = "ignore"
                 trace.append(("optimum", str(result), sorted(optimal)))
+            elif c[0] == "consequences":
+                # The last model is the consequences (the approximations before it follow the
+                # search).
+                ctl.configuration.solve.enum_mode = c[1]
+                last = []
+                result = ctl.solve(on_model=lambda m: last.__setitem__(
+                    slice(None), [str(m.type), sorted(str(s) for s in m.symbols(shown=True))]))
+                ctl.configuration.solve.enum_mode = "auto"
+                trace.append(("consequences", c[1], str(result), last))
             elif c[0] == "extra":
                 # A part added mid-session, grounded with a context function.
                 ctl.add("extra", ["n"], "z(n,T) :- s(T,n). w(@inc(n)) :- z(n,_). :- w(3), e(3).")
