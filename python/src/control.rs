@@ -483,10 +483,7 @@ impl Control {
                 .map(|&c| if optimal > 0 { c as f64 } else { 0.0 })
                 .collect::<Vec<_>>(),
         )?;
-        summary.set_item(
-            "concurrency",
-            self.ctl.solve_config().threads.max(1) as f64,
-        )?;
+        summary.set_item("concurrency", self.ctl.solve_config().threads.max(1) as f64)?;
         summary.set_item("signal", 0.0)?;
         summary.set_item("winner", 0.0)?;
         out.set_item("summary", summary)?;
@@ -500,16 +497,12 @@ impl Control {
     /// `Backend.add_atom(symbol=None)`.
     #[pyo3(signature = (symbol = None))]
     fn backend_add_atom(&mut self, symbol: Option<Symbol>) -> PyResult<u32> {
-        self.idle()?;
-        let mut b = self.ctl.backend().map_err(error)?;
-        Ok(b.add_atom(symbol.as_ref().map(|s| &s.0)))
+        self.with_backend(|b| Ok(b.add_atom(symbol.as_ref().map(|s| &s.0))))
     }
 
     /// `Backend.add_rule(head, body, choice)`.
     fn backend_add_rule(&mut self, head: Vec<u32>, body: Vec<i32>, choice: bool) -> PyResult<()> {
-        self.idle()?;
-        let mut b = self.ctl.backend().map_err(error)?;
-        b.add_rule(&head, &body, choice).map_err(error)
+        self.with_backend(|b| b.add_rule(&head, &body, choice))
     }
 
     /// `Backend.add_weight_rule(head, lower, body, choice)`.
@@ -520,44 +513,33 @@ impl Control {
         body: Vec<(i32, i64)>,
         choice: bool,
     ) -> PyResult<()> {
-        self.idle()?;
-        let mut b = self.ctl.backend().map_err(error)?;
-        b.add_weight_rule(&head, lower, &body, choice)
-            .map_err(error)
+        self.with_backend(|b| b.add_weight_rule(&head, lower, &body, choice))
     }
 
     /// `Backend.add_minimize(priority, literals)`.
     fn backend_add_minimize(&mut self, priority: i64, literals: Vec<(i32, i64)>) -> PyResult<()> {
-        self.idle()?;
-        let mut b = self.ctl.backend().map_err(error)?;
-        b.add_minimize(priority, &literals).map_err(error)
+        self.with_backend(|b| b.add_minimize(priority, &literals))
     }
 
     /// `Backend.add_external(atom, value)`: `value` true, false or `None` (free).
     #[pyo3(signature = (atom, value))]
     fn backend_add_external(&mut self, atom: u32, value: Option<bool>) -> PyResult<()> {
-        self.idle()?;
         let value = match value {
             None => TruthValue::Free,
             Some(true) => TruthValue::True,
             Some(false) => TruthValue::False,
         };
-        let mut b = self.ctl.backend().map_err(error)?;
-        b.add_external(atom, value).map_err(error)
+        self.with_backend(|b| b.add_external(atom, value))
     }
 
     /// `Backend.add_assume(literals)`.
     fn backend_add_assume(&mut self, literals: Vec<i32>) -> PyResult<()> {
-        self.idle()?;
-        let mut b = self.ctl.backend().map_err(error)?;
-        b.add_assume(&literals).map_err(error)
+        self.with_backend(|b| b.add_assume(&literals))
     }
 
     /// `Backend.add_project(atoms)`.
     fn backend_add_project(&mut self, atoms: Vec<u32>) -> PyResult<()> {
-        self.idle()?;
-        let mut b = self.ctl.backend().map_err(error)?;
-        b.add_project(&atoms).map_err(error)
+        self.with_backend(|b| b.add_project(&atoms))
     }
 
     /// `Backend.add_heuristic(atom, type, bias, priority, condition)`; `kind` is the value of
@@ -580,21 +562,27 @@ impl Control {
             5 => M::False,
             _ => return Err(error(format!("invalid heuristic type: {kind}"))),
         };
-        self.idle()?;
-        let mut b = self.ctl.backend().map_err(error)?;
-        b.add_heuristic(atom, modifier, bias, priority, &condition)
-            .map_err(error)
+        self.with_backend(|b| b.add_heuristic(atom, modifier, bias, priority, &condition))
     }
 
     /// `Backend.add_acyc_edge(node_u, node_v, condition)`.
     fn backend_add_acyc_edge(&mut self, from: i32, to: i32, condition: Vec<i32>) -> PyResult<()> {
-        self.idle()?;
-        let mut b = self.ctl.backend().map_err(error)?;
-        b.add_acyc_edge(from, to, &condition).map_err(error)
+        self.with_backend(|b| b.add_acyc_edge(from, to, &condition))
     }
 }
 
 impl Control {
+    /// `f` over the Control's backend (clingo's `Control.backend()`), refused while a solve
+    /// handle's search has the solver; a rejected statement is a `RuntimeError`.
+    fn with_backend<R>(
+        &mut self,
+        f: impl FnOnce(&mut lucent::control::Backend<'_>) -> Result<R, String>,
+    ) -> PyResult<R> {
+        self.idle()?;
+        let mut b = self.ctl.backend().map_err(error)?;
+        f(&mut b).map_err(error)
+    }
+
     /// Refuses a call while a solve handle's search has the solver.
     fn idle(&self) -> PyResult<()> {
         if self.ctl.is_searching() {
@@ -709,10 +697,9 @@ impl Control {
     pub fn read_model(&self, raw: &lucent::solve::Model, names: &AtomNames) -> Model {
         let priorities = Arc::new(self.ctl.minimize_priorities());
         let context = Python::with_gil(|py| self.context.as_ref().map(|c| c.clone_ref(py)));
-        self.ctl
-            .read_model(raw, |m| {
-                Model::new(m, names.clone(), priorities, context, self.call_kind())
-            })
+        self.ctl.read_model(raw, |m| {
+            Model::new(m, names.clone(), priorities, context, self.call_kind())
+        })
     }
 
     /// The end of a handle's search: the solver back, the call recorded for the statistics.
