@@ -16,9 +16,7 @@
 //!   frame that lent it does not touch it until the callback returns; the engine never calls
 //!   the hook again while one of its calls runs, so nothing here re-enters Python.
 
-use lucent::control::{
-    Assignment, Literal, PropagateControl, PropagateInit, WeightConstraintType,
-};
+use lucent::control::{Assignment, Literal, PropagateControl, PropagateInit, WeightConstraintType};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use std::sync::Mutex;

@@ -208,7 +208,9 @@ impl Model {
             EnumMode::Brave => "BraveConsequences",
             EnumMode::Cautious => "CautiousConsequences",
         };
-        py.import_bound("lucent")?.getattr("ModelType")?.getattr(name)
+        py.import_bound("lucent")?
+            .getattr("ModelType")?
+            .getattr(name)
     }
 
     /// Adds symbols to the model's output (clingo prints them after the model when an
@@ -277,7 +279,10 @@ impl Model {
 fn symbol_sequence(py: Python<'_>, symbols: Vec<Symbol>) -> PyResult<PyObject> {
     static CLASS: pyo3::sync::GILOnceCell<PyObject> = pyo3::sync::GILOnceCell::new();
     let class = CLASS.get_or_try_init(py, || -> PyResult<PyObject> {
-        Ok(py.import_bound("lucent")?.getattr("_SymbolSequence")?.unbind())
+        Ok(py
+            .import_bound("lucent")?
+            .getattr("_SymbolSequence")?
+            .unbind())
     })?;
     class.call1(py, (symbols,))
 }
