@@ -40,6 +40,8 @@ fi
 
 echo "== cargo fmt --check"
 cargo fmt --all -- --check
+# The Python package's native crate is its own workspace, out of the root's reach.
+(cd python && cargo fmt --all -- --check)
 echo "== cargo clippy"
 cargo clippy --all-targets -- -D warnings
 echo "== cargo test"
