@@ -145,7 +145,6 @@ def run(clingo, text, sequence):
     ctl.add("base", [], text)
     ctl.ground([("base", [])])
     trace = []
-    released = set()
 
     def sym(which):
         name, i = which
@@ -162,14 +161,10 @@ def run(clingo, text, sequence):
                 trace.append(("assign", c[1], c[2]))
             elif c[0] == "release":
                 ctl.release_external(sym(c[1]))
-                released.add(str(sym(c[1])))
                 trace.append(("release", c[1]))
             elif c[0] == "flags":
-                # Released atoms are left out: clingo drops them from the symbolic atoms at the
-                # first call after the solve call that released them (a kept difference).
                 flags = sorted((str(a.symbol), a.is_external, a.is_fact)
-                               for name in ("e", "q") for a in ctl.symbolic_atoms.by_signature(name, 1)
-                               if str(a.symbol) not in released)
+                               for name in ("e", "q") for a in ctl.symbolic_atoms.by_signature(name, 1))
                 trace.append(("flags", flags))
             elif c[0] == "backend":
                 _, n, i, positive, constraint = c

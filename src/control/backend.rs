@@ -44,6 +44,7 @@ impl Control {
     /// Control that has not grounded yet grounds nothing first (the empty program), so that the
     /// atoms added here keep their numbers when parts are grounded later.
     pub fn backend(&mut self) -> Result<Backend<'_>, Error> {
+        self.begin_update();
         if self.groundings == 0 {
             self.ground_blocks(&[], &[], None)?;
         }

@@ -289,6 +289,10 @@ struct Block {
 const FACT: u8 = 1;
 /// The atom heads a rule (it is no longer only an external or a body atom).
 const DEFINED: u8 = 2;
+/// A released external no longer listed among the symbolic atoms: clingo drops it at the first
+/// update (grounding, external assignment or release, backend) after the solve call that
+/// handed the release to the solver.
+const DROPPED: u8 = 4;
 
 /// The front door: see the module documentation.
 pub struct Control {
@@ -325,6 +329,9 @@ pub struct Control {
     new_externals: Vec<AtomId>,
     /// Released externals (false for good).
     released: HashSet<AtomId>,
+    /// Externals whose release the last solve calls handed to the solver, to drop from the
+    /// symbolic atoms at the next update ([`Control::begin_update`]).
+    fresh_releases: Vec<AtomId>,
     solver: Option<Solver>,
     /// The last grounding's tables, for `--text` output (`take_grounding`).
     last: Option<Grounding>,
@@ -402,6 +409,7 @@ impl Control {
             pending: GroundProgram::new(),
             new_externals: Vec::new(),
             released: HashSet::new(),
+            fresh_releases: Vec::new(),
             solver: None,
             last: None,
             stmts: Vec::new(),
@@ -506,6 +514,7 @@ impl Control {
     /// Sets the value of an external atom (clingo's `assign_external`). Atoms that are not
     /// external are left alone, as clingo does.
     pub fn assign_external(&mut self, atom: &Symbol, value: TruthValue) {
+        self.begin_update();
         if let Some(a) = self.lookup(atom) {
             // (A released atom left the map: it stays false.)
             if let Some(v) = self.externals.get_mut(&a) {
@@ -519,10 +528,19 @@ impl Control {
     /// Releases an external atom: it is false from now on and no longer external (clingo's
     /// `release_external`).
     pub fn release_external(&mut self, atom: &Symbol) {
+        self.begin_update();
         if let Some(a) = self.lookup(atom) {
             if let Some(v) = self.externals.get_mut(&a) {
                 *v = None;
             }
+        }
+    }
+
+    /// What every call that changes the program or its externals does first: the externals
+    /// released by earlier solve calls leave the symbolic atoms, as in clingo.
+    pub(super) fn begin_update(&mut self) {
+        for a in std::mem::take(&mut self.fresh_releases) {
+            self.flags[a as usize - 1] |= DROPPED;
         }
     }
 
@@ -542,6 +560,9 @@ impl Control {
     pub fn symbolic_atoms(&self) -> impl Iterator<Item = SymbolicAtom> + '_ {
         self.atom_sym.iter().enumerate().filter_map(|(i, s)| {
             let s = (*s)?;
+            if self.flags[i] & DROPPED != 0 {
+                return None;
+            }
             let atom = i as AtomId + 1;
             Some(SymbolicAtom {
                 atom,
@@ -712,6 +733,7 @@ impl Control {
             let _ = solver.release_external(a);
             self.externals.remove(&a);
             self.released.insert(a);
+            self.fresh_releases.push(a);
         }
     }
 

@@ -350,6 +350,7 @@ impl Control {
         parts: &[Part],
         mut context: Option<&mut (dyn Context + '_)>,
     ) -> Result<(), Error> {
+        self.begin_update();
         let mut plain: Vec<usize> = Vec::new();
         let mut groups: Vec<(Binding, Vec<usize>)> = Vec::new();
         let mut requested: Vec<Part> = Vec::new();
