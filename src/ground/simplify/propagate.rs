@@ -222,30 +222,27 @@ pub(super) fn propagate(
         }
     }
     loop {
-        if let Some(a) = p.work.pop() {
-            // False: rules with `a` lose that literal; `not a` holds.
-            let i = scope.index(a.get() as usize);
-            for &(ri, w) in pos_occ.of(i) {
-                p.lose(ri as usize, w, true, a);
-            }
-            for &(ri, w) in neg_occ.of(i) {
-                if w == 0 {
-                    p.literal_holds(ri as usize);
-                }
-            }
+        // A false atom: rules with `a` lose that literal and `not a` holds; a fact: the reverse.
+        let (a, fact) = if let Some(a) = p.work.pop() {
+            (a, false)
         } else if let Some(a) = p.facts.pop() {
-            // A fact: rules with `not a` lose that literal; `a` holds.
-            let i = scope.index(a.get() as usize);
-            for &(ri, w) in neg_occ.of(i) {
-                p.lose(ri as usize, w, false, a);
-            }
-            for &(ri, w) in pos_occ.of(i) {
-                if w == 0 {
-                    p.literal_holds(ri as usize);
-                }
-            }
+            (a, true)
         } else {
             break;
+        };
+        let i = scope.index(a.get() as usize);
+        let (lost, held) = if fact {
+            (&neg_occ, &pos_occ)
+        } else {
+            (&pos_occ, &neg_occ)
+        };
+        for &(ri, w) in lost.of(i) {
+            p.lose(ri as usize, w, !fact, a);
+        }
+        for &(ri, w) in held.of(i) {
+            if w == 0 {
+                p.literal_holds(ri as usize);
+            }
         }
     }
     (p.dead, killed_contradictory)
