@@ -324,6 +324,15 @@ fn undo_keeps_a_counting_propagator_consistent() {
     }
 }
 
+/// The solver literal of the atom `q`.
+fn q_literal(init: &PropagateInit<'_>) -> Literal {
+    init.symbolic_atoms()
+        .iter()
+        .find(|a| a.symbol.is("q", 0))
+        .map(|a| init.solver_literal(a.atom))
+        .expect("the program has the atom q")
+}
+
 /// Ties `q` to `p(1) + p(2) + p(3) >= 2` in `init` (clingo's `add_weight_constraint`).
 struct WeightTie {
     kind: WeightConstraintType,
@@ -333,12 +342,7 @@ struct WeightTie {
 impl Propagator for WeightTie {
     fn init(&mut self, init: &mut PropagateInit<'_>) {
         let ps: Vec<(Literal, i32)> = p_literals(init).into_iter().map(|(_, l)| (l, 1)).collect();
-        let q = init
-            .symbolic_atoms()
-            .iter()
-            .find(|a| a.symbol.is("q", 0))
-            .map(|a| init.solver_literal(a.atom))
-            .unwrap();
+        let q = q_literal(init);
         assert!(init.add_weight_constraint(q, &ps, 2, self.kind, self.equal));
     }
 }
@@ -376,12 +380,7 @@ fn init_propagates_and_removes_watches() {
     impl Propagator for Fix {
         fn init(&mut self, init: &mut PropagateInit<'_>) {
             let ps = p_literals(init);
-            let q = init
-                .symbolic_atoms()
-                .iter()
-                .find(|a| a.symbol.is("q", 0))
-                .map(|a| init.solver_literal(a.atom))
-                .unwrap();
+            let q = q_literal(init);
             let p1 = ps.iter().find(|(i, _)| *i == 1).unwrap().1;
             assert!(init.add_clause(&[p1]) && init.add_clause(&[-p1, q]));
             assert!(init.propagate());
