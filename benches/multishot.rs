@@ -70,10 +70,7 @@ fn queens(n: u32) -> GroundProgram {
         }
     }
     for a in 1..=n * n {
-        p.outputs.push(Output {
-            symbol: format!("q{a}"),
-            condition: vec![a as i32],
-        });
+        p.outputs.push(Output::new(format!("q{a}"), vec![a as i32]));
     }
     p
 }

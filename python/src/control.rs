@@ -617,10 +617,14 @@ impl Control {
         // The last call's context shares the table: dropped first, so that the table is
         // extended in place rather than copied whole (models kept by the caller still copy).
         self.context = None;
-        let known = self.names.len() as u32;
+        let known = self.names.symbols.len() as u32;
         if known < self.ctl.num_atoms() {
             let names = Arc::make_mut(&mut self.names);
-            names.extend((known + 1..=self.ctl.num_atoms()).map(|a| self.ctl.symbol(a)));
+            let added = known + 1..=self.ctl.num_atoms();
+            names
+                .symbols
+                .extend(added.clone().map(|a| self.ctl.symbol(a)));
+            names.keys.extend(added.map(|a| self.ctl.atom_order(a)));
         }
         let context = SolveControl::new(
             self.names.clone(),

@@ -17,8 +17,17 @@ use pyo3::prelude::*;
 use crate::solve_control::SolveControl;
 use crate::symbol::{to_symbol, Symbol};
 
-/// The symbol of each atom (`[a - 1]`), `None` for auxiliary atoms.
-pub type AtomNames = Arc<Vec<Option<lucent::Symbol>>>;
+/// The Control's atoms as models read them (both `[a - 1]`): each one's symbol (`None` for
+/// auxiliary atoms) and its place in a model's list of atoms (`Control::atom_order`: clingo's
+/// order, by predicate domain, then by atom).
+#[derive(Clone, Default)]
+pub struct AtomTable {
+    pub symbols: Vec<Option<lucent::Symbol>>,
+    pub keys: Vec<u64>,
+}
+
+/// The Control's atom table, shared by its models.
+pub type AtomNames = Arc<AtomTable>;
 
 /// An answer set (clingo's `Model`).
 #[pyclass(frozen, module = "lucent")]
@@ -34,6 +43,8 @@ pub struct Model {
     shown: OnceLock<Vec<lucent::Symbol>>,
     /// Sorted, for `contains`.
     atoms: OnceLock<Vec<lucent::Symbol>>,
+    /// In clingo's order (`AtomTable::keys`), for `symbols(atoms=True)`.
+    atoms_listed: OnceLock<Vec<lucent::Symbol>>,
     /// The priority of each cost level, highest first (clingo's `Model.priority`).
     priorities: Arc<Vec<i64>>,
     /// Symbols added by `extend` (printed after the model by `lucent.application`).
@@ -81,6 +92,7 @@ impl Model {
             shown_text: m.shown_text().to_vec(),
             shown: OnceLock::new(),
             atoms: OnceLock::new(),
+            atoms_listed: OnceLock::new(),
             priorities,
             extended: Mutex::new(Vec::new()),
         }
@@ -97,13 +109,27 @@ impl Model {
 
     fn atoms(&self) -> &[lucent::Symbol] {
         self.atoms.get_or_init(|| {
-            let mut atoms: Vec<lucent::Symbol> = self
-                .atom_ids
-                .iter()
-                .filter_map(|&a| self.names.get(a as usize - 1).cloned().flatten())
-                .collect();
+            let mut atoms = self.atoms_listed().to_vec();
             atoms.sort();
             atoms
+        })
+    }
+
+    /// The true atoms with a symbol as clingo lists them (by `AtomTable::keys`).
+    fn atoms_listed(&self) -> &[lucent::Symbol] {
+        self.atoms_listed.get_or_init(|| {
+            let table = &self.names;
+            let mut ids: Vec<u32> = self
+                .atom_ids
+                .iter()
+                .copied()
+                .filter(|&a| matches!(table.symbols.get(a as usize - 1), Some(Some(_))))
+                .collect();
+            // Stable: equal keys (atoms from the backend) stay in atom order.
+            ids.sort_by_key(|&a| table.keys.get(a as usize - 1).copied().unwrap_or(u64::MAX));
+            ids.iter()
+                .filter_map(|&a| table.symbols[a as usize - 1].clone())
+                .collect()
         })
     }
 }
@@ -133,7 +159,7 @@ impl Model {
         // quadratic: 1.6 s for a model of 20,000 shown atoms).
         let mut out: Vec<lucent::Symbol> = Vec::new();
         if atoms {
-            out.extend(self.atoms().iter().cloned());
+            out.extend(self.atoms_listed().iter().cloned());
         }
         if shown || terms {
             let skip_atoms = atoms || !shown;

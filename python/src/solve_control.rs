@@ -56,7 +56,7 @@ impl SolveControl {
         self.by_symbol
             .get_or_init(|| {
                 let mut map = HashMap::new();
-                for (i, s) in self.names.iter().enumerate() {
+                for (i, s) in self.names.symbols.iter().enumerate() {
                     if let Some(s) = s {
                         map.insert(s.clone(), i as u32 + 1);
                     }
@@ -70,7 +70,7 @@ impl SolveControl {
     /// A clause of clingo's literals (`(Symbol, bool)` pairs or program literals), each
     /// negated with `negate`; `None` when a literal is true for sure (a negated unknown atom).
     fn clause(&self, literals: &[Bound<'_, PyAny>], negate: bool) -> PyResult<Option<Vec<i32>>> {
-        let n = self.names.len();
+        let n = self.names.symbols.len();
         let mut out = Vec::with_capacity(literals.len());
         for l in literals {
             let lit = if let Ok(t) = l.downcast::<PyTuple>() {
@@ -152,6 +152,7 @@ impl SolveControl {
     #[pyo3(name = "_atoms")]
     fn atoms(&self) -> Vec<(Symbol, u32, bool, bool)> {
         self.names
+            .symbols
             .iter()
             .enumerate()
             .filter_map(|(i, s)| {

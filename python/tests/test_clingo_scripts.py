@@ -744,3 +744,58 @@ def opt_mode_changed_between_calls(clingo):
 
 def test_opt_mode_changed_between_calls(both):
     both(opt_mode_changed_between_calls)
+
+
+# Programs whose models a script prints as they come: clingo lists a model's atoms by
+# predicate, in the order gringo met the predicates (rule bodies last to first, then heads,
+# facts last), then in the order the atoms were made. Known differences, left out: where
+# Lucent's grounder makes a predicate's atoms in another order than gringo's
+# (`1 { color(X,C) : col(C) } 1 :- node(X).` makes them colour by colour in gringo, node by
+# node in Lucent), and facts over terms that are not values (`o(-1).` after `o(a).` in gringo's
+# list, in program order in Lucent's).
+ORDER_PROGRAMS = [
+    "b(3). a(1). b(1). c(X) :- a(X). d(X) :- b(X), not c(X). a(2) :- b(3).",
+    "p(1). q(1). z(1). h(X) :- q(X), p(X), not g(X). k :- h(1). w(X) :- z(X).",
+    "item(1..3). { pick(X) : item(X) } 2. :- pick(1), pick(3). ok :- pick(2).",
+    "h :- a; b : c; e. a :- z. b :- z. c :- z. e :- z. z.",
+    "s(1..2). t(X) :- s(X), #count { Y : s(Y) } = 2. u :- t(2). -v(1) :- u.",
+    "p(3). o(b). o(a). q(X) :- o(X), p(3). #show q/1. #show o/1. #show t(X) : p(X). #show \"k\".",
+    "#external e. {m(1..2)} :- e. y(X) :- m(X). :- not m(1). :- m(2). r :- y(1).",
+]
+
+
+def model_symbol_order(clingo):
+    """Each model printed as a script prints it (`str(model)`, `symbols(atoms=True)`,
+    `symbols(shown=True)`), the models sorted (their enumeration order is the solver's)."""
+    out = []
+    for text in ORDER_PROGRAMS:
+        ctl = clingo.Control(["0", "--warn=none"])
+        ctl.add("base", [], text)
+        ctl.ground([("base", [])])
+        ctl.assign_external(clingo.Function("e"), True)
+        models = []
+        ctl.solve(on_model=lambda m: models.append(
+            (str(m), str(m.symbols(atoms=True)), str(m.symbols(shown=True)))))
+        out.append(sorted(models))
+    return out
+
+
+def test_model_symbol_order(both):
+    both(model_symbol_order)
+
+
+def model_symbol_order_multishot(clingo):
+    """Across groundings: a later step's atoms join their predicates' places."""
+    ctl = clingo.Control(["--warn=none"])
+    ctl.add("base", [], "a(0). b(0) :- a(0).")
+    ctl.add("step", ["t"], "a(t). c(t) :- a(t). b(t) :- c(t).")
+    out = []
+    for t in range(3):
+        parts = [("base", [])] if t == 0 else [("step", [clingo.Number(t)])]
+        ctl.ground(parts)
+        ctl.solve(on_model=lambda m: out.append((str(m), str(m.symbols(atoms=True)))))
+    return out
+
+
+def test_model_symbol_order_multishot(both):
+    both(model_symbol_order_multishot)

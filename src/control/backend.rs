@@ -65,10 +65,9 @@ impl Backend<'_> {
         let id = symbol.intern_in(&mut ctl.syms);
         let a = ctl.new_atom(Some(id));
         if ctl.shows(symbol) {
-            ctl.pending.outputs.push(Output {
-                symbol: symbol.to_string(),
-                condition: vec![a as Lit],
-            });
+            ctl.pending
+                .outputs
+                .push(Output::new(symbol.to_string(), vec![a as Lit]));
         }
         ctl.pending.num_atoms = ctl.atom_sym.len() as AtomId;
         a

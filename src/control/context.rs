@@ -28,6 +28,10 @@ impl Control {
             }
         }
         self.flags = vec![0; self.atom_sym.len()];
+        self.atom_key = vec![Output::LAST; self.atom_sym.len()];
+        for (key, &ga) in self.atom_key.iter_mut().zip(self.session.last_gatoms()) {
+            *key = self.session.atom_order(ga);
+        }
         self.sym_atom = vec![0; self.syms.len()];
         for (i, s) in self.atom_sym.iter().enumerate() {
             if let Some(s) = s {
@@ -75,6 +79,7 @@ impl Control {
     pub(super) fn new_atom(&mut self, sym: Option<SymId>) -> AtomId {
         self.atom_sym.push(sym);
         self.flags.push(0);
+        self.atom_key.push(Output::LAST);
         let a = self.atom_sym.len() as AtomId;
         if let Some(s) = sym {
             let i = s.0 as usize;
@@ -153,6 +158,7 @@ impl Control {
                 .flatten()
                 .filter(|&s| !is_internal(&self.syms, s));
             *slot = self.new_atom(sym);
+            *self.atom_key.last_mut().expect("pushed") = self.session.atom_order(ga);
             set_gatom(&mut self.ctl_of_gatom, ga, *slot);
         }
         map
@@ -309,6 +315,7 @@ impl Control {
                 delta.outputs.push(Output {
                     symbol: o.symbol.clone(),
                     condition,
+                    order: o.order,
                 });
             }
         }

@@ -315,6 +315,8 @@ pub struct Control {
     syms: Symbols,
     /// Symbol of each atom, `atom_sym[a - 1]`; `None` for auxiliary atoms.
     atom_sym: Vec<Option<SymId>>,
+    /// Where clingo lists each atom in a model, `atom_key[a - 1]` ([`Control::atom_order`]).
+    atom_key: Vec<u64>,
     /// Atom of each symbol id (0: none), indexed by `SymId`.
     sym_atom: Vec<AtomId>,
     /// Per atom flags (`FACT`, `DEFINED`), index `a - 1`.
@@ -403,6 +405,7 @@ impl Control {
             groundings: 0,
             syms: Symbols::new(),
             atom_sym: Vec::new(),
+            atom_key: Vec::new(),
             sym_atom: Vec::new(),
             flags: Vec::new(),
             externals: HashMap::new(),
@@ -512,6 +515,17 @@ impl Control {
     pub fn symbol(&self, atom: AtomId) -> Option<Symbol> {
         let s = (*self.atom_sym.get((atom as usize).checked_sub(1)?)?)?;
         Some(Symbol::from_table(&self.syms, s))
+    }
+
+    /// Where clingo lists `atom` among a model's atoms: models list their atoms by increasing
+    /// key, as clingo does (by predicate, in the order gringo met the predicates, then in the
+    /// order the atoms were made). Atoms added through the backend come last.
+    pub fn atom_order(&self, atom: AtomId) -> u64 {
+        (atom as usize)
+            .checked_sub(1)
+            .and_then(|i| self.atom_key.get(i))
+            .copied()
+            .unwrap_or(Output::LAST)
     }
 
     /// Every atom with a symbol: its number, its symbol, and whether it is a fact and external.

@@ -21,6 +21,7 @@ use crate::base::{Diagnostic, Diagnostics, SourceMap};
 use crate::syntax::ast;
 
 use super::instantiate::{self, Calls, GroundAtom, Grounder, Limits};
+use super::program::Output;
 use super::rewrite::{self, Pred};
 use super::simplify::{self, KNOWN_FACT, NUMBERED};
 use super::symbol::Symbols;
@@ -39,6 +40,10 @@ pub struct Session {
     preds: Vec<Pred>,
     /// Projection predicates made so far.
     projections: u32,
+    /// The predicates' ranks in clingo's order of domains, and how many are ranked
+    /// ([`rewrite::Compiled::domain_rank`]).
+    ranks: Vec<u32>,
+    ranked: u32,
     /// Atoms and domains.
     state: instantiate::State,
     /// Per grounder atom `a` at `flags[a]`: [`NUMBERED`], [`KNOWN_FACT`].
@@ -64,6 +69,22 @@ impl Session {
     /// The session's grounder atom of aspif atom `a` of the last grounding.
     pub fn last_gatoms(&self) -> &[GroundAtom] {
         &self.last_gatoms
+    }
+
+    /// Where clingo lists grounder atom `a` in a model ([`Output::atom_order`]: its predicate's
+    /// domain rank, then the atom); [`Output::LAST`] for an auxiliary atom.
+    pub fn atom_order(&self, a: GroundAtom) -> u64 {
+        match self.state.pred(a) {
+            Some(p) => {
+                let rank = self
+                    .ranks
+                    .get(p as usize)
+                    .copied()
+                    .unwrap_or(rewrite::UNRANKED);
+                Output::atom_order(rank, a.get())
+            }
+            None => Output::LAST,
+        }
     }
 
     /// Grounder atom `a` is no fact: its rules did not reach the program (the caller dropped
@@ -132,7 +153,12 @@ impl Session {
         }
         let (compiled, projections) = {
             let mut rw = rewrite::Rewriter::new(&mut syms, &mut diags, sources);
-            rw.resume(self.preds.clone(), self.projections);
+            rw.resume(
+                self.preds.clone(),
+                self.projections,
+                self.ranks.clone(),
+                self.ranked,
+            );
             rw.calls = calls.is_some();
             if let Some(c) = calls.as_mut() {
                 rw.host = Some(&mut **c);
@@ -183,6 +209,8 @@ impl Session {
         if carry {
             self.preds = compiled.preds;
             self.projections = projections;
+            self.ranks = compiled.domain_rank;
+            self.ranked = compiled.domains_ranked;
         } else {
             // Nothing was kept for a later grounding.
             self.spent = true;

@@ -559,11 +559,23 @@ impl Solver {
     /// [`Solver::add_outputs`] on this solver alone.
     fn add_outputs_one(&mut self, outputs: &[crate::ground::program::Output]) {
         self.engine.backtrack(0);
+        let before = self.prog.outputs.len();
         for o in outputs {
             let lits: Vec<Lit> = o.condition.iter().map(|&l| self.lit_of(l)).collect();
             let c = self.tr.conjunction(&mut self.engine, &lits);
             self.tr.output_lits.push(c);
             self.prog.outputs.push(o.clone());
+        }
+        // Models list the outputs in the order of their keys (`Output::order`: clingo's order
+        // of domains); a later grounding's outputs may belong before earlier ones.
+        let added = &self.prog.outputs[before.saturating_sub(1)..];
+        if added.windows(2).any(|w| w[0].order > w[1].order) {
+            let mut both: Vec<_> = std::mem::take(&mut self.prog.outputs)
+                .into_iter()
+                .zip(std::mem::take(&mut self.tr.output_lits))
+                .collect();
+            both.sort_by_key(|(o, _)| o.order);
+            (self.prog.outputs, self.tr.output_lits) = both.into_iter().unzip();
         }
     }
 

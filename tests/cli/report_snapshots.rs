@@ -108,18 +108,9 @@ fn context_from_program_and_config() {
     let mut p = GroundProgram::new();
     let a = p.new_atom();
     p.outputs = vec![
-        Output {
-            symbol: "a".into(),
-            condition: vec![a as i32],
-        },
-        Output {
-            symbol: "a".into(),
-            condition: vec![],
-        },
-        Output {
-            symbol: "b".into(),
-            condition: vec![],
-        },
+        Output::new("a".into(), vec![a as i32]),
+        Output::new("a".into(), vec![]),
+        Output::new("b".into(), vec![]),
     ];
     p.minimize.push(Minimize {
         priority: 0,

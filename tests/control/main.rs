@@ -13,6 +13,7 @@ mod grid;
 mod incmode;
 mod lower_bound;
 mod model;
+mod model_order;
 mod multishot;
 mod propagator;
 mod theory;

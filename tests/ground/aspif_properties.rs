@@ -46,7 +46,7 @@ fn program() -> impl Strategy<Value = GroundProgram> {
             "[a-z][a-z0-9_]{0,5}(\\(\"[ a-z\\\\]{0,4}\"\\))?",
             proptest::collection::vec(lit(), 0..3),
         )
-            .prop_map(|(symbol, condition)| Output { symbol, condition }),
+            .prop_map(|(symbol, condition)| Output::new(symbol, condition)),
         0..4,
     );
     let externals = proptest::collection::vec(

@@ -88,11 +88,18 @@ fn check_invariants(name: &str, g: &Grounding) {
 }
 
 /// The program without its provenance.
+/// `p` without its provenance, the outputs' keys replaced by their positions: provenance
+/// makes grounder atoms of its own, so the atom numbers in the keys (`Output::order`) differ;
+/// the order they give must not.
 fn without_provenance(p: &GroundProgram) -> GroundProgram {
-    GroundProgram {
+    let mut p = GroundProgram {
         provenance: Provenance::new(),
         ..p.clone()
+    };
+    for (i, o) in p.outputs.iter_mut().enumerate() {
+        o.order = i as u64;
     }
+    p
 }
 
 #[test]
@@ -116,7 +123,7 @@ fn provenance_keeps_the_ground_program_and_its_invariants_over_the_corpus() {
         );
         assert_eq!(
             without_provenance(&on.program),
-            off.program,
+            without_provenance(&off.program),
             "{name}: provenance changed the ground program"
         );
         assert_eq!(on.atom_names(), off.atom_names(), "{name}");

@@ -11,10 +11,7 @@ fn program(n: u32, rules: Vec<Rule>) -> GroundProgram {
     p.num_atoms = n;
     p.rules = rules.into();
     for a in 1..=n {
-        p.outputs.push(Output {
-            symbol: name(a),
-            condition: vec![a as i32],
-        });
+        p.outputs.push(Output::new(name(a), vec![a as i32]));
     }
     p
 }

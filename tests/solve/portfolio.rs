@@ -64,10 +64,7 @@ fn random_program(seed: u64, minimize: bool) -> GroundProgram {
     }
     p.rules = rules.into();
     for a in 1..=n {
-        p.outputs.push(Output {
-            symbol: format!("x{a}"),
-            condition: vec![a as i32],
-        });
+        p.outputs.push(Output::new(format!("x{a}"), vec![a as i32]));
     }
     if minimize {
         for priority in [1, 0] {
@@ -269,10 +266,8 @@ fn two_threads_follow_multi_shot_steps_with_externals() {
         p0.num_atoms = n + 2;
         p0.externals = vec![(n + 1, ExternalValue::False), (n + 2, ExternalValue::Free)];
         for a in [n + 1, n + 2] {
-            p0.outputs.push(Output {
-                symbol: format!("e{a}"),
-                condition: vec![a as i32],
-            });
+            p0.outputs
+                .push(Output::new(format!("e{a}"), vec![a as i32]));
         }
         let mut c1 = config(1);
         let mut c2 = config(2);

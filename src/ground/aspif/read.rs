@@ -429,7 +429,7 @@ impl<'a> Reader<'a> {
                     let condition = self.lits()?;
                     let p = &mut step.program;
                     step.layout.push(Stmt::Output(p.outputs.len() as u32));
-                    p.outputs.push(Output { symbol, condition });
+                    p.outputs.push(Output::new(symbol, condition));
                 }
                 5 => {
                     let atom = self.cur.atom()?;

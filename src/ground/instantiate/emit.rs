@@ -75,7 +75,7 @@ impl Grounder<'_> {
                 let Some(v) = self.eval(t, &ctx.binding) else {
                     return;
                 };
-                self.directives.shows.push((v, ctx.body.clone()));
+                self.directives.shows.push((v, ctx.body.clone(), stmt.stmt));
             }
             NKind::Project(a) => {
                 let Some(s) = self.atom_sym(a, &ctx.binding) else {

@@ -333,8 +333,8 @@ pub struct Directives {
     pub minimize: HashMap<MinKey, Vec<Vec<Lit>>>,
     /// Insertion order of minimize keys.
     pub minimize_order: Vec<MinKey>,
-    /// `#show t : body` instances.
-    pub shows: Vec<(SymId, Vec<Lit>)>,
+    /// `#show t : body` instances, with the index of their statement.
+    pub shows: Vec<(SymId, Vec<Lit>, u32)>,
     /// Projected atoms.
     pub projections: Vec<GroundAtom>,
     /// Externals.
@@ -384,6 +384,12 @@ pub struct State {
 }
 
 impl State {
+    /// The predicate of grounder atom `a` (`None` for an auxiliary atom or one out of range).
+    pub fn pred(&self, a: GroundAtom) -> Option<PredId> {
+        let info = self.atoms.get((a.get() as usize).wrapping_sub(1))?;
+        (info.pred != u32::MAX).then_some(info.pred)
+    }
+
     /// Atom `a` is not certainly true after all (its rules were withdrawn).
     pub fn clear_fact(&mut self, a: GroundAtom) {
         if let Some(info) = self.atoms.get_mut((a.get() as usize).wrapping_sub(1)) {

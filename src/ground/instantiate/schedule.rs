@@ -161,13 +161,23 @@ impl Grounder<'_> {
                 }
             }
         };
-        for (si, s) in prog.stmts.iter().enumerate() {
-            if node_of[si] == u32::MAX {
-                if self.stopped.is_some() {
-                    return;
+        // Facts over values first, then those over other ground terms (`p(-1).`), as gringo
+        // makes their atoms (and so lists them in a model).
+        let passes: &[bool] = if prog.late_facts.is_empty() {
+            &[false]
+        } else {
+            &[false, true]
+        };
+        for &late in passes {
+            for (si, s) in prog.stmts.iter().enumerate() {
+                if node_of[si] == u32::MAX && prog.late_facts.binary_search(&s.stmt).is_ok() == late
+                {
+                    if self.stopped.is_some() {
+                        return;
+                    }
+                    self.ground_stmt(s, &[]);
+                    finished(self, si, &mut pending);
                 }
-                self.ground_stmt(s, &[]);
-                finished(self, si, &mut pending);
             }
         }
         // A statement depends on a statement heading an atom that unifies with one it reads

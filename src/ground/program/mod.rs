@@ -185,6 +185,37 @@ pub struct Output {
     pub symbol: String,
     /// Literals that must all be true.
     pub condition: Vec<Lit>,
+    /// Where a model lists the symbol, as clingo lists it: the solver keeps its outputs
+    /// ordered by this key, equal keys in the order added. The grounder gives a shown atom
+    /// its predicate's domain rank and its atom number ([`Output::atom_order`]) and a `#show`
+    /// term a key after every atom's ([`Output::term_order`]); outputs from elsewhere (aspif,
+    /// the backend) take [`Output::LAST`].
+    pub order: u64,
+}
+
+impl Output {
+    /// The key of outputs with no place of their own: after the others, in the order added.
+    pub const LAST: u64 = u64::MAX;
+
+    /// An output without a place of its own ([`Output::LAST`]).
+    pub fn new(symbol: String, condition: Vec<Lit>) -> Output {
+        Output {
+            symbol,
+            condition,
+            order: Output::LAST,
+        }
+    }
+
+    /// The key of a shown atom: its predicate's domain rank, then its grounder atom number.
+    pub fn atom_order(rank: u32, atom: u32) -> u64 {
+        ((rank as u64) << 32) | atom as u64
+    }
+
+    /// The key of a `#show` term of statement `stmt`: after the atoms, later statements first
+    /// (as clingo lists them).
+    pub fn term_order(stmt: u32) -> u64 {
+        (1u64 << 63) | (u32::MAX - stmt) as u64
+    }
 }
 
 /// Truth value of an external atom (aspif statement 5).
@@ -425,10 +456,7 @@ mod tests {
         ]
         .into();
         p.num_atoms = 2147483647;
-        p.outputs.push(Output {
-            symbol: "b".into(),
-            condition: vec![2147483647],
-        });
+        p.outputs.push(Output::new("b".into(), vec![2147483647]));
         p.minimize.push(Minimize {
             priority: 0,
             lits: vec![(-4, 1)],

@@ -23,6 +23,7 @@
 //! body order that binds every variable before its use), `theory` (theory atoms checked against
 //! their definitions, as aggregates the instantiator makes theory atoms of).
 
+mod domains;
 mod lower;
 mod pool;
 mod rule;
@@ -30,6 +31,7 @@ mod safety;
 mod statement;
 mod theory;
 
+pub use domains::UNRANKED;
 pub use pool::unpool_term;
 pub use safety::{lit_vars, plan, Flags};
 pub use theory::{NTheory, Theories};
@@ -325,6 +327,14 @@ pub struct Compiled {
     pub stmt_spans: Vec<Span>,
     /// SPARC sort memberships, as facts of the sort predicates `#s/1`.
     pub sort_facts: Vec<(PredId, SymId)>,
+    /// The rank of each predicate in clingo's order of domains (`domains`; [`UNRANKED`] for
+    /// none), by predicate id; may be shorter than `preds`.
+    pub domain_rank: Vec<u32>,
+    /// Predicates ranked so far (the next rank).
+    pub domains_ranked: u32,
+    /// The source statements that are facts over terms that are not values (`p(-1).`,
+    /// `p((1,2)).`), increasing: gringo makes their atoms after the other facts'.
+    pub late_facts: Vec<u32>,
 }
 
 /// Rewriting context over the whole program.
@@ -368,6 +378,10 @@ pub struct Rewriter<'a> {
     pred_ids: Vec<Option<(Pred, PredId)>>,
     /// The `#theory` definitions in force (multi-shot: kept from earlier groundings).
     pub theories: Theories,
+    /// The predicates of the facts met so far, ranked after the other statements' (`domains`);
+    /// those of facts over terms that are not values apart, ranked last.
+    facts: Vec<PredId>,
+    late_facts: Vec<PredId>,
 }
 
 /// Slots of [`Rewriter`]'s name cache (a power of two).
@@ -513,6 +527,8 @@ impl<'a> Rewriter<'a> {
             name_ids: vec![None; NAME_SLOTS],
             pred_ids: vec![None; PRED_SLOTS],
             theories: Theories::default(),
+            facts: Vec::new(),
+            late_facts: Vec::new(),
         }
     }
 
@@ -532,7 +548,10 @@ impl<'a> Rewriter<'a> {
 
     /// Multi-shot: continues the predicate table of an earlier rewriting (predicates keep their
     /// ids) and its count of projection predicates (a later `#projN` is another predicate).
-    pub fn resume(&mut self, preds: Vec<Pred>, projections: u32) {
+    /// `ranks` and `ranked` are the predicates' domain ranks so far ([`Compiled::domain_rank`]).
+    pub fn resume(&mut self, preds: Vec<Pred>, projections: u32, ranks: Vec<u32>, ranked: u32) {
+        self.out.domain_rank = ranks;
+        self.out.domains_ranked = ranked;
         self.pred_map = preds
             .iter()
             .enumerate()
@@ -551,6 +570,11 @@ impl<'a> Rewriter<'a> {
     pub fn pred(&mut self, name: &str, arity: u32, neg: bool) -> PredId {
         let name = self.syms.names.intern(name);
         self.pred_of(name, arity, neg)
+    }
+
+    /// The id of a predicate signature, when it has one already.
+    pub fn find_pred(&self, name: Sym, arity: u32, neg: bool) -> Option<PredId> {
+        self.pred_map.get(&Pred { name, arity, neg }).copied()
     }
 
     /// The id of a predicate signature whose name is interned already.

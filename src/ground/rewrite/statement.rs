@@ -57,7 +57,9 @@ impl Rewriter<'_> {
                 continue;
             }
             self.statement(i as u32, st);
+            self.note_domains(i as u32, st);
         }
+        self.rank_facts();
     }
 
     /// Evaluates the `#const` definitions not overridden by `-c`, each after the constants its

@@ -195,9 +195,14 @@ pub fn finish_after(
         before,
         &shown,
         &frozen,
+        &prog.domain_rank,
         &mut out.outputs,
     );
     outputs::show_terms(g, &status, &number, &mut out.outputs);
+    // In clingo's order (`Output::order`); stable: equal keys keep the order made.
+    if out.outputs.windows(2).any(|w| w[0].order > w[1].order) {
+        out.outputs.sort_by_key(|o| o.order);
+    }
     directives::directives(g, &status, &number, &mut out);
     theory::theory_atoms(g, &status, &number, &mut out);
     let prefer_atoms = cr::cr_rules(

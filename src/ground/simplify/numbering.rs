@@ -171,7 +171,7 @@ pub(super) fn number_remaining(
                 used[scope.index(a)] = true;
             }
         };
-        for (_, cond) in &g.directives.shows {
+        for (_, cond, _) in &g.directives.shows {
             cond.iter().for_each(|&l| mark(l));
         }
         for h in &g.directives.heuristics {

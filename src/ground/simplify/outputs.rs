@@ -11,11 +11,12 @@ use super::scope::Scope;
 use super::{map_lit, shown_pred, truth, Status, KNOWN_FACT};
 use crate::ground::instantiate::{GroundAtom, Grounder};
 use crate::ground::program::{Lit, Output};
+use crate::ground::rewrite::UNRANKED;
 use crate::ground::symbol::SymId;
 
 /// Appends the outputs of the shown atoms (`shown`, by predicate) to `outputs` and returns the
 /// symbol and grounder atom of each fact; `number` is the aspif numbering, `before` the flags
-/// of earlier groundings. Only the atoms of `scope` are visited: an older atom outside it was
+/// of earlier groundings, `ranks` the predicates' domain ranks (the outputs' keys). Only the atoms of `scope` are visited: an older atom outside it was
 /// output, or reported as a fact, by the grounding that decided it.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn shown_atoms(
@@ -26,6 +27,7 @@ pub(super) fn shown_atoms(
     before: &[u8],
     shown: &[bool],
     frozen: &dyn Fn(usize) -> bool,
+    ranks: &[u32],
     outputs: &mut Vec<Output>,
 ) -> (Vec<SymId>, Vec<GroundAtom>) {
     // Outputs: shown atoms, facts with an empty condition.
@@ -53,9 +55,11 @@ pub(super) fn shown_atoms(
             } else {
                 vec![number[a] as Lit]
             };
+            let rank = ranks.get(info.pred as usize).copied().unwrap_or(UNRANKED);
             outputs.push(Output {
                 symbol: g.syms.show(sym),
                 condition,
+                order: Output::atom_order(rank, a as u32),
             });
         }
     }
@@ -71,7 +75,7 @@ pub(super) fn show_terms(
 ) {
     let shows = std::mem::take(&mut g.directives.shows);
     let mut seen: hashbrown::HashSet<(SymId, Vec<Lit>)> = hashbrown::HashSet::new();
-    for (sym, cond) in shows {
+    for (sym, cond, stmt) in shows {
         let mut c = Vec::new();
         let mut ok = true;
         for l in cond {
@@ -93,6 +97,7 @@ pub(super) fn show_terms(
             outputs.push(Output {
                 symbol: g.syms.show(sym),
                 condition: c,
+                order: Output::term_order(stmt),
             });
         }
     }

@@ -88,7 +88,7 @@ impl Scope {
         for conds in d.minimize.values() {
             conds.iter().for_each(|c| add_lits(c));
         }
-        for (_, cond) in &d.shows {
+        for (_, cond, _) in &d.shows {
             add_lits(cond);
         }
         for h in &d.heuristics {
