@@ -34,7 +34,8 @@ impl Model<'_> {
         self.raw.number
     }
 
-    /// The shown symbols (`#show`), in output order, without duplicates. Each prints as it was
+    /// The shown symbols (`#show`), in clingo's order (by predicate domain, then atom; the
+    /// `#show` terms after the atoms: `Output::order`), without duplicates. Each prints as it was
     /// shown ([`Symbol::from_shown`]: a name made by a context function need not be an
     /// identifier).
     pub fn symbols(&self) -> Vec<Symbol> {
@@ -62,7 +63,8 @@ impl Model<'_> {
         &self.raw.symbols
     }
 
-    /// Every true atom with a symbol: the whole answer set (shown or not), in atom order.
+    /// Every true atom with a symbol: the whole answer set (shown or not), in atom order (sort
+    /// by [`Control::atom_order`] for clingo's order, as the Python `Model.symbols` does).
     pub fn atoms(&self) -> Vec<Symbol> {
         // Sized once: nearly every true atom has a symbol.
         let mut out = Vec::with_capacity(self.raw.atoms.len());

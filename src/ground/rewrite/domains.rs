@@ -11,11 +11,14 @@
 //! - the statements other than facts, in program order; then the predicates of the facts
 //!   whose arguments are values (`p(1,a).`), in program order, then those of the other
 //!   ground facts (`p(-1).`, `p((1,2)).`, `p(1;2).`); a fact with an interval is a statement;
-//! - in a rule: the atoms of the head elements that have a condition (the condition's
-//!   literals last to first, then the element's atom; in a choice with a single conditional
-//!   element, the atom comes after the body), then the body: first its conditional literals
-//!   last to first, each as its condition then its atom, then the other literals last to
-//!   first (an aggregate as its elements' conditions in order), then the remaining head atoms;
+//! - in a rule: the atoms of the head elements that have a condition, and of every element of
+//!   a head aggregate, of a bounded choice and of an unbounded one with several elements one
+//!   of which has a condition (the condition's literals last to first, then the element's
+//!   atom; in an unbounded choice with a single conditional element, the atom comes after the
+//!   body), then the body: first its conditional literals last to first, each as
+//!   its condition then its atom, then the other literals last to first (an aggregate as its
+//!   elements' conditions in order), then the aggregates that assign a variable
+//!   (`X = #count { ... }`), then the remaining head atoms;
 //! - a weak constraint, `#show t : body`, an edge: the body last to first; a `#minimize`
 //!   element: its condition last to first; `#external a : body`: the body, then `a`;
 //!   `#heuristic a : body` and `#project a : body`: `a`, then the body.
@@ -68,19 +71,24 @@ impl Rewriter<'_> {
                             }
                         }
                     }
-                    ast::Head::Choice(c) => {
-                        let single = c.elements.len() == 1;
+                    ast::Head::Choice(c)
+                        if c.lower.is_some()
+                            || c.upper.is_some()
+                            || (c.elements.len() > 1
+                                && c.elements.iter().any(|e| !e.condition.is_empty())) =>
+                    {
+                        // A bounded choice is a head aggregate for gringo; so is, for the
+                        // order, an unbounded one with several elements, one conditional.
                         for e in &c.elements {
-                            if e.condition.is_empty() {
-                                late.push_literal(&e.literal);
-                            } else {
-                                self.note_literals_rev(&e.condition);
-                                if single {
-                                    late.push_literal(&e.literal);
-                                } else {
-                                    self.note_literal(&e.literal);
-                                }
-                            }
+                            self.note_literals_rev(&e.condition);
+                            self.note_literal(&e.literal);
+                        }
+                    }
+                    ast::Head::Choice(c) => {
+                        // No element, or one alone, has a condition.
+                        for e in &c.elements {
+                            self.note_literals_rev(&e.condition);
+                            late.push_literal(&e.literal);
                         }
                     }
                     ast::Head::Aggregate(h) => {
@@ -144,24 +152,27 @@ impl Rewriter<'_> {
                 self.note_literal(&c.literal);
             }
         }
-        for l in body.iter().rev() {
-            match l {
-                ast::BodyLiteral::Literal(l) => self.note_literal(l),
-                ast::BodyLiteral::Conditional(_) => {}
-                ast::BodyLiteral::Aggregate { aggregate, .. } => {
-                    for e in &aggregate.elements {
-                        for l in &e.condition {
-                            self.note_literal(l);
+        for assignments in [false, true] {
+            for l in body.iter().rev() {
+                match l {
+                    ast::BodyLiteral::Literal(l) if !assignments => self.note_literal(l),
+                    ast::BodyLiteral::Aggregate { aggregate, .. }
+                        if assigns(aggregate) == assignments =>
+                    {
+                        for e in &aggregate.elements {
+                            for l in &e.condition {
+                                self.note_literal(l);
+                            }
+                        }
+                        for c in &aggregate.set_syntax {
+                            self.note_literal(&c.literal);
+                            for l in &c.condition {
+                                self.note_literal(l);
+                            }
                         }
                     }
-                    for c in &aggregate.set_syntax {
-                        self.note_literal(&c.literal);
-                        for l in &c.condition {
-                            self.note_literal(l);
-                        }
-                    }
+                    _ => {}
                 }
-                ast::BodyLiteral::Theory { .. } => {}
             }
         }
     }
@@ -203,6 +214,14 @@ impl Rewriter<'_> {
             self.out.domains_ranked += 1;
         }
     }
+}
+
+/// Whether an aggregate assigns a variable (`X = #count { ... }`).
+fn assigns(a: &ast::BodyAggregate) -> bool {
+    [&a.lower, &a.upper]
+        .into_iter()
+        .flatten()
+        .any(|g| g.op == ast::CmpOp::Eq && matches!(g.term.kind, TermKind::Variable(_)))
 }
 
 /// Whether rule `r` is a fact gringo keeps apart from the other statements (an atom alone over
