@@ -225,11 +225,6 @@ impl VarSet {
         self.words.iter().all(|&w| w == 0)
     }
 
-    /// The number of slots in the set.
-    pub fn count(&self) -> u32 {
-        self.words.iter().map(|w| w.count_ones()).sum()
-    }
-
     /// Whether the sets share a slot (both made with the same room).
     #[inline]
     pub fn intersects(&self, other: &VarSet) -> bool {

@@ -8,9 +8,6 @@
 
 use super::*;
 
-/// How [`Grounder::join_order`] breaks a tie between two positive atoms that bind variables:
-/// the one binding more, then the one written later (`None` for other literals).
-type TieKey = Option<(u32, u32)>;
 impl<'a> Grounder<'a> {
     pub(super) fn lookup_range(&self, pred: PredId, range: Option<Range>) -> Range {
         range.unwrap_or((0, self.domains[pred as usize].atoms.len() as u32))
@@ -488,8 +485,7 @@ impl Grounder<'_> {
             }
         }
         while order.len() < n {
-            // (cost, literal, tie key: variables bound and source position)
-            let mut best: Option<(f64, usize, TieKey)> = None;
+            let mut best: Option<(f64, usize)> = None;
             for (i, l) in lits.iter().enumerate() {
                 if placed[i] {
                     continue;
@@ -588,23 +584,11 @@ impl Grounder<'_> {
                 if !matches!(l, NLit::Agg(_)) && newly.intersects(&reserved) {
                     continue;
                 }
-                // Of two positive atoms that cost the same and bind variables, the one binding
-                // more first, then the one written later, as gringo joins them (so a
-                // predicate's atoms are made in gringo's order).
-                let tie = match l {
-                    NLit::Pred {
-                        sign: Sign::Positive,
-                        ..
-                    } if !newly.is_empty() => Some((newly.count(), super::schedule::source_pos(l))),
-                    _ => None,
-                };
-                if best.is_none_or(|(c, _, t)| {
-                    cost < c || (cost == c && tie.is_some() && t.is_some() && tie > t)
-                }) {
-                    best = Some((cost, i, tie));
+                if best.is_none_or(|(c, _)| cost < c) {
+                    best = Some((cost, i));
                 }
             }
-            let Some((_, i, _)) = best else {
+            let Some((_, i)) = best else {
                 // Not expected (the planned order is evaluable): keep the rest as planned.
                 order.extend((0..n).filter(|&j| !placed[j]));
                 break;

@@ -575,7 +575,7 @@ fn lit_occs<'p>(l: &'p NLit, preds: &mut Vec<PredId>, atoms: &mut Vec<&'p NAtom>
 
 /// Where a body literal was written: the start of its atom's span (for an aggregate, of its
 /// first atom's); literals without an atom come last, in planned order.
-pub(super) fn source_pos(l: &NLit) -> u32 {
+fn source_pos(l: &NLit) -> u32 {
     match l {
         NLit::Pred { atom, .. } => atom.span.start,
         NLit::Agg(a) => a
