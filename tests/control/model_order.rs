@@ -62,21 +62,6 @@ fn facts_over_terms_that_are_no_values_come_after_the_other_facts() {
 }
 
 #[test]
-fn a_predicates_atoms_come_in_gringos_join_order() {
-    // Of two atoms that cost the same to join, gringo takes the one binding more variables,
-    // then the one written later, so `p` is made by `b` outer, and `p` of `n(X), e(X,Y)` in
-    // the order of `e`.
-    assert_eq!(
-        shown("a(1..2). b(1..2). p(X,Y) :- a(X), b(Y)."),
-        ["a(1) a(2) b(1) b(2) p(1,1) p(2,1) p(1,2) p(2,2)"]
-    );
-    assert_eq!(
-        shown("e(1,2). e(2,3). e(1,3). n(1..3). p(X,Y) :- n(X), e(X,Y)."),
-        ["n(1) n(2) n(3) e(1,2) e(2,3) e(1,3) p(1,2) p(2,3) p(1,3)"]
-    );
-}
-
-#[test]
 fn facts_over_values_are_made_first() {
     assert_eq!(
         shown("o(-1). o(a). q(X) :- o(X)."),
