@@ -48,6 +48,7 @@ mod core_guided;
 mod cr;
 pub(crate) use cr::transitive_closure;
 mod minimal;
+mod outputs;
 mod portfolio;
 mod propagators;
 mod search;
@@ -543,40 +544,6 @@ impl Solver {
     /// Whether `atom` is currently an external atom (declared, not released, without rules).
     pub fn is_external(&self, atom: u32) -> bool {
         atom <= self.prog.num_atoms && self.tr.free[atom as usize]
-    }
-
-    /// Adds output statements (e.g. for atoms introduced by `add_rules`).
-    pub fn add_outputs(&mut self, outputs: &[crate::ground::program::Output]) {
-        self.add_outputs_one(outputs);
-        if let Some(par) = self.par.as_mut() {
-            par.each(|h| {
-                h.add_outputs_one(outputs);
-                Ok(())
-            });
-        }
-    }
-
-    /// [`Solver::add_outputs`] on this solver alone.
-    fn add_outputs_one(&mut self, outputs: &[crate::ground::program::Output]) {
-        self.engine.backtrack(0);
-        let before = self.prog.outputs.len();
-        for o in outputs {
-            let lits: Vec<Lit> = o.condition.iter().map(|&l| self.lit_of(l)).collect();
-            let c = self.tr.conjunction(&mut self.engine, &lits);
-            self.tr.output_lits.push(c);
-            self.prog.outputs.push(o.clone());
-        }
-        // Models list the outputs in the order of their keys (`Output::order`: clingo's order
-        // of domains); a later grounding's outputs may belong before earlier ones.
-        let added = &self.prog.outputs[before.saturating_sub(1)..];
-        if added.windows(2).any(|w| w[0].order > w[1].order) {
-            let mut both: Vec<_> = std::mem::take(&mut self.prog.outputs)
-                .into_iter()
-                .zip(std::mem::take(&mut self.tr.output_lits))
-                .collect();
-            both.sort_by_key(|(o, _)| o.order);
-            (self.prog.outputs, self.tr.output_lits) = both.into_iter().unzip();
-        }
     }
 
     fn lit_of(&self, l: i32) -> Lit {
